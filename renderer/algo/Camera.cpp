@@ -1,0 +1,124 @@
+#include "Camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace sl {
+
+std::array<glm::vec3, 8> Aabb::corners() const {
+  std::array<glm::vec3, 8> c;
+  for (int i = 0; i < 8; ++i)
+    c[i] = glm::vec3(i & 1 ? max.x : min.x, i & 2 ? max.y : min.y, i & 4 ? max.z : min.z);
+  return c;
+}
+
+glm::mat4 Camera::view() const { return glm::lookAt(position, target, up); }
+
+glm::mat4 Camera::projection(float aspect) const {
+  return glm::perspective(glm::radians(fovYDeg), aspect, nearM, farM);
+}
+
+glm::vec3 Camera::forward() const { return glm::normalize(target - position); }
+
+std::optional<std::string> Camera::validate() const {
+  auto finite = [](const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  };
+  if (!finite(position) || !finite(target) || !finite(up))
+    return "camera: position, target or up is not finite";
+  if (glm::length(target - position) < 1e-6f) return "camera: position equals target";
+  if (!(fovYDeg > 1.0f && fovYDeg < 170.0f))
+    return "camera: vertical field of view must be in (1, 170) degrees";
+  if (!(nearM > 0.0f) || !(farM > nearM) || !std::isfinite(farM))
+    return "camera: need 0 < near < far (finite)";
+  glm::vec3 f = forward();
+  if (glm::length(glm::cross(f, glm::normalize(up))) < 1e-4f)
+    return "camera: up vector is parallel to the view direction";
+  return std::nullopt;
+}
+
+std::array<glm::vec3, 8> Camera::frustumCorners(float aspect, float n, float f) const {
+  glm::vec3 fw = forward();
+  glm::vec3 right = glm::normalize(glm::cross(fw, up));
+  glm::vec3 u = glm::cross(right, fw);
+  float t = std::tan(glm::radians(fovYDeg) * 0.5f);
+  std::array<glm::vec3, 8> c;
+  for (int plane = 0; plane < 2; ++plane) {
+    float d = plane ? f : n;
+    float hy = t * d, hx = hy * aspect;
+    glm::vec3 center = position + fw * d;
+    c[plane * 4 + 0] = center - right * hx - u * hy;
+    c[plane * 4 + 1] = center + right * hx - u * hy;
+    c[plane * 4 + 2] = center + right * hx + u * hy;
+    c[plane * 4 + 3] = center - right * hx + u * hy;
+  }
+  return c;
+}
+
+void Camera::orbit(float yawDeg, float pitchDeg) {
+  glm::vec3 offset = position - target;
+  float r = glm::length(offset);
+  float yaw = std::atan2(offset.x, offset.z) + glm::radians(yawDeg);
+  float pitch = std::asin(std::clamp(offset.y / r, -1.0f, 1.0f)) + glm::radians(pitchDeg);
+  pitch = std::clamp(pitch, glm::radians(-89.0f), glm::radians(89.0f));
+  position = target + r * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                    std::cos(pitch) * std::cos(yaw));
+}
+
+void Camera::dolly(float factor) {
+  glm::vec3 offset = position - target;
+  float r = std::clamp(glm::length(offset) * factor, 0.05f, 1e5f);
+  position = target + glm::normalize(offset) * r;
+}
+
+void Camera::pan(float rightM, float upM) {
+  glm::vec3 fw = forward();
+  glm::vec3 right = glm::normalize(glm::cross(fw, up));
+  glm::vec3 u = glm::cross(right, fw);
+  glm::vec3 d = right * rightM + u * upM;
+  position += d;
+  target += d;
+}
+
+void Camera::fly(float forwardM, float rightM, float upM) {
+  glm::vec3 fw = forward();
+  glm::vec3 right = glm::normalize(glm::cross(fw, up));
+  glm::vec3 d = fw * forwardM + right * rightM + up * upM;
+  position += d;
+  target += d;
+}
+
+void Camera::look(float yawDeg, float pitchDeg) {
+  glm::vec3 offset = target - position;
+  float r = glm::length(offset);
+  float yaw = std::atan2(offset.x, offset.z) + glm::radians(yawDeg);
+  float pitch = std::asin(std::clamp(offset.y / r, -1.0f, 1.0f)) + glm::radians(pitchDeg);
+  pitch = std::clamp(pitch, glm::radians(-89.0f), glm::radians(89.0f));
+  target = position + r * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                    std::cos(pitch) * std::cos(yaw));
+}
+
+glm::vec3 DirectionalLight::towardsLight() const {
+  float az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
+  return glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+}
+
+DirectionalLight DirectionalLight::fromDirection(const glm::vec3& towards) {
+  glm::vec3 d = glm::normalize(towards);
+  DirectionalLight l;
+  l.elevationDeg = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
+  l.azimuthDeg = glm::degrees(std::atan2(d.x, d.z));
+  return l;
+}
+
+std::optional<std::string> DirectionalLight::validate() const {
+  if (!std::isfinite(azimuthDeg) || !std::isfinite(elevationDeg))
+    return "light: azimuth or elevation is not finite";
+  if (elevationDeg < -90.0f || elevationDeg > 90.0f)
+    return "light: elevation must be in -90..90 degrees";
+  return std::nullopt;
+}
+
+}  // namespace sl

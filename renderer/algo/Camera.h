@@ -1,0 +1,66 @@
+// Camera, directional light and the small geometric types shared by every layer.
+// Plain math on glm, no GL: the GUI, CLI and tests all manipulate these.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace sl {
+
+struct Aabb {
+  glm::vec3 min{std::numeric_limits<float>::max()};
+  glm::vec3 max{-std::numeric_limits<float>::max()};
+  bool valid() const { return min.x <= max.x && min.y <= max.y && min.z <= max.z; }
+  void extend(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  void extend(const Aabb& b) {
+    if (b.valid()) extend(b.min), extend(b.max);
+  }
+  glm::vec3 center() const { return 0.5f * (min + max); }
+  glm::vec3 size() const { return max - min; }
+  std::array<glm::vec3, 8> corners() const;
+};
+
+/// A perspective camera looking from `position` at `target` (y is up in world space).
+struct Camera {
+  glm::vec3 position{0.0f, 3.0f, 8.0f};  ///< metres, world space
+  glm::vec3 target{0.0f};                ///< metres, world space
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fovYDeg = 50.0f;
+  float nearM = 0.1f;
+  float farM = 200.0f;
+
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+  glm::vec3 forward() const;
+  /// An error naming what is wrong (NaN position, eye == target, near >= far, fov out of
+  /// (1, 170) degrees, up parallel to the view direction), or nothing when usable.
+  std::optional<std::string> validate() const;
+  /// World-space corners of the view frustum between `nearM` and `farM`
+  /// (0-3 near plane, 4-7 far plane).
+  std::array<glm::vec3, 8> frustumCorners(float aspect, float nearM, float farM) const;
+
+  // Interactive controls (degrees and metres). They keep the camera valid.
+  void orbit(float yawDeg, float pitchDeg);  ///< around the target
+  void dolly(float factor);                  ///< distance to target *= factor
+  void pan(float rightM, float upM);         ///< moves position and target
+  void fly(float forwardM, float rightM, float upM);
+  void look(float yawDeg, float pitchDeg);  ///< turns the view, position fixed
+};
+
+/// A directional light ("the sun"): azimuth around +y measured from +z towards +x,
+/// elevation above the horizon.
+struct DirectionalLight {
+  float azimuthDeg = 35.0f;
+  float elevationDeg = 50.0f;
+  glm::vec3 towardsLight() const;  ///< unit vector from the scene towards the light
+  static DirectionalLight fromDirection(const glm::vec3& towardsLight);
+  std::optional<std::string> validate() const;
+};
+
+}  // namespace sl

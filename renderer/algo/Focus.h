@@ -1,0 +1,51 @@
+// Focusing a directional light's orthographic frustum on what the camera sees:
+// the light's x/y extent covers the intersection of the view frustum and the scene
+// bounds (the "focus region"), the depth range covers every possible caster.
+// Also carries DA-RTW's rotation of the light image plane (seed 000, R_k).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "Camera.h"
+
+namespace sl {
+
+/// Vertices of the convex polyhedron (camera frustum between nearM and farM) ∩ box.
+/// Empty when they do not intersect.
+std::vector<glm::vec3> intersectFrustumWithBox(const std::array<glm::vec3, 8>& frustumCorners,
+                                               const Aabb& box);
+
+/// The light's base view (no image-plane rotation): looks along -towardsLight, with
+/// a stable up vector.
+glm::mat4 lightBaseView(const glm::vec3& towardsLight);
+
+/// 4x4 rotation about the light's view axis from a 2x2 rotation [[c,-s],[s,c]].
+glm::mat4 imagePlaneRotation(const glm::mat2& rotation);
+
+struct LightFit {
+  glm::mat4 view{1.0f};      ///< world -> light view (rotation applied)
+  glm::mat4 proj{1.0f};      ///< orthographic, light view -> clip
+  glm::mat4 viewProj{1.0f};  ///< proj * view
+  glm::vec2 extentM{0.0f};   ///< width and height of the light frustum in metres
+  float depthRangeM = 0.0f;  ///< near..far of the light frustum in metres
+  std::vector<glm::vec3> focusPoints;  ///< vertices of the focus region (world)
+};
+
+struct FocusSettings {
+  glm::mat2 rotation{1.0f};  ///< image-plane rotation (DA-RTW), identity otherwise
+  float paddingFraction = 0.01f;  ///< grow x/y extent by this share on each side
+};
+
+/// Fits the light frustum. Returns an error (and no fit) for a degenerate light or
+/// camera, or when the camera sees none of the scene bounds (then the whole scene is
+/// used as focus region instead, and no error).
+std::optional<std::string> fitDirectionalLight(const Camera& camera, float aspect,
+                                               const Aabb& sceneBounds,
+                                               const glm::vec3& towardsLight,
+                                               const FocusSettings& settings, LightFit& out);
+
+}  // namespace sl

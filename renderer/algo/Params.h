@@ -1,0 +1,71 @@
+// Parameter declarations: every tunable value of ShadowLab is declared once here-style
+// (key, label, group, default, range, help) and the UI panel, the command line
+// (--set key=value), JSON presets and the tests all read that one declaration.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sl {
+
+enum class ParamType { Bool, Int, Float, Enum };
+
+struct ParamDecl {
+  std::string key;    ///< dotted identifier, e.g. "blur.radius"
+  std::string label;  ///< short human name for the UI
+  std::string group;  ///< UI group box, e.g. "Shadow map"
+  ParamType type = ParamType::Float;
+  double defaultValue = 0.0;
+  double minValue = 0.0;
+  double maxValue = 1.0;
+  double step = 0.0;                   ///< UI step (0: type default)
+  std::vector<std::string> enumNames;  ///< for Enum: value i is enumNames[i]
+  std::string help;                    ///< one or two sentences, shown as tooltip and by `list`
+};
+
+/// Human readable range, e.g. "64..16384", "0..1", "on|off", "pcf-none|pcf-3x3".
+std::string describeRange(const ParamDecl& decl);
+std::string_view paramTypeName(ParamType type);
+
+/// A set of values for a list of declarations. Values are always inside their range:
+/// every setter validates and returns an error message naming the key and the range.
+class ParamSet {
+ public:
+  ParamSet() = default;
+  explicit ParamSet(std::vector<ParamDecl> decls);
+
+  const std::vector<ParamDecl>& decls() const { return decls_; }
+  const ParamDecl* find(std::string_view key) const;
+  bool has(std::string_view key) const { return find(key) != nullptr; }
+
+  double get(std::string_view key) const;  ///< throws std::out_of_range for unknown keys
+  int getInt(std::string_view key) const { return static_cast<int>(get(key)); }
+  bool getBool(std::string_view key) const { return get(key) != 0.0; }
+
+  /// Sets a value; returns an error message (and changes nothing) when the key is unknown,
+  /// the value is not finite, out of range, or not an integer for Int/Enum/Bool.
+  std::optional<std::string> set(std::string_view key, double value);
+  /// Parses "true/false/on/off", numbers, or enum names. Same errors as set().
+  std::optional<std::string> setFromString(std::string_view key, std::string_view text);
+  /// Parses "key=value".
+  std::optional<std::string> assign(std::string_view keyEqualsValue);
+
+  void resetToDefaults();
+  void reset(std::string_view key);
+  /// Value formatted for humans / JSON ("on", "pcf-3x3", "1024", "0.25").
+  std::string format(std::string_view key) const;
+  /// Monotonic counter increased by every successful change (renderers watch it).
+  unsigned revision() const { return revision_; }
+
+  bool operator==(const ParamSet& other) const { return values_ == other.values_; }
+
+ private:
+  std::vector<ParamDecl> decls_;
+  std::map<std::string, double, std::less<>> values_;
+  unsigned revision_ = 0;
+};
+
+}  // namespace sl

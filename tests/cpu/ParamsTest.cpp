@@ -1,0 +1,64 @@
+// Parameter declarations: range checks and parsing, the contract every front end relies on.
+#include <gtest/gtest.h>
+
+#include "algo/Params.h"
+
+namespace sl {
+namespace {
+
+ParamSet makeSet() {
+  return ParamSet({
+      {"resolution", "Resolution", "Shadow map", ParamType::Int, 2048, 64, 16384, 1, {}, "SM size"},
+      {"bias.slope", "Slope bias", "Bias", ParamType::Float, 1.5, 0, 10, 0.1, {}, ""},
+      {"pcf", "PCF", "Filter", ParamType::Bool, 0, 0, 1, 1, {}, ""},
+      {"filter", "Filter", "Filter", ParamType::Enum, 1, 0, 2, 1, {"none", "pcf3", "pcf5"}, ""},
+  });
+}
+
+TEST(Params, DefaultsAndSet) {
+  ParamSet p = makeSet();
+  EXPECT_EQ(p.getInt("resolution"), 2048);
+  EXPECT_FALSE(p.set("resolution", 4096));
+  EXPECT_EQ(p.getInt("resolution"), 4096);
+  EXPECT_EQ(p.format("filter"), "pcf3");
+}
+
+TEST(Params, OutOfRangeNamesTheRangeAndKeepsValue) {
+  ParamSet p = makeSet();
+  auto err = p.set("resolution", 20000);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("64..16384"), std::string::npos) << *err;
+  EXPECT_NE(err->find("resolution"), std::string::npos) << *err;
+  EXPECT_EQ(p.getInt("resolution"), 2048);
+  EXPECT_TRUE(p.set("resolution", 100.5));  // not an integer
+  EXPECT_TRUE(p.set("bias.slope", std::nan("")));
+}
+
+TEST(Params, UnknownKeyListsKnownKeys) {
+  ParamSet p = makeSet();
+  auto err = p.assign("nope=3");
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("unknown parameter 'nope'"), std::string::npos) << *err;
+  EXPECT_NE(err->find("bias.slope"), std::string::npos) << *err;
+}
+
+TEST(Params, ParsesBoolsEnumsAndNumbers) {
+  ParamSet p = makeSet();
+  EXPECT_FALSE(p.assign("pcf=on"));
+  EXPECT_TRUE(p.getBool("pcf"));
+  EXPECT_FALSE(p.assign("filter=pcf5"));
+  EXPECT_EQ(p.getInt("filter"), 2);
+  EXPECT_FALSE(p.assign("bias.slope=2.5"));
+  EXPECT_DOUBLE_EQ(p.get("bias.slope"), 2.5);
+  EXPECT_TRUE(p.assign("bias.slope=abc"));
+  EXPECT_TRUE(p.assign("filter=bilinear"));
+  EXPECT_TRUE(p.assign("novalue"));
+  unsigned rev = p.revision();
+  EXPECT_FALSE(p.assign("bias.slope=2.5"));  // unchanged value: no new revision
+  EXPECT_EQ(p.revision(), rev);
+  p.resetToDefaults();
+  EXPECT_EQ(p.getInt("filter"), 1);
+}
+
+}  // namespace
+}  // namespace sl

@@ -1,7 +1,10 @@
 # Guards that keep the layering honest: the algorithm library (and the other CPU-only
 # targets) must never link Qt or OpenGL. Checked at configure time.
 function(shadowlab_forbid_gpu_and_qt target)
-  cmake_language(DEFER DIRECTORY ${CMAKE_SOURCE_DIR} CALL _shadowlab_check_links ${target})
+  # Deferred so that links added later in the same directory are seen; EVAL binds the
+  # target name now (deferred arguments are otherwise expanded at call time).
+  cmake_language(EVAL CODE
+    "cmake_language(DEFER DIRECTORY [[${CMAKE_SOURCE_DIR}]] CALL _shadowlab_check_links [[${target}]])")
 endfunction()
 
 function(_shadowlab_check_links target)

@@ -1,2 +1,324 @@
-// shadowlab-cli: headless command-line front end (surfaceless EGL).
-int main() { return 0; }
+// shadowlab-cli: the headless front end (surfaceless EGL, no display needed).
+//   list      scenes, techniques and their parameters
+//   render    one configuration -> PNG, metrics JSON, error image
+//   compare   every technique on one scene -> a folder of images and metrics
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/Preset.h"
+#include "core/Renderer.h"
+#include "gl/EglContext.h"
+#include "metrics/Image.h"
+#include "scene/GltfLoader.h"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+/// Bad input: one line on stderr naming the option or file and the problem, exit 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+const char* kUsage =
+    "usage: shadowlab-cli list\n"
+    "       shadowlab-cli render --scene NAME|FILE --technique ID [--set KEY=VALUE]...\n"
+    "                            [--size WxH] [--frames N] [--camera NAME|INDEX]\n"
+    "                            [--light AZIMUTH,ELEVATION] [--preset FILE.json]\n"
+    "                            --out FILE.png [--metrics FILE.json] [--error-image FILE.png]\n"
+    "       shadowlab-cli compare [--scene NAME|FILE] [--size WxH] --out-dir DIR\n";
+
+struct Args {
+  std::vector<std::string> rest;
+  std::string take(size_t& i, const std::string& opt) {
+    if (i + 1 >= rest.size()) throw UsageError(opt + ": missing value");
+    return rest[++i];
+  }
+};
+
+int parseInt(const std::string& opt, const std::string& text, int lo, int hi) {
+  try {
+    size_t used = 0;
+    int v = std::stoi(text, &used);
+    if (used != text.size()) throw std::invalid_argument(text);
+    if (v < lo || v > hi)
+      throw UsageError(opt + ": " + text + " is out of range " + std::to_string(lo) + ".." +
+                       std::to_string(hi));
+    return v;
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::exception&) {
+    throw UsageError(opt + ": expected an integer, got '" + text + "'");
+  }
+}
+
+std::pair<int, int> parseSize(const std::string& text) {
+  auto x = text.find('x');
+  if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + text + "'");
+  return {parseInt("--size", text.substr(0, x), 1, 16384),
+          parseInt("--size", text.substr(x + 1), 1, 16384)};
+}
+
+struct RenderConfig {
+  std::string scene = "default";
+  std::string technique = "uniform";
+  std::vector<std::string> sets;
+  int width = 1280, height = 720;
+  int frames = 1;
+  std::string camera;
+  std::optional<sl::DirectionalLight> light;
+  std::string out, metrics, errorImage;
+};
+
+std::shared_ptr<sl::Scene> loadScene(const std::string& nameOrPath) {
+  sl::SceneLoadResult r = sl::loadSceneByNameOrPath(nameOrPath);
+  if (!r) throw UsageError(r.error);
+  return r.scene;
+}
+
+sl::Camera pickCamera(const sl::Scene& scene, const std::string& which) {
+  if (which.empty()) return scene.cameras.empty() ? scene.defaultCamera() : scene.cameras[0].camera;
+  for (const auto& b : scene.cameras)
+    if (b.name == which) return b.camera;
+  try {
+    size_t idx = std::stoul(which);
+    if (idx < scene.cameras.size()) return scene.cameras[idx].camera;
+  } catch (...) {
+  }
+  std::string known;
+  for (const auto& b : scene.cameras) known += (known.empty() ? "" : ", ") + b.name;
+  throw UsageError("--camera: scene '" + scene.name + "' has no camera '" + which +
+                   "' (cameras: " + (known.empty() ? "none" : known) + ")");
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// Renders `frames` frames and returns the metrics JSON (medians over frames).
+json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::ErrorResult& err) {
+  std::map<std::string, std::vector<double>> passMs;
+  std::vector<std::string> passOrder;
+  std::vector<double> totals;
+  for (int f = 0; f < cfg.frames; ++f) {
+    if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) throw std::runtime_error(*e);
+    for (const auto& p : r.stats().passes) {
+      if (!passMs.count(p.name)) passOrder.push_back(p.name);
+      passMs[p.name].push_back(p.ms);
+    }
+    totals.push_back(r.stats().totalMs);
+  }
+  for (const std::string& e : r.takeGlErrors()) throw std::runtime_error("GL error: " + e);
+  err = r.computeError();
+  const sl::FrameStats& st = r.stats();
+  json j;
+  j["scene"] = r.scene()->name;
+  j["technique"] = r.techniqueId();
+  json params = json::object();
+  for (const auto& d : r.params().decls()) params[d.key] = r.params().format(d.key);
+  j["params"] = params;
+  j["size"] = {cfg.width, cfg.height};
+  j["frames"] = cfg.frames;
+  j["timing_method"] = st.timingMethod;
+  j["total_ms"] = median(totals);
+  json passes = json::array();
+  for (const auto& name : passOrder)
+    passes.push_back({{"name", name}, {"ms", median(passMs[name])}, {"method", st.timingMethod}});
+  j["passes"] = passes;
+  j["texels"] = st.memory.texels();
+  j["bytes"] = st.memory.bytes();
+  json res = json::array();
+  for (const auto& m : st.memory.resources)
+    res.push_back({{"name", m.name}, {"format", m.format}, {"width", m.width}, {"height", m.height},
+                   {"layers", m.layers}, {"texels", m.texels}, {"bytes", m.bytes}});
+  j["resources"] = res;
+  j["covered_pixels"] = err.stats.covered;
+  j["error_pct"] = err.stats.errorPct;
+  j["false_lit_pct"] = err.stats.falseLitPct;
+  j["false_shadow_pct"] = err.stats.falseShadowPct;
+  j["gl"] = r.glDescription();
+  return j;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  if (fs::path(path).has_parent_path()) fs::create_directories(fs::path(path).parent_path());
+  std::ofstream out(path);
+  if (!out) throw UsageError(path + ": cannot write");
+  out << text << "\n";
+}
+
+void writePng(const std::string& path, const sl::ImageRGBA8& img) {
+  if (auto e = sl::writeImage(path, img)) throw UsageError(*e);
+}
+
+void configure(sl::Renderer& r, const RenderConfig& cfg) {
+  auto scene = loadScene(cfg.scene);
+  r.setScene(scene);
+  if (auto e = r.setTechnique(cfg.technique)) throw UsageError("--technique: " + *e);
+  for (const std::string& kv : cfg.sets) {
+    // Shared renderer parameters (shading.*) and the technique's own.
+    auto eq = kv.find('=');
+    std::string key = eq == std::string::npos ? kv : kv.substr(0, eq);
+    sl::ParamSet& set = r.rendererParams().has(key) ? r.rendererParams() : r.params();
+    if (auto e = set.assign(kv)) throw UsageError("--set: " + *e);
+  }
+  r.setCamera(pickCamera(*scene, cfg.camera));
+  if (cfg.light) r.setLight(*cfg.light);
+}
+
+int cmdList() {
+  std::cout << "Scenes (" << sl::builtinSceneDir().string() << "):\n";
+  for (const std::string& n : sl::builtinSceneNames()) std::cout << "  " << n << "\n";
+  std::cout << "\nTechniques:\n";
+  auto printParams = [](const std::vector<sl::ParamDecl>& decls) {
+    for (const auto& d : decls) {
+      sl::ParamSet tmp({d});
+      std::cout << "      " << d.key << " = " << tmp.format(d.key) << "  ["
+                << sl::describeRange(d) << "]  " << d.help << "\n";
+    }
+  };
+  for (const auto& t : sl::Renderer::techniques()) {
+    std::cout << "  " << t.id << " - " << t.name << "\n      " << t.description << "\n";
+    printParams(t.params);
+  }
+  std::cout << "\nShared parameters (every technique):\n";
+  printParams(sl::rendererParamDecls());
+  return 0;
+}
+
+RenderConfig parseRender(Args& a, size_t start, bool needOut) {
+  RenderConfig cfg;
+  for (size_t i = start; i < a.rest.size(); ++i) {
+    const std::string& o = a.rest[i];
+    if (o == "--scene") cfg.scene = a.take(i, o);
+    else if (o == "--technique") cfg.technique = a.take(i, o);
+    else if (o == "--set") cfg.sets.push_back(a.take(i, o));
+    else if (o == "--size") std::tie(cfg.width, cfg.height) = parseSize(a.take(i, o));
+    else if (o == "--frames") cfg.frames = parseInt(o, a.take(i, o), 1, 100000);
+    else if (o == "--camera") cfg.camera = a.take(i, o);
+    else if (o == "--out" || o == "--out-dir") cfg.out = a.take(i, o);
+    else if (o == "--metrics") cfg.metrics = a.take(i, o);
+    else if (o == "--error-image") cfg.errorImage = a.take(i, o);
+    else if (o == "--light") {
+      std::string v = a.take(i, o);
+      auto c = v.find(',');
+      try {
+        if (c == std::string::npos) throw std::invalid_argument(v);
+        sl::DirectionalLight l;
+        l.azimuthDeg = std::stof(v.substr(0, c));
+        l.elevationDeg = std::stof(v.substr(c + 1));
+        if (auto e = l.validate()) throw UsageError("--light: " + *e);
+        cfg.light = l;
+      } catch (const UsageError&) {
+        throw;
+      } catch (const std::exception&) {
+        throw UsageError("--light: expected AZIMUTH,ELEVATION in degrees, got '" + v + "'");
+      }
+    } else if (o == "--preset") {
+      std::string err;
+      auto p = sl::loadPreset(a.take(i, o), &err);
+      if (!p) throw UsageError("--preset: " + err);
+      if (!p->scene.empty()) cfg.scene = p->scene;
+      if (!p->technique.empty()) cfg.technique = p->technique;
+      for (const auto& [k, v] : p->params) cfg.sets.push_back(k + "=" + v);
+      if (p->light) cfg.light = p->light;
+    } else {
+      throw UsageError("unknown option '" + o + "'");
+    }
+  }
+  if (needOut && cfg.out.empty()) throw UsageError("--out: missing (where to write the image)");
+  return cfg;
+}
+
+int cmdRender(Args& a) {
+  RenderConfig cfg = parseRender(a, 1, true);
+  sl::gl::EglContext ctx;
+  sl::Renderer r;
+  configure(r, cfg);
+  sl::Renderer::ErrorResult err;
+  json j = renderAndMeasure(r, cfg, err);
+  writePng(cfg.out, err.frame.color);
+  if (!cfg.metrics.empty()) writeText(cfg.metrics, j.dump(2));
+  if (!cfg.errorImage.empty())
+    writePng(cfg.errorImage, sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
+  std::printf("%s on %s: %.2f ms (%s), %llu texels, error %.3f%% (false lit %.3f%%, false shadow "
+              "%.3f%%) -> %s\n",
+              r.techniqueId().c_str(), r.scene()->name.c_str(), j["total_ms"].get<double>(),
+              r.stats().timingMethod.c_str(), (unsigned long long)r.stats().memory.texels(),
+              err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct,
+              cfg.out.c_str());
+  return 0;
+}
+
+int cmdCompare(Args& a) {
+  RenderConfig base = parseRender(a, 1, false);
+  if (base.out.empty()) base.out = "shadowlab-out";
+  fs::create_directories(base.out);
+  sl::gl::EglContext ctx;
+  sl::Renderer r;
+  json summary = json::array();
+  std::printf("%-14s %10s %12s %10s %10s %10s\n", "technique", "total ms", "texels", "error %",
+              "false lit", "false shd");
+  for (const auto& t : sl::Renderer::techniques()) {
+    RenderConfig cfg = base;
+    cfg.technique = t.id;
+    cfg.frames = std::max(cfg.frames, 3);
+    configure(r, cfg);
+    sl::Renderer::ErrorResult err;
+    json j = renderAndMeasure(r, cfg, err);
+    std::string stem = (fs::path(base.out) / t.id).string();
+    writePng(stem + ".png", err.frame.color);
+    writePng(stem + ".error.png",
+             sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
+    writeText(stem + ".json", j.dump(2));
+    summary.push_back(j);
+    std::printf("%-14s %10.2f %12llu %10.3f %10.3f %10.3f\n", t.id.c_str(),
+                j["total_ms"].get<double>(), (unsigned long long)j["texels"].get<uint64_t>(),
+                err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct);
+  }
+  writeText((fs::path(base.out) / "summary.json").string(), summary.dump(2));
+  std::printf("wrote images (<technique>.png, <technique>.error.png) and metrics (*.json, "
+              "summary.json) to %s\n",
+              fs::absolute(base.out).string().c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) a.rest.emplace_back(argv[i]);
+  try {
+    if (a.rest.empty() || a.rest[0] == "--help" || a.rest[0] == "-h") {
+      std::cout << kUsage;
+      return a.rest.empty() ? 2 : 0;
+    }
+    const std::string& cmd = a.rest[0];
+    if (cmd == "list") return cmdList();
+    if (cmd == "render") return cmdRender(a);
+    if (cmd == "compare") return cmdCompare(a);
+    throw UsageError("unknown command '" + cmd + "' (commands: list, render, compare)");
+  } catch (const UsageError& e) {
+    std::cerr << "shadowlab-cli: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::string msg = e.what();
+    std::replace(msg.begin(), msg.end(), '\n', ' ');
+    std::cerr << "shadowlab-cli: " << msg << "\n";
+    return 1;
+  }
+}

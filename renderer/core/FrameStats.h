@@ -1,0 +1,44 @@
+// What a frame costs: per-pass time (with the timing method used) and the memory of
+// every shadow-related resource. Published by the renderer; read by CLI, UI and tests.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+struct PassTiming {
+  std::string name;  ///< e.g. "gbuffer", "shadow map", "resolve"
+  double ms = 0.0;
+};
+
+struct ResourceInfo {
+  std::string name;    ///< e.g. "shadow map"
+  std::string format;  ///< e.g. "DEPTH_COMPONENT32F"
+  int width = 0, height = 1, layers = 1;
+  std::uint64_t texels = 0;
+  std::uint64_t bytes = 0;
+};
+
+struct MemoryStats {
+  std::vector<ResourceInfo> resources;  ///< shadow-related resources of the technique
+  std::uint64_t texels() const;
+  std::uint64_t bytes() const;
+  void add(std::string name, std::string format, int width, int height, int layers,
+           int bytesPerTexel);
+};
+
+struct FrameStats {
+  std::uint64_t frameIndex = 0;
+  int width = 0, height = 0;
+  std::vector<PassTiming> passes;
+  double totalMs = 0.0;
+  /// "glFinish+wallclock" (software rasterisers, where GL_TIME_ELAPSED is meaningless)
+  /// or "GL_TIME_ELAPSED" (timer queries on real GPUs).
+  std::string timingMethod;
+  MemoryStats memory;
+  double passMs(const std::string& name) const;
+};
+
+}  // namespace sl

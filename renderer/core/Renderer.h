@@ -1,0 +1,131 @@
+// The renderer: the only part of ShadowLab that calls OpenGL. Hosts (the Qt widget,
+// the EGL command line, tests) make a GL 4.5 core context current and call renderFrame;
+// panels read what the renderer publishes (FrameStats, Publication) and never touch GL.
+// This header is GL-free on purpose so that UI headers can include it.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "algo/Camera.h"
+#include "algo/Params.h"
+#include "core/FrameStats.h"
+#include "metrics/ErrorMetrics.h"
+#include "metrics/Image.h"
+#include "scene/Scene.h"
+
+namespace sl {
+
+class Technique;
+struct RendererState;
+
+/// What a technique is, without creating it (no GL needed): for `list`, menus, presets.
+struct TechniqueInfo {
+  std::string id;           ///< "uniform", "rtw-backward", ...
+  std::string name;         ///< "Uniform shadow map"
+  std::string description;  ///< one or two sentences, with the source paper
+  std::vector<ParamDecl> params;
+};
+
+/// Parameters shared by every technique (shading, view) — declared once here.
+std::vector<ParamDecl> rendererParamDecls();
+
+/// A float image published for the panels (e.g. an importance map), row 0 = bottom.
+struct FloatImage {
+  int width = 0, height = 0, channels = 1;
+  std::vector<float> values;
+};
+
+/// Debug data a technique publishes each frame when publishing is on: images (importance
+/// map, moment levels, shadow map), curves (1D importance, warp maps) and numbers
+/// (eigenvalues, rotation angle). Keys are documented by each technique.
+struct Publication {
+  std::uint64_t frameIndex = 0;
+  std::string techniqueId;
+  std::map<std::string, FloatImage> images;
+  std::map<std::string, std::vector<float>> curves;
+  std::map<std::string, double> numbers;
+};
+
+/// Per-pixel data of the last frame, read back from the GPU (slow: metrics and tests).
+struct FrameReadback {
+  int width = 0, height = 0;
+  std::vector<glm::vec4> positions;    ///< world xyz, w = 1 covered / 0 background
+  std::vector<glm::vec4> normals;      ///< world, unit, facing the camera
+  std::vector<std::uint8_t> hardMask;  ///< technique's hard test: 1 lit, 0 shadow, 255 empty
+  ImageRGBA8 color;                    ///< final shaded image, row 0 = top
+};
+
+struct RendererOptions {
+  std::string shaderDir;  ///< empty: SHADOWLAB_SHADER_DIR env var, else compiled-in path
+  bool debugOutput = true;
+};
+
+class Renderer {
+ public:
+  /// Needs a current OpenGL 4.5 core context. Throws std::runtime_error naming what is
+  /// missing (GL version, extension) or the shader that failed to compile.
+  explicit Renderer(const RendererOptions& options = {});
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  static const std::vector<TechniqueInfo>& techniques();
+  static const TechniqueInfo* findTechnique(std::string_view id);
+
+  /// GL_VENDOR / GL_RENDERER / GL_VERSION of the context.
+  std::string glDescription() const;
+
+  void setScene(std::shared_ptr<const Scene> scene);
+  const std::shared_ptr<const Scene>& scene() const;
+
+  /// Switches technique (each technique keeps its own parameter values). Unknown id:
+  /// an error naming the known ids, nothing changes.
+  std::optional<std::string> setTechnique(std::string_view id);
+  const std::string& techniqueId() const;
+  ParamSet& params();  ///< the current technique's parameters (live)
+  ParamSet& paramsOf(std::string_view techniqueId);
+  ParamSet& rendererParams();  ///< shared view/shading parameters
+
+  void setCamera(const Camera& camera);
+  const Camera& camera() const;
+  void setLight(const DirectionalLight& light);
+  const DirectionalLight& light() const;
+
+  /// Renders one frame of width x height into `targetFramebuffer` (0 = default).
+  /// Returns an error (and renders a neutral frame) when the camera, light or size is
+  /// degenerate; the renderer keeps working.
+  std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer);
+  const FrameStats& stats() const;
+
+  /// Publishing debug data costs readbacks; off by default, the GUI turns it on.
+  void setPublishing(bool on);
+  const Publication& publication() const;
+
+  /// Reads the last frame back (positions, normals, hard mask, colour).
+  FrameReadback readback() const;
+  /// Exact reference for the last frame (Embree, cached per scene) and the error.
+  struct ErrorResult {
+    ShadowErrorStats stats;
+    std::vector<std::uint8_t> referenceMask;
+    FrameReadback frame;
+  };
+  ErrorResult computeError() const;
+
+  /// Shader hot reload: on failure the last good programs stay in use, error returned.
+  std::optional<std::string> reloadShaders();
+  /// GL debug-output errors seen since the last call (empty when all is well).
+  std::vector<std::string> takeGlErrors();
+  /// Resets state that accumulates over frames (e.g. DA-RTW's rotation).
+  void resetTemporalState();
+
+ private:
+  std::unique_ptr<RendererState> s_;
+};
+
+}  // namespace sl

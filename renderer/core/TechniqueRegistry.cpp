@@ -1,0 +1,40 @@
+// The list of techniques. Adding a technique: its folder under techniques/ and shaders/,
+// and one line here.
+#include "core/Technique.h"
+#include "techniques/uniform/UniformShadowMap.h"
+
+namespace sl {
+
+namespace {
+template <typename T>
+TechniqueEntry entry() {
+  return {T::info(), [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
+            return std::make_unique<T>(lib);
+          }};
+}
+}  // namespace
+
+const std::vector<TechniqueEntry>& techniqueRegistry() {
+  static const std::vector<TechniqueEntry> list = {
+      entry<UniformShadowMap>(),
+  };
+  return list;
+}
+
+std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution) {
+  return {
+      {"resolution", "Resolution", "Shadow map", ParamType::Int, double(defaultResolution), 64,
+       16384, 64, {}, "Shadow map width and height in texels."},
+      {"bias.slope", "Slope bias", "Bias", ParamType::Float, 2.0, 0.0, 16.0, 0.25, {},
+       "Slope-scaled depth bias (glPolygonOffset factor) applied when rendering the map."},
+      {"bias.constant", "Constant bias", "Bias", ParamType::Float, 2.0, 0.0, 1000.0, 1.0, {},
+       "Constant depth bias in the depth format's smallest steps (glPolygonOffset units)."},
+      {"bias.normal", "Normal offset", "Bias", ParamType::Float, 1.0, 0.0, 8.0, 0.25, {},
+       "Receiver offset along its normal, in shadow-map texels, before the lookup."},
+      {"pcf", "PCF radius", "Filtering", ParamType::Int, 0, 0, 3, 1, {},
+       "Percentage-closer filtering kernel radius in texels for the shaded image (0 = hard). "
+       "Metrics always use the hard test."},
+  };
+}
+
+}  // namespace sl

@@ -1,0 +1,78 @@
+#include "EglContext.h"
+
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace sl::gl {
+
+struct EglContext::Impl {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+};
+
+namespace {
+std::string eglErrorString() {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "0x%04x", eglGetError());
+  return buf;
+}
+}  // namespace
+
+EglContext::EglContext(bool debug) : impl_(std::make_unique<Impl>()) {
+  const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  std::string exts = clientExts ? clientExts : "";
+  if (exts.find("EGL_MESA_platform_surfaceless") == std::string::npos)
+    throw std::runtime_error(
+        "EGL: the surfaceless platform (EGL_MESA_platform_surfaceless) is not available; "
+        "install Mesa's EGL (libegl-mesa0)");
+  impl_->display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
+                                            nullptr);
+  if (impl_->display == EGL_NO_DISPLAY) throw std::runtime_error("EGL: no surfaceless display");
+  EGLint major = 0, minor = 0;
+  if (!eglInitialize(impl_->display, &major, &minor))
+    throw std::runtime_error("EGL: eglInitialize failed (" + eglErrorString() + ")");
+  if (!epoxy_has_egl_extension(impl_->display, "EGL_KHR_surfaceless_context"))
+    throw std::runtime_error("EGL: EGL_KHR_surfaceless_context is missing");
+  if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL: desktop OpenGL API unavailable");
+  const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint count = 0;
+  if (!eglChooseConfig(impl_->display, configAttribs, &config, 1, &count) || count == 0)
+    throw std::runtime_error("EGL: no config with desktop OpenGL");
+  const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                               4,
+                               EGL_CONTEXT_MINOR_VERSION,
+                               5,
+                               EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                               EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                               EGL_CONTEXT_OPENGL_DEBUG,
+                               debug ? EGL_TRUE : EGL_FALSE,
+                               EGL_NONE};
+  impl_->context = eglCreateContext(impl_->display, config, EGL_NO_CONTEXT, ctxAttribs);
+  if (impl_->context == EGL_NO_CONTEXT)
+    throw std::runtime_error("EGL: could not create an OpenGL 4.5 core context (" +
+                             eglErrorString() + "); ShadowLab needs OpenGL 4.5");
+  makeCurrent();
+  if (epoxy_gl_version() < 45)
+    throw std::runtime_error("OpenGL 4.5 core is required, the driver gives " +
+                             std::to_string(epoxy_gl_version() / 10) + "." +
+                             std::to_string(epoxy_gl_version() % 10));
+}
+
+EglContext::~EglContext() {
+  if (impl_->display != EGL_NO_DISPLAY) {
+    eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (impl_->context != EGL_NO_CONTEXT) eglDestroyContext(impl_->display, impl_->context);
+    eglTerminate(impl_->display);
+  }
+}
+
+void EglContext::makeCurrent() {
+  if (!eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context))
+    throw std::runtime_error("EGL: eglMakeCurrent failed (" + eglErrorString() + ")");
+}
+
+}  // namespace sl::gl

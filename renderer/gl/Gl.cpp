@@ -1,0 +1,126 @@
+#include "Gl.h"
+
+#include <stdexcept>
+
+namespace sl::gl {
+
+Texture Texture::create2D(GLenum internalFormat, int width, int height, int levels) {
+  Texture t;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  t.h_ = Handle<TextureDeleter>(id);
+  glTextureStorage2D(id, levels, internalFormat, width, height);
+  t.width_ = width;
+  t.height_ = height;
+  t.format_ = internalFormat;
+  t.setFilter(levels > 1 ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST, GL_NEAREST);
+  t.setWrap(GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+Texture Texture::create1D(GLenum internalFormat, int width) {
+  Texture t;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_1D, 1, &id);
+  t.h_ = Handle<TextureDeleter>(id);
+  glTextureStorage1D(id, 1, internalFormat, width);
+  t.width_ = width;
+  t.height_ = 1;
+  t.format_ = internalFormat;
+  t.setFilter(GL_LINEAR, GL_LINEAR);
+  t.setWrap(GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void Texture::setFilter(GLenum minFilter, GLenum magFilter) {
+  glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GLint(minFilter));
+  glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GLint(magFilter));
+}
+
+void Texture::setWrap(GLenum wrap) {
+  glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GLint(wrap));
+  glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GLint(wrap));
+}
+
+void Texture::setCompare(bool on) {
+  glTextureParameteri(id(), GL_TEXTURE_COMPARE_MODE,
+                      on ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+  glTextureParameteri(id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+}
+
+Buffer Buffer::create(GLsizeiptr bytes, const void* data, GLbitfield flags) {
+  Buffer b;
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  b.h_ = Handle<BufferDeleter>(id);
+  glNamedBufferStorage(id, bytes > 0 ? bytes : 4, data, flags);
+  b.size_ = bytes;
+  return b;
+}
+
+Framebuffer Framebuffer::create() {
+  Framebuffer f;
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  f.h_ = Handle<FramebufferDeleter>(id);
+  return f;
+}
+
+void Framebuffer::attach(GLenum attachment, const Texture& texture, int level) {
+  glNamedFramebufferTexture(id(), attachment, texture.id(), level);
+}
+
+void Framebuffer::setDrawBuffers(int count) {
+  GLenum bufs[8];
+  for (int i = 0; i < count && i < 8; ++i) bufs[i] = GLenum(GL_COLOR_ATTACHMENT0 + i);
+  if (count == 0) {
+    glNamedFramebufferDrawBuffer(id(), GL_NONE);
+    glNamedFramebufferReadBuffer(id(), GL_NONE);
+  } else {
+    glNamedFramebufferDrawBuffers(id(), count, bufs);
+  }
+}
+
+void Framebuffer::checkComplete(const std::string& what) const {
+  GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("framebuffer '" + what + "' is incomplete (status 0x" +
+                             std::to_string(status) + ")");
+}
+
+VertexArray createVertexArray() {
+  GLuint id = 0;
+  glCreateVertexArrays(1, &id);
+  return VertexArray(id);
+}
+
+int bytesPerTexel(GLenum f) {
+  switch (f) {
+    case GL_R8: return 1;
+    case GL_RG8: case GL_R16F: case GL_DEPTH_COMPONENT16: return 2;
+    case GL_RGBA8: case GL_R32F: case GL_R32UI: case GL_RG16F: case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH_COMPONENT24: case GL_DEPTH24_STENCIL8: return 4;
+    case GL_RG32F: case GL_RGBA16F: return 8;
+    case GL_RGBA32F: return 16;
+    default: return 4;
+  }
+}
+
+std::string formatName(GLenum f) {
+  switch (f) {
+    case GL_R8: return "R8";
+    case GL_RGBA8: return "RGBA8";
+    case GL_R16F: return "R16F";
+    case GL_R32F: return "R32F";
+    case GL_R32UI: return "R32UI";
+    case GL_RG32F: return "RG32F";
+    case GL_RGBA16F: return "RGBA16F";
+    case GL_RGBA32F: return "RGBA32F";
+    case GL_DEPTH_COMPONENT16: return "DEPTH_COMPONENT16";
+    case GL_DEPTH_COMPONENT24: return "DEPTH_COMPONENT24";
+    case GL_DEPTH_COMPONENT32F: return "DEPTH_COMPONENT32F";
+    default: return "0x" + std::to_string(f);
+  }
+}
+
+}  // namespace sl::gl

@@ -1,0 +1,65 @@
+#include "UniformShadowMap.h"
+
+#include <stdexcept>
+
+#include "algo/Focus.h"
+#include "core/SceneGpu.h"
+#include "core/ShadowPass.h"
+
+namespace sl {
+
+TechniqueInfo UniformShadowMap::info() {
+  return {"uniform", "Uniform shadow map",
+          "Standard shadow map (Williams 1978): one orthographic depth map from the light, "
+          "focused on what the camera sees. The baseline.",
+          shadowMapParamDecls(2048)};
+}
+
+UniformShadowMap::UniformShadowMap(const gl::ShaderLibrary& lib)
+    : depthProgram_(lib, depthProgramDesc()) {}
+
+void UniformShadowMap::renderShadows(FrameContext& ctx) {
+  auto pass = ctx.timer.scope("shadow map");
+  const int res = ctx.params.getInt("resolution");
+  LightFit fit;
+  if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
+                                     FocusSettings{}, fit))
+    throw std::runtime_error(*err);
+  lightViewProj_ = fit.viewProj;
+  texelSizeM_ = std::max(fit.extentM.x, fit.extentM.y) / float(res);
+  normalOffsetTexels_ = float(ctx.params.get("bias.normal"));
+  pcfRadius_ = ctx.params.getInt("pcf");
+
+  if (!shadowMap_ || shadowMap_.width() != res) {
+    shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
+    fbo_ = gl::Framebuffer::create();
+    fbo_.attach(GL_DEPTH_ATTACHMENT, shadowMap_);
+    fbo_.setDrawBuffers(0);
+    fbo_.checkComplete("uniform shadow map");
+  }
+  renderDepth(ctx, depthProgram_, fbo_.id(), res, res, fit.viewProj,
+              float(ctx.params.get("bias.slope")), float(ctx.params.get("bias.constant")));
+  if (ctx.publication) publishDepth(*ctx.publication, "shadow map", shadowMap_);
+}
+
+void UniformShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
+  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
+  resolve.set("u_shadowMap", firstUnit);
+  resolve.set("u_lightViewProj", lightViewProj_);
+  resolve.set("u_normalOffsetM", normalOffsetTexels_ * texelSizeM_);
+  resolve.set("u_pcfRadius", pcfRadius_);
+}
+
+MemoryStats UniformShadowMap::memory() const {
+  MemoryStats m;
+  if (shadowMap_)
+    m.add("shadow map", gl::formatName(shadowMap_.format()), shadowMap_.width(),
+          shadowMap_.height(), 1, gl::bytesPerTexel(shadowMap_.format()));
+  return m;
+}
+
+std::optional<std::string> UniformShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  return depthProgram_.rebuild(lib);
+}
+
+}  // namespace sl

@@ -1,0 +1,31 @@
+// Uniform (standard) shadow map, Williams 1978: one orthographic depth map from the light,
+// focused on the part of the scene the camera sees (techniques.md §1). The baseline every
+// other technique is compared against at the same texel budget.
+#pragma once
+
+#include "core/Technique.h"
+
+namespace sl {
+
+class UniformShadowMap : public Technique {
+ public:
+  static TechniqueInfo info();
+  explicit UniformShadowMap(const gl::ShaderLibrary& lib);
+
+  void renderShadows(FrameContext& ctx) override;
+  std::string lookupShader() const override { return "uniform/lookup.glsl"; }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  MemoryStats memory() const override;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+
+ private:
+  gl::Program depthProgram_;
+  gl::Texture shadowMap_;
+  gl::Framebuffer fbo_;
+  glm::mat4 lightViewProj_{1.0f};
+  float texelSizeM_ = 0.0f;
+  float normalOffsetTexels_ = 1.0f;
+  int pcfRadius_ = 0;
+};
+
+}  // namespace sl

@@ -143,8 +143,13 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   j["bytes"] = st.memory.bytes();
   json res = json::array();
   for (const auto& m : st.memory.resources)
-    res.push_back({{"name", m.name}, {"format", m.format}, {"width", m.width}, {"height", m.height},
-                   {"layers", m.layers}, {"texels", m.texels}, {"bytes", m.bytes}});
+    res.push_back({{"name", m.name},
+                   {"format", m.format},
+                   {"width", m.width},
+                   {"height", m.height},
+                   {"layers", m.layers},
+                   {"texels", m.texels},
+                   {"bytes", m.bytes}});
   j["resources"] = res;
   j["covered_pixels"] = err.stats.covered;
   j["error_pct"] = err.stats.errorPct;
@@ -187,8 +192,8 @@ int cmdList() {
   auto printParams = [](const std::vector<sl::ParamDecl>& decls) {
     for (const auto& d : decls) {
       sl::ParamSet tmp({d});
-      std::cout << "      " << d.key << " = " << tmp.format(d.key) << "  ["
-                << sl::describeRange(d) << "]  " << d.help << "\n";
+      std::cout << "      " << d.key << " = " << tmp.format(d.key) << "  [" << sl::describeRange(d)
+                << "]  " << d.help << "\n";
     }
   };
   for (const auto& t : sl::Renderer::techniques()) {
@@ -204,15 +209,24 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
   RenderConfig cfg;
   for (size_t i = start; i < a.rest.size(); ++i) {
     const std::string& o = a.rest[i];
-    if (o == "--scene") cfg.scene = a.take(i, o);
-    else if (o == "--technique") cfg.technique = a.take(i, o);
-    else if (o == "--set") cfg.sets.push_back(a.take(i, o));
-    else if (o == "--size") std::tie(cfg.width, cfg.height) = parseSize(a.take(i, o));
-    else if (o == "--frames") cfg.frames = parseInt(o, a.take(i, o), 1, 100000);
-    else if (o == "--camera") cfg.camera = a.take(i, o);
-    else if (o == "--out" || o == "--out-dir") cfg.out = a.take(i, o);
-    else if (o == "--metrics") cfg.metrics = a.take(i, o);
-    else if (o == "--error-image") cfg.errorImage = a.take(i, o);
+    if (o == "--scene")
+      cfg.scene = a.take(i, o);
+    else if (o == "--technique")
+      cfg.technique = a.take(i, o);
+    else if (o == "--set")
+      cfg.sets.push_back(a.take(i, o));
+    else if (o == "--size")
+      std::tie(cfg.width, cfg.height) = parseSize(a.take(i, o));
+    else if (o == "--frames")
+      cfg.frames = parseInt(o, a.take(i, o), 1, 100000);
+    else if (o == "--camera")
+      cfg.camera = a.take(i, o);
+    else if (o == "--out" || o == "--out-dir")
+      cfg.out = a.take(i, o);
+    else if (o == "--metrics")
+      cfg.metrics = a.take(i, o);
+    else if (o == "--error-image")
+      cfg.errorImage = a.take(i, o);
     else if (o == "--light") {
       std::string v = a.take(i, o);
       auto c = v.find(',');
@@ -254,13 +268,14 @@ int cmdRender(Args& a) {
   writePng(cfg.out, err.frame.color);
   if (!cfg.metrics.empty()) writeText(cfg.metrics, j.dump(2));
   if (!cfg.errorImage.empty())
-    writePng(cfg.errorImage, sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
-  std::printf("%s on %s: %.2f ms (%s), %llu texels, error %.3f%% (false lit %.3f%%, false shadow "
-              "%.3f%%) -> %s\n",
-              r.techniqueId().c_str(), r.scene()->name.c_str(), j["total_ms"].get<double>(),
-              r.stats().timingMethod.c_str(), (unsigned long long)r.stats().memory.texels(),
-              err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct,
-              cfg.out.c_str());
+    writePng(cfg.errorImage,
+             sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
+  std::printf(
+      "%s on %s: %.2f ms (%s), %llu texels, error %.3f%% (false lit %.3f%%, false shadow "
+      "%.3f%%) -> %s\n",
+      r.techniqueId().c_str(), r.scene()->name.c_str(), j["total_ms"].get<double>(),
+      r.stats().timingMethod.c_str(), (unsigned long long)r.stats().memory.texels(),
+      err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct, cfg.out.c_str());
   return 0;
 }
 
@@ -291,9 +306,10 @@ int cmdCompare(Args& a) {
                 err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct);
   }
   writeText((fs::path(base.out) / "summary.json").string(), summary.dump(2));
-  std::printf("wrote images (<technique>.png, <technique>.error.png) and metrics (*.json, "
-              "summary.json) to %s\n",
-              fs::absolute(base.out).string().c_str());
+  std::printf(
+      "wrote images (<technique>.png, <technique>.error.png) and metrics (*.json, "
+      "summary.json) to %s\n",
+      fs::absolute(base.out).string().c_str());
   return 0;
 }
 

@@ -14,13 +14,17 @@ std::array<glm::vec3, 8> Aabb::corners() const {
   return c;
 }
 
-glm::mat4 Camera::view() const { return glm::lookAt(position, target, up); }
+glm::mat4 Camera::view() const {
+  return glm::lookAt(position, target, up);
+}
 
 glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fovYDeg), aspect, nearM, farM);
 }
 
-glm::vec3 Camera::forward() const { return glm::normalize(target - position); }
+glm::vec3 Camera::forward() const {
+  return glm::normalize(target - position);
+}
 
 std::optional<std::string> Camera::validate() const {
   auto finite = [](const glm::vec3& v) {

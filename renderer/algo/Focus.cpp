@@ -57,7 +57,8 @@ std::vector<glm::vec3> intersectFrustumWithBox(const std::array<glm::vec3, 8>& f
     glm::vec3 inside(0.0f);
     for (const auto& p : c) inside += p / 8.0f;
     std::vector<Plane> planes;
-    for (const auto& f : hexFaces()) planes.push_back(planeThrough(c[f[0]], c[f[1]], c[f[2]], inside));
+    for (const auto& f : hexFaces())
+      planes.push_back(planeThrough(c[f[0]], c[f[1]], c[f[2]], inside));
     return planes;
   };
   std::vector<Plane> boxPlanes = planesOf(bc), frustumPlanes = planesOf(fc);

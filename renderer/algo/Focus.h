@@ -27,16 +27,16 @@ glm::mat4 lightBaseView(const glm::vec3& towardsLight);
 glm::mat4 imagePlaneRotation(const glm::mat2& rotation);
 
 struct LightFit {
-  glm::mat4 view{1.0f};      ///< world -> light view (rotation applied)
-  glm::mat4 proj{1.0f};      ///< orthographic, light view -> clip
-  glm::mat4 viewProj{1.0f};  ///< proj * view
-  glm::vec2 extentM{0.0f};   ///< width and height of the light frustum in metres
-  float depthRangeM = 0.0f;  ///< near..far of the light frustum in metres
+  glm::mat4 view{1.0f};                ///< world -> light view (rotation applied)
+  glm::mat4 proj{1.0f};                ///< orthographic, light view -> clip
+  glm::mat4 viewProj{1.0f};            ///< proj * view
+  glm::vec2 extentM{0.0f};             ///< width and height of the light frustum in metres
+  float depthRangeM = 0.0f;            ///< near..far of the light frustum in metres
   std::vector<glm::vec3> focusPoints;  ///< vertices of the focus region (world)
 };
 
 struct FocusSettings {
-  glm::mat2 rotation{1.0f};  ///< image-plane rotation (DA-RTW), identity otherwise
+  glm::mat2 rotation{1.0f};       ///< image-plane rotation (DA-RTW), identity otherwise
   float paddingFraction = 0.01f;  ///< grow x/y extent by this share on each side
 };
 

@@ -23,23 +23,29 @@ std::string lower(std::string_view s) {
 
 std::string_view paramTypeName(ParamType type) {
   switch (type) {
-    case ParamType::Bool: return "bool";
-    case ParamType::Int: return "int";
-    case ParamType::Float: return "float";
-    case ParamType::Enum: return "enum";
+    case ParamType::Bool:
+      return "bool";
+    case ParamType::Int:
+      return "int";
+    case ParamType::Float:
+      return "float";
+    case ParamType::Enum:
+      return "enum";
   }
   return "?";
 }
 
 std::string describeRange(const ParamDecl& decl) {
   switch (decl.type) {
-    case ParamType::Bool: return "on|off";
+    case ParamType::Bool:
+      return "on|off";
     case ParamType::Enum: {
       std::string s;
       for (size_t i = 0; i < decl.enumNames.size(); ++i) s += (i ? "|" : "") + decl.enumNames[i];
       return s;
     }
-    default: return formatNumber(decl.minValue) + ".." + formatNumber(decl.maxValue);
+    default:
+      return formatNumber(decl.minValue) + ".." + formatNumber(decl.maxValue);
   }
 }
 
@@ -70,8 +76,8 @@ std::optional<std::string> ParamSet::set(std::string_view key, double value) {
   if (!d) {
     std::string known;
     for (const ParamDecl& k : decls_) known += (known.empty() ? "" : ", ") + k.key;
-    return "unknown parameter '" + std::string(key) + "' (known: " +
-           (known.empty() ? std::string("none") : known) + ")";
+    return "unknown parameter '" + std::string(key) +
+           "' (known: " + (known.empty() ? std::string("none") : known) + ")";
   }
   if (!std::isfinite(value)) return "parameter '" + d->key + "': value is not a finite number";
   double lo = d->minValue, hi = d->maxValue;
@@ -79,8 +85,8 @@ std::optional<std::string> ParamSet::set(std::string_view key, double value) {
   if (d->type == ParamType::Enum) lo = 0, hi = static_cast<double>(d->enumNames.size() - 1);
   if (d->type != ParamType::Float && value != std::floor(value))
     return "parameter '" + d->key + "' takes " +
-           (d->type == ParamType::Int ? std::string("an integer") : describeRange(*d)) +
-           ", got " + formatNumber(value);
+           (d->type == ParamType::Int ? std::string("an integer") : describeRange(*d)) + ", got " +
+           formatNumber(value);
   if (value < lo || value > hi)
     return "parameter '" + d->key + "' = " + formatNumber(value) + " is out of range " +
            describeRange(*d);
@@ -110,8 +116,8 @@ std::optional<std::string> ParamSet::setFromString(std::string_view key, std::st
   const char* e = text.data() + text.size();
   auto [ptr, ec] = std::from_chars(b, e, v);
   if (ec != std::errc() || ptr != e || text.empty())
-    return "parameter '" + d->key + "' takes " + describeRange(*d) + ", got '" +
-           std::string(text) + "'";
+    return "parameter '" + d->key + "' takes " + describeRange(*d) + ", got '" + std::string(text) +
+           "'";
   return set(key, v);
 }
 

@@ -28,7 +28,7 @@ std::optional<Preset> loadPreset(const std::filesystem::path& path, std::string*
     p.technique = j.value("technique", "");
     if (j.contains("params")) {
       for (auto& [k, v] : j["params"].items())
-        p.params[k] = v.is_string() ? v.get<std::string>()
+        p.params[k] = v.is_string()    ? v.get<std::string>()
                       : v.is_boolean() ? (v.get<bool>() ? "on" : "off")
                                        : v.dump();
     }

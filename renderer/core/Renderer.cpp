@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <span>
 #include <stdexcept>
 
 #include "core/SceneGpu.h"
@@ -17,7 +18,15 @@ namespace sl {
 
 std::vector<ParamDecl> rendererParamDecls() {
   return {
-      {"shading.ambient", "Ambient", "Shading", ParamType::Float, 0.35, 0.0, 1.0, 0.05, {},
+      {"shading.ambient",
+       "Ambient",
+       "Shading",
+       ParamType::Float,
+       0.35,
+       0.0,
+       1.0,
+       0.05,
+       {},
        "Sky light added to every surface, so shadowed areas stay readable."},
   };
 }
@@ -62,11 +71,11 @@ struct RendererState {
   const gl::Program& resolveProgramFor(const std::string& lookup) {
     auto it = resolvePrograms.find(lookup);
     if (it != resolvePrograms.end()) return it->second;
-    gl::ProgramDesc d{"common/resolve (" + lookup + ")",
-                      {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
-                       {GL_FRAGMENT_SHADER, "common/resolve.frag"}},
-                      {{"@lookup", lookup}},
-                      {}};
+    gl::ProgramDesc d{
+        "common/resolve (" + lookup + ")",
+        {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "common/resolve.frag"}},
+        {{"@lookup", lookup}},
+        {}};
     return resolvePrograms.emplace(lookup, gl::Program(shaders, d)).first->second;
   }
 
@@ -144,8 +153,9 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
   GLint flags = 0;
   glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &flags);
   if (!(flags & GL_CONTEXT_CORE_PROFILE_BIT))
-    throw std::runtime_error("ShadowLab needs a core-profile OpenGL 4.5 context (got "
-                             "compatibility profile)");
+    throw std::runtime_error(
+        "ShadowLab needs a core-profile OpenGL 4.5 context (got "
+        "compatibility profile)");
   if (!options.shaderDir.empty()) s_->shaders = gl::ShaderLibrary(options.shaderDir);
   if (options.debugOutput) {
     glEnable(GL_DEBUG_OUTPUT);
@@ -153,12 +163,11 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
     glDebugMessageCallback(debugCallback, s_.get());
   }
   s_->timer = std::make_unique<gl::GpuTimer>();
-  s_->gbufferProgram = gl::Program(
-      s_->shaders,
-      {"common/gbuffer",
-       {{GL_VERTEX_SHADER, "common/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "common/gbuffer.frag"}},
-       {},
-       {}});
+  s_->gbufferProgram = gl::Program(s_->shaders, {"common/gbuffer",
+                                                 {{GL_VERTEX_SHADER, "common/gbuffer.vert"},
+                                                  {GL_FRAGMENT_SHADER, "common/gbuffer.frag"}},
+                                                 {},
+                                                 {}});
   s_->compositeProgram = gl::Program(s_->shaders, {"common/composite",
                                                    {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
                                                     {GL_FRAGMENT_SHADER, "common/composite.frag"}},
@@ -187,7 +196,9 @@ void Renderer::setScene(std::shared_ptr<const Scene> scene) {
   if (s_->technique) s_->technique->resetTemporalState();
 }
 
-const std::shared_ptr<const Scene>& Renderer::scene() const { return s_->scene; }
+const std::shared_ptr<const Scene>& Renderer::scene() const {
+  return s_->scene;
+}
 
 std::optional<std::string> Renderer::setTechnique(std::string_view id) {
   if (id == s_->techniqueId && s_->technique) return std::nullopt;
@@ -209,17 +220,39 @@ std::optional<std::string> Renderer::setTechnique(std::string_view id) {
   return "unknown technique '" + std::string(id) + "' (known: " + known + ")";
 }
 
-const std::string& Renderer::techniqueId() const { return s_->techniqueId; }
-ParamSet& Renderer::params() { return paramsFor(*s_, s_->techniqueId); }
-ParamSet& Renderer::paramsOf(std::string_view id) { return paramsFor(*s_, id); }
-ParamSet& Renderer::rendererParams() { return s_->rendererParams; }
-void Renderer::setCamera(const Camera& camera) { s_->camera = camera; }
-const Camera& Renderer::camera() const { return s_->camera; }
-void Renderer::setLight(const DirectionalLight& light) { s_->light = light; }
-const DirectionalLight& Renderer::light() const { return s_->light; }
-const FrameStats& Renderer::stats() const { return s_->stats; }
-void Renderer::setPublishing(bool on) { s_->publishing = on; }
-const Publication& Renderer::publication() const { return s_->publication; }
+const std::string& Renderer::techniqueId() const {
+  return s_->techniqueId;
+}
+ParamSet& Renderer::params() {
+  return paramsFor(*s_, s_->techniqueId);
+}
+ParamSet& Renderer::paramsOf(std::string_view id) {
+  return paramsFor(*s_, id);
+}
+ParamSet& Renderer::rendererParams() {
+  return s_->rendererParams;
+}
+void Renderer::setCamera(const Camera& camera) {
+  s_->camera = camera;
+}
+const Camera& Renderer::camera() const {
+  return s_->camera;
+}
+void Renderer::setLight(const DirectionalLight& light) {
+  s_->light = light;
+}
+const DirectionalLight& Renderer::light() const {
+  return s_->light;
+}
+const FrameStats& Renderer::stats() const {
+  return s_->stats;
+}
+void Renderer::setPublishing(bool on) {
+  s_->publishing = on;
+}
+const Publication& Renderer::publication() const {
+  return s_->publication;
+}
 void Renderer::resetTemporalState() {
   if (s_->technique) s_->technique->resetTemporalState();
 }
@@ -228,9 +261,11 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   RendererState& s = *s_;
   auto neutral = [&](const std::string& why) -> std::optional<std::string> {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
-    if (width > 0 && height > 0) glViewport(0, 0, width, height);
-    glClearColor(0.25f, 0.25f, 0.28f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+      if (width > 0 && height > 0) glViewport(0, 0, width, height);
+      glClearColor(0.25f, 0.25f, 0.28f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
     return why;
   };
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
@@ -273,10 +308,10 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   }
 
   // 2. The technique's shadow passes.
-  FrameContext ctx{*s.scene,    *s.sceneGpu,   s.camera,      aspect,
-                   view,        proj,          towardsLight,  width,
-                   height,      t.position,    t.normal,      params(),
-                   *s.timer,    s.shaders,     s.frameIndex,  s.publishing ? &s.publication : nullptr};
+  FrameContext ctx{*s.scene, *s.sceneGpu, s.camera,     aspect,
+                   view,     proj,        towardsLight, width,
+                   height,   t.position,  t.normal,     params(),
+                   *s.timer, s.shaders,   s.frameIndex, s.publishing ? &s.publication : nullptr};
   try {
     s.technique->renderShadows(ctx);
   } catch (const std::exception& e) {
@@ -323,9 +358,11 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     glBindVertexArray(0);
   }
 
-  // 5. To the host's framebuffer.
-  glBlitNamedFramebuffer(t.composite.id(), target, 0, 0, width, height, 0, 0, width, height,
-                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  // 5. To the host's framebuffer (a surfaceless EGL context has none: the frame then
+  // stays in the renderer's colour target, which readback() returns).
+  if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE)
+    glBlitNamedFramebuffer(t.composite.id(), target, 0, 0, width, height, 0, 0, width, height,
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, target);
 
   s.stats = FrameStats{};
@@ -362,7 +399,16 @@ FrameReadback Renderer::readback() const {
   r.color.pixels.resize(n * 4);
   glGetTextureImage(t.color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(n * 4),
                     r.color.pixels.data());
+  // Everything top row first, like the colour image (GL textures are bottom row first).
   flipVertically(r.color);
+  auto flip = [&](auto& v) {
+    std::span<std::uint8_t> bytes(reinterpret_cast<std::uint8_t*>(v.data()),
+                                  v.size() * sizeof(v[0]));
+    flipRowsVertically(bytes, size_t(t.width) * sizeof(v[0]), t.height);
+  };
+  flip(r.positions);
+  flip(r.normals);
+  flip(r.hardMask);
   return r;
 }
 

@@ -53,6 +53,7 @@ struct Publication {
 };
 
 /// Per-pixel data of the last frame, read back from the GPU (slow: metrics and tests).
+/// Every array is row-major with row 0 = the TOP row of the image.
 struct FrameReadback {
   int width = 0, height = 0;
   std::vector<glm::vec4> positions;    ///< world xyz, w = 1 covered / 0 background

@@ -67,8 +67,9 @@ void SceneGpu::draw(const gl::Program& program, int textureUnit, bool patches) c
   program.set("u_baseColorTex", textureUnit);
   static const Material kDefault{};
   for (const Draw& d : draws_) {
-    const Material& m =
-        d.material >= 0 && size_t(d.material) < materials_.size() ? materials_[d.material] : kDefault;
+    const Material& m = d.material >= 0 && size_t(d.material) < materials_.size()
+                            ? materials_[d.material]
+                            : kDefault;
     const gl::Texture* tex = nullptr;
     if (m.baseColorTexture >= 0 && size_t(m.baseColorTexture) < textures_.size() &&
         textures_[m.baseColorTexture])

@@ -11,9 +11,8 @@ gl::ProgramDesc depthProgramDesc() {
           {}};
 }
 
-void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer,
-                 int width, int height, const glm::mat4& lightViewProj, float slopeBias,
-                 float constantBias) {
+void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
+                 int height, const glm::mat4& lightViewProj, float slopeBias, float constantBias) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);

@@ -15,9 +15,8 @@ gl::ProgramDesc depthProgramDesc();
 
 /// Clears and renders the scene's depth into `framebuffer` (width x height) with
 /// glPolygonOffset(slopeBias, constantBias) — the slope-scaled depth bias.
-void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer,
-                 int width, int height, const glm::mat4& lightViewProj, float slopeBias,
-                 float constantBias);
+void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
+                 int height, const glm::mat4& lightViewProj, float slopeBias, float constantBias);
 
 /// Reads a depth texture back into the publication as a float image.
 void publishDepth(Publication& pub, const std::string& key, const gl::Texture& depth);

@@ -28,8 +28,8 @@ EglContext::EglContext(bool debug) : impl_(std::make_unique<Impl>()) {
     throw std::runtime_error(
         "EGL: the surfaceless platform (EGL_MESA_platform_surfaceless) is not available; "
         "install Mesa's EGL (libegl-mesa0)");
-  impl_->display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
-                                            nullptr);
+  impl_->display =
+      eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (impl_->display == EGL_NO_DISPLAY) throw std::runtime_error("EGL: no surfaceless display");
   EGLint major = 0, minor = 0;
   if (!eglInitialize(impl_->display, &major, &minor))
@@ -37,11 +37,15 @@ EglContext::EglContext(bool debug) : impl_(std::make_unique<Impl>()) {
   if (!epoxy_has_egl_extension(impl_->display, "EGL_KHR_surfaceless_context"))
     throw std::runtime_error("EGL: EGL_KHR_surfaceless_context is missing");
   if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL: desktop OpenGL API unavailable");
-  const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-  EGLConfig config = nullptr;
-  EGLint count = 0;
-  if (!eglChooseConfig(impl_->display, configAttribs, &config, 1, &count) || count == 0)
-    throw std::runtime_error("EGL: no config with desktop OpenGL");
+  // Surfaceless rendering needs no config; fall back to any desktop-GL config.
+  EGLConfig config = EGL_NO_CONFIG_KHR;
+  if (!epoxy_has_egl_extension(impl_->display, "EGL_KHR_no_config_context")) {
+    const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0,
+                                    EGL_NONE};
+    EGLint count = 0;
+    if (!eglChooseConfig(impl_->display, configAttribs, &config, 1, &count) || count == 0)
+      throw std::runtime_error("EGL: no config with desktop OpenGL");
+  }
   const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
                                4,
                                EGL_CONTEXT_MINOR_VERSION,

@@ -43,8 +43,7 @@ void Texture::setWrap(GLenum wrap) {
 }
 
 void Texture::setCompare(bool on) {
-  glTextureParameteri(id(), GL_TEXTURE_COMPARE_MODE,
-                      on ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+  glTextureParameteri(id(), GL_TEXTURE_COMPARE_MODE, on ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
   glTextureParameteri(id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
 }
 
@@ -96,30 +95,56 @@ VertexArray createVertexArray() {
 
 int bytesPerTexel(GLenum f) {
   switch (f) {
-    case GL_R8: return 1;
-    case GL_RG8: case GL_R16F: case GL_DEPTH_COMPONENT16: return 2;
-    case GL_RGBA8: case GL_R32F: case GL_R32UI: case GL_RG16F: case GL_DEPTH_COMPONENT32F:
-    case GL_DEPTH_COMPONENT24: case GL_DEPTH24_STENCIL8: return 4;
-    case GL_RG32F: case GL_RGBA16F: return 8;
-    case GL_RGBA32F: return 16;
-    default: return 4;
+    case GL_R8:
+      return 1;
+    case GL_RG8:
+    case GL_R16F:
+    case GL_DEPTH_COMPONENT16:
+      return 2;
+    case GL_RGBA8:
+    case GL_R32F:
+    case GL_R32UI:
+    case GL_RG16F:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH24_STENCIL8:
+      return 4;
+    case GL_RG32F:
+    case GL_RGBA16F:
+      return 8;
+    case GL_RGBA32F:
+      return 16;
+    default:
+      return 4;
   }
 }
 
 std::string formatName(GLenum f) {
   switch (f) {
-    case GL_R8: return "R8";
-    case GL_RGBA8: return "RGBA8";
-    case GL_R16F: return "R16F";
-    case GL_R32F: return "R32F";
-    case GL_R32UI: return "R32UI";
-    case GL_RG32F: return "RG32F";
-    case GL_RGBA16F: return "RGBA16F";
-    case GL_RGBA32F: return "RGBA32F";
-    case GL_DEPTH_COMPONENT16: return "DEPTH_COMPONENT16";
-    case GL_DEPTH_COMPONENT24: return "DEPTH_COMPONENT24";
-    case GL_DEPTH_COMPONENT32F: return "DEPTH_COMPONENT32F";
-    default: return "0x" + std::to_string(f);
+    case GL_R8:
+      return "R8";
+    case GL_RGBA8:
+      return "RGBA8";
+    case GL_R16F:
+      return "R16F";
+    case GL_R32F:
+      return "R32F";
+    case GL_R32UI:
+      return "R32UI";
+    case GL_RG32F:
+      return "RG32F";
+    case GL_RGBA16F:
+      return "RGBA16F";
+    case GL_RGBA32F:
+      return "RGBA32F";
+    case GL_DEPTH_COMPONENT16:
+      return "DEPTH_COMPONENT16";
+    case GL_DEPTH_COMPONENT24:
+      return "DEPTH_COMPONENT24";
+    case GL_DEPTH_COMPONENT32F:
+      return "DEPTH_COMPONENT32F";
+    default:
+      return "0x" + std::to_string(f);
   }
 }
 

@@ -81,7 +81,8 @@ class Texture {
 class Buffer {
  public:
   Buffer() = default;
-  static Buffer create(GLsizeiptr bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+  static Buffer create(GLsizeiptr bytes, const void* data,
+                       GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
   GLuint id() const { return h_.id(); }
   GLsizeiptr size() const { return size_; }
   explicit operator bool() const { return bool(h_); }

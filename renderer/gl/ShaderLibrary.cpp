@@ -26,13 +26,20 @@ std::string readFile(const std::filesystem::path& path) {
 
 std::string stageName(GLenum stage) {
   switch (stage) {
-    case GL_VERTEX_SHADER: return "vertex";
-    case GL_FRAGMENT_SHADER: return "fragment";
-    case GL_COMPUTE_SHADER: return "compute";
-    case GL_TESS_CONTROL_SHADER: return "tessellation control";
-    case GL_TESS_EVALUATION_SHADER: return "tessellation evaluation";
-    case GL_GEOMETRY_SHADER: return "geometry";
-    default: return "shader";
+    case GL_VERTEX_SHADER:
+      return "vertex";
+    case GL_FRAGMENT_SHADER:
+      return "fragment";
+    case GL_COMPUTE_SHADER:
+      return "compute";
+    case GL_TESS_CONTROL_SHADER:
+      return "tessellation control";
+    case GL_TESS_EVALUATION_SHADER:
+      return "tessellation evaluation";
+    case GL_GEOMETRY_SHADER:
+      return "geometry";
+    default:
+      return "shader";
   }
 }
 
@@ -181,9 +188,15 @@ GLint Program::location(const char* name) const {
   return loc;
 }
 
-void Program::set(const char* n, int v) const { glProgramUniform1i(id(), location(n), v); }
-void Program::set(const char* n, unsigned v) const { glProgramUniform1ui(id(), location(n), v); }
-void Program::set(const char* n, float v) const { glProgramUniform1f(id(), location(n), v); }
+void Program::set(const char* n, int v) const {
+  glProgramUniform1i(id(), location(n), v);
+}
+void Program::set(const char* n, unsigned v) const {
+  glProgramUniform1ui(id(), location(n), v);
+}
+void Program::set(const char* n, float v) const {
+  glProgramUniform1f(id(), location(n), v);
+}
 void Program::set(const char* n, const glm::vec2& v) const {
   glProgramUniform2fv(id(), location(n), 1, glm::value_ptr(v));
 }

@@ -17,10 +17,10 @@
 namespace sl::gl {
 
 struct ProgramDesc {
-  std::string name;                                  ///< for messages, e.g. "uniform/depth"
+  std::string name;                                    ///< for messages, e.g. "uniform/depth"
   std::vector<std::pair<GLenum, std::string>> stages;  ///< stage -> file (relative)
-  std::map<std::string, std::string> aliases;        ///< "@lookup" -> "uniform/lookup.glsl"
-  std::vector<std::string> defines;                  ///< "NAME" or "NAME VALUE"
+  std::map<std::string, std::string> aliases;          ///< "@lookup" -> "uniform/lookup.glsl"
+  std::vector<std::string> defines;                    ///< "NAME" or "NAME VALUE"
 };
 
 class ShaderError : public std::runtime_error {

@@ -39,7 +39,8 @@ struct MeshPrimitive {
   std::string name;
   std::vector<glm::vec3> positions;  ///< metres, world space
   std::vector<glm::vec3> normals;    ///< unit, world space (computed when the file has none)
-  std::vector<glm::vec2> uvs;        ///< TEXCOORD_0, empty when absent
+  std::vector<glm::vec2> uvs;  ///< base colour texture coordinates (TEXCOORD_0 unless the material
+                               ///< names another set; KHR_texture_transform baked in), or empty
   std::vector<std::uint32_t> indices;
   int material = -1;  ///< index into Scene::materials, -1 = default material
 };
@@ -63,9 +64,16 @@ struct CameraPath {
   float nearM = 0.1f;
   float farM = 200.0f;
   float durationS() const { return keys.empty() ? 0.0f : keys.back().timeS; }
-  /// Camera at time t (clamped), linear position and slerped rotation.
+  /// Camera at time t (clamped), linear position and slerped rotation. Its target lies
+  /// 1 m ahead (a path fixes the view, not an orbit centre).
   Camera sample(float timeS) const;
 };
+
+/// A ShadowLab camera for a glTF camera pose (the camera looks along its local -z).
+/// `up` is world +y, or the pose's own +y when the view is within ~2.5 degrees of vertical
+/// (so the camera stays valid); a glTF roll about the view axis is dropped.
+Camera cameraFromPose(const glm::vec3& positionM, const glm::quat& rotation, float fovYDeg,
+                      float nearM, float farM, float targetDistanceM = 1.0f);
 
 struct Scene {
   std::string name;        ///< built-in name or file stem

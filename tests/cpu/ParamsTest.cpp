@@ -1,4 +1,6 @@
 // Parameter declarations: range checks and parsing, the contract every front end relies on.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "algo/Params.h"

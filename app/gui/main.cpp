@@ -1,0 +1,115 @@
+// shadowlab: the interactive GUI. `shadowlab [--scene NAME|FILE] [--technique ID]
+// [--set KEY=VALUE]... [--grab DIR --grab-after N]`; see ui/MainWindow.h.
+// Exit codes: 0 ok, 1 runtime failure (no GL 4.5, scene not loadable, grab failed),
+// 2 bad command line (unknown option, technique or parameter, value out of range).
+#include <cstdio>
+#include <optional>
+
+#include <QApplication>
+#include <QMessageBox>
+#include <QSurfaceFormat>
+
+#include "GlSupport.h"
+#include "LaunchOptions.h"
+#include "MainWindow.h"
+#include "Theme.h"
+#include "core/Renderer.h"
+
+namespace {
+void printErr(const QString& line) {
+  std::fprintf(stderr, "shadowlab: %s\n", line.toLocal8Bit().constData());
+}
+
+/// Qt aborts without a display; say what is missing instead (unless a platform is forced).
+bool haveDisplay() {
+  return qEnvironmentVariableIsSet("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("DISPLAY") ||
+         !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+}
+
+/// Prints help, version or a usage error; returns the exit code, or nothing to go on.
+std::optional<int> handleNonRunOutcome(const sl::ui::ParsedLaunch& parsed) {
+  if (parsed.options) return std::nullopt;
+  if (parsed.messageIsError)
+    printErr(parsed.message);
+  else
+    std::printf("%s\n", parsed.message.toLocal8Bit().constData());
+  return parsed.exitCode;
+}
+
+void setApplicationNames() {
+  QCoreApplication::setOrganizationName(QStringLiteral("ShadowLab"));
+  QCoreApplication::setApplicationName(QStringLiteral("shadowlab"));
+  QCoreApplication::setApplicationVersion(QStringLiteral("0.1"));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (!haveDisplay()) {
+    // Qt would abort without a display: still answer --help / --version / usage errors.
+    QCoreApplication core(argc, argv);
+    setApplicationNames();
+    if (auto code = handleNonRunOutcome(sl::ui::parseLaunchOptions(QCoreApplication::arguments())))
+      return *code;
+    printErr(
+        QStringLiteral("no display: DISPLAY and WAYLAND_DISPLAY are not set; the GUI needs an "
+                       "X server (e.g. Xvfb) or Wayland (shadowlab-cli works headless)"));
+    return 1;
+  }
+  // The GL context format must be the default before the application exists.
+  QSurfaceFormat::setDefaultFormat(sl::ui::requiredSurfaceFormat());
+  QApplication app(argc, argv);
+  setApplicationNames();
+  QApplication::setApplicationDisplayName(QStringLiteral("ShadowLab"));
+
+  const sl::ui::ParsedLaunch parsed = sl::ui::parseLaunchOptions(QApplication::arguments());
+  if (auto code = handleNonRunOutcome(parsed)) return *code;
+  const sl::ui::LaunchOptions& options = *parsed.options;
+  const bool interactive = !options.grab();
+
+  // GL-free checks first: a typo must not cost a window (grab runs stop here; interactive
+  // runs report the same problems in the status bar once the window is up).
+  const std::string technique =
+      !options.technique.isEmpty() ? options.technique.toStdString() : sl::ui::defaultTechniqueId();
+  if (!interactive) {
+    if (auto error = sl::ui::validateLaunchSettings(technique, options.assignments)) {
+      printErr(QString::fromStdString(*error));
+      return 2;
+    }
+  }
+
+  QString glName;
+  if (auto problem = sl::ui::probeOpenGL(&glName)) {
+    printErr(*problem);
+    if (interactive)
+      QMessageBox::critical(nullptr, QStringLiteral("ShadowLab: OpenGL problem"), *problem);
+    return 1;
+  }
+
+  sl::ui::applyTheme(app);
+  sl::ui::MainWindow window(interactive);
+  window.setPendingAssignments(options.assignments);
+
+  if (!interactive) {
+    window.setTechnique(QString::fromStdString(technique));
+    if (!window.loadScene(options.scene.isEmpty() ? window.initialSceneName() : options.scene))
+      return 1;
+    window.show();
+    window.startGrab(options.grabDir, options.grabAfterFrames);
+    return QApplication::exec();
+  }
+
+  if (!options.technique.isEmpty())
+    window.setTechnique(options.technique);
+  else if (const QString last = window.lastTechnique();
+           !last.isEmpty() && sl::Renderer::findTechnique(last.toStdString()))
+    window.setTechnique(last);
+  else
+    window.setTechnique(QString::fromStdString(technique));
+  // The scene before the window: its first frame then already has something to show.
+  const QString scene = options.scene.isEmpty() ? window.initialSceneName() : options.scene;
+  if (!window.loadScene(scene) && scene != sl::ui::MainWindow::defaultSceneName())
+    window.loadScene(sl::ui::MainWindow::defaultSceneName());
+  window.show();
+  return QApplication::exec();
+}

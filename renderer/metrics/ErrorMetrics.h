@@ -1,0 +1,51 @@
+// Shadow error against the exact reference (techniques.md, "Measuring"): the share of
+// covered pixels whose hard shadow test disagrees with the ray-traced answer, split into
+// false-lit and false-shadowed, and an error image that shows where.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "metrics/Image.h"
+
+namespace sl {
+
+/// Shadow-mask encoding shared by the technique's readback and ShadowReference.
+/// Any value other than kMaskShadowed and kMaskUncovered is read as lit.
+inline constexpr std::uint8_t kMaskShadowed = 0;
+inline constexpr std::uint8_t kMaskLit = 1;
+inline constexpr std::uint8_t kMaskUncovered = 255;
+
+struct ShadowErrorStats {
+  std::size_t covered = 0;      ///< pixels covered in both masks
+  std::size_t falseLit = 0;     ///< technique lit, reference shadowed (light leaks)
+  std::size_t falseShadow = 0;  ///< technique shadowed, reference lit (acne, over-shadowing)
+  double errorPct = 0.0;        ///< 100 * (falseLit + falseShadow) / covered, 0 when none
+  double falseLitPct = 0.0;     ///< 100 * falseLit / covered
+  double falseShadowPct = 0.0;  ///< 100 * falseShadow / covered
+  /// Pixels covered in one mask but not the other (should be 0: both come from the same
+  /// G-buffer). They are left out of `covered` and of the percentages.
+  std::size_t coverageMismatch = 0;
+};
+
+/// Compares two masks of the same frame (1 lit, 0 shadowed, 255 not covered).
+/// Throws std::invalid_argument when the sizes differ. No covered pixel: all zero.
+ShadowErrorStats compareShadowMasks(std::span<const std::uint8_t> technique,
+                                    std::span<const std::uint8_t> reference);
+
+/// Colours of the error image (opaque RGBA).
+inline constexpr Rgba8 kFalseLitColor = {255, 0, 255, 255};     ///< magenta: light leak
+inline constexpr Rgba8 kFalseShadowColor = {0, 255, 255, 255};  ///< cyan: wrong shadow
+
+/// The error image: every pixel covered in both masks shows the shaded colour desaturated
+/// and darkened to grey (0.5 * Rec. 709 luma) unless the masks disagree: false-lit pixels
+/// are magenta (kFalseLitColor), false-shadowed pixels cyan (kFalseShadowColor).
+/// Pixels not covered in both masks are copied unchanged from `shaded`.
+/// The masks are in the same row order as `shaded` (row 0 = top: flip GL readbacks first).
+/// Throws std::invalid_argument when `shaded` is not valid or a mask's size is not
+/// shaded.width * shaded.height.
+ImageRGBA8 makeErrorImage(const ImageRGBA8& shaded, std::span<const std::uint8_t> technique,
+                          std::span<const std::uint8_t> reference);
+
+}  // namespace sl

@@ -1,0 +1,1204 @@
+// glTF 2.0 loading through tinygltf 2.7: parse (.gltf or .glb), check, and flatten the node
+// hierarchy into world-space triangle lists, materials, images, the sun (KHR_lights_punctual),
+// camera bookmarks and camera paths. Spec: https://registry.khronos.org/glTF/specs/2.0/
+#include "GltfLoader.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+#include <string_view>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+namespace sl {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Extensions a file may list in `extensionsRequired`. The first three are implemented
+/// (punctual lights: the first directional one is the sun; texture transforms are baked into
+/// the base colour uvs; quantized attributes are read like any normalized accessor). The
+/// last two only change shading that ShadowLab does its own way, so ignoring them cannot
+/// change geometry, alpha cut-outs or shadows. Everything else (Draco, meshopt, BasisU,
+/// WebP, ...) would leave geometry or textures unreadable: such files are refused.
+constexpr std::array<std::string_view, 5> kAcceptedRequiredExtensions = {
+    "KHR_lights_punctual", "KHR_texture_transform", "KHR_mesh_quantization",
+    "KHR_materials_emissive_strength", "KHR_materials_unlit"};
+
+/// An accessor larger than this is treated as corrupt rather than allocated.
+constexpr std::size_t kMaxAccessorElements = std::size_t(1) << 28;
+
+/// Internal failure; loadGltf() turns it into SceneLoadResult::error with the file name.
+struct LoadFailure {
+  std::string message;
+};
+
+[[noreturn]] void fail(std::string message) {
+  throw LoadFailure{std::move(message)};
+}
+
+std::string inQuotes(const std::string& s) {
+  return "'" + s + "'";
+}
+
+/// Newlines and runs of blanks collapsed so an error stays on one line.
+std::string oneLine(const std::string& text) {
+  std::string out;
+  bool pendingBreak = false;
+  for (char c : text) {
+    if (c == '\n' || c == '\r') {
+      pendingBreak = !out.empty();
+      continue;
+    }
+    if (pendingBreak) {
+      while (!out.empty() && (out.back() == ' ' || out.back() == '.')) out.pop_back();
+      out += "; ";
+      pendingBreak = false;
+    }
+    out += c;
+  }
+  while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+  return out;
+}
+
+void addLines(std::vector<std::string>& to, const std::string& text) {
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    if (!line.empty()) to.push_back(line);
+    start = end + 1;
+  }
+}
+
+std::string lowerExtension(const fs::path& p) {
+  std::string ext = p.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// ---------------------------------------------------------------------------------------
+// Accessors
+
+const char* typeName(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+      return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+      return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+      return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+      return "VEC4";
+    case TINYGLTF_TYPE_MAT2:
+      return "MAT2";
+    case TINYGLTF_TYPE_MAT3:
+      return "MAT3";
+    case TINYGLTF_TYPE_MAT4:
+      return "MAT4";
+    default:
+      return "unknown";
+  }
+}
+
+/// Bytes of bufferView `viewIndex`, checked against its buffer.
+const unsigned char* viewBytes(const tinygltf::Model& model, int viewIndex,
+                               const std::string& label, std::size_t& length) {
+  if (viewIndex < 0 || std::size_t(viewIndex) >= model.bufferViews.size())
+    fail(label + ": bufferView " + std::to_string(viewIndex) + " is out of range (" +
+         std::to_string(model.bufferViews.size()) + " bufferViews)");
+  const tinygltf::BufferView& view = model.bufferViews[std::size_t(viewIndex)];
+  if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size())
+    fail(label + ": bufferView " + std::to_string(viewIndex) + " names buffer " +
+         std::to_string(view.buffer) + ", which is out of range (" +
+         std::to_string(model.buffers.size()) + " buffers)");
+  const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
+  if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
+    fail(label + ": bufferView " + std::to_string(viewIndex) + " (bytes " +
+         std::to_string(view.byteOffset) + ".." +
+         std::to_string(view.byteOffset + view.byteLength) + ") is out of range of buffer " +
+         std::to_string(view.buffer) + " (" + std::to_string(data.size()) + " bytes)");
+  length = view.byteLength;
+  return data.data() + view.byteOffset;
+}
+
+/// Calls visit(elementIndex, elementBytes) for every element of accessor `index`, then for
+/// every sparse substitution (so later calls override earlier ones). All ranges are checked.
+template <class Visit>
+void forEachElement(const tinygltf::Model& model, int index, const std::string& what,
+                    Visit&& visit) {
+  if (index < 0 || std::size_t(index) >= model.accessors.size())
+    fail(what + ": accessor " + std::to_string(index) + " is out of range (" +
+         std::to_string(model.accessors.size()) + " accessors)");
+  const tinygltf::Accessor& acc = model.accessors[std::size_t(index)];
+  const std::string label = "accessor " + std::to_string(index) + " (" + what + ")";
+  int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(acc.componentType));
+  int components = tinygltf::GetNumComponentsInType(std::uint32_t(acc.type));
+  if (componentSize <= 0 || components <= 0) fail(label + " has an invalid componentType or type");
+  const std::size_t elementSize = std::size_t(componentSize) * std::size_t(components);
+  if (acc.count > kMaxAccessorElements)
+    fail(label + ": count " + std::to_string(acc.count) + " is implausibly large");
+
+  if (acc.bufferView >= 0) {
+    std::size_t length = 0;
+    const unsigned char* bytes = viewBytes(model, acc.bufferView, label, length);
+    std::size_t declaredStride = model.bufferViews[std::size_t(acc.bufferView)].byteStride;
+    std::size_t stride = declaredStride ? declaredStride : elementSize;
+    if (stride < elementSize)
+      fail(label + ": byteStride " + std::to_string(stride) + " is smaller than one element (" +
+           std::to_string(elementSize) + " bytes)");
+    if (acc.count > 0) {
+      std::size_t needed = acc.byteOffset + stride * (acc.count - 1) + elementSize;
+      if (acc.byteOffset > length || needed > length)
+        fail(label + " is out of range of bufferView " + std::to_string(acc.bufferView) +
+             ": needs " + std::to_string(needed) + " bytes, has " + std::to_string(length));
+    }
+    for (std::size_t i = 0; i < acc.count; ++i) visit(i, bytes + acc.byteOffset + i * stride);
+  } else {
+    // No bufferView: all zeros (usually the base of a sparse accessor). Nothing in the file
+    // backs the count, so it gets a tighter limit.
+    if (acc.count > kMaxAccessorElements / 16)
+      fail(label + ": count " + std::to_string(acc.count) +
+           " without a bufferView is implausibly large");
+    std::vector<unsigned char> zeros(elementSize, 0);
+    for (std::size_t i = 0; i < acc.count; ++i) visit(i, zeros.data());
+  }
+
+  if (!acc.sparse.isSparse) return;
+  const std::string sparseLabel = label + " sparse";
+  if (acc.sparse.count < 0 || std::size_t(acc.sparse.count) > acc.count)
+    fail(sparseLabel + ": count " + std::to_string(acc.sparse.count) +
+         " exceeds the accessor's count " + std::to_string(acc.count));
+  const std::size_t n = std::size_t(acc.sparse.count);
+  int indexSize =
+      tinygltf::GetComponentSizeInBytes(std::uint32_t(acc.sparse.indices.componentType));
+  if (acc.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+      acc.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      acc.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    fail(sparseLabel + ": indices must be unsigned byte, short or int");
+  std::size_t indicesLength = 0, valuesLength = 0;
+  const unsigned char* indexBytes =
+      viewBytes(model, acc.sparse.indices.bufferView, sparseLabel + " indices", indicesLength);
+  const unsigned char* valueBytes =
+      viewBytes(model, acc.sparse.values.bufferView, sparseLabel + " values", valuesLength);
+  if (acc.sparse.indices.byteOffset < 0 || acc.sparse.values.byteOffset < 0)
+    fail(sparseLabel + ": negative byteOffset");
+  std::size_t indexOffset = std::size_t(acc.sparse.indices.byteOffset);
+  std::size_t valueOffset = std::size_t(acc.sparse.values.byteOffset);
+  if (indexOffset + n * std::size_t(indexSize) > indicesLength)
+    fail(sparseLabel + " indices are out of range of bufferView " +
+         std::to_string(acc.sparse.indices.bufferView));
+  if (valueOffset + n * elementSize > valuesLength)
+    fail(sparseLabel + " values are out of range of bufferView " +
+         std::to_string(acc.sparse.values.bufferView));
+  for (std::size_t j = 0; j < n; ++j) {
+    const unsigned char* p = indexBytes + indexOffset + j * std::size_t(indexSize);
+    std::uint32_t target = 0;
+    if (indexSize == 1) {
+      target = *p;
+    } else if (indexSize == 2) {
+      std::uint16_t v;
+      std::memcpy(&v, p, 2);
+      target = v;
+    } else {
+      std::memcpy(&target, p, 4);
+    }
+    if (target >= acc.count)
+      fail(sparseLabel + ": index " + std::to_string(target) + " is out of range (count " +
+           std::to_string(acc.count) + ")");
+    visit(std::size_t(target), valueBytes + valueOffset + j * elementSize);
+  }
+}
+
+float readComponent(const unsigned char* p, int componentType, bool normalized) {
+  switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      std::int8_t v;
+      std::memcpy(&v, p, 1);
+      return normalized ? std::max(float(v) / 127.0f, -1.0f) : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+      std::uint8_t v = *p;
+      return normalized ? float(v) / 255.0f : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      std::int16_t v;
+      std::memcpy(&v, p, 2);
+      return normalized ? std::max(float(v) / 32767.0f, -1.0f) : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+      std::uint16_t v;
+      std::memcpy(&v, p, 2);
+      return normalized ? float(v) / 65535.0f : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_INT: {
+      std::int32_t v;
+      std::memcpy(&v, p, 4);
+      return normalized ? float(std::max(double(v) / 2147483647.0, -1.0)) : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+      std::uint32_t v;
+      std::memcpy(&v, p, 4);
+      return normalized ? float(double(v) / 4294967295.0) : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+      float v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_DOUBLE: {
+      double v;
+      std::memcpy(&v, p, 8);
+      return float(v);
+    }
+    default:
+      return 0.0f;
+  }
+}
+
+/// Accessor `index` as floats, `components` per element; its type must be `expectedType`.
+std::vector<float> readFloats(const tinygltf::Model& model, int index, const std::string& what,
+                              int expectedType) {
+  if (index >= 0 && std::size_t(index) < model.accessors.size()) {
+    const tinygltf::Accessor& acc = model.accessors[std::size_t(index)];
+    if (acc.type != expectedType)
+      fail("accessor " + std::to_string(index) + " (" + what + ") has type " + typeName(acc.type) +
+           ", expected " + typeName(expectedType));
+  }
+  std::vector<float> out;
+  int components = tinygltf::GetNumComponentsInType(std::uint32_t(expectedType));
+  bool sized = false;
+  forEachElement(model, index, what, [&](std::size_t i, const unsigned char* p) {
+    const tinygltf::Accessor& acc = model.accessors[std::size_t(index)];
+    if (!sized) {
+      out.assign(acc.count * std::size_t(components), 0.0f);
+      sized = true;
+    }
+    int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(acc.componentType));
+    for (int c = 0; c < components; ++c)
+      out[i * std::size_t(components) + std::size_t(c)] =
+          readComponent(p + c * componentSize, acc.componentType, acc.normalized);
+  });
+  return out;
+}
+
+std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int index,
+                                       const std::string& what) {
+  if (index >= 0 && std::size_t(index) < model.accessors.size()) {
+    const tinygltf::Accessor& acc = model.accessors[std::size_t(index)];
+    if (acc.type != TINYGLTF_TYPE_SCALAR)
+      fail("accessor " + std::to_string(index) + " (" + what + ") has type " + typeName(acc.type) +
+           ", expected SCALAR");
+    if (acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+      fail("accessor " + std::to_string(index) + " (" + what +
+           ") must hold unsigned byte, short or int indices");
+  }
+  std::vector<std::uint32_t> out;
+  forEachElement(model, index, what, [&](std::size_t i, const unsigned char* p) {
+    const tinygltf::Accessor& acc = model.accessors[std::size_t(index)];
+    if (out.size() != acc.count) out.resize(acc.count);
+    if (acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+      out[i] = *p;
+    } else if (acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+      std::uint16_t v;
+      std::memcpy(&v, p, 2);
+      out[i] = v;
+    } else {
+      std::memcpy(&out[i], p, 4);
+    }
+  });
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// Transforms
+
+glm::dmat4 localMatrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major
+  glm::dmat4 m(1.0);
+  if (node.translation.size() == 3)
+    m = glm::translate(m,
+                       glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+  if (node.rotation.size() == 4) {
+    glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+    if (glm::length(q) > 0.0) m *= glm::mat4_cast(glm::normalize(q));
+  }
+  if (node.scale.size() == 3)
+    m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+  return m;
+}
+
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/// Position and rotation (scale removed) of a world matrix.
+void decomposePose(const glm::dmat4& world, glm::vec3& position, glm::quat& rotation) {
+  position = glm::vec3(world[3]);
+  glm::dmat3 r(world);
+  for (int c = 0; c < 3; ++c) {
+    double len = glm::length(r[c]);
+    r[c] = len > 0.0 ? r[c] / len : glm::dvec3(c == 0, c == 1, c == 2);
+  }
+  if (glm::determinant(r) < 0.0) r[0] = -r[0];
+  rotation = glm::quat(glm::normalize(glm::quat_cast(r)));
+}
+
+// ---------------------------------------------------------------------------------------
+// The flattening
+
+struct NodeInstance {
+  int node = -1;
+  glm::dmat4 world{1.0};
+  glm::dmat4 parentWorld{1.0};
+};
+
+/// How a material maps its base colour texture: which TEXCOORD set, which transform.
+struct UvRule {
+  int texCoord = 0;
+  glm::mat3 transform{1.0f};  ///< KHR_texture_transform as a 2D affine matrix
+};
+
+class Flattener {
+ public:
+  Flattener(const tinygltf::Model& model, Scene& scene) : model_(model), scene_(scene) {}
+
+  void run() {
+    convertImages();
+    convertMaterials();
+    collectInstances();
+    for (const NodeInstance& inst : instances_) addMeshInstance(inst);
+    if (scene_.triangleCount() == 0)
+      fail("no triangles (the file has no triangle meshes in its scene)");
+    for (const MeshPrimitive& prim : scene_.primitives)
+      for (const glm::vec3& p : prim.positions) scene_.bounds.extend(p);
+    addLights();
+    addCameras();
+    addPaths();
+  }
+
+ private:
+  void warn(const std::string& text) { scene_.warnings.push_back(text); }
+
+  void warnOnce(const std::string& key, const std::string& text) {
+    if (warnedKeys_.insert(key).second) warn(text);
+  }
+
+  std::string nodeName(int index) const {
+    const tinygltf::Node& n = model_.nodes[std::size_t(index)];
+    return n.name.empty() ? "node " + std::to_string(index) : inQuotes(n.name);
+  }
+
+  void convertImages() {
+    for (std::size_t i = 0; i < model_.images.size(); ++i) {
+      const tinygltf::Image& src = model_.images[i];
+      SceneImage img;
+      img.name = !src.name.empty() ? src.name
+                 : (!src.uri.empty() && src.uri.rfind("data:", 0) != 0)
+                     ? src.uri
+                     : "image " + std::to_string(i);
+      int comps = src.component, bytesPerComp = src.bits == 16 ? 2 : 1;
+      std::size_t pixels =
+          src.width > 0 && src.height > 0 ? std::size_t(src.width) * std::size_t(src.height) : 0;
+      if (pixels == 0 || comps < 1 || comps > 4 || (src.bits != 8 && src.bits != 16) ||
+          src.image.size() < pixels * std::size_t(comps * bytesPerComp)) {
+        warn("image " + inQuotes(img.name) +
+             " could not be decoded; textures using it are left out");
+        scene_.images.push_back(std::move(img));
+        continue;
+      }
+      img.width = src.width;
+      img.height = src.height;
+      img.rgba.resize(pixels * 4);
+      for (std::size_t p = 0; p < pixels; ++p) {
+        std::uint8_t c[4] = {0, 0, 0, 255};
+        for (int k = 0; k < comps; ++k) {
+          // 16-bit images keep their high byte (the host is little-endian, as tinygltf assumes).
+          std::size_t at = (p * std::size_t(comps) + std::size_t(k)) * std::size_t(bytesPerComp);
+          c[k] = bytesPerComp == 2 ? src.image[at + 1] : src.image[at];
+        }
+        if (comps == 1) c[1] = c[2] = c[0];               // grey
+        if (comps == 2) c[3] = c[1], c[1] = c[2] = c[0];  // grey + alpha
+        std::memcpy(&img.rgba[p * 4], c, 4);
+      }
+      scene_.images.push_back(std::move(img));
+    }
+  }
+
+  void convertMaterials() {
+    for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+      const tinygltf::Material& src = model_.materials[i];
+      Material m;
+      m.name = src.name.empty() ? "material " + std::to_string(i) : src.name;
+      const std::vector<double>& f = src.pbrMetallicRoughness.baseColorFactor;
+      if (f.size() == 4)
+        m.baseColorFactor = glm::vec4(float(f[0]), float(f[1]), float(f[2]), float(f[3]));
+      UvRule rule;
+      const tinygltf::TextureInfo& tex = src.pbrMetallicRoughness.baseColorTexture;
+      if (tex.index >= 0) {
+        int image = -1;
+        if (std::size_t(tex.index) < model_.textures.size())
+          image = model_.textures[std::size_t(tex.index)].source;
+        if (image >= 0 && std::size_t(image) < scene_.images.size() &&
+            scene_.images[std::size_t(image)].width > 0) {
+          m.baseColorTexture = image;
+        } else {
+          warn("material " + inQuotes(m.name) + ": base colour texture " +
+               std::to_string(tex.index) + " has no usable image; it is left out");
+        }
+        rule.texCoord = tex.texCoord;
+        auto it = tex.extensions.find("KHR_texture_transform");
+        if (it != tex.extensions.end() && it->second.IsObject())
+          readTextureTransform(it->second, rule);
+      }
+      if (src.alphaMode == "MASK") {
+        m.alphaMode = AlphaMode::Mask;
+      } else if (src.alphaMode == "BLEND") {
+        m.alphaMode = AlphaMode::Blend;
+      } else if (src.alphaMode != "OPAQUE" && !src.alphaMode.empty()) {
+        warn("material " + inQuotes(m.name) + ": unknown alphaMode " + inQuotes(src.alphaMode) +
+             ", using OPAQUE");
+      }
+      m.alphaCutoff = float(src.alphaCutoff);
+      m.doubleSided = src.doubleSided;
+      scene_.materials.push_back(std::move(m));
+      uvRules_.push_back(rule);
+    }
+  }
+
+  static void readTextureTransform(const tinygltf::Value& ext, UvRule& rule) {
+    glm::vec2 offset(0.0f), scale(1.0f);
+    float rotation = 0.0f;
+    auto vec2Of = [&](const char* key, glm::vec2& out) {
+      const tinygltf::Value& v = ext.Get(key);
+      if (v.IsArray() && v.ArrayLen() == 2 && v.Get(0).IsNumber() && v.Get(1).IsNumber())
+        out = glm::vec2(float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble()));
+    };
+    vec2Of("offset", offset);
+    vec2Of("scale", scale);
+    if (ext.Get("rotation").IsNumber()) rotation = float(ext.Get("rotation").GetNumberAsDouble());
+    if (ext.Get("texCoord").IsNumber()) rule.texCoord = ext.Get("texCoord").GetNumberAsInt();
+    // uv' = T * R * S * uv with R = [cos sin; -sin cos] written row by row: "counter-clockwise"
+    // in glTF's v-down uv space, as the TextureTransformTest sample model, Babylon, Blender
+    // and three.js do (the extension's GLSL listing reads the other way; KhronosGroup/glTF#1563).
+    float c = std::cos(rotation), s = std::sin(rotation);
+    rule.transform =
+        glm::mat3(glm::vec3(c * scale.x, -s * scale.x, 0.0f),
+                  glm::vec3(s * scale.y, c * scale.y, 0.0f), glm::vec3(offset.x, offset.y, 1.0f));
+  }
+
+  void collectInstances() {
+    std::vector<int> roots;
+    if (!model_.scenes.empty()) {
+      int sceneIndex = model_.defaultScene;
+      if (sceneIndex < 0 || std::size_t(sceneIndex) >= model_.scenes.size()) {
+        if (sceneIndex >= 0)
+          warn("default scene " + std::to_string(sceneIndex) + " does not exist; using scene 0");
+        sceneIndex = 0;
+      }
+      roots = model_.scenes[std::size_t(sceneIndex)].nodes;
+    } else {
+      // No scenes: every node that is nobody's child is a root.
+      std::vector<bool> isChild(model_.nodes.size(), false);
+      for (const tinygltf::Node& n : model_.nodes)
+        for (int c : n.children)
+          if (c >= 0 && std::size_t(c) < isChild.size()) isChild[std::size_t(c)] = true;
+      for (std::size_t i = 0; i < model_.nodes.size(); ++i)
+        if (!isChild[i]) roots.push_back(int(i));
+    }
+    std::vector<int> path;
+    for (int r : roots) visitNode(r, glm::dmat4(1.0), path);
+  }
+
+  void visitNode(int index, const glm::dmat4& parentWorld, std::vector<int>& path) {
+    if (index < 0 || std::size_t(index) >= model_.nodes.size())
+      fail("node " + std::to_string(index) + " is out of range (" +
+           std::to_string(model_.nodes.size()) + " nodes)");
+    if (std::find(path.begin(), path.end(), index) != path.end())
+      fail("the node hierarchy has a cycle through " + nodeName(index));
+    const tinygltf::Node& node = model_.nodes[std::size_t(index)];
+    NodeInstance inst;
+    inst.node = index;
+    inst.parentWorld = parentWorld;
+    inst.world = parentWorld * localMatrix(node);
+    instances_.push_back(inst);
+    path.push_back(index);
+    for (int child : node.children) visitNode(child, inst.world, path);
+    path.pop_back();
+  }
+
+  void addMeshInstance(const NodeInstance& inst) {
+    const tinygltf::Node& node = model_.nodes[std::size_t(inst.node)];
+    if (node.mesh < 0) return;
+    if (std::size_t(node.mesh) >= model_.meshes.size())
+      fail(nodeName(inst.node) + ": mesh " + std::to_string(node.mesh) + " is out of range (" +
+           std::to_string(model_.meshes.size()) + " meshes)");
+    if (node.skin >= 0)
+      warnOnce("skin" + std::to_string(inst.node),
+               nodeName(inst.node) + ": skin ignored, the mesh is shown in its rest pose");
+    const tinygltf::Mesh& mesh = model_.meshes[std::size_t(node.mesh)];
+    std::string meshName = mesh.name.empty() ? "mesh " + std::to_string(node.mesh) : mesh.name;
+    std::string baseName = node.name.empty() ? meshName : node.name;
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+      std::string label = "mesh " + inQuotes(meshName) + " primitive " + std::to_string(p);
+      std::string name = mesh.primitives.size() > 1 ? baseName + "#" + std::to_string(p) : baseName;
+      addPrimitive(mesh.primitives[p], label, name, inst.world);
+    }
+  }
+
+  void addPrimitive(const tinygltf::Primitive& src, const std::string& label,
+                    const std::string& name, const glm::dmat4& world) {
+    int mode = src.mode < 0 ? TINYGLTF_MODE_TRIANGLES : src.mode;
+    if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE ||
+        mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP) {
+      warn(label + ": " + (mode == TINYGLTF_MODE_POINTS ? "points" : "lines") +
+           " skipped (only triangles are drawn)");
+      return;
+    }
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      warn(label + ": unknown primitive mode " + std::to_string(mode) + " skipped");
+      return;
+    }
+    auto posIt = src.attributes.find("POSITION");
+    if (posIt == src.attributes.end()) {
+      warn(label + ": no POSITION attribute, skipped");
+      return;
+    }
+    if (!src.targets.empty())
+      warnOnce("morph" + label,
+               label + ": morph targets ignored, the mesh is shown in its rest pose");
+
+    MeshPrimitive prim;
+    prim.name = name;
+    std::vector<float> raw =
+        readFloats(model_, posIt->second, "POSITION of " + label, TINYGLTF_TYPE_VEC3);
+    const std::size_t vertexCount = raw.size() / 3;
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+      glm::vec3 p(raw[3 * v], raw[3 * v + 1], raw[3 * v + 2]);
+      if (!finite(p))
+        fail(label + ": POSITION of vertex " + std::to_string(v) + " is not finite (NaN or inf)");
+    }
+
+    // Indices, as a triangle list.
+    std::vector<std::uint32_t> order;
+    if (src.indices >= 0) {
+      order = readIndices(model_, src.indices, "indices of " + label);
+      for (std::size_t k = 0; k < order.size(); ++k)
+        if (order[k] >= vertexCount)
+          fail(label + ": index " + std::to_string(order[k]) + " (element " + std::to_string(k) +
+               ") is out of range: the primitive has " + std::to_string(vertexCount) + " vertices");
+    } else {
+      order.resize(vertexCount);
+      for (std::size_t v = 0; v < vertexCount; ++v) order[v] = std::uint32_t(v);
+    }
+    std::vector<std::uint32_t> tri;
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+      if (order.size() % 3 != 0)
+        warn(label + ": " + std::to_string(order.size()) +
+             " indices is not a multiple of 3; the last partial triangle is dropped");
+      tri.assign(order.begin(), order.begin() + std::ptrdiff_t(order.size() / 3 * 3));
+    } else {
+      // Strip: triangle i = (i, i+1+i%2, i+2-i%2); fan: (i+1, i+2, 0). Restart-style
+      // degenerate triangles are dropped.
+      for (std::size_t i = 0; i + 2 < order.size(); ++i) {
+        std::uint32_t a, b, c;
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+          a = order[i], b = order[i + 1 + i % 2], c = order[i + 2 - i % 2];
+        } else {
+          a = order[i + 1], b = order[i + 2], c = order[0];
+        }
+        if (a == b || b == c || a == c) continue;
+        tri.insert(tri.end(), {a, b, c});
+      }
+    }
+    if (tri.empty()) {
+      warn(label + ": no triangles, skipped");
+      return;
+    }
+
+    // Normals and texture coordinates.
+    std::vector<float> normals;
+    if (auto it = src.attributes.find("NORMAL"); it != src.attributes.end()) {
+      normals = readFloats(model_, it->second, "NORMAL of " + label, TINYGLTF_TYPE_VEC3);
+      if (normals.size() != raw.size())
+        fail(label + ": NORMAL has " + std::to_string(normals.size() / 3) +
+             " elements, POSITION has " + std::to_string(vertexCount));
+    }
+    UvRule rule;
+    if (src.material >= 0 && std::size_t(src.material) < uvRules_.size())
+      rule = uvRules_[std::size_t(src.material)];
+    std::vector<float> uvs;
+    std::string uvName = "TEXCOORD_" + std::to_string(rule.texCoord);
+    if (auto it = src.attributes.find(uvName); it != src.attributes.end()) {
+      uvs = readFloats(model_, it->second, uvName + " of " + label, TINYGLTF_TYPE_VEC2);
+      if (uvs.size() / 2 != vertexCount)
+        fail(label + ": " + uvName + " has " + std::to_string(uvs.size() / 2) +
+             " elements, POSITION has " + std::to_string(vertexCount));
+    }
+
+    // To world space. Normals go by the inverse transpose; a mirroring transform flips
+    // the winding so that front faces stay counter-clockwise.
+    glm::mat4 m(world);
+    glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m)));
+    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    prim.positions.resize(vertexCount);
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+      glm::vec3 p = glm::vec3(m * glm::vec4(raw[3 * v], raw[3 * v + 1], raw[3 * v + 2], 1.0f));
+      if (!finite(p))
+        fail(label + ": the node transform makes vertex " + std::to_string(v) +
+             " not finite (NaN or inf)");
+      prim.positions[v] = p;
+    }
+    if (!normals.empty()) {
+      prim.normals.resize(vertexCount);
+      bool fixed = false;
+      for (std::size_t v = 0; v < vertexCount; ++v) {
+        glm::vec3 n =
+            normalMatrix * glm::vec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+        float len = glm::length(n);
+        if (!(len > 1e-20f) || !std::isfinite(len)) {
+          n = glm::vec3(0.0f, 1.0f, 0.0f);
+          fixed = true;
+        } else {
+          n /= len;
+        }
+        prim.normals[v] = n;
+      }
+      if (fixed) warn(label + ": zero or non-finite normals replaced by +y");
+    }
+    if (!uvs.empty()) {
+      prim.uvs.resize(vertexCount);
+      for (std::size_t v = 0; v < vertexCount; ++v)
+        prim.uvs[v] = glm::vec2(rule.transform * glm::vec3(uvs[2 * v], uvs[2 * v + 1], 1.0f));
+    }
+    if (mirrored)
+      for (std::size_t t = 0; t + 2 < tri.size(); t += 3) std::swap(tri[t + 1], tri[t + 2]);
+    prim.indices = std::move(tri);
+    if (prim.normals.empty()) computeFlatNormals(prim);
+    if (src.material >= 0 && std::size_t(src.material) >= scene_.materials.size()) {
+      warn(label + ": material " + std::to_string(src.material) +
+           " does not exist, using the default");
+    } else {
+      prim.material = src.material;
+    }
+    scene_.primitives.push_back(std::move(prim));
+  }
+
+  /// The spec's rule for primitives without normals: flat shading. Each triangle gets its
+  /// own three vertices whose normal is the (counter-clockwise) face normal.
+  static void computeFlatNormals(MeshPrimitive& prim) {
+    MeshPrimitive flat;
+    flat.name = prim.name;
+    const std::size_t n = prim.indices.size();
+    flat.positions.reserve(n);
+    flat.normals.reserve(n);
+    if (!prim.uvs.empty()) flat.uvs.reserve(n);
+    for (std::size_t t = 0; t + 2 < n; t += 3) {
+      std::uint32_t i[3] = {prim.indices[t], prim.indices[t + 1], prim.indices[t + 2]};
+      glm::vec3 face = glm::cross(prim.positions[i[1]] - prim.positions[i[0]],
+                                  prim.positions[i[2]] - prim.positions[i[0]]);
+      float len = glm::length(face);
+      glm::vec3 normal = len > 0.0f && std::isfinite(len) ? face / len : glm::vec3(0, 1, 0);
+      for (std::uint32_t k : i) {
+        flat.indices.push_back(std::uint32_t(flat.positions.size()));
+        flat.positions.push_back(prim.positions[k]);
+        flat.normals.push_back(normal);
+        if (!prim.uvs.empty()) flat.uvs.push_back(prim.uvs[k]);
+      }
+    }
+    prim.positions = std::move(flat.positions);
+    prim.normals = std::move(flat.normals);
+    prim.uvs = std::move(flat.uvs);
+    prim.indices = std::move(flat.indices);
+  }
+
+  void addLights() {
+    for (const NodeInstance& inst : instances_) {
+      const tinygltf::Node& node = model_.nodes[std::size_t(inst.node)];
+      auto it = node.extensions.find("KHR_lights_punctual");
+      if (it == node.extensions.end() || !it->second.IsObject()) continue;
+      const tinygltf::Value& ref = it->second.Get("light");
+      if (!ref.IsNumber()) continue;
+      int index = ref.GetNumberAsInt();
+      if (index < 0 || std::size_t(index) >= model_.lights.size()) {
+        warn(nodeName(inst.node) + ": light " + std::to_string(index) + " does not exist, ignored");
+        continue;
+      }
+      const tinygltf::Light& light = model_.lights[std::size_t(index)];
+      std::string name =
+          light.name.empty() ? "light " + std::to_string(index) : inQuotes(light.name);
+      if (light.type != "directional") {
+        warn(light.type + " light " + name +
+             " ignored (ShadowLab lights the scene with one directional sun)");
+        continue;
+      }
+      if (scene_.sun) {
+        warn("directional light " + name + " ignored (the first directional light is the sun)");
+        continue;
+      }
+      // glTF lights shine along their node's -z: the light lies towards +z.
+      glm::dvec3 towards = glm::dvec3(inst.world * glm::dvec4(0.0, 0.0, 1.0, 0.0));
+      double len = glm::length(towards);
+      if (!(len > 0.0) || !std::isfinite(len)) {
+        warn("directional light " + name + " has a degenerate node transform, ignored");
+        continue;
+      }
+      scene_.sun = DirectionalLight::fromDirection(glm::vec3(towards / len));
+    }
+    if (!scene_.sun)
+      warn("no directional light (KHR_lights_punctual): the scene has no sun of its own");
+  }
+
+  /// Distance along a ray to the first triangle, or +inf.
+  float firstHit(const glm::vec3& origin, const glm::vec3& dir) const {
+    float best = std::numeric_limits<float>::infinity();
+    for (const MeshPrimitive& prim : scene_.primitives) {
+      for (std::size_t t = 0; t + 2 < prim.indices.size(); t += 3) {
+        // Moeller-Trumbore, both sides.
+        const glm::vec3& a = prim.positions[prim.indices[t]];
+        glm::vec3 e1 = prim.positions[prim.indices[t + 1]] - a;
+        glm::vec3 e2 = prim.positions[prim.indices[t + 2]] - a;
+        glm::vec3 pv = glm::cross(dir, e2);
+        float det = glm::dot(e1, pv);
+        if (std::abs(det) < 1e-12f) continue;
+        float inv = 1.0f / det;
+        glm::vec3 tv = origin - a;
+        float u = glm::dot(tv, pv) * inv;
+        if (u < 0.0f || u > 1.0f) continue;
+        glm::vec3 qv = glm::cross(tv, e1);
+        float v = glm::dot(dir, qv) * inv;
+        if (v < 0.0f || u + v > 1.0f) continue;
+        float dist = glm::dot(e2, qv) * inv;
+        if (dist > 0.0f && dist < best) best = dist;
+      }
+    }
+    return best;
+  }
+
+  /// A far plane that reaches every corner of the scene bounds from `position`.
+  float farFromBounds(const glm::vec3& position, float nearM) const {
+    float far = 0.0f;
+    for (const glm::vec3& c : scene_.bounds.corners())
+      far = std::max(far, glm::distance(position, c));
+    return std::max(far * 1.05f, nearM * 10.0f);
+  }
+
+  struct CameraLens {
+    float fovYDeg = 50.0f, nearM = 0.1f, farM = 0.0f;  ///< farM 0 = from the scene bounds
+  };
+
+  /// The lens of a perspective camera, or nothing (with a warning) for other cameras.
+  std::optional<CameraLens> lensOf(int cameraIndex, const std::string& where) {
+    if (cameraIndex < 0 || std::size_t(cameraIndex) >= model_.cameras.size()) {
+      warn(where + ": camera " + std::to_string(cameraIndex) + " does not exist, ignored");
+      return std::nullopt;
+    }
+    const tinygltf::Camera& cam = model_.cameras[std::size_t(cameraIndex)];
+    if (cam.type != "perspective") {
+      warnOnce("ortho" + std::to_string(cameraIndex),
+               where + ": " + (cam.type.empty() ? "untyped" : cam.type) +
+                   " camera ignored (only perspective cameras become bookmarks)");
+      return std::nullopt;
+    }
+    CameraLens lens;
+    double fov = glm::degrees(cam.perspective.yfov);
+    if (fov > 1.0 && fov < 170.0) {
+      lens.fovYDeg = float(fov);
+    } else {
+      warn(where + ": yfov out of range, using 50 degrees");
+    }
+    if (cam.perspective.znear > 0.0) lens.nearM = float(cam.perspective.znear);
+    if (cam.perspective.zfar > cam.perspective.znear) lens.farM = float(cam.perspective.zfar);
+    return lens;
+  }
+
+  std::string cameraName(const NodeInstance& inst) const {
+    const tinygltf::Node& node = model_.nodes[std::size_t(inst.node)];
+    const tinygltf::Camera& cam = model_.cameras[std::size_t(node.camera)];
+    if (!cam.name.empty()) return cam.name;
+    if (!node.name.empty()) return node.name;
+    return "camera " + std::to_string(scene_.cameras.size() + 1);
+  }
+
+  void addCameras() {
+    for (const NodeInstance& inst : instances_) {
+      const tinygltf::Node& node = model_.nodes[std::size_t(inst.node)];
+      if (node.camera < 0) continue;
+      std::optional<CameraLens> lens = lensOf(node.camera, nodeName(inst.node));
+      if (!lens) continue;
+      glm::vec3 position;
+      glm::quat rotation;
+      decomposePose(inst.world, position, rotation);
+      float far = lens->farM > 0.0f ? lens->farM : farFromBounds(position, lens->nearM);
+      glm::vec3 forward = glm::normalize(rotation * glm::vec3(0.0f, 0.0f, -1.0f));
+      // Orbit target: what the camera looks at, else the point nearest the scene centre.
+      float dist = firstHit(position, forward);
+      if (!(dist > lens->nearM && dist < far))
+        dist = std::max(glm::dot(scene_.bounds.center() - position, forward), 1.0f);
+      CameraBookmark bookmark;
+      bookmark.name = cameraName(inst);
+      bookmark.camera = cameraFromPose(position, rotation, lens->fovYDeg, lens->nearM, far, dist);
+      if (auto problem = bookmark.camera.validate()) {
+        warn("camera " + inQuotes(bookmark.name) + " ignored: " + *problem);
+        continue;
+      }
+      scene_.cameras.push_back(std::move(bookmark));
+    }
+  }
+
+  /// One animation channel's keyframes, already read.
+  struct Track {
+    std::vector<float> times;
+    std::vector<glm::vec4> values;  ///< xyz for translation, xyzw for rotation
+    bool step = false;
+    bool rotation = false;
+
+    glm::vec4 at(float t) const {
+      if (t <= times.front()) return values.front();
+      if (t >= times.back()) return values.back();
+      std::size_t k =
+          std::size_t(std::upper_bound(times.begin(), times.end(), t) - times.begin()) - 1;
+      if (step) return values[k];
+      float span = times[k + 1] - times[k];
+      float u = span > 0.0f ? (t - times[k]) / span : 0.0f;
+      if (!rotation) return glm::mix(values[k], values[k + 1], u);
+      glm::quat a(values[k].w, values[k].x, values[k].y, values[k].z);
+      glm::quat b(values[k + 1].w, values[k + 1].x, values[k + 1].y, values[k + 1].z);
+      glm::quat q = glm::slerp(glm::normalize(a), glm::normalize(b), u);
+      return glm::vec4(q.x, q.y, q.z, q.w);
+    }
+  };
+
+  Track readTrack(const tinygltf::Animation& anim, const tinygltf::AnimationChannel& channel,
+                  const std::string& label) {
+    if (channel.sampler < 0 || std::size_t(channel.sampler) >= anim.samplers.size())
+      fail(label + ": sampler " + std::to_string(channel.sampler) + " is out of range");
+    const tinygltf::AnimationSampler& sampler = anim.samplers[std::size_t(channel.sampler)];
+    Track track;
+    track.rotation = channel.target_path == "rotation";
+    track.step = sampler.interpolation == "STEP";
+    bool cubic = sampler.interpolation == "CUBICSPLINE";
+    if (cubic) warn(label + ": CUBICSPLINE keys are followed linearly (tangents ignored)");
+    track.times = readFloats(model_, sampler.input, "times of " + label, TINYGLTF_TYPE_SCALAR);
+    int type = track.rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3;
+    std::vector<float> out = readFloats(model_, sampler.output, "values of " + label, type);
+    std::size_t comps = track.rotation ? 4 : 3;
+    std::size_t perKey = cubic ? 3 : 1;  // cubic: in-tangent, value, out-tangent
+    if (track.times.empty() || out.size() != track.times.size() * comps * perKey)
+      fail(label + ": " + std::to_string(track.times.size()) + " key times but " +
+           std::to_string(out.size() / comps) + " values");
+    for (std::size_t k = 0; k < track.times.size(); ++k) {
+      if (!std::isfinite(track.times[k]) || (k > 0 && track.times[k] < track.times[k - 1]))
+        fail(label + ": key times must be finite and increasing");
+      const float* v = &out[(k * perKey + (cubic ? 1 : 0)) * comps];
+      track.values.emplace_back(v[0], v[1], v[2], track.rotation ? v[3] : 0.0f);
+    }
+    return track;
+  }
+
+  void addPaths() {
+    // Parent world matrix of each camera node (its first instance).
+    std::map<int, const NodeInstance*> cameraNodes;
+    for (const NodeInstance& inst : instances_)
+      if (model_.nodes[std::size_t(inst.node)].camera >= 0) cameraNodes.emplace(inst.node, &inst);
+
+    for (std::size_t a = 0; a < model_.animations.size(); ++a) {
+      const tinygltf::Animation& anim = model_.animations[a];
+      std::string animName = anim.name.empty() ? "animation " + std::to_string(a) : anim.name;
+      std::map<int, std::vector<Track>> translation, rotation;  // by camera node
+      for (std::size_t c = 0; c < anim.channels.size(); ++c) {
+        const tinygltf::AnimationChannel& ch = anim.channels[c];
+        std::string label = "animation " + inQuotes(animName) + " channel " + std::to_string(c);
+        if (ch.target_node < 0 || std::size_t(ch.target_node) >= model_.nodes.size())
+          fail(label + ": target node " + std::to_string(ch.target_node) + " is out of range");
+        if (!cameraNodes.count(ch.target_node)) {
+          warnOnce("anim" + std::to_string(a),
+                   "animation " + inQuotes(animName) +
+                       " moves non-camera nodes; they are shown in their rest pose");
+          continue;
+        }
+        if (ch.target_path == "translation") {
+          translation[ch.target_node].push_back(readTrack(anim, ch, label));
+        } else if (ch.target_path == "rotation") {
+          rotation[ch.target_node].push_back(readTrack(anim, ch, label));
+        } else {
+          warn(label + ": " + ch.target_path + " of a camera ignored");
+        }
+      }
+      std::set<int> animated;
+      for (auto& [node, tracks] : translation) animated.insert(node);
+      for (auto& [node, tracks] : rotation) animated.insert(node);
+      for (int node : animated) {
+        const NodeInstance& inst = *cameraNodes.at(node);
+        std::optional<CameraLens> lens =
+            lensOf(model_.nodes[std::size_t(node)].camera, nodeName(node));
+        if (!lens) continue;
+        const Track* tTrack = translation.count(node) ? &translation[node].back() : nullptr;
+        const Track* rTrack = rotation.count(node) ? &rotation[node].back() : nullptr;
+        CameraPath path;
+        path.name = animated.size() > 1 ? animName + " (" + cameraName(inst) + ")" : animName;
+        path.keys = sampleKeys(inst, tTrack, rTrack);
+        path.fovYDeg = lens->fovYDeg;
+        path.nearM = lens->nearM;
+        float far = lens->farM;
+        if (!(far > 0.0f))
+          for (const CameraKey& k : path.keys)
+            far = std::max(far, farFromBounds(k.position, lens->nearM));
+        path.farM = far;
+        scene_.paths.push_back(std::move(path));
+      }
+    }
+  }
+
+  /// Keys at every keyframe time of either track. A STEP track also gets a key just before
+  /// each jump, so that CameraPath's linear interpolation reproduces the step.
+  std::vector<CameraKey> sampleKeys(const NodeInstance& inst, const Track* tTrack,
+                                    const Track* rTrack) const {
+    std::vector<float> times;
+    for (const Track* tr : {tTrack, rTrack}) {
+      if (!tr) continue;
+      for (std::size_t k = 0; k < tr->times.size(); ++k) {
+        times.push_back(tr->times[k]);
+        if (tr->step && k > 0)
+          times.push_back(std::nextafter(tr->times[k], -std::numeric_limits<float>::infinity()));
+      }
+    }
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    const tinygltf::Node& node = model_.nodes[std::size_t(inst.node)];
+    std::vector<CameraKey> keys;
+    for (float t : times) {
+      tinygltf::Node posed = node;
+      posed.matrix.clear();
+      if (node.matrix.size() == 16) {
+        // Animated nodes use TRS; a matrix node's animation replaces its decomposition.
+        glm::vec3 p;
+        glm::quat q;
+        decomposePose(localMatrix(node), p, q);
+        posed.translation = {p.x, p.y, p.z};
+        posed.rotation = {q.x, q.y, q.z, q.w};
+      }
+      if (tTrack) {
+        glm::vec4 v = tTrack->at(t);
+        posed.translation = {v.x, v.y, v.z};
+      }
+      if (rTrack) {
+        glm::vec4 v = rTrack->at(t);
+        posed.rotation = {v.x, v.y, v.z, v.w};
+      }
+      CameraKey key;
+      key.timeS = t;
+      decomposePose(inst.parentWorld * localMatrix(posed), key.position, key.rotation);
+      keys.push_back(key);
+    }
+    return keys;
+  }
+
+  const tinygltf::Model& model_;
+  Scene& scene_;
+  std::vector<NodeInstance> instances_;
+  std::vector<UvRule> uvRules_;
+  std::set<std::string> warnedKeys_;
+};
+
+// ---------------------------------------------------------------------------------------
+// Files
+
+/// tinygltf's image decoder, except that an undecodable image is a warning, not a failure.
+bool decodeImageLeniently(tinygltf::Image* image, const int imageIndex, std::string* err,
+                          std::string* warn, int reqWidth, int reqHeight,
+                          const unsigned char* bytes, int size, void*) {
+  std::string why;
+  if (tinygltf::LoadImageData(image, imageIndex, &why, warn, reqWidth, reqHeight, bytes, size,
+                              nullptr))
+    return true;
+  if (warn) *warn += "image " + std::to_string(imageIndex) + " not decoded: " + why + "\n";
+  (void)err;
+  return true;
+}
+
+std::uint32_t readU32(const std::vector<unsigned char>& bytes, std::size_t at) {
+  std::uint32_t v;
+  std::memcpy(&v, bytes.data() + at, 4);
+  return v;
+}
+
+/// The GLB container checks tinygltf reports less clearly.
+void checkGlbHeader(const std::vector<unsigned char>& bytes) {
+  const std::size_t size = bytes.size();
+  if (size < 12)
+    fail("truncated .glb: " + std::to_string(size) + " bytes, the header alone needs 12");
+  std::uint32_t version = readU32(bytes, 4), length = readU32(bytes, 8);
+  if (version != 2) fail("unsupported glTF binary version " + std::to_string(version));
+  if (length > size)
+    fail("truncated .glb: the header declares " + std::to_string(length) +
+         " bytes but the file has " + std::to_string(size));
+  if (length < 20) fail("truncated .glb: no JSON chunk");
+  std::uint32_t jsonLength = readU32(bytes, 12), jsonType = readU32(bytes, 16);
+  if (jsonType != 0x4E4F534Au) fail("malformed .glb: the first chunk is not JSON");
+  if (std::uint64_t(jsonLength) + 20u > length)
+    fail("truncated .glb: the JSON chunk (" + std::to_string(jsonLength) +
+         " bytes) runs past the end of the file");
+}
+
+std::string describeParseError(const std::string& tinygltfError) {
+  std::string msg = oneLine(tinygltfError);
+  if (msg.empty()) return "could not be parsed as glTF";
+  if (std::size_t p = msg.find("[json.exception."); p != std::string::npos) {
+    std::size_t close = msg.find("] ", p);
+    if (close != std::string::npos) msg.erase(p, close + 2 - p);
+    return "malformed JSON: " + msg;
+  }
+  if (msg.find("JSON") != std::string::npos || msg.find("json") != std::string::npos)
+    return "malformed JSON: " + msg;
+  return "invalid glTF: " + msg;
+}
+
+void refuseUnsupportedRequiredExtensions(const tinygltf::Model& model) {
+  std::vector<std::string> unsupported;
+  for (const std::string& ext : model.extensionsRequired)
+    if (std::find(kAcceptedRequiredExtensions.begin(), kAcceptedRequiredExtensions.end(), ext) ==
+        kAcceptedRequiredExtensions.end())
+      unsupported.push_back(inQuotes(ext));
+  if (unsupported.empty()) return;
+  std::string list;
+  for (const std::string& e : unsupported) list += (list.empty() ? "" : ", ") + e;
+  fail(std::string("requires unsupported extension") + (unsupported.size() > 1 ? "s " : " ") +
+       list);
+}
+
+std::shared_ptr<Scene> loadOrFail(const fs::path& path) {
+  std::error_code ec;
+  fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) fail("file not found");
+  if (fs::is_directory(status)) fail("is a directory, not a glTF file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail("cannot be opened for reading");
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                   std::istreambuf_iterator<char>());
+  if (in.bad()) fail("read error");
+  if (bytes.empty()) fail("empty file");
+  if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail("file larger than 4 GiB");
+
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (!binary && lowerExtension(path) == ".glb") {
+    if (bytes.size() < 4) fail("truncated .glb: " + std::to_string(bytes.size()) + " bytes");
+    fail("not a glTF binary (the file does not start with 'glTF')");
+  }
+  if (binary) checkGlbHeader(bytes);
+
+  tinygltf::TinyGLTF parser;
+  parser.SetImageLoader(&decodeImageLeniently, nullptr);
+  tinygltf::Model model;
+  std::string err, warnText;
+  std::string baseDir = path.parent_path().string();
+  bool ok = binary ? parser.LoadBinaryFromMemory(&model, &err, &warnText, bytes.data(),
+                                                 static_cast<unsigned int>(bytes.size()), baseDir)
+                   : parser.LoadASCIIFromString(&model, &err, &warnText,
+                                                reinterpret_cast<const char*>(bytes.data()),
+                                                static_cast<unsigned int>(bytes.size()), baseDir);
+  // The required extensions are parsed early, so they explain a failure best.
+  refuseUnsupportedRequiredExtensions(model);
+  if (!ok) fail(describeParseError(err));
+
+  auto scene = std::make_shared<Scene>();
+  scene->name = path.stem().string();
+  scene->sourcePath = path.string();
+  addLines(scene->warnings, warnText);
+  Flattener(model, *scene).run();
+  return scene;
+}
+
+bool hasGltfExtension(const fs::path& p) {
+  std::string ext = lowerExtension(p);
+  return ext == ".gltf" || ext == ".glb";
+}
+
+}  // namespace
+
+SceneLoadResult loadGltf(const std::filesystem::path& path) {
+  SceneLoadResult result;
+  try {
+    result.scene = loadOrFail(path);
+  } catch (const LoadFailure& f) {
+    result.error = path.string() + ": " + oneLine(f.message);
+  } catch (const std::bad_alloc&) {
+    result.error = path.string() + ": out of memory while loading";
+  } catch (const std::exception& e) {
+    result.error = path.string() + ": " + oneLine(e.what());
+  } catch (...) {
+    result.error = path.string() + ": unknown error while loading";
+  }
+  if (!result.error.empty()) result.scene.reset();
+  return result;
+}
+
+std::filesystem::path builtinSceneDir() {
+  if (const char* env = std::getenv("SHADOWLAB_SCENE_DIR"); env && *env) return env;
+#ifdef SHADOWLAB_SCENE_DIR
+  return SHADOWLAB_SCENE_DIR;
+#else
+  return "scenes";
+#endif
+}
+
+std::vector<std::string> builtinSceneNames() {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (fs::directory_iterator it(builtinSceneDir(), ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code fileEc;
+    if (it->is_regular_file(fileEc) && hasGltfExtension(it->path()))
+      names.push_back(it->path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+SceneLoadResult loadSceneByNameOrPath(const std::string& nameOrPath) {
+  const fs::path asPath(nameOrPath);
+  const bool looksLikePath = hasGltfExtension(asPath) ||
+                             nameOrPath.find('/') != std::string::npos ||
+                             nameOrPath.find('\\') != std::string::npos;
+  if (looksLikePath) return loadGltf(asPath);
+
+  if (!nameOrPath.empty()) {
+    const fs::path dir = builtinSceneDir();
+    for (const char* ext : {".gltf", ".glb"}) {
+      fs::path candidate = dir / (nameOrPath + ext);
+      std::error_code ec;
+      if (fs::is_regular_file(candidate, ec)) {
+        SceneLoadResult result = loadGltf(candidate);
+        if (result) result.scene->name = nameOrPath;
+        return result;
+      }
+    }
+    std::error_code ec;
+    if (fs::exists(asPath, ec)) return loadGltf(asPath);  // e.g. a file without extension
+  }
+
+  std::vector<std::string> names = builtinSceneNames();
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  SceneLoadResult result;
+  result.error = "unknown scene '" + nameOrPath + "': not a built-in scene (" +
+                 (list.empty() ? "none found in " + builtinSceneDir().string() : list) +
+                 ") nor a .gltf/.glb file";
+  return result;
+}
+
+}  // namespace sl

@@ -1,0 +1,327 @@
+// shadowlab-make-scenes: writes the built-in scenes (scenes/*.gltf) and, optionally, the loader
+// test fixtures (tests/data) and CPU ray-cast previews of every camera bookmark.
+// Each scene models only what its lesson needs; see scenes/README.md for what each teaches.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "SceneBuilder.h"
+#include "Textures.h"
+#include "scene/GltfLoader.h"
+#include "scene/PlaneBoxAnalytic.h"
+
+namespace sl::gen {
+
+// Defined in make_fixtures.cpp and Preview.cpp.
+int writeFixtures(const std::filesystem::path& dir);
+int writePreviews(const Scene& scene, const std::filesystem::path& dir);
+
+namespace {
+
+/// A point `distM` from `target` seen at azimuth/elevation (degrees, DirectionalLight's
+/// convention), for placing cameras.
+glm::vec3 orbitEye(const glm::vec3& target, float azimuthDeg, float elevationDeg, float distM) {
+  return target + distM * towardsLightFromAngles(azimuthDeg, elevationDeg);
+}
+
+/// A flat ground quad over [x0, x1] x [z0, z1] at y = 0, facing up, uvs in metres.
+MeshData groundQuad(float x0, float x1, float z0, float z1) {
+  MeshData m;
+  m.addQuad({x0, 0.0f, z1}, {x1, 0.0f, z1}, {x1, 0.0f, z0}, {x0, 0.0f, z0},
+            glm::vec2(x1 - x0, z1 - z0));
+  return m;
+}
+
+/// A camera (a bookmark at the path's first keyframe) animated through `keys`.
+void addPath(SceneBuilder& b, const std::string& name, float yfovDeg, float nearM, float farM,
+             const std::vector<CameraKeyframe>& keys) {
+  int node = b.addCamera(name, keys.front().eye, keys.front().target, yfovDeg, nearM, farM);
+  b.addCameraPath(name, node, keys);
+}
+
+// ----------------------------------------------------------------------------------------
+// plane-box: one square occluder over a plane; the analytic reference of every technique.
+SceneBuilder makePlaneBox() {
+  namespace pb = planebox;
+  SceneBuilder b("plane-box");
+  int ground = b.addMaterial("ground", {0.80f, 0.80f, 0.78f, 1.0f});
+  int occluder = b.addMaterial("occluder", {0.85f, 0.36f, 0.24f, 1.0f});
+  const float g = pb::kGroundHalfSizeM;
+  b.addNode("ground", b.addMesh("ground", groundQuad(-g, g, -g, g), ground));
+  MeshData box;
+  box.addBox({0.0f, pb::kOccluderCenterHeightM, 0.0f},
+             {pb::kOccluderHalfSizeM, 0.5f * pb::kOccluderThicknessM, pb::kOccluderHalfSizeM});
+  b.addNode("occluder", b.addMesh("occluder", box, occluder));
+  b.addSun(pb::kSunAzimuthDeg, pb::kSunElevationDeg);
+
+  // The shadow's centre; cameras look at it from the side away from the sun (azimuth 210),
+  // low enough that the occluder hides little of it.
+  glm::vec2 s = pb::shadowOffsetXZ(pb::kOccluderCenterHeightM, pb::sunTowardsLight());
+  glm::vec3 shadow(s.x, 0.0f, s.y);
+  b.addCamera("overview", orbitEye(shadow, 215.0f, 38.0f, 8.0f), shadow, 45.0f, 0.1f, 60.0f);
+  glm::vec3 corner(s.x - pb::kOccluderHalfSizeM, 0.0f, s.y - pb::kOccluderHalfSizeM);
+  b.addCamera("edge-closeup", orbitEye(corner, 200.0f, 45.0f, 1.5f), corner, 45.0f, 0.02f, 40.0f);
+  b.addCamera("grazing", orbitEye(shadow, 230.0f, 6.0f, 7.0f) + glm::vec3(0.0f, 0.1f, 0.0f), shadow,
+              45.0f, 0.05f, 60.0f);
+  std::vector<CameraKeyframe> keys;
+  for (int k = 0; k <= 10; ++k) {
+    float u = float(k) / 10.0f;
+    // Swing round the shadow from azimuth 170 to 260 while closing in from 8 m to 2.5 m.
+    float az = 170.0f + 90.0f * u, el = 40.0f - 12.0f * u, dist = 8.0f - 5.5f * u;
+    keys.push_back({float(k), orbitEye(shadow, az, el, dist), shadow});
+  }
+  addPath(b, "orbit-in", 45.0f, 0.05f, 60.0f, keys);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
+// diagonal: a row of thin posts at 45 degrees to the light's image axes.
+constexpr float kDiagonalSunAzimuthDeg = 55.0f, kDiagonalSunElevationDeg = 45.0f;
+
+SceneBuilder makeDiagonal() {
+  SceneBuilder b("diagonal");
+  int ground = b.addMaterial("ground", {0.74f, 0.70f, 0.58f, 1.0f});
+  int post = b.addMaterial("post", {0.42f, 0.30f, 0.22f, 1.0f});
+  b.addNode("ground", b.addMesh("ground", groundQuad(-12.0f, 72.0f, -16.0f, 16.0f), ground));
+  MeshData posts;
+  const int kPosts = 40;
+  const float spacing = 1.5f;
+  for (int i = 0; i < kPosts; ++i)
+    posts.addBox({float(i) * spacing, 0.9f, 0.0f}, {0.04f, 0.9f, 0.04f});
+  b.addNode("posts", b.addMesh("posts", posts, post));
+  b.addSun(kDiagonalSunAzimuthDeg, kDiagonalSunElevationDeg);
+
+  const float rowEnd = float(kPosts - 1) * spacing;
+  // The posts' shadows fall towards -x and -z: the cameras stand on that side of the row.
+  b.addCamera("row-end", {-4.0f, 1.6f, -1.2f}, {20.0f, 0.0f, -0.8f}, 50.0f, 0.1f, 120.0f);
+  b.addCamera("row-end-low", {-2.0f, 0.5f, -0.6f}, {12.0f, 0.2f, -0.6f}, 50.0f, 0.05f, 120.0f);
+  b.addCamera("overview", {0.4f * rowEnd, 12.0f, -15.0f}, {0.4f * rowEnd, 0.0f, 0.0f}, 50.0f, 0.2f,
+              150.0f);
+  std::vector<CameraKeyframe> keys;
+  for (int k = 0; k <= 10; ++k) {
+    float x = -4.0f + 4.5f * float(k);  // walk along the row, 4.5 m/s
+    float sway = 0.4f * std::sin(float(k) * 0.9f);
+    keys.push_back({float(k), {x, 1.6f, -1.2f + sway}, {x + 24.0f, 0.0f, -0.8f}});
+  }
+  addPath(b, "walk-along-row", 50.0f, 0.1f, 120.0f, keys);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
+// corridor: occluders log-spaced from 0.1 m to 1 km along a 1 km receiver.
+constexpr float kCorridorSunAzimuthDeg = 30.0f, kCorridorSunElevationDeg = 50.0f;
+
+SceneBuilder makeCorridor() {
+  SceneBuilder b("corridor");
+  int floorMat = b.addMaterial("floor", {0.72f, 0.72f, 0.70f, 1.0f});
+  int frameMat = b.addMaterial("frame", {0.25f, 0.35f, 0.55f, 1.0f});
+  b.addNode("floor", b.addMesh("floor", groundQuad(-2.0f, 2.0f, -1010.0f, 2.0f), floorMat));
+  // Frames (two pillars and a lintel, members 0.08 m thick) at distances 0.1 m .. 1 km ahead
+  // of the camera (which stands at z = 0 looking down -z), 30 of them, ratio 10^(4/29).
+  MeshData frames;
+  const int kFrames = 30;
+  for (int i = 0; i < kFrames; ++i) {
+    float d = 0.1f * std::pow(10.0f, 4.0f * float(i) / float(kFrames - 1));
+    float z = -d;
+    frames.addBox({-1.5f, 1.25f, z}, {0.04f, 1.25f, 0.04f});
+    frames.addBox({1.5f, 1.25f, z}, {0.04f, 1.25f, 0.04f});
+    frames.addBox({0.0f, 2.54f, z}, {1.54f, 0.04f, 0.04f});
+  }
+  b.addNode("frames", b.addMesh("frames", frames, frameMat));
+  b.addSun(kCorridorSunAzimuthDeg, kCorridorSunElevationDeg);
+
+  b.addCamera("start", {0.0f, 1.0f, 0.0f}, {0.0f, -1.2f, -10.0f}, 50.0f, 0.05f, 1200.0f);
+  b.addCamera("start-level", {0.0f, 1.0f, 0.0f}, {0.0f, 0.8f, -100.0f}, 50.0f, 0.05f, 1200.0f);
+  b.addCamera("midway", {0.5f, 1.8f, -20.0f}, {0.0f, 0.0f, -50.0f}, 50.0f, 0.05f, 1200.0f);
+  std::vector<CameraKeyframe> keys;
+  for (int k = 0; k <= 10; ++k) {
+    // Accelerating down the corridor: 0 -> 60 m in 10 s, looking ahead and slightly down.
+    float z = -0.6f * float(k * k);
+    float look = 0.3f * std::sin(float(k) * 0.7f);
+    keys.push_back({float(k), {0.0f, 1.0f, z}, {look * 10.0f, -1.0f, z - 12.0f}});
+  }
+  addPath(b, "fly-down-corridor", 50.0f, 0.05f, 1200.0f, keys);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
+// default: a small pleasant scene, near and far, fine and large shadows, alpha-masked leaves.
+constexpr float kDefaultSunAzimuthDeg = 240.0f, kDefaultSunElevationDeg = 35.0f;
+
+SceneBuilder makeDefault() {
+  SceneBuilder b("default");
+  Rng rng(20260601u);
+  int meadow = b.addMaterial("meadow", {0.58f, 0.66f, 0.46f, 1.0f});
+  int terracotta = b.addMaterial("terracotta", {0.80f, 0.40f, 0.27f, 1.0f});
+  int slate = b.addMaterial("slate", {0.31f, 0.43f, 0.63f, 1.0f});
+  int mustard = b.addMaterial("mustard", {0.91f, 0.71f, 0.26f, 1.0f});
+  int porcelain = b.addMaterial("porcelain", {0.93f, 0.91f, 0.86f, 1.0f});
+  int stone = b.addMaterial("stone", {0.80f, 0.77f, 0.71f, 1.0f});
+  int lavender = b.addMaterial("tower", {0.63f, 0.57f, 0.72f, 1.0f});
+  int wood = b.addMaterial("wood", {0.52f, 0.39f, 0.27f, 1.0f});
+  int bark = b.addMaterial("bark", {0.42f, 0.31f, 0.21f, 1.0f});
+  std::vector<std::uint8_t> picketsRgba = makePicketTexture(kPicketTextureSize);
+  std::vector<std::uint8_t> leavesRgba = makeLeafTexture(kLeafTextureSize, rng);
+  int picketTex = b.addTexture("pickets", kPicketTextureSize, kPicketTextureSize, picketsRgba);
+  int leafTex = b.addTexture("leaves", kLeafTextureSize, kLeafTextureSize, leavesRgba);
+  int pickets = b.addMaterial("pickets", glm::vec4(1.0f), "MASK", 0.5f, true, picketTex);
+  int leaves = b.addMaterial("leaves", glm::vec4(1.0f), "MASK", 0.5f, true, leafTex);
+
+  b.addNode("meadow", b.addMesh("meadow", groundQuad(-40.0f, 40.0f, -40.0f, 40.0f), meadow));
+  MeshData m;
+  m.addSphere({0.0f, 1.0f, -1.0f}, 1.0f, 48, 24);
+  b.addNode("sphere", b.addMesh("sphere", m, porcelain));
+  m = {};
+  m.addBox({-2.6f, 0.8f, -0.2f}, glm::vec3(0.8f), 25.0f);
+  b.addNode("terracotta-box", b.addMesh("terracotta-box", m, terracotta));
+  m = {};
+  m.addBox({3.5f, 1.6f, -4.0f}, {0.5f, 1.6f, 0.5f}, -15.0f);
+  b.addNode("slate-box", b.addMesh("slate-box", m, slate));
+  m = {};
+  m.addBox({1.8f, 0.25f, 1.8f}, glm::vec3(0.25f), 40.0f);
+  b.addNode("mustard-box", b.addMesh("mustard-box", m, mustard));
+  m = {};
+  for (float x : {-9.0f, -5.0f, -1.0f, 3.0f}) m.addCylinder({x, 0.0f, -14.0f}, 0.3f, 5.0f, 32);
+  m.addBox({-3.0f, 5.15f, -14.0f}, {6.4f, 0.15f, 0.45f});  // an architrave on the columns
+  b.addNode("colonnade", b.addMesh("colonnade", m, stone));
+  m = {};
+  m.addBox({12.0f, 5.0f, -22.0f}, {1.25f, 5.0f, 1.25f}, 10.0f);
+  b.addNode("tower", b.addMesh("tower", m, lavender));
+
+  // A picket fence along z at x = -6: one alpha-masked quad (1 texture tile per metre) and
+  // five posts. Its striped shadow falls towards +x.
+  m = {};
+  const float fx = -6.0f, fz0 = -1.0f, fz1 = 7.0f, fh = 1.2f;
+  m.addQuad({fx, 0.0f, fz1}, {fx, 0.0f, fz0}, {fx, fh, fz0}, {fx, fh, fz1}, {fz1 - fz0, 1.0f});
+  b.addNode("fence", b.addMesh("fence", m, pickets));
+  m = {};
+  for (float z = fz0; z <= fz1 + 0.01f; z += 2.0f)
+    m.addBox({fx - 0.08f, 0.65f, z}, {0.05f, 0.65f, 0.05f});
+  b.addNode("fence-posts", b.addMesh("fence-posts", m, wood));
+
+  // A tree: a trunk and a crown of alpha-masked leaf cards.
+  const glm::vec3 treeBase(-9.0f, 0.0f, -7.0f);
+  m = {};
+  m.addCylinder(treeBase, 0.22f, 3.4f, 16);
+  b.addNode("trunk", b.addMesh("trunk", m, bark));
+  m = {};
+  const glm::vec3 crown = treeBase + glm::vec3(0.0f, 3.9f, 0.0f);
+  for (int i = 0; i < 44; ++i) {
+    glm::vec3 c = crown + rng.inBall() * glm::vec3(1.7f, 1.3f, 1.7f);
+    glm::vec3 n = rng.onSphere();
+    glm::vec3 u = glm::normalize(
+        glm::cross(std::abs(n.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0), n));
+    glm::vec3 v = glm::cross(n, u);
+    float h = 0.65f + 0.25f * rng.uniform();
+    m.addQuad(c - h * u - h * v, c + h * u - h * v, c + h * u + h * v, c - h * u + h * v);
+  }
+  b.addNode("crown", b.addMesh("crown", m, leaves));
+
+  b.addSun(kDefaultSunAzimuthDeg, kDefaultSunElevationDeg);
+  b.addCamera("overview", {9.0f, 8.0f, 17.0f}, {-0.5f, 1.0f, -5.0f}, 50.0f, 0.1f, 150.0f);
+  b.addCamera("fence", {-2.6f, 1.7f, 8.0f}, {-5.2f, 0.3f, 3.0f}, 50.0f, 0.05f, 150.0f);
+  b.addCamera("tree", {2.0f, 2.4f, -3.0f}, {-5.0f, 0.8f, -5.5f}, 50.0f, 0.05f, 150.0f);
+  b.addCamera("far", {2.0f, 1.7f, 12.0f}, {5.0f, 2.5f, -20.0f}, 50.0f, 0.1f, 200.0f);
+  std::vector<CameraKeyframe> keys;
+  const glm::vec3 center(-1.5f, 0.8f, -3.5f);
+  for (int k = 0; k <= 10; ++k) {
+    float az = 40.0f - 10.0f * float(k);  // from front-right round to the left
+    float dist = 17.0f - 0.6f * float(k);
+    keys.push_back({float(k),
+                    center + glm::vec3(dist * std::sin(glm::radians(az)), 5.5f,
+                                       dist * std::cos(glm::radians(az))),
+                    center});
+  }
+  addPath(b, "orbit", 50.0f, 0.1f, 150.0f, keys);
+  return b;
+}
+
+int writeScene(SceneBuilder builder, const std::string& name, const std::filesystem::path& dir,
+               const std::filesystem::path& previewDir) {
+  std::filesystem::path path = dir / (name + ".gltf");
+  if (std::string err = builder.write(path.string()); !err.empty()) {
+    std::fprintf(stderr, "%s\n", err.c_str());
+    return 1;
+  }
+  // Read it back through the real loader and report the facts scenes/README.md lists.
+  SceneLoadResult loaded = loadGltf(path);
+  if (!loaded) {
+    std::fprintf(stderr, "%s\n", loaded.error.c_str());
+    return 1;
+  }
+  const Scene& s = *loaded.scene;
+  std::error_code ec;
+  auto bytes = std::filesystem::file_size(path, ec);
+  std::printf("%s: %zu triangles, %.0f KiB, bounds (%.2f %.2f %.2f)..(%.2f %.2f %.2f)\n",
+              path.string().c_str(), s.triangleCount(), double(bytes) / 1024.0,
+              double(s.bounds.min.x), double(s.bounds.min.y), double(s.bounds.min.z),
+              double(s.bounds.max.x), double(s.bounds.max.y), double(s.bounds.max.z));
+  if (s.sun) {
+    glm::vec3 l = s.sun->towardsLight();
+    std::printf("  sun: azimuth %.2f, elevation %.2f, towards light (%.4f %.4f %.4f)\n",
+                double(s.sun->azimuthDeg), double(s.sun->elevationDeg), double(l.x), double(l.y),
+                double(l.z));
+  }
+  for (const CameraBookmark& c : s.cameras)
+    std::printf(
+        "  camera %-14s eye (%.2f %.2f %.2f) target (%.2f %.2f %.2f) fov %.0f near %.2f far %.0f\n",
+        c.name.c_str(), double(c.camera.position.x), double(c.camera.position.y),
+        double(c.camera.position.z), double(c.camera.target.x), double(c.camera.target.y),
+        double(c.camera.target.z), double(c.camera.fovYDeg), double(c.camera.nearM),
+        double(c.camera.farM));
+  for (const CameraPath& p : s.paths)
+    std::printf("  path %s: %zu keys, %.1f s\n", p.name.c_str(), p.keys.size(),
+                double(p.durationS()));
+  for (const std::string& w : s.warnings) std::printf("  warning: %s\n", w.c_str());
+  if (!previewDir.empty()) return writePreviews(s, previewDir);
+  return 0;
+}
+
+}  // namespace
+}  // namespace sl::gen
+
+int main(int argc, char** argv) {
+  namespace fs = std::filesystem;
+  fs::path scenesDir, fixturesDir, previewDir;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    auto value = [&]() -> fs::path { return i + 1 < argc ? fs::path(argv[++i]) : fs::path(); };
+    if (arg == "--scenes") {
+      scenesDir = value();
+    } else if (arg == "--fixtures") {
+      fixturesDir = value();
+    } else if (arg == "--preview") {
+      previewDir = value();
+    } else {
+      std::fprintf(stderr,
+                   "usage: %s [--scenes DIR] [--fixtures DIR] [--preview DIR]\n"
+                   "  --scenes DIR    write the built-in scenes (plane-box, diagonal, corridor, "
+                   "default) as DIR/<name>.gltf\n"
+                   "  --fixtures DIR  write the loader's test fixtures into DIR\n"
+                   "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n",
+                   argv[0]);
+      return 2;
+    }
+  }
+  if (scenesDir.empty() && fixturesDir.empty()) {
+    std::fprintf(stderr, "nothing to do: give --scenes DIR and/or --fixtures DIR (see --help)\n");
+    return 2;
+  }
+  int rc = 0;
+  if (!scenesDir.empty()) {
+    fs::create_directories(scenesDir);
+    if (!previewDir.empty()) fs::create_directories(previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makePlaneBox(), "plane-box", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeDiagonal(), "diagonal", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeCorridor(), "corridor", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeDefault(), "default", scenesDir, previewDir);
+  }
+  if (!fixturesDir.empty()) {
+    fs::create_directories(fixturesDir);
+    rc |= sl::gen::writeFixtures(fixturesDir);
+  }
+  return rc;
+}

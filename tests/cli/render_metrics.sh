@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# shadowlab-cli render: plane-box with uniform at 4096^2 is within 0.5 % of the exact
+# reference, and the metrics JSON holds every documented field.
+set -euo pipefail
+cli=$1 out=$3
+mkdir -p "$out"
+"$cli" render --scene plane-box --technique uniform --set resolution=4096 --size 640x360 \
+  --out "$out/pb.png" --metrics "$out/pb.json" --error-image "$out/pb-error.png"
+test -s "$out/pb.png" && test -s "$out/pb-error.png"
+python3 - "$out/pb.json" <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1]))
+need = ["technique", "params", "size", "total_ms", "passes", "texels", "bytes", "error_pct",
+        "false_lit_pct", "false_shadow_pct", "timing_method"]
+missing = [k for k in need if k not in m]
+assert not missing, f"missing keys {missing}"
+assert m["technique"] == "uniform" and m["params"]["resolution"] == "4096"
+assert m["size"] == [640, 360]
+assert m["texels"] == 4096 * 4096, m["texels"]
+assert all("ms" in p and "method" in p for p in m["passes"]), m["passes"]
+assert m["error_pct"] < 0.5, f"error_pct {m['error_pct']}"
+assert abs(m["error_pct"] - m["false_lit_pct"] - m["false_shadow_pct"]) < 1e-9
+print(f"ok: error_pct={m['error_pct']:.4f} total_ms={m['total_ms']:.1f} ({m['timing_method']})")
+PY

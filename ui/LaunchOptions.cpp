@@ -1,0 +1,118 @@
+// Command-line parsing and GL-free validation for the GUI (see LaunchOptions.h).
+#include "LaunchOptions.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include "core/Renderer.h"
+
+namespace sl::ui {
+
+ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral(
+      "ShadowLab: an interactive visual debugger and teaching tool for adaptive shadow maps."));
+  const QCommandLineOption help = parser.addHelpOption();
+  const QCommandLineOption version = parser.addVersionOption();
+  const QCommandLineOption scene(QStringLiteral("scene"),
+                                 QStringLiteral("Built-in scene name or .gltf/.glb file."),
+                                 QStringLiteral("NAME|FILE"));
+  const QCommandLineOption technique(QStringLiteral("technique"), QStringLiteral("Technique id."),
+                                     QStringLiteral("ID"));
+  const QCommandLineOption set(
+      QStringLiteral("set"),
+      QStringLiteral("Set a parameter (repeatable), e.g. --set resolution=2048."),
+      QStringLiteral("KEY=VALUE"));
+  const QCommandLineOption grab(QStringLiteral("grab"),
+                                QStringLiteral("Render, save window.png, viewport.png and "
+                                               "panel-<name>.png into DIR, then quit."),
+                                QStringLiteral("DIR"));
+  const QCommandLineOption grabAfter(
+      QStringLiteral("grab-after"), QStringLiteral("Frames to render before grabbing (default 5)."),
+      QStringLiteral("N"), QStringLiteral("5"));
+  parser.addOptions({scene, technique, set, grab, grabAfter});
+
+  ParsedLaunch out;
+  if (!parser.parse(arguments)) {
+    out.exitCode = 2;
+    out.messageIsError = true;
+    out.message = parser.errorText();
+    return out;
+  }
+  if (parser.isSet(help)) {
+    out.message = parser.helpText();
+    return out;
+  }
+  if (parser.isSet(version)) {
+    out.message = QCoreApplication::applicationName() + QLatin1Char(' ') +
+                  QCoreApplication::applicationVersion();
+    return out;
+  }
+  if (!parser.positionalArguments().isEmpty()) {
+    out.exitCode = 2;
+    out.messageIsError = true;
+    out.message = QStringLiteral("unexpected argument '%1' (use --scene FILE to open a scene)")
+                      .arg(parser.positionalArguments().first());
+    return out;
+  }
+  LaunchOptions o;
+  o.scene = parser.value(scene);
+  o.technique = parser.value(technique);
+  o.assignments = parser.values(set);
+  o.grabDir = parser.value(grab);
+  bool ok = false;
+  o.grabAfterFrames = parser.value(grabAfter).toInt(&ok);
+  if (!ok || o.grabAfterFrames < 1 || o.grabAfterFrames > 100000) {
+    out.exitCode = 2;
+    out.messageIsError = true;
+    out.message = QStringLiteral("--grab-after takes a frame count 1..100000, got '%1'")
+                      .arg(parser.value(grabAfter));
+    return out;
+  }
+  if (parser.isSet(grabAfter) && !o.grab()) {
+    out.exitCode = 2;
+    out.messageIsError = true;
+    out.message = QStringLiteral("--grab-after needs --grab DIR");
+    return out;
+  }
+  out.options = o;
+  return out;
+}
+
+std::optional<std::string> assignParameter(sl::ParamSet& technique, sl::ParamSet& shared,
+                                           const std::string& keyEqualsValue) {
+  const auto eq = keyEqualsValue.find('=');
+  if (eq == std::string::npos || eq == 0)
+    return "--set expects KEY=VALUE, got '" + keyEqualsValue + "'";
+  const std::string key = keyEqualsValue.substr(0, eq);
+  if (technique.has(key)) return technique.assign(keyEqualsValue);
+  if (shared.has(key)) return shared.assign(keyEqualsValue);
+  std::string known;
+  for (const sl::ParamSet* set : {&technique, &shared})
+    for (const sl::ParamDecl& d : set->decls()) known += (known.empty() ? "" : ", ") + d.key;
+  return "unknown parameter '" + key + "' (known: " + (known.empty() ? "none" : known) + ")";
+}
+
+std::string defaultTechniqueId() {
+  const auto& all = sl::Renderer::techniques();
+  return all.empty() ? std::string() : all.front().id;
+}
+
+std::optional<std::string> validateLaunchSettings(const std::string& techniqueId,
+                                                  const QStringList& assignments) {
+  const std::string id = techniqueId.empty() ? defaultTechniqueId() : techniqueId;
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id);
+  if (!info) {
+    std::string known;
+    for (const sl::TechniqueInfo& t : sl::Renderer::techniques())
+      known += (known.empty() ? "" : ", ") + t.id;
+    return "unknown technique '" + id + "' (known: " + known + ")";
+  }
+  sl::ParamSet technique(info->params);
+  sl::ParamSet shared(sl::rendererParamDecls());
+  for (const QString& kv : assignments)
+    if (auto error = assignParameter(technique, shared, kv.toStdString())) return error;
+  return std::nullopt;
+}
+
+}  // namespace sl::ui

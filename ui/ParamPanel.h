@@ -1,0 +1,56 @@
+// The Parameters panel: generated from ParamDecls (one row per parameter, group boxes by
+// `group`, an editor by type, help as tooltip, reset buttons). Every edit goes through
+// ParamSet::set, so the declaration's range is the only range; refusals are reported.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <QString>
+#include <QWidget>
+
+#include "algo/Params.h"
+
+class QGridLayout;
+class QScrollArea;
+
+namespace sl::ui {
+
+class ParamPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  /// One block of the panel: a title (technique name, "View & shading"), an optional
+  /// description, and the live ParamSet it edits (owned elsewhere, must outlive the binding).
+  struct Section {
+    QString title;
+    QString description;
+    sl::ParamSet* params = nullptr;
+  };
+
+  explicit ParamPanel(QWidget* parent = nullptr);
+
+  /// Rebuilds the panel for `sections` (empty: shows a placeholder).
+  void setSections(std::vector<Section> sections);
+  /// Drops every reference into the ParamSets (call before they are destroyed).
+  void clear();
+  /// Re-reads every value (after changes made elsewhere, e.g. --set or presets).
+  void refreshValues();
+
+ Q_SIGNALS:
+  /// A value changed (already stored in its ParamSet).
+  void paramChanged(const QString& key);
+  /// An edit was refused (ParamSet's message, naming the key and range).
+  void editRefused(const QString& message);
+
+ private:
+  QWidget* buildSection(const Section& section);
+  void buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGridLayout* grid, int row);
+  /// Stores `value` into `params`; on refusal reports it and returns false.
+  bool commit(sl::ParamSet& params, const sl::ParamDecl& decl, double value);
+
+  QScrollArea* scroll_ = nullptr;
+  std::vector<std::function<void()>> refreshers_;  ///< one per row: value -> widgets
+};
+
+}  // namespace sl::ui

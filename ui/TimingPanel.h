@@ -1,0 +1,38 @@
+// The Timing panel: per-pass times of the current frame (bars), the recent frame-time
+// history, and the shadow-related GPU memory, all read from the renderer's FrameStats.
+#pragma once
+
+#include <QStringList>
+#include <QWidget>
+
+#include "core/FrameStats.h"
+
+class QLabel;
+class QTreeWidget;
+
+namespace sl::ui {
+
+class PassBarsWidget;
+class FrameHistoryWidget;
+
+class TimingPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit TimingPanel(QWidget* parent = nullptr);
+
+  /// Shows the stats of the frame just rendered.
+  void showStats(const sl::FrameStats& stats);
+  /// Forgets the history (new scene or technique: old times are not comparable).
+  void resetHistory();
+
+ private:
+  QLabel* summary_ = nullptr;
+  PassBarsWidget* passes_ = nullptr;
+  FrameHistoryWidget* history_ = nullptr;
+  QTreeWidget* memory_ = nullptr;
+  QLabel* memoryTotal_ = nullptr;
+  QStringList memoryKey_;  ///< what the memory list shows, to skip identical rebuilds
+};
+
+}  // namespace sl::ui

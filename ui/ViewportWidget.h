@@ -1,0 +1,130 @@
+// The 3D view: a QOpenGLWidget that owns the sl::Renderer (created in initializeGL, freed
+// with its context current) and turns mouse and keys into camera moves. It renders on
+// demand and computes the (slow) shadow error only once the view has been still a while.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
+#include <QElapsedTimer>
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QTimer>
+
+#include "core/Renderer.h"
+
+namespace sl::ui {
+
+class ViewportWidget : public QOpenGLWidget {
+  Q_OBJECT
+
+ public:
+  explicit ViewportWidget(QWidget* parent = nullptr);
+  ~ViewportWidget() override;
+
+  /// The renderer, or null before the GL context exists (or after it failed).
+  sl::Renderer* renderer() { return renderer_.get(); }
+  const sl::Renderer* renderer() const { return renderer_.get(); }
+
+  /// Shows `scene`; the camera goes to the scene's first bookmark (or a framing view) and
+  /// the light to the scene's sun when it has one.
+  void setScene(std::shared_ptr<const sl::Scene> scene);
+  const std::shared_ptr<const sl::Scene>& scene() const { return scene_; }
+
+  /// Switches technique (kept until the renderer exists). Unknown id: error, no change.
+  std::optional<std::string> setTechnique(const std::string& id);
+  const std::string& techniqueId() const { return techniqueId_; }
+
+  void setCamera(const sl::Camera& camera);
+  const sl::Camera& camera() const { return camera_; }
+  /// Camera of the scene's bookmark `index`, or the framing view for -1.
+  void goToBookmark(int index);
+  void resetView();
+
+  void setLight(const sl::DirectionalLight& light);
+  const sl::DirectionalLight& light() const { return light_; }
+
+  /// Renders continuously (for techniques that converge over frames) instead of on demand.
+  void setContinuous(bool on);
+
+  /// Computes the error of the last frame now (blocks for a fraction of a second).
+  /// Returns the error in percent, or nothing (and emits renderProblem) on failure.
+  std::optional<double> computeErrorNow();
+  /// Whether the error shown for the current view is up to date.
+  bool errorIsCurrent() const { return errorRevision_ == viewRevision_; }
+
+  /// Makes the context current and reloads the shaders (last good programs stay on error).
+  std::optional<std::string> reloadShaders();
+
+  /// Frames rendered since the renderer was created.
+  std::uint64_t framesRendered() const { return framesRendered_; }
+
+  /// How long the view must be still before the error is recomputed.
+  static constexpr int kErrorDelayMs = 1200;
+
+ Q_SIGNALS:
+  /// The renderer exists (after initializeGL): panels may bind to its parameters.
+  void rendererReady();
+  /// The renderer is about to be destroyed: panels must drop references into it.
+  void rendererAboutToBeDestroyed();
+  /// The GL context is unusable or the renderer could not be created.
+  void initializationFailed(const QString& message);
+  /// A frame was rendered; renderer()->stats() describes it.
+  void frameRendered();
+  /// renderFrame or the GL debug output reported a problem (the view keeps working).
+  void renderProblem(const QString& message);
+  /// The camera moved (mouse, keys, bookmark, reset).
+  void cameraChanged();
+  /// Something that changes the image changed: the shown error is out of date.
+  void viewChanged();
+  /// A fresh error for the current view, in percent of covered pixels.
+  void errorComputed(double errorPct);
+
+ protected:
+  void initializeGL() override;
+  void paintGL() override;
+  void resizeGL(int w, int h) override;
+
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+  void keyReleaseEvent(QKeyEvent* event) override;
+  void focusOutEvent(QFocusEvent* event) override;
+
+ private:
+  void destroyRenderer();
+  void applyStateToRenderer();
+  void markViewChanged();
+  void flyStep();
+  void computeErrorIfStill();
+  float sceneScaleM() const;  ///< size of the scene, for fly speed and pan scale
+
+  std::unique_ptr<sl::Renderer> renderer_;
+  std::shared_ptr<const sl::Scene> scene_;
+  std::string techniqueId_;
+  sl::Camera camera_;
+  sl::DirectionalLight light_;
+  bool continuous_ = false;
+
+  // What the renderer saw last frame; any difference means "view changed".
+  unsigned lastParamRevision_ = ~0u;
+  unsigned lastRendererParamRevision_ = ~0u;
+  std::string lastTechniqueId_;
+  std::uint64_t viewRevision_ = 1;
+  std::uint64_t errorRevision_ = 0;
+  std::uint64_t framesRendered_ = 0;
+  std::string lastProblem_;
+
+  QTimer errorTimer_;  ///< single shot: fires when the view has been still
+  QTimer flyTimer_;    ///< ticks while a fly key is held
+  QElapsedTimer flyClock_;
+  std::set<int> heldKeys_;
+  Qt::MouseButton dragButton_ = Qt::NoButton;
+  QPoint lastMouse_;
+};
+
+}  // namespace sl::ui

@@ -28,6 +28,19 @@ std::vector<ParamDecl> rendererParamDecls() {
        0.05,
        {},
        "Sky light added to every surface, so shadowed areas stay readable."},
+      {"view.overlay",
+       "Overlay",
+       "View",
+       ParamType::Enum,
+       0,
+       0,
+       3,
+       1,
+       {"none", "error", "aliasing", "warp-grid"},
+       "Drawn over the scene: shadow error against the exact reference (false-lit magenta, "
+       "false-shadowed cyan; needs a computed reference for this view), perspective aliasing "
+       "m as a heat map (blue: m<1 oversampled, white: m=1, red: m>1 undersampled; log2 scale "
+       "-4..4), or the shadow-map texel grid (every 1/16 of the map) projected onto the scene."},
   };
 }
 
@@ -38,7 +51,8 @@ void GLAPIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum seve
 
 struct Targets {
   int width = 0, height = 0;
-  gl::Texture position, normal, albedo, depth, hard, filtered, color;
+  gl::Texture position, normal, albedo, depth, hard, filtered, aliasing, texel, color;
+  gl::Texture reference;  // R8UI reference mask of the last computeError() (error overlay)
   gl::Framebuffer gbuffer, resolve, composite;
 };
 
@@ -67,6 +81,9 @@ struct RendererState {
   mutable std::mutex errorMutex;
   mutable std::shared_ptr<ShadowReference> reference;
   mutable const Scene* referenceScene = nullptr;
+  /// What the error overlay's reference mask was computed for (frame signature).
+  std::string referenceSignature;
+  std::string frameSignature;
 
   const gl::Program& resolveProgramFor(const std::string& lookup) {
     auto it = resolvePrograms.find(lookup);
@@ -90,6 +107,9 @@ struct RendererState {
     t.depth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, w, h);
     t.hard = gl::Texture::create2D(GL_R8UI, w, h);
     t.filtered = gl::Texture::create2D(GL_R8, w, h);
+    t.aliasing = gl::Texture::create2D(GL_R32F, w, h);
+    t.texel = gl::Texture::create2D(GL_RG32F, w, h);
+    t.reference = gl::Texture::create2D(GL_R8UI, w, h);
     t.color = gl::Texture::create2D(GL_RGBA8, w, h);
     t.gbuffer = gl::Framebuffer::create();
     t.gbuffer.attach(GL_COLOR_ATTACHMENT0, t.position);
@@ -101,7 +121,9 @@ struct RendererState {
     t.resolve = gl::Framebuffer::create();
     t.resolve.attach(GL_COLOR_ATTACHMENT0, t.hard);
     t.resolve.attach(GL_COLOR_ATTACHMENT1, t.filtered);
-    t.resolve.setDrawBuffers(2);
+    t.resolve.attach(GL_COLOR_ATTACHMENT2, t.aliasing);
+    t.resolve.attach(GL_COLOR_ATTACHMENT3, t.texel);
+    t.resolve.setDrawBuffers(4);
     t.resolve.checkComplete("resolve");
     t.composite = gl::Framebuffer::create();
     t.composite.attach(GL_COLOR_ATTACHMENT0, t.color);
@@ -275,6 +297,16 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   if (auto err = s.camera.validate()) return neutral(*err);
   if (auto err = s.light.validate()) return neutral(*err);
 
+  {  // What this frame shows; the error overlay is only drawn for a matching reference.
+    const Camera& c = s.camera;
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%p|%s|%u|%d|%d|%g,%g,%g|%g,%g,%g|%g,%g,%g|%g|%g,%g",
+                  static_cast<const void*>(s.scene.get()), s.techniqueId.c_str(),
+                  params().revision(), width, height, c.position.x, c.position.y, c.position.z,
+                  c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg,
+                  s.light.azimuthDeg, s.light.elevationDeg);
+    s.frameSignature = buf;
+  }
   const auto frameStart = std::chrono::steady_clock::now();
   s.ensureTargets(width, height);
   Targets& t = s.targets;
@@ -353,6 +385,17 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     c.set("u_towardsLight", towardsLight);
     c.set("u_ambient", float(s.rendererParams.get("shading.ambient")));
     c.set("u_cameraPos", s.camera.position);
+    glBindTextureUnit(4, t.hard.id());
+    glBindTextureUnit(5, t.reference.id());
+    glBindTextureUnit(6, t.aliasing.id());
+    glBindTextureUnit(7, t.texel.id());
+    c.set("u_hard", 4);
+    c.set("u_reference", 5);
+    c.set("u_aliasing", 6);
+    c.set("u_texel", 7);
+    int overlay = s.rendererParams.getInt("view.overlay");
+    if (overlay == 1 && s.referenceSignature != s.frameSignature) overlay = 0;  // stale
+    c.set("u_overlay", overlay);
     glBindVertexArray(s.emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
@@ -394,6 +437,9 @@ FrameReadback Renderer::readback() const {
                     r.normals.data());
   glGetTextureImage(t.hard.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, GLsizei(n),
                     r.hardMask.data());
+  r.aliasing.resize(n);
+  glGetTextureImage(t.aliasing.id(), 0, GL_RED, GL_FLOAT, GLsizei(n * sizeof(float)),
+                    r.aliasing.data());
   r.color.width = t.width;
   r.color.height = t.height;
   r.color.pixels.resize(n * 4);
@@ -409,6 +455,7 @@ FrameReadback Renderer::readback() const {
   flip(r.positions);
   flip(r.normals);
   flip(r.hardMask);
+  flip(r.aliasing);
   return r;
 }
 
@@ -423,6 +470,16 @@ Renderer::ErrorResult Renderer::computeError() const {
   s_->reference->evaluate(res.frame.positions, res.frame.normals, s_->light.towardsLight(),
                           res.referenceMask);
   res.stats = compareShadowMasks(res.frame.hardMask, res.referenceMask);
+  // Keep it for the error overlay (GL order: bottom row first).
+  const Targets& t = s_->targets;
+  if (res.referenceMask.size() == size_t(t.width) * size_t(t.height)) {
+    std::vector<std::uint8_t> glOrder = res.referenceMask;
+    flipRowsVertically(glOrder, size_t(t.width), t.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(t.reference.id(), 0, 0, 0, t.width, t.height, GL_RED_INTEGER,
+                        GL_UNSIGNED_BYTE, glOrder.data());
+    s_->referenceSignature = s_->frameSignature;
+  }
   return res;
 }
 

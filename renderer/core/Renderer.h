@@ -43,7 +43,20 @@ struct FloatImage {
 
 /// Debug data a technique publishes each frame when publishing is on: images (importance
 /// map, moment levels, shadow map), curves (1D importance, warp maps) and numbers
-/// (eigenvalues, rotation angle). Keys are documented by each technique.
+/// (eigenvalues, rotation angle). Keys (absent when a technique has no such thing):
+///  images:  "shadow map" (the technique's map as rendered: warped for RTW, depth 0..1),
+///           "shadow map.uniform" (RTW only: an unwarped map of the same size, for contrast),
+///           "importance" (RTW: IM before collapse, im.resolution^2),
+///           "moment.<c>.<level>" (DA-RTW: c in I,xI,yI,xxI,yyI,xyI; level 0 = full size;
+///           mip chain of SUMS, see algo/rtw/Moments.h)
+///  curves:  "importance.x", "importance.y" (collapsed, before blur),
+///           "importance.x.blurred", "importance.y.blurred" (after blur and floor),
+///           "warp.x", "warp.y" (n+1 edge offsets; u' = u + warp, algo/rtw/Warp.h)
+///  numbers: "moment.I", "moment.xI", "moment.yI", "moment.xxI", "moment.yyI", "moment.xyI"
+///           (top-level sums), "mean.x", "mean.y", "cov.xx", "cov.xy", "cov.yy",
+///           "eigen.1", "eigen.2", "e_x", "e_y", "pca.valid" (0/1), "pca.threshold",
+///           "rotation.held" (0/1), "rotation.deg" (accumulated angle of R),
+///           "rotation.step_deg", "rotation.changes", "light.extent.x", "light.extent.y".
 struct Publication {
   std::uint64_t frameIndex = 0;
   std::string techniqueId;
@@ -59,7 +72,11 @@ struct FrameReadback {
   std::vector<glm::vec4> positions;    ///< world xyz, w = 1 covered / 0 background
   std::vector<glm::vec4> normals;      ///< world, unit, facing the camera
   std::vector<std::uint8_t> hardMask;  ///< technique's hard test: 1 lit, 0 shadow, 255 empty
-  ImageRGBA8 color;                    ///< final shaded image, row 0 = top
+  /// Perspective aliasing m per pixel: shadow-map texel footprint over pixel footprint,
+  /// 1/sqrt(|dX x dY|) with dX, dY the screen derivatives of the final (warped) shadow-map
+  /// texel coordinate. m > 1: undersampled. 0 where uncovered.
+  std::vector<float> aliasing;
+  ImageRGBA8 color;  ///< final shaded image, row 0 = top
 };
 
 struct RendererOptions {

@@ -7,7 +7,18 @@ uniform sampler2D u_visibility;
 uniform vec3 u_towardsLight;
 uniform float u_ambient;
 uniform vec3 u_cameraPos;
+uniform usampler2D u_hard;       // technique's hard mask (1 lit, 0 shadow, 255 empty)
+uniform usampler2D u_reference;  // Embree reference mask of this view
+uniform sampler2D u_aliasing;    // m per pixel
+uniform sampler2D u_texel;       // final shadow-map uv (through the warp) per pixel
+uniform int u_overlay;           // 0 none, 1 error, 2 aliasing, 3 warp grid
 in vec2 v_uv;
+
+// Diverging heat map for log2(m) in [-4, 4]: blue (oversampled), white, red (undersampled).
+vec3 aliasingColor(float m) {
+  float t = clamp(log2(max(m, 1e-6)) / 4.0, -1.0, 1.0);
+  return t < 0.0 ? mix(vec3(1.0), vec3(0.15, 0.35, 0.95), -t) : mix(vec3(1.0), vec3(0.9, 0.1, 0.1), t);
+}
 out vec4 o_color;
 
 void main() {
@@ -28,5 +39,21 @@ void main() {
   // Soft distance fog keeps far geometry readable.
   float d = length(P.xyz - u_cameraPos);
   c = mix(c, vec3(0.78, 0.85, 0.93), clamp((d - 150.0) / 900.0, 0.0, 0.6));
-  o_color = vec4(pow(c, vec3(1.0 / 2.2)), 1.0);
+  c = pow(c, vec3(1.0 / 2.2));
+  if (u_overlay == 1) {  // colours as in makeErrorImage (metrics/ErrorMetrics.h)
+    uint h = texelFetch(u_hard, px, 0).r, r = texelFetch(u_reference, px, 0).r;
+    float grey = dot(c, vec3(0.299, 0.587, 0.114)) * 0.5;
+    c = vec3(grey);
+    if (h == 1u && r == 0u) c = vec3(1.0, 0.0, 1.0);
+    if (h == 0u && r == 1u) c = vec3(0.0, 1.0, 1.0);
+  } else if (u_overlay == 2) {
+    c = mix(c, aliasingColor(texelFetch(u_aliasing, px, 0).r), 0.7);
+  } else if (u_overlay == 3) {
+    vec2 g = texelFetch(u_texel, px, 0).xy * 16.0;  // a line every 1/16 of the map
+    vec2 w = fwidth(g);
+    vec2 d = abs(fract(g - 0.5) - 0.5) / max(w, vec2(1e-6));
+    float line = 1.0 - clamp(min(d.x, d.y), 0.0, 1.0);
+    c = mix(c, vec3(1.0, 0.85, 0.1), line * 0.85);
+  }
+  o_color = vec4(c, 1.0);
 }

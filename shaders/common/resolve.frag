@@ -2,6 +2,9 @@
 // (1 lit, 0 shadowed, 255 no surface) that the metrics compare with the Embree reference,
 // and the filtered visibility used for shading. Surfaces facing away from the light are
 // shadowed, exactly as in ShadowReference::isLit (C++).
+// A technique's lookup ("@lookup") defines: float shadowHard(vec3 P, vec3 N),
+// float shadowFiltered(vec3 P, vec3 N) (1 = lit), vec2 shadowMapTexel(vec3 P, vec3 N) (the
+// final, warped texel coordinate) and vec2 shadowMapSize() (texels).
 uniform sampler2D u_gPosition;
 uniform sampler2D u_gNormal;
 uniform vec3 u_towardsLight;
@@ -10,16 +13,25 @@ uniform vec3 u_towardsLight;
 
 layout(location = 0) out uint o_hard;
 layout(location = 1) out float o_filtered;
+layout(location = 2) out float o_aliasing;  // m: texel footprint / pixel footprint
+layout(location = 3) out vec2 o_texel;      // final (warped) shadow-map uv, for the grid
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec4 P = texelFetch(u_gPosition, px, 0);
+  vec3 N = texelFetch(u_gNormal, px, 0).xyz;
+  // Derivatives first, in uniform control flow (techniques.md, "Measuring"; RMSM's LOD):
+  // A = |dX x dY| texels per pixel, m = 1 / sqrt(A).
+  vec2 texel = P.w > 0.0 ? shadowMapTexel(P.xyz, N) : vec2(0.0);
+  vec2 dX = dFdx(texel), dY = dFdy(texel);
+  float area = abs(dX.x * dY.y - dX.y * dY.x);
+  o_texel = texel / shadowMapSize();
+  o_aliasing = P.w > 0.0 && area > 0.0 ? inversesqrt(area) : 0.0;
   if (P.w <= 0.0) {
     o_hard = 255u;
     o_filtered = 1.0;
     return;
   }
-  vec3 N = texelFetch(u_gNormal, px, 0).xyz;
   if (dot(N, u_towardsLight) <= 0.0) {
     o_hard = 0u;
     o_filtered = 0.0;

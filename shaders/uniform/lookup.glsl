@@ -11,6 +11,9 @@ vec3 shadowCoord(vec3 P, vec3 N) {
   return c.xyz / c.w * 0.5 + 0.5;
 }
 
+vec2 shadowMapSize() { return vec2(textureSize(u_shadowMap, 0)); }
+vec2 shadowMapTexel(vec3 P, vec3 N) { return shadowCoord(P, N).xy * shadowMapSize(); }
+
 float shadowTexelTest(vec3 uvz, ivec2 offset) {
   ivec2 size = textureSize(u_shadowMap, 0);
   ivec2 t = clamp(ivec2(floor(uvz.xy * vec2(size))) + offset, ivec2(0), size - 1);

@@ -340,10 +340,23 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   }
 
   // 2. The technique's shadow passes.
-  FrameContext ctx{*s.scene, *s.sceneGpu, s.camera,     aspect,
-                   view,     proj,        towardsLight, width,
-                   height,   t.position,  t.normal,     params(),
-                   *s.timer, s.shaders,   s.frameIndex, s.publishing ? &s.publication : nullptr};
+  FrameContext ctx{*s.scene,
+                   *s.sceneGpu,
+                   s.camera,
+                   aspect,
+                   view,
+                   proj,
+                   towardsLight,
+                   width,
+                   height,
+                   t.position,
+                   t.normal,
+                   t.hard,
+                   params(),
+                   *s.timer,
+                   s.shaders,
+                   s.frameIndex,
+                   s.publishing ? &s.publication : nullptr};
   try {
     s.technique->renderShadows(ctx);
   } catch (const std::exception& e) {

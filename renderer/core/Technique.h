@@ -34,6 +34,8 @@ struct FrameContext {
   /// and world normal, RGBA32F, width x height.
   const gl::Texture& gPosition;
   const gl::Texture& gNormal;
+  /// The previous frame's hard shadow mask (R8UI, camera space): shadow-edge importance.
+  const gl::Texture& prevHardMask;
   const ParamSet& params;  ///< the technique's own parameters
   gl::GpuTimer& timer;
   const gl::ShaderLibrary& shaders;

@@ -1,11 +1,19 @@
 // The list of techniques. Adding a technique: its folder under techniques/ and shaders/,
 // and one line here.
 #include "core/Technique.h"
+#include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
 
 namespace sl {
 
 namespace {
+template <RtwShadowMap::Analysis A, bool Rotation>
+TechniqueEntry rtwEntry(const char* id) {
+  return {RtwShadowMap::info(id), [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
+            return std::make_unique<RtwShadowMap>(lib, RtwShadowMap::Config{A, Rotation});
+          }};
+}
+
 template <typename T>
 TechniqueEntry entry() {
   return {T::info(), [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
@@ -17,6 +25,10 @@ TechniqueEntry entry() {
 const std::vector<TechniqueEntry>& techniqueRegistry() {
   static const std::vector<TechniqueEntry> list = {
       entry<UniformShadowMap>(),
+      rtwEntry<RtwShadowMap::Analysis::Forward, false>("rtw-forward"),
+      rtwEntry<RtwShadowMap::Analysis::Backward, false>("rtw-backward"),
+      rtwEntry<RtwShadowMap::Analysis::Hybrid, false>("rtw-hybrid"),
+      rtwEntry<RtwShadowMap::Analysis::Backward, true>("da-rtw"),
   };
   return list;
 }

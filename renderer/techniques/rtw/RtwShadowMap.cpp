@@ -1,0 +1,541 @@
+#include "RtwShadowMap.h"
+
+#include <bit>
+#include <cmath>
+#include <stdexcept>
+
+#include "algo/Focus.h"
+#include "algo/rtw/Moments.h"
+#include "algo/rtw/Warp.h"
+#include "core/SceneGpu.h"
+#include "core/ShadowPass.h"
+
+namespace sl {
+
+namespace {
+
+gl::ProgramDesc compute(const std::string& file) {
+  return {file, {{GL_COMPUTE_SHADER, file}}, {}, {}};
+}
+
+std::vector<float> readFloats(const gl::Buffer& b, size_t offset, size_t count) {
+  std::vector<float> v(count);
+  glGetNamedBufferSubData(b.id(), GLintptr(offset * sizeof(float)),
+                          GLsizeiptr(count * sizeof(float)), v.data());
+  return v;
+}
+
+}  // namespace
+
+TechniqueInfo RtwShadowMap::info(const std::string& id) {
+  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
+  auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
+  add({"im.resolution",
+       "IM resolution",
+       "Importance",
+       ParamType::Int,
+       512,
+       32,
+       2048,
+       32,
+       {},
+       "Importance map width and height (light space); also the length of the 1D maps."});
+  add({"importance.eye",
+       "Eye distance term",
+       "Importance",
+       ParamType::Bool,
+       1,
+       0,
+       1,
+       1,
+       {},
+       "Perspective aliasing: importance near/eye depth (seed 002's only term)."});
+  add({"importance.eye.weight",
+       "Eye weight",
+       "Importance",
+       ParamType::Float,
+       1,
+       0,
+       1,
+       0.05,
+       {},
+       "0 = neutral, 1 = the full near/depth falloff."});
+  add({"importance.orientation",
+       "Orientation term",
+       "Importance",
+       ParamType::Bool,
+       1,
+       0,
+       1,
+       1,
+       {},
+       "Projection aliasing: cos(theta_eye) / cos(theta_light) of the surface."});
+  add({"importance.orientation.weight",
+       "Orientation weight",
+       "Importance",
+       ParamType::Float,
+       0.5,
+       0,
+       1,
+       0.05,
+       {},
+       "0 = neutral, 1 = the full cosine ratio."});
+  add({"importance.edge",
+       "Shadow-edge term",
+       "Importance",
+       ParamType::Bool,
+       0,
+       0,
+       1,
+       1,
+       {},
+       "Extra importance within 2 px of a shadow edge of the previous frame."});
+  add({"importance.edge.weight",
+       "Edge weight",
+       "Importance",
+       ParamType::Float,
+       4,
+       0,
+       16,
+       0.5,
+       {},
+       "A texel on a shadow edge gets (1 + weight) times the importance."});
+  add({"blur.radius",
+       "Blur radius",
+       "Warp",
+       ParamType::Int,
+       4,
+       0,
+       32,
+       1,
+       {},
+       "Gaussian blur radius of the 1D importance maps, in texels."});
+  add({"blur.sigma",
+       "Blur sigma",
+       "Warp",
+       ParamType::Float,
+       2,
+       0.1,
+       16,
+       0.1,
+       {},
+       "Gaussian blur standard deviation, in texels."});
+  add({"importance.floor",
+       "Importance floor",
+       "Warp",
+       ParamType::Float,
+       0.01,
+       0,
+       1,
+       0.01,
+       {},
+       "Minimum importance as a share of the maximum, so no region collapses to zero texels."});
+  add({"tessellation",
+       "Tessellation",
+       "Warp",
+       ParamType::Bool,
+       1,
+       0,
+       1,
+       1,
+       {},
+       "Tessellate while rendering the warped map so long triangles bend with the warp."});
+  add({"tessellation.texels",
+       "Texels per segment",
+       "Warp",
+       ParamType::Float,
+       8,
+       1,
+       256,
+       1,
+       {},
+       "Target length of a tessellated edge in the warped map (level = length / this, <= 64)."});
+  const bool da = id == "da-rtw";
+  if (da)
+    add({"pca.threshold",
+         "Vibration threshold",
+         "Rotation",
+         ParamType::Float,
+         0.9999,
+         0.9,
+         1.0,
+         0.0001,
+         {},
+         "Keep the rotation while e_x > threshold (seed 000: 0.9999); 1.0 never holds."});
+  std::string name, desc;
+  if (id == "rtw-forward") {
+    name = "RTW (forward analysis)";
+    desc =
+        "Rectilinear texture warping (Rosen 2012, seed 002): importance from the light's "
+        "view projected into the camera, 1D warp maps, warped shadow map.";
+  } else if (id == "rtw-backward") {
+    name = "RTW (backward analysis)";
+    desc =
+        "Rectilinear texture warping with backward analysis: camera pixels scatter "
+        "importance into light space (atomicMax).";
+  } else if (id == "rtw-hybrid") {
+    name = "RTW (hybrid analysis)";
+    desc =
+        "Forward analysis plus an eye-depth visibility test, so hidden surfaces get no "
+        "importance.";
+  } else {
+    name = "Directionality-aware RTW";
+    desc =
+        "Backward RTW with the light frustum rotated by PCA of the importance map "
+        "(Tokuyoshi et al. 2014, seed 000), with a vibration threshold.";
+  }
+  return {id, name, desc, p};
+}
+
+RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
+    : config_(config),
+      backward_(lib, compute("rtw/importance_backward.comp")),
+      forward_(lib, {"rtw/importance_forward",
+                     {{GL_VERTEX_SHADER, "rtw/importance_forward.vert"},
+                      {GL_FRAGMENT_SHADER, "rtw/importance_forward.frag"}},
+                     {},
+                     {}}),
+      collapse_(lib, compute("rtw/collapse.comp")),
+      blur_(lib, compute("rtw/blur.comp")),
+      scanWarp_(lib, compute("rtw/scan_warp.comp")),
+      warped_(lib,
+              {"rtw/warped",
+               {{GL_VERTEX_SHADER, "rtw/warped.vert"}, {GL_FRAGMENT_SHADER, "common/depth.frag"}},
+               {},
+               {}}),
+      warpedTess_(lib, {"rtw/warped_tess",
+                        {{GL_VERTEX_SHADER, "rtw/warped_tess.vert"},
+                         {GL_TESS_CONTROL_SHADER, "rtw/warped_tess.tesc"},
+                         {GL_TESS_EVALUATION_SHADER, "rtw/warped_tess.tese"},
+                         {GL_FRAGMENT_SHADER, "common/depth.frag"}},
+                        {},
+                        {}}),
+      moments_(lib, compute("rtw/moments.comp")),
+      momentsReduce_(lib, compute("rtw/moments_reduce.comp")),
+      depth_(lib, depthProgramDesc()) {}
+
+void RtwShadowMap::resetTemporalState() {
+  rotation_.reset();
+  lastUpdate_ = {};
+  imValid_ = false;
+}
+
+void RtwShadowMap::ensureResources(int smRes, int imRes) {
+  if (smRes != smRes_) {
+    shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, smRes, smRes);
+    smFbo_ = gl::Framebuffer::create();
+    smFbo_.attach(GL_DEPTH_ATTACHMENT, shadowMap_);
+    smFbo_.setDrawBuffers(0);
+    smFbo_.checkComplete("RTW warped shadow map");
+    uniformMap_ = {};
+    smRes_ = smRes;
+  }
+  if (imRes != imRes_) {
+    importance_ = gl::Texture::create2D(GL_R32UI, imRes, imRes);
+    forwardDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, imRes, imRes);
+    forwardFbo_ = gl::Framebuffer::create();
+    forwardFbo_.attach(GL_COLOR_ATTACHMENT0, importance_);
+    forwardFbo_.attach(GL_DEPTH_ATTACHMENT, forwardDepth_);
+    forwardFbo_.setDrawBuffers(1);
+    forwardFbo_.checkComplete("RTW forward importance");
+    const GLbitfield rw = GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT;
+    collapsed_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
+    blurred_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
+    warp_ = gl::Buffer::create(GLsizeiptr(2 * (imRes + 1) * sizeof(float)), nullptr, rw);
+    momentOffsets_.clear();
+    momentSizes_.clear();
+    int offset = 0;
+    for (glm::ivec2 s(imRes);; s = (s + 1) / 2) {
+      momentOffsets_.push_back(offset);
+      momentSizes_.push_back(s);
+      offset += 6 * s.x * s.y;
+      if (s.x == 1 && s.y == 1) break;
+    }
+    momentBuffer_ = gl::Buffer::create(GLsizeiptr(offset * sizeof(float)), nullptr, rw);
+    imRes_ = imRes;
+    imValid_ = false;
+  }
+}
+
+void RtwShadowMap::estimateRotation(FrameContext& ctx) {
+  auto pass = ctx.timer.scope("rotation estimate");
+  const glm::ivec2 size(imRes_);
+  moments_.use();
+  glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, momentBuffer_.id());
+  moments_.set("u_size", size);
+  moments_.set("u_invSize", glm::vec2(1.0f / float(size.x), 1.0f / float(size.y)));
+  glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
+  momentsReduce_.use();
+  for (size_t l = 0; l + 1 < momentSizes_.size(); ++l) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glm::ivec2 dst = (momentSizes_[l] + 1) / 2;
+    momentsReduce_.set("u_srcSize", momentSizes_[l]);
+    momentsReduce_.set("u_srcOffset", momentOffsets_[l]);
+    momentsReduce_.set("u_dstOffset", momentOffsets_[l + 1]);
+    glDispatchCompute(GLuint((dst.x + 7) / 8), GLuint((dst.y + 7) / 8), 1);
+  }
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  std::vector<float> top = readFloats(momentBuffer_, size_t(momentOffsets_.back()), 6);
+  rtw::MomentTexel t;
+  for (int c = 0; c < 6; ++c) t[c] = top[c], lastTop_[c] = top[c];
+  // The angle is measured in metres: the IM's axes span the light frustum's extents.
+  rtw::MomentStats stats = rtw::momentsFromTop(t, 0.5f * lastExtentM_);
+  lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")));
+  if (ctx.publication) {
+    auto& n = ctx.publication->numbers;
+    n["mean.x"] = stats.meanX;
+    n["mean.y"] = stats.meanY;
+    n["cov.xx"] = stats.covXX;
+    n["cov.xy"] = stats.covXY;
+    n["cov.yy"] = stats.covYY;
+    n["eigen.1"] = stats.lambda1;
+    n["eigen.2"] = stats.lambda2;
+    n["pca.valid"] = stats.valid ? 1 : 0;
+    const char* names[6] = {"moment.I",   "moment.xI",  "moment.yI",
+                            "moment.xxI", "moment.yyI", "moment.xyI"};
+    for (int c = 0; c < 6; ++c) n[names[c]] = top[c];
+    // The chain itself (level images), for the moment panel.
+    const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+    for (size_t l = 0; l < momentSizes_.size(); ++l) {
+      glm::ivec2 s = momentSizes_[l];
+      std::vector<float> all =
+          readFloats(momentBuffer_, size_t(momentOffsets_[l]), size_t(6 * s.x * s.y));
+      for (int c = 0; c < 6; ++c) {
+        FloatImage img{s.x, s.y, 1, std::vector<float>(size_t(s.x * s.y))};
+        for (size_t i = 0; i < img.values.size(); ++i) img.values[i] = all[6 * i + size_t(c)];
+        ctx.publication->images["moment." + std::string(ch[c]) + "." + std::to_string(l)] =
+            std::move(img);
+      }
+    }
+  }
+}
+
+void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightViewProj,
+                                   float lightTexelM) {
+  auto pass = ctx.timer.scope("importance");
+  const ParamSet& p = ctx.params;
+  auto setTerms = [&](const gl::Program& prog) {
+    prog.set("u_eyeOn", p.getBool("importance.eye") ? 1 : 0);
+    prog.set("u_eyeWeight", float(p.get("importance.eye.weight")));
+    prog.set("u_orientationOn", p.getBool("importance.orientation") ? 1 : 0);
+    prog.set("u_orientationWeight", float(p.get("importance.orientation.weight")));
+    prog.set("u_minCosL", 0.1f);
+    prog.set("u_edgeOn", p.getBool("importance.edge") ? 1 : 0);
+    prog.set("u_edgeWeight", float(p.get("importance.edge.weight")));
+    prog.set("u_nearM", ctx.camera.nearM);
+    prog.set("u_lightViewProj", lightViewProj);
+    prog.set("u_cameraPos", ctx.camera.position);
+    prog.set("u_cameraForward", ctx.camera.forward());
+    prog.set("u_towardsLight", ctx.towardsLight);
+    prog.set("u_gPosition", 1);
+    prog.set("u_prevHard", 3);
+  };
+  glBindTextureUnit(1, ctx.gPosition.id());
+  glBindTextureUnit(2, ctx.gNormal.id());
+  glBindTextureUnit(3, ctx.prevHardMask.id());
+  const GLuint zero = 0;
+  glClearTexImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  if (config_.analysis == Analysis::Backward) {
+    backward_.use();
+    setTerms(backward_);
+    backward_.set("u_gNormal", 2);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
+  } else {
+    glBindFramebuffer(GL_FRAMEBUFFER, forwardFbo_.id());
+    glViewport(0, 0, imRes_, imRes_);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(forwardFbo_.id(), GL_DEPTH, 0, &one);
+    forward_.use();
+    setTerms(forward_);
+    forward_.set("u_cameraViewProj", ctx.cameraProj * ctx.cameraView);
+    forward_.set("u_hybrid", config_.analysis == Analysis::Hybrid ? 1 : 0);
+    forward_.set("u_visibilityToleranceM", 3.0f * lightTexelM);
+    ctx.sceneGpu.draw(forward_, 0);
+  }
+  imValid_ = true;
+}
+
+void RtwShadowMap::buildWarpMaps(FrameContext& ctx) {
+  const ParamSet& p = ctx.params;
+  const int n = imRes_;
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  {
+    auto pass = ctx.timer.scope("collapse");
+    collapse_.use();
+    glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
+    collapse_.set("u_n", n);
+    glDispatchCompute(GLuint((2 * n + 63) / 64), 1, 1);
+  }
+  {
+    auto pass = ctx.timer.scope("blur");
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    std::vector<float> w =
+        rtw::gaussianWeights(p.getInt("blur.radius"), float(p.get("blur.sigma")));
+    int radius = int(w.size() / 2);
+    blur_.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, blurred_.id());
+    blur_.set("u_n", n);
+    blur_.set("u_radius", radius);
+    glProgramUniform1fv(blur_.id(), blur_.location("u_weights"), GLsizei(w.size()), w.data());
+    glDispatchCompute(GLuint((2 * n + 63) / 64), 1, 1);
+  }
+  {
+    auto pass = ctx.timer.scope("scan + warp");
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    scanWarp_.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, blurred_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
+    scanWarp_.set("u_n", n);
+    scanWarp_.set("u_m", int(std::bit_ceil(unsigned(n))));
+    scanWarp_.set("u_floor", float(p.get("importance.floor")));
+    glDispatchCompute(2, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  }
+}
+
+void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewProj, bool warp) {
+  const ParamSet& p = ctx.params;
+  const bool tess = p.getBool("tessellation");
+  const gl::Program& prog = tess ? warpedTess_ : warped_;
+  gl::Framebuffer& fbo = warp ? smFbo_ : uniformFbo_;
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glViewport(0, 0, smRes_, smRes_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(float(p.get("bias.slope")), float(p.get("bias.constant")));
+  prog.use();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
+  prog.set("u_lightViewProj", lightViewProj);
+  prog.set("u_warpN", imRes_);
+  prog.set("u_warpOn", warp ? 1 : 0);
+  if (tess) {
+    prog.set("u_texelsPerSegment", float(p.get("tessellation.texels")));
+    prog.set("u_smSize", glm::vec2(float(smRes_)));
+  }
+  ctx.sceneGpu.draw(prog, 0, tess);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void RtwShadowMap::renderShadows(FrameContext& ctx) {
+  const ParamSet& p = ctx.params;
+  ensureResources(p.getInt("resolution"), p.getInt("im.resolution"));
+  if (config_.rotation && imValid_) estimateRotation(ctx);
+  if (ctx.publication && config_.rotation) {
+    auto& n = ctx.publication->numbers;
+    n["e_x"] = lastUpdate_.e_x;
+    n["e_y"] = lastUpdate_.e_y;
+    n["rotation.held"] = lastUpdate_.held ? 1 : 0;
+    n["rotation.deg"] = rotation_.angleDeg();
+    n["rotation.step_deg"] = lastUpdate_.stepDeg;
+    n["rotation.changes"] = rotation_.changes;
+    n["pca.threshold"] = p.get("pca.threshold");
+  }
+
+  LightFit fit;
+  {
+    auto pass = ctx.timer.scope(config_.rotation ? "rotation estimate" : "focus");
+    FocusSettings fs;
+    if (config_.rotation) fs.rotation = rtw::lightViewRotation(rotation_);
+    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
+                                       fs, fit))
+      throw std::runtime_error(*err);
+  }
+  lightViewProj_ = fit.viewProj;
+  lastExtentM_ = fit.extentM;
+  const float texelM = std::max(fit.extentM.x, fit.extentM.y) / float(smRes_);
+  normalOffsetM_ = float(p.get("bias.normal")) * texelM;
+  pcfRadius_ = p.getInt("pcf");
+
+  buildImportance(ctx, fit.viewProj, std::max(fit.extentM.x, fit.extentM.y) / float(imRes_));
+  buildWarpMaps(ctx);
+  {
+    auto pass = ctx.timer.scope("warped shadow map");
+    renderWarped(ctx, fit.viewProj, true);
+  }
+  if (ctx.publication) publish(ctx, fit.viewProj);
+}
+
+void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
+  Publication& pub = *ctx.publication;
+  const int n = imRes_;
+  pub.numbers["light.extent.x"] = lastExtentM_.x;
+  pub.numbers["light.extent.y"] = lastExtentM_.y;
+  FloatImage im{n, n, 1, std::vector<float>(size_t(n) * size_t(n))};
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glGetTextureImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                    GLsizei(im.values.size() * sizeof(float)), im.values.data());  // float bits
+  pub.images["importance"] = std::move(im);
+  std::vector<float> c = readFloats(collapsed_, 0, size_t(2 * n));
+  std::vector<float> b = readFloats(blurred_, 0, size_t(2 * n));
+  std::vector<float> w = readFloats(warp_, 0, size_t(2 * (n + 1)));
+  pub.curves["importance.x"].assign(c.begin(), c.begin() + n);
+  pub.curves["importance.y"].assign(c.begin() + n, c.end());
+  pub.curves["importance.x.blurred"].assign(b.begin(), b.begin() + n);
+  pub.curves["importance.y.blurred"].assign(b.begin() + n, b.end());
+  pub.curves["warp.x"].assign(w.begin(), w.begin() + n + 1);
+  pub.curves["warp.y"].assign(w.begin() + n + 1, w.end());
+  publishDepth(pub, "shadow map", shadowMap_);
+  // The unwarped map of the same size, for contrast (debug only: not counted in memory).
+  if (!uniformMap_ || uniformMap_.width() != smRes_) {
+    uniformMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, smRes_, smRes_);
+    uniformFbo_ = gl::Framebuffer::create();
+    uniformFbo_.attach(GL_DEPTH_ATTACHMENT, uniformMap_);
+    uniformFbo_.setDrawBuffers(0);
+    uniformFbo_.checkComplete("RTW contrast map");
+  }
+  renderWarped(ctx, lightViewProj, false);
+  publishDepth(pub, "shadow map.uniform", uniformMap_);
+}
+
+void RtwShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
+  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
+  resolve.set("u_shadowMap", firstUnit);
+  resolve.set("u_lightViewProj", lightViewProj_);
+  resolve.set("u_normalOffsetM", normalOffsetM_);
+  resolve.set("u_pcfRadius", pcfRadius_);
+  resolve.set("u_warpN", imRes_);
+  resolve.set("u_warpOn", 1);
+}
+
+MemoryStats RtwShadowMap::memory() const {
+  MemoryStats m;
+  if (!shadowMap_) return m;
+  m.add("warped shadow map", "DEPTH_COMPONENT32F", smRes_, smRes_, 1, 4);
+  m.add("importance map", "R32UI", imRes_, imRes_, 1, 4);
+  m.add("1D importance (x, y)", "R32F", imRes_, 1, 2, 4);
+  m.add("warp maps (x, y; n+1 edges)", "R32F", imRes_ + 1, 1, 2, 4);
+  if (config_.analysis != Analysis::Backward)
+    m.add("forward depth", "DEPTH_COMPONENT32F", imRes_, imRes_, 1, 4);
+  if (config_.rotation) {
+    int texels = 0;
+    for (glm::ivec2 s : momentSizes_) texels += s.x * s.y;
+    m.add("moment chain (6 channels, all levels)", "R32F x6", texels, 1, 6, 4);
+  }
+  return m;
+}
+
+std::optional<std::string> RtwShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  std::string errors;
+  for (gl::Program* prog : {&backward_, &forward_, &collapse_, &blur_, &scanWarp_, &warped_,
+                            &warpedTess_, &moments_, &momentsReduce_, &depth_})
+    if (auto e = prog->rebuild(lib)) errors += (errors.empty() ? "" : "\n") + *e;
+  if (errors.empty()) return std::nullopt;
+  return errors;
+}
+
+}  // namespace sl

@@ -1,0 +1,61 @@
+// Rectilinear Texture Warping (Rosen, I3D 2012; seed 002) with forward, backward or hybrid
+// importance analysis, and its directionality-aware variant (seed 000): PCA of the
+// importance map through a moment mip chain rotates the light's image plane so that
+// diagonal importance lines up with a shadow-map axis. techniques.md §2-3.
+// Every GPU pass mirrors a function of algo/rtw/ (the CPU reference; parity-tested).
+#pragma once
+
+#include <vector>
+
+#include "algo/rtw/Rotation.h"
+#include "core/Technique.h"
+
+namespace sl {
+
+class RtwShadowMap : public Technique {
+ public:
+  enum class Analysis { Forward, Backward, Hybrid };
+  struct Config {
+    Analysis analysis = Analysis::Backward;
+    bool rotation = false;  ///< DA-RTW
+  };
+  static TechniqueInfo info(const std::string& id);
+  RtwShadowMap(const gl::ShaderLibrary& lib, Config config);
+
+  void renderShadows(FrameContext& ctx) override;
+  std::string lookupShader() const override { return "rtw/lookup.glsl"; }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  MemoryStats memory() const override;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+  void resetTemporalState() override;
+
+  const rtw::RotationState& rotation() const { return rotation_; }
+
+ private:
+  void ensureResources(int smRes, int imRes);
+  void estimateRotation(FrameContext& ctx);
+  void buildImportance(FrameContext& ctx, const glm::mat4& lightViewProj, float lightTexelM);
+  void buildWarpMaps(FrameContext& ctx);
+  void renderWarped(FrameContext& ctx, const glm::mat4& lightViewProj, bool warp);
+  void publish(FrameContext& ctx, const glm::mat4& lightViewProj);
+
+  Config config_;
+  gl::Program backward_, forward_, collapse_, blur_, scanWarp_, warped_, warpedTess_, moments_,
+      momentsReduce_, depth_;
+  gl::Texture shadowMap_, importance_, forwardDepth_, uniformMap_;
+  gl::Framebuffer smFbo_, forwardFbo_, uniformFbo_;
+  gl::Buffer collapsed_, blurred_, warp_, momentBuffer_;
+  std::vector<int> momentOffsets_;  ///< float offset of each level
+  std::vector<glm::ivec2> momentSizes_;
+  int smRes_ = 0, imRes_ = 0;
+  bool imValid_ = false;  ///< the IM holds last frame's importance (for the rotation)
+  glm::mat4 lightViewProj_{1.0f};
+  glm::vec2 lastExtentM_{1.0f};
+  float normalOffsetM_ = 0.0f;
+  int pcfRadius_ = 0;
+  rtw::RotationState rotation_;
+  rtw::RotationUpdate lastUpdate_;
+  std::array<float, 6> lastTop_{};
+};
+
+}  // namespace sl

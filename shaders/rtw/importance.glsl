@@ -1,0 +1,46 @@
+// Importance terms; mirrors sl::rtw::eyeDepthTerm / orientationTerm / combineImportance
+// (algo/rtw/Importance.h), multiplied because Lloyd's aliasing m is a product.
+uniform int u_eyeOn;
+uniform float u_eyeWeight;
+uniform int u_orientationOn;
+uniform float u_orientationWeight;
+uniform float u_minCosL;
+uniform int u_edgeOn;
+uniform float u_edgeWeight;
+uniform float u_nearM;
+
+float eyeDepthTerm(float eyeDepthM, float nearM) {
+  return (!(nearM > 0.0) || !(eyeDepthM > nearM)) ? 1.0 : nearM / eyeDepthM;
+}
+
+float orientationTerm(float nDotL, float nDotV, float minCosL) {
+  float v = nDotV > 0.0 ? min(nDotV, 1.0) : 0.0;
+  float l = abs(nDotL);
+  l = l > minCosL ? l : minCosL;
+  return v / l;
+}
+
+float combineImportance(float eyeDepthM, float nDotL, float nDotV, float edge) {
+  float e = 1.0, o = 1.0, k = 1.0;
+  if (u_eyeOn != 0) e = 1.0 + u_eyeWeight * (eyeDepthTerm(eyeDepthM, u_nearM) - 1.0);
+  if (u_orientationOn != 0)
+    o = 1.0 + u_orientationWeight * (orientationTerm(nDotL, nDotV, u_minCosL) - 1.0);
+  if (u_edgeOn != 0) k = 1.0 + u_edgeWeight * clamp(edge, 0.0, 1.0);
+  return max((e * o) * k, 0.0);
+}
+
+// Shadow-edge proximity from the previous frame's hard mask (screen space): 1 when a
+// covered pixel within 2 px has the other shadow state.
+uniform usampler2D u_prevHard;
+float shadowEdgeAt(ivec2 px) {
+  if (u_edgeOn == 0) return 0.0;
+  ivec2 size = textureSize(u_prevHard, 0);
+  uint c = texelFetch(u_prevHard, clamp(px, ivec2(0), size - 1), 0).r;
+  if (c == 255u) return 0.0;
+  for (int dy = -2; dy <= 2; dy += 2)
+    for (int dx = -2; dx <= 2; dx += 2) {
+      uint o = texelFetch(u_prevHard, clamp(px + ivec2(dx, dy), ivec2(0), size - 1), 0).r;
+      if (o != 255u && o != c) return 1.0;
+    }
+  return 0.0;
+}

@@ -1,0 +1,34 @@
+// Warp maps shared by the warped rendering and the warped lookup: n+1 edge offsets per
+// axis, x map first. Mirrors sl::rtw::warpCoordinate (algo/rtw/Warp.h): edges fetched and
+// interpolated in float, no hardware filtering.
+layout(std430, binding = 2) readonly buffer WarpMaps { float warpEdges[]; };
+uniform int u_warpN;   // 1D map size n (= im.resolution)
+uniform int u_warpOn;  // 0: identity (the unwarped map drawn for contrast)
+
+float warpAxis(int axis, float u) {
+  if (u_warpOn == 0 || !(u > 0.0 && u < 1.0)) return u;
+  int n = u_warpN;
+  int base = axis * (n + 1);
+  float x = u * float(n);
+  int e = min(int(floor(x)), n - 1);
+  float t = x - float(e);
+  float a = warpEdges[base + e], b = warpEdges[base + e + 1];
+  return u + (a + t * (b - a));
+}
+
+// du'/du: how many times denser than uniform the map samples at u.
+float warpSlope(int axis, float u) {
+  if (u_warpOn == 0) return 1.0;
+  int n = u_warpN;
+  int e = clamp(int(floor(u * float(n))), 0, n - 1);
+  int base = axis * (n + 1);
+  return 1.0 + float(n) * (warpEdges[base + e + 1] - warpEdges[base + e]);
+}
+
+vec2 warpUv(vec2 uv) { return vec2(warpAxis(0, uv.x), warpAxis(1, uv.y)); }
+
+// Light clip space (orthographic, w = 1) -> warped clip space.
+vec4 warpClip(vec4 clip) {
+  vec2 uv = warpUv(clip.xy / clip.w * 0.5 + 0.5);
+  return vec4((uv * 2.0 - 1.0) * clip.w, clip.z, clip.w);
+}

@@ -1,0 +1,248 @@
+// RTW and DA-RTW on the GPU against their CPU reference (algo/rtw), and the papers'
+// claims measured against the exact reference. Tolerances are stated per test.
+#include <cmath>
+#include <cstring>
+
+#include "GlTestEnv.h"
+#include "algo/Focus.h"
+#include "algo/rtw/Importance.h"
+#include "algo/rtw/Moments.h"
+#include "algo/rtw/Warp.h"
+
+namespace sl {
+namespace {
+
+std::unique_ptr<Renderer> rtwRenderer(const std::string& scene, const std::string& technique,
+                                      int smRes, int imRes) {
+  auto r = test::makeRenderer(scene, technique);
+  if (!r) return r;
+  EXPECT_FALSE(r->params().set("resolution", smRes));
+  EXPECT_FALSE(r->params().set("im.resolution", imRes));
+  return r;
+}
+
+rtw::ImportanceMap publishedIm(const Publication& pub) {
+  const FloatImage& img = pub.images.at("importance");
+  rtw::ImportanceMap im(img.width, img.height);
+  for (size_t i = 0; i < img.values.size(); ++i) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &img.values[i], 4);
+    std::memcpy(&im.values[i], &bits, 4);  // the GPU stores float bits in R32UI
+  }
+  return im;
+}
+
+
+// Collapse (exact), blur + floor (1e-6 relative: fma contraction), scan + warp (1e-5
+// absolute: GLSL division is not correctly rounded) on a real frame, non-power-of-two n.
+TEST(RtwParity, CollapseBlurFloorScanWarpMatchCpu) {
+  for (int n : {100, 256}) {
+    auto r = rtwRenderer("default", "rtw-backward", 512, n);
+    ASSERT_TRUE(r);
+    r->setPublishing(true);
+    ASSERT_FALSE(r->renderFrame(320, 180, 0));
+    const Publication& pub = r->publication();
+    rtw::ImportanceMap im = publishedIm(pub);
+    ASSERT_EQ(im.width, n);
+    const ParamSet& p = r->params();
+    std::vector<float> cpuCollapsed[2] = {rtw::collapseColumnsMax(im), rtw::collapseRowsMax(im)};
+    const char* names[2] = {"x", "y"};
+    for (int a = 0; a < 2; ++a) {
+      const auto& gpuC = pub.curves.at(std::string("importance.") + names[a]);
+      ASSERT_EQ(gpuC.size(), size_t(n));
+      for (int i = 0; i < n; ++i) EXPECT_EQ(gpuC[i], cpuCollapsed[a][i]) << "n=" << n << " i=" << i;
+      std::vector<float> blurred =
+          rtw::gaussianBlur1D(cpuCollapsed[a], p.getInt("blur.radius"), float(p.get("blur.sigma")));
+      rtw::applyImportanceFloor(blurred, float(p.get("importance.floor")));
+      const auto& gpuB = pub.curves.at(std::string("importance.") + names[a] + ".blurred");
+      for (int i = 0; i < n; ++i)
+        EXPECT_NEAR(gpuB[i], blurred[i], 1e-6f * std::max(1.0f, std::abs(blurred[i])));
+      std::vector<float> warp = rtw::warpFromImportance(gpuB);
+      const auto& gpuW = pub.curves.at(std::string("warp.") + names[a]);
+      ASSERT_EQ(gpuW.size(), size_t(n + 1));
+      EXPECT_EQ(gpuW.front(), 0.0f);
+      EXPECT_EQ(gpuW.back(), 0.0f);
+      for (int e = 0; e <= n; ++e) EXPECT_NEAR(gpuW[e], warp[e], 1e-5f) << "edge " << e;
+    }
+    test::expectNoGlErrors(*r);
+  }
+}
+
+// Backward scatter: the GPU IM equals the CPU scatter of the same G-buffer with the same
+// light fit, except texels whose samples sit on a texel border (float rounding of the
+// projection): at most 0.5 % of texels differ.
+TEST(RtwParity, BackwardImportanceMatchesCpuScatter) {
+  auto r = rtwRenderer("diagonal", "rtw-backward", 512, 100);
+  ASSERT_TRUE(r);
+  r->setPublishing(true);
+  const int w = 320, h = 180;
+  ASSERT_FALSE(r->renderFrame(w, h, 0));
+  rtw::ImportanceMap gpu = publishedIm(r->publication());
+  FrameReadback fb = r->readback();
+  LightFit fit;
+  ASSERT_FALSE(fitDirectionalLight(r->camera(), float(w) / float(h), r->scene()->bounds,
+                                   r->light().towardsLight(), FocusSettings{}, fit));
+  const ParamSet& p = r->params();
+  rtw::ImportanceSettings s;
+  s.eyeOn = p.getBool("importance.eye");
+  s.eyeWeight = float(p.get("importance.eye.weight"));
+  s.orientationOn = p.getBool("importance.orientation");
+  s.orientationWeight = float(p.get("importance.orientation.weight"));
+  s.minCosL = 0.1f;
+  s.edgeOn = false;
+  s.nearM = r->camera().nearM;
+  ASSERT_FALSE(p.getBool("importance.edge"));
+  rtw::ImportanceMap cpu(gpu.width, gpu.height);
+  const glm::vec3 L = r->light().towardsLight(), C = r->camera().position,
+                  F = r->camera().forward();
+  for (size_t i = 0; i < fb.positions.size(); ++i) {
+    if (fb.positions[i].w <= 0.0f) continue;
+    glm::vec3 P(fb.positions[i]), N(fb.normals[i]);
+    float v = rtw::combineImportance(s, glm::dot(P - C, F), glm::dot(N, L),
+                                     glm::dot(N, glm::normalize(C - P)), 0.0f);
+    glm::vec4 c = fit.viewProj * glm::vec4(P, 1.0f);
+    rtw::scatterMax(cpu, glm::vec2(c) / c.w * 0.5f + 0.5f, v);
+  }
+  size_t differ = 0, nonzero = 0;
+  for (size_t i = 0; i < cpu.values.size(); ++i) {
+    nonzero += cpu.values[i] > 0.0f;
+    if (std::abs(cpu.values[i] - gpu.values[i]) > 1e-5f * std::max(cpu.values[i], 1e-3f)) ++differ;
+  }
+  EXPECT_GT(nonzero, 500u);
+  EXPECT_LE(double(differ), 0.005 * double(cpu.values.size())) << differ << " texels differ";
+}
+
+// DA-RTW's moment chain (mip chain of sums, 13 levels for n=100... down to 1x1) equals the
+// CPU chain of the previous frame's IM within 1e-5 relative (summation order identical).
+TEST(RtwParity, MomentChainMatchesCpu) {
+  auto r = rtwRenderer("diagonal", "da-rtw", 512, 100);
+  ASSERT_TRUE(r);
+  r->setPublishing(true);
+  ASSERT_FALSE(r->renderFrame(320, 180, 0));
+  rtw::ImportanceMap im1 = publishedIm(r->publication());
+  ASSERT_FALSE(r->renderFrame(320, 180, 0));  // its moments come from frame 1's IM
+  std::vector<rtw::MomentLevel> chain = rtw::buildMomentChain(im1);
+  const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+  const Publication& pub = r->publication();
+  for (size_t l = 0; l < chain.size(); ++l)
+    for (int c = 0; c < 6; ++c) {
+      const FloatImage& img =
+          pub.images.at("moment." + std::string(ch[c]) + "." + std::to_string(l));
+      ASSERT_EQ(img.width, chain[l].width);
+      for (size_t i = 0; i < img.values.size(); ++i) {
+        float want = chain[l].texels[i][c];
+        ASSERT_NEAR(img.values[i], want, 1e-5f * std::max(1.0f, std::abs(want)))
+            << "level " << l << " channel " << ch[c] << " texel " << i;
+      }
+    }
+  rtw::MomentStats st = rtw::momentsFromTop(chain.back().texels[0]);
+  EXPECT_TRUE(st.valid);
+  EXPECT_NEAR(pub.numbers.at("moment.I"), chain.back().texels[0][0], 1e-3);
+}
+
+// Memory as the tool reports it. Seed 002 counts 512^2 SM + 512^2 IM + three 1D maps of 512
+// = 525,824; ShadowLab keeps two collapsed 1D maps and two warp maps of n+1 edges (blurred
+// values are written in place): 262,144 + 262,144 + 1,024 + 1,026 = 526,338 (README).
+TEST(RtwMemory, MatchesTheDocumentedCount) {
+  auto r = rtwRenderer("plane-box", "rtw-backward", 512, 512);
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->renderFrame(160, 90, 0));
+  EXPECT_EQ(r->stats().memory.texels(), 526338u);
+  EXPECT_EQ(r->stats().memory.bytes(), 4u * 526338u);
+}
+
+double errorOf(const std::string& scene, const std::string& technique, int res, int frames,
+               const std::vector<std::string>& sets = {}) {
+  auto r = test::makeRenderer(scene, technique);
+  EXPECT_TRUE(r);
+  EXPECT_FALSE(r->params().set("resolution", res));
+  for (const auto& kv : sets) EXPECT_FALSE(r->params().assign(kv)) << kv;
+  for (int f = 0; f < frames; ++f) EXPECT_FALSE(r->renderFrame(960, 540, 0));
+  test::expectNoGlErrors(*r);
+  return r->computeError().stats.errorPct;
+}
+
+// Seed 002: RTW at 512^2 looks like uniform 1024^2 or better (default and diagonal scenes,
+// first camera bookmark, defaults otherwise).
+TEST(RtwClaims, BackwardAt512NoWorseThanUniformAt1024) {
+  for (const char* scene : {"default", "diagonal"}) {
+    double uniform = errorOf(scene, "uniform", 1024, 1);
+    double rtwB = errorOf(scene, "rtw-backward", 512, 1);
+    RecordProperty(std::string(scene) + ".uniform1024", std::to_string(uniform));
+    RecordProperty(std::string(scene) + ".rtw512", std::to_string(rtwB));
+    EXPECT_LE(rtwB, uniform) << scene;
+  }
+}
+
+// Seed 000: on diagonal importance, DA-RTW beats RTW at the same resolution.
+TEST(RtwClaims, DaRtwBeatsRtwOnDiagonal) {
+  double rtwB = errorOf("diagonal", "rtw-backward", 512, 5);
+  double da = errorOf("diagonal", "da-rtw", 512, 5);
+  EXPECT_LT(da, rtwB);
+}
+
+// Without tessellation the warped map's large triangles stay straight while the warp bends
+// the lookup: the ground of `default` (two triangles) self-shadows massively.
+TEST(RtwTessellation, OffShowsTheLargeTriangleArtifact) {
+  double on = errorOf("default", "rtw-backward", 512, 1);
+  double off = errorOf("default", "rtw-backward", 512, 1, {"tessellation=off"});
+  EXPECT_GT(off, 10.0 * on);
+}
+
+// A camera that sees nothing: all-zero importance -> identity warp, no rotation, no NaN.
+TEST(RtwRobustness, AllZeroImportanceGivesIdentityAndNoRotation) {
+  auto r = rtwRenderer("plane-box", "da-rtw", 256, 64);
+  ASSERT_TRUE(r);
+  Camera sky = r->camera();
+  sky.target = sky.position + glm::vec3(0.0f, 1.0f, 0.1f);  // looking up at the sky
+  r->setCamera(sky);
+  r->setPublishing(true);
+  for (int f = 0; f < 3; ++f) ASSERT_FALSE(r->renderFrame(160, 90, 0));
+  const Publication& pub = r->publication();
+  for (float w : pub.curves.at("warp.x")) EXPECT_EQ(w, 0.0f);
+  for (float w : pub.curves.at("warp.y")) EXPECT_EQ(w, 0.0f);
+  EXPECT_EQ(pub.numbers.at("rotation.deg"), 0.0);
+  EXPECT_EQ(pub.numbers.at("pca.valid"), 0.0);
+  for (const auto& [k, v] : pub.numbers) EXPECT_TRUE(std::isfinite(v)) << k;
+  test::expectNoGlErrors(*r);
+}
+
+// 300 frames of a static diagonal scene: the rotation is set in the first frames and never
+// changes again, and the shadow mask is identical frame to frame. With threshold 1.0 the
+// number of rotation changes is reported (no assertion: PCA precision decides).
+TEST(DaRtwStability, StaticSceneHoldsRotationAndMask) {
+  for (double threshold : {0.9999, 1.0}) {
+    auto r = rtwRenderer("diagonal", "da-rtw", 512, 256);
+    ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().set("pca.threshold", threshold));
+    r->setPublishing(true);
+    int lastChange = -1, changes = 0, maskChangeFrames = 0;
+    double previousDeg = 0.0, maxStep = 0.0;
+    std::vector<std::uint8_t> previousMask;
+    for (int f = 0; f < 300; ++f) {
+      ASSERT_FALSE(r->renderFrame(160, 90, 0));
+      double deg = r->publication().numbers.at("rotation.deg");
+      if (deg != previousDeg) {
+        lastChange = f;
+        ++changes;
+        maxStep = std::max(maxStep, std::abs(deg - previousDeg));
+      }
+      previousDeg = deg;
+      std::vector<std::uint8_t> mask = r->readback().hardMask;
+      if (f > 0 && mask != previousMask) ++maskChangeFrames;
+      previousMask = std::move(mask);
+    }
+    std::printf(
+        "pca.threshold=%g: rotation changed in %d of 300 frames (last in frame %d, max "
+        "step %.6f deg), mask changed in %d frames\n",
+        threshold, changes, lastChange, maxStep, maskChangeFrames);
+    if (threshold < 1.0) {
+      EXPECT_LE(lastChange, 5);
+      EXPECT_GT(changes, 0);  // the diagonal scene does get rotated
+      EXPECT_LE(maskChangeFrames, lastChange);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sl

@@ -49,8 +49,9 @@ class Technique {
   /// Builds this frame's shadow map(s). Throws std::runtime_error on unrecoverable GL
   /// problems; parameter values are already validated.
   virtual void renderShadows(FrameContext& ctx) = 0;
-  /// GLSL file (relative to shaders/) defining `float shadowHard(vec3 P, vec3 N)` and
-  /// `float shadowFiltered(vec3 P, vec3 N)` (1 = lit), included by the resolve pass.
+  /// GLSL file (relative to shaders/) defining the lookup functions listed in
+  /// shaders/common/resolve.frag (shadowLookupCoord, shadowMapSize, shadowHardAt,
+  /// shadowFilteredAt), included by the resolve pass as "@lookup".
   virtual std::string lookupShader() const = 0;
   /// Binds what the lookup needs (textures from `firstUnit` on, uniforms) to `resolve`.
   virtual void bindLookup(const gl::Program& resolve, int firstUnit) const = 0;

@@ -2,9 +2,11 @@
 // (1 lit, 0 shadowed, 255 no surface) that the metrics compare with the Embree reference,
 // and the filtered visibility used for shading. Surfaces facing away from the light are
 // shadowed, exactly as in ShadowReference::isLit (C++).
-// A technique's lookup ("@lookup") defines: float shadowHard(vec3 P, vec3 N),
-// float shadowFiltered(vec3 P, vec3 N) (1 = lit), vec2 shadowMapTexel(vec3 P, vec3 N) (the
-// final, warped texel coordinate) and vec2 shadowMapSize() (texels).
+// A technique's lookup ("@lookup") defines:
+//   vec3 shadowLookupCoord(vec3 P, vec3 N)  final map uv (through any warp) and depth
+//   vec2 shadowMapSize()                    texels
+//   float shadowHardAt(vec3 uvz), float shadowFilteredAt(vec3 uvz)   1 = lit
+// so the (possibly warped) coordinate is computed once per pixel.
 uniform sampler2D u_gPosition;
 uniform sampler2D u_gNormal;
 uniform vec3 u_towardsLight;
@@ -22,10 +24,11 @@ void main() {
   vec3 N = texelFetch(u_gNormal, px, 0).xyz;
   // Derivatives first, in uniform control flow (techniques.md, "Measuring"; RMSM's LOD):
   // A = |dX x dY| texels per pixel, m = 1 / sqrt(A).
-  vec2 texel = P.w > 0.0 ? shadowMapTexel(P.xyz, N) : vec2(0.0);
+  vec3 uvz = P.w > 0.0 ? shadowLookupCoord(P.xyz, N) : vec3(0.0);
+  vec2 texel = uvz.xy * shadowMapSize();
   vec2 dX = dFdx(texel), dY = dFdy(texel);
   float area = abs(dX.x * dY.y - dX.y * dY.x);
-  o_texel = texel / shadowMapSize();
+  o_texel = uvz.xy;
   o_aliasing = P.w > 0.0 && area > 0.0 ? inversesqrt(area) : 0.0;
   if (P.w <= 0.0) {
     o_hard = 255u;
@@ -37,6 +40,6 @@ void main() {
     o_filtered = 0.0;
     return;
   }
-  o_hard = shadowHard(P.xyz, N) >= 0.5 ? 1u : 0u;
-  o_filtered = shadowFiltered(P.xyz, N);
+  o_hard = shadowHardAt(uvz) >= 0.5 ? 1u : 0u;
+  o_filtered = shadowFilteredAt(uvz);
 }

@@ -1,30 +1,42 @@
-// Tessellation level per edge from the edge's length in the WARPED shadow map:
-// ceil(length in texels / u_texelsPerSegment), clamped to 1..64.
+// Tessellation level per edge from how much the warp BENDS it: the largest distance, in
+// warped texels, between the warped edge and its straight chord at the quarter points.
+// A curve's chord error falls as 1/k^2 with k segments, so the level is
+// ceil(sqrt(deviation / u_toleranceTexels)), clamped to 1..64. Edges where the warp is
+// nearly linear (most of them) stay whole; long edges across a strong warp bend.
 layout(vertices = 3) out;
 in vec3 vc_worldPos[];
 in vec2 vc_uv[];
 out vec3 te_worldPos[];
 out vec2 te_uv[];
 uniform mat4 u_lightViewProj;
-uniform float u_texelsPerSegment;
+uniform float u_toleranceTexels;
 uniform vec2 u_smSize;
 #include "rtw/warp.glsl"
 
-vec2 warpedTexel(vec3 p) {
+vec2 lightUv(vec3 p) {
   vec4 c = u_lightViewProj * vec4(p, 1.0);
-  return warpUv(c.xy / c.w * 0.5 + 0.5) * u_smSize;
+  return c.xy / c.w * 0.5 + 0.5;
+}
+
+float edgeLevel(vec3 a, vec3 b) {
+  vec2 ua = lightUv(a), ub = lightUv(b);
+  vec2 ta = warpUv(ua) * u_smSize, tb = warpUv(ub) * u_smSize;
+  float dev = 0.0;
+  for (int q = 1; q <= 3; ++q) {
+    float f = float(q) * 0.25;
+    dev = max(dev, distance(warpUv(mix(ua, ub, f)) * u_smSize, mix(ta, tb, f)));
+  }
+  return clamp(ceil(sqrt(dev / u_toleranceTexels)), 1.0, 64.0);
 }
 
 void main() {
   te_worldPos[gl_InvocationID] = vc_worldPos[gl_InvocationID];
   te_uv[gl_InvocationID] = vc_uv[gl_InvocationID];
   if (gl_InvocationID == 0) {
-    vec2 t0 = warpedTexel(vc_worldPos[0]), t1 = warpedTexel(vc_worldPos[1]),
-         t2 = warpedTexel(vc_worldPos[2]);
     // Outer level i is the edge opposite vertex i.
-    float l0 = clamp(ceil(distance(t1, t2) / u_texelsPerSegment), 1.0, 64.0);
-    float l1 = clamp(ceil(distance(t2, t0) / u_texelsPerSegment), 1.0, 64.0);
-    float l2 = clamp(ceil(distance(t0, t1) / u_texelsPerSegment), 1.0, 64.0);
+    float l0 = edgeLevel(vc_worldPos[1], vc_worldPos[2]);
+    float l1 = edgeLevel(vc_worldPos[2], vc_worldPos[0]);
+    float l2 = edgeLevel(vc_worldPos[0], vc_worldPos[1]);
     gl_TessLevelOuter[0] = l0;
     gl_TessLevelOuter[1] = l1;
     gl_TessLevelOuter[2] = l2;

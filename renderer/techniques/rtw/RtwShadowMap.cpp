@@ -140,16 +140,17 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
        1,
        {},
        "Tessellate while rendering the warped map so long triangles bend with the warp."});
-  add({"tessellation.texels",
-       "Texels per segment",
+  add({"tessellation.tolerance",
+       "Bend tolerance",
        "Warp",
        ParamType::Float,
-       8,
-       1,
-       256,
-       1,
+       0.05,
+       0.01,
+       16,
+       0.05,
        {},
-       "Target length of a tessellated edge in the warped map (level = length / this, <= 64)."});
+       "Tessellation level from the warped edge: how far the warp bends it from a straight "
+       "line, in texels; level = ceil(sqrt(bend / tolerance)), at most 64."});
   const bool da = id == "da-rtw";
   if (da)
     add({"pca.threshold",
@@ -423,7 +424,7 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
   prog.set("u_warpN", imRes_);
   prog.set("u_warpOn", warp ? 1 : 0);
   if (tess) {
-    prog.set("u_texelsPerSegment", float(p.get("tessellation.texels")));
+    prog.set("u_toleranceTexels", float(p.get("tessellation.tolerance")));
     prog.set("u_smSize", glm::vec2(float(smRes_)));
   }
   ctx.sceneGpu.draw(prog, 0, tess);

@@ -212,6 +212,7 @@ RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
                         {},
                         {}}),
       moments_(lib, compute("rtw/moments.comp")),
+      momentsLevel1_(lib, compute("rtw/moments_level1.comp")),
       momentsReduce_(lib, compute("rtw/moments_reduce.comp")),
       depth_(lib, depthProgramDesc()) {}
 
@@ -261,14 +262,26 @@ void RtwShadowMap::ensureResources(int smRes, int imRes) {
 void RtwShadowMap::estimateRotation(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rotation estimate");
   const glm::ivec2 size(imRes_);
-  moments_.use();
+  const glm::vec2 invSize(1.0f / float(size.x), 1.0f / float(size.y));
   glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, momentBuffer_.id());
-  moments_.set("u_size", size);
-  moments_.set("u_invSize", glm::vec2(1.0f / float(size.x), 1.0f / float(size.y)));
-  glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
+  if (ctx.publication) {  // level 0 only for the panels; the estimate never needs it
+    moments_.use();
+    moments_.set("u_size", size);
+    moments_.set("u_invSize", invSize);
+    glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
+  }
+  // Level 1 straight from the IM, then one dispatch per level.
+  const bool chain = momentSizes_.size() > 1;
+  if (chain) {
+    momentsLevel1_.use();
+    momentsLevel1_.set("u_size", size);
+    momentsLevel1_.set("u_invSize", invSize);
+    momentsLevel1_.set("u_dstOffset", momentOffsets_[1]);
+    glDispatchCompute(GLuint((momentSizes_[1].x + 7) / 8), GLuint((momentSizes_[1].y + 7) / 8), 1);
+  }
   momentsReduce_.use();
-  for (size_t l = 0; l + 1 < momentSizes_.size(); ++l) {
+  for (size_t l = chain ? 1 : 0; l + 1 < momentSizes_.size(); ++l) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glm::ivec2 dst = (momentSizes_[l] + 1) / 2;
     momentsReduce_.set("u_srcSize", momentSizes_[l]);
@@ -533,7 +546,7 @@ MemoryStats RtwShadowMap::memory() const {
 std::optional<std::string> RtwShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
   std::string errors;
   for (gl::Program* prog : {&backward_, &forward_, &collapse_, &blur_, &scanWarp_, &warped_,
-                            &warpedTess_, &moments_, &momentsReduce_, &depth_})
+                            &warpedTess_, &moments_, &momentsLevel1_, &momentsReduce_, &depth_})
     if (auto e = prog->rebuild(lib)) errors += (errors.empty() ? "" : "\n") + *e;
   if (errors.empty()) return std::nullopt;
   return errors;

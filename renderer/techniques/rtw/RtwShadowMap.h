@@ -41,7 +41,7 @@ class RtwShadowMap : public Technique {
 
   Config config_;
   gl::Program backward_, forward_, collapse_, blur_, scanWarp_, warped_, warpedTess_, moments_,
-      momentsReduce_, depth_;
+      momentsLevel1_, momentsReduce_, depth_;
   gl::Texture shadowMap_, importance_, forwardDepth_, uniformMap_;
   gl::Framebuffer smFbo_, forwardFbo_, uniformFbo_;
   gl::Buffer collapsed_, blurred_, warp_, momentBuffer_;

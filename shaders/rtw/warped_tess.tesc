@@ -18,15 +18,31 @@ vec2 lightUv(vec3 p) {
   return c.xy / c.w * 0.5 + 0.5;
 }
 
+// The bend is measured on the part of the edge inside the map (where the warp acts): an
+// edge only partly inside needs its level scaled by 1 / (inside fraction) to give that part
+// enough segments, since tessellation spaces vertices evenly along the whole edge.
 float edgeLevel(vec3 a, vec3 b) {
   vec2 ua = lightUv(a), ub = lightUv(b);
-  vec2 ta = warpUv(ua) * u_smSize, tb = warpUv(ub) * u_smSize;
+  vec2 d = ub - ua;
+  float t0 = 0.0, t1 = 1.0;  // clip the parameter range to the unit square
+  for (int k = 0; k < 2; ++k) {
+    if (abs(d[k]) < 1e-12) {
+      if (ua[k] < 0.0 || ua[k] > 1.0) return 1.0;
+    } else {
+      float s0 = (0.0 - ua[k]) / d[k], s1 = (1.0 - ua[k]) / d[k];
+      t0 = max(t0, min(s0, s1));
+      t1 = min(t1, max(s0, s1));
+    }
+  }
+  if (t1 <= t0) return 1.0;
+  vec2 ca = ua + t0 * d, cb = ua + t1 * d;
+  vec2 ta = warpUv(ca) * u_smSize, tb = warpUv(cb) * u_smSize;
   float dev = 0.0;
   for (int q = 1; q <= 3; ++q) {
     float f = float(q) * 0.25;
-    dev = max(dev, distance(warpUv(mix(ua, ub, f)) * u_smSize, mix(ta, tb, f)));
+    dev = max(dev, distance(warpUv(mix(ca, cb, f)) * u_smSize, mix(ta, tb, f)));
   }
-  return clamp(ceil(sqrt(dev / u_toleranceTexels)), 1.0, 64.0);
+  return clamp(ceil(sqrt(dev / u_toleranceTexels) / (t1 - t0)), 1.0, 64.0);
 }
 
 void main() {

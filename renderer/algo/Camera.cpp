@@ -7,6 +7,21 @@
 
 namespace sl {
 
+namespace {
+// `point` turned around `pivot` by yaw (about +y) and pitch (clamped to +-89 degrees),
+// keeping its distance.
+glm::vec3 rotateAround(const glm::vec3& pivot, const glm::vec3& point, float yawDeg,
+                       float pitchDeg) {
+  glm::vec3 offset = point - pivot;
+  float r = glm::length(offset);
+  float yaw = std::atan2(offset.x, offset.z) + glm::radians(yawDeg);
+  float pitch = std::asin(std::clamp(offset.y / r, -1.0f, 1.0f)) + glm::radians(pitchDeg);
+  pitch = std::clamp(pitch, glm::radians(-89.0f), glm::radians(89.0f));
+  return pivot + r * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                               std::cos(pitch) * std::cos(yaw));
+}
+}  // namespace
+
 std::array<glm::vec3, 8> Aabb::corners() const {
   std::array<glm::vec3, 8> c;
   for (int i = 0; i < 8; ++i)
@@ -62,13 +77,7 @@ std::array<glm::vec3, 8> Camera::frustumCorners(float aspect, float n, float f) 
 }
 
 void Camera::orbit(float yawDeg, float pitchDeg) {
-  glm::vec3 offset = position - target;
-  float r = glm::length(offset);
-  float yaw = std::atan2(offset.x, offset.z) + glm::radians(yawDeg);
-  float pitch = std::asin(std::clamp(offset.y / r, -1.0f, 1.0f)) + glm::radians(pitchDeg);
-  pitch = std::clamp(pitch, glm::radians(-89.0f), glm::radians(89.0f));
-  position = target + r * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                    std::cos(pitch) * std::cos(yaw));
+  position = rotateAround(target, position, yawDeg, pitchDeg);
 }
 
 void Camera::dolly(float factor) {
@@ -95,13 +104,7 @@ void Camera::fly(float forwardM, float rightM, float upM) {
 }
 
 void Camera::look(float yawDeg, float pitchDeg) {
-  glm::vec3 offset = target - position;
-  float r = glm::length(offset);
-  float yaw = std::atan2(offset.x, offset.z) + glm::radians(yawDeg);
-  float pitch = std::asin(std::clamp(offset.y / r, -1.0f, 1.0f)) + glm::radians(pitchDeg);
-  pitch = std::clamp(pitch, glm::radians(-89.0f), glm::radians(89.0f));
-  target = position + r * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                    std::cos(pitch) * std::cos(yaw));
+  target = rotateAround(position, target, yawDeg, pitchDeg);
 }
 
 glm::vec3 DirectionalLight::towardsLight() const {

@@ -11,8 +11,7 @@ gl::ProgramDesc depthProgramDesc() {
           {}};
 }
 
-void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
-                 int height, const glm::mat4& lightViewProj, float slopeBias, float constantBias) {
+void beginDepthPass(GLuint framebuffer, int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
@@ -21,6 +20,11 @@ void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint fra
   glDisable(GL_CULL_FACE);
   const float one = 1.0f;
   glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &one);
+}
+
+void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
+                 int height, const glm::mat4& lightViewProj, float slopeBias, float constantBias) {
+  beginDepthPass(framebuffer, width, height);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(slopeBias, constantBias);
   program.use();

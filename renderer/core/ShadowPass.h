@@ -13,6 +13,10 @@ namespace sl {
 /// shaders/common/depth.vert + depth.frag: transforms by u_lightViewProj, alpha test.
 gl::ProgramDesc depthProgramDesc();
 
+/// Binds `framebuffer`, sets the viewport and the depth-only state (less, write, no
+/// culling) and clears depth to 1: the start of every depth pass.
+void beginDepthPass(GLuint framebuffer, int width, int height);
+
 /// Clears and renders the scene's depth into `framebuffer` (width x height) with
 /// glPolygonOffset(slopeBias, constantBias) — the slope-scaled depth bias.
 void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,

@@ -358,14 +358,7 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
   } else {
-    glBindFramebuffer(GL_FRAMEBUFFER, forwardFbo_.id());
-    glViewport(0, 0, imRes_, imRes_);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    const float one = 1.0f;
-    glClearNamedFramebufferfv(forwardFbo_.id(), GL_DEPTH, 0, &one);
+    beginDepthPass(forwardFbo_.id(), imRes_, imRes_);
     forward_.use();
     setTerms(forward_);
     forward_.set("u_cameraViewProj", ctx.cameraProj * ctx.cameraView);
@@ -421,14 +414,7 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
   const bool tess = p.getBool("tessellation");
   const gl::Program& prog = tess ? warpedTess_ : warped_;
   gl::Framebuffer& fbo = warp ? smFbo_ : uniformFbo_;
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-  glViewport(0, 0, smRes_, smRes_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);
-  const float one = 1.0f;
-  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+  beginDepthPass(fbo.id(), smRes_, smRes_);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(float(p.get("bias.slope")), float(p.get("bias.constant")));
   prog.use();

@@ -1,0 +1,141 @@
+// Statistics for benchmarks and stability runs; see BenchStats.h.
+#include "BenchStats.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace sl {
+namespace {
+
+template <typename T>
+double percentileOf(std::span<const T> values, double p) {
+  std::vector<double> v;
+  v.reserve(values.size());
+  for (T x : values)
+    if (std::isfinite(double(x))) v.push_back(double(x));
+  if (v.empty()) return 0.0;
+  if (!(p > 0.0)) p = 0.0;  // also NaN
+  p = std::min(p, 100.0);
+  const double h = double(v.size() - 1) * p / 100.0;
+  const std::size_t lo = std::size_t(std::floor(h));
+  const double frac = h - double(lo);
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(lo), v.end());
+  const double a = v[lo];
+  if (frac == 0.0 || lo + 1 >= v.size()) return a;
+  // The next rank is the smallest value above position lo.
+  const double b = *std::min_element(v.begin() + std::ptrdiff_t(lo) + 1, v.end());
+  return a + frac * (b - a);
+}
+
+bool covered(std::uint8_t m) {
+  return m != kStatsMaskUncovered;
+}
+bool lit(std::uint8_t m) {
+  return m != kStatsMaskShadowed;
+}
+
+void requireSameSize(std::size_t a, std::size_t b, const char* what) {
+  if (a != b) throw std::invalid_argument(std::string(what) + ": sizes differ");
+}
+
+}  // namespace
+
+double percentile(std::span<const double> values, double p) {
+  return percentileOf(values, p);
+}
+double percentile(std::span<const float> values, double p) {
+  return percentileOf(values, p);
+}
+double median(std::span<const double> values) {
+  return percentileOf(values, 50.0);
+}
+
+AliasingStats computeAliasingStats(std::span<const float> aliasing,
+                                   std::span<const std::uint8_t> hardMask) {
+  if (!hardMask.empty()) requireSameSize(aliasing.size(), hardMask.size(), "aliasing stats");
+  AliasingStats s;
+  std::vector<float> kept;
+  kept.reserve(aliasing.size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < aliasing.size(); ++i) {
+    if (!hardMask.empty() && !covered(hardMask[i])) continue;
+    const float m = aliasing[i];
+    if (!std::isfinite(m)) {
+      ++s.nonFinite;
+      continue;
+    }
+    if (m <= 0.0f) continue;
+    kept.push_back(m);
+    sum += m;
+    s.max = std::max(s.max, double(m));
+  }
+  s.pixels = kept.size();
+  if (kept.empty()) return s;
+  s.mean = sum / double(kept.size());
+  s.p95 = percentile(std::span<const float>(kept), 95.0);
+  return s;
+}
+
+MaskChange compareConsecutiveMasks(std::span<const std::uint8_t> previous,
+                                   std::span<const std::uint8_t> current) {
+  requireSameSize(previous.size(), current.size(), "mask change");
+  MaskChange c;
+  for (std::size_t i = 0; i < current.size(); ++i) {
+    if (!covered(previous[i]) || !covered(current[i])) continue;
+    ++c.compared;
+    if (lit(previous[i]) != lit(current[i])) ++c.changed;
+  }
+  c.pct = c.compared ? 100.0 * double(c.changed) / double(c.compared) : 0.0;
+  return c;
+}
+
+FlickerStats computeFlicker(std::span<const std::uint8_t> previousMask,
+                            std::span<const std::uint8_t> currentMask,
+                            std::span<const std::uint8_t> previousReference,
+                            std::span<const std::uint8_t> currentReference) {
+  requireSameSize(previousMask.size(), currentMask.size(), "flicker");
+  requireSameSize(previousMask.size(), previousReference.size(), "flicker");
+  requireSameSize(previousMask.size(), currentReference.size(), "flicker");
+  FlickerStats f;
+  for (std::size_t i = 0; i < currentMask.size(); ++i) {
+    if (!covered(previousMask[i]) || !covered(currentMask[i]) || !covered(previousReference[i]) ||
+        !covered(currentReference[i]))
+      continue;
+    ++f.compared;
+    const bool techniqueFlips = lit(previousMask[i]) != lit(currentMask[i]);
+    const bool referenceFlips = lit(previousReference[i]) != lit(currentReference[i]);
+    if (techniqueFlips && !referenceFlips) ++f.flicker;
+    if (techniqueFlips && referenceFlips) ++f.trueFlips;
+  }
+  f.pct = f.compared ? 100.0 * double(f.flicker) / double(f.compared) : 0.0;
+  return f;
+}
+
+std::vector<std::size_t> paretoFront(std::span<const CostPoint> points) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (std::isfinite(points[i].costMs) && std::isfinite(points[i].errorPct)) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (points[a].costMs != points[b].costMs) return points[a].costMs < points[b].costMs;
+    if (points[a].errorPct != points[b].errorPct) return points[a].errorPct < points[b].errorPct;
+    return a < b;
+  });
+  // Sweep by cost: a point is on the front when its error is below every error seen so
+  // far, or equal to the last front point's (exact duplicate).
+  std::vector<std::size_t> front;
+  for (std::size_t i : order) {
+    if (front.empty()) {
+      front.push_back(i);
+      continue;
+    }
+    const CostPoint& last = points[front.back()];
+    const CostPoint& p = points[i];
+    if (p.errorPct < last.errorPct || (p.errorPct == last.errorPct && p.costMs == last.costMs))
+      front.push_back(i);
+  }
+  return front;
+}
+
+}  // namespace sl

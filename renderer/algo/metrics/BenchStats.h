@@ -1,0 +1,78 @@
+// Statistics for benchmarks and stability runs (techniques.md, "Measuring"): medians and
+// percentiles over frames, perspective-aliasing summaries over pixels, mask changes and
+// false flicker between consecutive frames, and the Pareto front of speed against error.
+// Plain C++ on spans: no GL, no Qt; the CLI, the GUI and the tests share it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace sl {
+
+/// Mask encoding of the renderer's hard mask and the Embree reference (the same values as
+/// metrics/ErrorMetrics.h): 1 lit, 0 shadowed, 255 not covered; any other value is lit.
+inline constexpr std::uint8_t kStatsMaskShadowed = 0;
+inline constexpr std::uint8_t kStatsMaskUncovered = 255;
+
+/// Percentile p in [0, 100] with linear interpolation between closest ranks (the
+/// "type 7" rule of R and numpy's default): sorted v, rank h = (n - 1) * p / 100,
+/// v[floor h] + (h - floor h) * (v[floor h + 1] - v[floor h]). Non-finite values are
+/// ignored; no finite value: 0. p outside [0, 100] is clamped.
+double percentile(std::span<const double> values, double p);
+double percentile(std::span<const float> values, double p);
+/// The 50th percentile (mean of the two middle values for an even count).
+double median(std::span<const double> values);
+
+/// Perspective aliasing m over the covered pixels of one frame (m: shadow-map texel
+/// footprint over pixel footprint; m > 1 undersampled).
+struct AliasingStats {
+  std::size_t pixels = 0;     ///< covered pixels with a finite m > 0 (the ones summarised)
+  std::size_t nonFinite = 0;  ///< covered pixels with m NaN or infinite (left out)
+  double mean = 0.0;
+  double p95 = 0.0;  ///< 95th percentile (percentile() rule)
+  double max = 0.0;
+};
+/// `aliasing[i]` is m of pixel i; `hardMask[i] == kStatsMaskUncovered` marks pixels with no
+/// surface (left out), as do covered pixels with m <= 0 (no shadow-map coordinate).
+/// An empty `hardMask` means every pixel with m > 0 is covered. Throws
+/// std::invalid_argument when a non-empty mask's size differs from aliasing's.
+AliasingStats computeAliasingStats(std::span<const float> aliasing,
+                                   std::span<const std::uint8_t> hardMask);
+
+/// Change of a technique's hard mask between two consecutive frames.
+struct MaskChange {
+  std::size_t compared = 0;  ///< pixels covered in both frames
+  std::size_t changed = 0;   ///< of which lit in one frame and shadowed in the other
+  double pct = 0.0;          ///< 100 * changed / compared (0 when nothing compared)
+};
+/// Throws std::invalid_argument when the sizes differ.
+MaskChange compareConsecutiveMasks(std::span<const std::uint8_t> previous,
+                                   std::span<const std::uint8_t> current);
+
+/// False flicker between consecutive frames: pixels whose technique state flips while
+/// the reference's does not.
+struct FlickerStats {
+  std::size_t compared = 0;   ///< pixels covered in all four masks
+  std::size_t flicker = 0;    ///< technique flips, reference does not
+  std::size_t trueFlips = 0;  ///< technique and reference both flip (real motion)
+  double pct = 0.0;           ///< 100 * flicker / compared (0 when nothing compared)
+};
+/// Throws std::invalid_argument when the four sizes differ.
+FlickerStats computeFlicker(std::span<const std::uint8_t> previousMask,
+                            std::span<const std::uint8_t> currentMask,
+                            std::span<const std::uint8_t> previousReference,
+                            std::span<const std::uint8_t> currentReference);
+
+/// A configuration's place on the speed-accuracy plane (both: lower is better).
+struct CostPoint {
+  double costMs = 0.0;    ///< x: time per frame
+  double errorPct = 0.0;  ///< y: error
+};
+/// Indices of the Pareto-optimal points (lower-left front): no other point is at most as
+/// slow and at most as wrong and strictly better in one of the two. Sorted by cost, then
+/// error, then index; exact duplicates are all on the front; non-finite points never are.
+std::vector<std::size_t> paretoFront(std::span<const CostPoint> points);
+
+}  // namespace sl

@@ -27,4 +27,8 @@ expect "--size" render --scene plane-box --technique uniform --size 0x10 $o
 expect "--out" render --scene plane-box --technique uniform
 expect "unknown command" frobnicate
 expect "no camera" render --scene plane-box --technique uniform --camera nope $o
+# A driver without OpenGL 4.5 (Mesa can pretend): the message names the missing version.
+export MESA_GL_VERSION_OVERRIDE=3.3
+expect "OpenGL 4.5" render --scene plane-box --technique uniform $o
+unset MESA_GL_VERSION_OVERRIDE
 exit $fail

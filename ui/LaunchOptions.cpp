@@ -30,7 +30,18 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   const QCommandLineOption grabAfter(
       QStringLiteral("grab-after"), QStringLiteral("Frames to render before grabbing (default 5)."),
       QStringLiteral("N"), QStringLiteral("5"));
-  parser.addOptions({scene, technique, set, grab, grabAfter});
+  const QCommandLineOption lesson(
+      QStringLiteral("lesson"),
+      QStringLiteral("Start a lesson: its number, its file name in scenes/lessons (e.g. "
+                     "04-diagonal-pca) or a preset file. Its scene, technique and parameters "
+                     "come first; --scene, --technique and --set then override them."),
+      QStringLiteral("N|NAME|FILE"));
+  QCommandLineOption selfTest(
+      QStringLiteral("self-test"),
+      QStringLiteral("Run a GUI self-test (params, bad-gltf=FILE, teaching[=DIR])."),
+      QStringLiteral("NAME[=ARG]"));
+  selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
+  parser.addOptions({scene, technique, set, lesson, grab, grabAfter, selfTest});
 
   ParsedLaunch out;
   if (!parser.parse(arguments)) {
@@ -60,6 +71,18 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   o.technique = parser.value(technique);
   o.assignments = parser.values(set);
   o.grabDir = parser.value(grab);
+  o.lesson = parser.value(lesson);
+  o.selfTest = parser.value(selfTest).section(QLatin1Char('='), 0, 0);
+  o.selfTestArgument = parser.value(selfTest).section(QLatin1Char('='), 1);
+  if (parser.isSet(selfTest) && o.selfTest != QLatin1String("params") &&
+      o.selfTest != QLatin1String("bad-gltf") && o.selfTest != QLatin1String("teaching")) {
+    out.exitCode = 2;
+    out.messageIsError = true;
+    out.message =
+        QStringLiteral("unknown --self-test '%1' (known: params, bad-gltf=FILE, teaching[=DIR])")
+            .arg(parser.value(selfTest));
+    return out;
+  }
   bool ok = false;
   o.grabAfterFrames = parser.value(grabAfter).toInt(&ok);
   if (!ok || o.grabAfterFrames < 1 || o.grabAfterFrames > 100000) {

@@ -28,11 +28,20 @@
 #include <QToolButton>
 #include <QUrl>
 
+#include <QJsonArray>
+#include <QJsonDocument>
+
+#include "CovariancePanel.h"
+#include "ImportancePanel.h"
 #include "LaunchOptions.h"
+#include "LessonPanel.h"
+#include "MomentPanel.h"
 #include "ParamPanel.h"
+#include "ShadowMapPanel.h"
 #include "ShortcutsDialog.h"
 #include "TimingPanel.h"
 #include "ViewportWidget.h"
+#include "WarpPanel.h"
 #include "scene/GltfLoader.h"
 
 namespace sl::ui {
@@ -42,10 +51,12 @@ const QString kOpenItem = QStringLiteral("\x01open");  ///< data of the "Open…
 constexpr int kStatusMessageMs = 10000;
 constexpr int kGrabTickMs = 30;
 constexpr qint64 kGrabTimeoutMs = 120000;
-constexpr int kSettingsVersion = 1;
+constexpr int kSettingsVersion = 2;  ///< 2: the debug panels (older layouts are not restored)
 constexpr QSize kDefaultWindowSize(1600, 1000);
 constexpr int kDefaultParamDockWidth = 390;
-constexpr int kDefaultTimingDockHeight = 215;
+constexpr int kDefaultLeftDockWidth = 440;
+constexpr int kDefaultBottomDockHeight = 300;
+const QString kOverlayKey = QStringLiteral("view.overlay");
 
 bool isGltfFile(const QString& path) {
   const QString suffix = QFileInfo(path).suffix().toLower();
@@ -72,13 +83,15 @@ QString shortGlName(const QString& description) {
 }  // namespace
 
 MainWindow::MainWindow(bool interactive, QWidget* parent)
-    : QMainWindow(parent), interactive_(interactive) {
+    : QMainWindow(parent), interactive_(interactive), dialogs_(interactive) {
   setObjectName(QStringLiteral("mainWindow"));
   setWindowTitle(QStringLiteral("ShadowLab"));
   setAcceptDrops(true);
   setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
   setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
   setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+  setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+  setCorner(Qt::TopLeftCorner, Qt::LeftDockWidgetArea);
 
   viewport_ = new ViewportWidget(this);
   viewport_->setObjectName(QStringLiteral("viewport"));
@@ -97,6 +110,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
 
   createActions();
   createToolBar();
+  addToolBarBreak();
+  createTeachingToolBar();
   createDocks();
   createStatusBar();
   applyDefaultLayout();
@@ -119,6 +134,7 @@ void MainWindow::createActions() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   QAction* open = file->addAction(tr("&Open glTF…"), this, &MainWindow::openSceneDialog);
   open->setShortcut(QKeySequence::Open);
+  openAction_ = open;
   QAction* reload = file->addAction(tr("&Reload shaders"), this, [this] {
     if (auto error = viewport_->reloadShaders())
       report(tr("shader reload failed (the last good shaders stay in use): %1")
@@ -130,6 +146,10 @@ void MainWindow::createActions() {
   QAction* screenshot =
       file->addAction(tr("Save &viewport image…"), this, &MainWindow::saveScreenshot);
   screenshot->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+  saveImageMenu_ = file->addMenu(tr("Save &panel image"));
+  QAction* saveAll =
+      file->addAction(tr("Save window and &all panels…"), this, &MainWindow::saveAllImages);
+  saveAll->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S));
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
@@ -154,10 +174,46 @@ void MainWindow::createActions() {
   });
   resetTemporal->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
   view->addSeparator();
+  QAction* cycleOverlay = view->addAction(tr("Next &overlay (none, error, aliasing, warp grid)"),
+                                          this, &MainWindow::cycleOverlay);
+  cycleOverlay->setShortcut(Qt::Key_O);
+  QAction* split =
+      view->addAction(tr("&Split view (compare two techniques)"), this, &MainWindow::toggleSplit);
+  split->setShortcut(Qt::Key_F7);
+  view->addSeparator();
   QMenu* panels = view->addMenu(tr("&Panels"));
   panels->setObjectName(QStringLiteral("panelsMenu"));
   QAction* defaultLayout =
       view->addAction(tr("&Default layout"), this, [this] { applyDefaultLayout(); });
+
+  QMenu* frame = menuBar()->addMenu(tr("F&rame"));
+  pauseAction_ = frame->addAction(tr("&Pause"));
+  pauseAction_->setCheckable(true);
+  pauseAction_->setShortcut(Qt::Key_Space);
+  pauseAction_->setShortcutContext(Qt::WindowShortcut);
+  pauseAction_->setToolTip(tr("Freeze the frame: the panels keep showing its passes (Space)"));
+  connect(pauseAction_, &QAction::toggled, this, &MainWindow::setPaused);
+  QAction* step = frame->addAction(tr("&Step one frame"), this, &MainWindow::stepFrame);
+  step->setShortcut(Qt::Key_Period);
+  step->setToolTip(tr("Render exactly one frame and pause (.)"));
+  frame->addSeparator();
+  QAction* passNext =
+      frame->addAction(tr("Step through the &passes: next"), this, [this] { stepPass(+1); });
+  passNext->setShortcut(Qt::Key_BracketRight);
+  passNext->setToolTip(
+      tr("IM → collapse → blur → scan → warped map → lookup, one pass at a "
+         "time, highlighting the panel that shows its output (])"));
+  QAction* passPrev =
+      frame->addAction(tr("Step through the passes: p&revious"), this, [this] { stepPass(-1); });
+  passPrev->setShortcut(Qt::Key_BracketLeft);
+  passStopAction_ =
+      frame->addAction(tr("Stop stepping through the passes"), this, &MainWindow::stopPassStepping);
+  passStopAction_->setShortcut(Qt::Key_Escape);
+  passStopAction_->setShortcutContext(Qt::WindowShortcut);
+  passStopAction_->setEnabled(false);
+
+  QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
+  createLessonsMenu(lessons);
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   QAction* shortcuts = help->addAction(tr("&Keyboard and mouse"), this, &MainWindow::showShortcuts);
@@ -169,11 +225,17 @@ void MainWindow::createActions() {
                            .arg(QCoreApplication::applicationVersion()));
   });
 
-  commandActions_ = {open,          reload,   screenshot,        quit,
-                     resetView,     error,    continuousAction_, resetTemporal,
-                     defaultLayout, shortcuts};
+  commandActions_ = {open,      reload,        screenshot,        saveAll,       quit,
+                     resetView, error,         continuousAction_, resetTemporal, cycleOverlay,
+                     split,     defaultLayout, shortcuts};
   // Shortcuts work wherever the focus is (also while the viewport has it).
   for (QAction* a : commandActions_) a->setShortcutContext(Qt::ApplicationShortcut);
+  // Frame stepping keys: plain keys, so only while the main window has the focus (typing
+  // in a field still works: editors take printable keys before shortcuts).
+  for (QAction* a : {step, passNext, passPrev}) a->setShortcutContext(Qt::WindowShortcut);
+  commandActions_ << pauseAction_ << step << passNext << passPrev << passStopAction_;
+  for (QAction* a : lessons->actions())
+    if (!a->shortcut().isEmpty()) commandActions_ << a;
 }
 
 void MainWindow::createToolBar() {
@@ -268,7 +330,11 @@ void MainWindow::createDocks() {
   QMenu* panels = menuBar()->findChild<QMenu*>(QStringLiteral("panelsMenu"));
 
   paramPanel_ = new ParamPanel;
-  connect(paramPanel_, &ParamPanel::paramChanged, this, [this] { viewport_->update(); });
+  connect(paramPanel_, &ParamPanel::paramChanged, this, [this](const QString& key) {
+    if (key.isEmpty() || key == kOverlayKey) syncOverlayCombo();
+    if (viewport_->paused()) viewport_->stepFrame();  // show the change even when paused
+    viewport_->update();
+  });
   connect(paramPanel_, &ParamPanel::editRefused, this,
           [this](const QString& message) { report(message); });
   paramDock_ = new QDockWidget(tr("Parameters"), this);
@@ -290,6 +356,7 @@ void MainWindow::createDocks() {
   paramDock_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_1));
   timingDock_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
   commandActions_ << paramDock_->toggleViewAction() << timingDock_->toggleViewAction();
+  createPanelDocks();
 }
 
 void MainWindow::createStatusBar() {
@@ -323,15 +390,33 @@ void MainWindow::applyDefaultLayout() {
   const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
   QSize size = kDefaultWindowSize;
   if (screen) size = size.boundedTo(screen->availableGeometry().size());
-  resize(size);
-  for (QDockWidget* dock : {paramDock_, timingDock_}) {
+  // Right: Parameters | Lesson. Left: Importance map over Covariance. Bottom: Warp
+  // functions | Shadow map | Moment mip chain | Timing.
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
     dock->setFloating(false);
     dock->show();
   }
   addDockWidget(Qt::RightDockWidgetArea, paramDock_);
-  addDockWidget(Qt::BottomDockWidgetArea, timingDock_);
-  resizeDocks({paramDock_}, {kDefaultParamDockWidth}, Qt::Horizontal);
-  resizeDocks({timingDock_}, {kDefaultTimingDockHeight}, Qt::Vertical);
+  addDockWidget(Qt::RightDockWidgetArea, lessonDock_);
+  tabifyDockWidget(paramDock_, lessonDock_);
+  addDockWidget(Qt::LeftDockWidgetArea, importanceDock_);
+  addDockWidget(Qt::LeftDockWidgetArea, covarianceDock_);
+  splitDockWidget(importanceDock_, covarianceDock_, Qt::Vertical);
+  addDockWidget(Qt::BottomDockWidgetArea, warpDock_);
+  for (QDockWidget* dock : {shadowMapDock_, momentDock_, timingDock_}) {
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    tabifyDockWidget(warpDock_, dock);
+  }
+  paramDock_->raise();
+  warpDock_->raise();
+  // Last: while the docks moved, a stale minimum may have widened the window; settle the
+  // layout first, or the pending activation would undo the resize.
+  layout()->invalidate();
+  layout()->activate();
+  resize(size);
+  resizeDocks({paramDock_, importanceDock_}, {kDefaultParamDockWidth, kDefaultLeftDockWidth},
+              Qt::Horizontal);
+  resizeDocks({warpDock_}, {kDefaultBottomDockHeight}, Qt::Vertical);
 }
 
 void MainWindow::restoreSettings() {
@@ -395,6 +480,7 @@ bool MainWindow::loadScene(const QString& nameOrPath) {
   sceneSpec_ = nameOrPath;
   viewport_->setScene(result.scene);
   timingPanel_->resetHistory();
+  for (auto& [dock, panel] : publicationDocks_) panel->resetHistory();
   const sl::Scene& scene = *viewport_->scene();
   sceneLabel_->setText(
       tr("%1 · %2 triangles")
@@ -437,12 +523,17 @@ void MainWindow::onSceneComboActivated(int index) {
 }
 
 void MainWindow::openSceneDialog() {
-  QSettings settings;
-  const QString dir = settings.value(QStringLiteral("scene/openDir"), QDir::homePath()).toString();
+  // Self-tests drive Qt's own dialog (and never touch the user's settings).
+  const bool test = !selfTest_.isEmpty();
+  const QString dir =
+      interactive_ ? QSettings().value(QStringLiteral("scene/openDir"), QDir::homePath()).toString()
+                   : QDir::currentPath();
   const QString path = QFileDialog::getOpenFileName(
-      this, tr("Open glTF scene"), dir, tr("glTF scenes (*.gltf *.glb);;All files (*)"));
+      this, tr("Open glTF scene"), dir, tr("glTF scenes (*.gltf *.glb);;All files (*)"), nullptr,
+      test ? QFileDialog::DontUseNativeDialog : QFileDialog::Options());
   if (path.isEmpty()) return;
-  settings.setValue(QStringLiteral("scene/openDir"), QFileInfo(path).absolutePath());
+  if (interactive_)
+    QSettings().setValue(QStringLiteral("scene/openDir"), QFileInfo(path).absolutePath());
   loadScene(path);
 }
 
@@ -479,7 +570,9 @@ void MainWindow::setTechnique(const QString& id) {
     report(QString::fromStdString(*error));
   } else {
     timingPanel_->resetHistory();
+    for (auto& [dock, panel] : publicationDocks_) panel->resetHistory();
     if (rendererBound_) rebuildParamPanel();
+    if (passIndex_ >= 0) stopPassStepping();
   }
   syncTechniqueCombo();
   updateTitle();
@@ -525,6 +618,10 @@ void MainWindow::onRendererReady() {
   grabFramesRendered_ = 0;
   rebuildParamPanel();
   syncTechniqueCombo();
+  syncOverlayCombo();
+  updatePublishing();
+  if (!lastSplitTechnique_.isEmpty() && splitCombo_->currentIndex() > 0)
+    setSplitTechnique(lastSplitTechnique_);
   updateTitle();
   const QString gl = QString::fromStdString(renderer->glDescription());
   glLabel_->setText(shortGlName(gl));
@@ -536,6 +633,7 @@ void MainWindow::onRendererReady() {
 void MainWindow::onRendererAboutToBeDestroyed() {
   rendererBound_ = false;
   paramPanel_->clear();
+  if (overlayCombo_) overlayCombo_->setEnabled(false);
 }
 
 void MainWindow::onFrameRendered() {
@@ -549,6 +647,14 @@ void MainWindow::onFrameRendered() {
                                     : QString::fromStdString(stats.timingMethod)));
   timingPanel_->showStats(stats);
   if (rendererBound_) ++grabFramesRendered_;
+  if (publicationIsCurrent()) {
+    feedPanels(false);
+    if (passWaitingForFrame_) {
+      passWaitingForFrame_ = false;
+      passIndex_ = 0;
+      showPass();
+    }
+  }
 }
 
 void MainWindow::onRenderProblem(const QString& message) {
@@ -616,7 +722,7 @@ void MainWindow::saveScreenshot() {
       this, tr("Save viewport image"), QDir::home().filePath(QStringLiteral("shadowlab.png")),
       tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
-  if (viewport_->grabFramebuffer().save(path))
+  if (viewport_->grabView().save(path))
     statusBar()->showMessage(tr("Saved %1").arg(path), kStatusMessageMs);
   else
     report(tr("cannot write %1").arg(path), tr("Save viewport image"));
@@ -631,7 +737,7 @@ void MainWindow::report(const QString& message, const QString& dialogTitle) {
   printErr(message);
   statusBar()->showMessage(message, kStatusMessageMs);
   lastProblemClock_.start();
-  if (interactive_ && !dialogTitle.isEmpty()) QMessageBox::warning(this, dialogTitle, message);
+  if (dialogs_ && !dialogTitle.isEmpty()) QMessageBox::warning(this, dialogTitle, message);
 }
 
 // --- --grab ------------------------------------------------------------------------------
@@ -664,27 +770,26 @@ void MainWindow::grabTick() {
 }
 
 void MainWindow::finishGrab() {
-  // The status line shows the error of the grabbed view.
+  // The status line shows the error of the grabbed view. Then freeze the frame, so that
+  // the window, the viewport, every panel and published.json show the same frame.
   viewport_->computeErrorNow();
+  waitForFrames(1);  // the error overlay, when on, needs a frame drawn with the reference
+  viewport_->setPaused(true, false);
   QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+  feedPanels(true);
 
   QStringList failures;
   if (!QDir().mkpath(grabDir_)) failures << tr("cannot create directory %1").arg(grabDir_);
-  const QDir dir(grabDir_);
-  auto save = [&](const QImage& image, const QString& name) {
-    const QString path = dir.absoluteFilePath(name);
-    if (image.isNull() || !image.save(path)) {
-      failures << tr("cannot write %1").arg(path);
-      return;
-    }
-    std::printf("%s\n", path.toLocal8Bit().constData());
-  };
+  if (failures.isEmpty()) failures << writeImages(grabDir_, true);
   if (failures.isEmpty()) {
-    save(grab().toImage(), QStringLiteral("window.png"));
-    save(viewport_->grabFramebuffer(), QStringLiteral("viewport.png"));
-    for (QDockWidget* dock : findChildren<QDockWidget*>())
-      if (dock->isVisible())
-        save(dock->grab().toImage(), QStringLiteral("panel-%1.png").arg(dock->objectName()));
+    const QString path = QDir(grabDir_).absoluteFilePath(QStringLiteral("published.json"));
+    QFile file(path);
+    if (file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+        file.write(QJsonDocument(publicationJson()).toJson()) > 0) {
+      std::printf("%s\n", path.toLocal8Bit().constData());
+    } else {
+      failures << tr("cannot write %1").arg(path);
+    }
   }
   std::fflush(stdout);
   for (const QString& problem : grabProblems_) failures << tr("while rendering: %1").arg(problem);

@@ -1,12 +1,16 @@
-// The main window: the viewport in the middle, the Parameters dock on the right, the
-// Timing dock at the bottom, a toolbar for scene / technique / sun / camera, and the
-// status line (frame time, error, GL renderer). Also drives `--grab` runs.
+// The main window: the viewport in the middle, dockable panels around it (Parameters,
+// Lesson, Importance map, Covariance, Warp functions, Moment mip chain, Shadow map, Timing),
+// toolbars for scene / technique / sun / camera and for overlays, split view, pause, frame
+// and pass stepping, the Lessons menu, and the status line. Also drives `--grab` runs and
+// the `--self-test` checks.
 #pragma once
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <QElapsedTimer>
+#include <QJsonObject>
 #include <QMainWindow>
 #include <QStringList>
 #include <QTimer>
@@ -18,14 +22,23 @@ class QSlider;
 
 namespace sl {
 struct Scene;
-}
+struct Publication;
+}  // namespace sl
 
 namespace sl::ui {
 
+class CovariancePanel;
+class ImportancePanel;
+class LessonPanel;
+class MomentPanel;
 class ParamPanel;
+class PublicationPanel;
+class ShadowMapPanel;
 class ShortcutsDialog;
 class TimingPanel;
 class ViewportWidget;
+class WarpPanel;
+struct Lesson;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -55,6 +68,14 @@ class MainWindow : public QMainWindow {
 
   /// Window size and dock layout for a first start (or View > Default layout).
   void applyDefaultLayout();
+
+  /// Starts a lesson: its 1-based number, its file's base name ("04-diagonal-pca") or a
+  /// path to a preset. False (reported) when there is no such lesson or it cannot load.
+  bool startLesson(const QString& lesson);
+
+  /// Runs GUI self-test `name` (params, bad-gltf=FILE, teaching=DIR) once
+  /// the renderer has drawn a frame: prints "ok"/"FAIL" lines, exits 0 (pass) or 1.
+  void startSelfTest(const QString& name, const QString& argument);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -90,8 +111,54 @@ class MainWindow : public QMainWindow {
   void showShortcuts();
   void saveScreenshot();
 
+  void createTeachingToolBar();
+  void createPanelDocks();
+  void createLessonsMenu(QMenu* menu);
+  QDockWidget* addPanelDock(QWidget* panel, const QString& title, const QString& name,
+                            Qt::DockWidgetArea area);
+
+  // Lessons.
+  void applyLesson(int index);
+  void updateBanner();
+
+  // Panels that observe the Publication.
+  void updatePublishing();
+  /// Gives the current publication to the visible panels (`all`: to every panel).
+  void feedPanels(bool all);
+  bool publicationIsCurrent() const;
+
+  // Pause, frame and pass stepping.
+  void setPaused(bool paused);
+  void stepFrame();
+  void stepPass(int delta);
+  void stopPassStepping();
+  void showPass();
+
+  // Overlays and split view (bound to the renderer's `view.overlay` declaration).
+  void syncOverlayCombo();
+  void setOverlay(int value);
+  void cycleOverlay();
+  void setSplitTechnique(const QString& id);
+  void toggleSplit();
+
+  // Screenshots.
+  void savePanelImage(QDockWidget* dock);
+  void saveAllImages();
+  /// window.png, viewport.png and panel-<name>.png into `dir`; returns failures.
+  QStringList writeImages(const QString& dir, bool printPaths);
+  QJsonObject publicationJson() const;
+
   void grabTick();
   void finishGrab();
+
+  // Self-tests (MainWindowSelfTest.cpp).
+  bool waitForFrames(int frames, int timeoutMs = 30000);
+  bool selfTestParams();
+  bool selfTestBadGltf(const QString& path);
+  /// Pass stepping, overlays, split view and lessons; PNGs of each step into `dir`.
+  bool selfTestTeaching(const QString& dir);
+  void selfTestCheck(bool ok, const QString& what);
+  void runSelfTest();
   /// stderr always; status bar; a dialog titled `title` when interactive and non-empty.
   void report(const QString& message, const QString& dialogTitle = {});
   /// A status-bar note that does not hide a problem reported in the last seconds.
@@ -104,6 +171,49 @@ class MainWindow : public QMainWindow {
   QDockWidget* paramDock_ = nullptr;
   QDockWidget* timingDock_ = nullptr;
   ShortcutsDialog* shortcuts_ = nullptr;
+
+  ImportancePanel* importancePanel_ = nullptr;
+  MomentPanel* momentPanel_ = nullptr;
+  CovariancePanel* covariancePanel_ = nullptr;
+  WarpPanel* warpPanel_ = nullptr;
+  ShadowMapPanel* shadowMapPanel_ = nullptr;
+  LessonPanel* lessonPanel_ = nullptr;
+  QDockWidget* importanceDock_ = nullptr;
+  QDockWidget* momentDock_ = nullptr;
+  QDockWidget* covarianceDock_ = nullptr;
+  QDockWidget* warpDock_ = nullptr;
+  QDockWidget* shadowMapDock_ = nullptr;
+  QDockWidget* lessonDock_ = nullptr;
+  /// Every dock with a panel that shows the Publication.
+  std::vector<std::pair<QDockWidget*, PublicationPanel*>> publicationDocks_;
+  QMenu* saveImageMenu_ = nullptr;
+
+  QComboBox* overlayCombo_ = nullptr;
+  QComboBox* splitCombo_ = nullptr;
+  QAction* pauseAction_ = nullptr;
+  QAction* openAction_ = nullptr;
+  QAction* bannerAction_ = nullptr;
+  QAction* passStopAction_ = nullptr;
+  QString lastSplitTechnique_;
+
+  std::vector<Lesson> lessons_;
+  int lessonIndex_ = -1;
+
+  struct PassStep {
+    QString id;                   ///< what the panels highlight ("im", "collapse", ...)
+    QString title;                ///< "Importance map"
+    QString text;                 ///< what the pass does and what to look at
+    QDockWidget* dock = nullptr;  ///< the panel showing its output (null: the view)
+  };
+  std::vector<PassStep> passSteps_;
+  int passIndex_ = -1;  ///< -1: not stepping
+  bool passWaitingForFrame_ = false;
+  bool pausedBeforePasses_ = false;
+  bool dialogs_ = false;  ///< message boxes for problems (interactive runs and self-tests)
+
+  // --self-test
+  QString selfTest_, selfTestArgument_;
+  int selfTestFailures_ = 0;
 
   QComboBox* sceneCombo_ = nullptr;
   QComboBox* techniqueCombo_ = nullptr;

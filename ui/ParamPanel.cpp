@@ -256,6 +256,7 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
   grid->addWidget(label, row, 0);
 
   auto* reset = new QToolButton;
+  reset->setObjectName(QStringLiteral("param:%1:reset").arg(QString::fromStdString(decl.key)));
   reset->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
   reset->setAutoRaise(true);
   reset->setToolTip(tr("Reset to default"));
@@ -268,6 +269,7 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
   switch (decl.type) {
     case sl::ParamType::Bool: {
       auto* check = new QCheckBox;
+      check->setObjectName(QStringLiteral("param:") + qkey);
       check->setToolTip(tip);
       grid->addWidget(check, row, 1, 1, 2);
       connect(check, &QCheckBox::toggled, this, [this, &params, &decl, check](bool on) {
@@ -284,6 +286,7 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
     }
     case sl::ParamType::Enum: {
       auto* combo = new QComboBox;
+      combo->setObjectName(QStringLiteral("param:") + qkey);
       combo->setToolTip(tip);
       for (const std::string& name : decl.enumNames) combo->addItem(QString::fromStdString(name));
       grid->addWidget(combo, row, 1, 1, 2);
@@ -314,6 +317,7 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
         return isInt ? std::round(v) : v;
       };
       auto* slider = new QSlider(Qt::Horizontal);
+      slider->setObjectName(QStringLiteral("param:%1:slider").arg(qkey));
       slider->setRange(0, steps);
       slider->setToolTip(tip);
       slider->setMinimumWidth(60);
@@ -346,6 +350,7 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
         };
         spin = s;
       }
+      spin->setObjectName(QStringLiteral("param:") + qkey);
       spin->setKeyboardTracking(false);  // commit on Enter / focus out, not per keystroke
       spin->setAlignment(Qt::AlignRight);
       spin->setToolTip(tip);

@@ -27,6 +27,15 @@ constexpr Binding kViewportBindings[] = {
     {"Drop a .gltf / .glb file", "Open it"},
 };
 
+// The image views and plots of the debug panels (PanelKit.h: ImageView, PlotWidget).
+constexpr Binding kPanelBindings[] = {
+    {"Wheel over an image", "Zoom around the cursor"},
+    {"Drag an image", "Pan"},
+    {"Double-click an image", "Fit it to the panel"},
+    {"Hover an image / a plot", "Value under the cursor / every curve at that x"},
+    {"Right-click a panel", "Save it as a PNG"},
+};
+
 QString row(const QString& keys, const QString& what) {
   return QStringLiteral(
              "<tr><td width='45%' style='padding:3px 16px 3px 0'><b>%1</b></td>"
@@ -47,6 +56,8 @@ ShortcutsDialog::ShortcutsDialog(const QList<QAction*>& actions, QWidget* parent
   QString html = QStringLiteral("<table width='100%' cellspacing='0'>");
   html += heading(tr("Viewport (click into the view first)"));
   for (const Binding& b : kViewportBindings) html += row(QString::fromUtf8(b.keys), tr(b.what));
+  html += heading(tr("Panels"));
+  for (const Binding& b : kPanelBindings) html += row(QString::fromUtf8(b.keys), tr(b.what));
   html += heading(tr("Commands"));
   for (const QAction* action : actions) {
     if (action->shortcut().isEmpty()) continue;

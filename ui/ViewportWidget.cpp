@@ -9,6 +9,7 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QPainter>
 #include <QWheelEvent>
 
 #include "GlSupport.h"
@@ -40,9 +41,166 @@ bool isFlyKey(int key) {
 double errorPercentOf(const sl::ShadowErrorStats& stats) {
   return stats.errorPct;
 }
+
+/// Index of `name` in the enum declaration of the shared parameter `key`, or -1.
+int enumIndexOf(const sl::ParamSet& params, const char* key, const char* name) {
+  const sl::ParamDecl* d = params.find(key);
+  if (!d) return -1;
+  for (std::size_t i = 0; i < d->enumNames.size(); ++i)
+    if (d->enumNames[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+QString captionFor(const std::string& techniqueId, const sl::FrameStats& stats,
+                   std::optional<double> errorPct) {
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(techniqueId);
+  QString s = info ? QString::fromStdString(info->name) : QString::fromStdString(techniqueId);
+  s += QStringLiteral("  \u00b7  %1 ms").arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1);
+  s += errorPct ? QStringLiteral("  \u00b7  error %1 %").arg(*errorPct, 0, 'f', 3)
+                : QStringLiteral("  \u00b7  error \u2014");
+  return s;
+}
 }  // namespace
 
+/// Drawn over the GL view (a plain child widget, composited by Qt; no GL): the split view's
+/// right half, the captions, the banner, the pause badge and the overlay legends.
+class ViewOverlay : public QWidget {
+ public:
+  explicit ViewOverlay(QWidget* parent) : QWidget(parent) {
+    setAttribute(Qt::WA_TransparentForMouseEvents);
+    setAttribute(Qt::WA_NoSystemBackground);
+  }
+
+  QImage split;  ///< right half (device pixels), null when the split view is off
+  QString leftCaption, rightCaption, bannerTitle, bannerText, pausedText;
+  enum class Legend { None, Error, Aliasing, WarpGrid } legend = Legend::None;
+  bool errorStale = false;
+
+  bool hasContent() const {
+    return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() ||
+           !pausedText.isEmpty() || legend != Legend::None;
+  }
+
+ protected:
+  void paintEvent(QPaintEvent*) override {
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QFontMetrics fm = fontMetrics();
+    const int line = fm.height();
+    QColor boxColor(20, 22, 25, 200);
+    auto box = [&](const QRectF& r) {
+      p.setPen(Qt::NoPen);
+      p.setBrush(boxColor);
+      p.drawRoundedRect(r, 5, 5);
+    };
+    int bottomInset = 8;
+    if (!split.isNull()) {
+      const int half = width() / 2;
+      p.drawImage(QRect(half, 0, width() - half, height()), split);
+      p.setPen(QPen(QColor(255, 255, 255, 220), 2));
+      p.drawLine(half, 0, half, height());
+      for (int side = 0; side < 2; ++side) {
+        const QString& text = side == 0 ? leftCaption : rightCaption;
+        const int x0 = side == 0 ? 0 : half;
+        const int w = side == 0 ? half : width() - half;
+        const int tw = std::min(w - 16, fm.horizontalAdvance(text) + 16);
+        const QRectF r(x0 + (w - tw) / 2.0, height() - line - 18, tw, line + 10);
+        box(r);
+        p.setPen(Qt::white);
+        p.drawText(r, Qt::AlignCenter, fm.elidedText(text, Qt::ElideRight, tw - 8));
+      }
+      bottomInset = line + 26;
+    }
+    if (!bannerTitle.isEmpty() || !bannerText.isEmpty()) {
+      const int w = std::min(width() - 24, std::max(360, width() * 2 / 3));
+      QFont bold = font();
+      bold.setBold(true);
+      const QRect textRect(0, 0, w - 20, 10000);
+      const QRect textBounds =
+          fm.boundingRect(textRect, Qt::TextWordWrap | Qt::AlignLeft, bannerText);
+      const int titleH = bannerTitle.isEmpty() ? 0 : line + 4;
+      const QRectF r(12, 10, w, titleH + (bannerText.isEmpty() ? 0 : textBounds.height()) + 14);
+      boxColor = QColor(20, 22, 25, 215);
+      box(r);
+      p.setPen(QColor(255, 200, 60));
+      p.setFont(bold);
+      p.drawText(QRectF(r.left() + 10, r.top() + 6, w - 20, line + 2),
+                 Qt::AlignLeft | Qt::AlignVCenter, bannerTitle);
+      p.setFont(font());
+      p.setPen(Qt::white);
+      p.drawText(QRectF(r.left() + 10, r.top() + 7 + titleH, w - 20, textBounds.height() + 2),
+                 Qt::TextWordWrap | Qt::AlignLeft, bannerText);
+      boxColor = QColor(20, 22, 25, 200);
+    }
+    if (!pausedText.isEmpty()) {
+      const int tw = fm.horizontalAdvance(pausedText) + 20;
+      const QRectF r(width() - tw - 12, bannerTitle.isEmpty() && bannerText.isEmpty() ? 10 : 10, tw,
+                     line + 10);
+      boxColor = QColor(150, 40, 40, 220);
+      box(r);
+      boxColor = QColor(20, 22, 25, 200);
+      p.setPen(Qt::white);
+      p.drawText(r, Qt::AlignCenter, pausedText);
+    }
+    if (legend == Legend::Aliasing) {
+      // Same colours as aliasingColor() in shaders/common/composite.frag (log2 m in -4..4,
+      // blended at 70 % over the shaded scene there).
+      const QRectF r(12, height() - bottomInset - 2 * line - 30, 260, 2 * line + 22);
+      box(r);
+      const QRectF bar(r.left() + 10, r.top() + 8, r.width() - 20, 10);
+      for (int i = 0; i < int(bar.width()); ++i) {
+        const double t = (i + 0.5) / bar.width() * 2.0 - 1.0;  // log2(m) / 4
+        const QColor blue(38, 89, 242), red(230, 26, 26);
+        const QColor end = t < 0 ? blue : red;
+        const double f = std::abs(t);
+        p.fillRect(QRectF(bar.left() + i, bar.top(), 1, bar.height()),
+                   QColor::fromRgbF(1 + (end.redF() - 1) * f, 1 + (end.greenF() - 1) * f,
+                                    1 + (end.blueF() - 1) * f));
+      }
+      p.setPen(Qt::white);
+      const QRectF labels(bar.left(), bar.bottom() + 2, bar.width(), line);
+      p.drawText(labels, Qt::AlignLeft, QStringLiteral("m \u2264 1/16"));
+      p.drawText(labels, Qt::AlignHCenter, QStringLiteral("1"));
+      p.drawText(labels, Qt::AlignRight, QStringLiteral("\u2265 16"));
+      p.drawText(QRectF(bar.left(), labels.bottom(), bar.width(), line), Qt::AlignHCenter,
+                 tr("texels per pixel m (red: undersampled)"));
+    } else if (legend == Legend::Error) {
+      const QString a = tr("false lit (light leak)"), b = tr("false shadowed");
+      const QString note = errorStale ? tr("(computing the reference\u2026)") : QString();
+      const int tw =
+          std::max({fm.horizontalAdvance(a), fm.horizontalAdvance(b), fm.horizontalAdvance(note)}) +
+          44;
+      const int rows = note.isEmpty() ? 2 : 3;
+      const QRectF r(12, height() - bottomInset - rows * line - 16, tw, rows * line + 12);
+      box(r);
+      const QColor colors[] = {QColor(255, 0, 255), QColor(0, 255, 255)};
+      const QString texts[] = {a, b};
+      for (int i = 0; i < 2; ++i) {
+        const double y = r.top() + 6 + i * line;
+        p.fillRect(QRectF(r.left() + 10, y + 3, 18, line - 6), colors[i]);
+        p.setPen(Qt::white);
+        p.drawText(QRectF(r.left() + 34, y, tw - 40, line), Qt::AlignLeft | Qt::AlignVCenter,
+                   texts[i]);
+      }
+      if (!note.isEmpty())
+        p.drawText(QRectF(r.left() + 10, r.top() + 6 + 2 * line, tw - 16, line),
+                   Qt::AlignLeft | Qt::AlignVCenter, note);
+    } else if (legend == Legend::WarpGrid) {
+      const QString t = tr("shadow-map grid: every 1/16 of the map");
+      const QRectF r(12, height() - bottomInset - line - 12, fm.horizontalAdvance(t) + 20,
+                     line + 10);
+      box(r);
+      p.setPen(QColor(255, 217, 26));
+      p.drawText(r, Qt::AlignCenter, t);
+    }
+  }
+};
+
 ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
+  // Keep the last frame in the FBO: a paused view repaints without rendering.
+  setUpdateBehavior(QOpenGLWidget::PartialUpdate);
+  overlay_ = new ViewOverlay(this);
+  overlay_->hide();
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(160, 120);
   errorTimer_.setSingleShot(true);
@@ -93,12 +251,22 @@ void ViewportWidget::destroyRenderer() {
   if (!renderer_) return;
   Q_EMIT rendererAboutToBeDestroyed();
   makeCurrent();
+  splitRenderer_.reset();
   renderer_.reset();
   doneCurrent();
 }
 
 void ViewportWidget::paintGL() {
   if (!renderer_) return;
+  const qreal dpr = devicePixelRatioF();
+  const int w = static_cast<int>(std::lround(width() * dpr));
+  const int h = static_cast<int>(std::lround(height() * dpr));
+  // Paused: the last frame stays in the FBO (PartialUpdate) unless a step is pending or the
+  // size changed (a resized FBO holds nothing).
+  if (paused_ && pendingSteps_ == 0 && lastFrameSize_ == QSize(w, h) && framesRendered_ > 0) return;
+  if (pendingSteps_ > 0) --pendingSteps_;
+  lastFrameSize_ = QSize(w, h);
+
   // Parameters are edited by panels directly in the renderer's ParamSets: notice it here.
   if (renderer_->techniqueId() != lastTechniqueId_ ||
       renderer_->params().revision() != lastParamRevision_ ||
@@ -110,27 +278,150 @@ void ViewportWidget::paintGL() {
   }
   renderer_->setCamera(camera_);
   renderer_->setLight(light_);
-  const qreal dpr = devicePixelRatioF();
-  const int w = static_cast<int>(std::lround(width() * dpr));
-  const int h = static_cast<int>(std::lround(height() * dpr));
+
+  std::string problem;
+  const bool split = !splitTechniqueId_.empty();
+  const int mainWidth = split ? std::max(1, w / 2) : w;
+  if (split) renderSplitHalf(w - mainWidth, h, problem);
 
   std::optional<std::string> error;
   try {
-    error = renderer_->renderFrame(w, h, defaultFramebufferObject());
+    error = renderer_->renderFrame(mainWidth, h, defaultFramebufferObject());
   } catch (const std::exception& e) {
     error = std::string("renderer: ") + e.what();
   }
   ++framesRendered_;
-  std::string problem = error.value_or(std::string());
+  if (error) problem += (problem.empty() ? "" : "; ") + *error;
   for (const std::string& glError : renderer_->takeGlErrors())
     problem += (problem.empty() ? "" : "; ") + glError;
   if (!problem.empty() && problem != lastProblem_)
     Q_EMIT renderProblem(QString::fromStdString(problem));
   lastProblem_ = problem;
 
+  updateOverlayWidget();
   Q_EMIT frameRendered();
   if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);  // restarts: waits for stillness
-  if (continuous_) update();
+  if (continuous_ && !paused_) update();
+}
+
+void ViewportWidget::renderSplitHalf(int width, int height, std::string& problem) {
+  try {
+    if (!splitRenderer_) {
+      sl::RendererOptions options;
+      options.debugOutput = false;  // the main renderer keeps the context's debug callback
+      splitRenderer_ = std::make_unique<sl::Renderer>(options);
+      if (scene_) splitRenderer_->setScene(scene_);
+    }
+    if (splitRenderer_->techniqueId() != splitTechniqueId_)
+      if (auto e = splitRenderer_->setTechnique(splitTechniqueId_)) {
+        problem = "split view: " + *e;
+        return;
+      }
+    // Same camera, light and shared (view/shading) parameters as the left half.
+    sl::ParamSet& mine = splitRenderer_->rendererParams();
+    for (const sl::ParamDecl& d : renderer_->rendererParams().decls())
+      if (mine.has(d.key) && mine.get(d.key) != renderer_->rendererParams().get(d.key))
+        (void)mine.set(d.key, renderer_->rendererParams().get(d.key));
+    splitRenderer_->setCamera(camera_);
+    splitRenderer_->setLight(light_);
+    // renderFrame always draws at the target's origin: render the right half first, read
+    // its colour back for the overlay widget, then let the left half overwrite the origin.
+    if (auto e = splitRenderer_->renderFrame(width, height, defaultFramebufferObject())) {
+      problem = "split view: " + *e;
+      return;
+    }
+    const sl::FrameReadback frame = splitRenderer_->readback();
+    splitImage_ = QImage(frame.color.pixels.data(), frame.color.width, frame.color.height,
+                         QImage::Format_RGBA8888)
+                      .copy();
+  } catch (const std::exception& e) {
+    problem = std::string("split view: ") + e.what();
+  }
+}
+
+void ViewportWidget::updateOverlayWidget() {
+  const bool split = !splitTechniqueId_.empty() && splitRenderer_;
+  overlay_->split = split ? splitImage_ : QImage();
+  if (split) {
+    overlay_->leftCaption = captionFor(renderer_->techniqueId(), renderer_->stats(),
+                                       errorIsCurrent() ? mainErrorPct_ : std::nullopt);
+    overlay_->rightCaption = captionFor(splitTechniqueId_, splitRenderer_->stats(),
+                                        errorIsCurrent() ? splitErrorPct_ : std::nullopt);
+  }
+  overlay_->legend = ViewOverlay::Legend::None;
+  if (renderer_ && renderer_->rendererParams().has("view.overlay")) {
+    const sl::ParamSet& p = renderer_->rendererParams();
+    const int v = p.getInt("view.overlay");
+    if (v == enumIndexOf(p, "view.overlay", "error"))
+      overlay_->legend = ViewOverlay::Legend::Error;
+    else if (v == enumIndexOf(p, "view.overlay", "aliasing"))
+      overlay_->legend = ViewOverlay::Legend::Aliasing;
+    else if (v == enumIndexOf(p, "view.overlay", "warp-grid"))
+      overlay_->legend = ViewOverlay::Legend::WarpGrid;
+  }
+  overlay_->errorStale = !errorIsCurrent();
+  overlay_->pausedText =
+      paused_ && pausedBadge_
+          ? tr("PAUSED at frame %1  \u00b7  . step  \u00b7  Space resume")
+                .arg(renderer_ ? static_cast<qulonglong>(renderer_->stats().frameIndex) : 0)
+          : QString();
+  overlay_->setVisible(overlay_->hasContent());
+  overlay_->raise();
+  overlay_->update();
+}
+
+void ViewportWidget::resizeEvent(QResizeEvent* event) {
+  QOpenGLWidget::resizeEvent(event);
+  overlay_->setGeometry(rect());
+}
+
+void ViewportWidget::setPaused(bool paused, bool badge) {
+  pausedBadge_ = badge;
+  if (paused_ == paused) return updateOverlayWidget();
+  paused_ = paused;
+  pendingSteps_ = 0;
+  updateOverlayWidget();
+  update();
+}
+
+void ViewportWidget::stepFrame() {
+  ++pendingSteps_;
+  update();
+}
+
+std::optional<std::string> ViewportWidget::setSplitTechnique(const std::string& techniqueId) {
+  if (!techniqueId.empty() && !sl::Renderer::findTechnique(techniqueId)) {
+    std::string known;
+    for (const sl::TechniqueInfo& t : sl::Renderer::techniques())
+      known += (known.empty() ? "" : ", ") + t.id;
+    return "unknown technique '" + techniqueId + "' (known: " + known + ")";
+  }
+  splitTechniqueId_ = techniqueId;
+  splitErrorPct_.reset();
+  markViewChanged();
+  if (paused_) ++pendingSteps_;
+  update();
+  if (techniqueId.empty()) updateOverlayWidget();
+  return std::nullopt;
+}
+
+void ViewportWidget::setBanner(const QString& title, const QString& text) {
+  overlay_->bannerTitle = title;
+  overlay_->bannerText = text;
+  overlay_->setVisible(overlay_->hasContent());
+  overlay_->raise();
+  overlay_->update();
+}
+
+QImage ViewportWidget::grabView() {
+  QImage image = grabFramebuffer();
+  if (overlay_->isVisible()) {
+    QPainter p(&image);
+    p.scale(image.width() / std::max(1.0, double(width())),
+            image.height() / std::max(1.0, double(height())));
+    overlay_->render(&p, QPoint(), QRegion(), QWidget::DrawChildren);
+  }
+  return image;
 }
 
 void ViewportWidget::resizeGL(int, int) {
@@ -145,6 +436,7 @@ void ViewportWidget::setScene(std::shared_ptr<const sl::Scene> scene) {
     renderer_->setScene(scene_);
     renderer_->setLight(light_);
     renderer_->resetTemporalState();
+    if (splitRenderer_) splitRenderer_->setScene(scene_);
     doneCurrent();
   }
   resetView();
@@ -206,6 +498,8 @@ std::optional<double> ViewportWidget::computeErrorNow() {
   std::optional<double> pct;
   try {
     pct = errorPercentOf(renderer_->computeError().stats);
+    if (!splitTechniqueId_.empty() && splitRenderer_)
+      splitErrorPct_ = errorPercentOf(splitRenderer_->computeError().stats);
   } catch (const std::exception& e) {
     Q_EMIT renderProblem(
         QStringLiteral("error metric failed: %1").arg(QString::fromStdString(e.what())));
@@ -213,7 +507,15 @@ std::optional<double> ViewportWidget::computeErrorNow() {
   doneCurrent();
   if (!pct) return std::nullopt;
   errorRevision_ = viewRevision_;
+  mainErrorPct_ = pct;
   Q_EMIT errorComputed(*pct);
+  // The error overlay shows the reference just computed: draw it (one more frame, unless
+  // paused, where the frozen frame must stay the one that was measured).
+  const sl::ParamSet& shared = renderer_->rendererParams();
+  if (shared.has("view.overlay") &&
+      shared.getInt("view.overlay") == enumIndexOf(shared, "view.overlay", "error") && !paused_)
+    update();
+  updateOverlayWidget();
   return pct;
 }
 

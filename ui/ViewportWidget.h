@@ -1,6 +1,8 @@
 // The 3D view: a QOpenGLWidget that owns the sl::Renderer (created in initializeGL, freed
 // with its context current) and turns mouse and keys into camera moves. It renders on
 // demand and computes the (slow) shadow error only once the view has been still a while.
+// Teaching extras: pause and single-step, a banner (lesson, pass being stepped), legends of
+// the renderer's overlays, and a split view with a second technique on the right half.
 #pragma once
 
 #include <memory>
@@ -9,6 +11,7 @@
 #include <string>
 
 #include <QElapsedTimer>
+#include <QImage>
 #include <QOpenGLWidget>
 #include <QPoint>
 #include <QTimer>
@@ -16,6 +19,8 @@
 #include "core/Renderer.h"
 
 namespace sl::ui {
+
+class ViewOverlay;
 
 class ViewportWidget : public QOpenGLWidget {
   Q_OBJECT
@@ -64,6 +69,30 @@ class ViewportWidget : public QOpenGLWidget {
   /// How long the view must be still before the error is recomputed.
   static constexpr int kErrorDelayMs = 1200;
 
+  /// Paused: no new frames (the last one stays on screen) until stepFrame() or resume.
+  /// Camera and parameter changes wait for the next frame.
+  /// `badge` false: no "paused" badge (grabs freeze the frame without one).
+  void setPaused(bool paused, bool badge = true);
+  bool paused() const { return paused_; }
+  /// Renders exactly one frame while paused (or the next frame when running).
+  void stepFrame();
+
+  /// Split view: `techniqueId` on the right half (a second renderer, same camera, light and
+  /// shared parameters), the main technique on the left. Empty: off. Unknown id: error.
+  std::optional<std::string> setSplitTechnique(const std::string& techniqueId);
+  const std::string& splitTechnique() const { return splitTechniqueId_; }
+
+  /// A banner over the top of the view (lesson title, pass being stepped); empty: none.
+  void setBanner(const QString& title, const QString& text);
+
+  /// The view as shown, with the split half, captions, banner and legends (for PNGs).
+  QImage grabView();
+
+  /// The error of the (left half of the) view, once computed for it.
+  std::optional<double> errorPct() const { return errorIsCurrent() ? mainErrorPct_ : std::nullopt; }
+  /// The error of the right half (split view), once computed.
+  std::optional<double> splitErrorPct() const { return splitErrorPct_; }
+
  Q_SIGNALS:
   /// The renderer exists (after initializeGL): panels may bind to its parameters.
   void rendererReady();
@@ -86,6 +115,7 @@ class ViewportWidget : public QOpenGLWidget {
   void initializeGL() override;
   void paintGL() override;
   void resizeGL(int w, int h) override;
+  void resizeEvent(QResizeEvent* event) override;
 
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
@@ -98,12 +128,26 @@ class ViewportWidget : public QOpenGLWidget {
  private:
   void destroyRenderer();
   void applyStateToRenderer();
+  void renderSplitHalf(int width, int height, std::string& problem);
+  void updateOverlayWidget();
   void markViewChanged();
   void flyStep();
   void computeErrorIfStill();
   float sceneScaleM() const;  ///< size of the scene, for fly speed and pan scale
 
   std::unique_ptr<sl::Renderer> renderer_;
+  /// Split view's right half: a second renderer on the same context (owns its own GL
+  /// objects; created lazily, kept until the context goes).
+  std::unique_ptr<sl::Renderer> splitRenderer_;
+  std::string splitTechniqueId_;
+  std::optional<double> splitErrorPct_;
+  std::optional<double> mainErrorPct_;
+  QImage splitImage_;
+  ViewOverlay* overlay_ = nullptr;
+  bool paused_ = false;
+  bool pausedBadge_ = true;
+  int pendingSteps_ = 0;
+  QSize lastFrameSize_;
   std::shared_ptr<const sl::Scene> scene_;
   std::string techniqueId_;
   sl::Camera camera_;

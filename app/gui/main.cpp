@@ -1,5 +1,6 @@
 // shadowlab: the interactive GUI. `shadowlab [--scene NAME|FILE] [--technique ID]
-// [--set KEY=VALUE]... [--grab DIR --grab-after N]`; see ui/MainWindow.h.
+// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--grab DIR --grab-after N]`; see
+// ui/MainWindow.h and ui/LaunchOptions.h (also for the hidden --self-test).
 // Exit codes: 0 ok, 1 runtime failure (no GL 4.5, scene not loadable, grab failed),
 // 2 bad command line (unknown option, technique or parameter, value out of range).
 #include <cstdio>
@@ -11,6 +12,7 @@
 
 #include "GlSupport.h"
 #include "LaunchOptions.h"
+#include "LessonPanel.h"
 #include "MainWindow.h"
 #include "Theme.h"
 #include "core/Renderer.h"
@@ -65,12 +67,25 @@ int main(int argc, char** argv) {
   const sl::ui::ParsedLaunch parsed = sl::ui::parseLaunchOptions(QApplication::arguments());
   if (auto code = handleNonRunOutcome(parsed)) return *code;
   const sl::ui::LaunchOptions& options = *parsed.options;
-  const bool interactive = !options.grab();
+  const bool selfTest = !options.selfTest.isEmpty();
+  const bool interactive = !options.grab() && !selfTest;
 
   // GL-free checks first: a typo must not cost a window (grab runs stop here; interactive
   // runs report the same problems in the status bar once the window is up).
-  const std::string technique =
-      !options.technique.isEmpty() ? options.technique.toStdString() : sl::ui::defaultTechniqueId();
+  // A lesson brings its technique (the one --set is checked against when none is given).
+  std::string lessonTechnique;
+  if (!options.lesson.isEmpty()) {
+    QString error;
+    const std::optional<sl::ui::Lesson> lesson = sl::ui::resolveLesson(options.lesson, &error);
+    if (!lesson) {
+      printErr(error);
+      return 2;
+    }
+    lessonTechnique = lesson->preset.technique;
+  }
+  const std::string technique = !options.technique.isEmpty() ? options.technique.toStdString()
+                                : !lessonTechnique.empty()   ? lessonTechnique
+                                                             : sl::ui::defaultTechniqueId();
   if (!interactive) {
     if (auto error = sl::ui::validateLaunchSettings(technique, options.assignments)) {
       printErr(QString::fromStdString(*error));
@@ -91,11 +106,18 @@ int main(int argc, char** argv) {
   window.setPendingAssignments(options.assignments);
 
   if (!interactive) {
-    window.setTechnique(QString::fromStdString(technique));
-    if (!window.loadScene(options.scene.isEmpty() ? window.initialSceneName() : options.scene))
+    // A lesson sets scene, technique and parameters; explicit options then override them.
+    if (!options.lesson.isEmpty() && !window.startLesson(options.lesson)) return 2;
+    if (options.lesson.isEmpty() || !options.technique.isEmpty())
+      window.setTechnique(QString::fromStdString(technique));
+    if ((options.lesson.isEmpty() || !options.scene.isEmpty()) &&
+        !window.loadScene(options.scene.isEmpty() ? window.initialSceneName() : options.scene))
       return 1;
     window.show();
-    window.startGrab(options.grabDir, options.grabAfterFrames);
+    if (selfTest)
+      window.startSelfTest(options.selfTest, options.selfTestArgument);
+    else
+      window.startGrab(options.grabDir, options.grabAfterFrames);
     return QApplication::exec();
   }
 
@@ -110,6 +132,7 @@ int main(int argc, char** argv) {
   const QString scene = options.scene.isEmpty() ? window.initialSceneName() : options.scene;
   if (!window.loadScene(scene) && scene != sl::ui::MainWindow::defaultSceneName())
     window.loadScene(sl::ui::MainWindow::defaultSceneName());
+  if (!options.lesson.isEmpty()) window.startLesson(options.lesson);
   window.show();
   return QApplication::exec();
 }

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The teaching controls (shadowlab --self-test teaching=DIR, see ui/MainWindowSelfTest.cpp)
+# on `diagonal` with DA-RTW: ] steps through the passes of one frame in order (IM, moments,
+# PCA, collapse, blur, scan, warped map, lookup), each raising and marking the panel that
+# shows its output, and past the last pass renders exactly one more frame; Esc resumes;
+# O cycles every overlay the `view.overlay` declaration lists; F7 splits the view with both
+# errors measured; every lesson in scenes/lessons applies its scene and technique. The
+# window at each step is saved to DIR for a look.
+# usage: teaching.sh <shadowlab> <tests/data dir> <out dir>
+set -euo pipefail
+app=$1
+out=$3/teaching
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/xvfb.bash"
+rm -rf "$out" && mkdir -p "$out"
+start_xvfb
+
+rc=0
+timeout 120 "$app" --scene diagonal --technique da-rtw --self-test "teaching=$out" \
+  >"$out/stdout.txt" 2>"$out/stderr.txt" || rc=$?
+cat "$out/stdout.txt"
+if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/stdout.txt"; then
+  echo "FAIL: self-test teaching exited with $rc; stderr:"
+  cat "$out/stderr.txt"
+  exit 1
+fi
+python3 "$here/pngstats.py" --min-colors 64 --min-stddev 8 "$out"/pass-*.png "$out/split.png"
+echo "PASS"

@@ -1,0 +1,68 @@
+// Lessons: presets in scenes/lessons/*.json (sl::loadPreset: title, explanation, scene,
+// technique, params, camera, light), listed in the Lessons menu in file-name order, and the
+// Lesson dock that shows the current one's explanation with previous / next / restart.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include "core/Preset.h"
+
+class QLabel;
+class QPushButton;
+class QTextBrowser;
+
+namespace sl::ui {
+
+struct Lesson {
+  QString path;
+  sl::Preset preset;
+};
+
+/// The folder the lessons live in: <built-in scene dir>/lessons.
+QString lessonDirectory();
+/// Every readable lesson, sorted by file name; problems (one line each) go to `errors`.
+std::vector<Lesson> loadLessons(QStringList* errors);
+
+/// Index into `lessons` of `spec`: a 1-based number, a file's base name
+/// ("04-diagonal-pca"), a file name or a path of one of them; -1 when none matches.
+int findLesson(const std::vector<Lesson>& lessons, const QString& spec);
+
+/// A lesson given on the command line: one of loadLessons() or a preset file elsewhere.
+/// Nothing (and `error` set, naming the known lessons) when it cannot be found or read.
+std::optional<Lesson> resolveLesson(const QString& spec, QString* error);
+
+class LessonPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit LessonPanel(QWidget* parent = nullptr);
+
+  /// Shows lesson `index` of `count` (null: the list of lessons to choose from).
+  void showLesson(const Lesson* lesson, int index, int count);
+  /// The list shown when no lesson is active.
+  void setLessonTitles(const QStringList& titles);
+  /// A line under the explanation (e.g. a parameter the lesson could not apply).
+  void setNote(const QString& note);
+
+ Q_SIGNALS:
+  void previousRequested();
+  void nextRequested();
+  void restartRequested();
+  void lessonChosen(int index);
+
+ private:
+  QLabel* title_ = nullptr;
+  QTextBrowser* text_ = nullptr;
+  QLabel* note_ = nullptr;
+  QPushButton* previous_ = nullptr;
+  QPushButton* next_ = nullptr;
+  QPushButton* restart_ = nullptr;
+  QStringList titles_;
+};
+
+}  // namespace sl::ui

@@ -2,6 +2,10 @@
 //   list      scenes, techniques and their parameters
 //   render    one configuration -> PNG, metrics JSON, error image
 //   compare   every technique on one scene -> a folder of images and metrics
+//   bench     speed against accuracy: sweeps along a camera path -> CSV and chart (Bench.cpp)
+//   chart     the chart again from a bench CSV (Bench.cpp)
+//   stability frame-to-frame stability, one technique or a suite of failure cases
+//             (Stability.cpp)
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +19,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "CliCommon.h"
+#include "Commands.h"
+#include "algo/metrics/BenchStats.h"
 #include "core/Preset.h"
 #include "core/Renderer.h"
 #include "gl/EglContext.h"
@@ -26,10 +33,7 @@ using nlohmann::json;
 
 namespace {
 
-/// Bad input: one line on stderr naming the option or file and the problem, exit 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using namespace sl::cli;
 
 const char* kUsage =
     "usage: shadowlab-cli list\n"
@@ -38,37 +42,6 @@ const char* kUsage =
     "                            [--light AZIMUTH,ELEVATION] [--preset FILE.json]\n"
     "                            --out FILE.png [--metrics FILE.json] [--error-image FILE.png]\n"
     "       shadowlab-cli compare [--scene NAME|FILE] [--size WxH] --out-dir DIR\n";
-
-struct Args {
-  std::vector<std::string> rest;
-  std::string take(size_t& i, const std::string& opt) {
-    if (i + 1 >= rest.size()) throw UsageError(opt + ": missing value");
-    return rest[++i];
-  }
-};
-
-int parseInt(const std::string& opt, const std::string& text, int lo, int hi) {
-  try {
-    size_t used = 0;
-    int v = std::stoi(text, &used);
-    if (used != text.size()) throw std::invalid_argument(text);
-    if (v < lo || v > hi)
-      throw UsageError(opt + ": " + text + " is out of range " + std::to_string(lo) + ".." +
-                       std::to_string(hi));
-    return v;
-  } catch (const UsageError&) {
-    throw;
-  } catch (const std::exception&) {
-    throw UsageError(opt + ": expected an integer, got '" + text + "'");
-  }
-}
-
-std::pair<int, int> parseSize(const std::string& text) {
-  auto x = text.find('x');
-  if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + text + "'");
-  return {parseInt("--size", text.substr(0, x), 1, 16384),
-          parseInt("--size", text.substr(x + 1), 1, 16384)};
-}
 
 struct RenderConfig {
   std::string scene = "default";
@@ -80,34 +53,6 @@ struct RenderConfig {
   std::optional<sl::DirectionalLight> light;
   std::string out, metrics, errorImage;
 };
-
-std::shared_ptr<sl::Scene> loadScene(const std::string& nameOrPath) {
-  sl::SceneLoadResult r = sl::loadSceneByNameOrPath(nameOrPath);
-  if (!r) throw UsageError(r.error);
-  return r.scene;
-}
-
-sl::Camera pickCamera(const sl::Scene& scene, const std::string& which) {
-  if (which.empty()) return scene.cameras.empty() ? scene.defaultCamera() : scene.cameras[0].camera;
-  for (const auto& b : scene.cameras)
-    if (b.name == which) return b.camera;
-  try {
-    size_t idx = std::stoul(which);
-    if (idx < scene.cameras.size()) return scene.cameras[idx].camera;
-  } catch (...) {
-  }
-  std::string known;
-  for (const auto& b : scene.cameras) known += (known.empty() ? "" : ", ") + b.name;
-  throw UsageError("--camera: scene '" + scene.name + "' has no camera '" + which +
-                   "' (cameras: " + (known.empty() ? "none" : known) + ")");
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /// Renders `frames` frames and returns the metrics JSON (medians over frames).
 json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::ErrorResult& err) {
@@ -134,10 +79,11 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   j["size"] = {cfg.width, cfg.height};
   j["frames"] = cfg.frames;
   j["timing_method"] = st.timingMethod;
-  j["total_ms"] = median(totals);
+  j["total_ms"] = sl::median(totals);
   json passes = json::array();
   for (const auto& name : passOrder)
-    passes.push_back({{"name", name}, {"ms", median(passMs[name])}, {"method", st.timingMethod}});
+    passes.push_back(
+        {{"name", name}, {"ms", sl::median(passMs[name])}, {"method", st.timingMethod}});
   j["passes"] = passes;
   j["texels"] = st.memory.texels();
   j["bytes"] = st.memory.bytes();
@@ -157,17 +103,6 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   j["false_shadow_pct"] = err.stats.falseShadowPct;
   j["gl"] = r.glDescription();
   return j;
-}
-
-void writeText(const std::string& path, const std::string& text) {
-  if (fs::path(path).has_parent_path()) fs::create_directories(fs::path(path).parent_path());
-  std::ofstream out(path);
-  if (!out) throw UsageError(path + ": cannot write");
-  out << text << "\n";
-}
-
-void writePng(const std::string& path, const sl::ImageRGBA8& img) {
-  if (auto e = sl::writeImage(path, img)) throw UsageError(*e);
 }
 
 void configure(sl::Renderer& r, const RenderConfig& cfg) {
@@ -227,22 +162,9 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
       cfg.metrics = a.take(i, o);
     else if (o == "--error-image")
       cfg.errorImage = a.take(i, o);
-    else if (o == "--light") {
-      std::string v = a.take(i, o);
-      auto c = v.find(',');
-      try {
-        if (c == std::string::npos) throw std::invalid_argument(v);
-        sl::DirectionalLight l;
-        l.azimuthDeg = std::stof(v.substr(0, c));
-        l.elevationDeg = std::stof(v.substr(c + 1));
-        if (auto e = l.validate()) throw UsageError("--light: " + *e);
-        cfg.light = l;
-      } catch (const UsageError&) {
-        throw;
-      } catch (const std::exception&) {
-        throw UsageError("--light: expected AZIMUTH,ELEVATION in degrees, got '" + v + "'");
-      }
-    } else if (o == "--preset") {
+    else if (o == "--light")
+      cfg.light = parseLight(o, a.take(i, o));
+    else if (o == "--preset") {
       std::string err;
       auto p = sl::loadPreset(a.take(i, o), &err);
       if (!p) throw UsageError("--preset: " + err);
@@ -320,14 +242,18 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) a.rest.emplace_back(argv[i]);
   try {
     if (a.rest.empty() || a.rest[0] == "--help" || a.rest[0] == "-h") {
-      std::cout << kUsage;
+      std::cout << kUsage << kBenchUsage << kChartUsage << kStabilityUsage;
       return a.rest.empty() ? 2 : 0;
     }
     const std::string& cmd = a.rest[0];
     if (cmd == "list") return cmdList();
     if (cmd == "render") return cmdRender(a);
     if (cmd == "compare") return cmdCompare(a);
-    throw UsageError("unknown command '" + cmd + "' (commands: list, render, compare)");
+    if (cmd == "bench") return cmdBench(a);
+    if (cmd == "stability") return cmdStability(a);
+    if (cmd == "chart") return cmdChart(a);
+    throw UsageError("unknown command '" + cmd +
+                     "' (commands: list, render, compare, bench, chart, stability)");
   } catch (const UsageError& e) {
     std::cerr << "shadowlab-cli: " << e.what() << "\n";
     return 2;

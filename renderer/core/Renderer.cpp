@@ -200,7 +200,11 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
 }
 
 Renderer::~Renderer() {
-  if (s_ && epoxy_gl_version() >= 43) glDebugMessageCallback(nullptr, nullptr);
+  // Several renderers may share a context: only clear the callback if it is still ours.
+  if (!s_ || epoxy_gl_version() < 43) return;
+  void* user = nullptr;
+  glGetPointerv(GL_DEBUG_CALLBACK_USER_PARAM, &user);
+  if (user == s_.get()) glDebugMessageCallback(nullptr, nullptr);
 }
 
 std::string Renderer::glDescription() const {

@@ -1,0 +1,476 @@
+// `shadowlab-cli bench`: speed against accuracy (issue 5). Every configuration of the
+// sweep renders every frame of a camera path, interleaved frame by frame (so machine
+// drift hits all alike), and is measured against the exact Embree reference; the CSV has
+// one row per configuration with medians over frames, the chart plots time against error.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "Chart.h"
+#include "Commands.h"
+#include "Measure.h"
+#include "gl/EglContext.h"
+
+namespace sl::cli {
+
+const char* const kBenchUsage =
+    "       shadowlab-cli bench --scene NAME|FILE --technique ID[:KEY=V1,V2,...]...\n"
+    "                           [--path NAME|INDEX | --camera NAME|INDEX] [--frames N]\n"
+    "                           [--warmup N] [--size WxH] [--light AZIMUTH,ELEVATION]\n"
+    "                           [--set KEY=VALUE]... --csv FILE.csv [--chart FILE.png]\n"
+    "                           [--chart-y auto|linear|log]\n";
+
+namespace {
+
+struct BenchConfig {
+  std::string scene;
+  std::vector<std::string> techniques;  ///< --technique texts
+  std::vector<std::string> sets;        ///< --set for every configuration
+  std::string path, camera;
+  int frames = 12;
+  int warmup = 3;
+  int width = 640, height = 360;
+  std::optional<DirectionalLight> light;
+  std::string csv, chart;
+  std::string chartY = "auto";
+};
+
+BenchConfig parseBench(Args& a) {
+  BenchConfig c;
+  for (std::size_t i = 1; i < a.rest.size(); ++i) {
+    const std::string& o = a.rest[i];
+    if (o == "--scene")
+      c.scene = a.take(i, o);
+    else if (o == "--technique")
+      c.techniques.push_back(a.take(i, o));
+    else if (o == "--set")
+      c.sets.push_back(a.take(i, o));
+    else if (o == "--path")
+      c.path = a.take(i, o);
+    else if (o == "--camera")
+      c.camera = a.take(i, o);
+    else if (o == "--frames")
+      c.frames = parseInt(o, a.take(i, o), 1, 100000);
+    else if (o == "--warmup")
+      c.warmup = parseInt(o, a.take(i, o), 0, 1000);
+    else if (o == "--size")
+      std::tie(c.width, c.height) = parseSize(a.take(i, o));
+    else if (o == "--light")
+      c.light = parseLight(o, a.take(i, o));
+    else if (o == "--csv")
+      c.csv = a.take(i, o);
+    else if (o == "--chart")
+      c.chart = a.take(i, o);
+    else if (o == "--chart-y") {
+      c.chartY = a.take(i, o);
+      if (c.chartY != "auto" && c.chartY != "linear" && c.chartY != "log")
+        throw UsageError("--chart-y: expected auto, linear or log, got '" + c.chartY + "'");
+    } else
+      throw UsageError("unknown option '" + o + "' (bench options: see shadowlab-cli --help)");
+  }
+  if (c.scene.empty()) throw UsageError("--scene: missing (which scene to benchmark)");
+  if (c.techniques.empty()) throw UsageError("--technique: missing (at least one configuration)");
+  if (c.csv.empty()) throw UsageError("--csv: missing (where to write the results)");
+  if (!c.path.empty() && !c.camera.empty())
+    throw UsageError("--camera: give either a camera path (--path) or a bookmark (--camera)");
+  return c;
+}
+
+/// Adds the --set values to every configuration that has the key; a key that no
+/// configuration (and no shared parameter) has is an error.
+void applyCommonSets(std::vector<ConfigSpec>& configs, const std::vector<std::string>& sets) {
+  for (const std::string& kv : sets) {
+    auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--set: expected KEY=VALUE, got '" + kv + "'");
+    const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
+    bool used = false;
+    for (ConfigSpec& c : configs) {
+      bool swept = false;
+      for (const auto& s : c.sets) swept = swept || s.first == key;
+      if (swept) continue;  // the sweep's value wins
+      ConfigSpec trial = c;
+      trial.sets.push_back({key, value});
+      auto err = validateConfig(trial);
+      if (err && err->find("has no parameter") != std::string::npos) continue;
+      if (err) throw UsageError("--set: " + *err);
+      c.sets.push_back({key, value});
+      used = true;
+    }
+    if (!used) throw UsageError("--set: no configuration has a parameter '" + key + "'");
+  }
+}
+
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return out + "\"";
+}
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+/// Column name of a pass: "shadow map" -> "shadow_map_ms", "scan + warp" -> "scan_warp_ms".
+std::string passColumn(const std::string& pass) {
+  std::string c;
+  for (char ch : pass) {
+    if (std::isalnum(static_cast<unsigned char>(ch)))
+      c += ch;
+    else if (!c.empty() && c.back() != '_')
+      c += '_';
+  }
+  while (!c.empty() && c.back() == '_') c.pop_back();
+  return c + "_ms";
+}
+
+/// Medians over the frames of one configuration.
+struct ConfigSummary {
+  double totalMs = 0;
+  std::map<std::string, double> passMs;
+  std::string timingMethod;
+  double texels = 0, bytes = 0;
+  double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
+  double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
+  double flickerPct = 0;
+  std::size_t renderErrors = 0, glErrors = 0;
+};
+
+ConfigSummary summarise(const std::vector<FrameSample>& frames) {
+  ConfigSummary s;
+  auto med = [&](auto get) {
+    std::vector<double> v;
+    for (const FrameSample& f : frames) v.push_back(double(get(f)));
+    return median(v);
+  };
+  s.totalMs = med([](const FrameSample& f) { return f.totalMs; });
+  std::map<std::string, std::vector<double>> passes;
+  for (const FrameSample& f : frames)
+    for (const PassTiming& p : f.passes) passes[p.name].push_back(p.ms);
+  for (const auto& [name, v] : passes) s.passMs[name] = median(v);
+  s.timingMethod = frames.empty() ? "" : frames.back().timingMethod;
+  s.texels = med([](const FrameSample& f) { return f.texels; });
+  s.bytes = med([](const FrameSample& f) { return f.bytes; });
+  s.errorPct = med([](const FrameSample& f) { return f.error.errorPct; });
+  s.falseLitPct = med([](const FrameSample& f) { return f.error.falseLitPct; });
+  s.falseShadowPct = med([](const FrameSample& f) { return f.error.falseShadowPct; });
+  s.covered = med([](const FrameSample& f) { return f.error.covered; });
+  s.aliasingMean = med([](const FrameSample& f) { return f.aliasing.mean; });
+  s.aliasingP95 = med([](const FrameSample& f) { return f.aliasing.p95; });
+  s.aliasingMax = med([](const FrameSample& f) { return f.aliasing.max; });
+  std::vector<double> flicker;
+  for (const FrameSample& f : frames)
+    if (f.flicker) flicker.push_back(f.flicker->pct);
+  s.flickerPct = median(flicker);
+  for (const FrameSample& f : frames) {
+    s.renderErrors += f.renderError.empty() ? 0 : 1;
+    s.glErrors += f.glErrors.size();
+  }
+  return s;
+}
+
+/// One configuration's place on the chart (from a bench run or its CSV).
+struct ChartRow {
+  std::string technique;
+  std::vector<std::pair<std::string, std::string>> params;
+  double totalMs = 0, errorPct = 0;
+};
+
+/// Point labels: per technique, the values of the parameters that vary between its rows
+/// (all its parameters when it has one row); the legend names those parameters.
+void writeChart(const std::vector<ChartRow>& rows, ChartSpec spec, const std::string& png) {
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<std::string>> varying;
+  for (const ChartRow& r : rows) {
+    if (std::find(order.begin(), order.end(), r.technique) == order.end())
+      order.push_back(r.technique);
+    std::vector<const ChartRow*> same;
+    for (const ChartRow& o : rows)
+      if (o.technique == r.technique) same.push_back(&o);
+    for (const auto& [k, v] : r.params) {
+      bool varies = same.size() == 1;
+      for (const ChartRow* o : same)
+        for (const auto& [k2, v2] : o->params) varies = varies || (k2 == k && v2 != v);
+      auto& list = varying[r.technique];
+      if (varies && std::find(list.begin(), list.end(), k) == list.end()) list.push_back(k);
+    }
+  }
+  std::vector<ChartPoint> points;
+  for (const ChartRow& r : rows) {
+    std::string label;
+    for (const std::string& k : varying[r.technique])
+      for (const auto& [k2, v] : r.params)
+        if (k2 == k) label += (label.empty() ? "" : "/") + v;
+    points.push_back({r.technique, label, r.totalMs, r.errorPct});
+  }
+  // The keys behind the labels: once in the subtitle when every technique has the same,
+  // else in each technique's legend entry.
+  auto keysOf = [&](const std::string& t) {
+    std::string keys;
+    for (const std::string& k : varying[t]) keys += (keys.empty() ? "" : "/") + k;
+    return keys;
+  };
+  bool same = true;
+  for (const std::string& t : order) same = same && keysOf(t) == keysOf(order.front());
+  if (same && !keysOf(order.front()).empty())
+    spec.subtitle += "; point labels: " + keysOf(order.front());
+  for (const std::string& t : order)
+    spec.seriesNotes.push_back(same || keysOf(t).empty() ? "" : "labels: " + keysOf(t));
+  if (auto e = writeSpeedAccuracyChart(points, spec, png)) throw UsageError(*e);
+  std::printf("chart -> %s\n", png.c_str());
+}
+
+/// Fields of one CSV line (RFC 4180 quoting; no newlines inside fields).
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    char ch = line[i];
+    if (quoted) {
+      if (ch == '"' && i + 1 < line.size() && line[i + 1] == '"')
+        out.back() += '"', ++i;
+      else if (ch == '"')
+        quoted = false;
+      else
+        out.back() += ch;
+    } else if (ch == '"') {
+      quoted = true;
+    } else if (ch == ',') {
+      out.emplace_back();
+    } else if (ch != '\r') {
+      out.back() += ch;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* const kChartUsage =
+    "       shadowlab-cli chart --csv FILE.csv --chart FILE.png [--chart-y auto|linear|log]\n";
+
+int cmdChart(Args& a) {
+  std::string csvPath, png, chartY = "auto";
+  for (std::size_t i = 1; i < a.rest.size(); ++i) {
+    const std::string& o = a.rest[i];
+    if (o == "--csv")
+      csvPath = a.take(i, o);
+    else if (o == "--chart")
+      png = a.take(i, o);
+    else if (o == "--chart-y")
+      chartY = a.take(i, o);
+    else
+      throw UsageError("unknown option '" + o + "' (chart options: --csv, --chart, --chart-y)");
+  }
+  if (csvPath.empty()) throw UsageError("--csv: missing (a CSV written by bench)");
+  if (png.empty()) throw UsageError("--chart: missing (the PNG to write)");
+  if (chartY != "auto" && chartY != "linear" && chartY != "log")
+    throw UsageError("--chart-y: expected auto, linear or log, got '" + chartY + "'");
+  std::ifstream in(csvPath);
+  if (!in) throw UsageError(csvPath + ": cannot open");
+  std::string line;
+  if (!std::getline(in, line)) throw UsageError(csvPath + ": empty");
+  const std::vector<std::string> header = splitCsvLine(line);
+  auto column = [&](const std::string& name) {
+    auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end())
+      throw UsageError(csvPath + ": no column '" + name + "' (not a bench CSV?)");
+    return std::size_t(it - header.begin());
+  };
+  const std::size_t cTech = column("technique"), cParams = column("params"),
+                    cMs = column("total_ms"), cErr = column("error_pct"), cScene = column("scene"),
+                    cCamera = column("camera"), cW = column("width"), cH = column("height"),
+                    cFrames = column("frames"), cTiming = column("timing_method");
+  auto gl = std::find(header.begin(), header.end(), "gl");
+  std::vector<ChartRow> rows;
+  std::vector<std::string> first;
+  for (int lineNo = 2; std::getline(in, line); ++lineNo) {
+    if (line.empty()) continue;
+    std::vector<std::string> f = splitCsvLine(line);
+    if (f.size() != header.size())
+      throw UsageError(csvPath + ":" + std::to_string(lineNo) + ": " + std::to_string(f.size()) +
+                       " fields, the header has " + std::to_string(header.size()));
+    if (first.empty()) first = f;
+    ChartRow r;
+    r.technique = f[cTech];
+    std::istringstream ps(f[cParams]);
+    for (std::string kv; ps >> kv;) {
+      auto eq = kv.find('=');
+      if (eq != std::string::npos) r.params.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
+    }
+    r.totalMs = parseDouble("total_ms", f[cMs], -1e300, 1e300);
+    r.errorPct = parseDouble("error_pct", f[cErr], -1e300, 1e300);
+    rows.push_back(std::move(r));
+  }
+  if (rows.empty()) throw UsageError(csvPath + ": no rows");
+  ChartSpec spec;
+  spec.yScale = chartY;
+  spec.title = "Speed against accuracy: " + first[cScene] + ", " + first[cCamera];
+  spec.subtitle = first[cW] + "x" + first[cH] + ", " + first[cFrames] +
+                  " frames (medians), timing " + first[cTiming] +
+                  (gl == header.end() ? "" : ", " + first[std::size_t(gl - header.begin())]);
+  writeChart(rows, spec, png);
+  return 0;
+}
+
+namespace {}  // namespace
+
+int cmdBench(Args& a) {
+  BenchConfig cfg = parseBench(a);
+  std::vector<ConfigSpec> configs;
+  for (const std::string& t : cfg.techniques) {
+    std::vector<ConfigSpec> more = expandTechniqueSweep(t);
+    configs.insert(configs.end(), more.begin(), more.end());
+  }
+  applyCommonSets(configs, cfg.sets);
+  {  // Unique labels (the same configuration may be listed twice).
+    std::map<std::string, int> seen;
+    for (ConfigSpec& c : configs) {
+      c.label = c.techniqueId + (c.sets.empty() ? "" : " " + c.paramsText());
+      if (int n = ++seen[c.label]; n > 1) c.label += " #" + std::to_string(n);
+    }
+  }
+  std::shared_ptr<Scene> scene = loadScene(cfg.scene);
+
+  // One camera per frame: along the path, or a fixed bookmark.
+  std::vector<Camera> cameras;
+  std::string cameraText;
+  if (cfg.camera.empty() && !scene->paths.empty()) {
+    const CameraPath& path = pickPath(*scene, cfg.path);
+    for (int f = 0; f < cfg.frames; ++f) {
+      float t = cfg.frames > 1 ? path.durationS() * float(f) / float(cfg.frames - 1) : 0.0f;
+      cameras.push_back(path.sample(t));
+    }
+    cameraText = "path " + path.name;
+  } else {
+    if (!cfg.path.empty()) (void)pickPath(*scene, cfg.path);  // names the missing path
+    cameras.assign(std::size_t(cfg.frames), pickCamera(*scene, cfg.camera));
+    cameraText = "camera " + (cfg.camera.empty() ? std::string("(first bookmark)") : cfg.camera);
+  }
+
+  std::vector<std::vector<FrameSample>> samples(configs.size());
+  std::string glDescription, timingMethod;
+  int referenceEvaluations = 0;
+  {
+    gl::EglContext ctx;
+    std::vector<std::unique_ptr<ConfigRunner>> runners;
+    for (const ConfigSpec& c : configs)
+      runners.push_back(std::make_unique<ConfigRunner>(c, scene, cfg.light));
+    glDescription = runners.front()->renderer().glDescription();
+    MeasureOptions opts;
+    opts.width = cfg.width;
+    opts.height = cfg.height;
+    ReferenceCache reference(*scene);
+
+    // Warm-up at the first camera: shader variants compile on first use (llvmpipe JIT), maps
+    // are allocated, DA-RTW's rotation settles. Not measured.
+    for (int w = 0; w < cfg.warmup; ++w)
+      for (auto& r : runners) (void)r->renderAndMeasure(cameras.front(), opts, nullptr);
+    for (auto& r : runners) r->forgetPreviousFrame();
+
+    std::fprintf(stderr, "bench: %zu configurations x %d frames on %s (%s), %dx%d\n",
+                 runners.size(), cfg.frames, scene->name.c_str(), cameraText.c_str(), cfg.width,
+                 cfg.height);
+    ProgressBar progress("bench", runners.size() * std::size_t(cfg.frames));
+    for (int f = 0; f < cfg.frames; ++f) {
+      // Interleaved, and the starting configuration rotates so none always runs right
+      // after the reference (cold caches).
+      for (std::size_t k = 0; k < runners.size(); ++k) {
+        std::size_t i = (k + std::size_t(f)) % runners.size();
+        FrameSample s = runners[i]->renderAndMeasure(cameras[std::size_t(f)], opts, &reference);
+        for (const std::string& e : s.glErrors)
+          std::fprintf(stderr, "\nshadowlab-cli: GL error in %s, frame %d: %s\n",
+                       configs[i].label.c_str(), f, e.c_str());
+        if (!s.renderError.empty())
+          std::fprintf(stderr, "\nshadowlab-cli: %s, frame %d: %s\n", configs[i].label.c_str(), f,
+                       s.renderError.c_str());
+        timingMethod = s.timingMethod;
+        samples[i].push_back(std::move(s));
+        progress.step("frame " + std::to_string(f + 1) + "/" + std::to_string(cfg.frames) + "  " +
+                          configs[i].label,
+                      k + 1 == runners.size());
+      }
+    }
+    progress.finish();
+    referenceEvaluations = reference.evaluations();
+  }
+
+  // CSV: one row per configuration.
+  std::vector<ConfigSummary> sums;
+  std::vector<std::string> passNames;
+  for (const auto& frames : samples) {
+    sums.push_back(summarise(frames));
+    for (const FrameSample& f : frames)
+      for (const PassTiming& p : f.passes)
+        if (std::find(passNames.begin(), passNames.end(), p.name) == passNames.end())
+          passNames.push_back(p.name);
+  }
+  std::vector<CostPoint> costs;
+  for (const ConfigSummary& s : sums) costs.push_back({s.totalMs, s.errorPct});
+  std::vector<std::size_t> front = paretoFront(costs);
+  auto onFront = [&](std::size_t i) {
+    return std::find(front.begin(), front.end(), i) != front.end();
+  };
+
+  std::ostringstream csv;
+  csv << "scene,camera,technique,params,label,frames,width,height,timing_method,total_ms";
+  for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
+  csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
+         "aliasing_p95,aliasing_max,flicker_pct,pareto,render_errors,gl_errors,gl\n";
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    const ConfigSummary& s = sums[i];
+    csv << csvField(scene->name) << "," << csvField(cameraText) << ","
+        << csvField(configs[i].techniqueId) << "," << csvField(configs[i].paramsText()) << ","
+        << csvField(configs[i].label) << "," << samples[i].size() << "," << cfg.width << ","
+        << cfg.height << "," << csvField(s.timingMethod) << "," << number(s.totalMs);
+    for (const std::string& p : passNames)
+      csv << "," << (s.passMs.count(p) ? number(s.passMs.at(p)) : std::string());
+    csv << "," << std::uint64_t(s.texels) << "," << std::uint64_t(s.bytes) << ","
+        << number(s.errorPct) << "," << number(s.falseLitPct) << "," << number(s.falseShadowPct)
+        << "," << std::uint64_t(s.covered) << "," << number(s.aliasingMean) << ","
+        << number(s.aliasingP95) << "," << number(s.aliasingMax) << "," << number(s.flickerPct)
+        << "," << (onFront(i) ? 1 : 0) << "," << s.renderErrors << "," << s.glErrors << ","
+        << csvField(glDescription) << "\n";
+  }
+  std::string text = csv.str();
+  text.pop_back();  // writeText adds the final newline
+  writeText(cfg.csv, text);
+
+  std::printf("%-34s %9s %9s %9s %9s %9s %8s\n", "configuration", "total ms", "error %", "m mean",
+              "m p95", "flicker %", "pareto");
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    const ConfigSummary& s = sums[i];
+    std::printf("%-34s %9.2f %9.3f %9.3f %9.3f %9.4f %8s\n", configs[i].label.c_str(), s.totalMs,
+                s.errorPct, s.aliasingMean, s.aliasingP95, s.flickerPct, onFront(i) ? "*" : "");
+  }
+  std::printf("medians over %d frames (%s, %dx%d, timing %s, %d reference evaluations) -> %s\n",
+              cfg.frames, cameraText.c_str(), cfg.width, cfg.height, timingMethod.c_str(),
+              referenceEvaluations, cfg.csv.c_str());
+
+  if (!cfg.chart.empty()) {
+    std::vector<ChartRow> rows;
+    for (std::size_t i = 0; i < configs.size(); ++i)
+      rows.push_back({configs[i].techniqueId, configs[i].sets, sums[i].totalMs, sums[i].errorPct});
+    ChartSpec spec;
+    spec.yScale = cfg.chartY;
+    spec.title = "Speed against accuracy: " + scene->name + ", " + cameraText;
+    spec.subtitle = std::to_string(cfg.width) + "x" + std::to_string(cfg.height) + ", " +
+                    std::to_string(cfg.frames) + " frames (medians), timing " + timingMethod +
+                    ", " + glDescription;
+    writeChart(rows, spec, cfg.chart);
+  }
+  std::size_t bad = 0;
+  for (const ConfigSummary& s : sums) bad += s.renderErrors + s.glErrors;
+  return bad ? 1 : 0;
+}
+
+}  // namespace sl::cli

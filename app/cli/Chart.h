@@ -1,0 +1,37 @@
+// The speed-against-accuracy chart (issue 5): one point per configuration, x = time per
+// frame, y = pixel error, one colour per technique, the Pareto front (lower-left) drawn
+// as a line, each point labelled with its parameter values. Qt Charts rendered offscreen
+// to a PNG; this header is Qt-free.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sl::cli {
+
+struct ChartPoint {
+  std::string technique;  ///< series (colour); series appear in first-seen order
+  std::string label;      ///< drawn next to the point, e.g. "1024"
+  double x = 0.0, y = 0.0;
+};
+
+struct ChartSpec {
+  std::string title;
+  std::string subtitle;  ///< second title line (conditions: size, frames, timing method)
+  std::string xTitle = "time per frame, all passes (ms, median over frames)";
+  std::string yTitle = "pixel error against the exact reference (% of covered pixels)";
+  std::vector<std::string> seriesNotes;  ///< optional legend suffix per technique, same order
+  /// Error axis: "linear", "log" (needs every y > 0), or "auto": log when every y > 0 and
+  /// they span more than a factor 20 (a few outliers would squash the rest), else linear.
+  std::string yScale = "auto";
+  int width = 1280, height = 800;  ///< pixels
+};
+
+/// Renders the chart to `pngPath`. Returns an error when it cannot (no Qt Charts in this
+/// build, no points, the file cannot be written).
+std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>& points,
+                                                   const ChartSpec& spec,
+                                                   const std::string& pngPath);
+
+}  // namespace sl::cli

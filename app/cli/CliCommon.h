@@ -1,0 +1,73 @@
+// What every shadowlab-cli command shares: argument parsing helpers, the "bad input" error
+// (one line on stderr, exit 2), scene/camera/light lookup, file output and a terminal
+// progress bar.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "algo/Camera.h"
+#include "metrics/Image.h"
+#include "scene/Scene.h"
+
+namespace sl::cli {
+
+/// Bad input: one line on stderr naming the option or file and the problem, exit 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Args {
+  std::vector<std::string> rest;
+  /// The value after option `opt` at rest[i] (advances i).
+  std::string take(std::size_t& i, const std::string& opt) {
+    if (i + 1 >= rest.size()) throw UsageError(opt + ": missing value");
+    return rest[++i];
+  }
+};
+
+int parseInt(const std::string& opt, const std::string& text, int lo, int hi);
+double parseDouble(const std::string& opt, const std::string& text, double lo, double hi);
+std::pair<int, int> parseSize(const std::string& text);  ///< "WxH" for --size
+/// "AZIMUTH,ELEVATION" in degrees, validated (for --light).
+DirectionalLight parseLight(const std::string& opt, const std::string& text);
+
+std::shared_ptr<Scene> loadScene(const std::string& nameOrPath);
+/// A camera bookmark by name or index; empty: the first bookmark (or a framing camera).
+Camera pickCamera(const Scene& scene, const std::string& which,
+                  const std::string& opt = "--camera");
+/// A camera path by name or index; empty: the first path. Throws UsageError naming the
+/// scene's paths when there is none such.
+const CameraPath& pickPath(const Scene& scene, const std::string& which);
+
+/// Writes text (plus a newline), creating parent folders; UsageError when it cannot.
+void writeText(const std::string& path, const std::string& text);
+void writePng(const std::string& path, const ImageRGBA8& img);
+
+/// Seconds as "m:ss" (or "h:mm:ss").
+std::string formatDuration(double seconds);
+
+/// A progress bar on stderr with the time left. On a terminal one line redrawn in place;
+/// otherwise (logs, CI) a plain line whenever a frame completes, at most every 2 s.
+class ProgressBar {
+ public:
+  ProgressBar(std::string what, std::size_t totalSteps);
+  /// One step done; `frameDone` marks the last step of a frame (for plain-line mode).
+  void step(const std::string& detail, bool frameDone);
+  void finish();  ///< final line (elapsed time)
+
+ private:
+  void draw(const std::string& detail, bool force);
+  std::string what_;
+  std::size_t total_ = 0, done_ = 0;
+  bool tty_ = false;
+  std::chrono::steady_clock::time_point start_, lastPlain_;
+};
+
+}  // namespace sl::cli

@@ -1,0 +1,20 @@
+// The shadowlab-cli commands that live in their own files (main.cpp dispatches).
+#pragma once
+
+#include "CliCommon.h"
+
+namespace sl::cli {
+
+/// `bench`: sweeps configurations along a camera path -> CSV (+ chart). Bench.cpp.
+int cmdBench(Args& args);
+/// `stability`: one technique frame by frame (JSON), or a suite of cases with
+/// expectations (exit 1 when one fails). Stability.cpp.
+int cmdStability(Args& args);
+/// `chart`: the speed-against-accuracy chart again, from a bench CSV. Bench.cpp.
+int cmdChart(Args& args);
+
+extern const char* const kBenchUsage;
+extern const char* const kStabilityUsage;
+extern const char* const kChartUsage;
+
+}  // namespace sl::cli

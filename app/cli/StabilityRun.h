@@ -1,0 +1,93 @@
+// What both stability runs share (one technique, or a suite of cases): running
+// configurations frame by frame, the per-frame record and the summary whose names the
+// suite's expectations use. See Stability.cpp and Suite.cpp.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "CliCommon.h"
+#include "Measure.h"
+
+namespace sl::cli {
+
+/// Signed smallest difference of two angles in degrees, in [-180, 180).
+double angleStepDeg(double from, double to);
+/// A camera orbiting the point it looks at on the ground (y = scene floor), so a slow
+/// orbit keeps the same part of the scene in view; a camera looking up orbits its target.
+Camera orbitCentred(Camera cam, const Scene& scene);
+/// "%.6g".
+std::string fmt(double v);
+
+/// Per-frame record of one configuration in a stability run.
+struct StabilityFrame {
+  FrameSample sample;
+  double rotationStepDeg = 0.0;  ///< change of rotation_deg since the previous frame
+};
+
+/// Aggregates of one configuration over the counted frames (index >= warmup).
+struct StabilitySummary {
+  int framesCounted = 0;
+  int rotationChanges = 0;
+  double maxRotationStepDeg = 0.0;
+  int lastRotationChangeFrame = -1;
+  int maskChangeFrames = 0;
+  double maxMaskChangedPct = 0.0;
+  int lastMaskChangeFrame = -1;
+  double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
+  double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
+  double flickerPct = 0, flickerPctMean = 0, flickerPctMax = 0;
+  double totalMs = 0;
+  int renderErrors = 0, glErrors = 0, nonFiniteNumbers = 0;
+  bool hasRotation = false;
+
+  /// The metrics by name (the names expectations use).
+  std::map<std::string, double> metrics() const {
+    return {{"frames", framesCounted},
+            {"rotation_changes", rotationChanges},
+            {"max_rotation_step_deg", maxRotationStepDeg},
+            {"last_rotation_change_frame", lastRotationChangeFrame},
+            {"mask_change_frames", maskChangeFrames},
+            {"max_mask_changed_pct", maxMaskChangedPct},
+            {"last_mask_change_frame", lastMaskChangeFrame},
+            {"error_pct", errorPct},
+            {"false_lit_pct", falseLitPct},
+            {"false_shadow_pct", falseShadowPct},
+            {"covered_pixels", covered},
+            {"aliasing_mean", aliasingMean},
+            {"aliasing_p95", aliasingP95},
+            {"aliasing_max", aliasingMax},
+            {"flicker_pct", flickerPct},
+            {"flicker_pct_mean", flickerPctMean},
+            {"flicker_pct_max", flickerPctMax},
+            {"total_ms", totalMs},
+            {"render_errors", renderErrors},
+            {"gl_errors", glErrors},
+            {"non_finite_numbers", nonFiniteNumbers}};
+  }
+};
+
+/// Aggregates the frames with index >= warmup.
+StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, int warmup);
+nlohmann::json summaryJson(const StabilitySummary& s);
+nlohmann::json frameJson(std::size_t k, const StabilityFrame& fr);
+
+/// Runs `runners` over `cameras`, interleaved frame by frame.
+std::vector<std::vector<StabilityFrame>> runFrames(
+    std::vector<std::unique_ptr<ConfigRunner>>& runners, const std::vector<Camera>& cameras,
+    const MeasureOptions& opts, ReferenceCache* reference, ProgressBar& progress);
+
+/// `stability --suite`: runs the suite file's cases, prints the tables and expectations,
+/// writes `jsonPath` (when not empty); 1 when an expectation fails. Suite.cpp.
+int runSuite(const std::string& file, double framesScale,
+             const std::optional<std::pair<int, int>>& sizeOverride,
+             const std::vector<std::string>& onlyCases,
+             const std::vector<std::string>& onlyTechniques, const std::string& jsonPath);
+
+}  // namespace sl::cli

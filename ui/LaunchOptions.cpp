@@ -38,7 +38,7 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       QStringLiteral("N|NAME|FILE"));
   QCommandLineOption selfTest(
       QStringLiteral("self-test"),
-      QStringLiteral("Run a GUI self-test (params, bad-gltf=FILE, teaching[=DIR])."),
+      QStringLiteral("Run a GUI self-test (params, bad-gltf=FILE, teaching[=DIR], charts[=DIR])."),
       QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
   parser.addOptions({scene, technique, set, lesson, grab, grabAfter, selfTest});
@@ -75,11 +75,13 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   o.selfTest = parser.value(selfTest).section(QLatin1Char('='), 0, 0);
   o.selfTestArgument = parser.value(selfTest).section(QLatin1Char('='), 1);
   if (parser.isSet(selfTest) && o.selfTest != QLatin1String("params") &&
-      o.selfTest != QLatin1String("bad-gltf") && o.selfTest != QLatin1String("teaching")) {
+      o.selfTest != QLatin1String("bad-gltf") && o.selfTest != QLatin1String("teaching") &&
+      o.selfTest != QLatin1String("charts")) {
     out.exitCode = 2;
     out.messageIsError = true;
     out.message =
-        QStringLiteral("unknown --self-test '%1' (known: params, bad-gltf=FILE, teaching[=DIR])")
+        QStringLiteral(
+            "unknown --self-test '%1' (known: params, bad-gltf=FILE, teaching[=DIR], charts[=DIR])")
             .arg(parser.value(selfTest));
     return out;
   }

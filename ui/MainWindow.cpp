@@ -390,7 +390,7 @@ void MainWindow::applyDefaultLayout() {
   const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
   QSize size = kDefaultWindowSize;
   if (screen) size = size.boundedTo(screen->availableGeometry().size());
-  // Right: Parameters | Lesson. Left: Importance map over Covariance. Bottom: Warp
+  // Right: Parameters | Lesson | Charts. Left: Importance map over Covariance. Bottom: Warp
   // functions | Shadow map | Moment mip chain | Timing.
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {
     dock->setFloating(false);
@@ -399,6 +399,8 @@ void MainWindow::applyDefaultLayout() {
   addDockWidget(Qt::RightDockWidgetArea, paramDock_);
   addDockWidget(Qt::RightDockWidgetArea, lessonDock_);
   tabifyDockWidget(paramDock_, lessonDock_);
+  addDockWidget(Qt::RightDockWidgetArea, chartsDock_);
+  tabifyDockWidget(lessonDock_, chartsDock_);
   addDockWidget(Qt::LeftDockWidgetArea, importanceDock_);
   addDockWidget(Qt::LeftDockWidgetArea, covarianceDock_);
   splitDockWidget(importanceDock_, covarianceDock_, Qt::Vertical);

@@ -27,6 +27,7 @@ struct Publication;
 
 namespace sl::ui {
 
+class ChartsPanel;
 class CovariancePanel;
 class ImportancePanel;
 class LessonPanel;
@@ -73,7 +74,7 @@ class MainWindow : public QMainWindow {
   /// path to a preset. False (reported) when there is no such lesson or it cannot load.
   bool startLesson(const QString& lesson);
 
-  /// Runs GUI self-test `name` (params, bad-gltf=FILE, teaching=DIR) once
+  /// Runs GUI self-test `name` (params, bad-gltf=FILE, teaching=DIR, charts=DIR) once
   /// the renderer has drawn a frame: prints "ok"/"FAIL" lines, exits 0 (pass) or 1.
   void startSelfTest(const QString& name, const QString& argument);
 
@@ -157,6 +158,8 @@ class MainWindow : public QMainWindow {
   bool selfTestBadGltf(const QString& path);
   /// Pass stepping, overlays, split view and lessons; PNGs of each step into `dir`.
   bool selfTestTeaching(const QString& dir);
+  /// A tiny Charts sweep, its PNG into `dir`, and a click on a point switching the view.
+  bool selfTestCharts(const QString& dir);
   void selfTestCheck(bool ok, const QString& what);
   void runSelfTest();
   /// stderr always; status bar; a dialog titled `title` when interactive and non-empty.
@@ -184,6 +187,8 @@ class MainWindow : public QMainWindow {
   QDockWidget* warpDock_ = nullptr;
   QDockWidget* shadowMapDock_ = nullptr;
   QDockWidget* lessonDock_ = nullptr;
+  ChartsPanel* chartsPanel_ = nullptr;
+  QDockWidget* chartsDock_ = nullptr;
   /// Every dock with a panel that shows the Publication.
   std::vector<std::pair<QDockWidget*, PublicationPanel*>> publicationDocks_;
   QMenu* saveImageMenu_ = nullptr;

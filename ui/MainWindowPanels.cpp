@@ -22,6 +22,7 @@
 #include <QToolBar>
 #include <QToolButton>
 
+#include "ChartsPanel.h"
 #include "CovariancePanel.h"
 #include "ImportancePanel.h"
 #include "LaunchOptions.h"
@@ -146,6 +147,24 @@ void MainWindow::createPanelDocks() {
                              Qt::BottomDockWidgetArea);
   lessonDock_ =
       addPanelDock(lessonPanel_, tr("Lesson"), QStringLiteral("lesson"), Qt::RightDockWidgetArea);
+  chartsPanel_ = new ChartsPanel(viewport_);
+  chartsDock_ =
+      addPanelDock(chartsPanel_, tr("Charts"), QStringLiteral("charts"), Qt::RightDockWidgetArea);
+  connect(chartsPanel_, &ChartsPanel::configurationChosen, this,
+          [this](const QString& id, const QStringList& assignments) {
+            if (id.toStdString() != viewport_->techniqueId()) setTechnique(id);
+            sl::Renderer* r = viewport_->renderer();
+            if (!r || id.toStdString() != r->techniqueId()) return;
+            for (const QString& a : assignments) {
+              const std::string key = a.section(QLatin1Char('='), 0, 0).toStdString();
+              sl::ParamSet& set = r->params().has(key) ? r->params() : r->rendererParams();
+              if (auto e = set.setFromString(key, a.section(QLatin1Char('='), 1).toStdString()))
+                report(QString::fromStdString(*e));
+            }
+            rebuildParamPanel();
+            viewport_->update();
+            info(tr("Charts: showing %1 %2").arg(id, assignments.join(QLatin1Char(' '))));
+          });
   for (QDockWidget* dock : {paramDock_, timingDock_}) {
     auto* save = new QAction(tr("Save image of this panel…"), dock);
     connect(save, &QAction::triggered, this, [this, dock] { savePanelImage(dock); });
@@ -159,8 +178,8 @@ void MainWindow::createPanelDocks() {
                        {shadowMapDock_, shadowMapPanel_},
                        {momentDock_, momentPanel_}};
   int key = Qt::Key_3;
-  for (QDockWidget* dock :
-       {importanceDock_, covarianceDock_, warpDock_, shadowMapDock_, momentDock_, lessonDock_}) {
+  for (QDockWidget* dock : {importanceDock_, covarianceDock_, warpDock_, shadowMapDock_,
+                            momentDock_, lessonDock_, chartsDock_}) {
     QAction* toggle = dock->toggleViewAction();
     toggle->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(key++)));
     toggle->setShortcutContext(Qt::ApplicationShortcut);

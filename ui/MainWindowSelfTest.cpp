@@ -22,6 +22,7 @@
 #include <QStatusBar>
 #include <QTimer>
 
+#include "ChartsPanel.h"
 #include "LessonPanel.h"
 #include "MainWindow.h"
 #include "ParamPanel.h"
@@ -100,12 +101,76 @@ void MainWindow::runSelfTest() {
     ran = selfTestParams();
   else if (selfTest_ == QLatin1String("teaching"))
     ran = selfTestTeaching(selfTestArgument_);
+  else if (selfTest_ == QLatin1String("charts"))
+    ran = selfTestCharts(selfTestArgument_);
   else
     ran = selfTestBadGltf(selfTestArgument_);
   const bool pass = ran && selfTestFailures_ == 0;
   std::printf("%s\n", pass ? "PASS" : "FAIL");
   std::fflush(stdout);
   QCoreApplication::exit(pass ? 0 : 1);
+}
+
+bool MainWindow::selfTestCharts(const QString& dir) {
+  chartsDock_->show();
+  chartsDock_->raise();
+  QCoreApplication::processEvents();
+  // 2 configurations x 2 frames: uniform at two resolutions that differ from the view's.
+  sl::Renderer* r = viewport_->renderer();
+  const int shownResolution = r->paramsOf("uniform").getInt("resolution");
+  const int wanted = shownResolution == 256 ? 512 : 256;
+  chartsPanel_->setSweepText(QStringLiteral("uniform:resolution=%1,2048").arg(wanted));
+  chartsPanel_->setFramesPerConfig(2);
+  bool finished = false, completed = false;
+  const auto connection = connect(chartsPanel_, &ChartsPanel::sweepFinished, this,
+                                  [&](bool c) { finished = true, completed = c; });
+  // Cancel: a sweep stopped after its first frame reports itself not completed.
+  bool cancelled = chartsPanel_->startSweep();
+  QCoreApplication::processEvents();
+  chartsPanel_->cancelSweep();
+  cancelled = cancelled && finished && !completed && !chartsPanel_->running();
+  selfTestCheck(cancelled, QStringLiteral("Cancel stops a running sweep"));
+  finished = completed = false;
+  const bool started = chartsPanel_->startSweep();
+  selfTestCheck(started, QStringLiteral("the sweep starts"));
+  if (!started) return false;
+  QElapsedTimer clock;
+  clock.start();
+  while (!finished && clock.elapsed() < 40000)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+  disconnect(connection);
+  selfTestCheck(finished && completed, QStringLiteral("the sweep completes"));
+  const auto& configs = chartsPanel_->configs();
+  bool measured = configs.size() == 2;
+  for (const auto& c : configs) {
+    measured = measured && c.done && c.ms.size() == 2 && c.medianMs > 0.0 &&
+               std::isfinite(c.medianErrorPct) && c.medianErrorPct >= 0.0;
+    std::printf("     %s: %.3g ms, %.3g %% error\n", qPrintable(c.label), c.medianMs,
+                c.medianErrorPct);
+  }
+  selfTestCheck(measured, QStringLiteral("2 configurations x 2 frames measured"));
+  if (!measured) return false;
+  QCoreApplication::processEvents();
+  if (!dir.isEmpty()) {
+    QDir().mkpath(dir);
+    const QString png = QDir(dir).filePath(QStringLiteral("panel-charts.png"));
+    selfTestCheck(chartsDock_->grab().toImage().save(png), QStringLiteral("saved ") + png);
+  }
+  // A click on the first point (the slot the scatter series' clicked signal calls), from
+  // another technique.
+  setTechnique(QStringLiteral("rtw-backward"));
+  chartsPanel_->choose(0);
+  waitForFrames(1);
+  r = viewport_->renderer();
+  selfTestCheck(r && r->techniqueId() == "uniform",
+                QStringLiteral("clicking a point switches the technique to uniform"));
+  selfTestCheck(r && r->params().getInt("resolution") == wanted,
+                QStringLiteral("clicking a point sets resolution=%1").arg(wanted));
+  const int index =
+      techniqueCombo_->findData(QString::fromStdString(r ? r->techniqueId() : std::string()));
+  selfTestCheck(index >= 0 && techniqueCombo_->currentIndex() == index,
+                QStringLiteral("the technique combo follows"));
+  return true;
 }
 
 void MainWindow::selfTestCheck(bool ok, const QString& what) {

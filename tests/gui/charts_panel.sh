@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The Charts panel (shadowlab --self-test charts=DIR, see ui/MainWindowSelfTest.cpp): a tiny
+# sweep (uniform at 2 resolutions x 2 frames) runs to completion, the chart is saved as
+# panel-charts.png, and a click on a point switches the view to that configuration
+# (technique, resolution, technique combo).
+# usage: charts_panel.sh <shadowlab> <tests/data dir> <out dir>
+set -euo pipefail
+app=$1
+out=$3/charts_panel
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/xvfb.bash"
+rm -rf "$out" && mkdir -p "$out"
+start_xvfb
+
+rc=0
+timeout 90 "$app" --scene plane-box --technique rtw-backward --self-test "charts=$out" \
+  >"$out/stdout" 2>"$out/stderr" || rc=$?
+cat "$out/stdout"
+if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/stdout"; then
+  echo "FAIL: self-test charts exited with $rc; stderr:"
+  cat "$out/stderr"
+  exit 1
+fi
+[[ -s "$out/panel-charts.png" ]] || { echo "FAIL: no panel-charts.png"; exit 1; }
+echo "PASS"

@@ -1,0 +1,445 @@
+#include "ChartsPanel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QCursor>
+#include <QProgressBar>
+#include <QRegularExpression>
+#include <QToolTip>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+#include <QtCharts/QLegend>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QLogValueAxis>
+#include <QtCharts/QScatterSeries>
+#include <QtCharts/QValueAxis>
+
+#include "ViewportWidget.h"
+#include "algo/metrics/BenchStats.h"
+
+namespace sl::ui {
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 180;
+
+/// The CLI chart's colours (Okabe-Ito palette).
+QColor techniqueColor(std::size_t i) {
+  static const QColor kPalette[] = {
+      QColor(0, 114, 178), QColor(213, 94, 0),   QColor(0, 158, 115),   QColor(204, 121, 167),
+      QColor(230, 159, 0), QColor(86, 180, 233), QColor(120, 120, 120), QColor(240, 228, 66)};
+  return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
+}
+
+/// Upper end of an axis from 0 and its tick count (round steps), as in the CLI chart.
+std::pair<double, int> niceAxis(double v) {
+  if (!(v > 0.0)) return {1.0, 5};
+  const double p = std::pow(10.0, std::floor(std::log10(v)));
+  for (double step : {0.1 * p, 0.2 * p, 0.5 * p, p, 2.0 * p, 5.0 * p}) {
+    const int n = int(std::ceil(v / step - 1e-9));
+    if (n <= 10) return {n * step, n + 1};
+  }
+  return {10.0 * p, 11};
+}
+
+double medianOf(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  return sl::median(v);
+}
+
+}  // namespace
+
+ChartsPanel::ChartsPanel(ViewportWidget* viewport, QWidget* parent)
+    : QWidget(parent), viewport_(viewport) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  auto* row = new QHBoxLayout;
+  sweepEdit_ = new QLineEdit;
+  sweepEdit_->setObjectName(QStringLiteral("chartsSweep"));
+  sweepEdit_->setPlaceholderText(tr("current technique and uniform at 3 resolutions"));
+  sweepEdit_->setToolTip(
+      tr("Configurations, as in shadowlab-cli bench --technique: ID[:KEY=V1,V2,...], several "
+         "separated by spaces (e.g. \"uniform:resolution=512,1024 rtw-backward\"). Empty: the "
+         "technique shown and uniform at 3 resolutions each."));
+  row->addWidget(sweepEdit_, 1);
+  framesSpin_ = new QSpinBox;
+  framesSpin_->setRange(1, 100);
+  framesSpin_->setValue(frames_);
+  framesSpin_->setSuffix(tr(" frames"));
+  framesSpin_->setToolTip(tr("Frames per configuration, along the scene's camera path"));
+  row->addWidget(framesSpin_);
+  runButton_ = new QPushButton(tr("Run"));
+  runButton_->setObjectName(QStringLiteral("chartsRun"));
+  connect(runButton_, &QPushButton::clicked, this, [this] { startSweep(); });
+  row->addWidget(runButton_);
+  cancelButton_ = new QPushButton(tr("Cancel"));
+  cancelButton_->setEnabled(false);
+  connect(cancelButton_, &QPushButton::clicked, this, &ChartsPanel::cancelSweep);
+  row->addWidget(cancelButton_);
+  layout->addLayout(row);
+
+  progress_ = new QProgressBar;
+  progress_->setRange(0, 1);
+  progress_->setValue(0);
+  layout->addWidget(progress_);
+  status_ =
+      new QLabel(tr("Run a sweep to chart speed against accuracy for this scene; click a "
+                    "point to view that configuration."));
+  status_->setWordWrap(true);
+  layout->addWidget(status_);
+
+  chartView_ = new QChartView;
+  chartView_->setRenderHint(QPainter::Antialiasing);
+  chartView_->setMinimumSize(300, 220);
+  layout->addWidget(chartView_, 1);
+  redrawChart();
+
+  timer_.setInterval(0);
+  connect(&timer_, &QTimer::timeout, this, &ChartsPanel::tick);
+  // The sweep's renderer lives on the viewport's context: it goes before the context does.
+  connect(viewport_, &ViewportWidget::rendererAboutToBeDestroyed, this, [this] {
+    if (running()) finish(false);
+    releaseRenderer();
+  });
+}
+
+ChartsPanel::~ChartsPanel() {
+  releaseRenderer();
+}
+
+void ChartsPanel::releaseRenderer() {
+  timer_.stop();
+  if (!renderer_ && !target_) return;
+  if (viewport_ && viewport_->context() && viewport_->context()->isValid()) {
+    viewport_->makeCurrent();
+    target_.reset();
+    renderer_.reset();
+    viewport_->doneCurrent();
+  } else {  // no context: the GL objects went with it
+    (void)target_.release();
+    (void)renderer_.release();
+  }
+}
+
+void ChartsPanel::setSweepText(const QString& text) {
+  sweepEdit_->setText(text);
+}
+void ChartsPanel::setFramesPerConfig(int frames) {
+  framesSpin_->setValue(frames);
+}
+
+QString ChartsPanel::defaultSweepText() const {
+  const QString current = QString::fromStdString(viewport_->techniqueId());
+  QStringList parts;
+  auto add = [&](const QString& id) {
+    const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id.toStdString());
+    if (!info) return;
+    const bool hasRes = std::any_of(info->params.begin(), info->params.end(),
+                                    [](const sl::ParamDecl& d) { return d.key == "resolution"; });
+    parts << (hasRes ? id + QStringLiteral(":resolution=512,1024,2048") : id);
+  };
+  if (!current.isEmpty() && current != QLatin1String("uniform")) add(current);
+  add(QStringLiteral("uniform"));
+  return parts.join(QLatin1Char(' '));
+}
+
+QString ChartsPanel::parseSweep(const QString& text) {
+  configs_.clear();
+  const QStringList items =
+      text.split(QRegularExpression(QStringLiteral("[\\s;]+")), Qt::SkipEmptyParts);
+  if (items.isEmpty()) return tr("no configurations");
+  for (const QString& item : items) {
+    const QStringList parts = item.split(QLatin1Char(':'));
+    const QString id = parts.front();
+    const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id.toStdString());
+    if (!info) return tr("unknown technique '%1'").arg(id);
+    sl::ParamSet own(info->params), shared(sl::rendererParamDecls());
+    // Cartesian product of the listed values, last key fastest.
+    std::vector<QStringList> combos{{}};
+    for (int k = 1; k < parts.size(); ++k) {
+      const QString key = parts[k].section(QLatin1Char('='), 0, 0);
+      const QStringList values =
+          parts[k].section(QLatin1Char('='), 1).split(QLatin1Char(','), Qt::SkipEmptyParts);
+      if (key.isEmpty() || values.isEmpty())
+        return tr("'%1': expected KEY=V1,V2,... after ':'").arg(parts[k]);
+      sl::ParamSet* set = own.has(key.toStdString())      ? &own
+                          : shared.has(key.toStdString()) ? &shared
+                                                          : nullptr;
+      if (!set) return tr("%1 has no parameter '%2'").arg(id, key);
+      for (const QString& v : values)
+        if (auto e = set->setFromString(key.toStdString(), v.toStdString()))
+          return QString::fromStdString(*e);
+      std::vector<QStringList> next;
+      for (const QStringList& c : combos)
+        for (const QString& v : values) next.push_back(c + QStringList{key + '=' + v});
+      combos = std::move(next);
+    }
+    for (const QStringList& c : combos) {
+      Config config;
+      config.techniqueId = id;
+      config.assignments = c;
+      config.label = c.isEmpty() ? id : id + ' ' + c.join(' ');
+      configs_.push_back(std::move(config));
+    }
+  }
+  return {};
+}
+
+bool ChartsPanel::startSweep() {
+  if (running()) return false;
+  if (!viewport_ || !viewport_->renderer() || !viewport_->scene()) {
+    status_->setText(tr("The view is not ready."));
+    return false;
+  }
+  QString text = sweepEdit_->text().trimmed();
+  if (text.isEmpty()) text = defaultSweepText();
+  if (QString error = parseSweep(text); !error.isEmpty()) {
+    status_->setText(tr("Sweep: %1").arg(error));
+    configs_.clear();
+    redrawChart();
+    return false;
+  }
+  frames_ = framesSpin_->value();
+  configIndex_ = 0;
+  frameIndex_ = 0;
+  progress_->setRange(0, int(configs_.size()) * frames_);
+  progress_->setValue(0);
+  runButton_->setEnabled(false);
+  cancelButton_->setEnabled(true);
+  status_->setText(tr("Measuring %1 configurations × %2 frames at %3×%4…")
+                       .arg(configs_.size())
+                       .arg(frames_)
+                       .arg(kWidth)
+                       .arg(kHeight));
+  redrawChart();
+  timer_.start();
+  return true;
+}
+
+void ChartsPanel::cancelSweep() {
+  if (!running()) return;
+  finish(false);
+}
+
+void ChartsPanel::finish(bool completed) {
+  timer_.stop();
+  runButton_->setEnabled(true);
+  cancelButton_->setEnabled(false);
+  int done = 0;
+  for (const Config& c : configs_) done += c.done ? 1 : 0;
+  status_->setText(
+      completed ? tr("%1 configurations measured (medians of %2 frames at %3×%4). "
+                     "Click a point to view it.")
+                      .arg(done)
+                      .arg(frames_)
+                      .arg(kWidth)
+                      .arg(kHeight)
+                : tr("Cancelled after %1 of %2 configurations.").arg(done).arg(configs_.size()));
+  redrawChart();
+  Q_EMIT sweepFinished(completed);
+}
+
+void ChartsPanel::tick() {
+  sl::Renderer* main = viewport_ ? viewport_->renderer() : nullptr;
+  if (!main || !viewport_->scene() || configIndex_ >= int(configs_.size())) {
+    finish(configIndex_ >= int(configs_.size()));
+    return;
+  }
+  Config& config = configs_[std::size_t(configIndex_)];
+  QString problem;
+  viewport_->makeCurrent();
+  try {
+    if (!renderer_) {
+      sl::RendererOptions options;
+      options.debugOutput = false;  // the viewport's renderer keeps the debug callback
+      renderer_ = std::make_unique<sl::Renderer>(options);
+    }
+    if (!target_) target_ = std::make_unique<QOpenGLFramebufferObject>(kWidth, kHeight);
+    if (frameIndex_ == 0) {
+      if (renderer_->scene() != viewport_->scene()) renderer_->setScene(viewport_->scene());
+      if (auto e = renderer_->setTechnique(config.techniqueId.toStdString()))
+        throw std::runtime_error(*e);
+      // Start from the view's values, then the configuration's.
+      sl::ParamSet& own = renderer_->params();
+      const sl::ParamSet& mainOwn = main->paramsOf(config.techniqueId.toStdString());
+      for (const sl::ParamDecl& d : own.decls()) own.set(d.key, mainOwn.get(d.key));
+      sl::ParamSet& shared = renderer_->rendererParams();
+      for (const sl::ParamDecl& d : shared.decls())
+        shared.set(d.key, main->rendererParams().get(d.key));
+      for (const QString& a : config.assignments) {
+        const std::string key = a.section('=', 0, 0).toStdString();
+        const std::string value = a.section('=', 1).toStdString();
+        sl::ParamSet& set = own.has(key) ? own : shared;
+        if (auto e = set.setFromString(key, value)) throw std::runtime_error(*e);
+      }
+      renderer_->resetTemporalState();
+      renderer_->setLight(viewport_->light());
+    }
+    sl::Camera camera = viewport_->camera();
+    const sl::Scene& scene = *viewport_->scene();
+    if (!scene.paths.empty() && !scene.paths[0].keys.empty()) {
+      const float t =
+          frames_ > 1 ? scene.paths[0].durationS() * float(frameIndex_) / float(frames_ - 1) : 0.0f;
+      camera = scene.paths[0].sample(t);
+    }
+    renderer_->setCamera(camera);
+    if (auto e = renderer_->renderFrame(kWidth, kHeight, target_->handle()))
+      problem = QString::fromStdString(*e);
+    config.ms.push_back(renderer_->stats().totalMs);
+    config.errorPct.push_back(renderer_->computeError().stats.errorPct);
+  } catch (const std::exception& e) {
+    problem = QString::fromUtf8(e.what());
+  }
+  viewport_->doneCurrent();
+  if (!problem.isEmpty()) {
+    status_->setText(tr("%1: %2").arg(config.label, problem));
+    configIndex_ = int(configs_.size());
+    finish(false);
+    return;
+  }
+  progress_->setValue(configIndex_ * frames_ + frameIndex_ + 1);
+  if (++frameIndex_ >= frames_) {
+    config.medianMs = medianOf(config.ms);
+    config.medianErrorPct = medianOf(config.errorPct);
+    config.done = true;
+    frameIndex_ = 0;
+    ++configIndex_;
+    redrawChart();
+    if (configIndex_ >= int(configs_.size())) finish(true);
+  }
+}
+
+void ChartsPanel::redrawChart() {
+  auto* chart = new QChart();
+  chart->setTitle(QStringLiteral("<b>%1</b><br>%2")
+                      .arg(tr("Speed against accuracy"),
+                           viewport_ && viewport_->scene()
+                               ? QString::fromStdString(viewport_->scene()->name).toHtmlEscaped()
+                               : QString()));
+  chart->setBackgroundBrush(Qt::white);
+  chart->setAnimationOptions(QChart::NoAnimation);
+  chart->legend()->setAlignment(Qt::AlignBottom);
+  chart->legend()->setBackgroundVisible(false);
+
+  std::vector<std::size_t> shown;
+  double maxX = 0.0, maxY = 0.0, minY = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < configs_.size(); ++i) {
+    const Config& c = configs_[i];
+    if (!c.done || !std::isfinite(c.medianMs) || !std::isfinite(c.medianErrorPct)) continue;
+    shown.push_back(i);
+    maxX = std::max(maxX, c.medianMs);
+    maxY = std::max(maxY, c.medianErrorPct);
+    minY = std::min(minY, c.medianErrorPct);
+  }
+  auto* axisX = new QValueAxis();
+  axisX->setTitleText(tr("frame time, ms (median)"));
+  const auto [xMax, xTicks] = niceAxis(maxX * 1.08);
+  axisX->setRange(0.0, xMax);
+  axisX->setTickCount(xTicks);
+  axisX->setLabelFormat(QStringLiteral("%.3g"));
+  QAbstractAxis* axisY = nullptr;
+  if (minY > 0.0 && maxY / minY > 20.0) {
+    auto* a = new QLogValueAxis();
+    a->setBase(10.0);
+    a->setRange(minY / 1.6, maxY * 1.6);
+    a->setMinorTickCount(8);
+    a->setLabelFormat(QStringLiteral("%g"));
+    a->setTitleText(tr("shadow error, % of covered pixels (median), log scale"));
+    axisY = a;
+  } else {
+    auto* a = new QValueAxis();
+    const auto [yMax, yTicks] = niceAxis(maxY * 1.12);
+    a->setRange(0.0, yMax);
+    a->setTickCount(yTicks);
+    a->setLabelFormat(QStringLiteral("%.3g"));
+    a->setTitleText(tr("shadow error, % of covered pixels (median)"));
+    axisY = a;
+  }
+  chart->addAxis(axisX, Qt::AlignBottom);
+  chart->addAxis(axisY, Qt::AlignLeft);
+
+  std::vector<sl::CostPoint> costs;
+  for (std::size_t i : shown) costs.push_back({configs_[i].medianMs, configs_[i].medianErrorPct});
+  auto* front = new QLineSeries();
+  front->setName(tr("Pareto front"));
+  QPen frontPen(QColor(40, 40, 40));
+  frontPen.setWidthF(1.6);
+  frontPen.setStyle(Qt::DashLine);
+  front->setPen(frontPen);
+  for (std::size_t k : sl::paretoFront(costs))
+    front->append(configs_[shown[k]].medianMs, configs_[shown[k]].medianErrorPct);
+  chart->addSeries(front);
+  front->attachAxis(axisX);
+  front->attachAxis(axisY);
+
+  std::vector<QString> order;
+  std::map<QString, QScatterSeries*> series;
+  for (std::size_t i : shown) {
+    const QString& id = configs_[i].techniqueId;
+    if (!series.count(id)) {
+      auto* s = new QScatterSeries();
+      const QColor color = techniqueColor(order.size());
+      s->setName(id);
+      s->setColor(color);
+      s->setBorderColor(color.darker(140));
+      s->setMarkerShape(QScatterSeries::MarkerShapeCircle);
+      s->setMarkerSize(11.0);
+      series[id] = s;
+      order.push_back(id);
+    }
+    series[id]->append(configs_[i].medianMs, configs_[i].medianErrorPct);
+  }
+  for (const QString& id : order) {
+    QScatterSeries* s = series[id];
+    chart->addSeries(s);
+    s->attachAxis(axisX);
+    s->attachAxis(axisY);
+    // A click: the configuration of this technique nearest to the clicked point.
+    connect(s, &QScatterSeries::clicked, this, [this, id](const QPointF& p) {
+      int best = -1;
+      double bestD = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < configs_.size(); ++i) {
+        const Config& c = configs_[i];
+        if (!c.done || c.techniqueId != id) continue;
+        const double d = std::hypot(c.medianMs - p.x(), c.medianErrorPct - p.y());
+        if (d < bestD) bestD = d, best = int(i);
+      }
+      if (best >= 0) choose(best);
+    });
+    connect(s, &QScatterSeries::hovered, this, [this, id](const QPointF& p, bool state) {
+      if (!state) return QToolTip::hideText();
+      for (const Config& c : configs_)
+        if (c.done && c.techniqueId == id && c.medianMs == p.x() && c.medianErrorPct == p.y())
+          QToolTip::showText(QCursor::pos(), tr("%1\n%2 ms, %3 % error\nclick to view it")
+                                                 .arg(c.label)
+                                                 .arg(c.medianMs, 0, 'g', 3)
+                                                 .arg(c.medianErrorPct, 0, 'g', 3));
+    });
+  }
+  QChart* old = chartView_->chart();
+  chartView_->setChart(chart);
+  delete old;
+}
+
+void ChartsPanel::choose(int index) {
+  if (index < 0 || index >= int(configs_.size())) return;
+  const Config& c = configs_[std::size_t(index)];
+  status_->setText(tr("Showing %1 (%2 ms, %3 % error in the sweep).")
+                       .arg(c.label)
+                       .arg(c.medianMs, 0, 'g', 3)
+                       .arg(c.medianErrorPct, 0, 'g', 3));
+  Q_EMIT configurationChosen(c.techniqueId, c.assignments);
+}
+
+}  // namespace sl::ui

@@ -1,0 +1,96 @@
+// The Charts panel: runs a small speed-against-accuracy sweep of the current scene (the
+// CLI's `bench` in miniature: configurations "ID[:KEY=V1,V2]...", N frames along the
+// scene's camera path, medians of frame time and shadow error) on the GUI thread, one frame
+// per timer tick, with a progress bar and Cancel, and draws the same scatter chart with its
+// Pareto front as results arrive. Clicking a point asks the main window to switch the view
+// to that configuration (configurationChosen).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <QPointer>
+#include <QStringList>
+#include <QTimer>
+#include <QWidget>
+
+#include "core/Renderer.h"
+
+class QChart;
+class QChartView;
+class QLabel;
+class QLineEdit;
+class QOpenGLFramebufferObject;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace sl::ui {
+
+class ViewportWidget;
+
+class ChartsPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  /// One configuration of the sweep and what it measured.
+  struct Config {
+    QString techniqueId;
+    QStringList assignments;  ///< "KEY=VALUE", technique or shared parameters
+    QString label;            ///< "uniform resolution=1024"
+    std::vector<double> ms, errorPct;
+    double medianMs = 0.0, medianErrorPct = 0.0;
+    bool done = false;
+  };
+
+  explicit ChartsPanel(ViewportWidget* viewport, QWidget* parent = nullptr);
+  ~ChartsPanel() override;
+
+  /// The sweep text, "ID[:KEY=V1,V2,...] ..." (empty: the default for the technique shown).
+  void setSweepText(const QString& text);
+  void setFramesPerConfig(int frames);
+  /// Starts the sweep (false, with the reason in the status line, on a bad sweep text).
+  bool startSweep();
+  void cancelSweep();
+  bool running() const { return timer_.isActive(); }
+  const std::vector<Config>& configs() const { return configs_; }
+  /// What a click on configuration `index` does (emits configurationChosen).
+  void choose(int index);
+  /// Drops the sweep renderer (call with nothing else using the context; the viewport's
+  /// renderer is about to go).
+  void releaseRenderer();
+
+  QSize sizeHint() const override { return {520, 420}; }
+
+ Q_SIGNALS:
+  void configurationChosen(const QString& techniqueId, const QStringList& assignments);
+  /// The sweep finished (or was cancelled, `completed` false).
+  void sweepFinished(bool completed);
+
+ private:
+  void tick();
+  void finish(bool completed);
+  void redrawChart();
+  QString defaultSweepText() const;
+  /// Parses the sweep text into configs_; the error, or empty.
+  QString parseSweep(const QString& text);
+
+  QPointer<ViewportWidget> viewport_;  ///< (gone first when the window closes)
+  QLineEdit* sweepEdit_ = nullptr;
+  QSpinBox* framesSpin_ = nullptr;
+  QPushButton* runButton_ = nullptr;
+  QPushButton* cancelButton_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QLabel* status_ = nullptr;
+  QChartView* chartView_ = nullptr;
+
+  std::vector<Config> configs_;
+  std::unique_ptr<sl::Renderer> renderer_;  ///< the sweep's own, on the viewport's context
+  std::unique_ptr<QOpenGLFramebufferObject> target_;
+  QTimer timer_;
+  int configIndex_ = 0, frameIndex_ = 0, frames_ = 6;
+};
+
+}  // namespace sl::ui

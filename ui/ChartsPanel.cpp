@@ -34,23 +34,9 @@ namespace {
 
 constexpr int kWidth = 320, kHeight = 180;
 
-/// The CLI chart's colours (Okabe-Ito palette).
 QColor techniqueColor(std::size_t i) {
-  static const QColor kPalette[] = {
-      QColor(0, 114, 178), QColor(213, 94, 0),   QColor(0, 158, 115),   QColor(204, 121, 167),
-      QColor(230, 159, 0), QColor(86, 180, 233), QColor(120, 120, 120), QColor(240, 228, 66)};
-  return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
-}
-
-/// Upper end of an axis from 0 and its tick count (round steps), as in the CLI chart.
-std::pair<double, int> niceAxis(double v) {
-  if (!(v > 0.0)) return {1.0, 5};
-  const double p = std::pow(10.0, std::floor(std::log10(v)));
-  for (double step : {0.1 * p, 0.2 * p, 0.5 * p, p, 2.0 * p, 5.0 * p}) {
-    const int n = int(std::ceil(v / step - 1e-9));
-    if (n <= 10) return {n * step, n + 1};
-  }
-  return {10.0 * p, 11};
+  const auto rgb = sl::chartColorRgb(i);
+  return QColor(rgb[0], rgb[1], rgb[2]);
 }
 
 double medianOf(std::vector<double> v) {
@@ -344,7 +330,7 @@ void ChartsPanel::redrawChart() {
   }
   auto* axisX = new QValueAxis();
   axisX->setTitleText(tr("frame time, ms (median)"));
-  const auto [xMax, xTicks] = niceAxis(maxX * 1.08);
+  const auto [xMax, xTicks] = sl::niceAxisRange(maxX * 1.08);
   axisX->setRange(0.0, xMax);
   axisX->setTickCount(xTicks);
   axisX->setLabelFormat(QStringLiteral("%.3g"));
@@ -359,7 +345,7 @@ void ChartsPanel::redrawChart() {
     axisY = a;
   } else {
     auto* a = new QValueAxis();
-    const auto [yMax, yTicks] = niceAxis(maxY * 1.12);
+    const auto [yMax, yTicks] = sl::niceAxisRange(maxY * 1.12);
     a->setRange(0.0, yMax);
     a->setTickCount(yTicks);
     a->setLabelFormat(QStringLiteral("%.3g"));

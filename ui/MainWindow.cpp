@@ -238,16 +238,23 @@ void MainWindow::createActions() {
     if (!a->shortcut().isEmpty()) commandActions_ << a;
 }
 
-void MainWindow::createToolBar() {
-  QToolBar* bar = addToolBar(tr("Main"));
-  bar->setObjectName(QStringLiteral("mainToolBar"));
+QToolBar* MainWindow::addFixedToolBar(const QString& title, const QString& objectName) {
+  QToolBar* bar = addToolBar(title);
+  bar->setObjectName(objectName);
   bar->setMovable(false);
   bar->setFloatable(false);
-  auto addLabel = [bar](const QString& text) {
-    auto* label = new QLabel(text);
-    label->setContentsMargins(8, 0, 4, 0);
-    bar->addWidget(label);
-  };
+  return bar;
+}
+
+void MainWindow::addToolBarLabel(QToolBar* bar, const QString& text) {
+  auto* label = new QLabel(text);
+  label->setContentsMargins(8, 0, 4, 0);
+  bar->addWidget(label);
+}
+
+void MainWindow::createToolBar() {
+  QToolBar* bar = addFixedToolBar(tr("Main"), QStringLiteral("mainToolBar"));
+  auto addLabel = [bar](const QString& text) { addToolBarLabel(bar, text); };
 
   addLabel(tr("Scene"));
   sceneCombo_ = new QComboBox;

@@ -16,6 +16,7 @@
 #include <QTimer>
 
 class QComboBox;
+class QToolBar;
 class QDockWidget;
 class QLabel;
 class QSlider;
@@ -86,6 +87,9 @@ class MainWindow : public QMainWindow {
  private:
   void createActions();
   void createToolBar();
+  /// A toolbar that cannot be moved or floated (layout stays predictable for lessons).
+  QToolBar* addFixedToolBar(const QString& title, const QString& objectName);
+  static void addToolBarLabel(QToolBar* bar, const QString& text);
   void createDocks();
   void createStatusBar();
   void restoreSettings();

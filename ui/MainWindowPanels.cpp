@@ -51,15 +51,8 @@ QString firstParagraph(const std::string& text) {
 // --- Construction --------------------------------------------------------------------------
 
 void MainWindow::createTeachingToolBar() {
-  QToolBar* bar = addToolBar(tr("Teaching"));
-  bar->setObjectName(QStringLiteral("teachingToolBar"));
-  bar->setMovable(false);
-  bar->setFloatable(false);
-  auto addLabel = [bar](const QString& text) {
-    auto* label = new QLabel(text);
-    label->setContentsMargins(8, 0, 4, 0);
-    bar->addWidget(label);
-  };
+  QToolBar* bar = addFixedToolBar(tr("Teaching"), QStringLiteral("teachingToolBar"));
+  auto addLabel = [bar](const QString& text) { addToolBarLabel(bar, text); };
 
   // Overlay: the choices come from the declaration of the shared `view.overlay` parameter.
   addLabel(tr("Overlay"));

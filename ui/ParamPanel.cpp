@@ -32,52 +32,32 @@ namespace {
 constexpr int kMaxSliderSteps = 1000;
 constexpr double kWideRange = 1e12;  ///< editors take anything; ParamSet judges
 
-/// Integer spin box whose arrows stop at the declared range but whose text accepts any
-/// integer (the value is then checked, and possibly refused, by ParamSet::set).
-class DeclSpinBox : public QSpinBox {
+// Spin boxes that accept any typed value (ParamSet judges the range and names it when it
+// refuses) but whose arrows stop at the declared range.
+template <typename Base, typename T>
+class DeclRangeSpinBox : public Base {
  public:
-  DeclSpinBox(int lo, int hi, QWidget* parent) : QSpinBox(parent), lo_(lo), hi_(hi) {
-    setRange(INT_MIN / 2, INT_MAX / 2);
+  DeclRangeSpinBox(T lo, T hi, T wideRange) : lo_(lo), hi_(hi) {
+    this->setRange(-wideRange, wideRange);
   }
   void stepBy(int steps) override {
-    const long long v =
-        static_cast<long long>(value()) + static_cast<long long>(steps) * singleStep();
-    setValue(static_cast<int>(std::clamp<long long>(v, lo_, hi_)));
+    const double v = double(this->value()) + double(steps) * double(this->singleStep());
+    this->setValue(static_cast<T>(std::clamp<double>(v, double(lo_), double(hi_))));
   }
 
  protected:
-  StepEnabled stepEnabled() const override {
-    StepEnabled e = StepNone;
-    if (value() < hi_) e |= StepUpEnabled;
-    if (value() > lo_) e |= StepDownEnabled;
+  typename Base::StepEnabled stepEnabled() const override {
+    typename Base::StepEnabled e = Base::StepNone;
+    if (this->value() < hi_) e |= Base::StepUpEnabled;
+    if (this->value() > lo_) e |= Base::StepDownEnabled;
     return e;
   }
 
  private:
-  int lo_, hi_;
+  T lo_, hi_;
 };
-
-class DeclDoubleSpinBox : public QDoubleSpinBox {
- public:
-  DeclDoubleSpinBox(double lo, double hi, QWidget* parent)
-      : QDoubleSpinBox(parent), lo_(lo), hi_(hi) {
-    setRange(-kWideRange, kWideRange);
-  }
-  void stepBy(int steps) override {
-    setValue(std::clamp(value() + steps * singleStep(), lo_, hi_));
-  }
-
- protected:
-  StepEnabled stepEnabled() const override {
-    StepEnabled e = StepNone;
-    if (value() < hi_) e |= StepUpEnabled;
-    if (value() > lo_) e |= StepDownEnabled;
-    return e;
-  }
-
- private:
-  double lo_, hi_;
-};
+using DeclSpinBox = DeclRangeSpinBox<QSpinBox, int>;
+using DeclDoubleSpinBox = DeclRangeSpinBox<QDoubleSpinBox, double>;
 
 /// Stops the wheel from changing unfocused editors while the panel is scrolled.
 class WheelGuard : public QObject {
@@ -326,7 +306,7 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
       QAbstractSpinBox* spin = nullptr;
       std::function<void(double)> setSpin;
       if (isInt) {
-        auto* s = new DeclSpinBox(static_cast<int>(lo), static_cast<int>(hi), nullptr);
+        auto* s = new DeclSpinBox(static_cast<int>(lo), static_cast<int>(hi), INT_MAX / 2);
         s->setSingleStep(static_cast<int>(std::max(1.0, step)));
         connect(s, &QSpinBox::valueChanged, this, [this, &params, &decl](int v) {
           if (!commit(params, decl, v)) refreshValues();
@@ -337,7 +317,7 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
         };
         spin = s;
       } else {
-        auto* s = new DeclDoubleSpinBox(lo, hi, nullptr);
+        auto* s = new DeclDoubleSpinBox(lo, hi, kWideRange);
         s->setDecimals(
             std::max({decimalsFor(step), decimalsFor(lo), decimalsFor(decl.defaultValue)}));
         s->setSingleStep(step);

@@ -55,24 +55,9 @@ void ensureOffscreenApplication() {
   static QApplication app(argc, argv);
 }
 
-/// Colours that stay apart for the usual handful of techniques (Okabe-Ito palette).
 QColor techniqueColor(std::size_t i) {
-  static const QColor kPalette[] = {
-      QColor(0, 114, 178), QColor(213, 94, 0),   QColor(0, 158, 115),   QColor(204, 121, 167),
-      QColor(230, 159, 0), QColor(86, 180, 233), QColor(120, 120, 120), QColor(240, 228, 66)};
-  return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
-}
-
-/// Upper end of an axis from 0 and its tick count: a round step (1, 2 or 5 times a power of
-/// ten) giving 4 to 10 intervals that reach v.
-std::pair<double, int> niceAxis(double v) {
-  if (!(v > 0.0)) return {1.0, 5};
-  const double p = std::pow(10.0, std::floor(std::log10(v)));
-  for (double step : {0.1 * p, 0.2 * p, 0.5 * p, p, 2.0 * p, 5.0 * p}) {
-    const int n = int(std::ceil(v / step - 1e-9));
-    if (n <= 10) return {n * step, n + 1};
-  }
-  return {10.0 * p, 11};
+  const auto rgb = sl::chartColorRgb(i);
+  return QColor(rgb[0], rgb[1], rgb[2]);
 }
 
 }  // namespace
@@ -104,7 +89,7 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
   }
   auto* axisX = new QValueAxis();
   axisX->setTitleText(QString::fromStdString(spec.xTitle));
-  const auto [xMax, xTicks] = niceAxis(maxX * 1.08);
+  const auto [xMax, xTicks] = sl::niceAxisRange(maxX * 1.08);
   axisX->setRange(0.0, xMax);
   axisX->setTickCount(xTicks);
   axisX->setLabelFormat("%.3g");
@@ -127,7 +112,7 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
     axisY = a;
   } else {
     auto* a = new QValueAxis();
-    const auto [yMax, yTicks] = niceAxis(maxY * 1.12);
+    const auto [yMax, yTicks] = sl::niceAxisRange(maxY * 1.12);
     a->setRange(0.0, yMax);
     a->setTickCount(yTicks);
     a->setLabelFormat("%.3g");

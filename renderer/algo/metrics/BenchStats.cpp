@@ -138,4 +138,21 @@ std::vector<std::size_t> paretoFront(std::span<const CostPoint> points) {
   return front;
 }
 
+std::pair<double, int> niceAxisRange(double v) {
+  if (!(v > 0.0)) return {1.0, 5};
+  const double p = std::pow(10.0, std::floor(std::log10(v)));
+  for (double step : {0.1 * p, 0.2 * p, 0.5 * p, p, 2.0 * p, 5.0 * p}) {
+    const int n = int(std::ceil(v / step - 1e-9));
+    if (n <= 10) return {n * step, n + 1};
+  }
+  return {10.0 * p, 11};
+}
+
+std::array<std::uint8_t, 3> chartColorRgb(std::size_t i) {
+  static constexpr std::array<std::uint8_t, 3> kPalette[] = {
+      {0, 114, 178}, {213, 94, 0},   {0, 158, 115},   {204, 121, 167},
+      {230, 159, 0}, {86, 180, 233}, {120, 120, 120}, {240, 228, 66}};
+  return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
+}
+
 }  // namespace sl

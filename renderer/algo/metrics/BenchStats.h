@@ -4,6 +4,8 @@
 // Plain C++ on spans: no GL, no Qt; the CLI, the GUI and the tests share it.
 #pragma once
 
+#include <utility>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -74,5 +76,12 @@ struct CostPoint {
 /// slow and at most as wrong and strictly better in one of the two. Sorted by cost, then
 /// error, then index; exact duplicates are all on the front; non-finite points never are.
 std::vector<std::size_t> paretoFront(std::span<const CostPoint> points);
+
+/// Speed-against-accuracy charts (CLI PNG and the GUI's Charts dock) share these.
+/// Upper end of an axis that starts at 0, and its tick count: a round step (1, 2 or 5
+/// times a power of ten) giving 4 to 10 intervals that reach v. {1, 5} when v <= 0.
+std::pair<double, int> niceAxisRange(double v);
+/// Colour of the i-th technique (Okabe-Ito palette, 8 colours, repeating), 8-bit RGB.
+std::array<std::uint8_t, 3> chartColorRgb(std::size_t i);
 
 }  // namespace sl

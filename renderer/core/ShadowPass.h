@@ -1,11 +1,14 @@
-// Helpers shared by the shadow-map techniques: the depth-only light pass (with
-// slope-scaled bias and alpha-tested casters) and publishing a depth map to the panels.
+// Helpers shared by the shadow-map techniques: the depth-only light pass (exact depth at
+// texel centres, alpha-tested casters), the binding of the one bias model of every lookup
+// (shaders/common/depth_map_test.glsl) and publishing a depth map to the panels.
 #pragma once
 
 #include <string>
 
 #include <glm/glm.hpp>
 
+#include "algo/Focus.h"
+#include "algo/ShadowBias.h"
 #include "core/Technique.h"
 
 namespace sl {
@@ -17,10 +20,25 @@ gl::ProgramDesc depthProgramDesc();
 /// culling) and clears depth to 1: the start of every depth pass.
 void beginDepthPass(GLuint framebuffer, int width, int height);
 
-/// Clears and renders the scene's depth into `framebuffer` (width x height) with
-/// glPolygonOffset(slopeBias, constantBias) — the slope-scaled depth bias.
+/// Clears and renders the scene's depth into `framebuffer` (width x height). No bias: the
+/// map holds the exact depth at each texel centre; the lookup applies the bias model.
 void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
-                 int height, const glm::mat4& lightViewProj, float slopeBias, float constantBias);
+                 int height, const glm::mat4& lightViewProj);
+
+/// What the shared depth-map lookup needs besides the map: the light fit and the bias.
+struct DepthLookupState {
+  glm::mat4 lightViewProj{1.0f};
+  glm::vec2 extentM{1.0f};  ///< metres per unit of light uv
+  float depthRangeM = 1.0f;
+  ShadowBiasSettings bias;
+  int pcfRadius = 0;
+};
+/// From this frame's fit and the shared parameters (bias.normal, bias.slope, bias.constant,
+/// pcf).
+DepthLookupState depthLookupState(const LightFit& fit, const ParamSet& params);
+/// Binds `map` to `unit` and sets every uniform of common/depth_map_test.glsl.
+void bindDepthLookup(const gl::Program& resolve, int unit, const gl::Texture& map,
+                     const DepthLookupState& state);
 
 /// Reads a depth texture back into the publication as a float image.
 void publishDepth(Publication& pub, const std::string& key, const gl::Texture& depth);

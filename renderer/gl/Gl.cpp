@@ -1,8 +1,45 @@
 #include "Gl.h"
 
+#include <algorithm>
+#include <unordered_map>
+
 #include <stdexcept>
 
 namespace sl::gl {
+
+namespace {
+std::unordered_map<GLuint, std::uint64_t>& textureBytes() {
+  static std::unordered_map<GLuint, std::uint64_t> m;
+  return m;
+}
+std::unordered_map<GLuint, std::uint64_t>& bufferBytes() {
+  static std::unordered_map<GLuint, std::uint64_t> m;
+  return m;
+}
+std::uint64_t levelBytes(GLenum format, int width, int height, int levels) {
+  std::uint64_t total = 0;
+  for (int l = 0; l < levels; ++l, width = std::max(1, width / 2), height = std::max(1, height / 2))
+    total += std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(bytesPerTexel(format));
+  return total;
+}
+}  // namespace
+
+void TextureDeleter::operator()(GLuint id) const {
+  textureBytes().erase(id);
+  glDeleteTextures(1, &id);
+}
+
+void BufferDeleter::operator()(GLuint id) const {
+  bufferBytes().erase(id);
+  glDeleteBuffers(1, &id);
+}
+
+std::uint64_t allocatedBytes() {
+  std::uint64_t total = 0;
+  for (const auto& [id, bytes] : textureBytes()) total += bytes;
+  for (const auto& [id, bytes] : bufferBytes()) total += bytes;
+  return total;
+}
 
 Texture Texture::create2D(GLenum internalFormat, int width, int height, int levels) {
   Texture t;
@@ -10,6 +47,7 @@ Texture Texture::create2D(GLenum internalFormat, int width, int height, int leve
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
   t.h_ = Handle<TextureDeleter>(id);
   glTextureStorage2D(id, levels, internalFormat, width, height);
+  textureBytes()[id] = levelBytes(internalFormat, width, height, levels);
   t.width_ = width;
   t.height_ = height;
   t.format_ = internalFormat;
@@ -24,6 +62,7 @@ Texture Texture::create1D(GLenum internalFormat, int width) {
   glCreateTextures(GL_TEXTURE_1D, 1, &id);
   t.h_ = Handle<TextureDeleter>(id);
   glTextureStorage1D(id, 1, internalFormat, width);
+  textureBytes()[id] = levelBytes(internalFormat, width, 1, 1);
   t.width_ = width;
   t.height_ = 1;
   t.format_ = internalFormat;
@@ -53,6 +92,7 @@ Buffer Buffer::create(GLsizeiptr bytes, const void* data, GLbitfield flags) {
   glCreateBuffers(1, &id);
   b.h_ = Handle<BufferDeleter>(id);
   glNamedBufferStorage(id, bytes > 0 ? bytes : 4, data, flags);
+  bufferBytes()[id] = std::uint64_t(bytes > 0 ? bytes : 4);
   b.size_ = bytes;
   return b;
 }
@@ -146,6 +186,23 @@ std::string formatName(GLenum f) {
     default:
       return "0x" + std::to_string(f);
   }
+}
+
+void Fence::place() {
+  reset();
+  sync_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+bool Fence::wait() {
+  if (!sync_) return false;
+  GLenum r = glClientWaitSync(sync_, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
+  while (r == GL_TIMEOUT_EXPIRED) r = glClientWaitSync(sync_, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000);
+  return r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED;
+}
+
+void Fence::reset() {
+  if (sync_) glDeleteSync(sync_);
+  sync_ = nullptr;
 }
 
 }  // namespace sl::gl

@@ -4,6 +4,7 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <string>
 #include <utility>
 
@@ -38,11 +39,16 @@ class Handle {
 };
 
 struct TextureDeleter {
-  void operator()(GLuint id) const { glDeleteTextures(1, &id); }
+  void operator()(GLuint id) const;  ///< also forgets the texture's bytes (allocatedBytes)
 };
 struct BufferDeleter {
-  void operator()(GLuint id) const { glDeleteBuffers(1, &id); }
+  void operator()(GLuint id) const;  ///< also forgets the buffer's bytes (allocatedBytes)
 };
+
+/// Bytes of storage held by every Texture and Buffer alive in this process (all levels),
+/// as allocated through these wrappers: lets tests check that a technique's memory()
+/// reports all it allocated.
+std::uint64_t allocatedBytes();
 struct FramebufferDeleter {
   void operator()(GLuint id) const { glDeleteFramebuffers(1, &id); }
 };
@@ -90,6 +96,31 @@ class Buffer {
  private:
   Handle<BufferDeleter> h_;
   GLsizeiptr size_ = 0;
+};
+
+/// A fence after the commands issued so far: lets a result be read a frame later without
+/// stalling the pipeline (glFenceSync / glClientWaitSync).
+class Fence {
+ public:
+  Fence() = default;
+  ~Fence() { reset(); }
+  Fence(Fence&& o) noexcept : sync_(o.sync_) { o.sync_ = nullptr; }
+  Fence& operator=(Fence&& o) noexcept {
+    if (this != &o) reset(), sync_ = o.sync_, o.sync_ = nullptr;
+    return *this;
+  }
+  Fence(const Fence&) = delete;
+  Fence& operator=(const Fence&) = delete;
+  /// Places a new fence after everything issued so far.
+  void place();
+  /// Waits (flushing first) until the commands before the fence are done; true at once
+  /// when they already are. False when no fence is placed.
+  bool wait();
+  explicit operator bool() const { return sync_ != nullptr; }
+  void reset();
+
+ private:
+  GLsync sync_ = nullptr;
 };
 
 class Framebuffer {

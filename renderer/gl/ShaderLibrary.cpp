@@ -216,4 +216,8 @@ void Program::set(const char* n, const glm::mat2& v) const {
   glProgramUniformMatrix2fv(id(), location(n), 1, GL_FALSE, glm::value_ptr(v));
 }
 
+void Program::set(const char* n, const glm::mat3& v) const {
+  glProgramUniformMatrix3fv(id(), location(n), 1, GL_FALSE, glm::value_ptr(v));
+}
+
 }  // namespace sl::gl

@@ -65,6 +65,7 @@ class Program {
   void set(const char* name, const glm::ivec2& v) const;
   void set(const char* name, const glm::mat4& v) const;
   void set(const char* name, const glm::mat2& v) const;
+  void set(const char* name, const glm::mat3& v) const;
 
  private:
   Handle<ProgramDeleter> h_;

@@ -3,5 +3,5 @@
 in vec2 v_uv;
 
 void main() {
-  if (materialAlphaRejects(v_uv)) discard;
+  if (materialAlphaRejectsLevel0(v_uv)) discard;
 }

@@ -1,15 +1,76 @@
-// The depth test shared by single-map lookups (uniform, RTW): nearest texel via texelFetch
-// (no hardware filtering, so metrics see the map's true resolution); PCF averages the hard
-// tests of a (2r+1)^2 neighbourhood. Needs u_shadowMap (depth, no compare) and u_pcfRadius.
+// The one bias model of every depth-map lookup (uniform, RTW; later partitioned or paged
+// maps): the receiver's plane is evaluated AT THE CENTRE OF THE TEXEL IT SAMPLES, in
+// unwarped light space, and compared with the depth the map stores for that same centre.
+// Maps store exact depth at texel centres (no polygon offset), so a planar receiver
+// compares against itself exactly; the remaining terms, all scaled by the LOCAL texel
+// size (warp compression included), only cover curvature, rounding and contact edges:
+//   normal offset  P += N * bias.normal * T * sin(theta_L),   T = largest local texel (m)
+//   slope term     bias.slope * (|dz/du| * t_u + |dz/dv| * t_v)   (t: local texel in uv),
+//                  at most the depth of a slope of 10 over T
+//   constant       bias.constant metres along the light, in window depth
+// CPU mirror: sl::receiverPlaneDepth / shadowBiasTerms (algo/ShadowBias.h); C++ binding:
+// bindDepthMapLookup (core/ShadowPass.cpp).
+//
+// The technique's lookup file defines, BEFORE including this file:
+//   vec2 lightToMapUv(vec2 uv)          unwarped light uv -> map uv (identity when unwarped)
+//   vec2 texelCentreLightUv(ivec2 t)    centre of map texel t, in unwarped light uv
+//   vec2 localTexelLightUv(vec2 uv)     extent of the map texel at light uv, per axis, in uv
+// and gets shadowLookupCoord / shadowMapSize / shadowHardAt / shadowFilteredAt
+// (the contract of shaders/common/resolve.frag). Nearest texels via texelFetch: metrics see
+// the map's true resolution; PCF averages the hard tests of a (2r+1)^2 neighbourhood.
 uniform sampler2D u_shadowMap;
 uniform int u_pcfRadius;
+uniform mat4 u_lightViewProj;
+uniform mat3 u_lightNormalMatrix;  // transpose(inverse(mat3(u_lightViewProj)))
+uniform vec2 u_lightExtentM;       // metres per unit of light u and v
+uniform float u_biasNormal;        // texels (local)
+uniform float u_biasSlope;         // texels (local)
+uniform float u_biasConstant;      // window depth units
+uniform float u_depthPerM;         // window depth per metre along the light
+
+// The receiver of this pixel, set by shadowLookupCoord (one pixel per invocation).
+vec2 g_receiverUv;   // unwarped light uv (after the normal offset)
+float g_receiverZ;   // window depth
+vec2 g_receiverDz;   // d(window depth) / d(light uv) on the receiver's plane
+float g_receiverBias;
 
 vec2 shadowMapSize() { return vec2(textureSize(u_shadowMap, 0)); }
+
+// Depth gradient of the plane through P with world normal N, per unit of light uv: the
+// normal in clip space m = u_lightNormalMatrix * N; dz/du = -m.x / m.z (the 0.5 factors of
+// uv and window depth cancel). A plane seen edge-on by the light (|m.z| tiny) gets 0: it is
+// shadowed by the N.L test of the resolve pass, or covered by the slope term's clamp.
+vec2 receiverDepthGradient(vec3 N) {
+  vec3 m = u_lightNormalMatrix * N;
+  if (!(abs(m.z) > 1e-4 * length(m))) return vec2(0.0);
+  return -m.xy / m.z;
+}
+
+vec3 shadowLookupCoord(vec3 P, vec3 N) {
+  vec2 uv0 = (u_lightViewProj * vec4(P, 1.0)).xy * 0.5 + 0.5;  // orthographic: w = 1
+  vec2 t0 = localTexelLightUv(uv0);
+  float texelM = max(t0.x * u_lightExtentM.x, t0.y * u_lightExtentM.y);
+  float cosL = clamp(dot(N, u_towardsLight), -1.0, 1.0);
+  float sinL = sqrt(max(1.0 - cosL * cosL, 0.0));
+  vec3 c = (u_lightViewProj * vec4(P + N * (u_biasNormal * texelM * sinL), 1.0)).xyz;
+  vec3 uvz = c * 0.5 + 0.5;
+  g_receiverUv = uvz.xy;
+  g_receiverZ = uvz.z;
+  g_receiverDz = receiverDepthGradient(N);
+  vec2 t = localTexelLightUv(uvz.xy);
+  // Capped at a slope of 10 (84 degrees from the light) so grazing receivers do not leak.
+  float slope = min(abs(g_receiverDz.x) * t.x + abs(g_receiverDz.y) * t.y,
+                    10.0 * texelM * u_depthPerM);
+  g_receiverBias = u_biasSlope * slope + u_biasConstant;
+  return vec3(lightToMapUv(uvz.xy), uvz.z);
+}
 
 float depthMapTexelTest(vec3 uvz, ivec2 offset) {
   ivec2 size = textureSize(u_shadowMap, 0);
   ivec2 t = clamp(ivec2(floor(uvz.xy * vec2(size))) + offset, ivec2(0), size - 1);
-  return uvz.z <= texelFetch(u_shadowMap, t, 0).r ? 1.0 : 0.0;
+  vec2 centre = texelCentreLightUv(t);
+  float z = g_receiverZ + dot(g_receiverDz, centre - g_receiverUv) - g_receiverBias;
+  return z <= texelFetch(u_shadowMap, t, 0).r ? 1.0 : 0.0;
 }
 
 float shadowHardAt(vec3 uvz) {

@@ -15,3 +15,14 @@ vec4 materialBaseColor(vec2 uv) {
 bool materialAlphaRejects(vec2 uv) {
   return u_alphaMask != 0 && materialBaseColor(uv).a < u_alphaCutoff;
 }
+
+// The same test on the texture's finest level, as the exact reference does
+// (ShadowReference's alpha filter samples level 0 bilinearly): light passes use this, so a
+// caster's holes do not depend on the light pass's mip footprint (a warped texel's footprint
+// varies by orders of magnitude across the map).
+bool materialAlphaRejectsLevel0(vec2 uv) {
+  if (u_alphaMask == 0) return false;
+  float a = u_baseColor.a;
+  if (u_hasTexture != 0) a *= textureLod(u_baseColorTex, uv, 0.0).a;
+  return a < u_alphaCutoff;
+}

@@ -1,16 +1,14 @@
-// Warped lookup (seed 002 "warped lookup"; C++: RtwShadowMap::bindLookup): light-space uv
-// -> warp -> the shared depth-map test on the warped map. The normal offset is scaled by
-// the local texel size, which the warp shrinks where importance is high.
+// Warped lookup (seed 002 "warped lookup"; C++: RtwShadowMap::bindLookup): light uv -> warp
+// -> the shared depth-map test. Texel centres come back from the inverse tables the scan
+// pass leaves (the same centres the warped pass evaluated its exact depth at), and the local
+// texel size is 1 / (size * du'/du): the bias model follows the warp's compression.
 #include "rtw/warp.glsl"
-#include "common/depth_map_test.glsl"
-uniform mat4 u_lightViewProj;
-uniform float u_normalOffsetM;  // bias.normal x unwarped texel size (metres)
+uniform int u_smRes;  // warped map size in texels
 
-vec3 shadowLookupCoord(vec3 P, vec3 N) {
-  vec4 c0 = u_lightViewProj * vec4(P, 1.0);
-  vec2 uv0 = c0.xy / c0.w * 0.5 + 0.5;
-  float density = max(warpSlope(0, uv0.x), warpSlope(1, uv0.y));
-  vec4 c = u_lightViewProj * vec4(P + N * (u_normalOffsetM / max(density, 1.0)), 1.0);
-  vec3 uvz = c.xyz / c.w * 0.5 + 0.5;
-  return vec3(warpUv(uvz.xy), uvz.z);
+vec2 lightToMapUv(vec2 uv) { return warpUv(uv); }
+vec2 texelCentreLightUv(ivec2 t) { return inverseWarpCentre(t, u_smRes); }
+vec2 localTexelLightUv(vec2 uv) {
+  return 1.0 / (float(u_smRes) * max(vec2(warpSlope(0, uv.x), warpSlope(1, uv.y)), 1e-6));
 }
+
+#include "common/depth_map_test.glsl"

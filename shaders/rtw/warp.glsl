@@ -27,6 +27,15 @@ float warpSlope(int axis, float u) {
 
 vec2 warpUv(vec2 uv) { return vec2(warpAxis(0, uv.x), warpAxis(1, uv.y)); }
 
+// Inverse tables (rtw/inverse_warp.comp; C++: sl::rtw::inverseWarpTable): per axis, the
+// unwarped light coordinate of each warped texel centre, x table first (size entries each).
+layout(std430, binding = 4) readonly buffer InverseWarp { float inverseWarp[]; };
+vec2 inverseWarpCentre(ivec2 texel, int size) {
+  if (u_warpOn == 0) return (vec2(texel) + 0.5) / float(size);
+  ivec2 t = clamp(texel, ivec2(0), ivec2(size - 1));  // helper lanes may sit outside
+  return vec2(inverseWarp[t.x], inverseWarp[size + t.y]);
+}
+
 // Light clip space (orthographic, w = 1) -> warped clip space.
 vec4 warpClip(vec4 clip) {
   vec2 uv = warpUv(clip.xy / clip.w * 0.5 + 0.5);

@@ -1,10 +1,9 @@
-// Uniform shadow map lookup (C++: UniformShadowMap::bindLookup): light clip space of the
-// receiver, offset along its normal, then the shared depth-map test.
-#include "common/depth_map_test.glsl"
-uniform mat4 u_lightViewProj;
-uniform float u_normalOffsetM;  // receiver offset along N, metres
+// Uniform shadow map lookup (C++: UniformShadowMap::bindLookup): the map samples light uv
+// directly, so its texels are 1/size wide everywhere; the shared bias model does the rest.
+uniform vec2 u_uniformMapSize;  // texels
 
-vec3 shadowLookupCoord(vec3 P, vec3 N) {
-  vec4 c = u_lightViewProj * vec4(P + N * u_normalOffsetM, 1.0);
-  return c.xyz / c.w * 0.5 + 0.5;
-}
+vec2 lightToMapUv(vec2 uv) { return uv; }
+vec2 texelCentreLightUv(ivec2 t) { return (vec2(t) + 0.5) / u_uniformMapSize; }
+vec2 localTexelLightUv(vec2 uv) { return 1.0 / u_uniformMapSize; }
+
+#include "common/depth_map_test.glsl"

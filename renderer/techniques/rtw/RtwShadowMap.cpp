@@ -14,6 +14,15 @@ namespace sl {
 
 namespace {
 
+/// Largest tessellation level the warped pass asks for. GL guarantees 64, but llvmpipe
+/// corrupts the warped map at levels 32-64 (measured: corridor, tolerance 0.01: 55.6 %
+/// error at cap 64, 0.73 % at cap 16).
+constexpr int kMaxTessellationLevel = 16;
+
+/// DA-RTW's PCA reads the IM reduced to at most this size (block maxima): seed 000's
+/// moments need the distribution's shape, not 512^2 texels.
+constexpr int kMomentImMax = 128;
+
 gl::ProgramDesc compute(const std::string& file) {
   return {file, {{GL_COMPUTE_SHADER, file}}, {}, {}};
 }
@@ -144,13 +153,15 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
        "Bend tolerance",
        "Warp",
        ParamType::Float,
-       0.05,
+       0.25,
        0.01,
        16,
        0.05,
        {},
        "Tessellation level from the warped edge: how far the warp bends it from a straight "
-       "line, in texels; level = ceil(sqrt(bend / tolerance)), at most 64."});
+       "line, in texels; level = ceil(sqrt(bend / tolerance)), at most " +
+           std::to_string(kMaxTessellationLevel) +
+           ". Depth is exact whatever the level: this only shapes silhouettes."});
   const bool da = id == "da-rtw";
   if (da)
     add({"pca.threshold",
@@ -199,71 +210,117 @@ RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
       collapse_(lib, compute("rtw/collapse.comp")),
       blur_(lib, compute("rtw/blur.comp")),
       scanWarp_(lib, compute("rtw/scan_warp.comp")),
-      warped_(lib,
-              {"rtw/warped",
-               {{GL_VERTEX_SHADER, "rtw/warped.vert"}, {GL_FRAGMENT_SHADER, "common/depth.frag"}},
-               {},
-               {}}),
-      warpedTess_(lib, {"rtw/warped_tess",
-                        {{GL_VERTEX_SHADER, "rtw/warped_tess.vert"},
-                         {GL_TESS_CONTROL_SHADER, "rtw/warped_tess.tesc"},
-                         {GL_TESS_EVALUATION_SHADER, "rtw/warped_tess.tese"},
-                         {GL_FRAGMENT_SHADER, "common/depth.frag"}},
-                        {},
-                        {}}),
+      inverseWarp_(lib, compute("rtw/inverse_warp.comp")),
+      warped_(lib, {"rtw/warped",
+                    {{GL_VERTEX_SHADER, "rtw/warped_tess.vert"},
+                     {GL_TESS_CONTROL_SHADER, "rtw/warped_tess.tesc"},
+                     {GL_TESS_EVALUATION_SHADER, "rtw/warped_tess.tese"},
+                     {GL_FRAGMENT_SHADER, "rtw/warped_exact.frag"}},
+                    {},
+                    {}}),
       moments_(lib, compute("rtw/moments.comp")),
       momentsLevel1_(lib, compute("rtw/moments_level1.comp")),
-      momentsReduce_(lib, compute("rtw/moments_reduce.comp")),
-      depth_(lib, depthProgramDesc()) {}
+      momentsReduce_(lib, compute("rtw/moments_reduce.comp")) {}
 
 void RtwShadowMap::resetTemporalState() {
   rotation_.reset();
   lastUpdate_ = {};
-  imValid_ = false;
+  momentFence_.reset();
 }
 
-void RtwShadowMap::ensureResources(int smRes, int imRes) {
+void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
+  const GLbitfield rw = GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT;
   if (smRes != smRes_) {
     shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, smRes, smRes);
     smFbo_ = gl::Framebuffer::create();
     smFbo_.attach(GL_DEPTH_ATTACHMENT, shadowMap_);
     smFbo_.setDrawBuffers(0);
     smFbo_.checkComplete("RTW warped shadow map");
+    inverse_ = gl::Buffer::create(GLsizeiptr(2 * smRes * sizeof(float)), nullptr, rw);
     uniformMap_ = {};
     smRes_ = smRes;
   }
   if (imRes != imRes_) {
-    importance_ = gl::Texture::create2D(GL_R32UI, imRes, imRes);
-    forwardDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, imRes, imRes);
-    forwardFbo_ = gl::Framebuffer::create();
-    forwardFbo_.attach(GL_COLOR_ATTACHMENT0, importance_);
-    forwardFbo_.attach(GL_DEPTH_ATTACHMENT, forwardDepth_);
-    forwardFbo_.setDrawBuffers(1);
-    forwardFbo_.checkComplete("RTW forward importance");
-    const GLbitfield rw = GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT;
+    importance_ = {};
+    forwardDepth_ = {};
+    momentIm_ = {};
     collapsed_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     blurred_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     warp_ = gl::Buffer::create(GLsizeiptr(2 * (imRes + 1) * sizeof(float)), nullptr, rw);
+    imRes_ = imRes;
+    momentFence_.reset();
+  }
+  // The 2D IM: always for forward analysis (its render target), else only for the panels.
+  const bool wantIm = !backward() || publishing;
+  if (wantIm && !importance_) {
+    importance_ = gl::Texture::create2D(GL_R32UI, imRes, imRes);
+    if (!backward()) {
+      forwardDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, imRes, imRes);
+      forwardFbo_ = gl::Framebuffer::create();
+      forwardFbo_.attach(GL_COLOR_ATTACHMENT0, importance_);
+      forwardFbo_.attach(GL_DEPTH_ATTACHMENT, forwardDepth_);
+      forwardFbo_.setDrawBuffers(1);
+      forwardFbo_.checkComplete("RTW forward importance");
+    }
+  } else if (!wantIm && importance_) {
+    importance_ = {};
+  }
+  if (!publishing) uniformMap_ = {};
+  // DA-RTW: the PCA's IM, the block maxima of the full IM down to kMomentImMax^2.
+  const int momentRes = std::min(imRes, kMomentImMax);
+  if (config_.rotation && (momentRes != momentRes_ || !momentIm_)) {
+    momentIm_ = gl::Texture::create2D(GL_R32UI, momentRes, momentRes);
     momentOffsets_.clear();
     momentSizes_.clear();
     int offset = 0;
-    for (glm::ivec2 s(imRes);; s = (s + 1) / 2) {
+    for (glm::ivec2 s(momentRes);; s = (s + 1) / 2) {
       momentOffsets_.push_back(offset);
       momentSizes_.push_back(s);
       offset += 6 * s.x * s.y;
       if (s.x == 1 && s.y == 1) break;
     }
     momentBuffer_ = gl::Buffer::create(GLsizeiptr(offset * sizeof(float)), nullptr, rw);
-    imRes_ = imRes;
-    imValid_ = false;
+    momentRes_ = momentRes;
+    momentFence_.reset();
   }
 }
 
-void RtwShadowMap::estimateRotation(FrameContext& ctx) {
+// The rotation of this frame from the moments of the last frame's IM, read back behind
+// a fence placed a frame ago: no stall (seed 000 also uses the previous frame's IM).
+void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rotation estimate");
-  const glm::ivec2 size(imRes_);
+  if (!momentFence_ || !momentFence_.wait()) return;
+  momentFence_.reset();
+  std::vector<float> top = readFloats(momentBuffer_, size_t(momentOffsets_.back()), 6);
+  rtw::MomentTexel t;
+  for (int c = 0; c < 6; ++c) t[c] = top[c], lastTop_[c] = top[c];
+  // The angle is measured in metres: the IM's axes span the light frustum's extents.
+  rtw::MomentStats stats = rtw::momentsFromTop(t, 0.5f * momentExtentM_);
+  lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")));
+  if (ctx.publication) {
+    auto& n = ctx.publication->numbers;
+    n["mean.x"] = stats.meanX;
+    n["mean.y"] = stats.meanY;
+    n["cov.xx"] = stats.covXX;
+    n["cov.xy"] = stats.covXY;
+    n["cov.yy"] = stats.covYY;
+    n["eigen.1"] = stats.lambda1;
+    n["eigen.2"] = stats.lambda2;
+    n["pca.valid"] = stats.valid ? 1 : 0;
+    const char* names[6] = {"moment.I",   "moment.xI",  "moment.yI",
+                            "moment.xxI", "moment.yyI", "moment.xyI"};
+    for (int c = 0; c < 6; ++c) n[names[c]] = top[c];
+  }
+}
+
+// DA-RTW's moment chain of this frame's moment IM (level 1 straight from it, then one
+// dispatch per level), fenced so the next frame reads its 24-byte top without a stall.
+void RtwShadowMap::buildMoments(FrameContext& ctx) {
+  auto pass = ctx.timer.scope("moments");
+  const glm::ivec2 size(momentRes_);
   const glm::vec2 invSize(1.0f / float(size.x), 1.0f / float(size.y));
-  glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, momentBuffer_.id());
   if (ctx.publication) {  // level 0 only for the panels; the estimate never needs it
     moments_.use();
@@ -271,7 +328,6 @@ void RtwShadowMap::estimateRotation(FrameContext& ctx) {
     moments_.set("u_invSize", invSize);
     glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
   }
-  // Level 1 straight from the IM, then one dispatch per level.
   const bool chain = momentSizes_.size() > 1;
   if (chain) {
     momentsLevel1_.use();
@@ -290,37 +346,24 @@ void RtwShadowMap::estimateRotation(FrameContext& ctx) {
     glDispatchCompute(GLuint((dst.x + 7) / 8), GLuint((dst.y + 7) / 8), 1);
   }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  std::vector<float> top = readFloats(momentBuffer_, size_t(momentOffsets_.back()), 6);
-  rtw::MomentTexel t;
-  for (int c = 0; c < 6; ++c) t[c] = top[c], lastTop_[c] = top[c];
-  // The angle is measured in metres: the IM's axes span the light frustum's extents.
-  rtw::MomentStats stats = rtw::momentsFromTop(t, 0.5f * lastExtentM_);
-  lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")));
-  if (ctx.publication) {
-    auto& n = ctx.publication->numbers;
-    n["mean.x"] = stats.meanX;
-    n["mean.y"] = stats.meanY;
-    n["cov.xx"] = stats.covXX;
-    n["cov.xy"] = stats.covXY;
-    n["cov.yy"] = stats.covYY;
-    n["eigen.1"] = stats.lambda1;
-    n["eigen.2"] = stats.lambda2;
-    n["pca.valid"] = stats.valid ? 1 : 0;
-    const char* names[6] = {"moment.I",   "moment.xI",  "moment.yI",
-                            "moment.xxI", "moment.yyI", "moment.xyI"};
-    for (int c = 0; c < 6; ++c) n[names[c]] = top[c];
-    // The chain itself (level images), for the moment panel.
-    const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
-    for (size_t l = 0; l < momentSizes_.size(); ++l) {
-      glm::ivec2 s = momentSizes_[l];
-      std::vector<float> all =
-          readFloats(momentBuffer_, size_t(momentOffsets_[l]), size_t(6 * s.x * s.y));
-      for (int c = 0; c < 6; ++c) {
-        FloatImage img{s.x, s.y, 1, std::vector<float>(size_t(s.x * s.y))};
-        for (size_t i = 0; i < img.values.size(); ++i) img.values[i] = all[6 * i + size_t(c)];
-        ctx.publication->images["moment." + std::string(ch[c]) + "." + std::to_string(l)] =
-            std::move(img);
-      }
+  momentFence_.place();
+  momentExtentM_ = lastExtentM_;
+  if (!ctx.publication) return;
+  // The chain itself (level images) and its IM, for the moment panel (debug: blocking).
+  Publication& pub = *ctx.publication;
+  FloatImage im{size.x, size.y, 1, std::vector<float>(size_t(size.x) * size_t(size.y))};
+  glGetTextureImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                    GLsizei(im.values.size() * sizeof(float)), im.values.data());  // float bits
+  pub.images["importance.moments"] = std::move(im);
+  const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+  for (size_t l = 0; l < momentSizes_.size(); ++l) {
+    glm::ivec2 s = momentSizes_[l];
+    std::vector<float> all =
+        readFloats(momentBuffer_, size_t(momentOffsets_[l]), size_t(6 * s.x * s.y));
+    for (int c = 0; c < 6; ++c) {
+      FloatImage img{s.x, s.y, 1, std::vector<float>(size_t(s.x * s.y))};
+      for (size_t i = 0; i < img.values.size(); ++i) img.values[i] = all[6 * i + size_t(c)];
+      pub.images["moment." + std::string(ch[c]) + "." + std::to_string(l)] = std::move(img);
     }
   }
 }
@@ -349,13 +392,24 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
   glBindTextureUnit(2, ctx.gNormal.id());
   glBindTextureUnit(3, ctx.prevHardMask.id());
   const GLuint zero = 0;
-  glClearTexImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  if (config_.analysis == Analysis::Backward) {
+  if (importance_) glClearTexImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  if (momentIm_) glClearTexImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  if (backward()) {
+    // Straight into the two 1D maps (the collapse's max over rows and columns is the max
+    // of the scatter), plus the 2D IM for the panels and DA-RTW's moment IM when present.
+    glClearNamedBufferData(collapsed_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     backward_.use();
     setTerms(backward_);
     backward_.set("u_gNormal", 2);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    backward_.set("u_n", imRes_);
+    backward_.set("u_writeIm", importance_ ? 1 : 0);
+    backward_.set("u_writeMomentIm", momentIm_ ? 1 : 0);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
+    if (importance_)
+      glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    if (momentIm_) glBindImageTexture(1, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
   } else {
     beginDepthPass(forwardFbo_.id(), imRes_, imRes_);
@@ -366,14 +420,14 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     forward_.set("u_visibilityToleranceM", 3.0f * lightTexelM);
     ctx.sceneGpu.draw(forward_, 0);
   }
-  imValid_ = true;
 }
 
 void RtwShadowMap::buildWarpMaps(FrameContext& ctx) {
   const ParamSet& p = ctx.params;
   const int n = imRes_;
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-  {
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                  GL_SHADER_STORAGE_BARRIER_BIT);
+  if (!backward()) {  // backward analysis scattered straight into the 1D maps
     auto pass = ctx.timer.scope("collapse");
     collapse_.use();
     glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
@@ -405,35 +459,39 @@ void RtwShadowMap::buildWarpMaps(FrameContext& ctx) {
     scanWarp_.set("u_m", int(std::bit_ceil(unsigned(n))));
     scanWarp_.set("u_floor", float(p.get("importance.floor")));
     glDispatchCompute(2, 1, 1);
+    // The inverse tables: the unwarped light uv of every warped texel centre.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    inverseWarp_.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, inverse_.id());
+    inverseWarp_.set("u_n", n);
+    inverseWarp_.set("u_size", smRes_);
+    glDispatchCompute(GLuint((2 * smRes_ + 63) / 64), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
 }
 
 void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewProj, bool warp) {
   const ParamSet& p = ctx.params;
-  const bool tess = p.getBool("tessellation");
-  const gl::Program& prog = tess ? warpedTess_ : warped_;
   gl::Framebuffer& fbo = warp ? smFbo_ : uniformFbo_;
   beginDepthPass(fbo.id(), smRes_, smRes_);
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(float(p.get("bias.slope")), float(p.get("bias.constant")));
-  prog.use();
+  warped_.use();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
-  prog.set("u_lightViewProj", lightViewProj);
-  prog.set("u_warpN", imRes_);
-  prog.set("u_warpOn", warp ? 1 : 0);
-  if (tess) {
-    prog.set("u_toleranceTexels", float(p.get("tessellation.tolerance")));
-    prog.set("u_smSize", glm::vec2(float(smRes_)));
-  }
-  ctx.sceneGpu.draw(prog, 0, tess);
-  glDisable(GL_POLYGON_OFFSET_FILL);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, inverse_.id());
+  warped_.set("u_lightViewProj", lightViewProj);
+  warped_.set("u_warpN", imRes_);
+  warped_.set("u_warpOn", warp ? 1 : 0);
+  warped_.set("u_smRes", smRes_);
+  warped_.set("u_tessOn", warp && p.getBool("tessellation") ? 1 : 0);
+  warped_.set("u_toleranceTexels", float(p.get("tessellation.tolerance")));
+  warped_.set("u_maxLevel", float(kMaxTessellationLevel));
+  warped_.set("u_smSize", glm::vec2(float(smRes_)));
+  ctx.sceneGpu.draw(warped_, 0, true);
 }
 
 void RtwShadowMap::renderShadows(FrameContext& ctx) {
   const ParamSet& p = ctx.params;
-  ensureResources(p.getInt("resolution"), p.getInt("im.resolution"));
-  if (config_.rotation && imValid_) estimateRotation(ctx);
+  ensureResources(p.getInt("resolution"), p.getInt("im.resolution"), ctx.publication != nullptr);
+  if (config_.rotation) rotationFromLastMoments(ctx);
   if (ctx.publication && config_.rotation) {
     auto& n = ctx.publication->numbers;
     n["e_x"] = lastUpdate_.e_x;
@@ -447,20 +505,18 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
 
   LightFit fit;
   {
-    auto pass = ctx.timer.scope(config_.rotation ? "rotation estimate" : "focus");
+    auto pass = ctx.timer.scope("focus");
     FocusSettings fs;
     if (config_.rotation) fs.rotation = rtw::lightViewRotation(rotation_);
     if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
                                        fs, fit))
       throw std::runtime_error(*err);
   }
-  lightViewProj_ = fit.viewProj;
+  lookup_ = depthLookupState(fit, p);
   lastExtentM_ = fit.extentM;
-  const float texelM = std::max(fit.extentM.x, fit.extentM.y) / float(smRes_);
-  normalOffsetM_ = float(p.get("bias.normal")) * texelM;
-  pcfRadius_ = p.getInt("pcf");
 
   buildImportance(ctx, fit.viewProj, std::max(fit.extentM.x, fit.extentM.y) / float(imRes_));
+  if (config_.rotation) buildMoments(ctx);
   buildWarpMaps(ctx);
   {
     auto pass = ctx.timer.scope("warped shadow map");
@@ -475,10 +531,12 @@ void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
   pub.numbers["light.extent.x"] = lastExtentM_.x;
   pub.numbers["light.extent.y"] = lastExtentM_.y;
   FloatImage im{n, n, 1, std::vector<float>(size_t(n) * size_t(n))};
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetTextureImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
                     GLsizei(im.values.size() * sizeof(float)), im.values.data());  // float bits
   pub.images["importance"] = std::move(im);
+  pub.curves["inverse.x"] = readFloats(inverse_, 0, size_t(smRes_));
+  pub.curves["inverse.y"] = readFloats(inverse_, size_t(smRes_), size_t(smRes_));
   std::vector<float> c = readFloats(collapsed_, 0, size_t(2 * n));
   std::vector<float> b = readFloats(blurred_, 0, size_t(2 * n));
   std::vector<float> w = readFloats(warp_, 0, size_t(2 * (n + 1)));
@@ -489,7 +547,7 @@ void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
   pub.curves["warp.x"].assign(w.begin(), w.begin() + n + 1);
   pub.curves["warp.y"].assign(w.begin() + n + 1, w.end());
   publishDepth(pub, "shadow map", shadowMap_);
-  // The unwarped map of the same size, for contrast (debug only: not counted in memory).
+  // The unwarped map of the same size, for contrast (only while publishing; in memory()).
   if (!uniformMap_ || uniformMap_.width() != smRes_) {
     uniformMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, smRes_, smRes_);
     uniformFbo_ = gl::Framebuffer::create();
@@ -502,37 +560,42 @@ void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
 }
 
 void RtwShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
+  bindDepthLookup(resolve, firstUnit, shadowMap_, lookup_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
-  resolve.set("u_shadowMap", firstUnit);
-  resolve.set("u_lightViewProj", lightViewProj_);
-  resolve.set("u_normalOffsetM", normalOffsetM_);
-  resolve.set("u_pcfRadius", pcfRadius_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, inverse_.id());
   resolve.set("u_warpN", imRes_);
   resolve.set("u_warpOn", 1);
+  resolve.set("u_smRes", smRes_);
 }
 
 MemoryStats RtwShadowMap::memory() const {
   MemoryStats m;
   if (!shadowMap_) return m;
   m.add("warped shadow map", "DEPTH_COMPONENT32F", smRes_, smRes_, 1, 4);
-  m.add("importance map", "R32UI", imRes_, imRes_, 1, 4);
-  m.add("1D importance (x, y)", "R32F", imRes_, 1, 2, 4);
+  m.add("inverse warp tables (x, y)", "R32F", smRes_, 1, 2, 4);
+  m.add("1D importance (x, y)", "R32UI", imRes_, 1, 2, 4);
+  m.add("1D importance blurred (x, y)", "R32F", imRes_, 1, 2, 4);
   m.add("warp maps (x, y; n+1 edges)", "R32F", imRes_ + 1, 1, 2, 4);
-  if (config_.analysis != Analysis::Backward)
-    m.add("forward depth", "DEPTH_COMPONENT32F", imRes_, imRes_, 1, 4);
-  if (config_.rotation) {
+  if (importance_)
+    m.add(backward() ? "importance map (while a panel shows it)" : "importance map", "R32UI",
+          imRes_, imRes_, 1, 4);
+  if (forwardDepth_) m.add("forward depth", "DEPTH_COMPONENT32F", imRes_, imRes_, 1, 4);
+  if (momentIm_) {
+    m.add("moment IM (block maxima)", "R32UI", momentRes_, momentRes_, 1, 4);
     int texels = 0;
     for (glm::ivec2 s : momentSizes_) texels += s.x * s.y;
     m.add("moment chain (6 channels, all levels)", "R32F x6", texels, 1, 6, 4);
   }
+  if (uniformMap_)
+    m.add("unwarped contrast map (while a panel shows it)", "DEPTH_COMPONENT32F", smRes_, smRes_, 1,
+          4);
   return m;
 }
 
 std::optional<std::string> RtwShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
   std::string errors;
-  for (gl::Program* prog : {&backward_, &forward_, &collapse_, &blur_, &scanWarp_, &warped_,
-                            &warpedTess_, &moments_, &momentsLevel1_, &momentsReduce_, &depth_})
+  for (gl::Program* prog : {&backward_, &forward_, &collapse_, &blur_, &scanWarp_, &inverseWarp_,
+                            &warped_, &moments_, &momentsLevel1_, &momentsReduce_})
     if (auto e = prog->rebuild(lib)) errors += (errors.empty() ? "" : "\n") + *e;
   if (errors.empty()) return std::nullopt;
   return errors;

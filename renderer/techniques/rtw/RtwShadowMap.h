@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algo/rtw/Rotation.h"
+#include "core/ShadowPass.h"
 #include "core/Technique.h"
 
 namespace sl {
@@ -32,27 +33,33 @@ class RtwShadowMap : public Technique {
   const rtw::RotationState& rotation() const { return rotation_; }
 
  private:
-  void ensureResources(int smRes, int imRes);
-  void estimateRotation(FrameContext& ctx);
+  void ensureResources(int smRes, int imRes, bool publishing);
+  void rotationFromLastMoments(FrameContext& ctx);
+  void buildMoments(FrameContext& ctx);
   void buildImportance(FrameContext& ctx, const glm::mat4& lightViewProj, float lightTexelM);
   void buildWarpMaps(FrameContext& ctx);
   void renderWarped(FrameContext& ctx, const glm::mat4& lightViewProj, bool warp);
   void publish(FrameContext& ctx, const glm::mat4& lightViewProj);
+  bool backward() const { return config_.analysis == Analysis::Backward; }
 
   Config config_;
-  gl::Program backward_, forward_, collapse_, blur_, scanWarp_, warped_, warpedTess_, moments_,
-      momentsLevel1_, momentsReduce_, depth_;
-  gl::Texture shadowMap_, importance_, forwardDepth_, uniformMap_;
+  gl::Program backward_, forward_, collapse_, blur_, scanWarp_, inverseWarp_, warped_, moments_,
+      momentsLevel1_, momentsReduce_;
+  gl::Texture shadowMap_;
+  /// The 2D importance map: the forward/hybrid render target; for backward analysis (which
+  /// scatters straight into the 1D maps) made only while a panel shows it.
+  gl::Texture importance_, forwardDepth_;
+  gl::Texture momentIm_;    ///< DA-RTW: the IM the PCA reads, at most kMomentImMax^2
+  gl::Texture uniformMap_;  ///< unwarped contrast map, only while a panel shows it
   gl::Framebuffer smFbo_, forwardFbo_, uniformFbo_;
-  gl::Buffer collapsed_, blurred_, warp_, momentBuffer_;
+  gl::Buffer collapsed_, blurred_, warp_, inverse_, momentBuffer_;
+  gl::Fence momentFence_;  ///< after the moment chain of the last frame (read a frame late)
   std::vector<int> momentOffsets_;  ///< float offset of each level
   std::vector<glm::ivec2> momentSizes_;
-  int smRes_ = 0, imRes_ = 0;
-  bool imValid_ = false;  ///< the IM holds last frame's importance (for the rotation)
-  glm::mat4 lightViewProj_{1.0f};
+  int smRes_ = 0, imRes_ = 0, momentRes_ = 0;
+  DepthLookupState lookup_;
   glm::vec2 lastExtentM_{1.0f};
-  float normalOffsetM_ = 0.0f;
-  int pcfRadius_ = 0;
+  glm::vec2 momentExtentM_{1.0f};  ///< the light frustum extent the pending moments were taken in
   rtw::RotationState rotation_;
   rtw::RotationUpdate lastUpdate_;
   std::array<float, 6> lastTop_{};

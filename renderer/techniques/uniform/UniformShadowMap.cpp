@@ -25,10 +25,7 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
   if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
                                      FocusSettings{}, fit))
     throw std::runtime_error(*err);
-  lightViewProj_ = fit.viewProj;
-  texelSizeM_ = std::max(fit.extentM.x, fit.extentM.y) / float(res);
-  normalOffsetTexels_ = float(ctx.params.get("bias.normal"));
-  pcfRadius_ = ctx.params.getInt("pcf");
+  lookup_ = depthLookupState(fit, ctx.params);
 
   if (!shadowMap_ || shadowMap_.width() != res) {
     shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
@@ -37,17 +34,13 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
     fbo_.setDrawBuffers(0);
     fbo_.checkComplete("uniform shadow map");
   }
-  renderDepth(ctx, depthProgram_, fbo_.id(), res, res, fit.viewProj,
-              float(ctx.params.get("bias.slope")), float(ctx.params.get("bias.constant")));
+  renderDepth(ctx, depthProgram_, fbo_.id(), res, res, fit.viewProj);
   if (ctx.publication) publishDepth(*ctx.publication, "shadow map", shadowMap_);
 }
 
 void UniformShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
-  resolve.set("u_shadowMap", firstUnit);
-  resolve.set("u_lightViewProj", lightViewProj_);
-  resolve.set("u_normalOffsetM", normalOffsetTexels_ * texelSizeM_);
-  resolve.set("u_pcfRadius", pcfRadius_);
+  bindDepthLookup(resolve, firstUnit, shadowMap_, lookup_);
+  resolve.set("u_uniformMapSize", glm::vec2(float(shadowMap_.width()), float(shadowMap_.height())));
 }
 
 MemoryStats UniformShadowMap::memory() const {

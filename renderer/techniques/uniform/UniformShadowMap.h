@@ -3,6 +3,7 @@
 // other technique is compared against at the same texel budget.
 #pragma once
 
+#include "core/ShadowPass.h"
 #include "core/Technique.h"
 
 namespace sl {
@@ -22,10 +23,7 @@ class UniformShadowMap : public Technique {
   gl::Program depthProgram_;
   gl::Texture shadowMap_;
   gl::Framebuffer fbo_;
-  glm::mat4 lightViewProj_{1.0f};
-  float texelSizeM_ = 0.0f;
-  float normalOffsetTexels_ = 1.0f;
-  int pcfRadius_ = 0;
+  DepthLookupState lookup_;
 };
 
 }  // namespace sl

@@ -457,6 +457,9 @@ FrameReadback Renderer::readback() const {
   r.aliasing.resize(n);
   glGetTextureImage(t.aliasing.id(), 0, GL_RED, GL_FLOAT, GLsizei(n * sizeof(float)),
                     r.aliasing.data());
+  r.texel.resize(n);
+  glGetTextureImage(t.texel.id(), 0, GL_RG, GL_FLOAT, GLsizei(n * sizeof(glm::vec2)),
+                    r.texel.data());
   r.color.width = t.width;
   r.color.height = t.height;
   r.color.pixels.resize(n * 4);
@@ -473,6 +476,7 @@ FrameReadback Renderer::readback() const {
   flip(r.normals);
   flip(r.hardMask);
   flip(r.aliasing);
+  flip(r.texel);
   return r;
 }
 

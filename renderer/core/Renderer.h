@@ -76,6 +76,9 @@ struct FrameReadback {
   /// 1/sqrt(|dX x dY|) with dX, dY the screen derivatives of the final (warped) shadow-map
   /// texel coordinate. m > 1: undersampled. 0 where uncovered.
   std::vector<float> aliasing;
+  /// The final shadow-map uv the resolve pass looked up per pixel (through any warp, with
+  /// the technique's normal offset applied); (0, 0) where uncovered.
+  std::vector<glm::vec2> texel;
   ImageRGBA8 color;  ///< final shaded image, row 0 = top
 };
 

@@ -1,5 +1,9 @@
 #include "SceneGpu.h"
 
+#include <cmath>
+
+#include "algo/MeshSplit.h"
+
 namespace sl {
 
 namespace {
@@ -10,31 +14,34 @@ struct Vertex {
 };
 }  // namespace
 
-SceneGpu::SceneGpu(const Scene& scene) : materials_(scene.materials) {
+SceneGpu::Mesh SceneGpu::upload(const Scene& scene, float splitEdgeM) const {
+  Mesh mesh;
   std::vector<Vertex> verts;
   std::vector<std::uint32_t> idx;
   for (const MeshPrimitive& prim : scene.primitives) {
+    TriangleMesh src{prim.positions, prim.normals, prim.uvs, prim.indices};
+    TriangleMesh m = splitEdgeM > 0.0f ? splitLongTriangles(src, splitEdgeM) : std::move(src);
     std::uint32_t base = std::uint32_t(verts.size());
-    for (size_t i = 0; i < prim.positions.size(); ++i) {
-      const glm::vec3& p = prim.positions[i];
-      glm::vec3 n = i < prim.normals.size() ? prim.normals[i] : glm::vec3(0, 1, 0);
-      glm::vec2 uv = i < prim.uvs.size() ? prim.uvs[i] : glm::vec2(0.0f);
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+      const glm::vec3& p = m.positions[i];
+      glm::vec3 n = i < m.normals.size() ? m.normals[i] : glm::vec3(0, 1, 0);
+      glm::vec2 uv = i < m.uvs.size() ? m.uvs[i] : glm::vec2(0.0f);
       verts.push_back({p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y});
     }
     Draw d;
     d.firstIndex = idx.size();
-    d.indexCount = GLsizei(prim.indices.size());
+    d.indexCount = GLsizei(m.indices.size());
     d.material = prim.material;
-    for (std::uint32_t i : prim.indices) idx.push_back(base + i);
-    if (d.indexCount > 0) draws_.push_back(d);
-    triangles_ += prim.indices.size() / 3;
+    for (std::uint32_t i : m.indices) idx.push_back(base + i);
+    if (d.indexCount > 0) mesh.draws.push_back(d);
+    mesh.triangles += m.indices.size() / 3;
   }
-  vertices_ = gl::Buffer::create(GLsizeiptr(verts.size() * sizeof(Vertex)), verts.data(), 0);
-  indices_ = gl::Buffer::create(GLsizeiptr(idx.size() * sizeof(std::uint32_t)), idx.data(), 0);
-  vao_ = gl::createVertexArray();
-  GLuint vao = vao_.id();
-  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
-  glVertexArrayElementBuffer(vao, indices_.id());
+  mesh.vertices = gl::Buffer::create(GLsizeiptr(verts.size() * sizeof(Vertex)), verts.data(), 0);
+  mesh.indices = gl::Buffer::create(GLsizeiptr(idx.size() * sizeof(std::uint32_t)), idx.data(), 0);
+  mesh.vao = gl::createVertexArray();
+  GLuint vao = mesh.vao.id();
+  glVertexArrayVertexBuffer(vao, 0, mesh.vertices.id(), 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vao, mesh.indices.id());
   for (GLuint a = 0; a < 3; ++a) {
     glEnableVertexArrayAttrib(vao, a);
     glVertexArrayAttribBinding(vao, a, 0);
@@ -42,6 +49,15 @@ SceneGpu::SceneGpu(const Scene& scene) : materials_(scene.materials) {
   glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, px));
   glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, nx));
   glVertexArrayAttribFormat(vao, 2, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, u));
+  return mesh;
+}
+
+SceneGpu::SceneGpu(const Scene& scene) : materials_(scene.materials) {
+  const glm::vec3 diagonal = scene.bounds.max - scene.bounds.min;
+  const float length = glm::length(diagonal);
+  splitEdgeM_ = std::isfinite(length) && length > 0.0f ? length / kSplitEdgeDivisor : 0.0f;
+  meshes_[0] = upload(scene, 0.0f);
+  meshes_[1] = upload(scene, splitEdgeM_);
 
   for (const SceneImage& img : scene.images) {
     if (img.width <= 0 || img.height <= 0 ||
@@ -61,12 +77,14 @@ SceneGpu::SceneGpu(const Scene& scene) : materials_(scene.materials) {
   }
 }
 
-void SceneGpu::draw(const gl::Program& program, int textureUnit, bool patches) const {
-  glBindVertexArray(vao_.id());
+void SceneGpu::draw(const gl::Program& program, int textureUnit, bool patches,
+                    Geometry geometry) const {
+  const Mesh& mesh = meshes_[geometry == Geometry::AsLoaded ? 0 : 1];
+  glBindVertexArray(mesh.vao.id());
   if (patches) glPatchParameteri(GL_PATCH_VERTICES, 3);
   program.set("u_baseColorTex", textureUnit);
   static const Material kDefault{};
-  for (const Draw& d : draws_) {
+  for (const Draw& d : mesh.draws) {
     const Material& m = d.material >= 0 && size_t(d.material) < materials_.size()
                             ? materials_[d.material]
                             : kDefault;

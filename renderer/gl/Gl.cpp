@@ -56,6 +56,18 @@ Texture Texture::create2D(GLenum internalFormat, int width, int height, int leve
   return t;
 }
 
+Texture Texture::createBufferView(GLenum internalFormat, const Buffer& buffer) {
+  Texture t;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+  t.h_ = Handle<TextureDeleter>(id);
+  glTextureBuffer(id, internalFormat, buffer.id());
+  t.width_ = int(buffer.size() / bytesPerTexel(internalFormat));
+  t.height_ = 1;
+  t.format_ = internalFormat;
+  return t;
+}
+
 Texture Texture::create1D(GLenum internalFormat, int width) {
   Texture t;
   GLuint id = 0;

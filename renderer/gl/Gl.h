@@ -69,6 +69,9 @@ class Texture {
   /// Allocates immutable storage; `levels` mip levels.
   static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
   static Texture create1D(GLenum internalFormat, int width);
+  /// A buffer texture viewing `buffer` (no storage of its own): shaders texelFetch a
+  /// samplerBuffer, which software rasterisers serve much faster than SSBO loads.
+  static Texture createBufferView(GLenum internalFormat, const class Buffer& buffer);
   GLuint id() const { return h_.id(); }
   int width() const { return width_; }
   int height() const { return height_; }

@@ -239,6 +239,38 @@ SceneBuilder makeDefault() {
   return b;
 }
 
+// ----------------------------------------------------------------------------------------
+// yard (a test fixture, tests/data/yard.gltf): what a user's glTF looks like to the warp —
+// a 160 m ground of two triangles, crates, posts and a wall from 2 m to 70 m ahead of a
+// walking camera. RTW must get better with every texel here too (issue 8).
+SceneBuilder makeYard() {
+  SceneBuilder b("yard");
+  int ground = b.addMaterial("ground", {0.62f, 0.60f, 0.55f, 1.0f});
+  int crate = b.addMaterial("crate", {0.70f, 0.52f, 0.30f, 1.0f});
+  int stone = b.addMaterial("stone", {0.55f, 0.55f, 0.60f, 1.0f});
+  b.addNode("ground", b.addMesh("ground", groundQuad(-80.0f, 80.0f, -80.0f, 80.0f), ground));
+  MeshData crates, stones;
+  for (int i = 0; i < 14; ++i) {  // crates along the walk, every 5 m, alternating sides
+    float z = -3.0f - 5.0f * float(i), x = (i % 2 ? 2.6f : -2.4f) + 0.3f * float(i % 3);
+    float h = 0.4f + 0.15f * float(i % 4);
+    crates.addBox({x, h, z}, {0.5f + 0.1f * float(i % 3), h, 0.5f}, 12.0f * float(i % 5));
+  }
+  for (int i = 0; i < 10; ++i)  // thin posts further out
+    stones.addBox({-7.0f + 1.5f * float(i % 3), 1.5f, -8.0f - 7.0f * float(i)},
+                  {0.06f, 1.5f, 0.06f});
+  stones.addBox({6.0f, 1.0f, -40.0f}, {0.2f, 1.0f, 30.0f});  // a 60 m wall on the right
+  b.addNode("crates", b.addMesh("crates", crates, crate));
+  b.addNode("stones", b.addMesh("stones", stones, stone));
+  b.addSun(140.0f, 35.0f);
+  std::vector<CameraKeyframe> keys;
+  for (int k = 0; k <= 10; ++k) {
+    float z = 4.0f - 4.0f * float(k);  // walk 40 m down the yard at 4 m/s
+    keys.push_back({float(k), {0.3f * std::sin(float(k)), 1.7f, z}, {0.0f, 0.8f, z - 20.0f}});
+  }
+  addPath(b, "walk", 55.0f, 0.1f, 150.0f, keys);
+  return b;
+}
+
 int writeScene(SceneBuilder builder, const std::string& name, const std::filesystem::path& dir,
                const std::filesystem::path& previewDir) {
   std::filesystem::path path = dir / (name + ".gltf");
@@ -322,6 +354,7 @@ int main(int argc, char** argv) {
   if (!fixturesDir.empty()) {
     fs::create_directories(fixturesDir);
     rc |= sl::gen::writeFixtures(fixturesDir);
+    rc |= sl::gen::writeScene(sl::gen::makeYard(), "yard", fixturesDir, {});
   }
   return rc;
 }

@@ -237,6 +237,7 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
     smFbo_.setDrawBuffers(0);
     smFbo_.checkComplete("RTW warped shadow map");
     inverse_ = gl::Buffer::create(GLsizeiptr(2 * smRes * sizeof(float)), nullptr, rw);
+    inverseView_ = gl::Texture::createBufferView(GL_R32F, inverse_);
     uniformMap_ = {};
     smRes_ = smRes;
   }
@@ -247,6 +248,7 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
     collapsed_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     blurred_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     warp_ = gl::Buffer::create(GLsizeiptr(2 * (imRes + 1) * sizeof(float)), nullptr, rw);
+    warpView_ = gl::Texture::createBufferView(GL_R32F, warp_);
     imRes_ = imRes;
     momentFence_.reset();
   }
@@ -475,8 +477,7 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
   gl::Framebuffer& fbo = warp ? smFbo_ : uniformFbo_;
   beginDepthPass(fbo.id(), smRes_, smRes_);
   warped_.use();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, inverse_.id());
+  bindWarpTextures(warped_, 1);  // unit 0: the material's texture
   warped_.set("u_lightViewProj", lightViewProj);
   warped_.set("u_warpN", imRes_);
   warped_.set("u_warpOn", warp ? 1 : 0);
@@ -485,7 +486,7 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
   warped_.set("u_toleranceTexels", float(p.get("tessellation.tolerance")));
   warped_.set("u_maxLevel", float(kMaxTessellationLevel));
   warped_.set("u_smSize", glm::vec2(float(smRes_)));
-  ctx.sceneGpu.draw(warped_, 0, true);
+  ctx.sceneGpu.draw(warped_, 0, true, SceneGpu::Geometry::SplitLongTriangles);
 }
 
 void RtwShadowMap::renderShadows(FrameContext& ctx) {
@@ -561,11 +562,17 @@ void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
 
 void RtwShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
   bindDepthLookup(resolve, firstUnit, shadowMap_, lookup_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, inverse_.id());
+  bindWarpTextures(resolve, firstUnit + 1);
   resolve.set("u_warpN", imRes_);
   resolve.set("u_warpOn", 1);
   resolve.set("u_smRes", smRes_);
+}
+
+void RtwShadowMap::bindWarpTextures(const gl::Program& prog, int unit) const {
+  glBindTextureUnit(GLuint(unit), warpView_.id());
+  glBindTextureUnit(GLuint(unit + 1), inverseView_.id());
+  prog.set("u_warpEdges", unit);
+  prog.set("u_inverseWarp", unit + 1);
 }
 
 MemoryStats RtwShadowMap::memory() const {

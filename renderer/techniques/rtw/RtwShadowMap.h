@@ -41,6 +41,8 @@ class RtwShadowMap : public Technique {
   void renderWarped(FrameContext& ctx, const glm::mat4& lightViewProj, bool warp);
   void publish(FrameContext& ctx, const glm::mat4& lightViewProj);
   bool backward() const { return config_.analysis == Analysis::Backward; }
+  /// Binds the warp maps and inverse tables (shaders/rtw/warp.glsl) to `unit`, `unit + 1`.
+  void bindWarpTextures(const gl::Program& prog, int unit) const;
 
   Config config_;
   gl::Program backward_, forward_, collapse_, blur_, scanWarp_, inverseWarp_, warped_, moments_,
@@ -53,6 +55,7 @@ class RtwShadowMap : public Technique {
   gl::Texture uniformMap_;  ///< unwarped contrast map, only while a panel shows it
   gl::Framebuffer smFbo_, forwardFbo_, uniformFbo_;
   gl::Buffer collapsed_, blurred_, warp_, inverse_, momentBuffer_;
+  gl::Texture warpView_, inverseView_;  ///< buffer textures over warp_ and inverse_
   gl::Fence momentFence_;  ///< after the moment chain of the last frame (read a frame late)
   std::vector<int> momentOffsets_;  ///< float offset of each level
   std::vector<glm::ivec2> momentSizes_;

@@ -1,3 +1,4 @@
+// The Charts panel; see ChartsPanel.h.
 #include "ChartsPanel.h"
 
 #include <algorithm>
@@ -5,6 +6,7 @@
 #include <limits>
 #include <map>
 
+#include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -20,24 +22,15 @@
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegend>
-#include <QtCharts/QLineSeries>
-#include <QtCharts/QLogValueAxis>
-#include <QtCharts/QScatterSeries>
-#include <QtCharts/QValueAxis>
 
+#include "ChartKit.h"
 #include "ViewportWidget.h"
-#include "algo/metrics/BenchStats.h"
 
 namespace sl::ui {
 
 namespace {
 
 constexpr int kWidth = 320, kHeight = 180;
-
-QColor techniqueColor(std::size_t i) {
-  const auto rgb = sl::chartColorRgb(i);
-  return QColor(rgb[0], rgb[1], rgb[2]);
-}
 
 double medianOf(std::vector<double> v) {
   if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
@@ -65,6 +58,18 @@ ChartsPanel::ChartsPanel(ViewportWidget* viewport, QWidget* parent)
   framesSpin_->setSuffix(tr(" frames"));
   framesSpin_->setToolTip(tr("Frames per configuration, along the scene's camera path"));
   row->addWidget(framesSpin_);
+  xCombo_ = new QComboBox;
+  xCombo_->setObjectName(QStringLiteral("chartsX"));
+  xCombo_->addItem(tr("x: time (ms)"), QStringLiteral("ms"));
+  xCombo_->addItem(tr("x: memory (bytes)"), QStringLiteral("bytes"));
+  xCombo_->setToolTip(
+      tr("What the x axis and the Pareto front are against: the whole frame's time, or the "
+         "technique's shadow memory (as shadowlab-cli chart --x ms|bytes); no new sweep"));
+  connect(xCombo_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    chartX_ = sl::parseChartX(xCombo_->itemData(index).toString().toStdString())
+                  .value_or(sl::ChartX::TimeMs);
+    redrawChart();
+  });
   runButton_ = new QPushButton(tr("Run"));
   runButton_->setObjectName(QStringLiteral("chartsRun"));
   connect(runButton_, &QPushButton::clicked, this, [this] { startSweep(); });
@@ -78,7 +83,10 @@ ChartsPanel::ChartsPanel(ViewportWidget* viewport, QWidget* parent)
   progress_ = new QProgressBar;
   progress_->setRange(0, 1);
   progress_->setValue(0);
-  layout->addWidget(progress_);
+  auto* progressRow = new QHBoxLayout;  // the x choice here keeps the sweep text wide
+  progressRow->addWidget(progress_, 1);
+  progressRow->addWidget(xCombo_);
+  layout->addLayout(progressRow);
   status_ =
       new QLabel(tr("Run a sweep to chart speed against accuracy for this scene; click a "
                     "point to view that configuration."));
@@ -123,6 +131,17 @@ void ChartsPanel::setSweepText(const QString& text) {
 }
 void ChartsPanel::setFramesPerConfig(int frames) {
   framesSpin_->setValue(frames);
+}
+void ChartsPanel::setChartX(sl::ChartX x) {
+  xCombo_->setCurrentIndex(x == sl::ChartX::Bytes ? 1 : 0);  // redraws when it changes
+}
+QString ChartsPanel::xAxisTitle() const {
+  const QChart* chart = chartView_->chart();
+  const QList<QAbstractAxis*> axes = chart ? chart->axes(Qt::Horizontal) : QList<QAbstractAxis*>{};
+  return axes.isEmpty() ? QString() : axes.front()->titleText();
+}
+double ChartsPanel::chartXOf(const Config& c) const {
+  return chartX_ == sl::ChartX::Bytes ? c.medianBytes / xUnitScale_ : c.medianMs;
 }
 
 QString ChartsPanel::defaultSweepText() const {
@@ -283,6 +302,7 @@ void ChartsPanel::tick() {
     if (auto e = renderer_->renderFrame(kWidth, kHeight, target_->handle()))
       problem = QString::fromStdString(*e);
     config.ms.push_back(renderer_->stats().totalMs);
+    config.bytes.push_back(double(renderer_->stats().memory.bytes()));
     config.errorPct.push_back(renderer_->computeError().stats.errorPct);
   } catch (const std::exception& e) {
     problem = QString::fromUtf8(e.what());
@@ -297,6 +317,7 @@ void ChartsPanel::tick() {
   progress_->setValue(configIndex_ * frames_ + frameIndex_ + 1);
   if (++frameIndex_ >= frames_) {
     config.medianMs = medianOf(config.ms);
+    config.medianBytes = medianOf(config.bytes);
     config.medianErrorPct = medianOf(config.errorPct);
     config.done = true;
     frameIndex_ = 0;
@@ -309,7 +330,7 @@ void ChartsPanel::tick() {
 void ChartsPanel::redrawChart() {
   auto* chart = new QChart();
   chart->setTitle(QStringLiteral("<b>%1</b><br>%2")
-                      .arg(tr("Speed against accuracy"),
+                      .arg(QString::fromUtf8(sl::chartHeadline(chartX_)),
                            viewport_ && viewport_->scene()
                                ? QString::fromStdString(viewport_->scene()->name).toHtmlEscaped()
                                : QString()));
@@ -319,52 +340,32 @@ void ChartsPanel::redrawChart() {
   chart->legend()->setBackgroundVisible(false);
 
   std::vector<std::size_t> shown;
-  double maxX = 0.0, maxY = 0.0, minY = std::numeric_limits<double>::infinity();
+  std::vector<sl::CostPoint> costs;  ///< of the shown configurations, against the chosen x
+  std::vector<double> xs, ys;
   for (std::size_t i = 0; i < configs_.size(); ++i) {
     const Config& c = configs_[i];
-    if (!c.done || !std::isfinite(c.medianMs) || !std::isfinite(c.medianErrorPct)) continue;
+    const double cost = chartX_ == sl::ChartX::Bytes ? c.medianBytes : c.medianMs;
+    if (!c.done || !std::isfinite(cost) || !std::isfinite(c.medianErrorPct)) continue;
     shown.push_back(i);
-    maxX = std::max(maxX, c.medianMs);
-    maxY = std::max(maxY, c.medianErrorPct);
-    minY = std::min(minY, c.medianErrorPct);
+    costs.push_back({cost, c.medianErrorPct});
+    xs.push_back(cost);
+    ys.push_back(c.medianErrorPct);
   }
-  auto* axisX = new QValueAxis();
-  axisX->setTitleText(tr("frame time, ms (median)"));
-  const auto [xMax, xTicks] = sl::niceAxisRange(maxX * 1.08);
-  axisX->setRange(0.0, xMax);
-  axisX->setTickCount(xTicks);
-  axisX->setLabelFormat(QStringLiteral("%.3g"));
-  QAbstractAxis* axisY = nullptr;
-  if (minY > 0.0 && maxY / minY > 20.0) {
-    auto* a = new QLogValueAxis();
-    a->setBase(10.0);
-    a->setRange(minY / 1.6, maxY * 1.6);
-    a->setMinorTickCount(8);
-    a->setLabelFormat(QStringLiteral("%g"));
-    a->setTitleText(tr("shadow error, % of covered pixels (median), log scale"));
-    axisY = a;
-  } else {
-    auto* a = new QValueAxis();
-    const auto [yMax, yTicks] = sl::niceAxisRange(maxY * 1.12);
-    a->setRange(0.0, yMax);
-    a->setTickCount(yTicks);
-    a->setLabelFormat(QStringLiteral("%.3g"));
-    a->setTitleText(tr("shadow error, % of covered pixels (median)"));
-    axisY = a;
-  }
+  const sl::ChartAxis xPlan = sl::planCostAxis(chartX_, xs);
+  xUnitScale_ = xPlan.unitScale;
+  QAbstractAxis* axisX = makeChartAxis(xPlan);
+  QAbstractAxis* axisY = makeChartAxis(sl::planChartAxis(
+      ys, sl::AxisScale::Auto, 20.0, 0.12, "shadow error, % of covered pixels (median)"));
   chart->addAxis(axisX, Qt::AlignBottom);
   chart->addAxis(axisY, Qt::AlignLeft);
 
-  std::vector<sl::CostPoint> costs;
-  for (std::size_t i : shown) costs.push_back({configs_[i].medianMs, configs_[i].medianErrorPct});
-  auto* front = new QLineSeries();
-  front->setName(tr("Pareto front"));
-  QPen frontPen(QColor(40, 40, 40));
-  frontPen.setWidthF(1.6);
-  frontPen.setStyle(Qt::DashLine);
-  front->setPen(frontPen);
-  for (std::size_t k : sl::paretoFront(costs))
-    front->append(configs_[shown[k]].medianMs, configs_[shown[k]].medianErrorPct);
+  QLineSeries* front = makeParetoSeries(tr("Pareto front"));
+  drawnFront_.clear();
+  for (std::size_t k : sl::paretoFront(costs)) {
+    drawnFront_.push_back(shown[k]);
+    const Config& c = configs_[shown[k]];
+    front->append(chartXOf(c), c.medianErrorPct);
+  }
   chart->addSeries(front);
   front->attachAxis(axisX);
   front->attachAxis(axisY);
@@ -374,17 +375,10 @@ void ChartsPanel::redrawChart() {
   for (std::size_t i : shown) {
     const QString& id = configs_[i].techniqueId;
     if (!series.count(id)) {
-      auto* s = new QScatterSeries();
-      const QColor color = techniqueColor(order.size());
-      s->setName(id);
-      s->setColor(color);
-      s->setBorderColor(color.darker(140));
-      s->setMarkerShape(QScatterSeries::MarkerShapeCircle);
-      s->setMarkerSize(11.0);
-      series[id] = s;
+      series[id] = makeTechniqueSeries(order.size(), id);
       order.push_back(id);
     }
-    series[id]->append(configs_[i].medianMs, configs_[i].medianErrorPct);
+    series[id]->append(chartXOf(configs_[i]), configs_[i].medianErrorPct);
   }
   for (const QString& id : order) {
     QScatterSeries* s = series[id];
@@ -398,7 +392,7 @@ void ChartsPanel::redrawChart() {
       for (std::size_t i = 0; i < configs_.size(); ++i) {
         const Config& c = configs_[i];
         if (!c.done || c.techniqueId != id) continue;
-        const double d = std::hypot(c.medianMs - p.x(), c.medianErrorPct - p.y());
+        const double d = std::hypot(chartXOf(c) - p.x(), c.medianErrorPct - p.y());
         if (d < bestD) bestD = d, best = int(i);
       }
       if (best >= 0) choose(best);
@@ -406,10 +400,11 @@ void ChartsPanel::redrawChart() {
     connect(s, &QScatterSeries::hovered, this, [this, id](const QPointF& p, bool state) {
       if (!state) return QToolTip::hideText();
       for (const Config& c : configs_)
-        if (c.done && c.techniqueId == id && c.medianMs == p.x() && c.medianErrorPct == p.y())
-          QToolTip::showText(QCursor::pos(), tr("%1\n%2 ms, %3 % error\nclick to view it")
+        if (c.done && c.techniqueId == id && chartXOf(c) == p.x() && c.medianErrorPct == p.y())
+          QToolTip::showText(QCursor::pos(), tr("%1\n%2 ms, %3 MiB, %4 % error\nclick to view it")
                                                  .arg(c.label)
                                                  .arg(c.medianMs, 0, 'g', 3)
+                                                 .arg(c.medianBytes / (1024.0 * 1024.0), 0, 'g', 3)
                                                  .arg(c.medianErrorPct, 0, 'g', 3));
     });
   }
@@ -421,9 +416,10 @@ void ChartsPanel::redrawChart() {
 void ChartsPanel::choose(int index) {
   if (index < 0 || index >= int(configs_.size())) return;
   const Config& c = configs_[std::size_t(index)];
-  status_->setText(tr("Showing %1 (%2 ms, %3 % error in the sweep).")
+  status_->setText(tr("Showing %1 (%2 ms, %3 MiB, %4 % error in the sweep).")
                        .arg(c.label)
                        .arg(c.medianMs, 0, 'g', 3)
+                       .arg(c.medianBytes / (1024.0 * 1024.0), 0, 'g', 3)
                        .arg(c.medianErrorPct, 0, 'g', 3));
   Q_EMIT configurationChosen(c.techniqueId, c.assignments);
 }

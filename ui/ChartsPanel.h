@@ -2,8 +2,9 @@
 // CLI's `bench` in miniature: configurations "ID[:KEY=V1,V2]...", N frames along the
 // scene's camera path, medians of frame time and shadow error) on the GUI thread, one frame
 // per timer tick, with a progress bar and Cancel, and draws the same scatter chart with its
-// Pareto front as results arrive. Clicking a point asks the main window to switch the view
-// to that configuration (configurationChosen).
+// Pareto front as results arrive. x is the frame time or the shadow memory (a combo box;
+// switching redraws without measuring again). Clicking a point asks the main window to
+// switch the view to that configuration (configurationChosen).
 #pragma once
 
 #include <memory>
@@ -16,10 +17,12 @@
 #include <QTimer>
 #include <QWidget>
 
+#include "algo/metrics/BenchStats.h"
 #include "core/Renderer.h"
 
 class QChart;
 class QChartView;
+class QComboBox;
 class QLabel;
 class QLineEdit;
 class QOpenGLFramebufferObject;
@@ -38,10 +41,10 @@ class ChartsPanel : public QWidget {
   /// One configuration of the sweep and what it measured.
   struct Config {
     QString techniqueId;
-    QStringList assignments;  ///< "KEY=VALUE", technique or shared parameters
-    QString label;            ///< "uniform resolution=1024"
-    std::vector<double> ms, errorPct;
-    double medianMs = 0.0, medianErrorPct = 0.0;
+    QStringList assignments;                  ///< "KEY=VALUE", technique or shared parameters
+    QString label;                            ///< "uniform resolution=1024"
+    std::vector<double> ms, bytes, errorPct;  ///< per frame (bytes: shadow memory)
+    double medianMs = 0.0, medianBytes = 0.0, medianErrorPct = 0.0;
     bool done = false;
   };
 
@@ -51,6 +54,13 @@ class ChartsPanel : public QWidget {
   /// The sweep text, "ID[:KEY=V1,V2,...] ..." (empty: the default for the technique shown).
   void setSweepText(const QString& text);
   void setFramesPerConfig(int frames);
+  /// What the chart's x axis and Pareto front are against (the combo box follows).
+  void setChartX(sl::ChartX x);
+  sl::ChartX chartX() const { return chartX_; }
+  /// The configurations on the drawn Pareto front (indices into configs(), by cost).
+  const std::vector<std::size_t>& drawnFront() const { return drawnFront_; }
+  /// The drawn chart's x-axis title.
+  QString xAxisTitle() const;
   /// Starts the sweep (false, with the reason in the status line, on a bad sweep text).
   bool startSweep();
   void cancelSweep();
@@ -73,6 +83,8 @@ class ChartsPanel : public QWidget {
   void tick();
   void finish(bool completed);
   void redrawChart();
+  /// Where configuration c sits on the x axis now (ms, or bytes in the axis' unit).
+  double chartXOf(const Config& c) const;
   QString defaultSweepText() const;
   /// Parses the sweep text into configs_; the error, or empty.
   QString parseSweep(const QString& text);
@@ -80,6 +92,7 @@ class ChartsPanel : public QWidget {
   QPointer<ViewportWidget> viewport_;  ///< (gone first when the window closes)
   QLineEdit* sweepEdit_ = nullptr;
   QSpinBox* framesSpin_ = nullptr;
+  QComboBox* xCombo_ = nullptr;
   QPushButton* runButton_ = nullptr;
   QPushButton* cancelButton_ = nullptr;
   QProgressBar* progress_ = nullptr;
@@ -91,6 +104,9 @@ class ChartsPanel : public QWidget {
   std::unique_ptr<QOpenGLFramebufferObject> target_;
   QTimer timer_;
   int configIndex_ = 0, frameIndex_ = 0, frames_ = 6;
+  sl::ChartX chartX_ = sl::ChartX::TimeMs;
+  double xUnitScale_ = 1.0;  ///< data units per x-axis unit of the drawn chart
+  std::vector<std::size_t> drawnFront_;
 };
 
 }  // namespace sl::ui

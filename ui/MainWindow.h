@@ -164,6 +164,8 @@ class MainWindow : public QMainWindow {
   bool selfTestTeaching(const QString& dir);
   /// A tiny Charts sweep, its PNG into `dir`, and a click on a point switching the view.
   bool selfTestCharts(const QString& dir);
+  /// Part of selfTestCharts: x: memory and back through the combo box (axis, front).
+  bool selfTestChartsAxis(const QString& dir);
   void selfTestCheck(bool ok, const QString& what);
   void runSelfTest();
   /// stderr always; status bar; a dialog titled `title` when interactive and non-empty.

@@ -115,11 +115,14 @@ bool MainWindow::selfTestCharts(const QString& dir) {
   chartsDock_->show();
   chartsDock_->raise();
   QCoreApplication::processEvents();
-  // 2 configurations x 2 frames: uniform at two resolutions that differ from the view's.
+  // 3 configurations x 2 frames: uniform at two resolutions that differ from the view's, and
+  // a small RTW map (slower than uniform, but little memory: the fronts against time and
+  // against memory can differ).
   sl::Renderer* r = viewport_->renderer();
   const int shownResolution = r->paramsOf("uniform").getInt("resolution");
   const int wanted = shownResolution == 256 ? 512 : 256;
-  chartsPanel_->setSweepText(QStringLiteral("uniform:resolution=%1,2048").arg(wanted));
+  chartsPanel_->setSweepText(
+      QStringLiteral("uniform:resolution=%1,2048 rtw-backward:resolution=256").arg(wanted));
   chartsPanel_->setFramesPerConfig(2);
   bool finished = false, completed = false;
   const auto connection = connect(chartsPanel_, &ChartsPanel::sweepFinished, this,
@@ -141,14 +144,14 @@ bool MainWindow::selfTestCharts(const QString& dir) {
   disconnect(connection);
   selfTestCheck(finished && completed, QStringLiteral("the sweep completes"));
   const auto& configs = chartsPanel_->configs();
-  bool measured = configs.size() == 2;
+  bool measured = configs.size() == 3;
   for (const auto& c : configs) {
     measured = measured && c.done && c.ms.size() == 2 && c.medianMs > 0.0 &&
                std::isfinite(c.medianErrorPct) && c.medianErrorPct >= 0.0;
     std::printf("     %s: %.3g ms, %.3g %% error\n", qPrintable(c.label), c.medianMs,
                 c.medianErrorPct);
   }
-  selfTestCheck(measured, QStringLiteral("2 configurations x 2 frames measured"));
+  selfTestCheck(measured, QStringLiteral("3 configurations x 2 frames measured"));
   if (!measured) return false;
   QCoreApplication::processEvents();
   if (!dir.isEmpty()) {
@@ -156,6 +159,7 @@ bool MainWindow::selfTestCharts(const QString& dir) {
     const QString png = QDir(dir).filePath(QStringLiteral("panel-charts.png"));
     selfTestCheck(chartsDock_->grab().toImage().save(png), QStringLiteral("saved ") + png);
   }
+  if (!selfTestChartsAxis(dir)) return false;
   // A click on the first point (the slot the scatter series' clicked signal calls), from
   // another technique.
   setTechnique(QStringLiteral("rtw-backward"));
@@ -170,6 +174,60 @@ bool MainWindow::selfTestCharts(const QString& dir) {
       techniqueCombo_->findData(QString::fromStdString(r ? r->techniqueId() : std::string()));
   selfTestCheck(index >= 0 && techniqueCombo_->currentIndex() == index,
                 QStringLiteral("the technique combo follows"));
+  return true;
+}
+
+bool MainWindow::selfTestChartsAxis(const QString& dir) {
+  // x: memory through the combo box, as a user would: axis and front change, no new sweep.
+  const auto& configs = chartsPanel_->configs();
+  auto* xCombo = chartsPanel_->findChild<QComboBox*>(QStringLiteral("chartsX"));
+  selfTestCheck(xCombo && xCombo->count() == 2, QStringLiteral("the x combo box is there"));
+  if (!xCombo) return false;
+  // The front the panel should draw against each x, from the measured medians.
+  auto expectedFront = [&](bool bytes) {
+    std::vector<sl::CostPoint> costs;
+    for (const auto& c : configs)
+      costs.push_back({bytes ? c.medianBytes : c.medianMs, c.medianErrorPct});
+    return sl::paretoFront(costs);
+  };
+  xCombo->setCurrentIndex(xCombo->findData(QStringLiteral("bytes")));
+  QCoreApplication::processEvents();
+  // uniform's memory is its one map: it grows with resolution² ("resolution=N" sweeps).
+  auto resolutionOf = [](const ChartsPanel::Config& c) {
+    return c.assignments.front().section(QLatin1Char('='), 1).toDouble();
+  };
+  const double ratio =
+      configs[0].medianBytes > 0.0 ? configs[1].medianBytes / configs[0].medianBytes : 0.0;
+  const double wantedRatio = std::pow(resolutionOf(configs[1]) / resolutionOf(configs[0]), 2.0);
+  std::printf("     memory: %.0f and %.0f bytes (ratio %g, expected %g)\n", configs[0].medianBytes,
+              configs[1].medianBytes, ratio, wantedRatio);
+  selfTestCheck(ratio == wantedRatio,
+                QStringLiteral("shadow memory measured per configuration (resolution²)"));
+  selfTestCheck(
+      chartsPanel_->chartX() == sl::ChartX::Bytes &&
+          chartsPanel_->xAxisTitle().contains(QStringLiteral("memory")) &&
+          chartsPanel_->xAxisTitle().contains(QStringLiteral("iB")),
+      QStringLiteral("x: memory switches the axis (\"%1\")").arg(chartsPanel_->xAxisTitle()));
+  auto frontText = [](const std::vector<std::size_t>& front) {
+    QStringList s;
+    for (std::size_t i : front) s << QString::number(i);
+    return s.join(QLatin1Char(','));
+  };
+  selfTestCheck(chartsPanel_->drawnFront() == expectedFront(true),
+                QStringLiteral("the Pareto front is against memory (%1; against time: %2)")
+                    .arg(frontText(chartsPanel_->drawnFront()), frontText(expectedFront(false))));
+  selfTestCheck(!chartsPanel_->running() && configs[0].ms.size() == 2,
+                QStringLiteral("switching x measures nothing again"));
+  if (!dir.isEmpty()) {
+    const QString png = QDir(dir).filePath(QStringLiteral("panel-charts-bytes.png"));
+    selfTestCheck(chartsDock_->grab().toImage().save(png), QStringLiteral("saved ") + png);
+  }
+  xCombo->setCurrentIndex(xCombo->findData(QStringLiteral("ms")));
+  QCoreApplication::processEvents();
+  selfTestCheck(chartsPanel_->chartX() == sl::ChartX::TimeMs &&
+                    chartsPanel_->xAxisTitle().contains(QStringLiteral("ms")) &&
+                    chartsPanel_->drawnFront() == expectedFront(false),
+                QStringLiteral("x: time switches back (axis and front)"));
   return true;
 }
 

@@ -1,7 +1,8 @@
 // `shadowlab-cli bench`: speed against accuracy (issue 5). Every configuration of the
 // sweep renders every frame of a camera path, interleaved frame by frame (so machine
 // drift hits all alike), and is measured against the exact Embree reference; the CSV has
-// one row per configuration with medians over frames, the chart plots time against error.
+// one row per configuration with medians over frames, the chart plots time (or, with
+// `--x bytes`, shadow memory) against error.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -23,7 +24,7 @@ const char* const kBenchUsage =
     "                           [--path NAME|INDEX | --camera NAME|INDEX] [--frames N]\n"
     "                           [--warmup N] [--size WxH] [--light AZIMUTH,ELEVATION]\n"
     "                           [--set KEY=VALUE]... --csv FILE.csv [--chart FILE.png]\n"
-    "                           [--chart-y auto|linear|log]\n";
+    "                           [--chart-y auto|linear|log] [--x ms|bytes]\n";
 
 namespace {
 
@@ -38,7 +39,14 @@ struct BenchConfig {
   std::optional<DirectionalLight> light;
   std::string csv, chart;
   std::string chartY = "auto";
+  ChartX chartX = ChartX::TimeMs;  ///< the chart's x (the CSV has both)
 };
+
+/// `--x ms|bytes`: what the chart's x axis and its Pareto front are against.
+ChartX parseChartXOption(const std::string& value) {
+  if (auto x = parseChartX(value)) return *x;
+  throw UsageError("--x: expected ms or bytes, got '" + value + "'");
+}
 
 BenchConfig parseBench(Args& a) {
   BenchConfig c;
@@ -70,7 +78,9 @@ BenchConfig parseBench(Args& a) {
       c.chartY = a.take(i, o);
       if (c.chartY != "auto" && c.chartY != "linear" && c.chartY != "log")
         throw UsageError("--chart-y: expected auto, linear or log, got '" + c.chartY + "'");
-    } else
+    } else if (o == "--x")
+      c.chartX = parseChartXOption(a.take(i, o));
+    else
       throw UsageError("unknown option '" + o + "' (bench options: see shadowlab-cli --help)");
   }
   if (c.scene.empty()) throw UsageError("--scene: missing (which scene to benchmark)");
@@ -182,7 +192,7 @@ ConfigSummary summarise(const std::vector<FrameSample>& frames) {
 struct ChartRow {
   std::string technique;
   std::vector<std::pair<std::string, std::string>> params;
-  double totalMs = 0, errorPct = 0;
+  double totalMs = 0, bytes = 0, errorPct = 0;
 };
 
 /// Point labels: per technique, the values of the parameters that vary between its rows
@@ -210,7 +220,8 @@ void writeChart(const std::vector<ChartRow>& rows, ChartSpec spec, const std::st
     for (const std::string& k : varying[r.technique])
       for (const auto& [k2, v] : r.params)
         if (k2 == k) label += (label.empty() ? "" : "/") + v;
-    points.push_back({r.technique, label, r.totalMs, r.errorPct});
+    points.push_back(
+        {r.technique, label, spec.x == ChartX::Bytes ? r.bytes : r.totalMs, r.errorPct});
   }
   // The keys behind the labels: once in the subtitle when every technique has the same,
   // else in each technique's legend entry.
@@ -256,10 +267,12 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 }  // namespace
 
 const char* const kChartUsage =
-    "       shadowlab-cli chart --csv FILE.csv --chart FILE.png [--chart-y auto|linear|log]\n";
+    "       shadowlab-cli chart --csv FILE.csv --chart FILE.png [--chart-y auto|linear|log]\n"
+    "                           [--x ms|bytes]\n";
 
 int cmdChart(Args& a) {
   std::string csvPath, png, chartY = "auto";
+  ChartX chartX = ChartX::TimeMs;
   for (std::size_t i = 1; i < a.rest.size(); ++i) {
     const std::string& o = a.rest[i];
     if (o == "--csv")
@@ -268,8 +281,11 @@ int cmdChart(Args& a) {
       png = a.take(i, o);
     else if (o == "--chart-y")
       chartY = a.take(i, o);
+    else if (o == "--x")
+      chartX = parseChartXOption(a.take(i, o));
     else
-      throw UsageError("unknown option '" + o + "' (chart options: --csv, --chart, --chart-y)");
+      throw UsageError("unknown option '" + o +
+                       "' (chart options: --csv, --chart, --chart-y, --x)");
   }
   if (csvPath.empty()) throw UsageError("--csv: missing (a CSV written by bench)");
   if (png.empty()) throw UsageError("--chart: missing (the PNG to write)");
@@ -290,6 +306,8 @@ int cmdChart(Args& a) {
                     cMs = column("total_ms"), cErr = column("error_pct"), cScene = column("scene"),
                     cCamera = column("camera"), cW = column("width"), cH = column("height"),
                     cFrames = column("frames"), cTiming = column("timing_method");
+  // Memory is read only when charted (a CSV without it still charts against time).
+  const std::size_t cBytes = chartX == ChartX::Bytes ? column("bytes") : cMs;
   auto gl = std::find(header.begin(), header.end(), "gl");
   std::vector<ChartRow> rows;
   std::vector<std::string> first;
@@ -308,13 +326,15 @@ int cmdChart(Args& a) {
       if (eq != std::string::npos) r.params.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
     }
     r.totalMs = parseDouble("total_ms", f[cMs], -1e300, 1e300);
+    r.bytes = parseDouble("bytes", f[cBytes], -1e300, 1e300);
     r.errorPct = parseDouble("error_pct", f[cErr], -1e300, 1e300);
     rows.push_back(std::move(r));
   }
   if (rows.empty()) throw UsageError(csvPath + ": no rows");
   ChartSpec spec;
   spec.yScale = chartY;
-  spec.title = "Speed against accuracy: " + first[cScene] + ", " + first[cCamera];
+  spec.x = chartX;
+  spec.title = std::string(chartHeadline(chartX)) + ": " + first[cScene] + ", " + first[cCamera];
   spec.subtitle = first[cW] + "x" + first[cH] + ", " + first[cFrames] +
                   " frames (medians), timing " + first[cTiming] +
                   (gl == header.end() ? "" : ", " + first[std::size_t(gl - header.begin())]);
@@ -414,18 +434,22 @@ int cmdBench(Args& a) {
         if (std::find(passNames.begin(), passNames.end(), p.name) == passNames.end())
           passNames.push_back(p.name);
   }
-  std::vector<CostPoint> costs;
-  for (const ConfigSummary& s : sums) costs.push_back({s.totalMs, s.errorPct});
-  std::vector<std::size_t> front = paretoFront(costs);
-  auto onFront = [&](std::size_t i) {
-    return std::find(front.begin(), front.end(), i) != front.end();
+  // The Pareto fronts against time (`pareto`) and against memory (`pareto_bytes`).
+  auto frontAgainst = [&](auto cost) {
+    std::vector<CostPoint> costs;
+    for (const ConfigSummary& s : sums) costs.push_back({cost(s), s.errorPct});
+    std::vector<bool> on(sums.size(), false);
+    for (std::size_t i : paretoFront(costs)) on[i] = true;
+    return on;
   };
+  const std::vector<bool> frontMs = frontAgainst([](const ConfigSummary& s) { return s.totalMs; });
+  const std::vector<bool> frontBytes = frontAgainst([](const ConfigSummary& s) { return s.bytes; });
 
   std::ostringstream csv;
   csv << "scene,camera,technique,params,label,frames,width,height,timing_method,total_ms";
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
   csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
-         "aliasing_p95,aliasing_max,flicker_pct,pareto,render_errors,gl_errors,gl\n";
+         "aliasing_p95,aliasing_max,flicker_pct,pareto,pareto_bytes,render_errors,gl_errors,gl\n";
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const ConfigSummary& s = sums[i];
     csv << csvField(scene->name) << "," << csvField(cameraText) << ","
@@ -438,19 +462,24 @@ int cmdBench(Args& a) {
         << number(s.errorPct) << "," << number(s.falseLitPct) << "," << number(s.falseShadowPct)
         << "," << std::uint64_t(s.covered) << "," << number(s.aliasingMean) << ","
         << number(s.aliasingP95) << "," << number(s.aliasingMax) << "," << number(s.flickerPct)
-        << "," << (onFront(i) ? 1 : 0) << "," << s.renderErrors << "," << s.glErrors << ","
-        << csvField(glDescription) << "\n";
+        << "," << (frontMs[i] ? 1 : 0) << "," << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors
+        << "," << s.glErrors << "," << csvField(glDescription) << "\n";
   }
   std::string text = csv.str();
   text.pop_back();  // writeText adds the final newline
   writeText(cfg.csv, text);
 
-  std::printf("%-34s %9s %9s %9s %9s %9s %8s\n", "configuration", "total ms", "error %", "m mean",
-              "m p95", "flicker %", "pareto");
+  std::printf("%-34s %9s %9s %9s %9s %9s %9s %9s\n", "configuration", "total ms", "MiB", "error %",
+              "m mean", "m p95", "flicker %", "pareto");
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const ConfigSummary& s = sums[i];
-    std::printf("%-34s %9.2f %9.3f %9.3f %9.3f %9.4f %8s\n", configs[i].label.c_str(), s.totalMs,
-                s.errorPct, s.aliasingMean, s.aliasingP95, s.flickerPct, onFront(i) ? "*" : "");
+    const char* front = frontMs[i] && frontBytes[i] ? "ms,bytes"
+                        : frontMs[i]                ? "ms"
+                        : frontBytes[i]             ? "bytes"
+                                                    : "";
+    std::printf("%-34s %9.2f %9.3f %9.3f %9.3f %9.3f %9.4f %9s\n", configs[i].label.c_str(),
+                s.totalMs, s.bytes / (1024.0 * 1024.0), s.errorPct, s.aliasingMean, s.aliasingP95,
+                s.flickerPct, front);
   }
   std::printf("medians over %d frames (%s, %dx%d, timing %s, %d reference evaluations) -> %s\n",
               cfg.frames, cameraText.c_str(), cfg.width, cfg.height, timingMethod.c_str(),
@@ -459,10 +488,12 @@ int cmdBench(Args& a) {
   if (!cfg.chart.empty()) {
     std::vector<ChartRow> rows;
     for (std::size_t i = 0; i < configs.size(); ++i)
-      rows.push_back({configs[i].techniqueId, configs[i].sets, sums[i].totalMs, sums[i].errorPct});
+      rows.push_back({configs[i].techniqueId, configs[i].sets, sums[i].totalMs, sums[i].bytes,
+                      sums[i].errorPct});
     ChartSpec spec;
     spec.yScale = cfg.chartY;
-    spec.title = "Speed against accuracy: " + scene->name + ", " + cameraText;
+    spec.x = cfg.chartX;
+    spec.title = std::string(chartHeadline(cfg.chartX)) + ": " + scene->name + ", " + cameraText;
     spec.subtitle = std::to_string(cfg.width) + "x" + std::to_string(cfg.height) + ", " +
                     std::to_string(cfg.frames) + " frames (medians), timing " + timingMethod +
                     ", " + glDescription;

@@ -1,4 +1,4 @@
-// The speed-against-accuracy chart with Qt Charts, rendered offscreen (no display: the
+// The speed- or memory-against-accuracy chart with Qt Charts, rendered offscreen (no display: the
 // "offscreen" platform plugin) into a QImage and saved as PNG. See Chart.h.
 #include "Chart.h"
 
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <limits>
 #include <map>
+#include <stdexcept>
 
 #include <unistd.h>
 
@@ -21,13 +21,10 @@
 #include <QGraphicsSimpleTextItem>
 #include <QImage>
 #include <QPainter>
-#include <QPen>
 #include <QtCharts/QChart>
 #include <QtCharts/QLegend>
-#include <QtCharts/QLineSeries>
-#include <QtCharts/QLogValueAxis>
-#include <QtCharts/QScatterSeries>
-#include <QtCharts/QValueAxis>
+
+#include "ChartKit.h"
 #endif
 
 namespace sl::cli {
@@ -55,11 +52,6 @@ void ensureOffscreenApplication() {
   static QApplication app(argc, argv);
 }
 
-QColor techniqueColor(std::size_t i) {
-  const auto rgb = sl::chartColorRgb(i);
-  return QColor(rgb[0], rgb[1], rgb[2]);
-}
-
 }  // namespace
 #endif
 
@@ -82,57 +74,31 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
   chart->setBackgroundBrush(Qt::white);
   chart->setAnimationOptions(QChart::NoAnimation);
 
-  double maxX = 0.0, maxY = 0.0;
-  for (const ChartPoint& p : points) {
-    if (std::isfinite(p.x)) maxX = std::max(maxX, p.x);
-    if (std::isfinite(p.y)) maxY = std::max(maxY, p.y);
+  // Axes from the values (x in its unit: ms, or bytes shown in KiB/MiB/GiB).
+  std::vector<double> xs, ys;
+  for (const ChartPoint& p : points) xs.push_back(p.x), ys.push_back(p.y);
+  const sl::ChartAxis xPlan = sl::planCostAxis(spec.x, xs);
+  sl::ChartAxis yPlan;
+  try {
+    const sl::AxisScale yScale = spec.yScale == "log"      ? sl::AxisScale::Log
+                                 : spec.yScale == "linear" ? sl::AxisScale::Linear
+                                                           : sl::AxisScale::Auto;
+    yPlan = sl::planChartAxis(ys, yScale, 20.0, 0.12, spec.yTitle);
+  } catch (const std::invalid_argument& e) {
+    return std::string("chart: error axis: ") + e.what();
   }
-  auto* axisX = new QValueAxis();
-  axisX->setTitleText(QString::fromStdString(spec.xTitle));
-  const auto [xMax, xTicks] = sl::niceAxisRange(maxX * 1.08);
-  axisX->setRange(0.0, xMax);
-  axisX->setTickCount(xTicks);
-  axisX->setLabelFormat("%.3g");
-  double minY = std::numeric_limits<double>::infinity();
-  for (const ChartPoint& p : points)
-    if (std::isfinite(p.y)) minY = std::min(minY, p.y);
-  bool logY = spec.yScale == "log";
-  if (spec.yScale == "auto") logY = minY > 0.0 && maxY / minY > 20.0;
-  if (logY && !(minY > 0.0))
-    return "chart: a log error axis needs every error above 0 (the smallest is " +
-           std::to_string(minY) + ")";
-  QAbstractAxis* axisY = nullptr;
-  if (logY) {
-    auto* a = new QLogValueAxis();
-    a->setBase(10.0);
-    a->setRange(minY / 1.6, maxY * 1.6);  // labels at the powers of ten inside
-    a->setMinorTickCount(8);
-    a->setLabelFormat("%g");
-    a->setTitleText(QString::fromStdString(spec.yTitle + ", log scale"));
-    axisY = a;
-  } else {
-    auto* a = new QValueAxis();
-    const auto [yMax, yTicks] = sl::niceAxisRange(maxY * 1.12);
-    a->setRange(0.0, yMax);
-    a->setTickCount(yTicks);
-    a->setLabelFormat("%.3g");
-    a->setTitleText(QString::fromStdString(spec.yTitle));
-    axisY = a;
-  }
+  // Where point p sits (x in axis units).
+  auto at = [&](const ChartPoint& p) { return QPointF(p.x / xPlan.unitScale, p.y); };
+  QAbstractAxis* axisX = ui::makeChartAxis(xPlan);
+  QAbstractAxis* axisY = ui::makeChartAxis(yPlan);
   chart->addAxis(axisX, Qt::AlignBottom);
   chart->addAxis(axisY, Qt::AlignLeft);
 
-  // The Pareto front first, so the points draw over it.
+  // The Pareto front against the chosen x first, so the points draw over it.
   std::vector<CostPoint> costs;
   for (const ChartPoint& p : points) costs.push_back({p.x, p.y});
-  const std::vector<std::size_t> front = paretoFront(costs);
-  auto* frontSeries = new QLineSeries();
-  frontSeries->setName("Pareto front");
-  QPen frontPen(QColor(40, 40, 40));
-  frontPen.setWidthF(1.6);
-  frontPen.setStyle(Qt::DashLine);
-  frontSeries->setPen(frontPen);
-  for (std::size_t i : front) frontSeries->append(points[i].x, points[i].y);
+  QLineSeries* frontSeries = ui::makeParetoSeries("Pareto front");
+  for (std::size_t i : paretoFront(costs)) frontSeries->append(at(points[i]));
   chart->addSeries(frontSeries);
   frontSeries->attachAxis(axisX);
   frontSeries->attachAxis(axisY);
@@ -143,19 +109,13 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
     if (series.count(p.technique)) continue;
     const std::size_t i = order.size();
     order.push_back(p.technique);
-    auto* s = new QScatterSeries();
     std::string name = p.technique;
     if (i < spec.seriesNotes.size() && !spec.seriesNotes[i].empty())
       name += " (" + spec.seriesNotes[i] + ")";
-    s->setName(QString::fromStdString(name));
-    s->setColor(techniqueColor(i));
-    s->setBorderColor(techniqueColor(i).darker(140));
-    s->setMarkerShape(QScatterSeries::MarkerShapeCircle);
-    s->setMarkerSize(11.0);
-    series[p.technique] = s;
+    series[p.technique] = ui::makeTechniqueSeries(i, QString::fromStdString(name));
   }
   for (const ChartPoint& p : points)
-    if (std::isfinite(p.x) && std::isfinite(p.y)) series[p.technique]->append(p.x, p.y);
+    if (std::isfinite(p.x) && std::isfinite(p.y)) series[p.technique]->append(at(p));
   for (const std::string& t : order) {
     chart->addSeries(series[t]);
     series[t]->attachAxis(axisX);
@@ -175,7 +135,7 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
   std::vector<QRectF> taken;
   for (const ChartPoint& p : points) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-    QPointF c = chart->mapToPosition(QPointF(p.x, p.y), series[p.technique]);
+    QPointF c = chart->mapToPosition(at(p), series[p.technique]);
     taken.push_back(QRectF(c - QPointF(6, 6), QSizeF(12, 12)));
   }
   QFont labelFont = chart->legend()->font();
@@ -184,11 +144,12 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
     if (p.label.empty() || !std::isfinite(p.x) || !std::isfinite(p.y)) continue;
     auto* text = new QGraphicsSimpleTextItem(QString::fromStdString(p.label), chart);
     text->setFont(labelFont);
-    text->setBrush(techniqueColor(std::size_t(std::find(order.begin(), order.end(), p.technique) -
-                                              order.begin()))
-                       .darker(150));
+    text->setBrush(
+        ui::chartTechniqueColor(
+            std::size_t(std::find(order.begin(), order.end(), p.technique) - order.begin()))
+            .darker(150));
     const QSizeF sz = text->boundingRect().size();
-    const QPointF c = chart->mapToPosition(QPointF(p.x, p.y), series[p.technique]);
+    const QPointF c = chart->mapToPosition(at(p), series[p.technique]);
     const QPointF candidates[] = {{c.x() + 8, c.y() - sz.height() / 2},
                                   {c.x() - sz.width() / 2, c.y() - 8 - sz.height()},
                                   {c.x() - sz.width() / 2, c.y() + 8},

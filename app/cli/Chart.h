@@ -1,25 +1,28 @@
-// The speed-against-accuracy chart (issue 5): one point per configuration, x = time per
-// frame, y = pixel error, one colour per technique, the Pareto front (lower-left) drawn
-// as a line, each point labelled with its parameter values. Qt Charts rendered offscreen
-// to a PNG; this header is Qt-free.
+// The speed- (or memory-) against-accuracy chart (issue 5): one point per configuration,
+// x = time per frame or shadow memory, y = pixel error, one colour per technique, the
+// Pareto front (lower-left) drawn as a line, each point labelled with its parameter
+// values. Qt Charts rendered offscreen to a PNG; this header is Qt-free.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "algo/metrics/BenchStats.h"
+
 namespace sl::cli {
 
 struct ChartPoint {
   std::string technique;  ///< series (colour); series appear in first-seen order
   std::string label;      ///< drawn next to the point, e.g. "1024"
-  double x = 0.0, y = 0.0;
+  double x = 0.0;         ///< ms or bytes (ChartSpec::x), as measured
+  double y = 0.0;         ///< error_pct
 };
 
 struct ChartSpec {
   std::string title;
   std::string subtitle;  ///< second title line (conditions: size, frames, timing method)
-  std::string xTitle = "time per frame, all passes (ms, median over frames)";
+  sl::ChartX x = sl::ChartX::TimeMs;  ///< what x is; its axis and title: sl::planCostAxis
   std::string yTitle = "pixel error against the exact reference (% of covered pixels)";
   std::vector<std::string> seriesNotes;  ///< optional legend suffix per technique, same order
   /// Error axis: "linear", "log" (needs every y > 0), or "auto": log when every y > 0 and

@@ -10,7 +10,7 @@ int cmdBench(Args& args);
 /// `stability`: one technique frame by frame (JSON), or a suite of cases with
 /// expectations (exit 1 when one fails). Stability.cpp.
 int cmdStability(Args& args);
-/// `chart`: the speed-against-accuracy chart again, from a bench CSV. Bench.cpp.
+/// `chart`: the chart again from a bench CSV, x = time or memory (`--x`). Bench.cpp.
 int cmdChart(Args& args);
 
 extern const char* const kBenchUsage;

@@ -3,7 +3,7 @@
 //   render    one configuration -> PNG, metrics JSON, error image
 //   compare   every technique on one scene -> a folder of images and metrics
 //   bench     speed against accuracy: sweeps along a camera path -> CSV and chart (Bench.cpp)
-//   chart     the chart again from a bench CSV (Bench.cpp)
+//   chart     the chart again from a bench CSV, x = time or memory (Bench.cpp)
 //   stability frame-to-frame stability, one technique or a suite of failure cases
 //             (Stability.cpp)
 #include <algorithm>

@@ -2,8 +2,13 @@
 # shadowlab-cli bench: one CSV row per configuration with every documented column; on
 # plane-box the error is near zero at 4096^2 and rises as the resolution falls; a static
 # camera has no flicker; the chart is a valid PNG; bad sweeps exit 2 naming the problem.
+# --x ms|bytes: a CSV written without --x charts against memory (`chart --x bytes`), so does
+# an older CSV without `pareto_bytes` (docs/images); `pareto_bytes` is the front of memory
+# against error; `bench --x bytes` draws the memory chart directly; a bad --x value, or
+# --x bytes on a CSV without `bytes`, exits 2 naming it.
 set -euo pipefail
 cli=$1 out=$3/bench
+here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 rm -f "$out"/*.csv "$out"/*.png
 
@@ -15,7 +20,7 @@ rm -f "$out"/*.csv "$out"/*.png
   --frames 3 --size 320x180 --csv "$out/static.csv" 2>/dev/null
 
 python3 - "$out" <<'PY'
-import csv, struct, sys
+import csv, sys
 out = sys.argv[1]
 rows = list(csv.DictReader(open(f"{out}/path.csv")))
 assert len(rows) == 3, f"expected 3 rows (one per configuration), got {len(rows)}"
@@ -38,16 +43,50 @@ static = list(csv.DictReader(open(f"{out}/static.csv")))
 assert len(static) == 2
 for r in static:
     assert float(r["flicker_pct"]) == 0.0, f"flicker on a static camera: {r['label']} {r['flicker_pct']}"
-
-png = open(f"{out}/path.png", "rb").read()
-assert png[:8] == b"\x89PNG\r\n\x1a\n", "chart is not a PNG"
-assert png[12:16] == b"IHDR"
-w, h = struct.unpack(">II", png[16:24])
-assert (w, h) == (1280, 800), f"chart is {w}x{h}"
-assert len(png) > 20000, f"chart is suspiciously small ({len(png)} bytes)"
-print(f"ok: error_pct {e}, aliasing_mean {m}, chart {w}x{h} {len(png)} bytes")
+print(f"ok: error_pct {e}, aliasing_mean {m}")
 PY
 grep -q "left" "$out/path.stderr" || { echo "FAIL: no progress/time-left line on stderr"; exit 1; }
+
+# x: memory. A sweep where the fronts differ (RTW small but slow), charted after the run.
+"$cli" bench --scene plane-box --technique uniform:resolution=256,1024 \
+  --technique rtw-backward:resolution=256 --frames 2 --warmup 1 --size 320x180 \
+  --csv "$out/sweep.csv" --chart "$out/ms.png" 2>/dev/null
+"$cli" chart --csv "$out/sweep.csv" --chart "$out/bytes.png" --x bytes
+"$cli" chart --csv "$here/../../docs/images/bench-diagonal.csv" --chart "$out/old.png" --x bytes
+"$cli" bench --scene plane-box --technique uniform:resolution=256,512 --frames 2 --warmup 1 \
+  --size 320x180 --csv "$out/direct.csv" --chart "$out/direct.png" --x bytes 2>/dev/null
+
+python3 - "$out" <<'PY'
+import csv, struct, sys
+out = sys.argv[1]
+rows = list(csv.DictReader(open(f"{out}/sweep.csv")))
+assert len(rows) == 3, f"expected 3 rows, got {len(rows)}"
+for k in ("bytes", "pareto", "pareto_bytes"):
+    assert k in rows[0], f"no column {k}"
+# The front of memory against error, recomputed from the CSV: nothing else at most as big
+# and at most as wrong and strictly better in one.
+def front(cost):
+    pts = [(cost(r), float(r["error_pct"])) for r in rows]
+    return [int(not any(q[0] <= p[0] and q[1] <= p[1] and q != p for q in pts)) for p in pts]
+want = front(lambda r: int(r["bytes"]))
+got = [int(r["pareto_bytes"]) for r in rows]
+assert got == want, f"pareto_bytes {got}, expected {want} from bytes/error_pct"
+assert [int(r["pareto"]) for r in rows] == front(lambda r: float(r["total_ms"])), "pareto (ms)"
+by = {r["label"]: int(r["bytes"]) for r in rows}
+assert by["uniform resolution=1024"] == 16 * by["uniform resolution=256"], by
+
+def png(name):  # every chart: a 1280x800 PNG with content
+    data = open(f"{out}/{name}", "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n" and data[12:16] == b"IHDR", f"{name} is not a PNG"
+    w, h = struct.unpack(">II", data[16:24])
+    assert (w, h) == (1280, 800), f"{name} is {w}x{h}"
+    assert len(data) > 20000, f"{name} is suspiciously small ({len(data)} bytes)"
+    return data
+assert png("bytes.png") != png("ms.png"), "the memory chart is the time chart"
+for name in ("path.png", "old.png", "direct.png"):
+    png(name)
+print(f"ok: pareto_bytes {got}, bytes {by}, 5 charts")
+PY
 
 # Bad input: exit 2 and one line naming the problem.
 expect() {  # expect "substring" args...
@@ -63,3 +102,16 @@ expect "no parameter 'bogus'" bench --scene plane-box --technique uniform:bogus=
 expect "64..16384" bench --scene plane-box --technique uniform:resolution=32,64 --csv "$out/x.csv"
 expect "--csv" bench --scene plane-box --technique uniform
 expect "no camera path 'nope'" bench --scene plane-box --technique uniform --path nope --csv "$out/x.csv"
+expect "--x: expected ms or bytes, got 'foo'" chart --csv "$out/sweep.csv" --chart "$out/x.png" --x foo
+expect "--x: expected ms or bytes, got 'foo'" bench --scene plane-box --technique uniform \
+  --csv "$out/x.csv" --x foo
+python3 - "$out" <<'PY'
+import csv, sys
+out = sys.argv[1]
+rows = list(csv.reader(open(f"{out}/sweep.csv")))
+i = rows[0].index("bytes")
+csv.writer(open(f"{out}/nobytes.csv", "w", newline="")).writerows(r[:i] + r[i + 1:] for r in rows)
+PY
+expect "no column 'bytes'" chart --csv "$out/nobytes.csv" --chart "$out/x.png" --x bytes
+"$cli" chart --csv "$out/nobytes.csv" --chart "$out/nobytes-ms.png" >/dev/null  # time: fine
+test -s "$out/nobytes-ms.png"

@@ -1,10 +1,11 @@
 // Benchmark statistics (algo/metrics/BenchStats): percentiles by the closest-ranks rule,
-// aliasing summaries, mask change and false flicker, and the Pareto front — exact answers
-// on small hand-made inputs.
+// aliasing summaries, mask change and false flicker, the Pareto front against time and
+// against memory, and the chart axes — exact answers on small hand-made inputs.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "algo/metrics/BenchStats.h"
@@ -111,6 +112,112 @@ TEST(BenchStats, ParetoFrontOfAChainIsEveryPoint) {
   std::vector<CostPoint> p;
   for (int i = 0; i < 6; ++i) p.push_back({double(i), double(10 - i)});
   EXPECT_EQ(paretoFront(p), (std::vector<std::size_t>{0, 1, 2, 3, 4, 5}));
+}
+
+TEST(BenchStats, ParetoFrontAgainstTimeAndAgainstMemory) {
+  // A hand-made sweep: uniform is fast but needs memory, RTW small but slow.
+  struct Row {
+    double ms, bytes, errorPct;
+  };
+  constexpr double kMiB = 1024.0 * 1024.0;
+  const std::vector<Row> rows = {
+      {20, 1 * kMiB, 2.0},    // 0 uniform 512
+      {22, 4 * kMiB, 1.0},    // 1 uniform 1024
+      {30, 16 * kMiB, 0.5},   // 2 uniform 2048
+      {60, 0.5 * kMiB, 1.5},  // 3 rtw 256
+      {70, 2 * kMiB, 0.8},    // 4 rtw 512
+      {90, 8 * kMiB, 2.5},    // 5 rtw 1024
+  };
+  std::vector<CostPoint> byTime, byMemory;
+  for (const Row& r : rows) {
+    byTime.push_back({r.ms, r.errorPct});
+    byMemory.push_back({r.bytes, r.errorPct});
+  }
+  // Time: uniform alone. Memory: 3 and 4 beat uniform 512 and 1024 with less memory;
+  // 2048 stays (nothing is better); 5 is beaten by everything smaller.
+  EXPECT_EQ(paretoFront(byTime), (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(paretoFront(byMemory), (std::vector<std::size_t>{3, 4, 2}));
+}
+
+TEST(BenchStats, ChartXParsesMsAndBytesOnly) {
+  EXPECT_EQ(parseChartX("ms"), ChartX::TimeMs);
+  EXPECT_EQ(parseChartX("bytes"), ChartX::Bytes);
+  EXPECT_FALSE(parseChartX("foo"));
+  EXPECT_FALSE(parseChartX("MS"));
+  EXPECT_FALSE(parseChartX(""));
+  EXPECT_STREQ(chartHeadline(ChartX::TimeMs), "Speed against accuracy");
+  EXPECT_STREQ(chartHeadline(ChartX::Bytes), "Memory against accuracy");
+}
+
+TEST(BenchStats, ByteUnitIsTheLargestWithAtLeastOne) {
+  EXPECT_STREQ(byteUnitFor(1023).name, "bytes");
+  EXPECT_EQ(byteUnitFor(1023).bytes, 1.0);
+  EXPECT_STREQ(byteUnitFor(1024).name, "KiB");
+  EXPECT_STREQ(byteUnitFor(1048575).name, "KiB");
+  EXPECT_STREQ(byteUnitFor(1048576).name, "MiB");
+  EXPECT_EQ(byteUnitFor(1048576).bytes, 1048576.0);
+  EXPECT_STREQ(byteUnitFor(3.0 * 1073741824.0).name, "GiB");
+  EXPECT_STREQ(byteUnitFor(5e12).name, "GiB");  // no TiB
+  EXPECT_STREQ(byteUnitFor(kNaN).name, "bytes");
+  EXPECT_STREQ(byteUnitFor(0).name, "bytes");
+}
+
+TEST(BenchStats, MemoryAxisInMiBTurnsLogBeyond8x) {
+  constexpr double kMiB = 1024.0 * 1024.0;
+  // 0.5 .. 16 MiB spans 32x: log, base 2, 1.6x margins, in MiB.
+  const std::vector<double> wide = {0.5 * kMiB, 16 * kMiB, 2 * kMiB};
+  const ChartAxis a = planCostAxis(ChartX::Bytes, wide);
+  EXPECT_TRUE(a.log);
+  EXPECT_EQ(a.logBase, 2.0);
+  EXPECT_EQ(a.minorTicks, 0);
+  EXPECT_EQ(a.unitScale, kMiB);
+  EXPECT_DOUBLE_EQ(a.min, 0.5 / 1.6);
+  EXPECT_DOUBLE_EQ(a.max, 16 * 1.6);
+  EXPECT_EQ(a.title, "shadow memory (MiB), log scale");
+  // 1 .. 4 MiB spans 4x: linear from 0 to niceAxisRange(4 * 1.08) = 4.5 (9 steps of 0.5).
+  const std::vector<double> narrow = {1 * kMiB, 4 * kMiB};
+  const ChartAxis b = planCostAxis(ChartX::Bytes, narrow);
+  EXPECT_FALSE(b.log);
+  EXPECT_EQ(b.min, 0.0);
+  EXPECT_DOUBLE_EQ(b.max, 4.5);
+  EXPECT_EQ(b.ticks, 10);
+  EXPECT_EQ(b.title, "shadow memory (MiB)");
+  // Exactly 8x stays linear; a zero (a technique with no map) keeps it linear.
+  const std::vector<double> eight = {1 * kMiB, 8 * kMiB};
+  EXPECT_FALSE(planCostAxis(ChartX::Bytes, eight).log);
+  const std::vector<double> withZero = {0, 1 * kMiB, 64 * kMiB};
+  EXPECT_FALSE(planCostAxis(ChartX::Bytes, withZero).log);
+  // Small maps: KiB.
+  const std::vector<double> small = {4096, 65536};
+  EXPECT_EQ(planCostAxis(ChartX::Bytes, small).title, "shadow memory (KiB), log scale");
+}
+
+TEST(BenchStats, TimeAxisIsLinearFromZero) {
+  const std::vector<double> ms = {2, 200, kNaN};  // 100x: still linear (time is additive)
+  const ChartAxis a = planCostAxis(ChartX::TimeMs, ms);
+  EXPECT_FALSE(a.log);
+  EXPECT_EQ(a.unitScale, 1.0);
+  EXPECT_EQ(a.min, 0.0);
+  EXPECT_DOUBLE_EQ(a.max, 250.0);  // niceAxisRange(216): 5 steps of 50
+  EXPECT_EQ(a.ticks, 6);
+  EXPECT_EQ(a.title, "frame time, all passes (ms, median)");
+}
+
+TEST(BenchStats, ErrorAxisAutoLogAndRefusedLog) {
+  const std::vector<double> wide = {0.1, 5.0};  // 50x > 20: log base 10
+  const ChartAxis a = planChartAxis(wide, AxisScale::Auto, 20.0, 0.12, "error");
+  EXPECT_TRUE(a.log);
+  EXPECT_EQ(a.logBase, 10.0);
+  EXPECT_EQ(a.minorTicks, 8);
+  EXPECT_EQ(a.title, "error, log scale");
+  EXPECT_FALSE(planChartAxis(wide, AxisScale::Linear, 20.0, 0.12, "error").log);
+  const std::vector<double> withZero = {0.0, 5.0};
+  EXPECT_FALSE(planChartAxis(withZero, AxisScale::Auto, 20.0, 0.12, "error").log);
+  EXPECT_THROW(planChartAxis(withZero, AxisScale::Log, 20.0, 0.12, "error"), std::invalid_argument);
+  // Nothing finite to show: a linear 0..1 axis.
+  const ChartAxis none = planChartAxis({}, AxisScale::Log, 20.0, 0.12, "error");
+  EXPECT_FALSE(none.log);
+  EXPECT_EQ(none.max, 1.0);
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The Charts panel (shadowlab --self-test charts=DIR, see ui/MainWindowSelfTest.cpp): a tiny
-# sweep (uniform at 2 resolutions x 2 frames) runs to completion, the chart is saved as
-# panel-charts.png, and a click on a point switches the view to that configuration
-# (technique, resolution, technique combo).
+# sweep (uniform at 2 resolutions and rtw-backward at 256, x 2 frames) runs to completion,
+# the chart is saved as panel-charts.png; the x combo box switches axis and Pareto front to
+# memory (panel-charts-bytes.png) and back without a new sweep; a click on a point switches
+# the view to that configuration (technique, resolution, technique combo).
 # usage: charts_panel.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1
@@ -22,4 +23,5 @@ if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/stdout"; then
   exit 1
 fi
 [[ -s "$out/panel-charts.png" ]] || { echo "FAIL: no panel-charts.png"; exit 1; }
+[[ -s "$out/panel-charts-bytes.png" ]] || { echo "FAIL: no panel-charts-bytes.png"; exit 1; }
 echo "PASS"

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 
 namespace sl {
 namespace {
@@ -116,9 +118,9 @@ FlickerStats computeFlicker(std::span<const std::uint8_t> previousMask,
 std::vector<std::size_t> paretoFront(std::span<const CostPoint> points) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < points.size(); ++i)
-    if (std::isfinite(points[i].costMs) && std::isfinite(points[i].errorPct)) order.push_back(i);
+    if (std::isfinite(points[i].cost) && std::isfinite(points[i].errorPct)) order.push_back(i);
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    if (points[a].costMs != points[b].costMs) return points[a].costMs < points[b].costMs;
+    if (points[a].cost != points[b].cost) return points[a].cost < points[b].cost;
     if (points[a].errorPct != points[b].errorPct) return points[a].errorPct < points[b].errorPct;
     return a < b;
   });
@@ -132,10 +134,20 @@ std::vector<std::size_t> paretoFront(std::span<const CostPoint> points) {
     }
     const CostPoint& last = points[front.back()];
     const CostPoint& p = points[i];
-    if (p.errorPct < last.errorPct || (p.errorPct == last.errorPct && p.costMs == last.costMs))
+    if (p.errorPct < last.errorPct || (p.errorPct == last.errorPct && p.cost == last.cost))
       front.push_back(i);
   }
   return front;
+}
+
+std::optional<ChartX> parseChartX(std::string_view text) {
+  if (text == "ms") return ChartX::TimeMs;
+  if (text == "bytes") return ChartX::Bytes;
+  return std::nullopt;
+}
+
+const char* chartHeadline(ChartX x) {
+  return x == ChartX::Bytes ? "Memory against accuracy" : "Speed against accuracy";
 }
 
 std::pair<double, int> niceAxisRange(double v) {
@@ -146,6 +158,56 @@ std::pair<double, int> niceAxisRange(double v) {
     if (n <= 10) return {n * step, n + 1};
   }
   return {10.0 * p, 11};
+}
+
+ByteUnit byteUnitFor(double maxBytes) {
+  ByteUnit unit;
+  for (const char* name : {"KiB", "MiB", "GiB"}) {
+    if (!(maxBytes >= unit.bytes * 1024.0)) break;
+    unit = {name, unit.bytes * 1024.0};
+  }
+  return unit;
+}
+
+ChartAxis planChartAxis(std::span<const double> values, AxisScale scale, double logAboveRatio,
+                        double margin, std::string title) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (double v : values)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  ChartAxis axis;
+  const bool any = lo <= hi;  // a finite value
+  axis.log = any && (scale == AxisScale::Log ||
+                     (scale == AxisScale::Auto && lo > 0.0 && hi / lo > logAboveRatio));
+  if (axis.log && !(lo > 0.0))
+    throw std::invalid_argument("a log axis needs every value above 0 (the smallest is " +
+                                std::to_string(lo) + ")");
+  axis.title = std::move(title);
+  if (axis.log) {
+    axis.min = lo / 1.6;
+    axis.max = hi * 1.6;
+    axis.title += ", log scale";
+  } else {
+    std::tie(axis.max, axis.ticks) = niceAxisRange(hi * (1.0 + margin));
+  }
+  return axis;
+}
+
+ChartAxis planCostAxis(ChartX x, std::span<const double> values) {
+  if (x == ChartX::TimeMs)
+    return planChartAxis(values, AxisScale::Linear, 0.0, 0.08,
+                         "frame time, all passes (ms, median)");
+  double hi = 0.0;
+  for (double v : values)
+    if (std::isfinite(v)) hi = std::max(hi, v);
+  const ByteUnit unit = byteUnitFor(hi);
+  std::vector<double> scaled;
+  for (double v : values) scaled.push_back(v / unit.bytes);
+  ChartAxis axis = planChartAxis(scaled, AxisScale::Auto, 8.0, 0.08,
+                                 std::string("shadow memory (") + unit.name + ")");
+  axis.unitScale = unit.bytes;
+  axis.logBase = 2.0;
+  axis.minorTicks = 0;
+  return axis;
 }
 
 std::array<std::uint8_t, 3> chartColorRgb(std::size_t i) {

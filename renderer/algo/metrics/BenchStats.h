@@ -1,14 +1,18 @@
 // Statistics for benchmarks and stability runs (techniques.md, "Measuring"): medians and
 // percentiles over frames, perspective-aliasing summaries over pixels, mask changes and
-// false flicker between consecutive frames, and the Pareto front of speed against error.
+// false flicker between consecutive frames, the Pareto front of cost (time or memory)
+// against error, and the axes of the charts that show it.
 // Plain C++ on spans: no GL, no Qt; the CLI, the GUI and the tests share it.
 #pragma once
 
-#include <utility>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace sl {
@@ -67,20 +71,58 @@ FlickerStats computeFlicker(std::span<const std::uint8_t> previousMask,
                             std::span<const std::uint8_t> previousReference,
                             std::span<const std::uint8_t> currentReference);
 
-/// A configuration's place on the speed-accuracy plane (both: lower is better).
+/// A configuration's place on the cost-accuracy plane (both: lower is better).
 struct CostPoint {
-  double costMs = 0.0;    ///< x: time per frame
+  double cost = 0.0;      ///< x: time per frame (ms) or shadow memory (bytes), see ChartX
   double errorPct = 0.0;  ///< y: error
 };
-/// Indices of the Pareto-optimal points (lower-left front): no other point is at most as
-/// slow and at most as wrong and strictly better in one of the two. Sorted by cost, then
+/// Indices of the Pareto-optimal points (lower-left front): no other point costs at most as
+/// much and is at most as wrong and strictly better in one of the two. Sorted by cost, then
 /// error, then index; exact duplicates are all on the front; non-finite points never are.
 std::vector<std::size_t> paretoFront(std::span<const CostPoint> points);
 
-/// Speed-against-accuracy charts (CLI PNG and the GUI's Charts dock) share these.
+/// Cost-against-accuracy charts (CLI PNG and the GUI's Charts dock) share these.
+/// What x is: the whole frame's time, or the technique's shadow memory (MemoryStats::bytes).
+enum class ChartX { TimeMs, Bytes };
+/// "ms" or "bytes" (the CLI's `--x`); nullopt for anything else.
+std::optional<ChartX> parseChartX(std::string_view text);
+/// "Speed against accuracy" / "Memory against accuracy".
+const char* chartHeadline(ChartX x);
+
 /// Upper end of an axis that starts at 0, and its tick count: a round step (1, 2 or 5
 /// times a power of ten) giving 4 to 10 intervals that reach v. {1, 5} when v <= 0.
 std::pair<double, int> niceAxisRange(double v);
+
+/// A readable binary unit for byte counts up to `maxBytes`: the largest of bytes, KiB, MiB,
+/// GiB in which maxBytes is at least 1 ({"bytes", 1} for maxBytes < 1024 or not finite).
+struct ByteUnit {
+  const char* name = "bytes";
+  double bytes = 1.0;  ///< bytes per unit
+};
+ByteUnit byteUnitFor(double maxBytes);
+
+/// One chart axis, decided from the values it shows; the Qt code only applies it.
+/// Positions on the axis are value / unitScale.
+struct ChartAxis {
+  bool log = false;
+  double logBase = 10.0;        ///< labels at the powers of this base (log axes)
+  int minorTicks = 8;           ///< minor ticks between labels (log axes: 2..9 x 10^k)
+  double min = 0.0, max = 1.0;  ///< range, in axis units
+  int ticks = 5;                ///< tick count (linear axes)
+  double unitScale = 1.0;       ///< data units per axis unit (e.g. 1048576 for MiB)
+  std::string title;            ///< axis title, ", log scale" added when log
+};
+enum class AxisScale { Auto, Linear, Log };
+/// Axis over the finite `values` (already in axis units): linear from 0 to
+/// niceAxisRange(max * (1 + margin)); log (base 10) from min / 1.6 to max * 1.6. Auto is log
+/// when every finite value is above 0 and max / min exceeds `logAboveRatio`. Log with a
+/// finite value <= 0 throws std::invalid_argument naming the smallest value.
+ChartAxis planChartAxis(std::span<const double> values, AxisScale scale, double logAboveRatio,
+                        double margin, std::string title);
+/// The x axis for costs of kind `x` (ms or bytes, as measured): time linear from 0; memory
+/// in byteUnitFor(largest), log base 2 when the values span more than 8x.
+ChartAxis planCostAxis(ChartX x, std::span<const double> values);
+
 /// Colour of the i-th technique (Okabe-Ito palette, 8 colours, repeating), 8-bit RGB.
 std::array<std::uint8_t, 3> chartColorRgb(std::size_t i);
 

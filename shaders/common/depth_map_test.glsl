@@ -57,7 +57,7 @@ vec3 shadowLookupCoord(vec3 P, vec3 N) {
   g_receiverUv = uvz.xy;
   g_receiverZ = uvz.z;
   g_receiverDz = receiverDepthGradient(N);
-  vec2 t = localTexelLightUv(uvz.xy);
+  vec2 t = t0;  // the offset moves the point by under a texel: same local texel size
   // Capped at a slope of 10 (84 degrees from the light) so grazing receivers do not leak.
   float slope = min(abs(g_receiverDz.x) * t.x + abs(g_receiverDz.y) * t.y,
                     10.0 * texelM * u_depthPerM);

@@ -153,7 +153,7 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
        "Bend tolerance",
        "Warp",
        ParamType::Float,
-       0.25,
+       1.0,
        0.01,
        16,
        0.05,
@@ -201,7 +201,11 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
 
 RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
     : config_(config),
-      backward_(lib, compute("rtw/importance_backward.comp")),
+      backward_(lib, {"rtw/importance_backward",
+                      {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
+                       {GL_FRAGMENT_SHADER, "rtw/importance_backward.frag"}},
+                      {},
+                      {}}),
       forward_(lib, {"rtw/importance_forward",
                      {{GL_VERTEX_SHADER, "rtw/importance_forward.vert"},
                       {GL_FRAGMENT_SHADER, "rtw/importance_forward.frag"}},
@@ -220,7 +224,9 @@ RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
                     {}}),
       moments_(lib, compute("rtw/moments.comp")),
       momentsLevel1_(lib, compute("rtw/moments_level1.comp")),
-      momentsReduce_(lib, compute("rtw/moments_reduce.comp")) {}
+      momentsReduce_(lib, compute("rtw/moments_reduce.comp")),
+      scatterFbo_(gl::Framebuffer::create()),
+      emptyVao_(gl::createVertexArray()) {}
 
 void RtwShadowMap::resetTemporalState() {
   rotation_.reset();
@@ -412,7 +418,16 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     if (importance_)
       glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     if (momentIm_) glBindImageTexture(1, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
+    // One full-screen triangle into a framebuffer with no attachments, camera-sized.
+    glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
+    glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, ctx.width);
+    glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, ctx.height);
+    glViewport(0, 0, ctx.width, ctx.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
   } else {
     beginDepthPass(forwardFbo_.id(), imRes_, imRes_);
     forward_.use();

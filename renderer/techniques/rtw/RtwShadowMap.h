@@ -56,6 +56,8 @@ class RtwShadowMap : public Technique {
   gl::Framebuffer smFbo_, forwardFbo_, uniformFbo_;
   gl::Buffer collapsed_, blurred_, warp_, inverse_, momentBuffer_;
   gl::Texture warpView_, inverseView_;  ///< buffer textures over warp_ and inverse_
+  gl::Framebuffer scatterFbo_;          ///< no attachments: the backward scatter's pass
+  gl::VertexArray emptyVao_;
   gl::Fence momentFence_;  ///< after the moment chain of the last frame (read a frame late)
   std::vector<int> momentOffsets_;  ///< float offset of each level
   std::vector<glm::ivec2> momentSizes_;

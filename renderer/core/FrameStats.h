@@ -37,6 +37,10 @@ struct FrameStats {
   /// "glFinish+wallclock" (software rasterisers, where GL_TIME_ELAPSED is meaningless)
   /// or "GL_TIME_ELAPSED" (timer queries on real GPUs).
   std::string timingMethod;
+  /// How many frames old `passes` are: 0 for glFinish+wallclock; timer queries are read a
+  /// frame late so the CPU never waits on the GPU (1; more while the GPU lags; the first
+  /// frame has no passes).
+  int timingFramesLate = 0;
   MemoryStats memory;
   double passMs(const std::string& name) const;
 };

@@ -431,6 +431,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   s.stats.height = height;
   s.stats.passes = s.timer->endFrame();
   s.stats.timingMethod = s.timer->methodName();
+  s.stats.timingFramesLate = s.timer->framesLate();
   s.stats.memory = s.technique->memory();
   for (const PassTiming& p : s.stats.passes) s.stats.totalMs += p.ms;
   (void)frameStart;

@@ -26,6 +26,8 @@ void GpuTimer::beginFrame() {
   entries_.clear();
   queriesUsed_ = 0;
   open_ = false;
+  // Never the pool whose queries are still to be read.
+  if (!pending_.empty()) pool_ = 1 - pendingPool_;
 }
 
 void GpuTimer::begin(const std::string& pass) {
@@ -36,12 +38,13 @@ void GpuTimer::begin(const std::string& pass) {
     glFinish();
     e.start = std::chrono::steady_clock::now();
   } else {
-    if (queriesUsed_ == queryPool_.size()) {
+    auto& pool = queryPool_[pool_];
+    if (queriesUsed_ == pool.size()) {
       GLuint q = 0;
       glCreateQueries(GL_TIME_ELAPSED, 1, &q);
-      queryPool_.emplace_back(q);
+      pool.emplace_back(q);
     }
-    e.query = queryPool_[queriesUsed_++].id();
+    e.query = pool[queriesUsed_++].id();
     glBeginQuery(GL_TIME_ELAPSED, e.query);
   }
   entries_.push_back(std::move(e));
@@ -61,22 +64,50 @@ void GpuTimer::end() {
   }
 }
 
+namespace {
+/// Passes with the same name (e.g. repeated per cascade) are summed.
+void addPass(std::vector<PassTiming>& out, const std::string& name, double ms) {
+  for (PassTiming& p : out)
+    if (p.name == name) {
+      p.ms += ms;
+      return;
+    }
+  out.push_back({name, ms});
+}
+}  // namespace
+
 std::vector<PassTiming> GpuTimer::endFrame() {
   if (open_) end();
-  std::vector<PassTiming> out;
-  for (Entry& e : entries_) {
-    if (method_ == Method::TimerQuery) {
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(e.query, GL_QUERY_RESULT, &ns);
-      e.ms = double(ns) * 1e-6;
-    }
-    // Passes with the same name (e.g. repeated per cascade) are summed.
-    bool merged = false;
-    for (PassTiming& p : out)
-      if (p.name == e.name) p.ms += e.ms, merged = true;
-    if (!merged) out.push_back({e.name, e.ms});
+  if (method_ == Method::FinishWallClock) {
+    std::vector<PassTiming> out;
+    for (const Entry& e : entries_) addPass(out, e.name, e.ms);
+    return out;
   }
-  return out;
+  // Timer queries: read the previous frame's, without waiting for the GPU.
+  bool ready = !pending_.empty();
+  for (const Entry& e : pending_) {
+    GLint available = 0;
+    glGetQueryObjectiv(e.query, GL_QUERY_RESULT_AVAILABLE, &available);
+    ready = ready && available != 0;
+  }
+  if (ready) {
+    lastResults_.clear();
+    for (const Entry& e : pending_) {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(e.query, GL_QUERY_RESULT, &ns);  // available: no wait
+      addPass(lastResults_, e.name, double(ns) * 1e-6);
+    }
+    late_ = 1;
+    pending_ = std::move(entries_);
+    pendingPool_ = pool_;
+  } else if (!pending_.empty()) {
+    ++late_;  // keep waiting for those; this frame's queries are dropped, never waited on
+  } else {
+    pending_ = std::move(entries_);
+    pendingPool_ = pool_;
+  }
+  entries_.clear();
+  return lastResults_;
 }
 
 }  // namespace sl::gl

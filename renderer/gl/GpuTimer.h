@@ -1,6 +1,8 @@
 // Per-pass timing. On software rasterisers (llvmpipe) GL_TIME_ELAPSED is meaningless, so
-// each pass is timed with glFinish + a wall clock; on real GPUs with timer queries.
-// The method used is reported with every measurement.
+// each pass is timed with glFinish + a wall clock; on real GPUs with timer queries, read
+// one frame late so the CPU never waits for the GPU (the frame's stats then hold the
+// previous frame's pass times; the first frame has none). The method is reported with
+// every measurement.
 #pragma once
 
 #include <chrono>
@@ -22,8 +24,13 @@ class GpuTimer {
   void beginFrame();
   void begin(const std::string& pass);
   void end();
-  /// Collects the results of this frame (blocks on queries).
+  /// Finish+wallclock: this frame's pass times. Timer queries: the previous frame's, read
+  /// without waiting (if the GPU has not finished them yet, the last results read are
+  /// returned again and framesLate() grows).
   std::vector<PassTiming> endFrame();
+  /// How many frames old the timer-query results endFrame() returned are (0 for
+  /// finish+wallclock; 1 normally for queries).
+  int framesLate() const { return method_ == Method::TimerQuery ? late_ : 0; }
 
   /// RAII scope for one pass.
   class Scope {
@@ -47,7 +54,11 @@ class GpuTimer {
   };
   Method method_;
   std::vector<Entry> entries_;
-  std::vector<Handle<QueryDeleter>> queryPool_;
+  std::vector<Entry> pending_;  ///< the previous frame's query entries, not yet read
+  std::vector<PassTiming> lastResults_;
+  std::vector<Handle<QueryDeleter>> queryPool_[2];  ///< alternate frames
+  int pool_ = 0, pendingPool_ = 0;
+  int late_ = 0;
   size_t queriesUsed_ = 0;
   bool open_ = false;
 };

@@ -1,5 +1,7 @@
 // Renderer core on a headless EGL context: shaders (#include, file:line errors, last good
 // program kept), bad input that must not break the renderer, GL debug output clean.
+#include <algorithm>
+#include <cstdlib>
 #include <fstream>
 
 #include "GlTestEnv.h"
@@ -68,6 +70,31 @@ TEST(Renderer, ReportsTimingAndMemory) {
   EXPECT_FALSE(st.timingMethod.empty());
   EXPECT_GT(st.passMs("shadow map"), 0.0);
   EXPECT_GT(st.totalMs, 0.0);
+  test::expectNoGlErrors(*r);
+}
+
+// Timer queries (real GPUs; forced here with SHADOWLAB_TIMING=query, which llvmpipe
+// accepts): results are read a frame late, never waited on, and name the passes.
+TEST(Renderer, TimerQueriesAreReadAFrameLateWithoutWaiting) {
+  ::setenv("SHADOWLAB_TIMING", "query", 1);
+  auto r = test::makeRenderer("plane-box", "rtw-backward");
+  ::unsetenv("SHADOWLAB_TIMING");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->renderFrame(160, 90, 0));
+  EXPECT_EQ(r->stats().timingMethod, "GL_TIME_ELAPSED");
+  EXPECT_TRUE(r->stats().passes.empty()) << "the first frame has no finished queries yet";
+  for (int f = 0; f < 3; ++f) {
+    glFinish();  // the previous frame's queries are done: the next read finds them
+    ASSERT_FALSE(r->renderFrame(160, 90, 0));
+    EXPECT_EQ(r->stats().timingFramesLate, 1);
+    std::vector<std::string> names;
+    for (const PassTiming& p : r->stats().passes) {
+      names.push_back(p.name);
+      EXPECT_GE(p.ms, 0.0) << p.name;
+    }
+    for (const char* want : {"gbuffer", "importance", "warped shadow map", "resolve"})
+      EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+  }
   test::expectNoGlErrors(*r);
 }
 

@@ -1,5 +1,6 @@
 // The uniform shadow map against the exact Embree reference, and the reference against
 // the analytic shadow of plane-box; plus the golden image of the default scene.
+#include <algorithm>
 #include <cmath>
 
 #include "GlTestEnv.h"
@@ -65,6 +66,29 @@ TEST(Golden, DefaultSceneUniform) {
       compareToGolden(img, std::filesystem::path(SHADOWLAB_GOLDEN_DIR) / "default-uniform.png", tol,
                       test::testOut("golden"), "default-uniform");
   EXPECT_TRUE(g.pass) << g.message;
+}
+
+// The warped techniques: diagonal's row seen from its end (the warp and, for DA-RTW, the
+// rotation at work), after 3 frames so DA-RTW has turned its frustum. Same tolerance.
+TEST(Golden, DiagonalRowEndRtw) {
+  for (const char* technique : {"rtw-backward", "da-rtw"}) {
+    auto r = test::makeRenderer("diagonal", technique);
+    ASSERT_TRUE(r);
+    const auto& cams = r->scene()->cameras;
+    auto it = std::find_if(cams.begin(), cams.end(),
+                           [](const CameraBookmark& b) { return b.name == "row-end"; });
+    ASSERT_NE(it, cams.end());
+    r->setCamera(it->camera);
+    ASSERT_FALSE(r->params().set("resolution", 1024));
+    for (int f = 0; f < 3; ++f) ASSERT_FALSE(r->renderFrame(480, 270, 0));
+    ImageRGBA8 img = r->readback().color;
+    const std::string name = std::string("diagonal-") + technique;
+    GoldenResult g =
+        compareToGolden(img, std::filesystem::path(SHADOWLAB_GOLDEN_DIR) / (name + ".png"),
+                        GoldenTolerance{24, 0.01}, test::testOut("golden"), name);
+    EXPECT_TRUE(g.pass) << g.message;
+    test::expectNoGlErrors(*r);
+  }
 }
 
 }  // namespace

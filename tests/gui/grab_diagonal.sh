@@ -97,7 +97,9 @@ cov = rtw["panels"]["covariance"]
 drawn, turned = cov["axis_deg"], da["numbers"]["rotation.deg"]
 print(f"covariance panel on rtw-backward's IM ({cov['source']}): axis {drawn:.3f} deg; "
       f"DA-RTW turned R by {turned:.3f} deg")
-ok = cov["source"] == "importance map (CPU)" and abs(drawn) > 10 and abs(drawn - turned) < 0.5
+# DA-RTW's PCA reads its moment IM (the 512^2 IM's 4x4 block maxima, 128^2): measured 1.3 deg
+# from the full-resolution PCA the panel draws for rtw-backward on this view.
+ok = cov["source"] == "importance map (CPU)" and abs(drawn) > 10 and abs(drawn - turned) < 2.0
 print(("ok   " if ok else "FAIL ") + "the diagonal axis the panel draws is the rotation DA-RTW applies")
 sys.exit(0 if ok else 1)
 PY

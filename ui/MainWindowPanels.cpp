@@ -432,8 +432,9 @@ void MainWindow::showPass() {
   if (hasCurve("importance.x"))
     passSteps_.push_back(
         {QStringLiteral("collapse"), tr("Collapse to 1D"),
-         tr("The max over every column (x map) and row (y map). A rectilinear warp can only "
-            "give the separable density Ix·Iy: compare it with the raw IM."),
+         tr("The max over every column (x map) and row (y map) — backward analysis scatters "
+            "straight into these two maps, the same maxima without the 2D IM. A rectilinear "
+            "warp can only give the separable density Ix·Iy: compare it with the raw IM."),
          importanceDock_});
   if (hasCurve("importance.x.blurred"))
     passSteps_.push_back(
@@ -451,14 +452,17 @@ void MainWindow::showPass() {
     passSteps_.push_back(
         {QStringLiteral("warped"), hasCurve("warp.x") ? tr("Warped shadow map") : tr("Shadow map"),
          hasCurve("warp.x")
-             ? tr("Depth from the light with every vertex moved by the warp: important regions "
-                  "get more texels (large grid cells), beside the unwarped map for contrast.")
+             ? tr("Depth from the light, warped: important regions get more texels (large grid "
+                  "cells), beside the unwarped map for contrast. Each texel stores its "
+                  "triangle's depth plane at the texel's unwarped centre (exact whatever the "
+                  "tessellation); tessellation bends the silhouettes with the warp.")
              : tr("Depth from the light, uniform over the focused light frustum."),
          shadowMapDock_});
   passSteps_.push_back(
       {QStringLiteral("lookup"), tr("Lookup (resolve and shade)"),
        tr("Every pixel finds its light-space position, applies the same warp and compares "
-          "depths. Try the overlays (O): error against the exact reference, texels per pixel, "
+          "its own plane, carried to the sampled texel's centre, with the depth stored "
+          "there. Try the overlays (O): error against the exact reference, texels per pixel, "
           "the shadow-map grid on the scene."),
        nullptr});
   passIndex_ = std::clamp(passIndex_, 0, static_cast<int>(passSteps_.size()) - 1);

@@ -12,6 +12,7 @@ layout(r32ui, binding = 1) uniform uimage2D u_momentIm;              // if u_wri
 uniform int u_n;
 uniform int u_writeIm;
 uniform int u_writeMomentIm;
+uniform int u_stride;  // importance.stride: the fragment at (x, y) is camera pixel k (x, y)
 uniform sampler2D u_gPosition;
 uniform sampler2D u_gNormal;
 uniform mat4 u_lightViewProj;
@@ -21,7 +22,8 @@ uniform vec3 u_towardsLight;
 #include "rtw/importance.glsl"
 
 void main() {
-  ivec2 px = ivec2(gl_FragCoord.xy);
+  ivec2 px = ivec2(gl_FragCoord.xy) * u_stride;
+  if (any(greaterThanEqual(px, textureSize(u_gPosition, 0)))) return;
   vec4 P = texelFetch(u_gPosition, px, 0);
   if (P.w <= 0.0) return;
   vec4 c = u_lightViewProj * vec4(P.xyz, 1.0);

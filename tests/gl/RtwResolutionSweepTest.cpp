@@ -53,7 +53,13 @@ TEST_P(RtwResolutionSweep, ErrorFallsWithResolutionAndBeatsUniformAtTwiceTheSide
   std::printf("%-10s error_pct along the path:", name.c_str());
   for (const char* t : {"uniform", "rtw-backward", "da-rtw"}) {
     std::printf("\n  %-13s", t);
-    for (int n : sides) std::printf(e[t].count(n) ? " %5d^2 %7.3f" : " %5d^2       -", n, e[t][n]);
+    for (int n : sides) {
+      auto it = e[t].find(n);
+      if (it == e[t].end())
+        std::printf(" %5d^2       -", n);
+      else
+        std::printf(" %5d^2 %7.3f", n, it->second);
+    }
   }
   std::printf("\n");
   for (const char* t : {"rtw-backward", "da-rtw"})

@@ -70,47 +70,55 @@ TEST(RtwParity, CollapseBlurFloorScanWarpMatchCpu) {
 }
 
 // Backward scatter: the GPU IM equals the CPU scatter of the same G-buffer with the same
-// light fit, except texels whose samples sit on a texel border (float rounding of the
+// light fit (every importance.stride-th pixel in x and y, counted from the bottom-left as
+// GL does), except texels whose samples sit on a texel border (float rounding of the
 // projection): at most 0.5 % of texels differ.
 TEST(RtwParity, BackwardImportanceMatchesCpuScatter) {
-  auto r = rtwRenderer("diagonal", "rtw-backward", 512, 100);
-  ASSERT_TRUE(r);
-  r->setPublishing(true);
-  const int w = 320, h = 180;
-  ASSERT_FALSE(r->renderFrame(w, h, 0));
-  rtw::ImportanceMap gpu = publishedIm(r->publication());
-  FrameReadback fb = r->readback();
-  LightFit fit;
-  ASSERT_FALSE(fitDirectionalLight(r->camera(), float(w) / float(h), r->scene()->bounds,
-                                   r->light().towardsLight(), FocusSettings{}, fit));
-  const ParamSet& p = r->params();
-  rtw::ImportanceSettings s;
-  s.eyeOn = p.getBool("importance.eye");
-  s.eyeWeight = float(p.get("importance.eye.weight"));
-  s.orientationOn = p.getBool("importance.orientation");
-  s.orientationWeight = float(p.get("importance.orientation.weight"));
-  s.minCosL = 0.1f;
-  s.edgeOn = false;
-  s.nearM = r->camera().nearM;
-  ASSERT_FALSE(p.getBool("importance.edge"));
-  rtw::ImportanceMap cpu(gpu.width, gpu.height);
-  const glm::vec3 L = r->light().towardsLight(), C = r->camera().position,
-                  F = r->camera().forward();
-  for (size_t i = 0; i < fb.positions.size(); ++i) {
-    if (fb.positions[i].w <= 0.0f) continue;
-    glm::vec3 P(fb.positions[i]), N(fb.normals[i]);
-    float v = rtw::combineImportance(s, glm::dot(P - C, F), glm::dot(N, L),
-                                     glm::dot(N, glm::normalize(C - P)), 0.0f);
-    glm::vec4 c = fit.viewProj * glm::vec4(P, 1.0f);
-    rtw::scatterMax(cpu, glm::vec2(c) / c.w * 0.5f + 0.5f, v);
+  for (int stride : {1, 2, 3}) {
+    SCOPED_TRACE("importance.stride " + std::to_string(stride));
+    auto r = rtwRenderer("diagonal", "rtw-backward", 512, 100);
+    ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().set("importance.stride", stride));
+    r->setPublishing(true);
+    const int w = 320, h = 180;
+    ASSERT_FALSE(r->renderFrame(w, h, 0));
+    rtw::ImportanceMap gpu = publishedIm(r->publication());
+    FrameReadback fb = r->readback();
+    LightFit fit;
+    ASSERT_FALSE(fitDirectionalLight(r->camera(), float(w) / float(h), r->scene()->bounds,
+                                     r->light().towardsLight(), FocusSettings{}, fit));
+    const ParamSet& p = r->params();
+    rtw::ImportanceSettings s;
+    s.eyeOn = p.getBool("importance.eye");
+    s.eyeWeight = float(p.get("importance.eye.weight"));
+    s.orientationOn = p.getBool("importance.orientation");
+    s.orientationWeight = float(p.get("importance.orientation.weight"));
+    s.minCosL = 0.1f;
+    s.edgeOn = false;
+    s.nearM = r->camera().nearM;
+    ASSERT_FALSE(p.getBool("importance.edge"));
+    rtw::ImportanceMap cpu(gpu.width, gpu.height);
+    const glm::vec3 L = r->light().towardsLight(), C = r->camera().position,
+                    F = r->camera().forward();
+    for (size_t i = 0; i < fb.positions.size(); ++i) {
+      if (fb.positions[i].w <= 0.0f) continue;
+      const int x = int(i % size_t(w)), yFromBottom = h - 1 - int(i / size_t(w));
+      if (x % stride != 0 || yFromBottom % stride != 0) continue;
+      glm::vec3 P(fb.positions[i]), N(fb.normals[i]);
+      float v = rtw::combineImportance(s, glm::dot(P - C, F), glm::dot(N, L),
+                                       glm::dot(N, glm::normalize(C - P)), 0.0f);
+      glm::vec4 c = fit.viewProj * glm::vec4(P, 1.0f);
+      rtw::scatterMax(cpu, glm::vec2(c) / c.w * 0.5f + 0.5f, v);
+    }
+    size_t differ = 0, nonzero = 0;
+    for (size_t i = 0; i < cpu.values.size(); ++i) {
+      nonzero += cpu.values[i] > 0.0f;
+      if (std::abs(cpu.values[i] - gpu.values[i]) > 1e-5f * std::max(cpu.values[i], 1e-3f))
+        ++differ;
+    }
+    EXPECT_GT(nonzero, 300u);
+    EXPECT_LE(double(differ), 0.005 * double(cpu.values.size())) << differ << " texels differ";
   }
-  size_t differ = 0, nonzero = 0;
-  for (size_t i = 0; i < cpu.values.size(); ++i) {
-    nonzero += cpu.values[i] > 0.0f;
-    if (std::abs(cpu.values[i] - gpu.values[i]) > 1e-5f * std::max(cpu.values[i], 1e-3f)) ++differ;
-  }
-  EXPECT_GT(nonzero, 500u);
-  EXPECT_LE(double(differ), 0.005 * double(cpu.values.size())) << differ << " texels differ";
 }
 
 rtw::ImportanceMap publishedImage(const Publication& pub, const std::string& key) {
@@ -257,8 +265,8 @@ double halfMassWidth(const std::vector<float>& v) {
 // sqrt(cov.xx cov.yy)) to diagonal. Seed 000 also says this gives "sharper importance
 // distribution ... for the vertical axis" and better shadows: measured here and printed,
 // NOT asserted, because with the exact warped depth neither reproduces on this scene (the
-// half-mass width of the sharper axis 10.7 % without, 11.7 % with rotation; error along the
-// walk 0.164 % vs 0.176 % at 512^2; README "Seed 000's claim").
+// half-mass width of the sharper axis 10.2 % without, 10.4 % with rotation; error along the
+// walk 0.164 % vs 0.189 % at 512^2; README "Seed 000's claim").
 TEST(RtwClaims, DaRtwAlignsThePrincipalAxis) {
   double sharpest[2] = {1.0, 1.0};
   int k = 0;
@@ -285,7 +293,9 @@ TEST(RtwClaims, DaRtwAlignsThePrincipalAxis) {
                   pub.numbers.at("rotation.deg"), xy / std::sqrt(xx * yy));
       EXPECT_LT(std::abs(pub.numbers.at("rotation.deg")), 89.0);
       EXPECT_GT(std::abs(pub.numbers.at("rotation.deg")), 10.0) << "the row is oblique";
-      EXPECT_LT(std::abs(xy), 1e-3 * std::sqrt(xx * yy)) << "rotated frame still oblique";
+      // The IM is resampled in the turned frame (importance.stride 2 picks other pixels), so
+      // the next estimate is a little off diagonal: measured 0.004 (from ~0.5 unrotated).
+      EXPECT_LT(std::abs(xy), 1e-2 * std::sqrt(xx * yy)) << "rotated frame still oblique";
     }
     std::printf("\n");
     test::expectNoGlErrors(*r);

@@ -99,6 +99,18 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
        1,
        {},
        "Extra importance within 2 px of a shadow edge of the previous frame."});
+  add({"importance.stride",
+       "Pixel stride",
+       "Importance",
+       ParamType::Int,
+       2,
+       1,
+       4,
+       1,
+       {},
+       "Backward analysis: every k-th camera pixel in x and y scatters its importance (k^2 "
+       "fewer atomics). The IM keeps the maximum per texel, and neighbouring pixels land in "
+       "the same or adjacent texels, which the blur spreads over anyway."});
   add({"importance.edge.weight",
        "Edge weight",
        "Importance",
@@ -418,11 +430,15 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     if (importance_)
       glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     if (momentIm_) glBindImageTexture(1, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    // One full-screen triangle into a framebuffer with no attachments, camera-sized.
+    // One full-screen triangle into a framebuffer with no attachments, one fragment per
+    // scattering pixel (every importance.stride-th in x and y).
+    const int stride = p.getInt("importance.stride");
+    const int sw = (ctx.width + stride - 1) / stride, sh = (ctx.height + stride - 1) / stride;
+    backward_.set("u_stride", stride);
     glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
-    glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, ctx.width);
-    glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, ctx.height);
-    glViewport(0, 0, ctx.width, ctx.height);
+    glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, sw);
+    glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, sh);
+    glViewport(0, 0, sw, sh);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(emptyVao_.id());

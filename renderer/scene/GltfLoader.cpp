@@ -6,14 +6,20 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <string_view>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -37,6 +43,21 @@ constexpr std::array<std::string_view, 5> kAcceptedRequiredExtensions = {
 /// An accessor larger than this is treated as corrupt rather than allocated.
 constexpr std::size_t kMaxAccessorElements = std::size_t(1) << 28;
 
+// Limits against hostile files. Each is named in the message that refuses a file.
+/// The .gltf/.glb file and every external buffer or image file it names.
+constexpr std::uint64_t kMaxFileBytes = std::uint64_t(1) << 30;
+/// Nesting of JSON arrays and objects (the JSON parsers recurse; real files need < 20).
+constexpr int kMaxJsonDepth = 256;
+/// Node instances in the flattened hierarchy.
+constexpr std::size_t kMaxNodeInstances = std::size_t(1) << 20;
+/// Triangles in the flattened scene (all instances together).
+constexpr std::size_t kMaxTriangles = std::size_t(1) << 25;
+/// Longest side and pixel count of a decoded image (larger ones are not decoded).
+constexpr int kMaxImageSide = 16384;
+constexpr std::uint64_t kMaxImagePixels = std::uint64_t(1) << 26;
+/// Input quoted in a message is cut to this many bytes.
+constexpr std::size_t kMaxQuotedBytes = 200;
+
 /// Internal failure; loadGltf() turns it into SceneLoadResult::error with the file name.
 struct LoadFailure {
   std::string message;
@@ -48,6 +69,18 @@ struct LoadFailure {
 
 std::string inQuotes(const std::string& s) {
   return "'" + s + "'";
+}
+
+/// In quotes, cut to kMaxQuotedBytes, control characters shown as '?'.
+std::string quoteInput(const std::string& s) {
+  std::string out = s.substr(0, kMaxQuotedBytes);
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return "'" + out + (s.size() > kMaxQuotedBytes ? "...'" : "'");
+}
+
+std::string mebibytes(std::uint64_t bytes) {
+  return std::to_string(bytes >> 20) + " MiB";
 }
 
 /// Newlines and runs of blanks collapsed so an error stays on one line.
@@ -380,6 +413,7 @@ class Flattener {
     convertImages();
     convertMaterials();
     collectInstances();
+    checkTriangleEstimate();
     for (const NodeInstance& inst : instances_) addMeshInstance(inst);
     if (scene_.triangleCount() == 0)
       fail("no triangles (the file has no triangle meshes in its scene)");
@@ -519,25 +553,113 @@ class Flattener {
       for (std::size_t i = 0; i < model_.nodes.size(); ++i)
         if (!isChild[i]) roots.push_back(int(i));
     }
-    std::vector<int> path;
-    for (int r : roots) visitNode(r, glm::dmat4(1.0), path);
+    visitTree(roots);
   }
 
-  void visitNode(int index, const glm::dmat4& parentWorld, std::vector<int>& path) {
-    if (index < 0 || std::size_t(index) >= model_.nodes.size())
-      fail("node " + std::to_string(index) + " is out of range (" +
-           std::to_string(model_.nodes.size()) + " nodes)");
-    if (std::find(path.begin(), path.end(), index) != path.end())
-      fail("the node hierarchy has a cycle through " + nodeName(index));
-    const tinygltf::Node& node = model_.nodes[std::size_t(index)];
-    NodeInstance inst;
-    inst.node = index;
-    inst.parentWorld = parentWorld;
-    inst.world = parentWorld * localMatrix(node);
-    instances_.push_back(inst);
-    path.push_back(index);
-    for (int child : node.children) visitNode(child, inst.world, path);
-    path.pop_back();
+  /// "node 7" or "node 7 'name'": the index always, since names need not be unique.
+  std::string nodeLabel(int index) const {
+    const tinygltf::Node& n = model_.nodes[std::size_t(index)];
+    return "node " + std::to_string(index) + (n.name.empty() ? "" : " " + quoteInput(n.name));
+  }
+
+  /// Depth-first, parents before children (the order a recursive walk gives), with an
+  /// explicit stack so that a chain of a million nodes cannot overflow the call stack. glTF
+  /// requires the hierarchy to be a set of disjoint trees: a node reached a second time (a
+  /// DAG, whose instances would double with each level, or a cycle) is refused.
+  void visitTree(const std::vector<int>& roots) {
+    const std::size_t nodeCount = model_.nodes.size();
+    auto checkIndex = [&](int index, const std::string& where) {
+      if (index < 0 || std::size_t(index) >= nodeCount)
+        fail(where + "node " + std::to_string(index) + " is out of range (" +
+             std::to_string(nodeCount) + " nodes)");
+    };
+    std::vector<int> parentOf(nodeCount, -2);  // -2 unvisited, -1 a root
+    std::vector<bool> onPath(nodeCount, false);
+    struct Frame {
+      std::size_t instance;   ///< index into instances_
+      std::size_t nextChild;  ///< next entry of the node's children to visit
+    };
+    std::vector<Frame> stack;
+    auto enter = [&](int index, int parent, const glm::dmat4& parentWorld) {
+      if (parentOf[std::size_t(index)] != -2) {
+        if (onPath[std::size_t(index)])
+          fail("the node hierarchy has a cycle through " + nodeLabel(index) +
+               ": glTF requires a tree");
+        int first = parentOf[std::size_t(index)];
+        std::string firstWhere =
+            first < 0 ? "a root of the scene" : "a child of " + nodeLabel(first);
+        std::string secondWhere =
+            parent < 0 ? "a root of the scene" : "a child of " + nodeLabel(parent);
+        fail(nodeLabel(index) + " is reachable twice (" + firstWhere + " and " + secondWhere +
+             "): glTF requires the node hierarchy to be a tree");
+      }
+      if (instances_.size() >= kMaxNodeInstances)
+        fail("more than " + std::to_string(kMaxNodeInstances) +
+             " node instances in the scene: refused (kMaxNodeInstances)");
+      parentOf[std::size_t(index)] = parent;
+      onPath[std::size_t(index)] = true;
+      NodeInstance inst;
+      inst.node = index;
+      inst.parentWorld = parentWorld;
+      inst.world = parentWorld * localMatrix(model_.nodes[std::size_t(index)]);
+      instances_.push_back(inst);
+      stack.push_back({instances_.size() - 1, 0});
+    };
+    for (int root : roots) {
+      checkIndex(root, "the scene's root ");
+      enter(root, -1, glm::dmat4(1.0));
+      while (!stack.empty()) {
+        Frame& top = stack.back();
+        const int index = instances_[top.instance].node;
+        const std::vector<int>& children = model_.nodes[std::size_t(index)].children;
+        if (top.nextChild == children.size()) {
+          onPath[std::size_t(index)] = false;
+          stack.pop_back();
+          continue;
+        }
+        const int child = children[top.nextChild++];
+        checkIndex(child, "child of " + nodeLabel(index) + ": ");
+        const glm::dmat4 world = instances_[top.instance].world;  // enter() may reallocate
+        enter(child, index, world);
+      }
+    }
+  }
+
+  /// Refuses, before anything is read or allocated, a scene whose instances would flatten to
+  /// more than kMaxTriangles triangles (a mesh instanced by many nodes). The estimate comes
+  /// from the accessors' counts; addPrimitive() checks the exact total as it goes.
+  void checkTriangleEstimate() const {
+    auto countOf = [&](int accessor) -> std::size_t {
+      if (accessor < 0 || std::size_t(accessor) >= model_.accessors.size()) return 0;
+      return model_.accessors[std::size_t(accessor)].count;
+    };
+    std::vector<std::size_t> perMesh(model_.meshes.size(), 0);
+    for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
+      for (const tinygltf::Primitive& prim : model_.meshes[m].primitives) {
+        int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        auto pos = prim.attributes.find("POSITION");
+        std::size_t n = prim.indices >= 0              ? countOf(prim.indices)
+                        : pos != prim.attributes.end() ? countOf(pos->second)
+                                                       : 0;
+        std::size_t t =
+            mode == TINYGLTF_MODE_TRIANGLES ? n / 3
+            : (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) && n >= 3
+                ? n - 2
+                : 0;
+        perMesh[m] = std::min(perMesh[m] + std::min(t, kMaxAccessorElements), kMaxAccessorElements);
+      }
+    }
+    std::size_t total = 0;
+    for (const NodeInstance& inst : instances_) {
+      const int mesh = model_.nodes[std::size_t(inst.node)].mesh;
+      if (mesh < 0 || std::size_t(mesh) >= perMesh.size()) continue;
+      total += perMesh[std::size_t(mesh)];
+      if (total > kMaxTriangles)
+        fail("the flattened scene would have more than " + std::to_string(kMaxTriangles) +
+             " triangles (" + std::to_string(instances_.size()) +
+             " node instances; a mesh counts once per node that uses it): refused "
+             "(kMaxTriangles)");
+    }
   }
 
   void addMeshInstance(const NodeInstance& inst) {
@@ -629,6 +751,10 @@ class Flattener {
       warn(label + ": no triangles, skipped");
       return;
     }
+    if (tri.size() / 3 > kMaxTriangles - triangles_)
+      fail(label + ": the flattened scene would have more than " + std::to_string(kMaxTriangles) +
+           " triangles (all node instances together): refused (kMaxTriangles)");
+    triangles_ += tri.size() / 3;
 
     // Normals and texture coordinates.
     std::vector<float> normals;
@@ -1011,6 +1137,7 @@ class Flattener {
   const tinygltf::Model& model_;
   Scene& scene_;
   std::vector<NodeInstance> instances_;
+  std::size_t triangles_ = 0;  ///< in scene_.primitives so far
   std::vector<UvRule> uvRules_;
   std::set<std::string> warnedKeys_;
 };
@@ -1018,16 +1145,244 @@ class Flattener {
 // ---------------------------------------------------------------------------------------
 // Files
 
+/// Closes a POSIX file descriptor on scope exit.
+struct FdCloser {
+  int fd;
+  ~FdCloser() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+const char* fileKind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+/// The whole of a regular file of at most kMaxFileBytes. Devices, FIFOs and sockets are
+/// refused before anything is read: the file is opened non-blocking (a FIFO cannot hang the
+/// open) and checked with fstat on the open descriptor (no race with a swapped path).
+/// `what` prefixes every message ("" for the scene file, whose name loadGltf() adds).
+std::vector<unsigned char> readRegularFile(const fs::path& path, const std::string& what) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    int e = errno;
+    if (e == ENOENT || e == ENOTDIR) fail(what + "file not found");
+    fail(what + "cannot be opened for reading: " + std::strerror(e));
+  }
+  FdCloser closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) fail(what + "cannot be inspected: " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) fail(what + "is a directory, not a glTF file");
+  if (!S_ISREG(st.st_mode))
+    fail(what + "is " + fileKind(st.st_mode) +
+         ", not a regular file: refused (only regular files are read)");
+  const std::uint64_t size = std::uint64_t(st.st_size);
+  if (size > kMaxFileBytes)
+    fail(what + "is " + std::to_string(size) + " bytes, over the limit of " +
+         mebibytes(kMaxFileBytes) + " per file (kMaxFileBytes)");
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail(what + "read error: " + std::strerror(errno));
+    if (n == 0) break;  // shrank while being read
+    done += std::size_t(n);
+  }
+  bytes.resize(done);
+  return bytes;
+}
+
+/// Refuses JSON nested deeper than kMaxJsonDepth, before any recursive parser sees it. One
+/// pass over the bytes with no recursion; brackets inside strings (escapes included) do not
+/// count. Malformed JSON is left for the parser to describe.
+void checkJsonDepth(const unsigned char* bytes, std::size_t size, const std::string& what) {
+  int depth = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < size; ++i) {
+    const unsigned char c = bytes[i];
+    if (inString) {
+      if (c == '\\') {
+        ++i;  // the escaped character cannot end the string
+      } else if (c == '"') {
+        inString = false;
+      }
+      continue;
+    }
+    if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        fail(what + "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (at byte " +
+             std::to_string(i) + "): refused (kMaxJsonDepth)");
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
+/// Why an external (non-data:) URI is refused, or "" if it is a relative path that stays
+/// inside the scene's directory. `uri` is already percent-decoded (by tinygltf).
+std::string uriProblem(const std::string& uri) {
+  static const std::string allowed =
+      "only relative paths inside the scene's directory and data: URIs are read";
+  if (uri.empty()) return "is empty";
+  // A scheme: a letter, then letters, digits, '+', '-' or '.', then ':' (a Windows drive
+  // letter such as "C:" is caught here too).
+  std::size_t colon = uri.find(':');
+  if (colon != std::string::npos && colon > 0 && std::isalpha(static_cast<unsigned char>(uri[0]))) {
+    bool scheme = true;
+    for (std::size_t k = 1; k < colon; ++k) {
+      unsigned char c = static_cast<unsigned char>(uri[k]);
+      if (!std::isalnum(c) && c != '+' && c != '-' && c != '.') scheme = false;
+    }
+    if (scheme) {
+      std::string name = uri.substr(0, colon);
+      for (char& c : name) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if (name == "data")
+        return "is a data: URI that could not be decoded (only base64 data: URIs are read)";
+      return "is refused: a " + name.substr(0, 20) + ": URI (" + allowed + ")";
+    }
+  }
+  if (uri[0] == '/' || uri[0] == '\\') return "is refused: an absolute path (" + allowed + ")";
+  std::size_t start = 0;
+  while (start <= uri.size()) {
+    std::size_t end = uri.find_first_of("/\\", start);
+    if (end == std::string::npos) end = uri.size();
+    if (uri.compare(start, end - start, "..") == 0)
+      return "is refused: '..' leaves the scene's directory (" + allowed + ")";
+    start = end + 1;
+  }
+  if (uri.find('\0') != std::string::npos) return "is refused: it contains a NUL byte";
+  return "";
+}
+
+/// tinygltf's file system, restricted: external files are looked up only in the scene's
+/// directory (never the working directory), only relative URIs that stay inside it are
+/// accepted, and they are read with readRegularFile(). The first refusal is kept in `error`
+/// because tinygltf reports a missing image only as a warning.
+struct ExternalFiles {
+  std::string prefix;  ///< the scene's directory, ending with '/'
+  std::string error;
+
+  void refuse(const std::string& message) {
+    if (error.empty()) error = message;
+  }
+
+  /// The URI of a path tinygltf built as JoinPath(dir, uri); nullopt for other directories.
+  std::optional<std::string> uriOf(const std::string& path) const {
+    if (path.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+    return path.substr(prefix.size());
+  }
+
+  static bool exists(const std::string& path, void* user) {
+    auto& self = *static_cast<ExternalFiles*>(user);
+    std::optional<std::string> uri = self.uriOf(path);
+    if (!uri) return false;
+    if (std::string problem = uriProblem(*uri); !problem.empty()) {
+      self.refuse("external file URI " + quoteInput(*uri) + " " + problem);
+      return false;
+    }
+    std::error_code ec;
+    return fs::exists(fs::path(path), ec);
+  }
+
+  static std::string expand(const std::string& path, void*) { return path; }  // no wordexp
+
+  static bool read(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void* user) {
+    auto& self = *static_cast<ExternalFiles*>(user);
+    std::string uri = self.uriOf(path).value_or(path);
+    try {
+      *out = readRegularFile(path, "external file " + quoteInput(uri) + " ");
+      return true;
+    } catch (const LoadFailure& f) {
+      self.refuse(f.message);
+      if (err) *err += f.message;
+    } catch (const std::bad_alloc&) {
+      self.refuse("external file " + quoteInput(uri) + ": out of memory");
+    }
+    return false;
+  }
+
+  static bool write(std::string* err, const std::string&, const std::vector<unsigned char>&,
+                    void*) {
+    if (err) *err += "writing is not supported";
+    return false;
+  }
+};
+
+std::uint32_t readBigEndian(const unsigned char* p, int bytes) {
+  std::uint32_t v = 0;
+  for (int k = 0; k < bytes; ++k) v = (v << 8) | p[k];
+  return v;
+}
+
+/// Width and height from a PNG or JPEG header, without decoding; nullopt if neither.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> imageSize(const unsigned char* b,
+                                                                 std::size_t n) {
+  static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (n >= 24 && std::memcmp(b, png, 8) == 0 && std::memcmp(b + 12, "IHDR", 4) == 0)
+    return std::make_pair(readBigEndian(b + 16, 4), readBigEndian(b + 20, 4));
+  if (n < 4 || b[0] != 0xFF || b[1] != 0xD8) return std::nullopt;
+  std::size_t at = 2;  // JPEG: walk the marker segments to the first start-of-frame
+  while (at + 4 <= n) {
+    if (b[at] != 0xFF) return std::nullopt;
+    const unsigned char marker = b[at + 1];
+    if (marker == 0xFF) {  // fill byte
+      ++at;
+      continue;
+    }
+    if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD9)) {  // no length
+      at += 2;
+      continue;
+    }
+    const std::size_t length = readBigEndian(b + at + 2, 2);
+    const bool startOfFrame =
+        marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+    if (startOfFrame) {
+      if (at + 9 > n) return std::nullopt;
+      return std::make_pair(readBigEndian(b + at + 7, 2), readBigEndian(b + at + 5, 2));
+    }
+    if (length < 2) return std::nullopt;
+    at += 2 + length;
+  }
+  return std::nullopt;
+}
+
 /// tinygltf's image decoder, except that an undecodable image is a warning, not a failure.
+/// Only PNG and JPEG (glTF's image formats) are decoded, and only up to kMaxImageSide and
+/// kMaxImagePixels: the header is read first, so a small file cannot make the decoder
+/// allocate gigabytes.
 bool decodeImageLeniently(tinygltf::Image* image, const int imageIndex, std::string* err,
                           std::string* warn, int reqWidth, int reqHeight,
                           const unsigned char* bytes, int size, void*) {
+  (void)err;
+  const std::string label = "image " + std::to_string(imageIndex) + " not decoded: ";
+  auto dims = imageSize(bytes, size > 0 ? std::size_t(size) : 0);
+  if (!dims) {
+    if (warn) *warn += label + "neither PNG nor JPEG\n";
+    return true;
+  }
+  auto [w, h] = *dims;
+  if (w == 0 || h == 0 || w > std::uint32_t(kMaxImageSide) || h > std::uint32_t(kMaxImageSide) ||
+      std::uint64_t(w) * h > kMaxImagePixels) {
+    if (warn)
+      *warn += label + std::to_string(w) + "x" + std::to_string(h) +
+               " pixels is beyond the limit of " + std::to_string(kMaxImageSide) +
+               " per side (kMaxImageSide) and " + std::to_string(kMaxImagePixels) +
+               " pixels (kMaxImagePixels)\n";
+    return true;
+  }
   std::string why;
   if (tinygltf::LoadImageData(image, imageIndex, &why, warn, reqWidth, reqHeight, bytes, size,
                               nullptr))
     return true;
-  if (warn) *warn += "image " + std::to_string(imageIndex) + " not decoded: " + why + "\n";
-  (void)err;
+  if (warn) *warn += label + why + "\n";
   return true;
 }
 
@@ -1086,11 +1441,7 @@ std::shared_ptr<Scene> loadOrFail(const fs::path& path) {
   fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) fail("file not found");
   if (fs::is_directory(status)) fail("is a directory, not a glTF file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail("cannot be opened for reading");
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                   std::istreambuf_iterator<char>());
-  if (in.bad()) fail("read error");
+  std::vector<unsigned char> bytes = readRegularFile(path, "");
   if (bytes.empty()) fail("empty file");
   if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail("file larger than 4 GiB");
 
@@ -1099,13 +1450,23 @@ std::shared_ptr<Scene> loadOrFail(const fs::path& path) {
     if (bytes.size() < 4) fail("truncated .glb: " + std::to_string(bytes.size()) + " bytes");
     fail("not a glTF binary (the file does not start with 'glTF')");
   }
-  if (binary) checkGlbHeader(bytes);
+  if (binary) {
+    checkGlbHeader(bytes);
+    checkJsonDepth(bytes.data() + 20, readU32(bytes, 12), "the JSON chunk is ");
+  } else {
+    checkJsonDepth(bytes.data(), bytes.size(), "the JSON is ");
+  }
 
   tinygltf::TinyGLTF parser;
   parser.SetImageLoader(&decodeImageLeniently, nullptr);
+  std::string baseDir = path.parent_path().string();
+  if (baseDir.empty()) baseDir = ".";
+  ExternalFiles files;
+  files.prefix = baseDir.back() == '/' ? baseDir : baseDir + "/";
+  parser.SetFsCallbacks({&ExternalFiles::exists, &ExternalFiles::expand, &ExternalFiles::read,
+                         &ExternalFiles::write, &files});
   tinygltf::Model model;
   std::string err, warnText;
-  std::string baseDir = path.parent_path().string();
   bool ok = binary ? parser.LoadBinaryFromMemory(&model, &err, &warnText, bytes.data(),
                                                  static_cast<unsigned int>(bytes.size()), baseDir)
                    : parser.LoadASCIIFromString(&model, &err, &warnText,
@@ -1113,6 +1474,7 @@ std::shared_ptr<Scene> loadOrFail(const fs::path& path) {
                                                 static_cast<unsigned int>(bytes.size()), baseDir);
   // The required extensions are parsed early, so they explain a failure best.
   refuseUnsupportedRequiredExtensions(model);
+  if (!files.error.empty()) fail(files.error);
   if (!ok) fail(describeParseError(err));
 
   auto scene = std::make_shared<Scene>();

@@ -1,0 +1,368 @@
+// The glTF loader against hostile files (issue 14): devices and FIFOs, oversized files,
+// URIs outside the scene's directory, deep JSON, deep node chains, node DAGs and cycles, and
+// scenes that flatten to too many instances or triangles. Each must fail fast with one line
+// naming the file and the limit; nothing may crash or hang. Large inputs are generated here,
+// into the test output directory, never committed.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "scene/GltfLoader.h"
+
+namespace sl {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path outDir(const std::string& sub) {
+  fs::path dir = fs::path(SHADOWLAB_TEST_OUT) / "gltf-limits" / sub;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary).write(text.data(), std::streamsize(text.size()));
+}
+
+std::string base64(const unsigned char* p, std::size_t n) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < n; i += 3) {
+    std::uint32_t v = std::uint32_t(p[i]) << 16;
+    if (i + 1 < n) v |= std::uint32_t(p[i + 1]) << 8;
+    if (i + 2 < n) v |= p[i + 2];
+    out += digits[(v >> 18) & 63];
+    out += digits[(v >> 12) & 63];
+    out += i + 1 < n ? digits[(v >> 6) & 63] : '=';
+    out += i + 2 < n ? digits[v & 63] : '=';
+  }
+  return out;
+}
+
+/// The 36 bytes of one triangle's three float positions.
+std::string triangleBytes() {
+  const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  return std::string(reinterpret_cast<const char*>(xyz), sizeof xyz);
+}
+
+std::string triangleDataUri() {
+  std::string b = triangleBytes();
+  return "data:application/octet-stream;base64," +
+         base64(reinterpret_cast<const unsigned char*>(b.data()), b.size());
+}
+
+/// A glTF with mesh 0 = one triangle (accessor 0 has `positionCount` elements, backed by a
+/// 36-byte buffer at `bufferUri`), the given nodes and scene roots, and extra top-level JSON.
+std::string gltfText(const std::string& nodes, const std::string& roots,
+                     const std::string& bufferUri = triangleDataUri(),
+                     const std::string& extra = "", std::size_t positionCount = 3,
+                     std::size_t byteLength = 36) {
+  return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[)" + roots +
+         R"(]}],"nodes":[)" + nodes +
+         R"(],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+         R"("accessors":[{"bufferView":0,"componentType":5126,"count":)" +
+         std::to_string(positionCount) +
+         R"(,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],)"
+         R"("bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":)" +
+         std::to_string(byteLength) + R"(,"uri":")" + bufferUri + "\"}]" + extra + "}";
+}
+
+/// Loads `path`, which must fail within `seconds` with one line starting with the file name
+/// and containing every part. Returns the message.
+std::string expectRefused(const fs::path& path, const std::vector<std::string>& parts,
+                          double seconds = 2.0) {
+  auto start = std::chrono::steady_clock::now();
+  SceneLoadResult r = loadGltf(path);
+  double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_FALSE(r);
+  EXPECT_LT(took, seconds) << r.error;
+  EXPECT_EQ(r.error.rfind(path.string() + ": ", 0), 0u) << r.error;
+  EXPECT_EQ(r.error.find('\n'), std::string::npos) << r.error;
+  EXPECT_LT(r.error.size(), 600u) << r.error;
+  for (const std::string& part : parts) EXPECT_NE(r.error.find(part), std::string::npos) << r.error;
+  return r.error;
+}
+
+TEST(GltfLoaderLimits, GeneratedTriangleLoads) {
+  fs::path dir = outDir("ok");
+  writeFile(dir / "tri.gltf", gltfText(R"({"mesh":0})", "0"));
+  SceneLoadResult r = loadGltf(dir / "tri.gltf");
+  ASSERT_TRUE(r) << r.error;
+  EXPECT_EQ(r.scene->triangleCount(), 1u);
+}
+
+// ---- only regular files, of bounded size ---------------------------------------------------
+
+TEST(GltfLoaderLimits, DevicesAreRefused) {
+  for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+    if (!fs::exists(device)) continue;
+    expectRefused(device, {"character device", "not a regular file"});
+  }
+}
+
+TEST(GltfLoaderLimits, FifoSceneAndFifoBufferAreRefusedWithoutHanging) {
+  fs::path dir = outDir("fifo");
+  ASSERT_EQ(::mkfifo((dir / "scene.gltf").c_str(), 0600), 0);
+  expectRefused(dir / "scene.gltf", {"FIFO", "not a regular file"});
+  ASSERT_EQ(::mkfifo((dir / "pipe.bin").c_str(), 0600), 0);
+  writeFile(dir / "uses-fifo.gltf", gltfText(R"({"mesh":0})", "0", "pipe.bin"));
+  expectRefused(dir / "uses-fifo.gltf", {"'pipe.bin'", "FIFO", "not a regular file"});
+}
+
+TEST(GltfLoaderLimits, OversizedFilesAreRefusedBeforeReading) {
+  fs::path dir = outDir("huge");
+  const std::uintmax_t over = (std::uintmax_t(1) << 30) + 1;  // sparse: no disk used
+  {
+    std::string text = gltfText(R"({"mesh":0})", "0");
+    writeFile(dir / "huge.gltf", text);
+    fs::resize_file(dir / "huge.gltf", over);
+  }
+  expectRefused(dir / "huge.gltf", {"over the limit", "1024 MiB", "kMaxFileBytes"});
+  writeFile(dir / "huge.bin", "");
+  fs::resize_file(dir / "huge.bin", over);
+  writeFile(dir / "uses-huge.gltf", gltfText(R"({"mesh":0})", "0", "huge.bin"));
+  expectRefused(dir / "uses-huge.gltf", {"'huge.bin'", "over the limit", "kMaxFileBytes"});
+}
+
+TEST(GltfLoaderLimits, BufferByteLengthMustMatchItsFile) {
+  fs::path dir = outDir("bytelength");
+  writeFile(dir / "tri.bin", triangleBytes());
+  writeFile(dir / "ok.gltf", gltfText(R"({"mesh":0})", "0", "tri.bin"));
+  EXPECT_TRUE(loadGltf(dir / "ok.gltf"));
+  writeFile(dir / "long.gltf", gltfText(R"({"mesh":0})", "0", "tri.bin", "", 3, 4000000000u));
+  expectRefused(dir / "long.gltf", {"tri.bin", "4000000000"});
+  // The accessor reaching past its bufferView.
+  writeFile(dir / "accessor.gltf", gltfText(R"({"mesh":0})", "0", "tri.bin", "", 4));
+  expectRefused(dir / "accessor.gltf", {"accessor 0", "out of range of bufferView 0"});
+}
+
+// ---- URIs: relative paths inside the scene's directory, or data: ----------------------------
+
+TEST(GltfLoaderLimits, BufferUrisOutsideTheSceneDirectoryAreRefused) {
+  fs::path dir = outDir("uri");
+  fs::create_directories(dir / "sub");
+  writeFile(dir / "tri.bin", triangleBytes());
+  writeFile(dir / "sub" / "tri.bin", triangleBytes());
+  writeFile(dir / "subdir.gltf", gltfText(R"({"mesh":0})", "0", "sub/tri.bin"));
+  EXPECT_TRUE(loadGltf(dir / "subdir.gltf"));  // a relative path inside is fine
+  const std::string absolute = (dir / "tri.bin").string();
+  struct Case {
+    std::string uri;
+    std::vector<std::string> parts;
+  };
+  const std::vector<Case> cases = {
+      {"http://example.com/tri.bin", {"'http://example.com/tri.bin'", "a http: URI"}},
+      {"https://example.com/tri.bin", {"a https: URI"}},
+      {"file://" + absolute, {"a file: URI"}},
+      {absolute, {"an absolute path"}},
+      {"../uri/tri.bin", {"'..' leaves the scene's directory"}},
+      {"sub/../../uri/tri.bin", {"'..' leaves the scene's directory"}},
+      {"%2e%2e/uri/tri.bin", {"'..' leaves the scene's directory"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.uri);
+    writeFile(dir / "sub" / "bad.gltf", gltfText(R"({"mesh":0})", "0", c.uri));
+    std::vector<std::string> parts = c.parts;
+    parts.push_back("is refused");
+    parts.push_back("only relative paths inside the scene's directory and data: URIs are read");
+    expectRefused(dir / "sub" / "bad.gltf", parts);
+  }
+}
+
+TEST(GltfLoaderLimits, ImageUrisOutsideTheSceneDirectoryAreRefused) {
+  fs::path dir = outDir("image-uri");
+  writeFile(dir / "bad.gltf", gltfText(R"({"mesh":0})", "0", triangleDataUri(),
+                                       R"(,"images":[{"uri":"http://example.com/a.png"}])"));
+  expectRefused(dir / "bad.gltf", {"'http://example.com/a.png'", "is refused", "a http: URI"});
+}
+
+TEST(GltfLoaderLimits, LongUrisAreQuotedShort) {
+  fs::path dir = outDir("long-uri");
+  writeFile(dir / "bad.gltf",
+            gltfText(R"({"mesh":0})", "0", "http://" + std::string(100000, 'x') + ".bin"));
+  std::string error = expectRefused(dir / "bad.gltf", {"is refused", "...'"});
+  EXPECT_LT(error.size(), 600u);
+}
+
+// ---- JSON nesting --------------------------------------------------------------------------
+
+std::string deepArray(std::size_t levels) {
+  return std::string(levels, '[') + std::string(levels, ']');
+}
+
+TEST(GltfLoaderLimits, DeepJsonIsRefusedBeforeParsing) {
+  fs::path dir = outDir("deep-json");
+  for (std::size_t levels : {std::size_t(1000), std::size_t(100000), std::size_t(1000000)}) {
+    SCOPED_TRACE(levels);
+    writeFile(dir / "deep.gltf",
+              R"({"asset":{"version":"2.0"},"extras":{"a":)" + deepArray(levels) + "}}");
+    expectRefused(dir / "deep.gltf",
+                  {"the JSON is nested deeper than 256 levels", "kMaxJsonDepth"});
+  }
+  // At the limit is fine (then the file fails for having no triangles, not for its depth).
+  writeFile(dir / "at-limit.gltf",
+            gltfText(R"({"mesh":0})", "0", triangleDataUri(), R"(,"extras":)" + deepArray(255)));
+  EXPECT_TRUE(loadGltf(dir / "at-limit.gltf"));
+}
+
+TEST(GltfLoaderLimits, BracketsInsideStringsDoNotCount) {
+  fs::path dir = outDir("json-strings");
+  std::string name = std::string(5000, '[') + "\\\"" + std::string(5000, '{') + "\\\\";
+  writeFile(dir / "strings.gltf", gltfText(R"({"mesh":0,"name":")" + name + R"("})", "0"));
+  SceneLoadResult r = loadGltf(dir / "strings.gltf");
+  EXPECT_TRUE(r) << r.error;
+}
+
+TEST(GltfLoaderLimits, DeepJsonInAGlbChunkIsRefused) {
+  fs::path dir = outDir("deep-glb");
+  std::string json = R"({"asset":{"version":"2.0"},"extras":)" + deepArray(100000) + "}";
+  while (json.size() % 4) json += ' ';
+  std::string glb = "glTF";
+  auto u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+  u32(2);
+  u32(std::uint32_t(20 + json.size()));
+  u32(std::uint32_t(json.size()));
+  u32(0x4E4F534Au);
+  glb += json;
+  writeFile(dir / "deep.glb", glb);
+  expectRefused(dir / "deep.glb", {"the JSON chunk is nested deeper than 256", "kMaxJsonDepth"});
+}
+
+// ---- the node hierarchy --------------------------------------------------------------------
+
+/// Node i's only child is node i+1; the last node holds the mesh.
+std::string chainNodes(std::size_t depth) {
+  std::string nodes;
+  nodes.reserve(depth * 24);
+  for (std::size_t i = 0; i + 1 < depth; ++i)
+    nodes += R"({"children":[)" + std::to_string(i + 1) + R"(],"translation":[0,0,1]},)";
+  nodes += R"({"mesh":0})";
+  return nodes;
+}
+
+TEST(GltfLoaderLimits, DeepNodeChainsLoadWithoutRecursion) {
+  fs::path dir = outDir("chain");
+  for (std::size_t depth : {std::size_t(15000), std::size_t(200000)}) {
+    SCOPED_TRACE(depth);
+    writeFile(dir / "chain.gltf", gltfText(chainNodes(depth), "0"));
+    auto start = std::chrono::steady_clock::now();
+    SceneLoadResult r = loadGltf(dir / "chain.gltf");
+    double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_LT(took, 5.0);
+    ASSERT_EQ(r.scene->primitives.size(), 1u);
+    EXPECT_FLOAT_EQ(r.scene->primitives[0].positions[0].z, float(depth - 1));
+  }
+}
+
+/// Level k has nodes 2k and 2k+1, each listing both nodes of level k+1 as children: 2^levels
+/// instances if it were flattened.
+std::string dagNodes(int levels) {
+  std::string nodes;
+  for (int k = 0; k < levels; ++k) {
+    std::string next = std::to_string(2 * k + 2) + "," + std::to_string(2 * k + 3);
+    for (int j = 0; j < 2; ++j)
+      nodes += k + 1 < levels ? R"({"mesh":0,"children":[)" + next + "]}," : R"({"mesh":0},)";
+  }
+  nodes.pop_back();
+  return nodes;
+}
+
+TEST(GltfLoaderLimits, NodeDagIsRefused) {
+  fs::path dir = outDir("dag");
+  for (int levels : {3, 24, 40}) {
+    SCOPED_TRACE(levels);
+    writeFile(dir / "dag.gltf", gltfText(dagNodes(levels), "0,1"));
+    expectRefused(
+        dir / "dag.gltf",
+        {levels == 3 ? "node 4 is reachable twice (a child of node 2 and a child of node 3)"
+                     : "is reachable twice (a child of node ",
+         "glTF requires the node hierarchy to be a tree"});
+  }
+  writeFile(dir / "root-twice.gltf", gltfText(R"({"mesh":0})", "0,0"));
+  expectRefused(dir / "root-twice.gltf", {"node 0 is reachable twice", "a root of the scene"});
+}
+
+TEST(GltfLoaderLimits, NodeCyclesAreRefused) {
+  fs::path dir = outDir("cycle");
+  writeFile(dir / "self.gltf", gltfText(R"({"mesh":0,"children":[0]})", "0"));
+  expectRefused(dir / "self.gltf", {"cycle through node 0", "tree"});
+  writeFile(
+      dir / "loop.gltf",
+      gltfText(R"({"mesh":0,"children":[1]},{"name":"b","children":[2]},{"children":[1]})", "0"));
+  expectRefused(dir / "loop.gltf", {"cycle through node 1 'b'"});
+}
+
+TEST(GltfLoaderLimits, OutOfRangeChildIsNamed) {
+  fs::path dir = outDir("bad-child");
+  writeFile(dir / "bad.gltf", gltfText(R"({"mesh":0,"children":[5]})", "0"));
+  expectRefused(dir / "bad.gltf", {"child of node 0: node 5 is out of range (1 nodes)"});
+}
+
+TEST(GltfLoaderLimits, TooManyNodeInstancesAreRefused) {
+  fs::path dir = outDir("instances");
+  const std::size_t count = (std::size_t(1) << 20) + 1;
+  std::string nodes;
+  nodes.reserve(count * 3);
+  for (std::size_t i = 0; i < count; ++i) nodes += "{},";
+  nodes += R"({"mesh":0})";
+  std::string text = gltfText(nodes, "0");
+  // No scene: every node that is nobody's child is a root.
+  text.replace(text.find(R"("scene":0,"scenes":[{"nodes":[0]}],)"),
+               std::strlen(R"("scene":0,"scenes":[{"nodes":[0]}],)"), "");
+  writeFile(dir / "many.gltf", text);
+  expectRefused(dir / "many.gltf", {"more than 1048576 node instances", "kMaxNodeInstances"}, 5.0);
+}
+
+TEST(GltfLoaderLimits, TooManyTrianglesAreRefusedBeforeReading) {
+  fs::path dir = outDir("triangles");
+  // One accessor claiming 2^25 + 1 triangles (its bufferView has 36 bytes: never read).
+  const std::size_t over = 3 * ((std::size_t(1) << 25) + 1);
+  writeFile(dir / "one.gltf", gltfText(R"({"mesh":0})", "0", triangleDataUri(), "", over));
+  expectRefused(dir / "one.gltf", {"more than 33554432 triangles", "kMaxTriangles"});
+  // 2^24 + 1 triangles, instanced by two nodes.
+  const std::size_t half = 3 * ((std::size_t(1) << 24) + 1);
+  writeFile(dir / "two.gltf",
+            gltfText(R"({"mesh":0},{"mesh":0})", "0,1", triangleDataUri(), "", half));
+  expectRefused(dir / "two.gltf",
+                {"more than 33554432 triangles", "2 node instances", "kMaxTriangles"});
+}
+
+// ---- images --------------------------------------------------------------------------------
+
+TEST(GltfLoaderLimits, HugeImageDimensionsAreNotDecoded) {
+  fs::path dir = outDir("image");
+  // A PNG signature and IHDR declaring 100000 x 100000 pixels (the decoder is never reached).
+  const unsigned char png[33] = {0x89, 'P',  'N', 'G', '\r', '\n', 0x1a, '\n', 0,    0, 0,
+                                 13,   'I',  'H', 'D', 'R',  0,    1,    0x86, 0xA0, 0, 1,
+                                 0x86, 0xA0, 8,   6,   0,    0,    0,    0,    0,    0, 0};
+  std::string image = "data:image/png;base64," + base64(png, sizeof png);
+  writeFile(
+      dir / "huge-image.gltf",
+      gltfText(R"({"mesh":0})", "0", triangleDataUri(),
+               R"(,"images":[{"uri":")" + image +
+                   R"("}],"textures":[{"source":0}],)"
+                   R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}])"));
+  auto start = std::chrono::steady_clock::now();
+  SceneLoadResult r = loadGltf(dir / "huge-image.gltf");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+  ASSERT_TRUE(r) << r.error;
+  bool named = false;
+  for (const std::string& w : r.scene->warnings)
+    named = named || (w.find("100000x100000") != std::string::npos &&
+                      w.find("kMaxImageSide") != std::string::npos);
+  EXPECT_TRUE(named);
+  ASSERT_EQ(r.scene->images.size(), 1u);
+  EXPECT_EQ(r.scene->images[0].width, 0);
+}
+
+}  // namespace
+}  // namespace sl

@@ -5,4 +5,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
+# A user's plain Release build (no preset: -O3, no -Werror) of the two programs must compile
+# too (issue 14); its own folder, incremental after the first run.
+cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_BUILD_TESTS=OFF \
+  >/dev/null
+cmake --build build-release -j2 --target shadowlab-cli shadowlab
 ctest --preset default -j2 "$@"

@@ -236,7 +236,8 @@ void writeChart(const std::vector<ChartRow>& rows, ChartSpec spec, const std::st
     spec.subtitle += "; point labels: " + keysOf(order.front());
   for (const std::string& t : order)
     spec.seriesNotes.push_back(same || keysOf(t).empty() ? "" : "labels: " + keysOf(t));
-  if (auto e = writeSpeedAccuracyChart(points, spec, png)) throw UsageError(*e);
+  writeAtomically(
+      png, [&](const std::string& path) { return writeSpeedAccuracyChart(points, spec, path); });
   std::printf("chart -> %s\n", png.c_str());
 }
 
@@ -291,6 +292,7 @@ int cmdChart(Args& a) {
   if (png.empty()) throw UsageError("--chart: missing (the PNG to write)");
   if (chartY != "auto" && chartY != "linear" && chartY != "log")
     throw UsageError("--chart-y: expected auto, linear or log, got '" + chartY + "'");
+  checkOutputs({{"--chart", png}}, {{"--csv", csvPath}});
   std::ifstream in(csvPath);
   if (!in) throw UsageError(csvPath + ": cannot open");
   std::string line;
@@ -346,6 +348,7 @@ namespace {}  // namespace
 
 int cmdBench(Args& a) {
   BenchConfig cfg = parseBench(a);
+  checkOutputs({{"--csv", cfg.csv}, {"--chart", cfg.chart}}, {{"--scene", cfg.scene}});
   std::vector<ConfigSpec> configs;
   for (const std::string& t : cfg.techniques) {
     std::vector<ConfigSpec> more = expandTechniqueSweep(t);
@@ -382,6 +385,7 @@ int cmdBench(Args& a) {
   int referenceEvaluations = 0;
   {
     gl::EglContext ctx;
+    checkFrameSize(cfg.width, cfg.height);
     std::vector<std::unique_ptr<ConfigRunner>> runners;
     for (const ConfigSpec& c : configs)
       runners.push_back(std::make_unique<ConfigRunner>(c, scene, cfg.light));

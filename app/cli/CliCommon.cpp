@@ -1,14 +1,17 @@
 // Shared helpers of the shadowlab-cli commands; see CliCommon.h.
 #include "CliCommon.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 
+#include "core/Renderer.h"
 #include "scene/GltfLoader.h"
 
 namespace fs = std::filesystem;
@@ -52,8 +55,13 @@ double parseDouble(const std::string& opt, const std::string& text, double lo, d
 std::pair<int, int> parseSize(const std::string& text) {
   auto x = text.find('x');
   if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + text + "'");
-  return {parseInt("--size", text.substr(0, x), 1, 16384),
-          parseInt("--size", text.substr(x + 1), 1, 16384)};
+  // The real limit is the GL implementation's (checkFrameSize, once a context exists).
+  return {parseInt("--size", text.substr(0, x), 1, 1 << 16),
+          parseInt("--size", text.substr(x + 1), 1, 1 << 16)};
+}
+
+void checkFrameSize(int width, int height) {
+  if (auto e = Renderer::checkFrameSize(width, height)) throw UsageError("--size: " + *e);
 }
 
 DirectionalLight parseLight(const std::string& opt, const std::string& v) {
@@ -105,17 +113,130 @@ const CameraPath& pickPath(const Scene& scene, const std::string& which) {
                    "' (paths: " + (known.empty() ? "none" : known) + ")");
 }
 
+namespace {
+
+/// The folder a file goes into ("." for a bare name).
+fs::path folderOf(const std::string& path) {
+  fs::path parent = fs::path(path).parent_path();
+  return parent.empty() ? fs::path(".") : parent;
+}
+
+/// The same file for two paths (whether or not they exist yet): symbolic links and ".."
+/// resolved, hard links compared by identity.
+bool sameFile(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (fs::equivalent(a, b, ec)) return true;
+  const fs::path ca = fs::weakly_canonical(fs::absolute(a), ec);
+  const fs::path cb = fs::weakly_canonical(fs::absolute(b), ec);
+  return ca == cb;
+}
+
+/// Creates `folder` when missing and checks that it takes a new file (a probe file is
+/// created and removed); an error or nothing.
+std::optional<std::string> probeFolder(const fs::path& folder) {
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) {
+    fs::create_directories(folder, ec);
+    if (ec || !fs::is_directory(folder, ec))
+      return "cannot create the folder '" + folder.string() + "' (" +
+             (ec ? ec.message() : std::string("not a folder")) + ")";
+  }
+  const std::string probe = (folder / (".shadowlab-probe-" + std::to_string(getpid()))).string();
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+  if (fd < 0) {
+    const int err = errno;
+    return "cannot write in the folder '" + folder.string() + "' (" + std::strerror(err) + ")";
+  }
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return std::nullopt;
+}
+
+/// Writes `text` to `path` (created or truncated); an error naming `path` or nothing.
+std::optional<std::string> writeFile(const std::string& path, const std::string& text) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return path + ": cannot write (" + std::strerror(errno) + ")";
+  bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  int err = ok ? 0 : errno;
+  if (std::fflush(f) != 0 && ok) ok = false, err = errno;
+  if (std::fclose(f) != 0 && ok) ok = false, err = errno;
+  if (!ok) return path + ": cannot write (" + std::strerror(err) + ")";
+  return std::nullopt;
+}
+
+}  // namespace
+
+void checkOutputs(const std::vector<OutputFile>& outputs, const std::vector<OutputFile>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const OutputFile& o = outputs[i];
+    if (o.path.empty()) continue;
+    for (std::size_t k = 0; k < i; ++k)
+      if (!outputs[k].path.empty() && sameFile(outputs[k].path, o.path))
+        throw UsageError(o.option + ": '" + o.path + "' is the same file as " + outputs[k].option +
+                         " (one would overwrite the other)");
+    for (const OutputFile& in : inputs)
+      if (!in.path.empty() && sameFile(in.path, o.path))
+        throw UsageError(o.option + ": '" + o.path + "' is the same file as " + in.option +
+                         " (the input would be overwritten)");
+    std::error_code ec;
+    const fs::file_status st = fs::status(o.path, ec);
+    if (fs::is_directory(st)) throw UsageError(o.option + ": '" + o.path + "' is a folder");
+    if (fs::exists(st) && !fs::is_regular_file(st)) {  // a device or pipe: written in place
+      if (::access(o.path.c_str(), W_OK) != 0)
+        throw UsageError(o.option + ": '" + o.path + "' is not writable (" + std::strerror(errno) +
+                         ")");
+      continue;
+    }
+    if (auto e = probeFolder(folderOf(o.path))) throw UsageError(o.option + ": " + *e);
+  }
+}
+
+void checkOutputFolder(const std::string& option, const std::string& folder) {
+  if (auto e = probeFolder(folder)) throw UsageError(option + ": " + *e);
+}
+
+void writeAtomically(const std::string& path,
+                     const std::function<std::optional<std::string>(const std::string&)>& write) {
+  auto fail = [&](std::string why, const std::string& tmp) {
+    // The writer's message names the temporary file: name the real one.
+    for (std::size_t at; !tmp.empty() && (at = why.find(tmp)) != std::string::npos;)
+      why.replace(at, tmp.size(), path);
+    if (why.rfind(path, 0) != 0) why = path + ": " + why;
+    throw std::runtime_error(why);
+  };
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st)) {  // /dev/null, /dev/stdout, a pipe
+    if (auto e = write(path)) fail(*e, "");
+    return;
+  }
+  const fs::path folder = folderOf(path);
+  fs::create_directories(folder, ec);
+  if (ec) fail("cannot create the folder '" + folder.string() + "' (" + ec.message() + ")", "");
+  static int counter = 0;
+  const fs::path name = fs::path(path).filename();
+  const std::string tmp =
+      (folder / ("." + name.stem().string() + ".tmp" + std::to_string(getpid()) + "-" +
+                 std::to_string(++counter) + name.extension().string()))
+          .string();
+  if (auto e = write(tmp)) {
+    fs::remove(tmp, ec);
+    fail(*e, tmp);
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    fail("cannot write (" + ec.message() + ")", tmp);
+  }
+}
+
 void writeText(const std::string& path, const std::string& text) {
-  if (fs::path(path).has_parent_path()) fs::create_directories(fs::path(path).parent_path());
-  std::ofstream out(path);
-  if (!out) throw UsageError(path + ": cannot write");
-  out << text << "\n";
-  if (!out) throw UsageError(path + ": cannot write");
+  writeAtomically(path, [&](const std::string& p) { return writeFile(p, text + "\n"); });
 }
 
 void writePng(const std::string& path, const ImageRGBA8& img) {
-  if (fs::path(path).has_parent_path()) fs::create_directories(fs::path(path).parent_path());
-  if (auto e = writeImage(path, img)) throw UsageError(*e);
+  writeAtomically(path, [&](const std::string& p) { return writeImage(p, img); });
 }
 
 std::string formatDuration(double seconds) {

@@ -1,10 +1,11 @@
 // What every shadowlab-cli command shares: argument parsing helpers, the "bad input" error
-// (one line on stderr, exit 2), scene/camera/light lookup, file output and a terminal
-// progress bar.
+// (one line on stderr, exit 2), scene/camera/light lookup, output files (checked before the
+// work, written atomically) and a terminal progress bar.
 #pragma once
 
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -25,9 +26,12 @@ struct UsageError : std::runtime_error {
 
 struct Args {
   std::vector<std::string> rest;
-  /// The value after option `opt` at rest[i] (advances i).
+  /// The value after option `opt` at rest[i] (advances i). A value that starts with `--`
+  /// is the next option, not a value (`--scene --size 64x36`): an error naming `opt`.
   std::string take(std::size_t& i, const std::string& opt) {
     if (i + 1 >= rest.size()) throw UsageError(opt + ": missing value");
+    if (rest[i + 1].rfind("--", 0) == 0)
+      throw UsageError(opt + ": missing value (got the option '" + rest[i + 1] + "')");
     return rest[++i];
   }
 };
@@ -35,6 +39,9 @@ struct Args {
 int parseInt(const std::string& opt, const std::string& text, int lo, int hi);
 double parseDouble(const std::string& opt, const std::string& text, double lo, double hi);
 std::pair<int, int> parseSize(const std::string& text);  ///< "WxH" for --size
+/// Refuses a frame larger than this OpenGL implementation renders (Renderer::checkFrameSize):
+/// UsageError naming --size and the limit. Needs a current GL context.
+void checkFrameSize(int width, int height);
 /// "AZIMUTH,ELEVATION" in degrees, validated (for --light).
 DirectionalLight parseLight(const std::string& opt, const std::string& text);
 
@@ -46,7 +53,26 @@ Camera pickCamera(const Scene& scene, const std::string& which,
 /// scene's paths when there is none such.
 const CameraPath& pickPath(const Scene& scene, const std::string& which);
 
-/// Writes text (plus a newline), creating parent folders; UsageError when it cannot.
+/// An output file of a command and the option that names it ("--csv").
+struct OutputFile {
+  std::string option, path;
+};
+/// Output paths, checked before the work starts so that no result is lost at the end:
+/// UsageError (exit 2) naming the option(s) when two outputs (or an output and one of
+/// `inputs`) are the same file, an output is a folder, or its folder cannot be created or
+/// takes no new file (a probe file is created and removed). Creates missing folders.
+void checkOutputs(const std::vector<OutputFile>& outputs,
+                  const std::vector<OutputFile>& inputs = {});
+/// A folder that will receive outputs (compare --out-dir): created, and probed as above.
+void checkOutputFolder(const std::string& option, const std::string& folder);
+
+/// Writes `path` atomically: `write` fills a temporary file in the same folder (same
+/// extension), which is then renamed into place; an existing non-regular file (/dev/null,
+/// /dev/stdout) is written in place. `write` returns an error or nothing. Any failure
+/// throws std::runtime_error (exit 1) naming `path`; no partial file is left behind.
+void writeAtomically(const std::string& path,
+                     const std::function<std::optional<std::string>(const std::string&)>& write);
+/// Text (plus a newline) and PNG through writeAtomically (parent folders are created).
 void writeText(const std::string& path, const std::string& text);
 void writePng(const std::string& path, const ImageRGBA8& img);
 

@@ -63,6 +63,7 @@ int runSingle(Args& a) {
   if (sceneName.empty()) throw UsageError("--scene: missing (which scene)");
   if (technique.empty()) throw UsageError("--technique: missing (which technique)");
   if (jsonPath.empty()) throw UsageError("--json: missing (where to write the frames)");
+  checkOutputs({{"--json", jsonPath}}, {{"--scene", sceneName}});
 
   ConfigSpec spec;
   spec.techniqueId = technique;
@@ -89,6 +90,7 @@ int runSingle(Args& a) {
   int referenceEvaluations = 0;
   {
     gl::EglContext ctx;
+    checkFrameSize(width, height);
     std::vector<std::unique_ptr<ConfigRunner>> runners;
     runners.push_back(std::make_unique<ConfigRunner>(spec, scene, light));
     std::unique_ptr<ReferenceCache> reference;
@@ -169,6 +171,11 @@ int cmdStability(Args& a) {
     else
       throw UsageError("unknown option '" + o +
                        "' (stability --suite options: see shadowlab-cli --help)");
+  }
+  checkOutputs({{"--json", jsonPath}}, {{"--suite", suite}});
+  if (size) {  // refused before any case runs
+    gl::EglContext ctx;
+    checkFrameSize(size->first, size->second);
   }
   return runSuite(suite, framesScale, size, onlyCases, onlyTechniques, jsonPath);
 }

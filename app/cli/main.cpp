@@ -182,7 +182,10 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
 
 int cmdRender(Args& a) {
   RenderConfig cfg = parseRender(a, 1, true);
+  checkOutputs({{"--out", cfg.out}, {"--metrics", cfg.metrics}, {"--error-image", cfg.errorImage}},
+               {{"--scene", cfg.scene}});
   sl::gl::EglContext ctx;
+  checkFrameSize(cfg.width, cfg.height);
   sl::Renderer r;
   configure(r, cfg);
   sl::Renderer::ErrorResult err;
@@ -204,8 +207,9 @@ int cmdRender(Args& a) {
 int cmdCompare(Args& a) {
   RenderConfig base = parseRender(a, 1, false);
   if (base.out.empty()) base.out = "shadowlab-out";
-  fs::create_directories(base.out);
+  checkOutputFolder("--out-dir", base.out);
   sl::gl::EglContext ctx;
+  checkFrameSize(base.width, base.height);
   sl::Renderer r;
   json summary = json::array();
   std::printf("%-14s %10s %12s %10s %10s %10s\n", "technique", "total ms", "texels", "error %",

@@ -69,6 +69,7 @@ struct RendererState {
   ParamSet rendererParams{rendererParamDecls()};
   Camera camera;
   DirectionalLight light;
+  Renderer::FrameSizeLimit maxFrame;  ///< the context's limits, queried once
   FrameStats stats;
   Publication publication;
   bool publishing = false;
@@ -184,6 +185,7 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(debugCallback, s_.get());
   }
+  s_->maxFrame = maxFrameSize();
   s_->timer = std::make_unique<gl::GpuTimer>();
   s_->gbufferProgram = gl::Program(s_->shaders, {"common/gbuffer",
                                                  {{GL_VERTEX_SHADER, "common/gbuffer.vert"},
@@ -213,6 +215,41 @@ std::string Renderer::glDescription() const {
     return std::string(p ? p : "?");
   };
   return str(GL_RENDERER) + " | " + str(GL_VERSION);
+}
+
+Renderer::FrameSizeLimit Renderer::maxFrameSize() {
+  FrameSizeLimit lim{1 << 30, 1 << 30, "", ""};
+  auto apply = [](GLenum e, const char* name, int& side, std::string& limit) {
+    GLint v = 0;
+    glGetIntegerv(e, &v);
+    if (v > 0 && v < side) side = v, limit = name;
+  };
+  apply(GL_MAX_TEXTURE_SIZE, "GL_MAX_TEXTURE_SIZE", lim.width, lim.widthLimit);
+  apply(GL_MAX_TEXTURE_SIZE, "GL_MAX_TEXTURE_SIZE", lim.height, lim.heightLimit);
+  apply(GL_MAX_RENDERBUFFER_SIZE, "GL_MAX_RENDERBUFFER_SIZE", lim.width, lim.widthLimit);
+  apply(GL_MAX_RENDERBUFFER_SIZE, "GL_MAX_RENDERBUFFER_SIZE", lim.height, lim.heightLimit);
+  apply(GL_MAX_FRAMEBUFFER_WIDTH, "GL_MAX_FRAMEBUFFER_WIDTH", lim.width, lim.widthLimit);
+  apply(GL_MAX_FRAMEBUFFER_HEIGHT, "GL_MAX_FRAMEBUFFER_HEIGHT", lim.height, lim.heightLimit);
+  return lim;
+}
+
+std::optional<std::string> Renderer::checkFrameSize(int width, int height) {
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  const FrameSizeLimit lim = maxFrameSize();
+  if (width > lim.width)
+    return size + " is wider than this OpenGL implementation renders (" + lim.widthLimit + " " +
+           std::to_string(lim.width) + ")";
+  if (height > lim.height)
+    return size + " is taller than this OpenGL implementation renders (" + lim.heightLimit + " " +
+           std::to_string(lim.height) + ")";
+  // Within the constants but maybe not allocatable (llvmpipe caps one texture's bytes): ask.
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+  GLint proxyWidth = 0;
+  glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &proxyWidth);
+  if (proxyWidth == 0)
+    return size + " is larger than this OpenGL implementation allocates (a " + size +
+           " RGBA32F G-buffer target is refused by GL_PROXY_TEXTURE_2D)";
+  return std::nullopt;
 }
 
 void Renderer::setScene(std::shared_ptr<const Scene> scene) {
@@ -294,9 +331,11 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     }
     return why;
   };
-  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+  if (width <= 0 || height <= 0 || width > s.maxFrame.width || height > s.maxFrame.height)
     return neutral("frame size " + std::to_string(width) + "x" + std::to_string(height) +
-                   " is not drawable (need 1..16384 per side)");
+                   " is not drawable (need 1.." + std::to_string(s.maxFrame.width) + " x 1.." +
+                   std::to_string(s.maxFrame.height) + ": " + s.maxFrame.widthLimit + ", " +
+                   s.maxFrame.heightLimit + ")");
   if (!s.scene || !s.sceneGpu) return neutral("no scene loaded");
   if (auto err = s.camera.validate()) return neutral(*err);
   if (auto err = s.light.validate()) return neutral(*err);

@@ -102,6 +102,19 @@ class Renderer {
   /// GL_VENDOR / GL_RENDERER / GL_VERSION of the context.
   std::string glDescription() const;
 
+  /// The largest frame the current context renders: per side the smallest of
+  /// GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE and GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT.
+  struct FrameSizeLimit {
+    int width = 0, height = 0;  ///< pixels
+    /// The GL constant behind each, e.g. "GL_MAX_TEXTURE_SIZE".
+    std::string widthLimit, heightLimit;
+  };
+  static FrameSizeLimit maxFrameSize();
+  /// An error naming the limit when a width x height frame exceeds maxFrameSize() or the
+  /// implementation cannot allocate the G-buffer's widest target (RGBA32F) at that size
+  /// (asked with a GL_PROXY_TEXTURE_2D, before anything is allocated). Needs a current context.
+  static std::optional<std::string> checkFrameSize(int width, int height);
+
   void setScene(std::shared_ptr<const Scene> scene);
   const std::shared_ptr<const Scene>& scene() const;
 

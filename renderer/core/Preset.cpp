@@ -1,58 +1,105 @@
 #include "core/Preset.h"
 
-#include <fstream>
-
 #include <nlohmann/json.hpp>
+
+#include "algo/Params.h"
+#include "core/JsonInput.h"
+#include "core/Renderer.h"
 
 namespace sl {
 
 namespace {
-glm::vec3 vec3From(const nlohmann::json& j) {
-  if (!j.is_array() || j.size() != 3) throw std::runtime_error("expected [x, y, z]");
-  return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
+
+using nlohmann::json;
+
+glm::vec3 vec3From(const JsonReader& r, const json& j, const std::string& path) {
+  if (!j.is_array() || j.size() != 3) r.expected(j, path, "[x, y, z] in metres");
+  return {float(r.number(j[0], jsonPath(path, 0))), float(r.number(j[1], jsonPath(path, 1))),
+          float(r.number(j[2], jsonPath(path, 2)))};
 }
+
+std::string paramText(const json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "on" : "off";
+  return v.dump();
+}
+
+Preset parsePreset(const JsonReader& r, const json& j) {
+  r.onlyKeys(j, "", {"title", "explanation", "scene", "technique", "params", "camera", "light"});
+  Preset p;
+  p.title = r.string(j, "", "title", "");
+  p.explanation = r.string(j, "", "explanation", "");
+  p.scene = r.string(j, "", "scene", "");
+  p.technique = r.string(j, "", "technique", "");
+  const TechniqueInfo* info = nullptr;
+  if (!p.technique.empty()) {
+    info = Renderer::findTechnique(p.technique);
+    if (!info) {
+      std::string known;
+      for (const TechniqueInfo& t : Renderer::techniques())
+        known += (known.empty() ? "" : ", ") + t.id;
+      r.fail("technique",
+             "unknown technique '" + quoteText(p.technique, 60) + "' (known: " + known + ")");
+    }
+  }
+  if (const json* params = JsonReader::member(j, "params")) {
+    r.requireObject(*params, "params");
+    // With a technique, every key is its parameter (or a shared one) and every value in
+    // range; without one the keys apply to the current technique and are checked there.
+    std::optional<ParamSet> own, shared;
+    if (info) own.emplace(info->params), shared.emplace(rendererParamDecls());
+    for (const auto& [k, v] : params->items()) {
+      const std::string path = jsonPath("params", k);
+      if (!v.is_number() && !v.is_boolean() && !v.is_string())
+        r.expected(v, path, "a number, true/false or a name");
+      const std::string text = paramText(v);
+      if (info) {
+        ParamSet* set = own->has(k) ? &*own : shared->has(k) ? &*shared : nullptr;
+        if (!set)
+          r.fail(path,
+                 "technique '" + p.technique + "' has no parameter '" + quoteText(k, 60) + "'");
+        if (auto e = set->setFromString(k, text))
+          r.fail(path,
+                 quoteText(*e) + (e->find(text) == std::string::npos ? " (got " + quoteJson(v) + ")"
+                                                                     : std::string()));
+      }
+      p.params[k] = text;
+    }
+  }
+  if (const json* c = JsonReader::member(j, "camera")) {
+    r.onlyKeys(*c, "camera", {"position", "target", "up", "fovYDeg", "nearM", "farM"});
+    const json* pos = JsonReader::member(*c, "position");
+    const json* target = JsonReader::member(*c, "target");
+    if (!pos || !target) r.fail("camera", "a camera needs \"position\" and \"target\"");
+    Camera cam;
+    cam.position = vec3From(r, *pos, "camera.position");
+    cam.target = vec3From(r, *target, "camera.target");
+    if (const json* up = JsonReader::member(*c, "up")) cam.up = vec3From(r, *up, "camera.up");
+    cam.fovYDeg = float(r.number(*c, "camera", "fovYDeg", cam.fovYDeg));
+    cam.nearM = float(r.number(*c, "camera", "nearM", cam.nearM));
+    cam.farM = float(r.number(*c, "camera", "farM", cam.farM));
+    if (auto err = cam.validate()) r.fail("camera", *err);
+    p.camera = cam;
+  }
+  if (const json* l = JsonReader::member(j, "light")) {
+    r.onlyKeys(*l, "light", {"azimuthDeg", "elevationDeg"});
+    DirectionalLight light;
+    light.azimuthDeg = float(r.number(*l, "light", "azimuthDeg", light.azimuthDeg));
+    light.elevationDeg = float(r.number(*l, "light", "elevationDeg", light.elevationDeg));
+    if (auto err = light.validate()) r.fail("light", *err);
+    p.light = light;
+  }
+  return p;
+}
+
 }  // namespace
 
 std::optional<Preset> loadPreset(const std::filesystem::path& path, std::string* error) {
-  std::ifstream in(path);
-  if (!in) {
-    if (error) *error = path.string() + ": cannot open preset file";
-    return std::nullopt;
-  }
+  const JsonReader reader(path.string());
   try {
-    nlohmann::json j = nlohmann::json::parse(in);
-    Preset p;
-    p.title = j.value("title", "");
-    p.explanation = j.value("explanation", "");
-    p.scene = j.value("scene", "");
-    p.technique = j.value("technique", "");
-    if (j.contains("params")) {
-      for (auto& [k, v] : j["params"].items())
-        p.params[k] = v.is_string()    ? v.get<std::string>()
-                      : v.is_boolean() ? (v.get<bool>() ? "on" : "off")
-                                       : v.dump();
-    }
-    if (j.contains("camera")) {
-      const auto& c = j["camera"];
-      Camera cam;
-      cam.position = vec3From(c.at("position"));
-      cam.target = vec3From(c.at("target"));
-      cam.fovYDeg = c.value("fovYDeg", cam.fovYDeg);
-      cam.nearM = c.value("nearM", cam.nearM);
-      cam.farM = c.value("farM", cam.farM);
-      if (auto err = cam.validate()) throw std::runtime_error(*err);
-      p.camera = cam;
-    }
-    if (j.contains("light")) {
-      DirectionalLight l;
-      l.azimuthDeg = j["light"].value("azimuthDeg", l.azimuthDeg);
-      l.elevationDeg = j["light"].value("elevationDeg", l.elevationDeg);
-      if (auto err = l.validate()) throw std::runtime_error(*err);
-      p.light = l;
-    }
-    return p;
-  } catch (const std::exception& e) {
-    if (error) *error = path.string() + ": " + e.what();
+    return parsePreset(reader, reader.parseFile());
+  } catch (const JsonInputError& e) {
+    if (error) *error = e.what();
     return std::nullopt;
   }
 }

@@ -1,0 +1,153 @@
+#include "core/JsonInput.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace sl {
+
+using nlohmann::json;
+
+std::string quoteText(std::string_view text, std::size_t maxBytes) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (out.size() >= maxBytes) {
+      // Do not leave half a UTF-8 sequence before the ellipsis.
+      while (!out.empty() && (static_cast<unsigned char>(out.back()) & 0xC0) == 0x80)
+        out.pop_back();
+      if (!out.empty() && static_cast<unsigned char>(out.back()) >= 0xC0) out.pop_back();
+      return out + "... (" + std::to_string(text.size()) + " bytes)";
+    }
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\r')
+      out += "\\r";
+    else if (c == '\t')
+      out += "\\t";
+    else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else
+      out += static_cast<char>(c);
+  }
+  return out;
+}
+
+std::string quoteJson(const json& value, std::size_t maxBytes) {
+  return quoteText(value.dump(-1, ' ', false, json::error_handler_t::replace), maxBytes);
+}
+
+std::string jsonPath(const std::string& parent, std::string_view key) {
+  const std::string k = quoteText(key, 60);
+  return parent.empty() ? k : parent + "." + k;
+}
+
+std::string jsonPath(const std::string& parent, std::size_t index) {
+  return parent + "[" + std::to_string(index) + "]";
+}
+
+json JsonReader::parseFile() const {
+  std::ifstream in(file_, std::ios::binary);
+  if (!in) throw JsonInputError(file_ + ": cannot open");
+  try {
+    return json::parse(in, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error ..."
+    std::string what = e.what();
+    if (auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
+    throw JsonInputError(file_ + ": not valid JSON: " + quoteText(what));
+  } catch (const json::exception& e) {
+    throw JsonInputError(file_ + ": not valid JSON");
+  }
+}
+
+void JsonReader::fail(const std::string& path, const std::string& what) const {
+  throw JsonInputError(file_ + ": " + (path.empty() ? std::string("top level") : path) + ": " +
+                       what);
+}
+
+void JsonReader::expected(const json& v, const std::string& path,
+                          const std::string& expected) const {
+  fail(path, "expected " + expected + ", got " + quoteJson(v));
+}
+
+void JsonReader::requireObject(const json& v, const std::string& path) const {
+  if (!v.is_object()) expected(v, path, "an object {...}");
+}
+
+void JsonReader::requireArray(const json& v, const std::string& path) const {
+  if (!v.is_array()) expected(v, path, "an array [...]");
+}
+
+void JsonReader::onlyKeys(const json& obj, const std::string& path,
+                          std::initializer_list<std::string_view> keys) const {
+  requireObject(obj, path);
+  for (const auto& [k, v] : obj.items()) {
+    bool known = false;
+    for (std::string_view key : keys) known = known || key == k;
+    if (known) continue;
+    std::string list;
+    for (std::string_view key : keys) list += (list.empty() ? "" : ", ") + std::string(key);
+    fail(jsonPath(path, k), "unknown key '" + quoteText(k, 60) + "' (known: " + list + ")");
+  }
+}
+
+std::string JsonReader::string(const json& v, const std::string& path) const {
+  if (!v.is_string()) expected(v, path, "a string");
+  return v.get<std::string>();
+}
+
+double JsonReader::number(const json& v, const std::string& path) const {
+  if (!v.is_number()) expected(v, path, "a number");
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) expected(v, path, "a finite number");
+  return d;
+}
+
+int JsonReader::integer(const json& v, const std::string& path, int lo, int hi) const {
+  const std::string range = std::to_string(lo) + ".." + std::to_string(hi);
+  if (!v.is_number()) expected(v, path, "an integer in " + range);
+  const double d = v.get<double>();
+  if (!std::isfinite(d) || d != std::floor(d) || d < lo || d > hi)
+    expected(v, path, "an integer in " + range);
+  return static_cast<int>(d);
+}
+
+bool JsonReader::boolean(const json& v, const std::string& path) const {
+  if (!v.is_boolean()) expected(v, path, "true or false");
+  return v.get<bool>();
+}
+
+const json* JsonReader::member(const json& obj, std::string_view key) {
+  if (!obj.is_object()) return nullptr;
+  auto it = obj.find(std::string(key));
+  return it == obj.end() ? nullptr : &*it;
+}
+
+std::string JsonReader::string(const json& obj, const std::string& path, std::string_view key,
+                               const std::string& fallback) const {
+  const json* m = member(obj, key);
+  return m ? string(*m, jsonPath(path, key)) : fallback;
+}
+
+double JsonReader::number(const json& obj, const std::string& path, std::string_view key,
+                          double fallback) const {
+  const json* m = member(obj, key);
+  return m ? number(*m, jsonPath(path, key)) : fallback;
+}
+
+int JsonReader::integer(const json& obj, const std::string& path, std::string_view key,
+                        int fallback, int lo, int hi) const {
+  const json* m = member(obj, key);
+  return m ? integer(*m, jsonPath(path, key), lo, hi) : fallback;
+}
+
+bool JsonReader::boolean(const json& obj, const std::string& path, std::string_view key,
+                         bool fallback) const {
+  const json* m = member(obj, key);
+  return m ? boolean(*m, jsonPath(path, key)) : fallback;
+}
+
+}  // namespace sl

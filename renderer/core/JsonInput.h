@@ -1,0 +1,72 @@
+// Reading JSON input files (suites, presets) with messages that name things: every problem
+// is one line "FILE: PATH: what was expected, got VALUE", PATH a JSON path such as
+// `cases[2].techniques[0].set.resolution`, VALUE at most ~200 bytes of the input. No raw
+// library exception text ("[json.exception.type_error.302] ...") reaches the user.
+#pragma once
+
+#include <cstddef>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+namespace sl {
+
+/// A bad JSON input file; what() is one line naming the file and the JSON path.
+struct JsonInputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// One line of at most `maxBytes` bytes (then "..."), control characters escaped.
+std::string quoteText(std::string_view text, std::size_t maxBytes = 200);
+/// The value's compact JSON text, through quoteText.
+std::string quoteJson(const nlohmann::json& value, std::size_t maxBytes = 200);
+/// "parent.key" ("key" when parent is empty); the key quoted to 60 bytes.
+std::string jsonPath(const std::string& parent, std::string_view key);
+/// "parent[i]".
+std::string jsonPath(const std::string& parent, std::size_t index);
+
+/// Typed access to one file's JSON, throwing JsonInputError("FILE: PATH: ...").
+class JsonReader {
+ public:
+  explicit JsonReader(std::string file) : file_(std::move(file)) {}
+  const std::string& file() const { return file_; }
+
+  /// Reads and parses the file (comments allowed); "FILE: not valid JSON at byte N: ...".
+  nlohmann::json parseFile() const;
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const;
+  /// fail(path, "expected " + expected + ", got " + quoteJson(v)).
+  [[noreturn]] void expected(const nlohmann::json& v, const std::string& path,
+                             const std::string& expected) const;
+
+  void requireObject(const nlohmann::json& v, const std::string& path) const;
+  void requireArray(const nlohmann::json& v, const std::string& path) const;
+  /// Every key of the object is one of `keys`; otherwise "unknown key 'k' (known: ...)".
+  void onlyKeys(const nlohmann::json& obj, const std::string& path,
+                std::initializer_list<std::string_view> keys) const;
+
+  std::string string(const nlohmann::json& v, const std::string& path) const;
+  double number(const nlohmann::json& v, const std::string& path) const;  ///< finite
+  int integer(const nlohmann::json& v, const std::string& path, int lo, int hi) const;
+  bool boolean(const nlohmann::json& v, const std::string& path) const;
+
+  /// The member `key` of the object `obj` (at `path`), or nullptr when absent.
+  static const nlohmann::json* member(const nlohmann::json& obj, std::string_view key);
+  /// Optional members with a default.
+  std::string string(const nlohmann::json& obj, const std::string& path, std::string_view key,
+                     const std::string& fallback) const;
+  double number(const nlohmann::json& obj, const std::string& path, std::string_view key,
+                double fallback) const;
+  int integer(const nlohmann::json& obj, const std::string& path, std::string_view key,
+              int fallback, int lo, int hi) const;
+  bool boolean(const nlohmann::json& obj, const std::string& path, std::string_view key,
+               bool fallback) const;
+
+ private:
+  std::string file_;
+};
+
+}  // namespace sl

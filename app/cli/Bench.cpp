@@ -9,12 +9,15 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include "Chart.h"
 #include "Commands.h"
 #include "Measure.h"
+#include "algo/InputFile.h"
 #include "gl/EglContext.h"
 
 namespace sl::cli {
@@ -27,6 +30,14 @@ const char* const kBenchUsage =
     "                           [--chart-y auto|linear|log] [--x ms|bytes]\n";
 
 namespace {
+
+/// Limits on a CSV read by `chart` (bench writes a few KiB): each refused with a message
+/// naming the file, the line and the limit.
+constexpr std::uint64_t kMaxCsvBytes = std::uint64_t(64) << 20;
+constexpr std::size_t kMaxCsvLineBytes = std::size_t(1) << 20;
+constexpr std::size_t kMaxCsvRows = 100000;
+constexpr std::size_t kMaxCsvParamsBytes = 4096;  ///< the params (and technique) cell
+constexpr std::size_t kMaxCsvParams = 64;         ///< KEY=VALUE pairs in one params cell
 
 struct BenchConfig {
   std::string scene;
@@ -170,9 +181,16 @@ ConfigSummary summarise(const std::vector<FrameSample>& frames) {
   s.timingMethod = frames.empty() ? "" : frames.back().timingMethod;
   s.texels = med([](const FrameSample& f) { return f.texels; });
   s.bytes = med([](const FrameSample& f) { return f.bytes; });
-  s.errorPct = med([](const FrameSample& f) { return f.error.errorPct; });
-  s.falseLitPct = med([](const FrameSample& f) { return f.error.falseLitPct; });
-  s.falseShadowPct = med([](const FrameSample& f) { return f.error.falseShadowPct; });
+  // The error is measured only on frames with a covered pixel; none: NaN (an empty cell).
+  auto medMeasured = [&](auto get) {
+    std::vector<double> v;
+    for (const FrameSample& f : frames)
+      if (f.error.covered > 0) v.push_back(double(get(f)));
+    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
+  };
+  s.errorPct = medMeasured([](const FrameSample& f) { return f.error.errorPct; });
+  s.falseLitPct = medMeasured([](const FrameSample& f) { return f.error.falseLitPct; });
+  s.falseShadowPct = medMeasured([](const FrameSample& f) { return f.error.falseShadowPct; });
   s.covered = med([](const FrameSample& f) { return f.error.covered; });
   s.aliasingMean = med([](const FrameSample& f) { return f.aliasing.mean; });
   s.aliasingP95 = med([](const FrameSample& f) { return f.aliasing.p95; });
@@ -198,21 +216,31 @@ struct ChartRow {
 /// Point labels: per technique, the values of the parameters that vary between its rows
 /// (all its parameters when it has one row); the legend names those parameters.
 void writeChart(const std::vector<ChartRow>& rows, ChartSpec spec, const std::string& png) {
+  // Per technique: its row count and, per parameter, whether two rows differ (one pass, so
+  // a CSV of many rows stays linear).
+  struct KeyValues {
+    std::string firstValue;
+    bool differs = false;
+  };
   std::vector<std::string> order;
+  std::map<std::string, std::size_t> rowCount;
+  std::map<std::string, std::map<std::string, KeyValues>> values;
+  for (const ChartRow& r : rows) {
+    if (rowCount[r.technique]++ == 0) order.push_back(r.technique);
+    auto& keys = values[r.technique];
+    for (const auto& [k, v] : r.params) {
+      auto [it, added] = keys.try_emplace(k, KeyValues{v, false});
+      if (!added && it->second.firstValue != v) it->second.differs = true;
+    }
+  }
   std::map<std::string, std::vector<std::string>> varying;
   for (const ChartRow& r : rows) {
-    if (std::find(order.begin(), order.end(), r.technique) == order.end())
-      order.push_back(r.technique);
-    std::vector<const ChartRow*> same;
-    for (const ChartRow& o : rows)
-      if (o.technique == r.technique) same.push_back(&o);
-    for (const auto& [k, v] : r.params) {
-      bool varies = same.size() == 1;
-      for (const ChartRow* o : same)
-        for (const auto& [k2, v2] : o->params) varies = varies || (k2 == k && v2 != v);
-      auto& list = varying[r.technique];
-      if (varies && std::find(list.begin(), list.end(), k) == list.end()) list.push_back(k);
-    }
+    const bool alone = rowCount[r.technique] == 1;
+    auto& list = varying[r.technique];
+    for (const auto& [k, v] : r.params)
+      if ((alone || values[r.technique][k].differs) &&
+          std::find(list.begin(), list.end(), k) == list.end())
+        list.push_back(k);
   }
   std::vector<ChartPoint> points;
   for (const ChartRow& r : rows) {
@@ -293,10 +321,34 @@ int cmdChart(Args& a) {
   if (chartY != "auto" && chartY != "linear" && chartY != "log")
     throw UsageError("--chart-y: expected auto, linear or log, got '" + chartY + "'");
   checkOutputs({{"--chart", png}}, {{"--csv", csvPath}});
-  std::ifstream in(csvPath);
-  if (!in) throw UsageError(csvPath + ": cannot open");
+  // A bench CSV is a few KiB; everything past the limits below is refused, naming the file,
+  // the line and the limit, before it can take unbounded time or memory.
+  std::vector<unsigned char> bytes;
+  try {
+    bytes = readRegularFile(csvPath, kMaxCsvBytes, "kMaxCsvBytes");
+  } catch (const InputFileError& e) {
+    throw UsageError(csvPath + ": " + e.what());
+  }
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  std::size_t pos = 0;
+  int lineNo = 0;
   std::string line;
-  if (!std::getline(in, line)) throw UsageError(csvPath + ": empty");
+  auto at = [&] { return csvPath + ":" + std::to_string(lineNo) + ": "; };
+  // The next line into `line` (without its '\n'); false at the end of the file.
+  auto nextLine = [&] {
+    if (pos >= text.size()) return false;
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    ++lineNo;
+    if (end - pos > kMaxCsvLineBytes)
+      throw UsageError(at() + "line of " + std::to_string(end - pos) +
+                       " bytes, over the limit of " + byteLimitText(kMaxCsvLineBytes) +
+                       " (kMaxCsvLineBytes)");
+    line.assign(text.substr(pos, end - pos));
+    pos = end + 1;
+    return true;
+  };
+  if (!nextLine()) throw UsageError(csvPath + ": empty");
   const std::vector<std::string> header = splitCsvLine(line);
   auto column = [&](const std::string& name) {
     auto it = std::find(header.begin(), header.end(), name);
@@ -313,26 +365,55 @@ int cmdChart(Args& a) {
   auto gl = std::find(header.begin(), header.end(), "gl");
   std::vector<ChartRow> rows;
   std::vector<std::string> first;
-  for (int lineNo = 2; std::getline(in, line); ++lineNo) {
-    if (line.empty()) continue;
+  std::size_t unmeasured = 0;  // rows with an empty error_pct (no covered pixel)
+  while (nextLine()) {
+    if (line.empty() || line == "\r") continue;
+    if (rows.size() >= kMaxCsvRows)
+      throw UsageError(at() + "more than " + std::to_string(kMaxCsvRows) +
+                       " rows: refused (kMaxCsvRows)");
     std::vector<std::string> f = splitCsvLine(line);
     if (f.size() != header.size())
-      throw UsageError(csvPath + ":" + std::to_string(lineNo) + ": " + std::to_string(f.size()) +
-                       " fields, the header has " + std::to_string(header.size()));
+      throw UsageError(at() + std::to_string(f.size()) + " fields, the header has " +
+                       std::to_string(header.size()));
     if (first.empty()) first = f;
     ChartRow r;
     r.technique = f[cTech];
+    if (r.technique.size() > kMaxCsvParamsBytes)
+      throw UsageError(at() + "technique of " + std::to_string(r.technique.size()) +
+                       " bytes, over the limit of " + std::to_string(kMaxCsvParamsBytes) +
+                       " (kMaxCsvParamsBytes)");
+    if (f[cParams].size() > kMaxCsvParamsBytes)
+      throw UsageError(at() + "params of " + std::to_string(f[cParams].size()) +
+                       " bytes, over the limit of " + std::to_string(kMaxCsvParamsBytes) +
+                       " (kMaxCsvParamsBytes)");
     std::istringstream ps(f[cParams]);
     for (std::string kv; ps >> kv;) {
       auto eq = kv.find('=');
-      if (eq != std::string::npos) r.params.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
+      if (eq == std::string::npos) continue;
+      if (r.params.size() >= kMaxCsvParams)
+        throw UsageError(at() + "more than " + std::to_string(kMaxCsvParams) +
+                         " parameters in params: refused (kMaxCsvParams)");
+      r.params.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
     }
-    r.totalMs = parseDouble("total_ms", f[cMs], -1e300, 1e300);
-    r.bytes = parseDouble("bytes", f[cBytes], -1e300, 1e300);
-    r.errorPct = parseDouble("error_pct", f[cErr], -1e300, 1e300);
+    try {
+      r.totalMs = parseDouble("total_ms", f[cMs], -1e300, 1e300);
+      r.bytes = parseDouble("bytes", f[cBytes], -1e300, 1e300);
+      // An empty error cell: bench measured nothing (no covered pixel); not plotted.
+      if (f[cErr].empty()) {
+        ++unmeasured;
+        continue;
+      }
+      r.errorPct = parseDouble("error_pct", f[cErr], -1e300, 1e300);
+    } catch (const UsageError& e) {
+      throw UsageError(at() + e.what());
+    }
     rows.push_back(std::move(r));
   }
-  if (rows.empty()) throw UsageError(csvPath + ": no rows");
+  if (rows.empty())
+    throw UsageError(csvPath + (unmeasured
+                                    ? ": no row has a measured error_pct (" +
+                                          std::to_string(unmeasured) + " without a covered pixel)"
+                                    : std::string(": no rows")));
   ChartSpec spec;
   spec.yScale = chartY;
   spec.x = chartX;
@@ -441,9 +522,14 @@ int cmdBench(Args& a) {
   // The Pareto fronts against time (`pareto`) and against memory (`pareto_bytes`).
   auto frontAgainst = [&](auto cost) {
     std::vector<CostPoint> costs;
-    for (const ConfigSummary& s : sums) costs.push_back({cost(s), s.errorPct});
+    std::vector<std::size_t> index;  // configurations with a measured error
+    for (std::size_t i = 0; i < sums.size(); ++i)
+      if (std::isfinite(sums[i].errorPct)) {
+        costs.push_back({cost(sums[i]), sums[i].errorPct});
+        index.push_back(i);
+      }
     std::vector<bool> on(sums.size(), false);
-    for (std::size_t i : paretoFront(costs)) on[i] = true;
+    for (std::size_t i : paretoFront(costs)) on[index[i]] = true;
     return on;
   };
   const std::vector<bool> frontMs = frontAgainst([](const ConfigSummary& s) { return s.totalMs; });
@@ -481,8 +567,10 @@ int cmdBench(Args& a) {
                         : frontMs[i]                ? "ms"
                         : frontBytes[i]             ? "bytes"
                                                     : "";
-    std::printf("%-34s %9.2f %9.3f %9.3f %9.3f %9.3f %9.4f %9s\n", configs[i].label.c_str(),
-                s.totalMs, s.bytes / (1024.0 * 1024.0), s.errorPct, s.aliasingMean, s.aliasingP95,
+    char error[32] = "n/a";
+    if (std::isfinite(s.errorPct)) std::snprintf(error, sizeof error, "%.3f", s.errorPct);
+    std::printf("%-34s %9.2f %9.3f %9s %9.3f %9.3f %9.4f %9s\n", configs[i].label.c_str(),
+                s.totalMs, s.bytes / (1024.0 * 1024.0), error, s.aliasingMean, s.aliasingP95,
                 s.flickerPct, front);
   }
   std::printf("medians over %d frames (%s, %dx%d, timing %s, %d reference evaluations) -> %s\n",
@@ -492,8 +580,13 @@ int cmdBench(Args& a) {
   if (!cfg.chart.empty()) {
     std::vector<ChartRow> rows;
     for (std::size_t i = 0; i < configs.size(); ++i)
-      rows.push_back({configs[i].techniqueId, configs[i].sets, sums[i].totalMs, sums[i].bytes,
-                      sums[i].errorPct});
+      if (std::isfinite(sums[i].errorPct))  // no covered pixel: nothing to plot
+        rows.push_back({configs[i].techniqueId, configs[i].sets, sums[i].totalMs, sums[i].bytes,
+                        sums[i].errorPct});
+    if (rows.empty())
+      throw std::runtime_error(cfg.chart +
+                               ": not written: no configuration has a measured error (no "
+                               "covered pixel in any frame); the CSV is written");
     ChartSpec spec;
     spec.yScale = cfg.chartY;
     spec.x = cfg.chartX;

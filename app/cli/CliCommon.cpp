@@ -78,6 +78,10 @@ DirectionalLight parseLight(const std::string& opt, const std::string& v) {
 std::shared_ptr<Scene> loadScene(const std::string& nameOrPath) {
   SceneLoadResult r = loadSceneByNameOrPath(nameOrPath);
   if (!r) throw UsageError(r.error);
+  // The loader's notes (a texture that failed to load, a primitive skipped): once per load.
+  const std::string file = r.scene->sourcePath.empty() ? nameOrPath : r.scene->sourcePath;
+  for (const std::string& w : r.scene->warnings)
+    std::fprintf(stderr, "warning: %s: %s\n", file.c_str(), w.c_str());
   return r.scene;
 }
 

@@ -45,6 +45,8 @@ void checkFrameSize(int width, int height);
 /// "AZIMUTH,ELEVATION" in degrees, validated (for --light).
 DirectionalLight parseLight(const std::string& opt, const std::string& text);
 
+/// Loads a scene (UsageError on failure) and prints each of the loader's warnings on
+/// stderr as "warning: FILE: ..." (once per call: load a scene once per command).
 std::shared_ptr<Scene> loadScene(const std::string& nameOrPath);
 /// A camera bookmark by name or index; empty: the first bookmark (or a framing camera).
 Camera pickCamera(const Scene& scene, const std::string& which,

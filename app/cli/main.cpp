@@ -50,12 +50,58 @@ struct RenderConfig {
   int width = 1280, height = 720;
   int frames = 1;
   std::string camera;
+  std::optional<sl::Camera> presetCamera;  ///< a --preset's camera (a later --camera wins)
   std::optional<sl::DirectionalLight> light;
   std::string out, metrics, errorImage;
 };
 
+/// Techniques whose shadow map depends on earlier frames through DA-RTW's rotation (R_k
+/// from the previous frame's IM): a single frame is rtw-backward with R = I.
+bool hasTemporalRotation(const std::string& techniqueId) {
+  return techniqueId == "da-rtw";
+}
+constexpr int kMaxRotationWarmup = 32;
+
+struct Warmup {
+  int frames = 0;         ///< unmeasured frames rendered before the measured ones
+  bool settled = true;    ///< the rotation stopped changing (held, or nothing to rotate by)
+  bool temporal = false;  ///< the technique has a temporal rotation
+};
+
+/// For a technique with a temporal rotation: unmeasured frames (publishing on, to read
+/// the rotation's numbers) until a frame's estimate leaves R unchanged, at most
+/// kMaxRotationWarmup. The measured frames then run without publishing.
+Warmup warmUpRotation(sl::Renderer& r, const RenderConfig& cfg) {
+  Warmup w;
+  if (!hasTemporalRotation(r.techniqueId())) return w;
+  w.temporal = true;
+  w.settled = false;
+  r.setPublishing(true);
+  while (w.frames < kMaxRotationWarmup && !w.settled) {
+    if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) {
+      r.setPublishing(false);
+      throw std::runtime_error(*e);
+    }
+    ++w.frames;
+    const auto& n = r.publication().numbers;
+    auto number = [&n](const char* key) {
+      auto it = n.find(key);
+      return it == n.end() ? std::optional<double>() : std::optional<double>(it->second);
+    };
+    auto valid = number("pca.valid");
+    if (!valid) continue;  // no estimate this frame (the last frame's moments not read yet)
+    // No principal axis (empty or isotropic IM) leaves R as it is; so does a held or
+    // zero step.
+    w.settled = *valid == 0 || number("rotation.held").value_or(0) != 0 ||
+                number("rotation.step_deg").value_or(1) == 0;
+  }
+  r.setPublishing(false);
+  return w;
+}
+
 /// Renders `frames` frames and returns the metrics JSON (medians over frames).
 json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::ErrorResult& err) {
+  const Warmup warm = warmUpRotation(r, cfg);
   std::map<std::string, std::vector<double>> passMs;
   std::vector<std::string> passOrder;
   std::vector<double> totals;
@@ -78,6 +124,8 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   j["params"] = params;
   j["size"] = {cfg.width, cfg.height};
   j["frames"] = cfg.frames;
+  j["warmup_frames"] = warm.frames;
+  if (warm.temporal) j["rotation_settled"] = warm.settled;
   j["timing_method"] = st.timingMethod;
   j["total_ms"] = sl::median(totals);
   json passes = json::array();
@@ -98,15 +146,36 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
                    {"bytes", m.bytes}});
   j["resources"] = res;
   j["covered_pixels"] = err.stats.covered;
-  j["error_pct"] = err.stats.errorPct;
-  j["false_lit_pct"] = err.stats.falseLitPct;
-  j["false_shadow_pct"] = err.stats.falseShadowPct;
+  // No covered pixel: nothing was measured (null, not 0).
+  const bool measured = err.stats.covered > 0;
+  j["error_pct"] = measured ? json(err.stats.errorPct) : json(nullptr);
+  j["false_lit_pct"] = measured ? json(err.stats.falseLitPct) : json(nullptr);
+  j["false_shadow_pct"] = measured ? json(err.stats.falseShadowPct) : json(nullptr);
   j["gl"] = r.glDescription();
   return j;
 }
 
-void configure(sl::Renderer& r, const RenderConfig& cfg) {
-  auto scene = loadScene(cfg.scene);
+/// One line (no newline) about the warm-up in `j`, empty when none ran.
+std::string describeWarmup(const json& j) {
+  if (!j.contains("rotation_settled")) return "";
+  const int n = j["warmup_frames"].get<int>();
+  if (j["rotation_settled"].get<bool>())
+    return j["technique"].get<std::string>() + ": " + std::to_string(n) +
+           " unmeasured warm-up frame(s) until the rotation settled";
+  return "note: " + j["technique"].get<std::string>() + ": the rotation still changed after " +
+         std::to_string(n) + " unmeasured warm-up frames; measured with the rotation so far";
+}
+
+/// "error 0.123% (false lit ..., false shadow ...)" or "error n/a (no covered pixel)".
+std::string describeError(const sl::ShadowErrorStats& e) {
+  if (e.covered == 0) return "error n/a (no covered pixel)";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "error %.3f%% (false lit %.3f%%, false shadow %.3f%%)", e.errorPct,
+                e.falseLitPct, e.falseShadowPct);
+  return buf;
+}
+
+void configure(sl::Renderer& r, const RenderConfig& cfg, const std::shared_ptr<sl::Scene>& scene) {
   r.setScene(scene);
   if (auto e = r.setTechnique(cfg.technique)) throw UsageError("--technique: " + *e);
   for (const std::string& kv : cfg.sets) {
@@ -116,7 +185,7 @@ void configure(sl::Renderer& r, const RenderConfig& cfg) {
     sl::ParamSet& set = r.rendererParams().has(key) ? r.rendererParams() : r.params();
     if (auto e = set.assign(kv)) throw UsageError("--set: " + *e);
   }
-  r.setCamera(pickCamera(*scene, cfg.camera));
+  r.setCamera(cfg.presetCamera ? *cfg.presetCamera : pickCamera(*scene, cfg.camera));
   if (cfg.light) r.setLight(*cfg.light);
 }
 
@@ -154,9 +223,10 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
       std::tie(cfg.width, cfg.height) = parseSize(a.take(i, o));
     else if (o == "--frames")
       cfg.frames = parseInt(o, a.take(i, o), 1, 100000);
-    else if (o == "--camera")
+    else if (o == "--camera") {
       cfg.camera = a.take(i, o);
-    else if (o == "--out" || o == "--out-dir")
+      cfg.presetCamera.reset();
+    } else if (o == "--out" || o == "--out-dir")
       cfg.out = a.take(i, o);
     else if (o == "--metrics")
       cfg.metrics = a.take(i, o);
@@ -172,6 +242,10 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
       if (!p->technique.empty()) cfg.technique = p->technique;
       for (const auto& [k, v] : p->params) cfg.sets.push_back(k + "=" + v);
       if (p->light) cfg.light = p->light;
+      if (p->camera) {
+        cfg.presetCamera = p->camera;
+        cfg.camera.clear();
+      }
     } else {
       throw UsageError("unknown option '" + o + "'");
     }
@@ -187,7 +261,7 @@ int cmdRender(Args& a) {
   sl::gl::EglContext ctx;
   checkFrameSize(cfg.width, cfg.height);
   sl::Renderer r;
-  configure(r, cfg);
+  configure(r, cfg, loadScene(cfg.scene));
   sl::Renderer::ErrorResult err;
   json j = renderAndMeasure(r, cfg, err);
   writePng(cfg.out, err.frame.color);
@@ -195,12 +269,12 @@ int cmdRender(Args& a) {
   if (!cfg.errorImage.empty())
     writePng(cfg.errorImage,
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
-  std::printf(
-      "%s on %s: %.2f ms (%s), %llu texels, error %.3f%% (false lit %.3f%%, false shadow "
-      "%.3f%%) -> %s\n",
-      r.techniqueId().c_str(), r.scene()->name.c_str(), j["total_ms"].get<double>(),
-      r.stats().timingMethod.c_str(), (unsigned long long)r.stats().memory.texels(),
-      err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct, cfg.out.c_str());
+  if (std::string w = describeWarmup(j); !w.empty())
+    std::fprintf(w.rfind("note:", 0) == 0 ? stderr : stdout, "%s\n", w.c_str());
+  std::printf("%s on %s: %.2f ms (%s), %llu texels, %s -> %s\n", r.techniqueId().c_str(),
+              r.scene()->name.c_str(), j["total_ms"].get<double>(), r.stats().timingMethod.c_str(),
+              (unsigned long long)r.stats().memory.texels(), describeError(err.stats).c_str(),
+              cfg.out.c_str());
   return 0;
 }
 
@@ -211,6 +285,7 @@ int cmdCompare(Args& a) {
   sl::gl::EglContext ctx;
   checkFrameSize(base.width, base.height);
   sl::Renderer r;
+  const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
   json summary = json::array();
   std::printf("%-14s %10s %12s %10s %10s %10s\n", "technique", "total ms", "texels", "error %",
               "false lit", "false shd");
@@ -218,7 +293,7 @@ int cmdCompare(Args& a) {
     RenderConfig cfg = base;
     cfg.technique = t.id;
     cfg.frames = std::max(cfg.frames, 3);
-    configure(r, cfg);
+    configure(r, cfg, scene);
     sl::Renderer::ErrorResult err;
     json j = renderAndMeasure(r, cfg, err);
     std::string stem = (fs::path(base.out) / t.id).string();
@@ -227,9 +302,15 @@ int cmdCompare(Args& a) {
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
     writeText(stem + ".json", j.dump(2));
     summary.push_back(j);
-    std::printf("%-14s %10.2f %12llu %10.3f %10.3f %10.3f\n", t.id.c_str(),
-                j["total_ms"].get<double>(), (unsigned long long)j["texels"].get<uint64_t>(),
-                err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct);
+    if (err.stats.covered == 0)
+      std::printf("%-14s %10.2f %12llu n/a (no covered pixel)\n", t.id.c_str(),
+                  j["total_ms"].get<double>(), (unsigned long long)j["texels"].get<uint64_t>());
+    else
+      std::printf("%-14s %10.2f %12llu %10.3f %10.3f %10.3f\n", t.id.c_str(),
+                  j["total_ms"].get<double>(), (unsigned long long)j["texels"].get<uint64_t>(),
+                  err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct);
+    if (std::string w = describeWarmup(j); !w.empty() && w.rfind("note:", 0) == 0)
+      std::fprintf(stderr, "%s\n", w.c_str());
   }
   writeText((fs::path(base.out) / "summary.json").string(), summary.dump(2));
   std::printf(

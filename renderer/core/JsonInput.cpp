@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <vector>
+
+#include "algo/InputFile.h"
 
 namespace sl {
 
@@ -49,10 +51,22 @@ std::string jsonPath(const std::string& parent, std::size_t index) {
 }
 
 json JsonReader::parseFile() const {
-  std::ifstream in(file_, std::ios::binary);
-  if (!in) throw JsonInputError(file_ + ": cannot open");
+  std::vector<unsigned char> bytes;
   try {
-    return json::parse(in, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    bytes = readRegularFile(file_, kMaxJsonInputBytes, "kMaxJsonInputBytes");
+  } catch (const InputFileError& e) {
+    throw JsonInputError(file_ + ": " + e.what());
+  }
+  // nlohmann's parser recurses once per level: refuse deep nesting before it starts.
+  const std::size_t deep = jsonDepthExcess(
+      {reinterpret_cast<const char*>(bytes.data()), bytes.size()}, kMaxJsonInputDepth, true);
+  if (deep != std::string_view::npos)
+    throw JsonInputError(file_ + ": nested deeper than " + std::to_string(kMaxJsonInputDepth) +
+                         " levels (at byte " + std::to_string(deep) +
+                         "): refused (kMaxJsonInputDepth)");
+  try {
+    return json::parse(bytes.begin(), bytes.end(), nullptr, /*allow_exceptions=*/true,
+                       /*ignore_comments=*/true);
   } catch (const json::parse_error& e) {
     // "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error ..."
     std::string what = e.what();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,11 @@
 #include <nlohmann/json.hpp>
 
 namespace sl {
+
+/// Limits on a JSON input file (a preset or suite is a few KiB): larger or deeper files are
+/// refused before parsing, with a message naming the limit.
+inline constexpr std::uint64_t kMaxJsonInputBytes = std::uint64_t(16) << 20;
+inline constexpr int kMaxJsonInputDepth = 64;
 
 /// A bad JSON input file; what() is one line naming the file and the JSON path.
 struct JsonInputError : std::runtime_error {
@@ -35,6 +41,8 @@ class JsonReader {
   const std::string& file() const { return file_; }
 
   /// Reads and parses the file (comments allowed); "FILE: not valid JSON at byte N: ...".
+  /// Only a regular file of at most kMaxJsonInputBytes, nested at most kMaxJsonInputDepth
+  /// levels, is parsed ("FILE: is a FIFO, not a regular file: refused ...").
   nlohmann::json parseFile() const;
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const;

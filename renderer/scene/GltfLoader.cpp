@@ -3,10 +3,11 @@
 // camera bookmarks and camera paths. Spec: https://registry.khronos.org/glTF/specs/2.0/
 #include "GltfLoader.h"
 
+#include "algo/InputFile.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -16,10 +17,6 @@
 #include <optional>
 #include <set>
 #include <string_view>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -77,10 +74,6 @@ std::string quoteInput(const std::string& s) {
   for (char& c : out)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
   return "'" + out + (s.size() > kMaxQuotedBytes ? "...'" : "'");
-}
-
-std::string mebibytes(std::uint64_t bytes) {
-  return std::to_string(bytes >> 20) + " MiB";
 }
 
 /// Newlines and runs of blanks collapsed so an error stays on one line.
@@ -1145,84 +1138,24 @@ class Flattener {
 // ---------------------------------------------------------------------------------------
 // Files
 
-/// Closes a POSIX file descriptor on scope exit.
-struct FdCloser {
-  int fd;
-  ~FdCloser() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
-const char* fileKind(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
-/// The whole of a regular file of at most kMaxFileBytes. Devices, FIFOs and sockets are
-/// refused before anything is read: the file is opened non-blocking (a FIFO cannot hang the
-/// open) and checked with fstat on the open descriptor (no race with a swapped path).
-/// `what` prefixes every message ("" for the scene file, whose name loadGltf() adds).
+/// The whole of a regular file of at most kMaxFileBytes (sl::readRegularFile: devices, FIFOs
+/// and sockets are refused before anything is read). `what` prefixes every message ("" for
+/// the scene file, whose name loadGltf() adds).
 std::vector<unsigned char> readRegularFile(const fs::path& path, const std::string& what) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0) {
-    int e = errno;
-    if (e == ENOENT || e == ENOTDIR) fail(what + "file not found");
-    fail(what + "cannot be opened for reading: " + std::strerror(e));
+  try {
+    return sl::readRegularFile(path, kMaxFileBytes, "kMaxFileBytes");
+  } catch (const InputFileError& e) {
+    fail(what + e.what());
   }
-  FdCloser closer{fd};
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) fail(what + "cannot be inspected: " + std::strerror(errno));
-  if (S_ISDIR(st.st_mode)) fail(what + "is a directory, not a glTF file");
-  if (!S_ISREG(st.st_mode))
-    fail(what + "is " + fileKind(st.st_mode) +
-         ", not a regular file: refused (only regular files are read)");
-  const std::uint64_t size = std::uint64_t(st.st_size);
-  if (size > kMaxFileBytes)
-    fail(what + "is " + std::to_string(size) + " bytes, over the limit of " +
-         mebibytes(kMaxFileBytes) + " per file (kMaxFileBytes)");
-  std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) fail(what + "read error: " + std::strerror(errno));
-    if (n == 0) break;  // shrank while being read
-    done += std::size_t(n);
-  }
-  bytes.resize(done);
-  return bytes;
 }
 
-/// Refuses JSON nested deeper than kMaxJsonDepth, before any recursive parser sees it. One
-/// pass over the bytes with no recursion; brackets inside strings (escapes included) do not
-/// count. Malformed JSON is left for the parser to describe.
+/// Refuses JSON nested deeper than kMaxJsonDepth, before any recursive parser sees it.
 void checkJsonDepth(const unsigned char* bytes, std::size_t size, const std::string& what) {
-  int depth = 0;
-  bool inString = false;
-  for (std::size_t i = 0; i < size; ++i) {
-    const unsigned char c = bytes[i];
-    if (inString) {
-      if (c == '\\') {
-        ++i;  // the escaped character cannot end the string
-      } else if (c == '"') {
-        inString = false;
-      }
-      continue;
-    }
-    if (c == '"') {
-      inString = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > kMaxJsonDepth)
-        fail(what + "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (at byte " +
-             std::to_string(i) + "): refused (kMaxJsonDepth)");
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
-    }
-  }
+  const std::size_t at =
+      jsonDepthExcess({reinterpret_cast<const char*>(bytes), size}, kMaxJsonDepth);
+  if (at != std::string_view::npos)
+    fail(what + "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (at byte " +
+         std::to_string(at) + "): refused (kMaxJsonDepth)");
 }
 
 /// Why an external (non-data:) URI is refused, or "" if it is a relative path that stays

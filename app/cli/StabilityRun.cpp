@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 using nlohmann::json;
 
@@ -39,6 +40,7 @@ constexpr double kRotationEpsDeg = 1e-6;  ///< smaller steps are float noise, no
 StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, int warmup) {
   StabilitySummary s;
   std::vector<double> err, fl, fs, cov, am, ap, ax, flick, ms;
+  int referenceFrames = 0, measuredFrames = 0;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const FrameSample& f = frames[k].sample;
     s.hasRotation = s.hasRotation || f.hasRotation;
@@ -56,10 +58,14 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
     }
     if (f.maskChange) s.maxMaskChangedPct = std::max(s.maxMaskChangedPct, f.maskChange->pct);
     if (f.hasReference) {
+      ++referenceFrames;
+      cov.push_back(double(f.error.covered));
+    }
+    if (f.hasReference && f.error.covered > 0) {  // no covered pixel: nothing measured
+      ++measuredFrames;
       err.push_back(f.error.errorPct);
       fl.push_back(f.error.falseLitPct);
       fs.push_back(f.error.falseShadowPct);
-      cov.push_back(double(f.error.covered));
     }
     am.push_back(f.aliasing.mean);
     ap.push_back(f.aliasing.p95);
@@ -70,9 +76,15 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
     s.glErrors += int(f.glErrors.size());
     s.nonFiniteNumbers += int(f.nonFiniteNumbers.size());
   }
-  s.errorPct = median(err);
-  s.falseLitPct = median(fl);
-  s.falseShadowPct = median(fs);
+  if (referenceFrames > 0 && measuredFrames == 0) {
+    // Compared with the reference, but no frame had a covered pixel: not measured (NaN,
+    // null in JSON, "n/a" in text), not a perfect 0.
+    s.errorPct = s.falseLitPct = s.falseShadowPct = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    s.errorPct = median(err);
+    s.falseLitPct = median(fl);
+    s.falseShadowPct = median(fs);
+  }
   s.covered = median(cov);
   s.aliasingMean = median(am);
   s.aliasingP95 = median(ap);
@@ -87,7 +99,9 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
 json summaryJson(const StabilitySummary& s) {
   json j = json::object();
   for (const auto& [k, v] : s.metrics()) {
-    if (v == std::floor(v) && std::abs(v) < 1e15)
+    if (!std::isfinite(v))
+      j[k] = nullptr;  // not measured (an error metric without a covered pixel)
+    else if (v == std::floor(v) && std::abs(v) < 1e15)
       j[k] = static_cast<long long>(v);  // counts (and round values) as integers
     else
       j[k] = v;
@@ -126,7 +140,7 @@ json frameJson(std::size_t k, const StabilityFrame& fr) {
             {"mask_changed_pixels", s.maskChange ? s.maskChange->changed : 0},
             {"total_ms", s.totalMs}};
   if (s.hasReference) {
-    j["error_pct"] = s.error.errorPct;
+    j["error_pct"] = s.error.covered > 0 ? json(s.error.errorPct) : json(nullptr);
     j["flicker_pct"] = s.flicker ? s.flicker->pct : 0.0;
   }
   if (!s.renderError.empty()) j["render_error"] = s.renderError;

@@ -40,13 +40,19 @@ struct StabilitySummary {
   int maskChangeFrames = 0;
   double maxMaskChangedPct = 0.0;
   int lastMaskChangeFrame = -1;
-  double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
+  /// NaN (not measured) when compared with the reference but no frame had a covered pixel.
+  double errorPct = 0, falseLitPct = 0, falseShadowPct = 0;
+  double covered = 0;
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
   double flickerPct = 0, flickerPctMean = 0, flickerPctMax = 0;
   double totalMs = 0;
   int renderErrors = 0, glErrors = 0, nonFiniteNumbers = 0;
   bool hasRotation = false;
 
+  /// The metrics that are NaN when nothing was measured (no covered pixel).
+  static bool isErrorMetric(const std::string& name) {
+    return name == "error_pct" || name == "false_lit_pct" || name == "false_shadow_pct";
+  }
   /// The metrics by name (the names expectations use).
   std::map<std::string, double> metrics() const {
     return {{"frames", framesCounted},

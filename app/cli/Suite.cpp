@@ -16,6 +16,7 @@
 #include "StabilityRun.h"
 #include "core/JsonInput.h"
 #include "gl/EglContext.h"
+#include "scene/GltfLoader.h"
 
 using nlohmann::json;
 
@@ -71,6 +72,7 @@ struct SuiteCase {
   std::string path;
   int frames = 30, warmup = 0;
   int width = 320, height = 180;
+  std::string sizeWhere = "size";  ///< where the size came from: "size", "cases[i].size", "--size"
   std::vector<SuiteTechnique> techniques;
   std::vector<Expectation> expect;
 };
@@ -86,7 +88,25 @@ bool compare(double a, const std::string& op, double b) {
   return a >= b;
 }
 
-constexpr int kMaxSize = 16384, kMaxFrames = 1000000;
+// The real limit on a size is the GL implementation's (checked once a context exists).
+constexpr int kMaxSize = 1 << 16, kMaxFrames = 1000000;
+
+/// Whether a case's "scene" names something the loader finds (loadSceneByNameOrPath: a
+/// built-in name, or a path); an error naming what was looked for, or nothing.
+std::optional<std::string> findScene(const std::string& name) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const bool looksLikePath =
+      name.find('/') != std::string::npos || name.find('\\') != std::string::npos ||
+      fs::path(name).extension() == ".gltf" || fs::path(name).extension() == ".glb";
+  if (!looksLikePath)
+    for (const char* ext : {".gltf", ".glb"})
+      if (fs::is_regular_file(builtinSceneDir() / (name + ext), ec)) return std::nullopt;
+  if (fs::exists(name, ec)) return std::nullopt;
+  if (looksLikePath) return "no file '" + quoteText(name, 120) + "'";
+  return "unknown scene '" + quoteText(name, 60) +
+         "' (built-in scenes: " + joined(builtinSceneNames()) + "; or a path to a .gltf/.glb file)";
+}
 
 std::pair<int, int> sizeOf(const JsonReader& r, const json& s, const std::string& path) {
   if (!s.is_array() || s.size() != 2) r.expected(s, path, "[width, height]");
@@ -282,6 +302,7 @@ std::vector<SuiteCase> parseSuite(const JsonReader& r, const json& root, double 
     sc.what = r.string(c, where, "what", "");
     sc.sceneName = r.string(c, where, "scene", "");
     if (sc.sceneName.empty()) r.fail(where, "missing \"scene\"");
+    if (auto e = findScene(sc.sceneName)) r.fail(jsonPath(where, "scene"), *e);
     if (const json* cam = JsonReader::member(c, "camera")) {
       if (cam->is_string())
         sc.cameraName = cam->get<std::string>();
@@ -301,9 +322,14 @@ std::vector<SuiteCase> parseSuite(const JsonReader& r, const json& root, double 
     const int frames = r.integer(c, where, "frames", 30, 1, kMaxFrames);
     sc.frames = std::max(sc.warmup + 2, int(std::lround(frames * framesScale)));
     std::tie(sc.width, sc.height) = defSize;
-    if (const json* s = JsonReader::member(c, "size"))
-      std::tie(sc.width, sc.height) = sizeOf(r, *s, jsonPath(where, "size"));
-    if (sizeOverride) std::tie(sc.width, sc.height) = *sizeOverride;
+    if (const json* s = JsonReader::member(c, "size")) {
+      sc.sizeWhere = jsonPath(where, "size");
+      std::tie(sc.width, sc.height) = sizeOf(r, *s, sc.sizeWhere);
+    }
+    if (sizeOverride) {
+      std::tie(sc.width, sc.height) = *sizeOverride;
+      sc.sizeWhere = "--size";
+    }
     const json* techniques = JsonReader::member(c, "techniques");
     if (!techniques || !techniques->is_array() || techniques->empty())
       r.fail(jsonPath(where, "techniques"), "expected a non-empty array of techniques");
@@ -434,8 +460,10 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       continue;
     }
     const StabilitySummary& s = byLabel.at(t.spec.label);
-    std::snprintf(line, sizeof line, "   %-30s %8.3f %8.3f %9.4f %9.4f %8d %9.4f %8d %8.1f\n",
-                  t.spec.label.c_str(), s.errorPct, s.aliasingP95, s.flickerPct, s.flickerPctMax,
+    char error[32] = "n/a";  // no covered pixel: not measured
+    if (std::isfinite(s.errorPct)) std::snprintf(error, sizeof error, "%.3f", s.errorPct);
+    std::snprintf(line, sizeof line, "   %-30s %8s %8.3f %9.4f %9.4f %8d %9.4f %8d %8.1f\n",
+                  t.spec.label.c_str(), error, s.aliasingP95, s.flickerPct, s.flickerPctMax,
                   s.maskChangeFrames, s.maxMaskChangedPct, s.rotationChanges, s.totalMs);
     report << line;
     json tj = summaryJson(s);
@@ -460,9 +488,13 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
 
   // Expectations.
   json expJson = json::array();
-  auto skipReason = [&](const std::string& label) -> std::string {
+  // Why `label`'s `metric` is not checked: not run, or an error metric not measured.
+  auto skipReason = [&](const std::string& label, const std::string& metric) -> std::string {
     for (const SuiteTechnique& t : sc.techniques)
       if (t.spec.label == label && !t.skipped.empty()) return t.skipped;
+    if (StabilitySummary::isErrorMetric(metric) &&
+        !std::isfinite(byLabel.at(label).metrics().at(metric)))
+      return "not measured (no covered pixel)";
     return "";
   };
   for (const Expectation& e : sc.expect) {
@@ -470,8 +502,8 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
     r.why = e.why;
     if (e.pair) {
       r.text = e.better + " " + e.metric + " " + e.op + " " + e.worse + " " + e.metric;
-      std::string sk = skipReason(e.better);
-      if (sk.empty()) sk = skipReason(e.worse);
+      std::string sk = skipReason(e.better, e.metric);
+      if (sk.empty()) sk = skipReason(e.worse, e.metric);
       if (!sk.empty()) {
         r.status = "skipped";
         r.detail = sk;
@@ -501,9 +533,10 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       std::string got, failedLabels, skippedText, skippedLabels;
       int checked = 0;
       for (const std::string& l : labels) {
-        if (std::string sk = skipReason(l); !sk.empty()) {
-          skippedText += (skippedText.empty() ? "" : "; ") + sk;
-          skippedLabels += (skippedLabels.empty() ? "" : ", ") + l;
+        if (std::string sk = skipReason(l, e.metric); !sk.empty()) {
+          if (skippedText.find(sk) == std::string::npos)
+            skippedText += (skippedText.empty() ? "" : "; ") + sk;
+          skippedLabels += (skippedLabels.empty() ? "" : ", ") + l + " (" + sk + ")";
           continue;
         }
         ++checked;
@@ -519,7 +552,7 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
         r.detail =
             "got " + got +
             (failedLabels.empty() || e.technique != "*" ? "" : " (failing: " + failedLabels + ")") +
-            (skippedLabels.empty() ? "" : "; not run: " + skippedLabels);
+            (skippedLabels.empty() ? "" : "; not checked: " + skippedLabels);
       }
       expJson.push_back({{"technique", e.technique},
                          {"metric", e.metric},
@@ -604,6 +637,13 @@ int runSuite(const std::string& file, double framesScale,
   save();
 
   gl::EglContext ctx;
+  // Every selected case's frame size against this GL implementation, before any case runs.
+  for (const SuiteCase& c : cases) {
+    if (!selected(c)) continue;
+    if (auto e = Renderer::checkFrameSize(c.width, c.height))
+      throw UsageError(c.sizeWhere == "--size" ? "--size: " + *e
+                                               : file + ": " + c.sizeWhere + ": " + *e);
+  }
   ProgressBar progress("suite", totalSteps);
   std::string running, runningName;
   try {

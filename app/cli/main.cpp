@@ -99,9 +99,13 @@ Warmup warmUpRotation(sl::Renderer& r, const RenderConfig& cfg) {
   return w;
 }
 
-/// Renders `frames` frames and returns the metrics JSON (medians over frames).
-json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::ErrorResult& err) {
+/// Renders `frames` frames and returns the metrics JSON (medians over frames). With
+/// `showProgress` and more than one frame, a progress bar on stderr (`--frames 100000`).
+json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::ErrorResult& err,
+                      bool showProgress = false) {
   const Warmup warm = warmUpRotation(r, cfg);
+  std::optional<ProgressBar> progress;
+  if (showProgress && cfg.frames > 1) progress.emplace("render", std::size_t(cfg.frames));
   std::map<std::string, std::vector<double>> passMs;
   std::vector<std::string> passOrder;
   std::vector<double> totals;
@@ -112,7 +116,10 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
       passMs[p.name].push_back(p.ms);
     }
     totals.push_back(r.stats().totalMs);
+    if (progress)
+      progress->step("frame " + std::to_string(f + 1) + "/" + std::to_string(cfg.frames), true);
   }
+  if (progress) progress->finish();
   for (const std::string& e : r.takeGlErrors()) throw std::runtime_error("GL error: " + e);
   err = r.computeError();
   const sl::FrameStats& st = r.stats();
@@ -263,7 +270,7 @@ int cmdRender(Args& a) {
   sl::Renderer r;
   configure(r, cfg, loadScene(cfg.scene));
   sl::Renderer::ErrorResult err;
-  json j = renderAndMeasure(r, cfg, err);
+  json j = renderAndMeasure(r, cfg, err, /*showProgress=*/true);
   writePng(cfg.out, err.frame.color);
   if (!cfg.metrics.empty()) writeText(cfg.metrics, j.dump(2));
   if (!cfg.errorImage.empty())

@@ -24,6 +24,7 @@
 #include <QtCharts/QLegend>
 
 #include "ChartKit.h"
+#include "MessageText.h"
 #include "ViewportWidget.h"
 
 namespace sl::ui {
@@ -210,7 +211,7 @@ bool ChartsPanel::startSweep() {
   QString text = sweepEdit_->text().trimmed();
   if (text.isEmpty()) text = defaultSweepText();
   if (QString error = parseSweep(text); !error.isEmpty()) {
-    status_->setText(tr("Sweep: %1").arg(error));
+    status_->setText(shownMessage(tr("Sweep: %1").arg(error)));
     configs_.clear();
     redrawChart();
     return false;
@@ -309,7 +310,7 @@ void ChartsPanel::tick() {
   }
   viewport_->doneCurrent();
   if (!problem.isEmpty()) {
-    status_->setText(tr("%1: %2").arg(config.label, problem));
+    status_->setText(shownMessage(tr("%1: %2").arg(config.label, problem)));
     configIndex_ = int(configs_.size());
     finish(false);
     return;

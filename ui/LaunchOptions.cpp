@@ -38,7 +38,8 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       QStringLiteral("N|NAME|FILE"));
   QCommandLineOption selfTest(
       QStringLiteral("self-test"),
-      QStringLiteral("Run a GUI self-test (params, bad-gltf=FILE, teaching[=DIR], charts[=DIR])."),
+      QStringLiteral(
+          "Run a GUI self-test (params, bad-gltf=FILE[,FILE...], teaching[=DIR], charts[=DIR])."),
       QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
   parser.addOptions({scene, technique, set, lesson, grab, grabAfter, selfTest});
@@ -79,10 +80,10 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       o.selfTest != QLatin1String("charts")) {
     out.exitCode = 2;
     out.messageIsError = true;
-    out.message =
-        QStringLiteral(
-            "unknown --self-test '%1' (known: params, bad-gltf=FILE, teaching[=DIR], charts[=DIR])")
-            .arg(parser.value(selfTest));
+    out.message = QStringLiteral(
+                      "unknown --self-test '%1' (known: params, bad-gltf=FILE[,FILE...], "
+                      "teaching[=DIR], charts[=DIR])")
+                      .arg(parser.value(selfTest));
     return out;
   }
   bool ok = false;

@@ -12,6 +12,7 @@
 #include <QUrl>
 #include <QVBoxLayout>
 
+#include "MessageText.h"
 #include "scene/GltfLoader.h"
 
 namespace sl::ui {
@@ -140,7 +141,7 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count) {
   title_->setText(tr("Lesson %1 of %2: %3")
                       .arg(index + 1)
                       .arg(count)
-                      .arg(QString::fromStdString(lesson->preset.title)));
+                      .arg(shownMessage(QString::fromStdString(lesson->preset.title))));
   // Explanations are plain text; blank lines separate paragraphs.
   QString html;
   for (const QString& para :
@@ -159,7 +160,8 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count) {
 }
 
 void LessonPanel::setNote(const QString& note) {
-  note_->setText(note);
+  note_->setText(shownMessage(note));
+  note_->setToolTip(messageDetails(note));
   note_->setVisible(!note.isEmpty());
 }
 

@@ -35,6 +35,7 @@
 #include "ImportancePanel.h"
 #include "LaunchOptions.h"
 #include "LessonPanel.h"
+#include "MessageText.h"
 #include "MomentPanel.h"
 #include "ParamPanel.h"
 #include "ShadowMapPanel.h"
@@ -158,8 +159,7 @@ void MainWindow::createActions() {
   QAction* resetView = view->addAction(tr("&Reset view"), this, [this] { viewport_->resetView(); });
   resetView->setShortcut(Qt::Key_Home);
   QAction* error = view->addAction(tr("Compute &error now"), this, [this] {
-    if (!viewport_->computeErrorNow())
-      statusBar()->showMessage(tr("No frame to measure yet."), kStatusMessageMs);
+    if (!viewport_->computeErrorNow()) showStatus(tr("No frame to measure yet."));
   });
   error->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
   continuousAction_ = view->addAction(tr("Render &continuously"));
@@ -391,6 +391,9 @@ void MainWindow::createStatusBar() {
   errorLabel_->setText(tr("error —"));
   glLabel_->setText(tr("GL —"));
   statusBar()->showMessage(tr("Starting the renderer…"));
+  connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& shown) {
+    if (shown.isEmpty()) statusBar()->setToolTip(QString());
+  });
 }
 
 void MainWindow::applyDefaultLayout() {
@@ -493,9 +496,9 @@ bool MainWindow::loadScene(const QString& nameOrPath) {
   const sl::Scene& scene = *viewport_->scene();
   sceneLabel_->setText(
       tr("%1 · %2 triangles")
-          .arg(QString::fromStdString(scene.name))
+          .arg(shownMessage(QString::fromStdString(scene.name)))
           .arg(QLocale::c().toString(static_cast<qulonglong>(scene.triangleCount()))));
-  sceneLabel_->setToolTip(QString::fromStdString(scene.sourcePath));
+  sceneLabel_->setToolTip(shownMessage(QString::fromStdString(scene.sourcePath)));
   if (!result.scene->warnings.empty())
     info(tr("Scene loaded with %1 warning(s) (see stderr): %2")
              .arg(result.scene->warnings.size())
@@ -564,7 +567,7 @@ void MainWindow::refreshBookmarks() {
     for (std::size_t i = 0; i < scene->cameras.size(); ++i) {
       const std::string& name = scene->cameras[i].name;
       bookmarkCombo_->addItem(
-          name.empty() ? tr("Camera %1").arg(i + 1) : QString::fromStdString(name),
+          name.empty() ? tr("Camera %1").arg(i + 1) : shownMessage(QString::fromStdString(name)),
           static_cast<int>(i));
     }
   }
@@ -713,7 +716,7 @@ void MainWindow::updateLightFromControls() {
 void MainWindow::updateTitle() {
   QString title = QStringLiteral("ShadowLab");
   if (const auto& scene = viewport_->scene())
-    title += QStringLiteral(" — ") + QString::fromStdString(scene->name);
+    title += QStringLiteral(" — ") + shownMessage(QString::fromStdString(scene->name));
   if (const sl::TechniqueInfo* t = sl::Renderer::findTechnique(viewport_->techniqueId()))
     title += QStringLiteral(" — ") + QString::fromStdString(t->name);
   setWindowTitle(title);
@@ -732,21 +735,38 @@ void MainWindow::saveScreenshot() {
       tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
   if (viewport_->grabView().save(path))
-    statusBar()->showMessage(tr("Saved %1").arg(path), kStatusMessageMs);
+    showStatus(tr("Saved %1").arg(path));
   else
     report(tr("cannot write %1").arg(path), tr("Save viewport image"));
 }
 
 void MainWindow::info(const QString& message) {
   if (lastProblemClock_.isValid() && lastProblemClock_.elapsed() < kStatusMessageMs) return;
-  statusBar()->showMessage(message, kStatusMessageMs);
+  showStatus(message);
+}
+
+void MainWindow::showStatus(const QString& message, int timeoutMs) {
+  statusBar()->showMessage(shownMessage(message), timeoutMs);
+  statusBar()->setToolTip(messageDetails(message));  // cleared with the message (createStatusBar)
 }
 
 void MainWindow::report(const QString& message, const QString& dialogTitle) {
   printErr(message);
-  statusBar()->showMessage(message, kStatusMessageMs);
+  showStatus(message);
   lastProblemClock_.start();
-  if (dialogs_ && !dialogTitle.isEmpty()) QMessageBox::warning(this, dialogTitle, message);
+  if (!dialogs_ || dialogTitle.isEmpty()) return;
+  QMessageBox box(QMessageBox::Warning, dialogTitle, shownMessage(message), QMessageBox::Ok, this);
+  box.setTextFormat(Qt::PlainText);  // a file's text is never markup
+  if (box.text() != message) {
+    const QString details = messageDetails(message);
+    box.setDetailedText(
+        details.isEmpty()
+            ? tr("The message is %1 characters long; the whole of it is on the standard error "
+                 "output.")
+                  .arg(message.size())
+            : details);
+  }
+  box.exec();
 }
 
 // --- --grab ------------------------------------------------------------------------------

@@ -159,7 +159,10 @@ class MainWindow : public QMainWindow {
   // Self-tests (MainWindowSelfTest.cpp).
   bool waitForFrames(int frames, int timeoutMs = 30000);
   bool selfTestParams();
-  bool selfTestBadGltf(const QString& path);
+  /// bad-gltf=FILE[,FILE…]: each broken file opened through File > Open, then dropped on
+  /// the window; each time the error is shown (elided) and the scene stays.
+  bool selfTestBadGltf(const QString& paths);
+  void selfTestBadGltfOpen(const QString& path, bool drop);
   /// Pass stepping, overlays, split view and lessons; PNGs of each step into `dir`.
   bool selfTestTeaching(const QString& dir);
   /// A tiny Charts sweep, its PNG into `dir`, and a click on a point switching the view.
@@ -172,6 +175,9 @@ class MainWindow : public QMainWindow {
   void report(const QString& message, const QString& dialogTitle = {});
   /// A status-bar note that does not hide a problem reported in the last seconds.
   void info(const QString& message);
+  /// Shows `message` in the status bar, elided (shownMessage()); its full text as the status
+  /// bar's tooltip while it is shown, when short enough (messageDetails()).
+  void showStatus(const QString& message, int timeoutMs = 10000);
 
   const bool interactive_;
   ViewportWidget* viewport_ = nullptr;

@@ -478,12 +478,12 @@ void MainWindow::showPass() {
     step.dock->raise();
   }
   updateBanner();
-  statusBar()->showMessage(tr("Frame %1, pass %2 of %3: %4")
-                               .arg(pub.frameIndex)
-                               .arg(passIndex_ + 1)
-                               .arg(passSteps_.size())
-                               .arg(step.title),
-                           kStatusMs);
+  showStatus(tr("Frame %1, pass %2 of %3: %4")
+                 .arg(pub.frameIndex)
+                 .arg(passIndex_ + 1)
+                 .arg(passSteps_.size())
+                 .arg(step.title),
+             kStatusMs);
 }
 
 void MainWindow::stopPassStepping() {
@@ -580,7 +580,7 @@ void MainWindow::savePanelImage(QDockWidget* dock) {
       this, tr("Save panel image"), QDir::home().filePath(name), tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
   if (dock->grab().toImage().save(path))
-    statusBar()->showMessage(tr("Saved %1").arg(path), kStatusMs);
+    showStatus(tr("Saved %1").arg(path), kStatusMs);
   else
     report(tr("cannot write %1").arg(path), tr("Save panel image"));
 }
@@ -591,7 +591,7 @@ void MainWindow::saveAllImages() {
   if (dir.isEmpty()) return;
   const QStringList failures = writeImages(dir, false);
   if (failures.isEmpty())
-    statusBar()->showMessage(tr("Saved the window and every panel in %1").arg(dir), kStatusMs);
+    showStatus(tr("Saved the window and every panel in %1").arg(dir), kStatusMs);
   else
     report(failures.join(QLatin1Char('\n')), tr("Save images"));
 }

@@ -8,6 +8,7 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
+#include <QDragEnterEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -17,14 +18,17 @@
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
+#include <QUrl>
 
 #include "ChartsPanel.h"
 #include "LessonPanel.h"
 #include "MainWindow.h"
+#include "MessageText.h"
 #include "ParamPanel.h"
 #include "ViewportWidget.h"
 
@@ -431,18 +435,32 @@ bool MainWindow::selfTestTeaching(const QString& dir) {
   return true;
 }
 
-bool MainWindow::selfTestBadGltf(const QString& path) {
-  selfTestCheck(QFileInfo::exists(path), tr("the broken glTF %1 exists").arg(path));
-  if (!QFileInfo::exists(path)) return false;
+bool MainWindow::selfTestBadGltf(const QString& paths) {
+  const QStringList files = paths.split(QLatin1Char(','), Qt::SkipEmptyParts);
+  selfTestCheck(!files.isEmpty(), tr("bad-gltf names at least one file"));
+  for (const QString& path : files) {
+    selfTestCheck(QFileInfo::exists(path), tr("the broken glTF %1 exists").arg(path));
+    if (!QFileInfo::exists(path)) return false;
+    selfTestBadGltfOpen(path, false);
+    selfTestBadGltfOpen(path, true);
+  }
+  return true;
+}
+
+void MainWindow::selfTestBadGltfOpen(const QString& path, bool drop) {
   const std::shared_ptr<const sl::Scene> sceneBefore = viewport_->scene();
   const QString specBefore = sceneSpec_;
   const QString comboBefore = sceneCombo_->currentText();
   const QString titleBefore = windowTitle();
   const QString fileName = QFileInfo(path).fileName();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  const QString how = drop ? tr("dropped") : tr("File > Open");
+  std::printf("---- %s, %s\n", qPrintable(fileName), qPrintable(how));
+  statusBar()->clearMessage();
 
   // Drive the modal dialogs the way a user would: pick the file, read the error, close it.
   bool sawFileDialog = false, sawMessage = false;
-  QString messageText;
+  QString messageText, detailsText;
   QTimer driver;
   driver.setInterval(50);
   int ticks = 0;
@@ -455,28 +473,57 @@ bool MainWindow::selfTestBadGltf(const QString& path) {
     if (auto* dialog = qobject_cast<QFileDialog*>(modal)) {
       sawFileDialog = true;
       // Type the path into the dialog's file name field and press Return.
-      const QString absolute = QFileInfo(path).absoluteFilePath();
       if (auto* edit = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"))) {
         edit->setText(absolute);
         QKeyEvent enter(QEvent::KeyPress, Qt::Key_Return, Qt::NoModifier);
         QApplication::sendEvent(edit, &enter);
       }
-
     } else if (auto* box = qobject_cast<QMessageBox*>(modal)) {
       sawMessage = true;
       messageText = box->text();
+      detailsText = box->detailedText();
       box->accept();
     }
   });
+  QElapsedTimer clock;
+  clock.start();
   driver.start();
-  openAction_->trigger();  // File > Open glTF…: returns once both dialogs are closed
+  if (drop) {
+    // A file dragged from a file manager onto the window: enter, then drop, with its URL.
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(absolute)});
+    const QPoint at = rect().center();
+    QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(this, &enter);
+    selfTestCheck(enter.isAccepted(), tr("dragging %1 over the window is accepted").arg(fileName));
+    QDropEvent dropEvent(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(this, &dropEvent);  // returns once the error dialog is closed
+  } else {
+    openAction_->trigger();  // File > Open glTF…: returns once both dialogs are closed
+    selfTestCheck(sawFileDialog, tr("File > Open glTF… showed the file dialog"));
+  }
   driver.stop();
+  const qint64 ms = clock.elapsed();
 
-  selfTestCheck(sawFileDialog, tr("File > Open glTF… showed the file dialog"));
+  const QString status = statusBar()->currentMessage();
+  auto quoted = [](const QString& text) {  // what this log prints of a shown text
+    return text.size() > 120 ? text.left(120) + QStringLiteral("…") : text;
+  };
   selfTestCheck(sawMessage && messageText.contains(fileName),
-                tr("an error dialog naming the file appeared: \"%1\"").arg(messageText));
-  selfTestCheck(statusBar()->currentMessage().contains(fileName),
-                tr("the status bar names the file: \"%1\"").arg(statusBar()->currentMessage()));
+                tr("an error dialog naming the file appeared: \"%1\"").arg(quoted(messageText)));
+  selfTestCheck(status.contains(fileName),
+                tr("the status bar names the file: \"%1\"").arg(quoted(status)));
+  // Elided (MessageText.h): a hostile file's text cannot freeze the window.
+  const int limit = kShownMessageChars + 1;
+  selfTestCheck(messageText.size() <= limit && status.size() <= limit &&
+                    detailsText.size() <= kMessageDetailsChars + 200,
+                tr("the dialog and the status bar show at most %1 characters (%2, %3; details %4)")
+                    .arg(limit)
+                    .arg(messageText.size())
+                    .arg(status.size())
+                    .arg(detailsText.size()));
+  selfTestCheck(ms < 20000,
+                tr("%1 the file, read the error and closed it in %2 ms").arg(how).arg(ms));
   selfTestCheck(viewport_->scene() == sceneBefore && sceneSpec_ == specBefore,
                 tr("the previous scene (%1) is still shown").arg(specBefore));
   selfTestCheck(sceneCombo_->currentText() == comboBefore && windowTitle() == titleBefore,
@@ -487,7 +534,6 @@ bool MainWindow::selfTestBadGltf(const QString& path) {
                 tr("the view keeps rendering (frame %1 -> %2)")
                     .arg(frame)
                     .arg(viewport_->renderer()->stats().frameIndex));
-  return true;
 }
 
 }  // namespace sl::ui

@@ -13,6 +13,7 @@
 #include <QWheelEvent>
 
 #include "GlSupport.h"
+#include "MessageText.h"
 
 namespace sl::ui {
 
@@ -406,8 +407,8 @@ std::optional<std::string> ViewportWidget::setSplitTechnique(const std::string& 
 }
 
 void ViewportWidget::setBanner(const QString& title, const QString& text) {
-  overlay_->bannerTitle = title;
-  overlay_->bannerText = text;
+  overlay_->bannerTitle = shownMessage(title);
+  overlay_->bannerText = shownMessage(text);
   overlay_->setVisible(overlay_->hasContent());
   overlay_->raise();
   overlay_->update();

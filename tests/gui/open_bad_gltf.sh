@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Opening a broken glTF from the GUI (File > Open glTF… with Qt's file dialog, driven by
-# shadowlab --self-test bad-gltf=FILE, see ui/MainWindowSelfTest.cpp) shows an error
-# dialog naming the file, and the previous scene stays loaded and keeps rendering.
+# Opening a broken glTF from the GUI — File > Open glTF… with Qt's file dialog, and dropping
+# the file on the window (a QDropEvent with its URL), driven by shadowlab --self-test
+# bad-gltf=FILE,FILE,… (see ui/MainWindowSelfTest.cpp) — shows an error dialog and a status
+# message naming the file, both elided to a sane length (ui/MessageText.h), and the previous
+# scene stays loaded and keeps rendering. Every fixture in tests/data that fails to load, plus
+# a generated one whose 40 MB buffer URI the loader's message may echo.
 # usage: open_bad_gltf.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1
@@ -12,17 +15,48 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-for broken in malformed.gltf truncated.glb; do
-  rc=0
-  timeout 120 "$app" --scene plane-box --technique uniform --self-test "bad-gltf=$data/$broken" \
-    >"$out/$broken.stdout" 2>"$out/$broken.stderr" || rc=$?
-  echo "[$broken]"
-  cat "$out/$broken.stdout"
-  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/$broken.stdout"; then
-    echo "FAIL: self-test bad-gltf with $broken exited with $rc; stderr:"
-    cat "$out/$broken.stderr"
-    exit 1
-  fi
-  grep -qF "$broken" "$out/$broken.stderr" || { echo "FAIL: stderr does not name $broken"; exit 1; }
+# The fixtures that must fail to load (tests/cpu/GltfLoaderTest.cpp checks their messages).
+broken=(malformed.gltf truncated.glb draco-required.gltf bad-index.gltf
+  buffer-out-of-range.gltf nan-position.gltf no-triangles.gltf)
+files=()
+for f in "${broken[@]}"; do
+  [[ -f "$data/$f" ]] || { echo "FAIL: fixture $data/$f is missing"; exit 1; }
+  files+=("$data/$f")
 done
+
+# A buffer whose URI is 40 MB long (a missing file).
+huge=$out/huge-uri.gltf
+{
+  printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"'
+  head -c 40000000 /dev/zero | tr '\0' a
+  printf '.bin"}],"bufferViews":[{"buffer":0,"byteLength":36}],'
+  printf '"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",'
+  printf '"min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],'
+  printf '"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}\n'
+} >"$huge"
+files+=("$huge")
+
+list=$(IFS=,; echo "${files[*]}")
+rc=0
+timeout 120 "$app" --scene plane-box --technique uniform --self-test "bad-gltf=$list" \
+  >"$out/self-test.stdout" 2>"$out/self-test.stderr" || rc=$?
+cat "$out/self-test.stdout"
+echo "(stderr: $(wc -c <"$out/self-test.stderr") bytes)"
+if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/self-test.stdout"; then
+  echo "FAIL: self-test bad-gltf exited with $rc; stderr (first 4000 bytes):"
+  head -c 4000 "$out/self-test.stderr"
+  exit 1
+fi
+for f in "${files[@]}"; do
+  name=$(basename "$f")
+  for how in "File > Open" dropped; do
+    grep -qxF -- "---- $name, $how" "$out/self-test.stdout" ||
+      { echo "FAIL: the self-test did not open $name ($how)"; exit 1; }
+  done
+  [[ $(grep -cF "$name" "$out/self-test.stderr") -ge 2 ]] ||
+    { echo "FAIL: stderr does not name $name twice (menu and drop)"; exit 1; }
+done
+# Passed: do not leave 40 MB (and the loader's 80 MB of echoed stderr) behind.
+rm -f "$huge"
+head -c 65536 "$out/self-test.stderr" >"$out/self-test.stderr.head" && rm "$out/self-test.stderr"
 echo "PASS"

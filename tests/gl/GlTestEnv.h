@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "core/Renderer.h"
 #include "gl/EglContext.h"
@@ -41,6 +42,13 @@ inline std::unique_ptr<Renderer> makeRenderer(const std::string& scene,
   r->setCamera(s->cameras.empty() ? s->defaultCamera() : s->cameras.front().camera);
   EXPECT_FALSE(r->setTechnique(technique));
   return r;
+}
+
+/// The scene's camera bookmark called `name`, or null.
+inline const Camera* bookmark(const Scene& scene, const std::string& name) {
+  for (const CameraBookmark& b : scene.cameras)
+    if (b.name == name) return &b.camera;
+  return nullptr;
 }
 
 inline void expectNoGlErrors(Renderer& r) {

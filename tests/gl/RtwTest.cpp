@@ -273,11 +273,9 @@ TEST(RtwClaims, DaRtwAlignsThePrincipalAxis) {
   for (const char* t : {"rtw-backward", "da-rtw"}) {
     auto r = rtwRenderer("diagonal", t, 512, 512);
     ASSERT_TRUE(r);
-    const auto& cams = r->scene()->cameras;
-    auto it = std::find_if(cams.begin(), cams.end(),
-                           [](const CameraBookmark& b) { return b.name == "row-end"; });
-    ASSERT_NE(it, cams.end());
-    r->setCamera(it->camera);
+    const Camera* rowEnd = test::bookmark(*r->scene(), "row-end");
+    ASSERT_TRUE(rowEnd);
+    r->setCamera(*rowEnd);
     r->setPublishing(true);
     for (int f = 0; f < 4; ++f) ASSERT_FALSE(r->renderFrame(640, 360, 0));
     const Publication& pub = r->publication();

@@ -130,11 +130,9 @@ void checkParity(const Case& k) {
   auto r = test::makeRenderer(k.scene, "rtw-backward");
   ASSERT_TRUE(r);
   if (k.camera) {
-    const auto& cams = r->scene()->cameras;
-    auto it = std::find_if(cams.begin(), cams.end(),
-                           [&](const CameraBookmark& b) { return b.name == k.camera; });
-    ASSERT_NE(it, cams.end()) << "no camera " << k.camera;
-    r->setCamera(it->camera);
+    const Camera* cam = test::bookmark(*r->scene(), k.camera);
+    ASSERT_TRUE(cam) << "no camera " << k.camera;
+    r->setCamera(*cam);
   }
   ParamSet& p = r->params();
   ASSERT_FALSE(p.set("resolution", k.smRes));

@@ -1,6 +1,5 @@
 // The uniform shadow map against the exact Embree reference, and the reference against
 // the analytic shadow of plane-box; plus the golden image of the default scene.
-#include <algorithm>
 #include <cmath>
 
 #include "GlTestEnv.h"
@@ -74,11 +73,9 @@ TEST(Golden, DiagonalRowEndRtw) {
   for (const char* technique : {"rtw-backward", "da-rtw"}) {
     auto r = test::makeRenderer("diagonal", technique);
     ASSERT_TRUE(r);
-    const auto& cams = r->scene()->cameras;
-    auto it = std::find_if(cams.begin(), cams.end(),
-                           [](const CameraBookmark& b) { return b.name == "row-end"; });
-    ASSERT_NE(it, cams.end());
-    r->setCamera(it->camera);
+    const Camera* rowEnd = test::bookmark(*r->scene(), "row-end");
+    ASSERT_TRUE(rowEnd);
+    r->setCamera(*rowEnd);
     ASSERT_FALSE(r->params().set("resolution", 1024));
     for (int f = 0; f < 3; ++f) ASSERT_FALSE(r->renderFrame(480, 270, 0));
     ImageRGBA8 img = r->readback().color;

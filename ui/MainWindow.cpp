@@ -689,7 +689,7 @@ void MainWindow::onErrorComputed(double errorPct) {
 // --- Light, camera, misc -------------------------------------------------------------------
 
 void MainWindow::syncLightControls() {
-  const sl::DirectionalLight& light = viewport_->light();
+  const sl::Light& light = viewport_->light();
   {
     QSignalBlocker a(azimuthSlider_), e(elevationSlider_);
     float az = std::fmod(light.azimuthDeg + 180.0f, 360.0f);
@@ -706,7 +706,7 @@ void MainWindow::showLightValues() {
 }
 
 void MainWindow::updateLightFromControls() {
-  sl::DirectionalLight light = viewport_->light();
+  sl::Light light = viewport_->light();
   light.azimuthDeg = static_cast<float>(azimuthSlider_->value());
   light.elevationDeg = static_cast<float>(elevationSlider_->value());
   viewport_->setLight(light);

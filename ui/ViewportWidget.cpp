@@ -431,7 +431,7 @@ void ViewportWidget::resizeGL(int, int) {
 
 void ViewportWidget::setScene(std::shared_ptr<const sl::Scene> scene) {
   scene_ = std::move(scene);
-  if (scene_ && scene_->sun) light_ = *scene_->sun;
+  if (scene_ && scene_->light) light_ = *scene_->light;
   if (renderer_) {
     makeCurrent();
     renderer_->setScene(scene_);
@@ -482,7 +482,7 @@ void ViewportWidget::resetView() {
   goToBookmark(0);
 }
 
-void ViewportWidget::setLight(const sl::DirectionalLight& light) {
+void ViewportWidget::setLight(const sl::Light& light) {
   light_ = light;
   markViewChanged();
   update();

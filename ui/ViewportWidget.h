@@ -48,8 +48,8 @@ class ViewportWidget : public QOpenGLWidget {
   void goToBookmark(int index);
   void resetView();
 
-  void setLight(const sl::DirectionalLight& light);
-  const sl::DirectionalLight& light() const { return light_; }
+  void setLight(const sl::Light& light);
+  const sl::Light& light() const { return light_; }
 
   /// Renders continuously (for techniques that converge over frames) instead of on demand.
   void setContinuous(bool on);
@@ -151,7 +151,7 @@ class ViewportWidget : public QOpenGLWidget {
   std::shared_ptr<const sl::Scene> scene_;
   std::string techniqueId_;
   sl::Camera camera_;
-  sl::DirectionalLight light_;
+  sl::Light light_;
   bool continuous_ = false;
 
   // What the renderer saw last frame; any difference means "view changed".

@@ -9,6 +9,7 @@
 #include <span>
 #include <stdexcept>
 
+#include "core/LightBinding.h"
 #include "core/SceneGpu.h"
 #include "core/Technique.h"
 #include "gl/Gl.h"
@@ -68,7 +69,7 @@ struct RendererState {
   std::map<std::string, ParamSet, std::less<>> techniqueParams;
   ParamSet rendererParams{rendererParamDecls()};
   Camera camera;
-  DirectionalLight light;
+  Light light;
   Renderer::FrameSizeLimit maxFrame;  ///< the context's limits, queried once
   FrameStats stats;
   Publication publication;
@@ -169,6 +170,13 @@ const TechniqueInfo* Renderer::findTechnique(std::string_view id) {
   return nullptr;
 }
 
+std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightType type) {
+  for (LightType t : info.lights)
+    if (t == type) return std::nullopt;
+  return "technique '" + info.id + "' supports: " + lightTypeList(info.lights) + "; the light is " +
+         "a " + std::string(lightTypeName(type)) + " light";
+}
+
 Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<RendererState>()) {
   if (epoxy_gl_version() < 45 || !epoxy_is_desktop_gl())
     throw std::runtime_error("ShadowLab needs a desktop OpenGL 4.5 core context; got " +
@@ -255,7 +263,7 @@ std::optional<std::string> Renderer::checkFrameSize(int width, int height) {
 void Renderer::setScene(std::shared_ptr<const Scene> scene) {
   s_->sceneGpu = scene ? std::make_unique<SceneGpu>(*scene) : nullptr;
   s_->scene = std::move(scene);
-  if (s_->scene && s_->scene->sun) s_->light = *s_->scene->sun;
+  if (s_->scene && s_->scene->light) s_->light = *s_->scene->light;
   if (s_->technique) s_->technique->resetTemporalState();
 }
 
@@ -301,10 +309,10 @@ void Renderer::setCamera(const Camera& camera) {
 const Camera& Renderer::camera() const {
   return s_->camera;
 }
-void Renderer::setLight(const DirectionalLight& light) {
+void Renderer::setLight(const Light& light) {
   s_->light = light;
 }
-const DirectionalLight& Renderer::light() const {
+const Light& Renderer::light() const {
   return s_->light;
 }
 const FrameStats& Renderer::stats() const {
@@ -339,15 +347,17 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   if (!s.scene || !s.sceneGpu) return neutral("no scene loaded");
   if (auto err = s.camera.validate()) return neutral(*err);
   if (auto err = s.light.validate()) return neutral(*err);
+  if (const TechniqueInfo* info = findTechnique(s.techniqueId))
+    if (auto err = checkLightSupport(*info, s.light.type)) return neutral(*err);
 
   {  // What this frame shows; the error overlay is only drawn for a matching reference.
     const Camera& c = s.camera;
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%p|%s|%u|%d|%d|%g,%g,%g|%g,%g,%g|%g,%g,%g|%g|%g,%g",
+    std::snprintf(buf, sizeof buf, "%p|%s|%u|%d|%d|%g,%g,%g|%g,%g,%g|%g,%g,%g|%g|%s",
                   static_cast<const void*>(s.scene.get()), s.techniqueId.c_str(),
                   params().revision(), width, height, c.position.x, c.position.y, c.position.z,
                   c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg,
-                  s.light.azimuthDeg, s.light.elevationDeg);
+                  s.light.describe().c_str());
     s.frameSignature = buf;
   }
   const auto frameStart = std::chrono::steady_clock::now();
@@ -355,7 +365,6 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   Targets& t = s.targets;
   const float aspect = float(width) / float(height);
   const glm::mat4 view = s.camera.view(), proj = s.camera.projection(aspect);
-  const glm::vec3 towardsLight = s.light.towardsLight();
   ++s.frameIndex;
   s.timer->beginFrame();
   if (s.publishing) {
@@ -389,7 +398,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                    aspect,
                    view,
                    proj,
-                   towardsLight,
+                   s.light,
                    width,
                    height,
                    t.position,
@@ -418,7 +427,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     glBindTextureUnit(1, t.normal.id());
     resolve.set("u_gPosition", 0);
     resolve.set("u_gNormal", 1);
-    resolve.set("u_towardsLight", towardsLight);
+    bindLight(resolve, s.light);
     s.technique->bindLookup(resolve, 2);
     glBindVertexArray(s.emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -438,7 +447,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     c.set("u_gNormal", 1);
     c.set("u_gAlbedo", 2);
     c.set("u_visibility", 3);
-    c.set("u_towardsLight", towardsLight);
+    bindLight(c, s.light);
     c.set("u_ambient", float(s.rendererParams.get("shading.ambient")));
     c.set("u_cameraPos", s.camera.position);
     glBindTextureUnit(4, t.hard.id());
@@ -528,8 +537,7 @@ Renderer::ErrorResult Renderer::computeError() const {
     s_->reference = std::make_shared<ShadowReference>(*s_->scene);
     s_->referenceScene = s_->scene.get();
   }
-  s_->reference->evaluate(res.frame.positions, res.frame.normals, s_->light.towardsLight(),
-                          res.referenceMask);
+  s_->reference->evaluate(res.frame.positions, res.frame.normals, s_->light, res.referenceMask);
   res.stats = compareShadowMasks(res.frame.hardMask, res.referenceMask);
   // Keep it for the error overlay (GL order: bottom row first).
   const Targets& t = s_->targets;

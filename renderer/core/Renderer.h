@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "algo/Camera.h"
+#include "algo/Light.h"
 #include "algo/Params.h"
 #include "core/FrameStats.h"
 #include "metrics/ErrorMetrics.h"
@@ -30,7 +31,12 @@ struct TechniqueInfo {
   std::string name;         ///< "Uniform shadow map"
   std::string description;  ///< one or two sentences, with the source paper
   std::vector<ParamDecl> params;
+  /// The light kinds it renders; renderFrame refuses any other (an error, a neutral frame).
+  std::vector<LightType> lights{LightType::Directional};
 };
+/// An error like "technique 'uniform' supports: directional, spot; the light is a point
+/// light" when `info` does not support `type`, else nothing.
+std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightType type);
 
 /// Parameters shared by every technique (shading, view) — declared once here.
 std::vector<ParamDecl> rendererParamDecls();
@@ -128,12 +134,13 @@ class Renderer {
 
   void setCamera(const Camera& camera);
   const Camera& camera() const;
-  void setLight(const DirectionalLight& light);
-  const DirectionalLight& light() const;
+  void setLight(const Light& light);
+  const Light& light() const;
 
   /// Renders one frame of width x height into `targetFramebuffer` (0 = default).
   /// Returns an error (and renders a neutral frame) when the camera, light or size is
-  /// degenerate; the renderer keeps working.
+  /// degenerate, or the technique does not support the light's kind (checkLightSupport);
+  /// the renderer keeps working.
   std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer);
   const FrameStats& stats() const;
 

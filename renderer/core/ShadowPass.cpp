@@ -35,6 +35,9 @@ DepthLookupState depthLookupState(const LightFit& fit, const ParamSet& params) {
   s.lightViewProj = fit.viewProj;
   s.extentM = fit.extentM;
   s.depthRangeM = fit.depthRangeM > 0.0f ? fit.depthRangeM : 1.0f;
+  s.perspective = fit.perspective;
+  s.nearM = fit.nearM;
+  s.farM = fit.farM;
   s.bias.normalTexels = float(params.get("bias.normal"));
   s.bias.slopeTexels = float(params.get("bias.slope"));
   s.bias.constantM = float(params.get("bias.constant"));
@@ -48,9 +51,12 @@ void bindDepthLookup(const gl::Program& resolve, int unit, const gl::Texture& ma
   resolve.set("u_shadowMap", unit);
   resolve.set("u_pcfRadius", state.pcfRadius);
   resolve.set("u_lightViewProj", state.lightViewProj);
-  resolve.set("u_lightNormalMatrix", lightNormalMatrix(state.lightViewProj));
+  const LightPlaneMatrix plane = lightPlaneMatrix(state.lightViewProj);
+  resolve.set("u_lightNormalMatrix", plane.normal);
+  resolve.set("u_lightPlaneOffset", plane.offset);
   resolve.set("u_lightExtentM", state.extentM);
-  const float depthPerM = 1.0f / state.depthRangeM;
+  const float depthPerM =
+      depthPerMAtUnitW(state.perspective, state.depthRangeM, state.nearM, state.farM);
   resolve.set("u_depthPerM", depthPerM);
   resolve.set("u_biasNormal", state.bias.normalTexels);
   resolve.set("u_biasSlope", state.bias.slopeTexels);

@@ -28,8 +28,10 @@ void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint fra
 /// What the shared depth-map lookup needs besides the map: the light fit and the bias.
 struct DepthLookupState {
   glm::mat4 lightViewProj{1.0f};
-  glm::vec2 extentM{1.0f};  ///< metres per unit of light uv
+  glm::vec2 extentM{1.0f};  ///< metres per unit of light uv, at clip w = 1
   float depthRangeM = 1.0f;
+  bool perspective = false;         ///< a spot's perspective map
+  float nearM = 0.0f, farM = 0.0f;  ///< perspective: the frustum's near and far planes
   ShadowBiasSettings bias;
   int pcfRadius = 0;
 };

@@ -28,7 +28,7 @@ struct FrameContext {
   const Camera& camera;
   float aspect = 1.0f;
   glm::mat4 cameraView{1.0f}, cameraProj{1.0f};
-  glm::vec3 towardsLight{0.0f, 1.0f, 0.0f};
+  const Light& light;         ///< validated, of a kind the technique supports
   int width = 0, height = 0;  ///< camera image size in pixels
   /// Camera G-buffer of this frame (for backward analysis): world position (w = covered)
   /// and world normal, RGBA32F, width x height.

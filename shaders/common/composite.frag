@@ -1,10 +1,11 @@
-// Final shading: albedo lit by the sun (Lambert, shadowed by the technique's filtered
-// visibility) plus a sky ambient; a sky gradient where there is no surface.
+// Final shading: albedo lit by the light (Lambert, shadowed by the technique's filtered
+// visibility, a spot's cone falloff and the range window: common/light.glsl) plus a sky
+// ambient; a sky gradient where there is no surface.
 uniform sampler2D u_gPosition;
 uniform sampler2D u_gNormal;
 uniform sampler2D u_gAlbedo;
 uniform sampler2D u_visibility;
-uniform vec3 u_towardsLight;
+#include "common/light.glsl"
 uniform float u_ambient;
 uniform vec3 u_cameraPos;
 uniform usampler2D u_hard;       // technique's hard mask (1 lit, 0 shadow, 255 empty)
@@ -32,7 +33,7 @@ void main() {
   vec3 N = texelFetch(u_gNormal, px, 0).xyz;
   vec3 albedo = texelFetch(u_gAlbedo, px, 0).rgb;
   float vis = texelFetch(u_visibility, px, 0).r;
-  float ndl = max(dot(N, u_towardsLight), 0.0);
+  float ndl = max(dot(N, towardsLight(P.xyz)), 0.0) * lightFalloff(P.xyz);
   float sky = 0.5 + 0.5 * N.y;
   vec3 light = vec3(1.0, 0.96, 0.88) * ndl * vis + u_ambient * mix(vec3(0.55, 0.5, 0.45), vec3(0.75, 0.85, 1.0), sky);
   vec3 c = albedo * light;

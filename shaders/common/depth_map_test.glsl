@@ -8,8 +8,13 @@
 //   slope term     bias.slope * (|dz/du| * t_u + |dz/dv| * t_v)   (t: local texel in uv),
 //                  at most the depth of a slope of 10 over T
 //   constant       bias.constant metres along the light, in window depth
-// CPU mirror: sl::receiverPlaneDepth / shadowBiasTerms (algo/ShadowBias.h); C++ binding:
-// bindDepthMapLookup (core/ShadowPass.cpp).
+// Orthographic and perspective light matrices alike (clip w = 1 for the former): the
+// receiver's plane is carried through the full 4x4 matrix (a plane stays a plane, window
+// depth stays affine in light uv on it); metres per uv grow with w; window depth per metre
+// falls with w^2 (glm's perspective depth), so both terms convert per pixel.
+// Needs common/light.glsl (towardsLight) included before.
+// CPU mirror: sl::receiverDepthGradient / windowDepthPerM / shadowDepthBias
+// (algo/ShadowBias.h); C++ binding: bindDepthLookup (core/ShadowPass.cpp).
 //
 // The technique's lookup file defines, BEFORE including this file:
 //   vec2 lightToMapUv(vec2 uv)          unwarped light uv -> map uv (identity when unwarped)
@@ -18,15 +23,18 @@
 // and gets shadowLookupCoord / shadowMapSize / shadowHardAt / shadowFilteredAt
 // (the contract of shaders/common/resolve.frag). Nearest texels via texelFetch: metrics see
 // the map's true resolution; PCF averages the hard tests of a (2r+1)^2 neighbourhood.
+#include "common/light.glsl"
+
 uniform sampler2D u_shadowMap;
 uniform int u_pcfRadius;
 uniform mat4 u_lightViewProj;
-uniform mat3 u_lightNormalMatrix;  // transpose(inverse(mat3(u_lightViewProj)))
-uniform vec2 u_lightExtentM;       // metres per unit of light u and v
+uniform mat3 u_lightNormalMatrix;  // plane of N in clip space (sl::lightPlaneMatrix().normal)
+uniform vec3 u_lightPlaneOffset;   // times -dot(N, P) (sl::lightPlaneMatrix().offset; 0 ortho)
+uniform vec2 u_lightExtentM;       // metres per unit of light u and v, at clip w = 1
 uniform float u_biasNormal;        // texels (local)
 uniform float u_biasSlope;         // texels (local)
-uniform float u_biasConstant;      // window depth units
-uniform float u_depthPerM;         // window depth per metre along the light
+uniform float u_biasConstant;      // window depth units, at clip w = 1
+uniform float u_depthPerM;         // window depth per metre along the light, at clip w = 1
 
 // The receiver of this pixel, set by shadowLookupCoord (one pixel per invocation).
 vec2 g_receiverUv;   // unwarped light uv (after the normal offset)
@@ -37,31 +45,37 @@ float g_receiverBias;
 vec2 shadowMapSize() { return vec2(textureSize(u_shadowMap, 0)); }
 
 // Depth gradient of the plane through P with world normal N, per unit of light uv: the
-// normal in clip space m = u_lightNormalMatrix * N; dz/du = -m.x / m.z (the 0.5 factors of
-// uv and window depth cancel). A plane seen edge-on by the light (|m.z| tiny) gets 0: it is
-// shadowed by the N.L test of the resolve pass, or covered by the slope term's clamp.
-vec2 receiverDepthGradient(vec3 N) {
-  vec3 m = u_lightNormalMatrix * N;
+// plane in clip space m = u_lightNormalMatrix * N - u_lightPlaneOffset * dot(N, P);
+// dz/du = -m.x / m.z (the 0.5 factors of uv and window depth cancel). A plane seen edge-on
+// by the light (|m.z| tiny) gets 0: it is shadowed by the N.L test of the resolve pass, or
+// covered by the slope term's clamp. C++: sl::receiverDepthGradient.
+vec2 receiverDepthGradient(vec3 N, vec3 P) {
+  vec3 m = u_lightNormalMatrix * N - u_lightPlaneOffset * dot(N, P);
   if (!(abs(m.z) > 1e-4 * length(m))) return vec2(0.0);
   return -m.xy / m.z;
 }
 
 vec3 shadowLookupCoord(vec3 P, vec3 N) {
-  vec2 uv0 = (u_lightViewProj * vec4(P, 1.0)).xy * 0.5 + 0.5;  // orthographic: w = 1
+  vec4 c0 = u_lightViewProj * vec4(P, 1.0);  // orthographic: w = 1
+  // Behind a perspective light (w <= 0) nothing is lit anyway (lightIlluminates): keep the
+  // arithmetic finite.
+  float w = c0.w > 1e-6 ? c0.w : 1e-6;
+  vec2 uv0 = c0.xy / w * 0.5 + 0.5;
   vec2 t0 = localTexelLightUv(uv0);
-  float texelM = max(t0.x * u_lightExtentM.x, t0.y * u_lightExtentM.y);
-  float cosL = clamp(dot(N, u_towardsLight), -1.0, 1.0);
+  float texelM = max(t0.x * u_lightExtentM.x, t0.y * u_lightExtentM.y) * w;
+  float cosL = clamp(dot(N, towardsLight(P)), -1.0, 1.0);
   float sinL = sqrt(max(1.0 - cosL * cosL, 0.0));
-  vec3 c = (u_lightViewProj * vec4(P + N * (u_biasNormal * texelM * sinL), 1.0)).xyz;
-  vec3 uvz = c * 0.5 + 0.5;
+  vec4 c = u_lightViewProj * vec4(P + N * (u_biasNormal * texelM * sinL), 1.0);
+  vec3 uvz = c.xyz / (c.w > 1e-6 ? c.w : 1e-6) * 0.5 + 0.5;
   g_receiverUv = uvz.xy;
   g_receiverZ = uvz.z;
-  g_receiverDz = receiverDepthGradient(N);
+  g_receiverDz = receiverDepthGradient(N, P);
   vec2 t = t0;  // the offset moves the point by under a texel: same local texel size
+  float perW2 = 1.0 / (w * w);  // window depth per metre falls with w^2 (sl::windowDepthPerM)
   // Capped at a slope of 10 (84 degrees from the light) so grazing receivers do not leak.
   float slope = min(abs(g_receiverDz.x) * t.x + abs(g_receiverDz.y) * t.y,
-                    10.0 * texelM * u_depthPerM);
-  g_receiverBias = u_biasSlope * slope + u_biasConstant;
+                    10.0 * texelM * (u_depthPerM * perW2));
+  g_receiverBias = u_biasSlope * slope + u_biasConstant * perW2;
   return vec3(lightToMapUv(uvz.xy), uvz.z);
 }
 

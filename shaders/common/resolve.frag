@@ -1,7 +1,8 @@
 // Resolve pass: per camera pixel, the technique's shadow test. Writes the hard mask
 // (1 lit, 0 shadowed, 255 no surface) that the metrics compare with the Embree reference,
 // and the filtered visibility used for shading. Surfaces facing away from the light are
-// shadowed, exactly as in ShadowReference::isLit (C++).
+// shadowed, exactly as in ShadowReference::isLit (C++), and so is what lies outside a
+// spot's cone or a light's range (common/light.glsl).
 // A technique's lookup ("@lookup") defines:
 //   vec3 shadowLookupCoord(vec3 P, vec3 N)  final map uv (through any warp) and depth
 //   vec2 shadowMapSize()                    texels
@@ -9,7 +10,7 @@
 // so the (possibly warped) coordinate is computed once per pixel.
 uniform sampler2D u_gPosition;
 uniform sampler2D u_gNormal;
-uniform vec3 u_towardsLight;
+#include "common/light.glsl"
 
 #include "@lookup"
 
@@ -35,7 +36,7 @@ void main() {
     o_filtered = 1.0;
     return;
   }
-  if (dot(N, u_towardsLight) <= 0.0) {
+  if (dot(N, towardsLight(P.xyz)) <= 0.0 || lightIlluminates(P.xyz) < 0.5) {
     o_hard = 0u;
     o_filtered = 0.0;
     return;

@@ -211,8 +211,8 @@ TEST(GltfLoader, SunCamerasAndStepAndLinearPaths) {
   auto s = loadOk("camera-path.gltf");
   ASSERT_TRUE(s);
   // The sun's node is turned -60 degrees about x: its +z, towards the light, is (0, sin, cos).
-  ASSERT_TRUE(s->sun);
-  glm::vec3 l = s->sun->towardsLight();
+  ASSERT_TRUE(s->light);
+  glm::vec3 l = s->light->directionalTowards();
   EXPECT_NEAR(l.x, 0.0f, 1e-5f);
   EXPECT_NEAR(l.y, std::sin(glm::radians(60.0f)), 1e-5f);
   EXPECT_NEAR(l.z, std::cos(glm::radians(60.0f)), 1e-5f);
@@ -262,7 +262,7 @@ TEST(GltfLoader, BinaryGlbLoads) {
   EXPECT_NEAR(glm::length(s->bounds.min - glm::vec3(-0.5f, 0.0f, -0.5f)), 0.0f, 1e-6f);
   EXPECT_NEAR(glm::length(s->bounds.max - glm::vec3(0.5f, 1.0f, 0.5f)), 0.0f, 1e-6f);
   expectWindingAgreesWithNormals(s->primitives[0]);
-  EXPECT_FALSE(s->sun);
+  EXPECT_FALSE(s->light);
   EXPECT_TRUE(anyWarningContains(*s, "no directional light"));
 }
 

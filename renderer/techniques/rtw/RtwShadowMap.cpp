@@ -7,6 +7,7 @@
 #include "algo/Focus.h"
 #include "algo/rtw/Moments.h"
 #include "algo/rtw/Warp.h"
+#include "core/LightBinding.h"
 #include "core/SceneGpu.h"
 #include "core/ShadowPass.h"
 
@@ -208,7 +209,10 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
         "Backward RTW with the light frustum rotated by PCA of the importance map "
         "(Tokuyoshi et al. 2014, seed 000), with a vibration threshold.";
   }
-  return {id, name, desc, p};
+  // Directional only: the warp is built over one orthographic light image; a spot's
+  // perspective map (or a point light's cube) would need the importance and warp defined in
+  // its projective space, which is not implemented.
+  return {id, name, desc + " Directional light only.", p, {LightType::Directional}};
 }
 
 RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
@@ -404,7 +408,7 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     prog.set("u_lightViewProj", lightViewProj);
     prog.set("u_cameraPos", ctx.camera.position);
     prog.set("u_cameraForward", ctx.camera.forward());
-    prog.set("u_towardsLight", ctx.towardsLight);
+    bindLight(prog, ctx.light);
     prog.set("u_gPosition", 1);
     prog.set("u_prevHard", 3);
   };
@@ -540,8 +544,8 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
     auto pass = ctx.timer.scope("focus");
     FocusSettings fs;
     if (config_.rotation) fs.rotation = rtw::lightViewRotation(rotation_);
-    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
-                                       fs, fit))
+    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                       ctx.light.directionalTowards(), fs, fit))
       throw std::runtime_error(*err);
   }
   lookup_ = depthLookupState(fit, p);

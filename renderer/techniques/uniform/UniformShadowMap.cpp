@@ -9,10 +9,13 @@
 namespace sl {
 
 TechniqueInfo UniformShadowMap::info() {
-  return {"uniform", "Uniform shadow map",
+  return {"uniform",
+          "Uniform shadow map",
           "Standard shadow map (Williams 1978): one orthographic depth map from the light, "
-          "focused on what the camera sees. The baseline.",
-          shadowMapParamDecls(2048)};
+          "focused on what the camera sees (directional); for a spot, one perspective map "
+          "covering its cone. The baseline.",
+          shadowMapParamDecls(2048),
+          {LightType::Directional, LightType::Spot}};
 }
 
 UniformShadowMap::UniformShadowMap(const gl::ShaderLibrary& lib)
@@ -22,9 +25,12 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
   auto pass = ctx.timer.scope("shadow map");
   const int res = ctx.params.getInt("resolution");
   LightFit fit;
-  if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
-                                     FocusSettings{}, fit))
+  if (ctx.light.type == LightType::Spot) {
+    if (auto err = fitSpotLight(ctx.light, ctx.scene.bounds, fit)) throw std::runtime_error(*err);
+  } else if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                            ctx.light.directionalTowards(), FocusSettings{}, fit)) {
     throw std::runtime_error(*err);
+  }
   lookup_ = depthLookupState(fit, ctx.params);
 
   if (!shadowMap_ || shadowMap_.width() != res) {

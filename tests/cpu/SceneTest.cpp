@@ -116,6 +116,34 @@ TEST(Scene, PlaneBoxGeometryAndSun) {
   EXPECT_NEAR(dist, 8.0f, 0.05f);  // looks down at the shadow's centre from 8 m
 }
 
+TEST(Scene, SpotBoxAndPointBoxCarryTheirPositionalLights) {
+  for (std::string name : {"spot-box", "point-box"}) {
+    SCOPED_TRACE(name);
+    auto s = loadBuiltin(name);
+    ASSERT_TRUE(s);
+    EXPECT_TRUE(s->warnings.empty()) << s->warnings.front();
+    ASSERT_TRUE(s->light);
+    EXPECT_FALSE(s->light->validate());
+    EXPECT_GE(s->cameras.size(), 2u);
+    EXPECT_LT(s->triangleCount(), 100u);
+    EXPECT_NEAR(s->bounds.min.y, 0.0f, 1e-6f);
+    EXPECT_GT(s->light->positionM.y, s->bounds.max.y);  // above everything
+    EXPECT_TRUE(s->light->illuminates({0, 0, 0}));
+  }
+  auto spot = loadBuiltin("spot-box");
+  ASSERT_TRUE(spot && spot->light);
+  EXPECT_EQ(spot->light->type, LightType::Spot);
+  EXPECT_NEAR(spot->light->outerConeDeg, 40.0f, 1e-3f);
+  EXPECT_NEAR(spot->light->innerConeDeg, 30.0f, 1e-3f);
+  EXPECT_NEAR(spot->light->rangeM, 20.0f, 1e-5f);
+  EXPECT_NEAR(glm::length(spot->light->positionM - glm::vec3(1.5f, 5.0f, 2.0f)), 0.0f, 1e-5f);
+  EXPECT_FALSE(spot->light->illuminates({6, 0, 6}));  // a ground corner outside the cone
+  auto point = loadBuiltin("point-box");
+  ASSERT_TRUE(point && point->light);
+  EXPECT_EQ(point->light->type, LightType::Point);
+  EXPECT_NEAR(point->light->rangeM, 15.0f, 1e-5f);
+}
+
 TEST(Scene, PlaneBoxAnalyticShadowMatchesRayCastGeometry) {
   auto s = loadBuiltin("plane-box");
   ASSERT_TRUE(s);

@@ -2,6 +2,8 @@
 // this class wires them together and owns none of the rendering.
 #include "MainWindow.h"
 
+#include "panels/light/LightPanel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -284,37 +286,6 @@ void MainWindow::createToolBar() {
   }
   connect(techniqueCombo_, &QComboBox::activated, this, &MainWindow::onTechniqueComboActivated);
   bar->addWidget(techniqueCombo_);
-  bar->addSeparator();
-
-  // Sun direction: azimuth around +y (from +z towards +x) and elevation above the horizon.
-  addLabel(tr("Sun"));
-  auto addLightSlider = [&](const QString& name, const QString& caption, int lo, int hi,
-                            const QString& tip, QLabel** valueLabel) {
-    auto* captionLabel = new QLabel(caption);
-    captionLabel->setContentsMargins(4, 0, 2, 0);
-    captionLabel->setForegroundRole(QPalette::PlaceholderText);
-    bar->addWidget(captionLabel);
-    auto* s = new QSlider(Qt::Horizontal);
-    s->setObjectName(name);
-    s->setRange(lo, hi);
-    s->setFixedWidth(110);
-    s->setToolTip(tip);
-    connect(s, &QSlider::valueChanged, this, &MainWindow::updateLightFromControls);
-    bar->addWidget(s);
-    *valueLabel = new QLabel;
-    (*valueLabel)
-        ->setMinimumWidth((*valueLabel)->fontMetrics().horizontalAdvance(QStringLiteral("-180°")) +
-                          6);
-    (*valueLabel)->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    bar->addWidget(*valueLabel);
-    return s;
-  };
-  azimuthSlider_ = addLightSlider(
-      QStringLiteral("sunAzimuth"), tr("azimuth"), -180, 180,
-      tr("Sun azimuth: degrees around the vertical, from +z towards +x"), &azimuthLabel_);
-  elevationSlider_ =
-      addLightSlider(QStringLiteral("sunElevation"), tr("elevation"), 0, 90,
-                     tr("Sun elevation: degrees above the horizon"), &elevationLabel_);
   bar->addSeparator();
 
   addLabel(tr("View"));
@@ -689,28 +660,7 @@ void MainWindow::onErrorComputed(double errorPct) {
 // --- Light, camera, misc -------------------------------------------------------------------
 
 void MainWindow::syncLightControls() {
-  const sl::Light& light = viewport_->light();
-  {
-    QSignalBlocker a(azimuthSlider_), e(elevationSlider_);
-    float az = std::fmod(light.azimuthDeg + 180.0f, 360.0f);
-    az = (az < 0 ? az + 360.0f : az) - 180.0f;
-    azimuthSlider_->setValue(static_cast<int>(std::lround(az)));
-    elevationSlider_->setValue(static_cast<int>(std::lround(light.elevationDeg)));
-  }
-  showLightValues();
-}
-
-void MainWindow::showLightValues() {
-  azimuthLabel_->setText(QStringLiteral("%1°").arg(azimuthSlider_->value()));
-  elevationLabel_->setText(QStringLiteral("%1°").arg(elevationSlider_->value()));
-}
-
-void MainWindow::updateLightFromControls() {
-  sl::Light light = viewport_->light();
-  light.azimuthDeg = static_cast<float>(azimuthSlider_->value());
-  light.elevationDeg = static_cast<float>(elevationSlider_->value());
-  viewport_->setLight(light);
-  showLightValues();
+  if (lightPanel_) lightPanel_->showLight(viewport_->light());
 }
 
 void MainWindow::updateTitle() {

@@ -1,8 +1,8 @@
 // The main window: the viewport in the middle, dockable panels around it (Parameters,
 // Lesson, Importance map, Covariance, Warp functions, Moment mip chain, Shadow map, Timing),
-// toolbars for scene / technique / sun / camera and for overlays, split view, pause, frame
-// and pass stepping, the Lessons menu, and the status line. Also drives `--grab` runs and
-// the `--self-test` checks.
+// toolbars for scene / technique / camera, the Light dock and for overlays, split view, pause,
+// frame and pass stepping, the Lessons menu, and the status line. Also drives `--grab` runs and the
+// `--self-test` checks.
 #pragma once
 
 #include <memory>
@@ -32,6 +32,7 @@ class ChartsPanel;
 class CovariancePanel;
 class ImportancePanel;
 class LessonPanel;
+class LightPanel;
 class MomentPanel;
 class ParamPanel;
 class PublicationPanel;
@@ -110,8 +111,6 @@ class MainWindow : public QMainWindow {
   void syncSceneCombo();
   void syncTechniqueCombo();
   void syncLightControls();
-  void showLightValues();
-  void updateLightFromControls();
   void updateTitle();
   void showShortcuts();
   void saveScreenshot();
@@ -235,10 +234,7 @@ class MainWindow : public QMainWindow {
   QComboBox* sceneCombo_ = nullptr;
   QComboBox* techniqueCombo_ = nullptr;
   QComboBox* bookmarkCombo_ = nullptr;
-  QSlider* azimuthSlider_ = nullptr;
-  QSlider* elevationSlider_ = nullptr;
-  QLabel* azimuthLabel_ = nullptr;
-  QLabel* elevationLabel_ = nullptr;
+  LightPanel* lightPanel_ = nullptr;  ///< the Light dock (ui/panels/light)
 
   QLabel* sceneLabel_ = nullptr;
   QLabel* frameLabel_ = nullptr;

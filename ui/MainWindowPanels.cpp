@@ -28,6 +28,8 @@
 #include "LaunchOptions.h"
 #include "LessonPanel.h"
 #include "MainWindow.h"
+
+#include "panels/light/LightPanel.h"
 #include "MomentPanel.h"
 #include "ParamPanel.h"
 #include "ShadowMapPanel.h"
@@ -140,6 +142,11 @@ void MainWindow::createPanelDocks() {
                              Qt::BottomDockWidgetArea);
   lessonDock_ =
       addPanelDock(lessonPanel_, tr("Lesson"), QStringLiteral("lesson"), Qt::RightDockWidgetArea);
+  lightPanel_ = new LightPanel;
+  addPanelDock(lightPanel_, tr("Light"), QStringLiteral("light"), Qt::RightDockWidgetArea);
+  connect(lightPanel_, &LightPanel::lightEdited, viewport_, &ViewportWidget::setLight);
+  connect(viewport_, &ViewportWidget::lightChanged, this, &MainWindow::syncLightControls);
+  syncLightControls();
   chartsPanel_ = new ChartsPanel(viewport_);
   chartsDock_ =
       addPanelDock(chartsPanel_, tr("Charts"), QStringLiteral("charts"), Qt::RightDockWidgetArea);

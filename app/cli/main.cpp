@@ -68,18 +68,18 @@ struct Warmup {
   bool temporal = false;  ///< the technique has a temporal rotation
 };
 
-/// For a technique with a temporal rotation: unmeasured frames (publishing on, to read
-/// the rotation's numbers) until a frame's estimate leaves R unchanged, at most
+/// For a technique with a temporal rotation: unmeasured frames (the rotation's numbers
+/// requested) until a frame's estimate leaves R unchanged, at most
 /// kMaxRotationWarmup. The measured frames then run without publishing.
 Warmup warmUpRotation(sl::Renderer& r, const RenderConfig& cfg) {
   Warmup w;
   if (!hasTemporalRotation(r.techniqueId())) return w;
   w.temporal = true;
   w.settled = false;
-  r.setPublishing(true);
+  r.requestPublications({"pca.valid", "rotation.held", "rotation.step_deg"});
   while (w.frames < kMaxRotationWarmup && !w.settled) {
     if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) {
-      r.setPublishing(false);
+      r.requestPublications({});
       throw std::runtime_error(*e);
     }
     ++w.frames;
@@ -95,7 +95,7 @@ Warmup warmUpRotation(sl::Renderer& r, const RenderConfig& cfg) {
     w.settled = *valid == 0 || number("rotation.held").value_or(0) != 0 ||
                 number("rotation.step_deg").value_or(1) == 0;
   }
-  r.setPublishing(false);
+  r.requestPublications({});
   return w;
 }
 

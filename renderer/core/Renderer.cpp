@@ -72,7 +72,7 @@ struct RendererState {
   Renderer::FrameSizeLimit maxFrame;  ///< the context's limits, queried once
   FrameStats stats;
   Publication publication;
-  bool publishing = false;
+  std::set<std::string> requested;  ///< publication patterns (empty: publish nothing)
   std::uint64_t frameIndex = 0;
   gl::Program gbufferProgram, compositeProgram;
   std::map<std::string, gl::Program> resolvePrograms;  // per lookup shader
@@ -310,8 +310,11 @@ const DirectionalLight& Renderer::light() const {
 const FrameStats& Renderer::stats() const {
   return s_->stats;
 }
-void Renderer::setPublishing(bool on) {
-  s_->publishing = on;
+void Renderer::requestPublications(std::set<std::string> patterns) {
+  s_->requested = std::move(patterns);
+}
+const std::set<std::string>& Renderer::requestedPublications() const {
+  return s_->requested;
 }
 const Publication& Renderer::publication() const {
   return s_->publication;
@@ -358,10 +361,12 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   const glm::vec3 towardsLight = s.light.towardsLight();
   ++s.frameIndex;
   s.timer->beginFrame();
-  if (s.publishing) {
+  const bool publishing = !s.requested.empty();
+  if (publishing) {
     s.publication = Publication{};
     s.publication.frameIndex = s.frameIndex;
     s.publication.techniqueId = s.techniqueId;
+    s.publication.requested = s.requested;
   }
 
   {  // 1. Camera G-buffer.
@@ -399,7 +404,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                    *s.timer,
                    s.shaders,
                    s.frameIndex,
-                   s.publishing ? &s.publication : nullptr};
+                   publishing ? &s.publication : nullptr};
   try {
     s.technique->renderShadows(ctx);
   } catch (const std::exception& e) {
@@ -472,6 +477,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   s.stats.timingMethod = s.timer->methodName();
   s.stats.timingFramesLate = s.timer->framesLate();
   s.stats.memory = s.technique->memory();
+  s.stats.publicationBytes = publishing ? s.publication.readbackBytes : 0;
   for (const PassTiming& p : s.stats.passes) s.stats.totalMs += p.ms;
   (void)frameStart;
   return std::nullopt;

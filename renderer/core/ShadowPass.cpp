@@ -57,15 +57,4 @@ void bindDepthLookup(const gl::Program& resolve, int unit, const gl::Texture& ma
   resolve.set("u_biasConstant", state.bias.constantM * depthPerM);
 }
 
-void publishDepth(Publication& pub, const std::string& key, const gl::Texture& depth) {
-  FloatImage img;
-  img.width = depth.width();
-  img.height = depth.height();
-  img.values.resize(size_t(img.width) * size_t(img.height));
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                    GLsizei(img.values.size() * sizeof(float)), img.values.data());
-  pub.images[key] = std::move(img);
-}
-
 }  // namespace sl

@@ -1,6 +1,6 @@
 // Helpers shared by the shadow-map techniques: the depth-only light pass (exact depth at
 // texel centres, alpha-tested casters), the binding of the one bias model of every lookup
-// (shaders/common/depth_map_test.glsl) and publishing a depth map to the panels.
+// (shaders/common/depth_map_test.glsl). Publishing: core/Publish.h.
 #pragma once
 
 #include <string>
@@ -39,8 +39,5 @@ DepthLookupState depthLookupState(const LightFit& fit, const ParamSet& params);
 /// Binds `map` to `unit` and sets every uniform of common/depth_map_test.glsl.
 void bindDepthLookup(const gl::Program& resolve, int unit, const gl::Texture& map,
                      const DepthLookupState& state);
-
-/// Reads a depth texture back into the publication as a float image.
-void publishDepth(Publication& pub, const std::string& key, const gl::Texture& depth);
 
 }  // namespace sl

@@ -40,7 +40,12 @@ struct FrameContext {
   gl::GpuTimer& timer;
   const gl::ShaderLibrary& shaders;
   std::uint64_t frameIndex = 0;
-  Publication* publication = nullptr;  ///< non-null when the panels want debug data
+  /// Non-null when publications are requested; publish only what wants() accepts, through
+  /// the readback helpers of core/Publish.h (they count the bytes).
+  Publication* publication = nullptr;
+  /// True when `key` is requested this frame: read it back, or do the work that exists
+  /// only to show it.
+  bool wants(std::string_view key) const { return publication && publication->wants(key); }
 };
 
 class Technique {
@@ -70,5 +75,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry();
 
 /// Parameters most shadow-map techniques share (resolution, bias, PCF), declared once.
 std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution);
+/// The "shadow map" publication of a technique with one `resolution`^2 depth map.
+PublicationDecl shadowMapPublicationDecl();
 
 }  // namespace sl

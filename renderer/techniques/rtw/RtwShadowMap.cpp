@@ -7,6 +7,7 @@
 #include "algo/Focus.h"
 #include "algo/rtw/Moments.h"
 #include "algo/rtw/Warp.h"
+#include "core/Publish.h"
 #include "core/SceneGpu.h"
 #include "core/ShadowPass.h"
 
@@ -18,10 +19,6 @@ namespace {
 /// corrupts the warped map at levels 32-64 (measured: corridor, tolerance 0.01: 55.6 %
 /// error at cap 64, 0.73 % at cap 16).
 constexpr int kMaxTessellationLevel = 16;
-
-/// DA-RTW's PCA reads the IM reduced to at most this size (block maxima): seed 000's
-/// moments need the distribution's shape, not 512^2 texels.
-constexpr int kMomentImMax = 128;
 
 gl::ProgramDesc compute(const std::string& file) {
   return {file, {{GL_COMPUTE_SHADER, file}}, {}, {}};
@@ -208,7 +205,10 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
         "Backward RTW with the light frustum rotated by PCA of the importance map "
         "(Tokuyoshi et al. 2014, seed 000), with a vibration threshold.";
   }
-  return {id, name, desc, p};
+  TechniqueInfo info{id, name, desc, p};
+  info.passes = passDecls(id);
+  info.publications = publicationDecls(id);
+  return info;
 }
 
 RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
@@ -246,7 +246,7 @@ void RtwShadowMap::resetTemporalState() {
   momentFence_.reset();
 }
 
-void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
+void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx) {
   const GLbitfield rw = GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT;
   if (smRes != smRes_) {
     shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, smRes, smRes);
@@ -270,8 +270,8 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
     imRes_ = imRes;
     momentFence_.reset();
   }
-  // The 2D IM: always for forward analysis (its render target), else only for the panels.
-  const bool wantIm = !backward() || publishing;
+  // The 2D IM: always for forward analysis (its render target), else only while asked for.
+  const bool wantIm = !backward() || ctx.wants("importance");
   if (wantIm && !importance_) {
     importance_ = gl::Texture::create2D(GL_R32UI, imRes, imRes);
     if (!backward()) {
@@ -285,7 +285,7 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
   } else if (!wantIm && importance_) {
     importance_ = {};
   }
-  if (!publishing) uniformMap_ = {};
+  if (!ctx.wants("shadow map.uniform")) uniformMap_ = {};
   // DA-RTW: the PCA's IM, the block maxima of the full IM down to kMomentImMax^2.
   const int momentRes = std::min(imRes, kMomentImMax);
   if (config_.rotation && (momentRes != momentRes_ || !momentIm_)) {
@@ -317,20 +317,17 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   // The angle is measured in metres: the IM's axes span the light frustum's extents.
   rtw::MomentStats stats = rtw::momentsFromTop(t, 0.5f * momentExtentM_);
   lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")));
-  if (ctx.publication) {
-    auto& n = ctx.publication->numbers;
-    n["mean.x"] = stats.meanX;
-    n["mean.y"] = stats.meanY;
-    n["cov.xx"] = stats.covXX;
-    n["cov.xy"] = stats.covXY;
-    n["cov.yy"] = stats.covYY;
-    n["eigen.1"] = stats.lambda1;
-    n["eigen.2"] = stats.lambda2;
-    n["pca.valid"] = stats.valid ? 1 : 0;
-    const char* names[6] = {"moment.I",   "moment.xI",  "moment.yI",
-                            "moment.xxI", "moment.yyI", "moment.xyI"};
-    for (int c = 0; c < 6; ++c) n[names[c]] = top[c];
-  }
+  publishNumber(ctx, "mean.x", stats.meanX);
+  publishNumber(ctx, "mean.y", stats.meanY);
+  publishNumber(ctx, "cov.xx", stats.covXX);
+  publishNumber(ctx, "cov.xy", stats.covXY);
+  publishNumber(ctx, "cov.yy", stats.covYY);
+  publishNumber(ctx, "eigen.1", stats.lambda1);
+  publishNumber(ctx, "eigen.2", stats.lambda2);
+  publishNumber(ctx, "pca.valid", stats.valid ? 1 : 0);
+  const char* names[6] = {"moment.I",   "moment.xI",  "moment.yI",
+                          "moment.xxI", "moment.yyI", "moment.xyI"};
+  for (int c = 0; c < 6; ++c) publishNumber(ctx, names[c], top[c]);
 }
 
 // DA-RTW's moment chain of this frame's moment IM (level 1 straight from it, then one
@@ -342,7 +339,16 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glBindImageTexture(0, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, momentBuffer_.id());
-  if (ctx.publication) {  // level 0 only for the panels; the estimate never needs it
+  const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+  auto levelKey = [&ch](int c, size_t level) {
+    return "moment." + std::string(ch[c]) + "." + std::to_string(level);
+  };
+  auto wantsLevel = [&](size_t level) {
+    for (int c = 0; c < 6; ++c)
+      if (ctx.wants(levelKey(c, level))) return true;
+    return false;
+  };
+  if (wantsLevel(0)) {  // level 0 only for the panels; the estimate never needs it
     moments_.use();
     moments_.set("u_size", size);
     moments_.set("u_invSize", invSize);
@@ -368,22 +374,19 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   momentFence_.place();
   momentExtentM_ = lastExtentM_;
-  if (!ctx.publication) return;
-  // The chain itself (level images) and its IM, for the moment panel (debug: blocking).
-  Publication& pub = *ctx.publication;
-  FloatImage im{size.x, size.y, 1, std::vector<float>(size_t(size.x) * size_t(size.y))};
-  glGetTextureImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                    GLsizei(im.values.size() * sizeof(float)), im.values.data());  // float bits
-  pub.images["importance.moments"] = std::move(im);
-  const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+  // The chain itself (level images) and its IM, for the moment panel (debug: blocking),
+  // only what is asked for.
+  publishFloatBits(ctx, "importance.moments", momentIm_);
   for (size_t l = 0; l < momentSizes_.size(); ++l) {
+    if (!wantsLevel(l)) continue;
     glm::ivec2 s = momentSizes_[l];
     std::vector<float> all =
-        readFloats(momentBuffer_, size_t(momentOffsets_[l]), size_t(6 * s.x * s.y));
+        readPublishedFloats(ctx, momentBuffer_, size_t(momentOffsets_[l]), size_t(6 * s.x * s.y));
     for (int c = 0; c < 6; ++c) {
+      if (!ctx.wants(levelKey(c, l))) continue;
       FloatImage img{s.x, s.y, 1, std::vector<float>(size_t(s.x * s.y))};
       for (size_t i = 0; i < img.values.size(); ++i) img.values[i] = all[6 * i + size_t(c)];
-      pub.images["moment." + std::string(ch[c]) + "." + std::to_string(l)] = std::move(img);
+      ctx.publication->images[levelKey(c, l)] = std::move(img);
     }
   }
 }
@@ -522,17 +525,16 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
 
 void RtwShadowMap::renderShadows(FrameContext& ctx) {
   const ParamSet& p = ctx.params;
-  ensureResources(p.getInt("resolution"), p.getInt("im.resolution"), ctx.publication != nullptr);
+  ensureResources(p.getInt("resolution"), p.getInt("im.resolution"), ctx);
   if (config_.rotation) rotationFromLastMoments(ctx);
-  if (ctx.publication && config_.rotation) {
-    auto& n = ctx.publication->numbers;
-    n["e_x"] = lastUpdate_.e_x;
-    n["e_y"] = lastUpdate_.e_y;
-    n["rotation.held"] = lastUpdate_.held ? 1 : 0;
-    n["rotation.deg"] = rotation_.angleDeg();
-    n["rotation.step_deg"] = lastUpdate_.stepDeg;
-    n["rotation.changes"] = rotation_.changes;
-    n["pca.threshold"] = p.get("pca.threshold");
+  if (config_.rotation) {
+    publishNumber(ctx, "e_x", lastUpdate_.e_x);
+    publishNumber(ctx, "e_y", lastUpdate_.e_y);
+    publishNumber(ctx, "rotation.held", lastUpdate_.held ? 1 : 0);
+    publishNumber(ctx, "rotation.deg", rotation_.angleDeg());
+    publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
+    publishNumber(ctx, "rotation.changes", rotation_.changes);
+    publishNumber(ctx, "pca.threshold", p.get("pca.threshold"));
   }
 
   LightFit fit;
@@ -558,28 +560,22 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
 }
 
 void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
-  Publication& pub = *ctx.publication;
-  const int n = imRes_;
-  pub.numbers["light.extent.x"] = lastExtentM_.x;
-  pub.numbers["light.extent.y"] = lastExtentM_.y;
-  FloatImage im{n, n, 1, std::vector<float>(size_t(n) * size_t(n))};
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetTextureImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                    GLsizei(im.values.size() * sizeof(float)), im.values.data());  // float bits
-  pub.images["importance"] = std::move(im);
-  pub.curves["inverse.x"] = readFloats(inverse_, 0, size_t(smRes_));
-  pub.curves["inverse.y"] = readFloats(inverse_, size_t(smRes_), size_t(smRes_));
-  std::vector<float> c = readFloats(collapsed_, 0, size_t(2 * n));
-  std::vector<float> b = readFloats(blurred_, 0, size_t(2 * n));
-  std::vector<float> w = readFloats(warp_, 0, size_t(2 * (n + 1)));
-  pub.curves["importance.x"].assign(c.begin(), c.begin() + n);
-  pub.curves["importance.y"].assign(c.begin() + n, c.end());
-  pub.curves["importance.x.blurred"].assign(b.begin(), b.begin() + n);
-  pub.curves["importance.y.blurred"].assign(b.begin() + n, b.end());
-  pub.curves["warp.x"].assign(w.begin(), w.begin() + n + 1);
-  pub.curves["warp.y"].assign(w.begin() + n + 1, w.end());
-  publishDepth(pub, "shadow map", shadowMap_);
-  // The unwarped map of the same size, for contrast (only while publishing; in memory()).
+  const size_t n = size_t(imRes_), sm = size_t(smRes_);
+  publishNumber(ctx, "light.extent.x", lastExtentM_.x);
+  publishNumber(ctx, "light.extent.y", lastExtentM_.y);
+  if (importance_) publishFloatBits(ctx, "importance", importance_);
+  publishCurve(ctx, "inverse.x", inverse_, 0, sm);
+  publishCurve(ctx, "inverse.y", inverse_, sm, sm);
+  publishCurve(ctx, "importance.x", collapsed_, 0, n);
+  publishCurve(ctx, "importance.y", collapsed_, n, n);
+  publishCurve(ctx, "importance.x.blurred", blurred_, 0, n);
+  publishCurve(ctx, "importance.y.blurred", blurred_, n, n);
+  publishCurve(ctx, "warp.x", warp_, 0, n + 1);
+  publishCurve(ctx, "warp.y", warp_, n + 1, n + 1);
+  publishDepth(ctx, "shadow map", shadowMap_);
+  // The unwarped map of the same size, for contrast: rendered only while asked for (and
+  // then listed in memory()).
+  if (!ctx.wants("shadow map.uniform")) return;
   if (!uniformMap_ || uniformMap_.width() != smRes_) {
     uniformMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, smRes_, smRes_);
     uniformFbo_ = gl::Framebuffer::create();
@@ -588,7 +584,7 @@ void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
     uniformFbo_.checkComplete("RTW contrast map");
   }
   renderWarped(ctx, lightViewProj, false);
-  publishDepth(pub, "shadow map.uniform", uniformMap_);
+  publishDepth(ctx, "shadow map.uniform", uniformMap_);
 }
 
 void RtwShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {

@@ -21,6 +21,13 @@ class RtwShadowMap : public Technique {
     bool rotation = false;  ///< DA-RTW
   };
   static TechniqueInfo info(const std::string& id);
+  /// DA-RTW's PCA reads the IM reduced to at most this size (block maxima): seed 000's
+  /// moments need the distribution's shape, not 512^2 texels.
+  static constexpr int kMomentImMax = 128;
+  /// The passes of technique `id` in frame order, as timed (RtwDeclarations.cpp).
+  static std::vector<PassDecl> passDecls(const std::string& id);
+  /// What technique `id` publishes when asked, with the readback cost of each key.
+  static std::vector<PublicationDecl> publicationDecls(const std::string& id);
   RtwShadowMap(const gl::ShaderLibrary& lib, Config config);
 
   void renderShadows(FrameContext& ctx) override;
@@ -33,7 +40,7 @@ class RtwShadowMap : public Technique {
   const rtw::RotationState& rotation() const { return rotation_; }
 
  private:
-  void ensureResources(int smRes, int imRes, bool publishing);
+  void ensureResources(int smRes, int imRes, const FrameContext& ctx);
   void rotationFromLastMoments(FrameContext& ctx);
   void buildMoments(FrameContext& ctx);
   void buildImportance(FrameContext& ctx, const glm::mat4& lightViewProj, float lightTexelM);

@@ -4,15 +4,22 @@
 
 #include "algo/Focus.h"
 #include "core/SceneGpu.h"
+#include "core/Publish.h"
 #include "core/ShadowPass.h"
 
 namespace sl {
 
 TechniqueInfo UniformShadowMap::info() {
-  return {"uniform", "Uniform shadow map",
-          "Standard shadow map (Williams 1978): one orthographic depth map from the light, "
-          "focused on what the camera sees. The baseline.",
-          shadowMapParamDecls(2048)};
+  TechniqueInfo info{"uniform", "Uniform shadow map",
+                     "Standard shadow map (Williams 1978): one orthographic depth map from the "
+                     "light, focused on what the camera sees. The baseline.",
+                     shadowMapParamDecls(2048)};
+  info.passes = {{"shadow map", "Shadow map",
+                  "Fit the light's orthographic frustum to what the camera sees, then render "
+                  "the scene's depth from the light: uniform texels over the focused frustum.",
+                  "shadowmap"}};
+  info.publications = {shadowMapPublicationDecl()};
+  return info;
 }
 
 UniformShadowMap::UniformShadowMap(const gl::ShaderLibrary& lib)
@@ -35,7 +42,7 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
     fbo_.checkComplete("uniform shadow map");
   }
   renderDepth(ctx, depthProgram_, fbo_.id(), res, res, fit.viewProj);
-  if (ctx.publication) publishDepth(*ctx.publication, "shadow map", shadowMap_);
+  publishDepth(ctx, "shadow map", shadowMap_);
 }
 
 void UniformShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {

@@ -93,7 +93,7 @@ struct FloatImage {
 /// keys and their cost in TechniqueInfo::publications. Keys (absent when a technique has no
 /// such thing):
 ///  every shadow-map technique:  "shadow map" (image: the map as rendered, depth 0..1)
-///  RTW keys (listed between the markers; tests/cli/ui_names_no_rtw_key.sh checks that no
+///  RTW keys (listed between the markers; tests/source/ui_names_no_rtw_key.sh checks that no
 ///  file in ui/ outside ui/panels/rtw/ names one):
 ///  BEGIN RTW KEYS
 ///  images:  "shadow map.uniform" (an unwarped map of the same size, for contrast),

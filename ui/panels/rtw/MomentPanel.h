@@ -7,7 +7,8 @@
 #include <array>
 #include <map>
 
-#include "PanelKit.h"
+#include "panels/common/PanelKit.h"
+#include "panels/rtw/RtwPanelKeys.h"
 
 class QLabel;
 class QSlider;
@@ -20,6 +21,7 @@ class MomentPanel : public PublicationPanel {
  public:
   explicit MomentPanel(QWidget* parent = nullptr);
 
+  std::set<std::string> observedKeys() const override { return rtw::momentPanelKeys(); }
   void showPublication(const sl::Publication& publication) override;
   void highlightPass(const QString& passId) override;
   QJsonObject drawnValues() const override;

@@ -68,7 +68,8 @@ void WarpPanel::showPublication(const sl::Publication& pub) {
   const std::vector<float> wx = curveOf(pub, "warp.x"), wy = curveOf(pub, "warp.y");
   if (wx.size() < 2 && wy.size() < 2) {
     drawn_ = {};
-    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("warp maps")));
+    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("warp maps"),
+                                  observedKeys()));
     return;
   }
   showContent(true);
@@ -133,12 +134,12 @@ void WarpPanel::applyHighlight() {
     }
     std::vector<PlotWidget::Series> w = warp_[a]->series();
     if (w.size() == 2) {
-      w[1].highlighted = pass_ == QLatin1String("scan");
+      w[1].highlighted = pass_ == QLatin1String("scan + warp");
       warp_[a]->setSeries(std::move(w));
     }
     importance_[a]->setHighlighted(pass_ == QLatin1String("collapse") ||
                                    pass_ == QLatin1String("blur"));
-    warp_[a]->setHighlighted(pass_ == QLatin1String("scan"));
+    warp_[a]->setHighlighted(pass_ == QLatin1String("scan + warp"));
   }
 }
 

@@ -6,7 +6,8 @@
 
 #include <array>
 
-#include "PanelKit.h"
+#include "panels/common/PanelKit.h"
+#include "panels/rtw/RtwPanelKeys.h"
 
 class QLabel;
 
@@ -18,6 +19,7 @@ class WarpPanel : public PublicationPanel {
  public:
   explicit WarpPanel(QWidget* parent = nullptr);
 
+  std::set<std::string> observedKeys() const override { return rtw::warpPanelKeys(); }
   void showPublication(const sl::Publication& publication) override;
   void highlightPass(const QString& passId) override;
   QJsonObject drawnValues() const override;

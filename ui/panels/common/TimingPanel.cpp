@@ -68,7 +68,7 @@ class PassBarsWidget : public QWidget {
     int nameW = 0;
     for (const auto& pass : passes_)
       nameW = std::max(nameW, fm.horizontalAdvance(QString::fromStdString(pass.name)));
-    nameW = std::min(nameW + 10, width() / 3);
+    nameW = std::min(nameW + 10, width() * 9 / 20);
     const int valueW = fm.horizontalAdvance(QStringLiteral("0000.00 ms  100%")) + 8;
     const int barX = nameW, barW = std::max(10, width() - nameW - valueW);
     QColor bar = pal.color(QPalette::Highlight);
@@ -221,8 +221,29 @@ void TimingPanel::showStats(const sl::FrameStats& stats) {
                         .arg(formatMs(stats.totalMs))
                         .arg(stats.timingMethod.empty()
                                  ? tr("unknown")
-                                 : QString::fromStdString(stats.timingMethod)));
-  passes_->setPasses(stats.passes, stats.totalMs);
+                                 : QString::fromStdString(stats.timingMethod)) +
+                    tr("  ·  panels read back %1").arg(formatBytes(stats.publicationBytes)));
+  // Bars in the declared frame order, named by their declared titles (an undeclared timer
+  // scope keeps its id); the explanations in the tooltip.
+  std::vector<sl::PassTiming> rows;
+  QString tip;
+  std::vector<bool> used(stats.passes.size(), false);
+  for (const sl::PassDecl& d : declared_) {
+    for (std::size_t i = 0; i < stats.passes.size(); ++i) {
+      if (used[i] || stats.passes[i].name != d.id) continue;
+      used[i] = true;
+      rows.push_back({d.title, stats.passes[i].ms});
+      tip += QStringLiteral("<p><b>%1</b> <code>%2</code><br>%3</p>")
+                 .arg(QString::fromStdString(d.title).toHtmlEscaped(),
+                      QString::fromStdString(d.id).toHtmlEscaped(),
+                      QString::fromStdString(d.explanation).toHtmlEscaped());
+      break;
+    }
+  }
+  for (std::size_t i = 0; i < stats.passes.size(); ++i)
+    if (!used[i]) rows.push_back(stats.passes[i]);
+  passes_->setToolTip(tip);
+  passes_->setPasses(std::move(rows), stats.totalMs);
   history_->add(stats.totalMs);
 
   // The memory list only changes with the technique or its parameters.
@@ -250,6 +271,10 @@ void TimingPanel::showStats(const sl::FrameStats& stats) {
   memoryTotal_->setText(
       tr("Total: %1 texels, %2")
           .arg(formatCount(stats.memory.texels()), formatBytes(stats.memory.bytes())));
+}
+
+void TimingPanel::setTechnique(const sl::TechniqueInfo* technique) {
+  declared_ = technique ? sl::framePassDecls(*technique) : std::vector<sl::PassDecl>{};
 }
 
 void TimingPanel::resetHistory() {

@@ -5,6 +5,8 @@
 
 #include <functional>
 #include <limits>
+#include <set>
+#include <string>
 #include <span>
 #include <vector>
 
@@ -56,8 +58,10 @@ QImage colorize(const sl::FloatImage& image, int channel, const ValueRange& rang
 /// "0.0123", "1.23e+05": four significant digits.
 QString formatValue(double v);
 
-/// Text for a panel whose data the current technique does not publish.
-QString noDataText(const QString& techniqueId, const QString& what);
+/// Text for a panel whose data (`keys`) the current technique does not publish, naming
+/// the techniques that declare them.
+QString noDataText(const QString& techniqueId, const QString& what,
+                   const std::set<std::string>& keys);
 
 // --- ImageView -----------------------------------------------------------------------------
 
@@ -188,15 +192,20 @@ class PlotWidget : public QWidget {
 
 // --- Panels --------------------------------------------------------------------------------
 
-/// Base of the panels that show the renderer's Publication. The main window calls
-/// showPublication() after each frame while the panel is visible; a panel keeps whatever
-/// it needs (the Publication is replaced by the next frame).
+/// Base of the panels that show the renderer's Publication. The main window requests the
+/// panel's observedKeys() while it is visible and calls showPublication() after each frame;
+/// a panel keeps whatever it needs (the Publication is replaced by the next frame). A
+/// technique that does not publish a panel's keys gets the placeholder (showContent(false,
+/// noDataText(...))).
 class PublicationPanel : public QWidget {
   Q_OBJECT
 
  public:
   explicit PublicationPanel(QWidget* parent = nullptr);
 
+  /// The publication keys (or patterns) this panel draws: requested from the renderer
+  /// while the panel is visible, nothing while it is hidden.
+  virtual std::set<std::string> observedKeys() const = 0;
   virtual void showPublication(const sl::Publication& publication) = 0;
   /// Pass stepping: emphasise what shows pass `passId` ("" = nothing).
   virtual void highlightPass(const QString& passId) { (void)passId; }

@@ -151,12 +151,23 @@ QString formatValue(double v) {
   return QString::number(v, 'g', 4);
 }
 
-QString noDataText(const QString& techniqueId, const QString& what) {
+QString noDataText(const QString& techniqueId, const QString& what,
+                   const std::set<std::string>& keys) {
   const QString id = techniqueId.isEmpty() ? QObject::tr("this technique") : techniqueId;
+  // The techniques that do publish it, from their declarations.
+  QStringList publishers;
+  for (const sl::TechniqueInfo& t : sl::Renderer::techniques())
+    for (const std::string& key : keys)
+      if (t.findPublication(key) && !publishers.contains(QString::fromStdString(t.id))) {
+        publishers << QString::fromStdString(t.id);
+        break;
+      }
+  if (publishers.isEmpty())
+    return QObject::tr("The technique \u201c%1\u201d publishes no %2.").arg(id, what);
   return QObject::tr(
-             "The technique \u201c%1\u201d publishes no %2.\n\nChoose an RTW technique "
-             "(rtw-backward, da-rtw, \u2026) in the toolbar to see it.")
-      .arg(id, what);
+             "The technique \u201c%1\u201d publishes no %2.\n\nChoose one that does (%3) in "
+             "the toolbar to see it.")
+      .arg(id, what, publishers.join(QStringLiteral(", ")));
 }
 
 // --- ImageView -----------------------------------------------------------------------------

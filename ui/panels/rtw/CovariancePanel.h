@@ -6,7 +6,8 @@
 
 #include <deque>
 
-#include "PanelKit.h"
+#include "panels/common/PanelKit.h"
+#include "panels/rtw/RtwPanelKeys.h"
 
 class QLabel;
 
@@ -20,6 +21,7 @@ class CovariancePanel : public PublicationPanel {
  public:
   explicit CovariancePanel(QWidget* parent = nullptr);
 
+  std::set<std::string> observedKeys() const override { return rtw::covariancePanelKeys(); }
   void showPublication(const sl::Publication& publication) override;
   void highlightPass(const QString& passId) override;
   /// "axis_deg": the principal axis the panel computed from the published moment sums and

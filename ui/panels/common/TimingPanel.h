@@ -1,11 +1,14 @@
 // The Timing panel: per-pass times of the current frame (bars), the recent frame-time
-// history, and the shadow-related GPU memory, all read from the renderer's FrameStats.
+// history, the shadow-related GPU memory and the bytes the panels read back, all read from
+// the renderer's FrameStats; the passes are named and explained by their declarations.
 #pragma once
 
 #include <QStringList>
 #include <QWidget>
 
-#include "core/FrameStats.h"
+#include <vector>
+
+#include "core/Renderer.h"
 
 class QLabel;
 class QTreeWidget;
@@ -21,6 +24,8 @@ class TimingPanel : public QWidget {
  public:
   explicit TimingPanel(QWidget* parent = nullptr);
 
+  /// The technique whose declared passes (core/Renderer.h framePassDecls) name the bars.
+  void setTechnique(const sl::TechniqueInfo* technique);
   /// Shows the stats of the frame just rendered.
   void showStats(const sl::FrameStats& stats);
   /// Forgets the history (new scene or technique: old times are not comparable).
@@ -32,7 +37,8 @@ class TimingPanel : public QWidget {
   FrameHistoryWidget* history_ = nullptr;
   QTreeWidget* memory_ = nullptr;
   QLabel* memoryTotal_ = nullptr;
-  QStringList memoryKey_;  ///< what the memory list shows, to skip identical rebuilds
+  QStringList memoryKey_;
+  std::vector<sl::PassDecl> declared_;  ///< what the memory list shows, to skip identical rebuilds
 };
 
 }  // namespace sl::ui

@@ -87,7 +87,8 @@ void ImportancePanel::showPublication(const sl::Publication& pub) {
   auto it = pub.images.find("importance");
   if (it == pub.images.end() || it->second.width <= 0) {
     im_ = {};
-    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("importance map")));
+    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("importance map"),
+                                  observedKeys()));
     return;
   }
   im_ = it->second;
@@ -202,14 +203,14 @@ void ImportancePanel::rebuild() {
 }
 
 void ImportancePanel::highlightPass(const QString& passId) {
-  if (passId == QLatin1String("im"))
+  if (passId == QLatin1String("importance"))
     setMode(Mode::Raw);
   else if (passId == QLatin1String("collapse"))
     setMode(Mode::Collapsed);
   else if (passId == QLatin1String("blur"))
     setMode(Mode::Blurred);
-  view_->setHighlighted(passId == QLatin1String("im") || passId == QLatin1String("collapse") ||
-                        passId == QLatin1String("blur"));
+  view_->setHighlighted(passId == QLatin1String("importance") ||
+                        passId == QLatin1String("collapse") || passId == QLatin1String("blur"));
 }
 
 QJsonObject ImportancePanel::drawnValues() const {

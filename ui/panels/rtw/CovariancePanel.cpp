@@ -190,7 +190,7 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   } else {
     drawn_ = {};
     showContent(false, noDataText(QString::fromStdString(pub.techniqueId),
-                                  tr("importance map or moments")));
+                                  tr("importance map or moments"), observedKeys()));
     return;
   }
   showContent(true);
@@ -344,7 +344,7 @@ void CovariancePanel::updateHistoryPlots() {
 }
 
 void CovariancePanel::highlightPass(const QString& passId) {
-  const bool on = passId == QLatin1String("pca");
+  const bool on = passId == QLatin1String("rotation estimate");
   view_->setHighlighted(on);
   exPlot_->setHighlighted(on);
 }

@@ -1,6 +1,8 @@
 // Lessons and the Lesson dock (see LessonPanel.h).
 #include "LessonPanel.h"
 
+#include "core/Renderer.h"
+
 #include <algorithm>
 
 #include <QDir>
@@ -153,6 +155,15 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count) {
                        .arg(QString::fromStdString(lesson->preset.scene),
                             QString::fromStdString(lesson->preset.technique))
                        .toHtmlEscaped());
+  // The passes of the lesson's technique, from their declaration: what ] steps through.
+  if (const sl::TechniqueInfo* t = sl::Renderer::findTechnique(lesson->preset.technique)) {
+    QStringList titles;
+    for (const sl::PassDecl& pass : sl::framePassDecls(*t))
+      titles << QString::fromStdString(pass.title).toHtmlEscaped();
+    html += QStringLiteral("<p style='color:gray'>%1</p>")
+                .arg(tr("Its passes (] steps through them): %1")
+                         .arg(titles.join(QStringLiteral(" → "))));
+  }
   text_->setHtml(html);
   previous_->setEnabled(index > 0);
   next_->setEnabled(index + 1 < count);

@@ -6,7 +6,8 @@
 #include <memory>
 #include <vector>
 
-#include "PanelKit.h"
+#include "panels/common/PanelKit.h"
+#include "panels/rtw/RtwPanelKeys.h"
 
 class QCheckBox;
 class QLabel;
@@ -19,6 +20,7 @@ class ShadowMapPanel : public PublicationPanel {
  public:
   explicit ShadowMapPanel(QWidget* parent = nullptr);
 
+  std::set<std::string> observedKeys() const override { return rtw::shadowMapPanelKeys(); }
   void showPublication(const sl::Publication& publication) override;
   void highlightPass(const QString& passId) override;
   QJsonObject drawnValues() const override;

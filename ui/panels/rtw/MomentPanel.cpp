@@ -94,7 +94,8 @@ void MomentPanel::showPublication(const sl::Publication& pub) {
   }
   const bool haveNumbers = pub.numbers.count("moment.I") > 0;
   if (levelCount_ == 0 && !haveNumbers) {
-    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("moment mip chain")));
+    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("moment mip chain"),
+                                  observedKeys()));
     return;
   }
   showContent(true);

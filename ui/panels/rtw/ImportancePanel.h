@@ -5,7 +5,8 @@
 
 #include <vector>
 
-#include "PanelKit.h"
+#include "panels/common/PanelKit.h"
+#include "panels/rtw/RtwPanelKeys.h"
 
 class QButtonGroup;
 class QCheckBox;
@@ -21,6 +22,7 @@ class ImportancePanel : public PublicationPanel {
 
   explicit ImportancePanel(QWidget* parent = nullptr);
 
+  std::set<std::string> observedKeys() const override { return rtw::importancePanelKeys(); }
   void showPublication(const sl::Publication& publication) override;
   void highlightPass(const QString& passId) override;
   QJsonObject drawnValues() const override;

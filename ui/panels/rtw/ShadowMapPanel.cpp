@@ -97,7 +97,8 @@ void ShadowMapPanel::showPublication(const sl::Publication& pub) {
   auto sm = pub.images.find("shadow map");
   if (sm == pub.images.end() || sm->second.width <= 0) {
     drawn_ = {};
-    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("shadow map")));
+    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("shadow map"),
+                                  observedKeys()));
     return;
   }
   showContent(true);
@@ -162,7 +163,7 @@ void ShadowMapPanel::updateOverlays() {
 }
 
 void ShadowMapPanel::highlightPass(const QString& passId) {
-  warped_->setHighlighted(passId == QLatin1String("warped"));
+  warped_->setHighlighted(passId == QLatin1String("warped shadow map"));
   uniform_->setHighlighted(false);
 }
 

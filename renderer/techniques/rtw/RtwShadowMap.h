@@ -26,6 +26,7 @@ class RtwShadowMap : public Technique {
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "rtw/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override;
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
   void resetTemporalState() override;
@@ -62,7 +63,7 @@ class RtwShadowMap : public Technique {
   std::vector<int> momentOffsets_;  ///< float offset of each level
   std::vector<glm::ivec2> momentSizes_;
   int smRes_ = 0, imRes_ = 0, momentRes_ = 0;
-  DepthLookupState lookup_;
+  DepthMapView view_;
   glm::vec2 lastExtentM_{1.0f};
   glm::vec2 momentExtentM_{1.0f};  ///< the light frustum extent the pending moments were taken in
   rtw::RotationState rotation_;

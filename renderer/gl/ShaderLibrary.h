@@ -1,5 +1,6 @@
 // GLSL programs built from files in shaders/, with `#include "dir/file.glsl"` support
-// (paths relative to the shader root; each file included once per program) and aliases
+// (paths relative to the shader root, or absolute: tests keep their own techniques'
+// shaders next to them; each file included once per program) and aliases
 // (`#include "@lookup"` resolves to a file chosen by the technique). A compile or link
 // error names the file and line; a failed rebuild keeps the last good program in use.
 #pragma once

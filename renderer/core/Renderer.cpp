@@ -55,7 +55,9 @@ std::vector<ParamDecl> rendererParamDecls() {
            "Drawn over the scene: shadow error against the exact reference (false-lit magenta, "
            "false-shadowed cyan; needs a computed reference for this view), perspective aliasing "
            "m as a heat map (blue: m<1 oversampled, white: m=1, red: m>1 undersampled; log2 scale "
-           "-4..4), or the shadow-map texel grid (every 1/16 of the map) projected onto the scene.",
+           "-4..4), or the shadow-map texel grid (every 1/" +
+           std::to_string(SL_GRID_LINES_PER_MAP) +
+           " of the selected map) projected onto the scene.",
        .uniform = "u_overlay"},
   };
 }

@@ -50,7 +50,7 @@ void main() {
   } else if (u_overlay == SL_OVERLAY_ALIASING) {
     c = mix(c, aliasingColor(texelFetch(u_aliasing, px, 0).r), 0.7);
   } else if (u_overlay == SL_OVERLAY_GRID) {
-    vec2 g = texelFetch(u_texel, px, 0).xy * 16.0;  // a line every 1/16 of the map
+    vec2 g = texelFetch(u_texel, px, 0).xy * float(SL_GRID_LINES_PER_MAP);
     vec2 w = fwidth(g);
     vec2 d = abs(fract(g - 0.5) - 0.5) / max(w, vec2(1e-6));
     float line = 1.0 - clamp(min(d.x, d.y), 0.0, 1.0);

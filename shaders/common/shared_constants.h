@@ -38,6 +38,7 @@
 #define SL_OVERLAY_ERROR 1
 #define SL_OVERLAY_ALIASING 2
 #define SL_OVERLAY_GRID 3
+#define SL_GRID_LINES_PER_MAP 16  // the grid overlay: a line every 1/16 of the selected map
 
 // --- RTW (techniques/rtw, shaders/rtw).
 #define SL_RTW_BUFFER_COLLAPSED 0  // 1D importance [x n][y n], float bits as uint

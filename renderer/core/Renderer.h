@@ -20,6 +20,10 @@
 #include "metrics/Image.h"
 #include "scene/Scene.h"
 
+namespace sl::gl {
+class ShaderLibrary;
+}
+
 namespace sl {
 
 class Technique;
@@ -142,9 +146,19 @@ struct FrameReadback {
   ImageRGBA8 color;  ///< final shaded image, row 0 = top
 };
 
+/// One entry of a technique list: what it is, and how to make one (GL current; throws
+/// std::runtime_error or gl::ShaderError when it cannot).
+struct TechniqueEntry {
+  TechniqueInfo info;
+  std::unique_ptr<Technique> (*create)(const gl::ShaderLibrary& lib) = nullptr;
+};
+
 struct RendererOptions {
   std::string shaderDir;  ///< empty: SHADOWLAB_SHADER_DIR env var, else compiled-in path
   bool debugOutput = true;
+  /// Techniques this renderer offers besides the built-in list (Renderer::techniques()):
+  /// tests add techniques that live only in tests. Found by setTechnique and paramsOf.
+  std::vector<TechniqueEntry> extraTechniques;
 };
 
 class Renderer {

@@ -1,5 +1,9 @@
+// The shared depth pass, the per-map lookup binding and depth publishing (ShadowPass.h).
 #include "ShadowPass.h"
 
+#include <stdexcept>
+
+#include "common/shared_constants.h"
 #include "core/SceneGpu.h"
 
 namespace sl {
@@ -27,34 +31,26 @@ void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint fra
   beginDepthPass(framebuffer, width, height);
   program.use();
   program.set("u_lightViewProj", lightViewProj);
-  ctx.sceneGpu.draw(program, 0);
+  ctx.sceneGpu.draw(program, SL_UNIT_MATERIAL);
 }
 
-DepthLookupState depthLookupState(const LightFit& fit, const ParamSet& params) {
-  DepthLookupState s;
-  s.lightViewProj = fit.viewProj;
-  s.extentM = fit.extentM;
-  s.depthRangeM = fit.depthRangeM > 0.0f ? fit.depthRangeM : 1.0f;
-  s.bias.normalTexels = float(params.get("bias.normal"));
-  s.bias.slopeTexels = float(params.get("bias.slope"));
-  s.bias.constantM = float(params.get("bias.constant"));
-  s.pcfRadius = params.getInt("pcf");
-  return s;
+DepthMapView depthMapView(const LightFit& fit) {
+  return {fit.viewProj, fit.extentM, fit.depthRangeM > 0.0f ? fit.depthRangeM : 1.0f};
 }
 
-void bindDepthLookup(const gl::Program& resolve, int unit, const gl::Texture& map,
-                     const DepthLookupState& state) {
-  glBindTextureUnit(GLuint(unit), map.id());
-  resolve.set("u_shadowMap", unit);
-  resolve.set("u_pcfRadius", state.pcfRadius);
-  resolve.set("u_lightViewProj", state.lightViewProj);
-  resolve.set("u_lightNormalMatrix", lightNormalMatrix(state.lightViewProj));
-  resolve.set("u_lightExtentM", state.extentM);
-  const float depthPerM = 1.0f / state.depthRangeM;
-  resolve.set("u_depthPerM", depthPerM);
-  resolve.set("u_biasNormal", state.bias.normalTexels);
-  resolve.set("u_biasSlope", state.bias.slopeTexels);
-  resolve.set("u_biasConstant", state.bias.constantM * depthPerM);
+void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> maps) {
+  if (maps.size() > SL_MAX_DEPTH_MAPS)
+    throw std::logic_error("a depth lookup over " + std::to_string(maps.size()) +
+                           " maps; shaders/common/depth_map_test.glsl holds SL_MAX_DEPTH_MAPS = " +
+                           std::to_string(SL_MAX_DEPTH_MAPS));
+  for (size_t i = 0; i < maps.size(); ++i) {
+    const std::string at = "[" + std::to_string(i) + "]";
+    const DepthMapView& m = maps[i];
+    resolve.set(("u_mapViewProj" + at).c_str(), m.lightViewProj);
+    resolve.set(("u_mapNormalMatrix" + at).c_str(), lightNormalMatrix(m.lightViewProj));
+    resolve.set(("u_mapExtentM" + at).c_str(), m.extentM);
+    resolve.set(("u_mapDepthPerM" + at).c_str(), 1.0f / m.depthRangeM);
+  }
 }
 
 }  // namespace sl

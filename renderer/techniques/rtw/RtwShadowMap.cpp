@@ -1,3 +1,4 @@
+// RTW / DA-RTW (RtwShadowMap.h): analysis, 1D warp maps, the exact warped depth pass.
 #include "RtwShadowMap.h"
 
 #include <bit>
@@ -7,6 +8,8 @@
 #include "algo/Focus.h"
 #include "algo/rtw/Moments.h"
 #include "algo/rtw/Warp.h"
+#include "common/shared_constants.h"
+#include "core/ParamBinding.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
 #include "core/ShadowPass.h"
@@ -15,10 +18,13 @@ namespace sl {
 
 namespace {
 
-/// Largest tessellation level the warped pass asks for. GL guarantees 64, but llvmpipe
-/// corrupts the warped map at levels 32-64 (measured: corridor, tolerance 0.01: 55.6 %
-/// error at cap 64, 0.73 % at cap 16).
-constexpr int kMaxTessellationLevel = 16;
+/// Largest tessellation level the warped pass asks for (why 16: shared_constants.h).
+constexpr int kMaxTessellationLevel = SL_MAX_TESSELLATION_LEVEL;
+
+/// Work groups of `n` invocations for a group size of `group`.
+GLuint groups(int n, int group) {
+  return GLuint((n + group - 1) / group);
+}
 
 gl::ProgramDesc compute(const std::string& file) {
   return {file, {{GL_COMPUTE_SHADER, file}}, {}, {}};
@@ -36,153 +42,151 @@ std::vector<float> readFloats(const gl::Buffer& b, size_t offset, size_t count) 
 TechniqueInfo RtwShadowMap::info(const std::string& id) {
   std::vector<ParamDecl> p = shadowMapParamDecls(1024);
   auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
-  add({"im.resolution",
-       "IM resolution",
-       "Importance",
-       ParamType::Int,
-       512,
-       32,
-       2048,
-       32,
-       {},
-       "Importance map width and height (light space); also the length of the 1D maps."});
-  add({"importance.eye",
-       "Eye distance term",
-       "Importance",
-       ParamType::Bool,
-       1,
-       0,
-       1,
-       1,
-       {},
-       "Perspective aliasing: importance near/eye depth (seed 002's only term)."});
-  add({"importance.eye.weight",
-       "Eye weight",
-       "Importance",
-       ParamType::Float,
-       1,
-       0,
-       1,
-       0.05,
-       {},
-       "0 = neutral, 1 = the full near/depth falloff."});
-  add({"importance.orientation",
-       "Orientation term",
-       "Importance",
-       ParamType::Bool,
-       1,
-       0,
-       1,
-       1,
-       {},
-       "Projection aliasing: cos(theta_eye) / cos(theta_light) of the surface."});
-  add({"importance.orientation.weight",
-       "Orientation weight",
-       "Importance",
-       ParamType::Float,
-       0.5,
-       0,
-       1,
-       0.05,
-       {},
-       "0 = neutral, 1 = the full cosine ratio."});
-  add({"importance.edge",
-       "Shadow-edge term",
-       "Importance",
-       ParamType::Bool,
-       0,
-       0,
-       1,
-       1,
-       {},
-       "Extra importance within 2 px of a shadow edge of the previous frame."});
-  add({"importance.stride",
-       "Pixel stride",
-       "Importance",
-       ParamType::Int,
-       2,
-       1,
-       4,
-       1,
-       {},
-       "Backward analysis: every k-th camera pixel in x and y scatters its importance (k^2 "
-       "fewer atomics). The IM keeps the maximum per texel, and neighbouring pixels land in "
-       "the same or adjacent texels, which the blur spreads over anyway."});
-  add({"importance.edge.weight",
-       "Edge weight",
-       "Importance",
-       ParamType::Float,
-       4,
-       0,
-       16,
-       0.5,
-       {},
-       "A texel on a shadow edge gets (1 + weight) times the importance."});
-  add({"blur.radius",
-       "Blur radius",
-       "Warp",
-       ParamType::Int,
-       4,
-       0,
-       32,
-       1,
-       {},
-       "Gaussian blur radius of the 1D importance maps, in texels."});
-  add({"blur.sigma",
-       "Blur sigma",
-       "Warp",
-       ParamType::Float,
-       2,
-       0.1,
-       16,
-       0.1,
-       {},
-       "Gaussian blur standard deviation, in texels."});
-  add({"importance.floor",
-       "Importance floor",
-       "Warp",
-       ParamType::Float,
-       0.01,
-       0,
-       1,
-       0.01,
-       {},
-       "Minimum importance as a share of the maximum, so no region collapses to zero texels."});
-  add({"tessellation",
-       "Tessellation",
-       "Warp",
-       ParamType::Bool,
-       1,
-       0,
-       1,
-       1,
-       {},
-       "Tessellate while rendering the warped map so long triangles bend with the warp."});
-  add({"tessellation.tolerance",
-       "Bend tolerance",
-       "Warp",
-       ParamType::Float,
-       1.0,
-       0.01,
-       16,
-       0.05,
-       {},
-       "Tessellation level from the warped edge: how far the warp bends it from a straight "
-       "line, in texels; level = ceil(sqrt(bend / tolerance)), at most " +
-           std::to_string(kMaxTessellationLevel) +
-           ". Depth is exact whatever the level: this only shapes silhouettes."});
+  add({.key = "im.resolution",
+       .label = "IM resolution",
+       .group = "Importance",
+       .type = ParamType::Int,
+       .defaultValue = 512,
+       .minValue = 32,
+       .maxValue = SL_IM_MAX_RESOLUTION,
+       .step = 32,
+       .help = "Importance map width and height (light space); also the length of the 1D maps."});
+  add({.key = "importance.eye",
+       .label = "Eye distance term",
+       .group = "Importance",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Perspective aliasing: importance near/eye depth (seed 002's only term).",
+       .uniform = "u_eyeOn"});
+  add({.key = "importance.eye.weight",
+       .label = "Eye weight",
+       .group = "Importance",
+       .type = ParamType::Float,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 0.05,
+       .help = "0 = neutral, 1 = the full near/depth falloff.",
+       .uniform = "u_eyeWeight"});
+  add({.key = "importance.orientation",
+       .label = "Orientation term",
+       .group = "Importance",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Projection aliasing: cos(theta_eye) / cos(theta_light) of the surface.",
+       .uniform = "u_orientationOn"});
+  add({.key = "importance.orientation.weight",
+       .label = "Orientation weight",
+       .group = "Importance",
+       .type = ParamType::Float,
+       .defaultValue = 0.5,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 0.05,
+       .help = "0 = neutral, 1 = the full cosine ratio.",
+       .uniform = "u_orientationWeight"});
+  add({.key = "importance.edge",
+       .label = "Shadow-edge term",
+       .group = "Importance",
+       .type = ParamType::Bool,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Extra importance within 2 px of a shadow edge of the previous frame.",
+       .uniform = "u_edgeOn"});
+  add({.key = "importance.stride",
+       .label = "Pixel stride",
+       .group = "Importance",
+       .type = ParamType::Int,
+       .defaultValue = 2,
+       .minValue = 1,
+       .maxValue = 4,
+       .step = 1,
+       .help =
+           "Backward analysis: every k-th camera pixel in x and y scatters its importance (k^2 "
+           "fewer atomics). The IM keeps the maximum per texel, and neighbouring pixels land in "
+           "the same or adjacent texels, which the blur spreads over anyway.",
+       .uniform = "u_stride"});
+  add({.key = "importance.edge.weight",
+       .label = "Edge weight",
+       .group = "Importance",
+       .type = ParamType::Float,
+       .defaultValue = 4,
+       .minValue = 0,
+       .maxValue = 16,
+       .step = 0.5,
+       .help = "A texel on a shadow edge gets (1 + weight) times the importance.",
+       .uniform = "u_edgeWeight"});
+  add({.key = "blur.radius",
+       .label = "Blur radius",
+       .group = "Warp",
+       .type = ParamType::Int,
+       .defaultValue = 4,
+       .minValue = 0,
+       .maxValue = rtw::kMaxBlurRadius,
+       .step = 1,
+       .help = "Gaussian blur radius of the 1D importance maps, in texels."});
+  add({.key = "blur.sigma",
+       .label = "Blur sigma",
+       .group = "Warp",
+       .type = ParamType::Float,
+       .defaultValue = 2,
+       .minValue = 0.1,
+       .maxValue = 16,
+       .step = 0.1,
+       .help = "Gaussian blur standard deviation, in texels."});
+  add({.key = "importance.floor",
+       .label = "Importance floor",
+       .group = "Warp",
+       .type = ParamType::Float,
+       .defaultValue = 0.01,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 0.01,
+       .help =
+           "Minimum importance as a share of the maximum, so no region collapses to zero texels.",
+       .uniform = "u_floor"});
+  add({.key = "tessellation",
+       .label = "Tessellation",
+       .group = "Warp",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Tessellate while rendering the warped map so long triangles bend with the warp.",
+       .uniform = "u_tessOn"});
+  add({.key = "tessellation.tolerance",
+       .label = "Bend tolerance",
+       .group = "Warp",
+       .type = ParamType::Float,
+       .defaultValue = 1.0,
+       .minValue = 0.01,
+       .maxValue = 16,
+       .step = 0.05,
+       .help = "Tessellation level from the warped edge: how far the warp bends it from a straight "
+               "line, in texels; level = ceil(sqrt(bend / tolerance)), at most " +
+               std::to_string(kMaxTessellationLevel) +
+               ". Depth is exact whatever the level: this only shapes silhouettes.",
+       .uniform = "u_toleranceTexels"});
   const bool da = id == "da-rtw";
   if (da)
-    add({"pca.threshold",
-         "Vibration threshold",
-         "Rotation",
-         ParamType::Float,
-         0.9999,
-         0.9,
-         1.0,
-         0.0001,
-         {},
-         "Keep the rotation while e_x > threshold (seed 000: 0.9999); 1.0 never holds."});
+    add({.key = "pca.threshold",
+         .label = "Vibration threshold",
+         .group = "Rotation",
+         .type = ParamType::Float,
+         .defaultValue = 0.9999,
+         .minValue = 0.9,
+         .maxValue = 1.0,
+         .step = 0.0001,
+         .help = "Keep the rotation while e_x > threshold (seed 000: 0.9999); 1.0 never holds."});
   std::string name, desc;
   if (id == "rtw-forward") {
     name = "RTW (forward analysis)";
@@ -337,8 +341,9 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
   const glm::ivec2 size(momentRes_);
   const glm::vec2 invSize(1.0f / float(size.x), 1.0f / float(size.y));
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindImageTexture(0, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, momentBuffer_.id());
+  glBindImageTexture(SL_RTW_IMAGE_MOMENT_IM, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
+                     GL_R32UI);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_MOMENTS, momentBuffer_.id());
   const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
   auto levelKey = [&ch](int c, size_t level) {
     return "moment." + std::string(ch[c]) + "." + std::to_string(level);
@@ -352,7 +357,7 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
     moments_.use();
     moments_.set("u_size", size);
     moments_.set("u_invSize", invSize);
-    glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
+    glDispatchCompute(groups(size.x, SL_RTW_MOMENT_GROUP), groups(size.y, SL_RTW_MOMENT_GROUP), 1);
   }
   const bool chain = momentSizes_.size() > 1;
   if (chain) {
@@ -360,7 +365,8 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
     momentsLevel1_.set("u_size", size);
     momentsLevel1_.set("u_invSize", invSize);
     momentsLevel1_.set("u_dstOffset", momentOffsets_[1]);
-    glDispatchCompute(GLuint((momentSizes_[1].x + 7) / 8), GLuint((momentSizes_[1].y + 7) / 8), 1);
+    glDispatchCompute(groups(momentSizes_[1].x, SL_RTW_MOMENT_GROUP),
+                      groups(momentSizes_[1].y, SL_RTW_MOMENT_GROUP), 1);
   }
   momentsReduce_.use();
   for (size_t l = chain ? 1 : 0; l + 1 < momentSizes_.size(); ++l) {
@@ -369,7 +375,7 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
     momentsReduce_.set("u_srcSize", momentSizes_[l]);
     momentsReduce_.set("u_srcOffset", momentOffsets_[l]);
     momentsReduce_.set("u_dstOffset", momentOffsets_[l + 1]);
-    glDispatchCompute(GLuint((dst.x + 7) / 8), GLuint((dst.y + 7) / 8), 1);
+    glDispatchCompute(groups(dst.x, SL_RTW_MOMENT_GROUP), groups(dst.y, SL_RTW_MOMENT_GROUP), 1);
   }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   momentFence_.place();
@@ -396,24 +402,19 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
   auto pass = ctx.timer.scope("importance");
   const ParamSet& p = ctx.params;
   auto setTerms = [&](const gl::Program& prog) {
-    prog.set("u_eyeOn", p.getBool("importance.eye") ? 1 : 0);
-    prog.set("u_eyeWeight", float(p.get("importance.eye.weight")));
-    prog.set("u_orientationOn", p.getBool("importance.orientation") ? 1 : 0);
-    prog.set("u_orientationWeight", float(p.get("importance.orientation.weight")));
+    // The importance.* terms are bound from their declarations (bindParams).
     prog.set("u_minCosL", 0.1f);
-    prog.set("u_edgeOn", p.getBool("importance.edge") ? 1 : 0);
-    prog.set("u_edgeWeight", float(p.get("importance.edge.weight")));
     prog.set("u_nearM", ctx.camera.nearM);
     prog.set("u_lightViewProj", lightViewProj);
     prog.set("u_cameraPos", ctx.camera.position);
     prog.set("u_cameraForward", ctx.camera.forward());
     prog.set("u_towardsLight", ctx.towardsLight);
-    prog.set("u_gPosition", 1);
-    prog.set("u_prevHard", 3);
+    prog.set("u_gPosition", SL_UNIT_G_POSITION);
+    prog.set("u_prevHard", SL_UNIT_HARD);
   };
-  glBindTextureUnit(1, ctx.gPosition.id());
-  glBindTextureUnit(2, ctx.gNormal.id());
-  glBindTextureUnit(3, ctx.prevHardMask.id());
+  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
+  glBindTextureUnit(SL_UNIT_HARD, ctx.prevHardMask.id());
   const GLuint zero = 0;
   if (importance_) glClearTexImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   if (momentIm_) glClearTexImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -423,21 +424,23 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     glClearNamedBufferData(collapsed_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     backward_.use();
     setTerms(backward_);
-    backward_.set("u_gNormal", 2);
+    backward_.set("u_gNormal", SL_UNIT_G_NORMAL);
     backward_.set("u_n", imRes_);
     backward_.set("u_writeIm", importance_ ? 1 : 0);
     backward_.set("u_writeMomentIm", momentIm_ ? 1 : 0);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_COLLAPSED, collapsed_.id());
     if (importance_)
-      glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    if (momentIm_) glBindImageTexture(1, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+      glBindImageTexture(SL_RTW_IMAGE_IM, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                         GL_R32UI);
+    if (momentIm_)
+      glBindImageTexture(SL_RTW_IMAGE_MOMENT_IM, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                         GL_R32UI);
     // One full-screen triangle into a framebuffer with no attachments, one fragment per
     // scattering pixel (every importance.stride-th in x and y).
-    const int stride = p.getInt("importance.stride");
+    const int stride = p.getInt("importance.stride");  // u_stride: bound from its declaration
     const int sw = (ctx.width + stride - 1) / stride, sh = (ctx.height + stride - 1) / stride;
-    backward_.set("u_stride", stride);
     glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
     glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, sw);
     glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, sh);
@@ -454,7 +457,7 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     forward_.set("u_cameraViewProj", ctx.cameraProj * ctx.cameraView);
     forward_.set("u_hybrid", config_.analysis == Analysis::Hybrid ? 1 : 0);
     forward_.set("u_visibilityToleranceM", 3.0f * lightTexelM);
-    ctx.sceneGpu.draw(forward_, 0);
+    ctx.sceneGpu.draw(forward_, SL_UNIT_MATERIAL);
   }
 }
 
@@ -466,10 +469,10 @@ void RtwShadowMap::buildWarpMaps(FrameContext& ctx) {
   if (!backward()) {  // backward analysis scattered straight into the 1D maps
     auto pass = ctx.timer.scope("collapse");
     collapse_.use();
-    glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
+    glBindImageTexture(SL_RTW_IMAGE_IM, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_COLLAPSED, collapsed_.id());
     collapse_.set("u_n", n);
-    glDispatchCompute(GLuint((2 * n + 63) / 64), 1, 1);
+    glDispatchCompute(groups(2 * n, SL_RTW_LINEAR_GROUP), 1, 1);
   }
   {
     auto pass = ctx.timer.scope("blur");
@@ -478,30 +481,29 @@ void RtwShadowMap::buildWarpMaps(FrameContext& ctx) {
         rtw::gaussianWeights(p.getInt("blur.radius"), float(p.get("blur.sigma")));
     int radius = int(w.size() / 2);
     blur_.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, blurred_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_COLLAPSED, collapsed_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_BLURRED, blurred_.id());
     blur_.set("u_n", n);
     blur_.set("u_radius", radius);
     glProgramUniform1fv(blur_.id(), blur_.location("u_weights"), GLsizei(w.size()), w.data());
-    glDispatchCompute(GLuint((2 * n + 63) / 64), 1, 1);
+    glDispatchCompute(groups(2 * n, SL_RTW_LINEAR_GROUP), 1, 1);
   }
   {
     auto pass = ctx.timer.scope("scan + warp");
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scanWarp_.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, blurred_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_BLURRED, blurred_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_WARP, warp_.id());
     scanWarp_.set("u_n", n);
     scanWarp_.set("u_m", int(std::bit_ceil(unsigned(n))));
-    scanWarp_.set("u_floor", float(p.get("importance.floor")));
     glDispatchCompute(2, 1, 1);
     // The inverse tables: the unwarped light uv of every warped texel centre.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     inverseWarp_.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, inverse_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_INVERSE, inverse_.id());
     inverseWarp_.set("u_n", n);
     inverseWarp_.set("u_size", smRes_);
-    glDispatchCompute(GLuint((2 * smRes_ + 63) / 64), 1, 1);
+    glDispatchCompute(groups(2 * smRes_, SL_RTW_LINEAR_GROUP), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
 }
@@ -511,16 +513,15 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
   gl::Framebuffer& fbo = warp ? smFbo_ : uniformFbo_;
   beginDepthPass(fbo.id(), smRes_, smRes_);
   warped_.use();
-  bindWarpTextures(warped_, 1);  // unit 0: the material's texture
+  bindWarpTextures(warped_, SL_UNIT_MATERIAL + 1);
   warped_.set("u_lightViewProj", lightViewProj);
   warped_.set("u_warpN", imRes_);
   warped_.set("u_warpOn", warp ? 1 : 0);
   warped_.set("u_smRes", smRes_);
-  warped_.set("u_tessOn", warp && p.getBool("tessellation") ? 1 : 0);
-  warped_.set("u_toleranceTexels", float(p.get("tessellation.tolerance")));
-  warped_.set("u_maxLevel", float(kMaxTessellationLevel));
+  bindParams(warped_, p);                 // tessellation, tessellation.tolerance
+  if (!warp) warped_.set("u_tessOn", 0);  // the unwarped contrast map: no bending
   warped_.set("u_smSize", glm::vec2(float(smRes_)));
-  ctx.sceneGpu.draw(warped_, 0, true, SceneGpu::Geometry::SplitLongTriangles);
+  ctx.sceneGpu.draw(warped_, SL_UNIT_MATERIAL, true, SceneGpu::Geometry::SplitLongTriangles);
 }
 
 void RtwShadowMap::renderShadows(FrameContext& ctx) {
@@ -546,7 +547,7 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
                                        fs, fit))
       throw std::runtime_error(*err);
   }
-  lookup_ = depthLookupState(fit, p);
+  view_ = depthMapView(fit);
   lastExtentM_ = fit.extentM;
 
   buildImportance(ctx, fit.viewProj, std::max(fit.extentM.x, fit.extentM.y) / float(imRes_));
@@ -588,7 +589,9 @@ void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
 }
 
 void RtwShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  bindDepthLookup(resolve, firstUnit, shadowMap_, lookup_);
+  bindDepthLookup(resolve, std::span(&view_, 1));
+  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
+  resolve.set("u_shadowMap", firstUnit);
   bindWarpTextures(resolve, firstUnit + 1);
   resolve.set("u_warpN", imRes_);
   resolve.set("u_warpOn", 1);
@@ -600,6 +603,11 @@ void RtwShadowMap::bindWarpTextures(const gl::Program& prog, int unit) const {
   glBindTextureUnit(GLuint(unit + 1), inverseView_.id());
   prog.set("u_warpEdges", unit);
   prog.set("u_inverseWarp", unit + 1);
+}
+
+std::vector<const gl::Program*> RtwShadowMap::programs() const {
+  return {&backward_,    &forward_, &collapse_, &blur_,          &scanWarp_,
+          &inverseWarp_, &warped_,  &moments_,  &momentsLevel1_, &momentsReduce_};
 }
 
 MemoryStats RtwShadowMap::memory() const {

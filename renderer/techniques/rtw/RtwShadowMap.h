@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algo/rtw/Rotation.h"
+#include "common/shared_constants.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 
@@ -23,7 +24,7 @@ class RtwShadowMap : public Technique {
   static TechniqueInfo info(const std::string& id);
   /// DA-RTW's PCA reads the IM reduced to at most this size (block maxima): seed 000's
   /// moments need the distribution's shape, not 512^2 texels.
-  static constexpr int kMomentImMax = 128;
+  static constexpr int kMomentImMax = SL_MOMENT_IM_MAX;  ///< common/shared_constants.h
   /// The passes of technique `id` in frame order, as timed (RtwDeclarations.cpp).
   static std::vector<PassDecl> passDecls(const std::string& id);
   /// What technique `id` publishes when asked, with the readback cost of each key.
@@ -33,6 +34,7 @@ class RtwShadowMap : public Technique {
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "rtw/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override;
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
   void resetTemporalState() override;
@@ -69,7 +71,7 @@ class RtwShadowMap : public Technique {
   std::vector<int> momentOffsets_;  ///< float offset of each level
   std::vector<glm::ivec2> momentSizes_;
   int smRes_ = 0, imRes_ = 0, momentRes_ = 0;
-  DepthLookupState lookup_;
+  DepthMapView view_;
   glm::vec2 lastExtentM_{1.0f};
   glm::vec2 momentExtentM_{1.0f};  ///< the light frustum extent the pending moments were taken in
   rtw::RotationState rotation_;

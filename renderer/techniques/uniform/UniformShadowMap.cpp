@@ -1,3 +1,4 @@
+// Uniform shadow map (UniformShadowMap.h): fit, exact depth pass, single-map lookup.
 #include "UniformShadowMap.h"
 
 #include <stdexcept>
@@ -32,7 +33,7 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
   if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
                                      FocusSettings{}, fit))
     throw std::runtime_error(*err);
-  lookup_ = depthLookupState(fit, ctx.params);
+  view_ = depthMapView(fit);
 
   if (!shadowMap_ || shadowMap_.width() != res) {
     shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
@@ -46,8 +47,9 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
 }
 
 void UniformShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  bindDepthLookup(resolve, firstUnit, shadowMap_, lookup_);
-  resolve.set("u_uniformMapSize", glm::vec2(float(shadowMap_.width()), float(shadowMap_.height())));
+  bindDepthLookup(resolve, std::span(&view_, 1));
+  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
+  resolve.set("u_shadowMap", firstUnit);
 }
 
 MemoryStats UniformShadowMap::memory() const {

@@ -140,7 +140,7 @@ std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm:
   const glm::dvec3 axis3 = glm::normalize(settings.axis.value_or(view.forward));
   const glm::dvec3 projected = settings.projectedAxis.value_or(axis3);
   std::optional<LightSpace> space = makeLightSpace(y, projected);
-  fit.lightBehindViewer = glm::dot(view.forward, y) < 0.0;
+  fit.lightBehindViewer = glm::dot(view.forward, y) < -1e-9;
   auto fallBack = [&](const std::string& why) {
     fit.uniform = true;
     fit.fallback = settings.kind != WarpKind::Uniform &&

@@ -6,6 +6,8 @@
 //   chart     the chart again from a bench CSV, x = time or memory (Bench.cpp)
 //   stability frame-to-frame stability, one technique or a suite of failure cases
 //             (Stability.cpp)
+//   storage   the storage factor of warped and partitioned shadow maps, Figs. 6-7 of
+//             Lloyd et al. 2006 (Storage.cpp)
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -334,7 +336,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) a.rest.emplace_back(argv[i]);
   try {
     if (a.rest.empty() || a.rest[0] == "--help" || a.rest[0] == "-h") {
-      std::cout << kUsage << kBenchUsage << kChartUsage << kStabilityUsage;
+      std::cout << kUsage << kBenchUsage << kChartUsage << kStabilityUsage << kStorageUsage;
       return a.rest.empty() ? 2 : 0;
     }
     const std::string& cmd = a.rest[0];
@@ -344,8 +346,9 @@ int main(int argc, char** argv) {
     if (cmd == "bench") return cmdBench(a);
     if (cmd == "stability") return cmdStability(a);
     if (cmd == "chart") return cmdChart(a);
+    if (cmd == "storage") return cmdStorage(a);
     throw UsageError("unknown command '" + cmd +
-                     "' (commands: list, render, compare, bench, chart, stability)");
+                     "' (commands: list, render, compare, bench, chart, stability, storage)");
   } catch (const UsageError& e) {
     std::cerr << "shadowlab-cli: " << e.what() << "\n";
     return 2;

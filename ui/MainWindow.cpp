@@ -1,8 +1,7 @@
-// The main window (see MainWindow.h). Panels observe the renderer through the viewport;
-// this class wires them together and owns none of the rendering.
+// The main window (see MainWindow.h): scenes, techniques, renderer events, the light, the
+// status line, publication requests, pause. Its construction is in MainWindowSetup.cpp;
+// panels observe the renderer through the viewport and the window owns none of the rendering.
 #include "MainWindow.h"
-
-#include "panels/light/LightPanel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,27 +23,25 @@
 #include <QMimeData>
 #include <QScreen>
 #include <QSettings>
-#include <QSlider>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QToolButton>
 #include <QUrl>
 
-#include <QJsonArray>
-#include <QJsonDocument>
-
-#include "CovariancePanel.h"
-#include "ImportancePanel.h"
+#include "GrabRun.h"
 #include "LaunchOptions.h"
-#include "LessonPanel.h"
+#include "LessonController.h"
 #include "MessageText.h"
-#include "MomentPanel.h"
-#include "ParamPanel.h"
-#include "ShadowMapPanel.h"
+#include "PassStepper.h"
+#include "SelfTests.h"
 #include "ShortcutsDialog.h"
-#include "TimingPanel.h"
+#include "TeachingBar.h"
 #include "ViewportWidget.h"
-#include "WarpPanel.h"
+#include "panels/common/ChartsPanel.h"
+#include "panels/common/LessonPanel.h"
+#include "panels/common/ParamPanel.h"
+#include "panels/common/TimingPanel.h"
+#include "panels/light/LightPanel.h"
 #include "scene/GltfLoader.h"
 
 namespace sl::ui {
@@ -52,14 +49,7 @@ namespace sl::ui {
 namespace {
 const QString kOpenItem = QStringLiteral("\x01open");  ///< data of the "Open…" scene item
 constexpr int kStatusMessageMs = 10000;
-constexpr int kGrabTickMs = 30;
-constexpr qint64 kGrabTimeoutMs = 120000;
 constexpr int kSettingsVersion = 2;  ///< 2: the debug panels (older layouts are not restored)
-constexpr QSize kDefaultWindowSize(1600, 1000);
-constexpr int kDefaultParamDockWidth = 390;
-constexpr int kDefaultLeftDockWidth = 440;
-constexpr int kDefaultBottomDockHeight = 300;
-const QString kOverlayKey = QStringLiteral("view.overlay");
 
 bool isGltfFile(const QString& path) {
   const QString suffix = QFileInfo(path).suffix().toLower();
@@ -111,17 +101,19 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
     if (!viewport_->errorIsCurrent()) errorLabel_->setText(tr("error —"));
   });
 
+  lessons_ = std::make_unique<LessonController>(*this);
+  passes_ = std::make_unique<PassStepper>(*this);
+  teaching_ = std::make_unique<TeachingBar>(*this);
+  grab_ = std::make_unique<GrabRun>(*this);
+  selfTests_ = std::make_unique<SelfTests>(*this);
   createActions();
   createToolBar();
   addToolBarBreak();
-  createTeachingToolBar();
+  teaching_->create();
   createDocks();
   createStatusBar();
   applyDefaultLayout();
   if (interactive_) restoreSettings();
-
-  grabTimer_.setInterval(kGrabTickMs);
-  connect(&grabTimer_, &QTimer::timeout, this, &MainWindow::grabTick);
 }
 
 MainWindow::~MainWindow() {
@@ -129,277 +121,24 @@ MainWindow::~MainWindow() {
   // still whole: the viewport's teardown signals arrive here.
   delete viewport_;
   viewport_ = nullptr;
+  // The parts hold a reference to this window: free them while it is still whole.
+  selfTests_.reset();
+  grab_.reset();
+  teaching_.reset();
+  passes_.reset();
+  lessons_.reset();
 }
 
-// --- Construction ---------------------------------------------------------------------
-
-void MainWindow::createActions() {
-  QMenu* file = menuBar()->addMenu(tr("&File"));
-  QAction* open = file->addAction(tr("&Open glTF…"), this, &MainWindow::openSceneDialog);
-  open->setShortcut(QKeySequence::Open);
-  openAction_ = open;
-  QAction* reload = file->addAction(tr("&Reload shaders"), this, [this] {
-    if (auto error = viewport_->reloadShaders())
-      report(tr("shader reload failed (the last good shaders stay in use): %1")
-                 .arg(QString::fromStdString(*error)));
-    else
-      info(tr("Shaders reloaded."));
-  });
-  reload->setShortcut(Qt::Key_F5);
-  QAction* screenshot =
-      file->addAction(tr("Save &viewport image…"), this, &MainWindow::saveScreenshot);
-  screenshot->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
-  saveImageMenu_ = file->addMenu(tr("Save &panel image"));
-  QAction* saveAll =
-      file->addAction(tr("Save window and &all panels…"), this, &MainWindow::saveAllImages);
-  saveAll->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S));
-  file->addSeparator();
-  QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-  quit->setShortcut(QKeySequence::Quit);
-
-  QMenu* view = menuBar()->addMenu(tr("&View"));
-  QAction* resetView = view->addAction(tr("&Reset view"), this, [this] { viewport_->resetView(); });
-  resetView->setShortcut(Qt::Key_Home);
-  QAction* error = view->addAction(tr("Compute &error now"), this, [this] {
-    if (!viewport_->computeErrorNow()) showStatus(tr("No frame to measure yet."));
-  });
-  error->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
-  continuousAction_ = view->addAction(tr("Render &continuously"));
-  continuousAction_->setCheckable(true);
-  continuousAction_->setShortcut(Qt::Key_F6);
-  continuousAction_->setToolTip(
-      tr("Redraw every frame (for techniques that converge over frames)"));
-  connect(continuousAction_, &QAction::toggled, viewport_, &ViewportWidget::setContinuous);
-  QAction* resetTemporal = view->addAction(tr("Reset &temporal state"), this, [this] {
-    if (auto* r = viewport_->renderer()) r->resetTemporalState();
-    viewport_->update();
-  });
-  resetTemporal->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
-  view->addSeparator();
-  QAction* cycleOverlay = view->addAction(tr("Next &overlay (none, error, aliasing, warp grid)"),
-                                          this, &MainWindow::cycleOverlay);
-  cycleOverlay->setShortcut(Qt::Key_O);
-  QAction* split =
-      view->addAction(tr("&Split view (compare two techniques)"), this, &MainWindow::toggleSplit);
-  split->setShortcut(Qt::Key_F7);
-  view->addSeparator();
-  QMenu* panels = view->addMenu(tr("&Panels"));
-  panels->setObjectName(QStringLiteral("panelsMenu"));
-  QAction* defaultLayout =
-      view->addAction(tr("&Default layout"), this, [this] { applyDefaultLayout(); });
-
-  QMenu* frame = menuBar()->addMenu(tr("F&rame"));
-  pauseAction_ = frame->addAction(tr("&Pause"));
-  pauseAction_->setCheckable(true);
-  pauseAction_->setShortcut(Qt::Key_Space);
-  pauseAction_->setShortcutContext(Qt::WindowShortcut);
-  pauseAction_->setToolTip(tr("Freeze the frame: the panels keep showing its passes (Space)"));
-  connect(pauseAction_, &QAction::toggled, this, &MainWindow::setPaused);
-  QAction* step = frame->addAction(tr("&Step one frame"), this, &MainWindow::stepFrame);
-  step->setShortcut(Qt::Key_Period);
-  step->setToolTip(tr("Render exactly one frame and pause (.)"));
-  frame->addSeparator();
-  QAction* passNext =
-      frame->addAction(tr("Step through the &passes: next"), this, [this] { stepPass(+1); });
-  passNext->setShortcut(Qt::Key_BracketRight);
-  passNext->setToolTip(
-      tr("IM → collapse → blur → scan → warped map → lookup, one pass at a "
-         "time, highlighting the panel that shows its output (])"));
-  QAction* passPrev =
-      frame->addAction(tr("Step through the passes: p&revious"), this, [this] { stepPass(-1); });
-  passPrev->setShortcut(Qt::Key_BracketLeft);
-  passStopAction_ =
-      frame->addAction(tr("Stop stepping through the passes"), this, &MainWindow::stopPassStepping);
-  passStopAction_->setShortcut(Qt::Key_Escape);
-  passStopAction_->setShortcutContext(Qt::WindowShortcut);
-  passStopAction_->setEnabled(false);
-
-  QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
-  createLessonsMenu(lessons);
-
-  QMenu* help = menuBar()->addMenu(tr("&Help"));
-  QAction* shortcuts = help->addAction(tr("&Keyboard and mouse"), this, &MainWindow::showShortcuts);
-  shortcuts->setShortcut(QKeySequence::HelpContents);
-  help->addAction(tr("&About ShadowLab"), this, [this] {
-    QMessageBox::about(this, tr("About ShadowLab"),
-                       tr("<b>ShadowLab %1</b><p>An interactive visual debugger and teaching tool "
-                          "for adaptive shadow maps.</p>")
-                           .arg(QCoreApplication::applicationVersion()));
-  });
-
-  commandActions_ = {open,      reload,        screenshot,        saveAll,       quit,
-                     resetView, error,         continuousAction_, resetTemporal, cycleOverlay,
-                     split,     defaultLayout, shortcuts};
-  // Shortcuts work wherever the focus is (also while the viewport has it).
-  for (QAction* a : commandActions_) a->setShortcutContext(Qt::ApplicationShortcut);
-  // Frame stepping keys: plain keys, so only while the main window has the focus (typing
-  // in a field still works: editors take printable keys before shortcuts).
-  for (QAction* a : {step, passNext, passPrev}) a->setShortcutContext(Qt::WindowShortcut);
-  commandActions_ << pauseAction_ << step << passNext << passPrev << passStopAction_;
-  for (QAction* a : lessons->actions())
-    if (!a->shortcut().isEmpty()) commandActions_ << a;
+void MainWindow::startGrab(const QString& dir, int frames) {
+  grab_->start(dir, frames);
 }
 
-QToolBar* MainWindow::addFixedToolBar(const QString& title, const QString& objectName) {
-  QToolBar* bar = addToolBar(title);
-  bar->setObjectName(objectName);
-  bar->setMovable(false);
-  bar->setFloatable(false);
-  return bar;
+bool MainWindow::startLesson(const QString& lesson) {
+  return lessons_->start(lesson);
 }
 
-void MainWindow::addToolBarLabel(QToolBar* bar, const QString& text) {
-  auto* label = new QLabel(text);
-  label->setContentsMargins(8, 0, 4, 0);
-  bar->addWidget(label);
-}
-
-void MainWindow::createToolBar() {
-  QToolBar* bar = addFixedToolBar(tr("Main"), QStringLiteral("mainToolBar"));
-  auto addLabel = [bar](const QString& text) { addToolBarLabel(bar, text); };
-
-  addLabel(tr("Scene"));
-  sceneCombo_ = new QComboBox;
-  sceneCombo_->setObjectName(QStringLiteral("sceneCombo"));
-  sceneCombo_->setMinimumContentsLength(14);
-  sceneCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  sceneCombo_->setToolTip(tr("Built-in scenes, or open a .gltf/.glb file"));
-  for (const std::string& name : sl::builtinSceneNames())
-    sceneCombo_->addItem(QString::fromStdString(name), QString::fromStdString(name));
-  sceneCombo_->insertSeparator(sceneCombo_->count());
-  sceneCombo_->addItem(tr("Open…"), kOpenItem);
-  connect(sceneCombo_, &QComboBox::activated, this, &MainWindow::onSceneComboActivated);
-  bar->addWidget(sceneCombo_);
-
-  addLabel(tr("Technique"));
-  techniqueCombo_ = new QComboBox;
-  techniqueCombo_->setObjectName(QStringLiteral("techniqueCombo"));
-  techniqueCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-  for (const sl::TechniqueInfo& t : sl::Renderer::techniques()) {
-    techniqueCombo_->addItem(QString::fromStdString(t.name), QString::fromStdString(t.id));
-    techniqueCombo_->setItemData(
-        techniqueCombo_->count() - 1,
-        QStringLiteral("<b>%1</b> <code>%2</code><br>%3")
-            .arg(QString::fromStdString(t.name).toHtmlEscaped(), QString::fromStdString(t.id),
-                 QString::fromStdString(t.description).toHtmlEscaped()),
-        Qt::ToolTipRole);
-  }
-  connect(techniqueCombo_, &QComboBox::activated, this, &MainWindow::onTechniqueComboActivated);
-  bar->addWidget(techniqueCombo_);
-  bar->addSeparator();
-
-  addLabel(tr("View"));
-  bookmarkCombo_ = new QComboBox;
-  bookmarkCombo_->setObjectName(QStringLiteral("bookmarkCombo"));
-  bookmarkCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-  bookmarkCombo_->setToolTip(tr("Camera bookmarks of the scene"));
-  connect(bookmarkCombo_, &QComboBox::activated, this,
-          [this](int index) { viewport_->goToBookmark(bookmarkCombo_->itemData(index).toInt()); });
-  bar->addWidget(bookmarkCombo_);
-  auto* reset = new QToolButton;
-  reset->setText(tr("Reset view"));
-  reset->setToolTip(tr("Back to the scene's first camera (Home)"));
-  connect(reset, &QToolButton::clicked, this, [this] { viewport_->resetView(); });
-  bar->addWidget(reset);
-  syncLightControls();
-}
-
-void MainWindow::createDocks() {
-  QMenu* panels = menuBar()->findChild<QMenu*>(QStringLiteral("panelsMenu"));
-
-  paramPanel_ = new ParamPanel;
-  connect(paramPanel_, &ParamPanel::paramChanged, this, [this](const QString& key) {
-    if (key.isEmpty() || key == kOverlayKey) syncOverlayCombo();
-    if (viewport_->paused()) viewport_->stepFrame();  // show the change even when paused
-    viewport_->update();
-  });
-  connect(paramPanel_, &ParamPanel::editRefused, this,
-          [this](const QString& message) { report(message); });
-  paramDock_ = new QDockWidget(tr("Parameters"), this);
-  paramDock_->setObjectName(QStringLiteral("parameters"));
-  paramDock_->setWidget(paramPanel_);
-  paramDock_->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
-  addDockWidget(Qt::RightDockWidgetArea, paramDock_);
-
-  timingPanel_ = new TimingPanel;
-  timingDock_ = new QDockWidget(tr("Timing"), this);
-  timingDock_->setObjectName(QStringLiteral("timing"));
-  timingDock_->setWidget(timingPanel_);
-  addDockWidget(Qt::BottomDockWidgetArea, timingDock_);
-
-  for (QDockWidget* dock : {paramDock_, timingDock_}) {
-    QAction* toggle = dock->toggleViewAction();
-    panels->addAction(toggle);
-  }
-  paramDock_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_1));
-  timingDock_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
-  commandActions_ << paramDock_->toggleViewAction() << timingDock_->toggleViewAction();
-  createPanelDocks();
-}
-
-void MainWindow::createStatusBar() {
-  QStatusBar* bar = statusBar();
-  auto permanent = [bar](const QString& name, const QString& tip) {
-    auto* label = new QLabel;
-    label->setObjectName(name);
-    label->setToolTip(tip);
-    label->setContentsMargins(8, 0, 8, 0);
-    bar->addPermanentWidget(label);
-    return label;
-  };
-  sceneLabel_ = permanent(QStringLiteral("sceneStatus"), tr("Scene shown"));
-  frameLabel_ = permanent(QStringLiteral("frameStatus"),
-                          tr("Time of the last frame, and how it was measured"));
-  errorLabel_ =
-      permanent(QStringLiteral("errorStatus"),
-                tr("Shadow error of the current view against the exact ray-traced reference "
-                   "(percent of covered pixels; computed once the view is still, or Ctrl+E)"));
-  glLabel_ = permanent(QStringLiteral("glStatus"), tr("OpenGL renderer"));
-  frameLabel_->setMinimumWidth(frameLabel_->fontMetrics().horizontalAdvance(
-                                   QStringLiteral("frame 999.9 ms (glFinish+wallclock)")) +
-                               16);
-  frameLabel_->setText(tr("frame —"));
-  errorLabel_->setText(tr("error —"));
-  glLabel_->setText(tr("GL —"));
-  statusBar()->showMessage(tr("Starting the renderer…"));
-  connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& shown) {
-    if (shown.isEmpty()) statusBar()->setToolTip(QString());
-  });
-}
-
-void MainWindow::applyDefaultLayout() {
-  const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
-  QSize size = kDefaultWindowSize;
-  if (screen) size = size.boundedTo(screen->availableGeometry().size());
-  // Right: Parameters | Lesson | Charts. Left: Importance map over Covariance. Bottom: Warp
-  // functions | Shadow map | Moment mip chain | Timing.
-  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-    dock->setFloating(false);
-    dock->show();
-  }
-  addDockWidget(Qt::RightDockWidgetArea, paramDock_);
-  addDockWidget(Qt::RightDockWidgetArea, lessonDock_);
-  tabifyDockWidget(paramDock_, lessonDock_);
-  addDockWidget(Qt::RightDockWidgetArea, chartsDock_);
-  tabifyDockWidget(lessonDock_, chartsDock_);
-  addDockWidget(Qt::LeftDockWidgetArea, importanceDock_);
-  addDockWidget(Qt::LeftDockWidgetArea, covarianceDock_);
-  splitDockWidget(importanceDock_, covarianceDock_, Qt::Vertical);
-  addDockWidget(Qt::BottomDockWidgetArea, warpDock_);
-  for (QDockWidget* dock : {shadowMapDock_, momentDock_, timingDock_}) {
-    addDockWidget(Qt::BottomDockWidgetArea, dock);
-    tabifyDockWidget(warpDock_, dock);
-  }
-  paramDock_->raise();
-  warpDock_->raise();
-  // Last: while the docks moved, a stale minimum may have widened the window; settle the
-  // layout first, or the pending activation would undo the resize.
-  layout()->invalidate();
-  layout()->activate();
-  resize(size);
-  resizeDocks({paramDock_, importanceDock_}, {kDefaultParamDockWidth, kDefaultLeftDockWidth},
-              Qt::Horizontal);
-  resizeDocks({warpDock_}, {kDefaultBottomDockHeight}, Qt::Vertical);
+void MainWindow::startSelfTest(const QString& name, const QString& argument) {
+  selfTests_->start(name, argument);
 }
 
 void MainWindow::restoreSettings() {
@@ -463,7 +202,7 @@ bool MainWindow::loadScene(const QString& nameOrPath) {
   sceneSpec_ = nameOrPath;
   viewport_->setScene(result.scene);
   timingPanel_->resetHistory();
-  for (auto& [dock, panel] : publicationDocks_) panel->resetHistory();
+  docks_.resetHistory();
   const sl::Scene& scene = *viewport_->scene();
   sceneLabel_->setText(
       tr("%1 · %2 triangles")
@@ -507,7 +246,7 @@ void MainWindow::onSceneComboActivated(int index) {
 
 void MainWindow::openSceneDialog() {
   // Self-tests drive Qt's own dialog (and never touch the user's settings).
-  const bool test = !selfTest_.isEmpty();
+  const bool test = selfTests_->running();
   const QString dir =
       interactive_ ? QSettings().value(QStringLiteral("scene/openDir"), QDir::homePath()).toString()
                    : QDir::currentPath();
@@ -553,9 +292,9 @@ void MainWindow::setTechnique(const QString& id) {
     report(QString::fromStdString(*error));
   } else {
     timingPanel_->resetHistory();
-    for (auto& [dock, panel] : publicationDocks_) panel->resetHistory();
+    docks_.resetHistory();
     if (rendererBound_) rebuildParamPanel();
-    if (passIndex_ >= 0) stopPassStepping();
+    passes_->stop();
   }
   syncTechniqueCombo();
   updateTitle();
@@ -598,13 +337,12 @@ void MainWindow::onRendererReady() {
       report(QString::fromStdString(*error));
   pendingAssignments_.clear();
   rendererBound_ = true;
-  grabFramesRendered_ = 0;
+  grab_->resetFrameCount();
   rebuildParamPanel();
   syncTechniqueCombo();
-  syncOverlayCombo();
+  teaching_->syncOverlayCombo();
   updatePublishing();
-  if (!lastSplitTechnique_.isEmpty() && splitCombo_->currentIndex() > 0)
-    setSplitTechnique(lastSplitTechnique_);
+  teaching_->restoreSplit();
   updateTitle();
   const QString gl = QString::fromStdString(renderer->glDescription());
   glLabel_->setText(shortGlName(gl));
@@ -616,7 +354,7 @@ void MainWindow::onRendererReady() {
 void MainWindow::onRendererAboutToBeDestroyed() {
   rendererBound_ = false;
   paramPanel_->clear();
-  if (overlayCombo_) overlayCombo_->setEnabled(false);
+  if (teaching_) teaching_->setRendererAvailable(false);
 }
 
 void MainWindow::onFrameRendered() {
@@ -628,27 +366,22 @@ void MainWindow::onFrameRendered() {
                            .arg(stats.timingMethod.empty()
                                     ? tr("untimed")
                                     : QString::fromStdString(stats.timingMethod)));
+  timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
   timingPanel_->showStats(stats);
-  if (rendererBound_) ++grabFramesRendered_;
-  if (publicationIsCurrent()) {
-    feedPanels(false);
-    if (passWaitingForFrame_) {
-      passWaitingForFrame_ = false;
-      passIndex_ = 0;
-      showPass();
-    }
-  }
+  if (rendererBound_) grab_->countFrame();
+  if (docks_.isCurrent(*renderer, false)) docks_.feed(*renderer, false);
+  passes_->onFrameRendered();
 }
 
 void MainWindow::onRenderProblem(const QString& message) {
-  if (grabTimer_.isActive()) grabProblems_ << message;
+  grab_->noteProblem(message);
   report(message);
 }
 
 void MainWindow::onInitializationFailed(const QString& message) {
   if (failed_) return;
   failed_ = true;
-  grabTimer_.stop();
+  grab_->stop();
   report(message, tr("OpenGL problem"));
   QCoreApplication::exit(1);
 }
@@ -719,61 +452,91 @@ void MainWindow::report(const QString& message, const QString& dialogTitle) {
   box.exec();
 }
 
-// --- --grab ------------------------------------------------------------------------------
+// --- Publications, pause and frame stepping, images ---------------------------------------
 
-void MainWindow::startGrab(const QString& dir, int frames) {
-  grabDir_ = dir;
-  grabFrames_ = frames;
-  grabProblems_.clear();
-  grabClock_.start();
-  grabTimer_.start();
+void MainWindow::onChartsConfigurationChosen(const QString& id, const QStringList& assignments) {
+  if (id.toStdString() != viewport_->techniqueId()) setTechnique(id);
+  sl::Renderer* r = viewport_->renderer();
+  if (!r || id.toStdString() != r->techniqueId()) return;
+  for (const QString& a : assignments) {
+    const std::string key = a.section(QLatin1Char('='), 0, 0).toStdString();
+    sl::ParamSet& set = r->params().has(key) ? r->params() : r->rendererParams();
+    if (auto e = set.setFromString(key, a.section(QLatin1Char('='), 1).toStdString()))
+      report(QString::fromStdString(*e));
+  }
+  rebuildParamPanel();
+  viewport_->update();
+  info(tr("Charts: showing %1 %2").arg(id, assignments.join(QLatin1Char(' '))));
 }
 
-void MainWindow::grabTick() {
-  if (failed_) return grabTimer_.stop();
-  if (!rendererBound_) {
-    if (grabClock_.elapsed() > kGrabTimeoutMs) {
-      grabTimer_.stop();
-      report(tr("--grab: the renderer did not start within %1 s (no OpenGL context?)")
-                 .arg(kGrabTimeoutMs / 1000));
-      QCoreApplication::exit(1);
-    }
+void MainWindow::updatePublishing() {
+  sl::Renderer* r = viewport_ ? viewport_->renderer() : nullptr;
+  if (!r) return;
+  std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
+  // A grab's published.json holds every number the technique declares (they cost no readback).
+  if (grab_->running())
+    if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))
+      for (const sl::PublicationDecl& d : info->publications)
+        if (d.kind == sl::PublicationKind::Number) keys.insert(d.key);
+  r->requestPublications(std::move(keys));
+}
+
+void MainWindow::updateBanner() {
+  if (!passes_->bannerTitle().isEmpty())
+    viewport_->setBanner(passes_->bannerTitle(), passes_->bannerText());
+  else
+    viewport_->setBanner(lessons_->bannerTitle(), lessons_->bannerText());
+}
+
+void MainWindow::setPaused(bool paused) {
+  if (pauseAction_->isChecked() != paused) {
+    pauseAction_->setChecked(paused);  // re-enters through toggled
     return;
   }
-  if (grabFramesRendered_ < grabFrames_) {
+  viewport_->setPaused(paused);
+  if (!paused) passes_->stop();
+  info(paused ? tr("Paused: . renders one frame, ] steps through its passes, Space resumes.")
+              : tr("Running."));
+}
+
+void MainWindow::stepFrame() {
+  if (!viewport_->paused()) setPaused(true);
+  viewport_->stepFrame();
+  passes_->restartAtNextFrame();  // stepping passes: start again at the new frame's first
+}
+
+bool MainWindow::waitForFrames(int frames, int timeoutMs) {
+  const std::uint64_t target = viewport_->framesRendered() + static_cast<std::uint64_t>(frames);
+  QElapsedTimer clock;
+  clock.start();
+  while (viewport_->framesRendered() < target) {
     viewport_->update();
-    return;
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    if (clock.elapsed() > timeoutMs) return false;
   }
-  grabTimer_.stop();
-  finishGrab();
+  return true;
 }
 
-void MainWindow::finishGrab() {
-  // The status line shows the error of the grabbed view. Then freeze the frame, so that
-  // the window, the viewport, every panel and published.json show the same frame.
-  viewport_->computeErrorNow();
-  waitForFrames(1);  // the error overlay, when on, needs a frame drawn with the reference
-  viewport_->setPaused(true, false);
-  QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-  feedPanels(true);
+void MainWindow::savePanelImage(QDockWidget* dock) {
+  const QString name = QStringLiteral("shadowlab-%1.png").arg(dock->objectName());
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Save panel image"), QDir::home().filePath(name), tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  if (dock->grab().toImage().save(path))
+    showStatus(tr("Saved %1").arg(path), kStatusMessageMs);
+  else
+    report(tr("cannot write %1").arg(path), tr("Save panel image"));
+}
 
-  QStringList failures;
-  if (!QDir().mkpath(grabDir_)) failures << tr("cannot create directory %1").arg(grabDir_);
-  if (failures.isEmpty()) failures << writeImages(grabDir_, true);
-  if (failures.isEmpty()) {
-    const QString path = QDir(grabDir_).absoluteFilePath(QStringLiteral("published.json"));
-    QFile file(path);
-    if (file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
-        file.write(QJsonDocument(publicationJson()).toJson()) > 0) {
-      std::printf("%s\n", path.toLocal8Bit().constData());
-    } else {
-      failures << tr("cannot write %1").arg(path);
-    }
-  }
-  std::fflush(stdout);
-  for (const QString& problem : grabProblems_) failures << tr("while rendering: %1").arg(problem);
-  for (const QString& f : failures) printErr(f);
-  QCoreApplication::exit(failures.isEmpty() ? 0 : 1);
+void MainWindow::saveAllImages() {
+  const QString dir = QFileDialog::getExistingDirectory(this, tr("Save window and all panels into"),
+                                                        QDir::homePath());
+  if (dir.isEmpty()) return;
+  const QStringList failures = grab_->writeImages(dir, false);
+  if (failures.isEmpty())
+    showStatus(tr("Saved the window and every panel in %1").arg(dir), kStatusMessageMs);
+  else
+    report(failures.join(QLatin1Char('\n')), tr("Save images"));
 }
 
 }  // namespace sl::ui

@@ -1,8 +1,8 @@
 // The main window: the viewport in the middle, dockable panels around it (Parameters,
-// Lesson, Importance map, Covariance, Warp functions, Moment mip chain, Shadow map, Timing),
-// toolbars for scene / technique / camera, the Light dock and for overlays, split view, pause,
-// frame and pass stepping, the Lessons menu, and the status line. Also drives `--grab` runs and the
-// `--self-test` checks.
+// Timing, Lesson, Light, Charts and the publication panels of panels/PanelRegistry.h),
+// toolbars for scene / technique / camera, the status line. Its parts live in their own
+// classes: TeachingBar (overlays, split view, pause), PassStepper, LessonController,
+// GrabRun (`--grab`) and SelfTests (`--self-test`).
 #pragma once
 
 #include <memory>
@@ -15,11 +15,12 @@
 #include <QStringList>
 #include <QTimer>
 
+#include "PublicationDocks.h"
+
 class QComboBox;
 class QToolBar;
 class QDockWidget;
 class QLabel;
-class QSlider;
 
 namespace sl {
 struct Scene;
@@ -29,19 +30,17 @@ struct Publication;
 namespace sl::ui {
 
 class ChartsPanel;
-class CovariancePanel;
-class ImportancePanel;
+class GrabRun;
+class LessonController;
 class LessonPanel;
 class LightPanel;
-class MomentPanel;
 class ParamPanel;
-class PublicationPanel;
-class ShadowMapPanel;
+class PassStepper;
+class SelfTests;
 class ShortcutsDialog;
+class TeachingBar;
 class TimingPanel;
 class ViewportWidget;
-class WarpPanel;
-struct Lesson;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -86,12 +85,22 @@ class MainWindow : public QMainWindow {
   void dropEvent(QDropEvent* event) override;
 
  private:
+  // The helpers below are the window's parts; each works on the window's widgets.
+  friend class GrabRun;
+  friend class LessonController;
+  friend class PassStepper;
+  friend class SelfTests;
+  friend class TeachingBar;
+
   void createActions();
   void createToolBar();
   /// A toolbar that cannot be moved or floated (layout stays predictable for lessons).
   QToolBar* addFixedToolBar(const QString& title, const QString& objectName);
   static void addToolBarLabel(QToolBar* bar, const QString& text);
   void createDocks();
+  void createPanelDocks();
+  QDockWidget* addPanelDock(QWidget* panel, const QString& title, const QString& name,
+                            Qt::DockWidgetArea area);
   void createStatusBar();
   void restoreSettings();
   void saveSettings();
@@ -104,6 +113,7 @@ class MainWindow : public QMainWindow {
   void onErrorComputed(double errorPct);
   void onSceneComboActivated(int index);
   void onTechniqueComboActivated(int index);
+  void onChartsConfigurationChosen(const QString& id, const QStringList& assignments);
 
   void openSceneDialog();
   void rebuildParamPanel();
@@ -114,62 +124,19 @@ class MainWindow : public QMainWindow {
   void updateTitle();
   void showShortcuts();
   void saveScreenshot();
-
-  void createTeachingToolBar();
-  void createPanelDocks();
-  void createLessonsMenu(QMenu* menu);
-  QDockWidget* addPanelDock(QWidget* panel, const QString& title, const QString& name,
-                            Qt::DockWidgetArea area);
-
-  // Lessons.
-  void applyLesson(int index);
-  void updateBanner();
-
-  // Panels that observe the Publication.
-  void updatePublishing();
-  /// Gives the current publication to the visible panels (`all`: to every panel).
-  void feedPanels(bool all);
-  bool publicationIsCurrent() const;
-
-  // Pause, frame and pass stepping.
-  void setPaused(bool paused);
-  void stepFrame();
-  void stepPass(int delta);
-  void stopPassStepping();
-  void showPass();
-
-  // Overlays and split view (bound to the renderer's `view.overlay` declaration).
-  void syncOverlayCombo();
-  void setOverlay(int value);
-  void cycleOverlay();
-  void setSplitTechnique(const QString& id);
-  void toggleSplit();
-
-  // Screenshots.
   void savePanelImage(QDockWidget* dock);
   void saveAllImages();
-  /// window.png, viewport.png and panel-<name>.png into `dir`; returns failures.
-  QStringList writeImages(const QString& dir, bool printPaths);
-  QJsonObject publicationJson() const;
 
-  void grabTick();
-  void finishGrab();
-
-  // Self-tests (MainWindowSelfTest.cpp).
+  /// Requests from the renderer the keys of the visible publication panels (every panel's
+  /// while a grab runs or passes are stepped); a hidden dock requests nothing.
+  void updatePublishing();
+  /// The banner over the view: the pass being stepped, else the lesson.
+  void updateBanner();
+  void setPaused(bool paused);
+  void stepFrame();
+  /// Renders until `frames` more frames are drawn (self-tests, grabs); false on timeout.
   bool waitForFrames(int frames, int timeoutMs = 30000);
-  bool selfTestParams();
-  /// bad-gltf=FILE[,FILE…]: each broken file opened through File > Open, then dropped on
-  /// the window; each time the error is shown (elided) and the scene stays.
-  bool selfTestBadGltf(const QString& paths);
-  void selfTestBadGltfOpen(const QString& path, bool drop);
-  /// Pass stepping, overlays, split view and lessons; PNGs of each step into `dir`.
-  bool selfTestTeaching(const QString& dir);
-  /// A tiny Charts sweep, its PNG into `dir`, and a click on a point switching the view.
-  bool selfTestCharts(const QString& dir);
-  /// Part of selfTestCharts: x: memory and back through the combo box (axis, front).
-  bool selfTestChartsAxis(const QString& dir);
-  void selfTestCheck(bool ok, const QString& what);
-  void runSelfTest();
+
   /// stderr always; status bar; a dialog titled `title` when interactive and non-empty.
   void report(const QString& message, const QString& dialogTitle = {});
   /// A status-bar note that does not hide a problem reported in the last seconds.
@@ -185,51 +152,19 @@ class MainWindow : public QMainWindow {
   QDockWidget* paramDock_ = nullptr;
   QDockWidget* timingDock_ = nullptr;
   ShortcutsDialog* shortcuts_ = nullptr;
-
-  ImportancePanel* importancePanel_ = nullptr;
-  MomentPanel* momentPanel_ = nullptr;
-  CovariancePanel* covariancePanel_ = nullptr;
-  WarpPanel* warpPanel_ = nullptr;
-  ShadowMapPanel* shadowMapPanel_ = nullptr;
   LessonPanel* lessonPanel_ = nullptr;
-  QDockWidget* importanceDock_ = nullptr;
-  QDockWidget* momentDock_ = nullptr;
-  QDockWidget* covarianceDock_ = nullptr;
-  QDockWidget* warpDock_ = nullptr;
-  QDockWidget* shadowMapDock_ = nullptr;
   QDockWidget* lessonDock_ = nullptr;
+  QDockWidget* lightDock_ = nullptr;
   ChartsPanel* chartsPanel_ = nullptr;
   QDockWidget* chartsDock_ = nullptr;
-  /// Every dock with a panel that shows the Publication.
-  std::vector<std::pair<QDockWidget*, PublicationPanel*>> publicationDocks_;
+  /// The docks of the publication panels (panels/PanelRegistry.h), in registry order.
+  PublicationDocks docks_;
   QMenu* saveImageMenu_ = nullptr;
 
-  QComboBox* overlayCombo_ = nullptr;
-  QComboBox* splitCombo_ = nullptr;
   QAction* pauseAction_ = nullptr;
   QAction* openAction_ = nullptr;
-  QAction* bannerAction_ = nullptr;
   QAction* passStopAction_ = nullptr;
-  QString lastSplitTechnique_;
-
-  std::vector<Lesson> lessons_;
-  int lessonIndex_ = -1;
-
-  struct PassStep {
-    QString id;                   ///< what the panels highlight ("im", "collapse", ...)
-    QString title;                ///< "Importance map"
-    QString text;                 ///< what the pass does and what to look at
-    QDockWidget* dock = nullptr;  ///< the panel showing its output (null: the view)
-  };
-  std::vector<PassStep> passSteps_;
-  int passIndex_ = -1;  ///< -1: not stepping
-  bool passWaitingForFrame_ = false;
-  bool pausedBeforePasses_ = false;
   bool dialogs_ = false;  ///< message boxes for problems (interactive runs and self-tests)
-
-  // --self-test
-  QString selfTest_, selfTestArgument_;
-  int selfTestFailures_ = 0;
 
   QComboBox* sceneCombo_ = nullptr;
   QComboBox* techniqueCombo_ = nullptr;
@@ -247,16 +182,15 @@ class MainWindow : public QMainWindow {
   bool failed_ = false;
   QElapsedTimer lastProblemClock_;  ///< since the last report()
 
-  // --grab
-  QString grabDir_;
-  int grabFrames_ = 0;
-  int grabFramesRendered_ = 0;
-  QStringList grabProblems_;
-  QTimer grabTimer_;
-  QElapsedTimer grabClock_;
-
   QList<QAction*> commandActions_;  ///< listed in the Help window
   QAction* continuousAction_ = nullptr;
+
+  // Parts of the window (created in the constructor, in this order).
+  std::unique_ptr<LessonController> lessons_;
+  std::unique_ptr<PassStepper> passes_;
+  std::unique_ptr<TeachingBar> teaching_;
+  std::unique_ptr<GrabRun> grab_;
+  std::unique_ptr<SelfTests> selfTests_;
 };
 
 }  // namespace sl::ui

@@ -30,10 +30,6 @@
 namespace sl::cli {
 
 #if SHADOWLAB_CLI_CHARTS
-namespace {
-
-/// A QApplication on the offscreen platform (Qt Charts draws with widgets' fonts and
-/// styles). Made once, on first use, after any GL work has its own EGL context.
 void ensureOffscreenApplication() {
   if (QCoreApplication::instance()) return;
   setenv("QT_QPA_PLATFORM", "offscreen", 1);
@@ -51,8 +47,6 @@ void ensureOffscreenApplication() {
   static char* argv[] = {name, nullptr};
   static QApplication app(argc, argv);
 }
-
-}  // namespace
 #endif
 
 std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>& points,

@@ -31,6 +31,12 @@ struct ChartSpec {
   int width = 1280, height = 800;  ///< pixels
 };
 
+#if SHADOWLAB_CLI_CHARTS
+/// A QApplication on the offscreen platform (Qt Charts draws with widgets' fonts and
+/// styles). Made once, on first use, after any GL work has its own EGL context.
+void ensureOffscreenApplication();
+#endif
+
 /// Renders the chart to `pngPath`. Returns an error when it cannot (no Qt Charts in this
 /// build, no points, the file cannot be written).
 std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>& points,

@@ -13,7 +13,12 @@ int cmdStability(Args& args);
 /// `chart`: the chart again from a bench CSV, x = time or memory (`--x`). Bench.cpp.
 int cmdChart(Args& args);
 
+/// `storage`: the storage factor of warped and partitioned shadow maps (Lloyd et al. 2006):
+/// S, M_x, M_z for one light, the paper's Figs. 6 and 7 as PNG and CSV. Storage.cpp.
+int cmdStorage(Args& args);
+
 extern const char* const kBenchUsage;
+extern const char* const kStorageUsage;
 extern const char* const kStabilityUsage;
 extern const char* const kChartUsage;
 

@@ -155,7 +155,13 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
   FrameSample s;
   Renderer& r = *renderer_;
   r.setCamera(camera);
-  r.setPublishing(options.publishing && publishingWanted_);
+  // Only the numbers (rotation, PCA): no image or curve is read back while measuring.
+  std::set<std::string> numberKeys;
+  if (options.publishing && publishingWanted_)
+    if (const TechniqueInfo* info = Renderer::findTechnique(r.techniqueId()))
+      for (const PublicationDecl& d : info->publications)
+        if (d.kind == PublicationKind::Number) numberKeys.insert(d.key);
+  r.requestPublications(std::move(numberKeys));
   auto collectGlErrors = [&s] {
     for (std::string& e : drainGlErrors()) s.glErrors.push_back(std::move(e));
   };

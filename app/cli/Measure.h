@@ -80,7 +80,7 @@ struct FrameSample {
 struct MeasureOptions {
   int width = 640, height = 360;
   bool reference = true;    ///< Embree reference: error, flicker
-  bool publishing = false;  ///< ask for published numbers (rotation); costs readbacks
+  bool publishing = false;  ///< ask for the published numbers (rotation): no readback
 };
 
 /// One configuration with its own renderer (needs the current GL context).

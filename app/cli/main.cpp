@@ -6,6 +6,8 @@
 //   chart     the chart again from a bench CSV, x = time or memory (Bench.cpp)
 //   stability frame-to-frame stability, one technique or a suite of failure cases
 //             (Stability.cpp)
+//   storage   the storage factor of warped and partitioned shadow maps, Figs. 6-7 of
+//             Lloyd et al. 2006 (Storage.cpp)
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -70,18 +72,18 @@ struct Warmup {
   bool temporal = false;  ///< the technique has a temporal rotation
 };
 
-/// For a technique with a temporal rotation: unmeasured frames (publishing on, to read
-/// the rotation's numbers) until a frame's estimate leaves R unchanged, at most
+/// For a technique with a temporal rotation: unmeasured frames (the rotation's numbers
+/// requested) until a frame's estimate leaves R unchanged, at most
 /// kMaxRotationWarmup. The measured frames then run without publishing.
 Warmup warmUpRotation(sl::Renderer& r, const RenderConfig& cfg) {
   Warmup w;
   if (!hasTemporalRotation(r.techniqueId())) return w;
   w.temporal = true;
   w.settled = false;
-  r.setPublishing(true);
+  r.requestPublications({"pca.valid", "rotation.held", "rotation.step_deg"});
   while (w.frames < kMaxRotationWarmup && !w.settled) {
     if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) {
-      r.setPublishing(false);
+      r.requestPublications({});
       throw std::runtime_error(*e);
     }
     ++w.frames;
@@ -97,7 +99,7 @@ Warmup warmUpRotation(sl::Renderer& r, const RenderConfig& cfg) {
     w.settled = *valid == 0 || number("rotation.held").value_or(0) != 0 ||
                 number("rotation.step_deg").value_or(1) == 0;
   }
-  r.setPublishing(false);
+  r.requestPublications({});
   return w;
 }
 
@@ -339,7 +341,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) a.rest.emplace_back(argv[i]);
   try {
     if (a.rest.empty() || a.rest[0] == "--help" || a.rest[0] == "-h") {
-      std::cout << kUsage << kBenchUsage << kChartUsage << kStabilityUsage;
+      std::cout << kUsage << kBenchUsage << kChartUsage << kStabilityUsage << kStorageUsage;
       return a.rest.empty() ? 2 : 0;
     }
     const std::string& cmd = a.rest[0];
@@ -349,8 +351,9 @@ int main(int argc, char** argv) {
     if (cmd == "bench") return cmdBench(a);
     if (cmd == "stability") return cmdStability(a);
     if (cmd == "chart") return cmdChart(a);
+    if (cmd == "storage") return cmdStorage(a);
     throw UsageError("unknown command '" + cmd +
-                     "' (commands: list, render, compare, bench, chart, stability)");
+                     "' (commands: list, render, compare, bench, chart, stability, storage)");
   } catch (const UsageError& e) {
     std::cerr << "shadowlab-cli: " << e.what() << "\n";
     return 2;

@@ -12,7 +12,7 @@
 
 #include "GlSupport.h"
 #include "LaunchOptions.h"
-#include "LessonPanel.h"
+#include "panels/common/LessonPanel.h"
 #include "MainWindow.h"
 #include "Theme.h"
 #include "core/Renderer.h"

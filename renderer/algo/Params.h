@@ -1,6 +1,7 @@
 // Parameter declarations: every tunable value of ShadowLab is declared once here-style
-// (key, label, group, default, range, help) and the UI panel, the command line
-// (--set key=value), JSON presets and the tests all read that one declaration.
+// (key, label, group, default, range, help, the shader uniform it sets) and the UI panel,
+// the command line (--set key=value), JSON presets, the shaders' uniform binding and the
+// tests all read that one declaration. Write them with designated initialisers.
 #pragma once
 
 #include <map>
@@ -24,6 +25,12 @@ struct ParamDecl {
   double step = 0.0;                   ///< UI step (0: type default)
   std::vector<std::string> enumNames;  ///< for Enum: value i is enumNames[i]
   std::string help;                    ///< one or two sentences, shown as tooltip and by `list`
+  /// The GLSL uniform this parameter sets, bound by bindParams (core/ParamBinding.h) to
+  /// every program of the technique that declares it; empty when no shader reads the value
+  /// as is (e.g. the C++ turns it into something else first). The uniform's GLSL type
+  /// follows `type`: Float -> float, Int / Bool / Enum -> int. A name that none of the
+  /// technique's programs declares makes the technique fail to create.
+  std::string uniform;
 };
 
 /// Human readable range, e.g. "64..16384", "0..1", "on|off", "pcf-none|pcf-3x3".

@@ -1,3 +1,4 @@
+// The shared bias model as plain math (ShadowBias.h).
 #include "ShadowBias.h"
 
 #include <algorithm>
@@ -51,6 +52,29 @@ float shadowDepthBias(const ShadowBiasSettings& s, glm::vec2 gradient, glm::vec2
   float rise = std::abs(gradient.x) * localTexelUv.x + std::abs(gradient.y) * localTexelUv.y;
   rise = std::min(rise, 10.0f * texelM * depthPerM);
   return s.slopeTexels * rise + s.constantM * depthPerM;
+}
+
+glm::vec4 mapUvzw(const DepthMapFrame& map, glm::vec3 P) {
+  const glm::vec4 c = map.viewProj * glm::vec4(P, 1.0f);
+  const float w = c.w > 1e-6f ? c.w : 1e-6f;
+  return glm::vec4(glm::vec3(c) / w * 0.5f + 0.5f, w);
+}
+
+MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
+                          glm::vec3 towardsLight, glm::vec2 localTexelUv,
+                          const ShadowBiasSettings& s) {
+  const float w = mapUvzw(map, P).w;
+  const float texelM = std::max(localTexelUv.x * map.extentM.x, localTexelUv.y * map.extentM.y) * w;
+  const float cosL = std::clamp(glm::dot(N, towardsLight), -1.0f, 1.0f);
+  const float sinL = std::sqrt(std::max(1.0f - cosL * cosL, 0.0f));
+  const glm::vec3 offset = P + N * (s.normalTexels * texelM * sinL);
+  const glm::vec3 uvz = glm::vec3(mapUvzw(map, offset));
+  MapReceiver r;
+  r.uv = glm::vec2(uvz);
+  r.z = uvz.z;
+  r.gradient = receiverDepthGradient(lightPlaneMatrix(map.viewProj), N, P);
+  r.bias = shadowDepthBias(s, r.gradient, localTexelUv, texelM, windowDepthPerM(map.depthPerM, w));
+  return r;
 }
 
 }  // namespace sl

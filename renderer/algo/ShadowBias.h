@@ -61,4 +61,38 @@ float receiverDepthAt(glm::vec2 uv, float z, glm::vec2 gradient, glm::vec2 centr
 float shadowDepthBias(const ShadowBiasSettings& s, glm::vec2 gradient, glm::vec2 localTexelUv,
                       float texelM, float depthPerM);
 
+/// One depth map as the bias model sees it: a technique with several maps (an array, an
+/// atlas, cascades, cube faces) has one per map, each with its own matrix, orthographic or
+/// perspective. GLSL: u_mapViewProj / u_mapExtentM / u_mapDepthPerM[i] of
+/// depth_map_test.glsl.
+struct DepthMapFrame {
+  glm::mat4 viewProj{1.0f};  ///< world -> the map's clip space (orthographic: w = 1)
+  glm::vec2 extentM{1.0f};   ///< metres per unit of the map's light uv, at clip w = 1
+  float depthPerM = 1.0f;    ///< window depth per metre along the light, at clip w = 1
+};
+
+/// World point P in `map`: xyz = light uv and window depth (after the divide by clip w),
+/// w = clip w (1 for an orthographic map; kept >= 1e-6 behind a perspective light, where
+/// nothing is lit). GLSL: mapUvzw.
+glm::vec4 mapUvzw(const DepthMapFrame& map, glm::vec3 P);
+
+/// A pixel's receiver in the SELECTED map (GLSL: the g_receiver* of shadowLookupCoord):
+/// after the normal offset, in that map's light uv and window depth.
+struct MapReceiver {
+  glm::vec2 uv{0.0f};        ///< the map's unwarped light uv
+  float z = 0.0f;            ///< window depth
+  glm::vec2 gradient{0.0f};  ///< d(window depth) / d(the map's light uv) on the plane
+  float bias = 0.0f;         ///< slope + constant terms, window depth
+};
+
+/// The receiver of world point P with normal N in `map`, whose texels are `localTexelUv`
+/// wide (in its light uv) around P: normal offset by the largest local texel in metres at P
+/// (extent x clip w) times sin(theta_L), then the plane (through the map's full matrix)
+/// and the bias terms in that map, with the window depth per metre at P's clip w. Comparing
+/// receiverDepthAt(r.uv, r.z, r.gradient, centre) - r.bias with the depth the map stores at
+/// `centre` is the hard test.
+MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
+                          glm::vec3 towardsLight, glm::vec2 localTexelUv,
+                          const ShadowBiasSettings& s);
+
 }  // namespace sl

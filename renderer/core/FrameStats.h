@@ -42,6 +42,9 @@ struct FrameStats {
   /// frame has no passes).
   int timingFramesLate = 0;
   MemoryStats memory;
+  /// Bytes read back from the GPU this frame for the requested publications (0 when
+  /// nothing is requested), counted by the readback helpers themselves.
+  std::uint64_t publicationBytes = 0;
   double passMs(const std::string& name) const;
 };
 

@@ -9,7 +9,9 @@
 #include <span>
 #include <stdexcept>
 
+#include "common/shared_constants.h"
 #include "core/LightBinding.h"
+#include "core/ParamBinding.h"
 #include "core/SceneGpu.h"
 #include "core/Technique.h"
 #include "gl/Gl.h"
@@ -17,31 +19,47 @@
 
 namespace sl {
 
+namespace {
+/// view.overlay's names, value i at index i (SL_OVERLAY_*, composite.frag).
+std::vector<std::string> overlayNames() {
+  std::vector<std::string> names(SL_OVERLAY_GRID + 1);
+  names[SL_OVERLAY_NONE] = "none";
+  names[SL_OVERLAY_ERROR] = "error";
+  names[SL_OVERLAY_ALIASING] = "aliasing";
+  names[SL_OVERLAY_GRID] = "warp-grid";
+  return names;
+}
+}  // namespace
+
 std::vector<ParamDecl> rendererParamDecls() {
   return {
-      {"shading.ambient",
-       "Ambient",
-       "Shading",
-       ParamType::Float,
-       0.35,
-       0.0,
-       1.0,
-       0.05,
-       {},
-       "Sky light added to every surface, so shadowed areas stay readable."},
-      {"view.overlay",
-       "Overlay",
-       "View",
-       ParamType::Enum,
-       0,
-       0,
-       3,
-       1,
-       {"none", "error", "aliasing", "warp-grid"},
-       "Drawn over the scene: shadow error against the exact reference (false-lit magenta, "
-       "false-shadowed cyan; needs a computed reference for this view), perspective aliasing "
-       "m as a heat map (blue: m<1 oversampled, white: m=1, red: m>1 undersampled; log2 scale "
-       "-4..4), or the shadow-map texel grid (every 1/16 of the map) projected onto the scene."},
+      {.key = "shading.ambient",
+       .label = "Ambient",
+       .group = "Shading",
+       .type = ParamType::Float,
+       .defaultValue = 0.35,
+       .minValue = 0.0,
+       .maxValue = 1.0,
+       .step = 0.05,
+       .help = "Sky light added to every surface, so shadowed areas stay readable.",
+       .uniform = "u_ambient"},
+      {.key = "view.overlay",
+       .label = "Overlay",
+       .group = "View",
+       .type = ParamType::Enum,
+       .defaultValue = SL_OVERLAY_NONE,
+       .minValue = SL_OVERLAY_NONE,
+       .maxValue = SL_OVERLAY_GRID,
+       .step = 1,
+       .enumNames = overlayNames(),
+       .help =
+           "Drawn over the scene: shadow error against the exact reference (false-lit magenta, "
+           "false-shadowed cyan; needs a computed reference for this view), perspective aliasing "
+           "m as a heat map (blue: m<1 oversampled, white: m=1, red: m>1 undersampled; log2 scale "
+           "-4..4), or the shadow-map texel grid (every 1/" +
+           std::to_string(SL_GRID_LINES_PER_MAP) +
+           " of the selected map) projected onto the scene.",
+       .uniform = "u_overlay"},
   };
 }
 
@@ -61,6 +79,7 @@ struct Targets {
 
 struct RendererState {
   gl::ShaderLibrary shaders{gl::ShaderLibrary::defaultRoot()};
+  std::vector<TechniqueEntry> extraTechniques;  ///< RendererOptions::extraTechniques
   std::unique_ptr<gl::GpuTimer> timer;
   std::shared_ptr<const Scene> scene;
   std::unique_ptr<SceneGpu> sceneGpu;
@@ -73,7 +92,7 @@ struct RendererState {
   Renderer::FrameSizeLimit maxFrame;  ///< the context's limits, queried once
   FrameStats stats;
   Publication publication;
-  bool publishing = false;
+  std::set<std::string> requested;  ///< publication patterns (empty: publish nothing)
   std::uint64_t frameIndex = 0;
   gl::Program gbufferProgram, compositeProgram;
   std::map<std::string, gl::Program> resolvePrograms;  // per lookup shader
@@ -135,6 +154,17 @@ struct RendererState {
   }
 };
 
+void ResolveTargets::bindForCompute() const {
+  glBindTextureUnit(SL_UNIT_G_POSITION, gPosition.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, gNormal.id());
+  glBindImageTexture(SL_IMAGE_RESOLVE_HARD, hard.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+  glBindImageTexture(SL_IMAGE_RESOLVE_FILTERED, filtered.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     GL_R8);
+  glBindImageTexture(SL_IMAGE_RESOLVE_ALIASING, aliasing.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     GL_R32F);
+  glBindImageTexture(SL_IMAGE_RESOLVE_TEXEL, texel.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+}
+
 namespace {
 
 void GLAPIENTRY debugCallback(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
@@ -145,12 +175,21 @@ void GLAPIENTRY debugCallback(GLenum, GLenum type, GLuint, GLenum severity, GLsi
   if (s->glErrors.size() < 64) s->glErrors.emplace_back(message);
 }
 
+/// The built-in entry or the renderer's extra entry called `id`, or null.
+const TechniqueEntry* findEntry(const RendererState& s, std::string_view id) {
+  for (const TechniqueEntry& e : techniqueRegistry())
+    if (e.info.id == id) return &e;
+  for (const TechniqueEntry& e : s.extraTechniques)
+    if (e.info.id == id) return &e;
+  return nullptr;
+}
+
 ParamSet& paramsFor(RendererState& s, std::string_view id) {
   auto it = s.techniqueParams.find(id);
   if (it != s.techniqueParams.end()) return it->second;
-  const TechniqueInfo* info = Renderer::findTechnique(id);
-  if (!info) throw std::out_of_range("unknown technique '" + std::string(id) + "'");
-  return s.techniqueParams.emplace(std::string(id), ParamSet(info->params)).first->second;
+  const TechniqueEntry* entry = findEntry(s, id);
+  if (!entry) throw std::out_of_range("unknown technique '" + std::string(id) + "'");
+  return s.techniqueParams.emplace(std::string(id), ParamSet(entry->info.params)).first->second;
 }
 
 }  // namespace
@@ -188,6 +227,11 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
         "ShadowLab needs a core-profile OpenGL 4.5 context (got "
         "compatibility profile)");
   if (!options.shaderDir.empty()) s_->shaders = gl::ShaderLibrary(options.shaderDir);
+  s_->extraTechniques = options.extraTechniques;
+  for (const TechniqueEntry& e : s_->extraTechniques)
+    if (Renderer::findTechnique(e.info.id) || !e.create)
+      throw std::logic_error("extra technique '" + e.info.id +
+                             "': the id is taken by a built-in technique, or it has no create");
   if (options.debugOutput) {
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
@@ -205,6 +249,11 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
                                                     {GL_FRAGMENT_SHADER, "common/composite.frag"}},
                                                    {},
                                                    {}});
+  {
+    const gl::Program* own[] = {&s_->compositeProgram};
+    const std::vector<ParamDecl> decls = rendererParamDecls();
+    if (auto err = checkParamUniforms(decls, own)) throw std::logic_error(*err);
+  }
   s_->emptyVao = gl::createVertexArray();
   if (auto err = setTechnique("uniform")) throw std::runtime_error(*err);
 }
@@ -273,13 +322,16 @@ const std::shared_ptr<const Scene>& Renderer::scene() const {
 
 std::optional<std::string> Renderer::setTechnique(std::string_view id) {
   if (id == s_->techniqueId && s_->technique) return std::nullopt;
-  for (const TechniqueEntry& e : techniqueRegistry()) {
-    if (e.info.id != id) continue;
+  if (const TechniqueEntry* e = findEntry(*s_, id)) {
     try {
-      auto t = e.create(s_->shaders);
-      (void)s_->resolveProgramFor(t->lookupShader());
+      auto t = e->create(s_->shaders);
+      // Every declared uniform must exist in one of the programs it is bound to.
+      std::vector<const gl::Program*> programs = t->programs();
+      if (t->resolveMode() == ResolveMode::Lookup)
+        programs.push_back(&s_->resolveProgramFor(t->lookupShader()));
+      if (auto err = checkParamUniforms(e->info.params, programs)) throw std::logic_error(*err);
       s_->technique = std::move(t);
-      s_->techniqueId = e.info.id;
+      s_->techniqueId = e->info.id;
       (void)paramsFor(*s_, id);
       return std::nullopt;
     } catch (const std::exception& ex) {
@@ -288,6 +340,7 @@ std::optional<std::string> Renderer::setTechnique(std::string_view id) {
   }
   std::string known;
   for (const TechniqueInfo& t : techniques()) known += (known.empty() ? "" : ", ") + t.id;
+  for (const TechniqueEntry& e : s_->extraTechniques) known += ", " + e.info.id;
   return "unknown technique '" + std::string(id) + "' (known: " + known + ")";
 }
 
@@ -318,8 +371,11 @@ const Light& Renderer::light() const {
 const FrameStats& Renderer::stats() const {
   return s_->stats;
 }
-void Renderer::setPublishing(bool on) {
-  s_->publishing = on;
+void Renderer::requestPublications(std::set<std::string> patterns) {
+  s_->requested = std::move(patterns);
+}
+const std::set<std::string>& Renderer::requestedPublications() const {
+  return s_->requested;
 }
 const Publication& Renderer::publication() const {
   return s_->publication;
@@ -367,10 +423,12 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   const glm::mat4 view = s.camera.view(), proj = s.camera.projection(aspect);
   ++s.frameIndex;
   s.timer->beginFrame();
-  if (s.publishing) {
+  const bool publishing = !s.requested.empty();
+  if (publishing) {
     s.publication = Publication{};
     s.publication.frameIndex = s.frameIndex;
     s.publication.techniqueId = s.techniqueId;
+    s.publication.requested = s.requested;
   }
 
   {  // 1. Camera G-buffer.
@@ -388,7 +446,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     s.gbufferProgram.use();
     s.gbufferProgram.set("u_viewProj", proj * view);
     s.gbufferProgram.set("u_cameraPos", s.camera.position);
-    s.sceneGpu->draw(s.gbufferProgram, 0);
+    s.sceneGpu->draw(s.gbufferProgram, SL_UNIT_MATERIAL);
   }
 
   // 2. The technique's shadow passes.
@@ -408,29 +466,37 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                    *s.timer,
                    s.shaders,
                    s.frameIndex,
-                   s.publishing ? &s.publication : nullptr};
+                   publishing ? &s.publication : nullptr};
   try {
+    // Declared parameters reach every program of the technique from their declaration.
+    for (const gl::Program* p : s.technique->programs()) bindParams(*p, params());
     s.technique->renderShadows(ctx);
-  } catch (const std::exception& e) {
-    s.timer->endFrame();
-    return neutral(std::string("technique '") + s.techniqueId + "': " + e.what());
-  }
 
-  {  // 3. Resolve: hard mask + filtered visibility per pixel.
+    // 3. Resolve: hard mask, filtered visibility, aliasing m, selected map's uv per pixel.
     auto pass = s.timer->scope("resolve");
-    const gl::Program& resolve = s.resolveProgramFor(s.technique->lookupShader());
     glBindFramebuffer(GL_FRAMEBUFFER, t.resolve.id());
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
-    resolve.use();
-    glBindTextureUnit(0, t.position.id());
-    glBindTextureUnit(1, t.normal.id());
-    resolve.set("u_gPosition", 0);
-    resolve.set("u_gNormal", 1);
-    bindLight(resolve, s.light);
-    s.technique->bindLookup(resolve, 2);
-    glBindVertexArray(s.emptyVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTextureUnit(SL_UNIT_G_POSITION, t.position.id());
+    glBindTextureUnit(SL_UNIT_G_NORMAL, t.normal.id());
+    if (s.technique->resolveMode() == ResolveMode::Lookup) {
+      const gl::Program& resolve = s.resolveProgramFor(s.technique->lookupShader());
+      resolve.use();
+      bindLight(resolve, s.light);
+      bindParams(resolve, params());
+      s.technique->bindLookup(resolve, SL_UNIT_LOOKUP_FIRST);
+      glBindVertexArray(s.emptyVao.id());
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    } else {
+      const ResolveTargets targets{width,      height,     t.position, t.normal,       t.hard,
+                                   t.filtered, t.aliasing, t.texel,    t.resolve.id(), s.light};
+      s.technique->resolveDeferred(targets, params());
+      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                      GL_TEXTURE_UPDATE_BARRIER_BIT);
+    }
+  } catch (const std::exception& e) {
+    s.timer->endFrame();
+    return neutral(std::string("technique '") + s.techniqueId + "': " + e.what());
   }
 
   {  // 4. Composite (shading).
@@ -439,28 +505,21 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     glViewport(0, 0, width, height);
     const gl::Program& c = s.compositeProgram;
     c.use();
-    glBindTextureUnit(0, t.position.id());
-    glBindTextureUnit(1, t.normal.id());
-    glBindTextureUnit(2, t.albedo.id());
-    glBindTextureUnit(3, t.filtered.id());
-    c.set("u_gPosition", 0);
-    c.set("u_gNormal", 1);
-    c.set("u_gAlbedo", 2);
-    c.set("u_visibility", 3);
+    // Samplers: layout(binding = SL_UNIT_*) in composite.frag.
+    glBindTextureUnit(SL_UNIT_G_POSITION, t.position.id());
+    glBindTextureUnit(SL_UNIT_G_NORMAL, t.normal.id());
+    glBindTextureUnit(SL_UNIT_G_ALBEDO, t.albedo.id());
+    glBindTextureUnit(SL_UNIT_VISIBILITY, t.filtered.id());
+    glBindTextureUnit(SL_UNIT_HARD, t.hard.id());
+    glBindTextureUnit(SL_UNIT_REFERENCE, t.reference.id());
+    glBindTextureUnit(SL_UNIT_ALIASING, t.aliasing.id());
+    glBindTextureUnit(SL_UNIT_TEXEL, t.texel.id());
     bindLight(c, s.light);
-    c.set("u_ambient", float(s.rendererParams.get("shading.ambient")));
     c.set("u_cameraPos", s.camera.position);
-    glBindTextureUnit(4, t.hard.id());
-    glBindTextureUnit(5, t.reference.id());
-    glBindTextureUnit(6, t.aliasing.id());
-    glBindTextureUnit(7, t.texel.id());
-    c.set("u_hard", 4);
-    c.set("u_reference", 5);
-    c.set("u_aliasing", 6);
-    c.set("u_texel", 7);
-    int overlay = s.rendererParams.getInt("view.overlay");
-    if (overlay == 1 && s.referenceSignature != s.frameSignature) overlay = 0;  // stale
-    c.set("u_overlay", overlay);
+    bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
+    if (s.rendererParams.getInt("view.overlay") == SL_OVERLAY_ERROR &&
+        s.referenceSignature != s.frameSignature)
+      c.set("u_overlay", SL_OVERLAY_NONE);  // no reference of this exact view
     glBindVertexArray(s.emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
@@ -481,6 +540,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   s.stats.timingMethod = s.timer->methodName();
   s.stats.timingFramesLate = s.timer->framesLate();
   s.stats.memory = s.technique->memory();
+  s.stats.publicationBytes = publishing ? s.publication.readbackBytes : 0;
   for (const PassTiming& p : s.stats.passes) s.stats.totalMs += p.ms;
   (void)frameStart;
   return std::nullopt;

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,10 +21,45 @@
 #include "metrics/Image.h"
 #include "scene/Scene.h"
 
+namespace sl::gl {
+class ShaderLibrary;
+}
+
 namespace sl {
 
 class Technique;
 struct RendererState;
+
+/// One GPU pass of a frame, declared where it is implemented (GL-free): pass stepping, the
+/// Timing panel and the lessons read these; no pass is named in ui/.
+struct PassDecl {
+  std::string id;           ///< as timed (gl::GpuTimer scope, FrameStats::passes): "blur"
+  std::string title;        ///< "Blur and floor"
+  std::string explanation;  ///< what the pass does and what to look at (pass-stepping banner)
+  /// The panel showing its output: a panel id of the UI's registry ("importance", "warp",
+  /// "shadowmap", ...); empty = the view itself.
+  std::string panel;
+};
+
+/// What a publication is: a float image, a set of images under one pattern, a curve
+/// (std::vector<float>) or a number.
+enum class PublicationKind { Image, ImageSet, Curve, Number };
+const char* publicationKindName(PublicationKind kind);  ///< "image", "image set", ...
+
+/// One key (or key pattern, '*' = any run of characters: "moment.*.*") a technique publishes
+/// when asked (Renderer::requestPublications), and what reading it back costs.
+struct PublicationDecl {
+  std::string key;
+  PublicationKind kind = PublicationKind::Number;
+  std::string what;  ///< one line
+  /// The cost as a formula the UI can show ("4 B x im.resolution^2"); empty for numbers.
+  std::string cost;
+  /// Bytes read back from the GPU per frame for `params` (the technique's); numbers: 0.
+  std::function<std::uint64_t(const ParamSet& params)> bytes;
+};
+
+/// True when `key` matches `pattern` ('*' matches any run of characters, dots included).
+bool publicationKeyMatches(std::string_view pattern, std::string_view key);
 
 /// What a technique is, without creating it (no GL needed): for `list`, menus, presets.
 struct TechniqueInfo {
@@ -31,12 +67,27 @@ struct TechniqueInfo {
   std::string name;         ///< "Uniform shadow map"
   std::string description;  ///< one or two sentences, with the source paper
   std::vector<ParamDecl> params;
+  std::vector<PassDecl> passes;  ///< the technique's own passes, in frame order
+  std::vector<PublicationDecl> publications;
   /// The light kinds it renders; renderFrame refuses any other (an error, a neutral frame).
   std::vector<LightType> lights{LightType::Directional};
+  /// The declaration matching `key` (exactly or by pattern); null when not published.
+  const PublicationDecl* findPublication(std::string_view key) const;
 };
 /// An error like "technique 'uniform' supports: directional, spot; the light is a point
 /// light" when `info` does not support `type`, else nothing.
 std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightType type);
+
+/// Passes of the renderer itself, declared once: "gbuffer" (before the technique's),
+/// "resolve" and "composite" (after).
+std::vector<PassDecl> rendererPassDecls();
+/// Every pass of a frame with `technique`, in frame order: gbuffer, the technique's
+/// passes, resolve, composite.
+std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique);
+/// Bytes `technique` reads back per frame with `params` when `requested` (patterns) is
+/// asked for: the sum of the declared costs of every publication a pattern matches.
+std::uint64_t declaredPublicationBytes(const TechniqueInfo& technique, const ParamSet& params,
+                                       const std::set<std::string>& requested);
 
 /// Parameters shared by every technique (shading, view) — declared once here.
 std::vector<ParamDecl> rendererParamDecls();
@@ -47,28 +98,41 @@ struct FloatImage {
   std::vector<float> values;
 };
 
-/// Debug data a technique publishes each frame when publishing is on: images (importance
-/// map, moment levels, shadow map), curves (1D importance, warp maps) and numbers
-/// (eigenvalues, rotation angle). Keys (absent when a technique has no such thing):
-///  images:  "shadow map" (the technique's map as rendered: warped for RTW, depth 0..1),
-///           "shadow map.uniform" (RTW only: an unwarped map of the same size, for contrast),
-///           "importance" (RTW: IM before collapse, im.resolution^2),
+/// Debug data a technique publishes each frame, only the keys requested
+/// (Renderer::requestPublications): images, curves and numbers. Each technique declares its
+/// keys and their cost in TechniqueInfo::publications. Keys (absent when a technique has no
+/// such thing):
+///  every shadow-map technique:  "shadow map" (image: the map as rendered, depth 0..1)
+///  RTW keys (listed between the markers; tests/source/ui_names_no_rtw_key.sh checks that no
+///  file in ui/ outside ui/panels/rtw/ names one):
+///  BEGIN RTW KEYS
+///  images:  "shadow map.uniform" (an unwarped map of the same size, for contrast),
+///           "importance" (IM before collapse, im.resolution^2),
+///           "importance.moments" (DA-RTW: the block-maxima IM the PCA reads),
 ///           "moment.<c>.<level>" (DA-RTW: c in I,xI,yI,xxI,yyI,xyI; level 0 = full size;
 ///           mip chain of SUMS, see algo/rtw/Moments.h)
 ///  curves:  "importance.x", "importance.y" (collapsed, before blur),
 ///           "importance.x.blurred", "importance.y.blurred" (after blur and floor),
-///           "warp.x", "warp.y" (n+1 edge offsets; u' = u + warp, algo/rtw/Warp.h)
+///           "warp.x", "warp.y" (n+1 edge offsets; u' = u + warp, algo/rtw/Warp.h),
+///           "inverse.x", "inverse.y" (unwarped light coordinate of every warped texel)
 ///  numbers: "moment.I", "moment.xI", "moment.yI", "moment.xxI", "moment.yyI", "moment.xyI"
 ///           (top-level sums), "mean.x", "mean.y", "cov.xx", "cov.xy", "cov.yy",
 ///           "eigen.1", "eigen.2", "e_x", "e_y", "pca.valid" (0/1), "pca.threshold",
 ///           "rotation.held" (0/1), "rotation.deg" (accumulated angle of R),
 ///           "rotation.step_deg", "rotation.changes", "light.extent.x", "light.extent.y".
+///  END RTW KEYS
 struct Publication {
   std::uint64_t frameIndex = 0;
   std::string techniqueId;
+  /// The patterns requested for this frame; a technique publishes only keys they match.
+  std::set<std::string> requested;
   std::map<std::string, FloatImage> images;
   std::map<std::string, std::vector<float>> curves;
   std::map<std::string, double> numbers;
+  /// Bytes read back from the GPU for this publication, counted by the readback helpers
+  /// (core/Publish.h) as they read.
+  std::uint64_t readbackBytes = 0;
+  bool wants(std::string_view key) const;
 };
 
 /// Per-pixel data of the last frame, read back from the GPU (slow: metrics and tests).
@@ -88,9 +152,19 @@ struct FrameReadback {
   ImageRGBA8 color;  ///< final shaded image, row 0 = top
 };
 
+/// One entry of a technique list: what it is, and how to make one (GL current; throws
+/// std::runtime_error or gl::ShaderError when it cannot).
+struct TechniqueEntry {
+  TechniqueInfo info;
+  std::unique_ptr<Technique> (*create)(const gl::ShaderLibrary& lib) = nullptr;
+};
+
 struct RendererOptions {
   std::string shaderDir;  ///< empty: SHADOWLAB_SHADER_DIR env var, else compiled-in path
   bool debugOutput = true;
+  /// Techniques this renderer offers besides the built-in list (Renderer::techniques()):
+  /// tests add techniques that live only in tests. Found by setTechnique and paramsOf.
+  std::vector<TechniqueEntry> extraTechniques;
 };
 
 class Renderer {
@@ -144,8 +218,14 @@ class Renderer {
   std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer);
   const FrameStats& stats() const;
 
-  /// Publishing debug data costs readbacks; off by default, the GUI turns it on.
-  void setPublishing(bool on);
+  /// The publication keys (or patterns, '*' = any run of characters; "*" = everything)
+  /// the next frames publish; empty (the default) = none, and nothing is read back. A
+  /// technique reads back only what is requested, and work that exists only for a panel
+  /// (e.g. RTW's 2D IM in backward analysis) happens only while requested.
+  void requestPublications(std::set<std::string> patterns);
+  const std::set<std::string>& requestedPublications() const;
+  /// The last frame's publication when something was requested (else an older one:
+  /// compare frameIndex with stats().frameIndex).
   const Publication& publication() const;
 
   /// Reads the last frame back (positions, normals, hard mask, colour).

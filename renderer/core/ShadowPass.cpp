@@ -1,5 +1,9 @@
+// The shared depth pass, the per-map lookup binding and depth publishing (ShadowPass.h).
 #include "ShadowPass.h"
 
+#include <stdexcept>
+
+#include "common/shared_constants.h"
 #include "core/SceneGpu.h"
 
 namespace sl {
@@ -27,51 +31,39 @@ void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint fra
   beginDepthPass(framebuffer, width, height);
   program.use();
   program.set("u_lightViewProj", lightViewProj);
-  ctx.sceneGpu.draw(program, 0);
+  ctx.sceneGpu.draw(program, SL_UNIT_MATERIAL);
 }
 
-DepthLookupState depthLookupState(const LightFit& fit, const ParamSet& params) {
-  DepthLookupState s;
-  s.lightViewProj = fit.viewProj;
-  s.extentM = fit.extentM;
-  s.depthRangeM = fit.depthRangeM > 0.0f ? fit.depthRangeM : 1.0f;
-  s.perspective = fit.perspective;
-  s.nearM = fit.nearM;
-  s.farM = fit.farM;
-  s.bias.normalTexels = float(params.get("bias.normal"));
-  s.bias.slopeTexels = float(params.get("bias.slope"));
-  s.bias.constantM = float(params.get("bias.constant"));
-  s.pcfRadius = params.getInt("pcf");
-  return s;
+float DepthMapView::depthPerMAtUnitW() const {
+  return sl::depthPerMAtUnitW(perspective, depthRangeM, nearM, farM);
 }
 
-void bindDepthLookup(const gl::Program& resolve, int unit, const gl::Texture& map,
-                     const DepthLookupState& state) {
-  glBindTextureUnit(GLuint(unit), map.id());
-  resolve.set("u_shadowMap", unit);
-  resolve.set("u_pcfRadius", state.pcfRadius);
-  resolve.set("u_lightViewProj", state.lightViewProj);
-  const LightPlaneMatrix plane = lightPlaneMatrix(state.lightViewProj);
-  resolve.set("u_lightNormalMatrix", plane.normal);
-  resolve.set("u_lightPlaneOffset", plane.offset);
-  resolve.set("u_lightExtentM", state.extentM);
-  const float depthPerM =
-      depthPerMAtUnitW(state.perspective, state.depthRangeM, state.nearM, state.farM);
-  resolve.set("u_depthPerM", depthPerM);
-  resolve.set("u_biasNormal", state.bias.normalTexels);
-  resolve.set("u_biasSlope", state.bias.slopeTexels);
-  resolve.set("u_biasConstant", state.bias.constantM * depthPerM);
+DepthMapView depthMapView(const LightFit& fit) {
+  DepthMapView v;
+  v.lightViewProj = fit.viewProj;
+  v.extentM = fit.extentM;
+  v.depthRangeM = fit.depthRangeM > 0.0f ? fit.depthRangeM : 1.0f;
+  v.perspective = fit.perspective;
+  v.nearM = fit.nearM;
+  v.farM = fit.farM;
+  return v;
 }
 
-void publishDepth(Publication& pub, const std::string& key, const gl::Texture& depth) {
-  FloatImage img;
-  img.width = depth.width();
-  img.height = depth.height();
-  img.values.resize(size_t(img.width) * size_t(img.height));
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                    GLsizei(img.values.size() * sizeof(float)), img.values.data());
-  pub.images[key] = std::move(img);
+void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> maps) {
+  if (maps.size() > SL_MAX_DEPTH_MAPS)
+    throw std::logic_error("a depth lookup over " + std::to_string(maps.size()) +
+                           " maps; shaders/common/depth_map_test.glsl holds SL_MAX_DEPTH_MAPS = " +
+                           std::to_string(SL_MAX_DEPTH_MAPS));
+  for (size_t i = 0; i < maps.size(); ++i) {
+    const std::string at = "[" + std::to_string(i) + "]";
+    const DepthMapView& m = maps[i];
+    const LightPlaneMatrix plane = lightPlaneMatrix(m.lightViewProj);
+    resolve.set(("u_mapViewProj" + at).c_str(), m.lightViewProj);
+    resolve.set(("u_mapNormalMatrix" + at).c_str(), plane.normal);
+    resolve.set(("u_mapPlaneOffset" + at).c_str(), plane.offset);
+    resolve.set(("u_mapExtentM" + at).c_str(), m.extentM);
+    resolve.set(("u_mapDepthPerM" + at).c_str(), m.depthPerMAtUnitW());
+  }
 }
 
 }  // namespace sl

@@ -1,8 +1,9 @@
 // Helpers shared by the shadow-map techniques: the depth-only light pass (exact depth at
-// texel centres, alpha-tested casters), the binding of the one bias model of every lookup
-// (shaders/common/depth_map_test.glsl) and publishing a depth map to the panels.
+// texel centres, alpha-tested casters), the per-map binding of the one bias model of every
+// lookup (shaders/common/depth_map_test.glsl). Publishing: core/Publish.h.
 #pragma once
 
+#include <span>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -25,24 +26,25 @@ void beginDepthPass(GLuint framebuffer, int width, int height);
 void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
                  int height, const glm::mat4& lightViewProj);
 
-/// What the shared depth-map lookup needs besides the map: the light fit and the bias.
-struct DepthLookupState {
-  glm::mat4 lightViewProj{1.0f};
-  glm::vec2 extentM{1.0f};  ///< metres per unit of light uv, at clip w = 1
-  float depthRangeM = 1.0f;
-  bool perspective = false;         ///< a spot's perspective map
+/// One depth map of a lookup (common/depth_map_test.glsl): its own light matrix and
+/// extent. A technique with several maps (an array, an atlas, cascades, faces) has one view
+/// per map; its GLSL selection function picks the index. The matrix may be orthographic
+/// (directional) or perspective (a spot's frustum, a cube face): the lookup divides by the
+/// map's clip w.
+struct DepthMapView {
+  glm::mat4 lightViewProj{1.0f};    ///< world -> the map's clip space
+  glm::vec2 extentM{1.0f};          ///< metres per unit of the map's light uv, at clip w = 1
+  float depthRangeM = 1.0f;         ///< orthographic: metres per unit of window depth
+  bool perspective = false;         ///< a perspective map (sl::LightFit::perspective)
   float nearM = 0.0f, farM = 0.0f;  ///< perspective: the frustum's near and far planes
-  ShadowBiasSettings bias;
-  int pcfRadius = 0;
+  /// Window depth per metre along the light at clip w = 1 (sl::depthPerMAtUnitW).
+  float depthPerMAtUnitW() const;
 };
-/// From this frame's fit and the shared parameters (bias.normal, bias.slope, bias.constant,
-/// pcf).
-DepthLookupState depthLookupState(const LightFit& fit, const ParamSet& params);
-/// Binds `map` to `unit` and sets every uniform of common/depth_map_test.glsl.
-void bindDepthLookup(const gl::Program& resolve, int unit, const gl::Texture& map,
-                     const DepthLookupState& state);
-
-/// Reads a depth texture back into the publication as a float image.
-void publishDepth(Publication& pub, const std::string& key, const gl::Texture& depth);
+/// The view of one map covering this frame's fit.
+DepthMapView depthMapView(const LightFit& fit);
+/// Sets the per-map uniforms of common/depth_map_test.glsl (u_map*[i] for map i). The
+/// maps' textures and the shared parameters (bias.*, pcf: bindParams) are bound elsewhere.
+/// Throws std::logic_error for more than SL_MAX_DEPTH_MAPS maps.
+void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> maps);
 
 }  // namespace sl

@@ -1,12 +1,14 @@
 // The interface every shadow technique implements. A technique is one self-contained
 // unit (its C++ under renderer/techniques/<name>/, its shaders under shaders/<name>/):
-// it builds its shadow map(s) each frame and provides the GLSL lookup the resolve pass
-// includes as "@lookup". Adding a technique touches its folder and TechniqueRegistry.cpp.
+// it builds its shadow map(s) each frame and then EITHER provides the GLSL lookup (over
+// any number of maps) the resolve pass includes as "@lookup", OR resolves the pixels
+// itself in a deferred pass. Adding a technique touches its folder and TechniqueRegistry.cpp.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -40,7 +42,42 @@ struct FrameContext {
   gl::GpuTimer& timer;
   const gl::ShaderLibrary& shaders;
   std::uint64_t frameIndex = 0;
-  Publication* publication = nullptr;  ///< non-null when the panels want debug data
+  /// Non-null when publications are requested; publish only what wants() accepts, through
+  /// the readback helpers of core/Publish.h (they count the bytes).
+  Publication* publication = nullptr;
+  /// True when `key` is requested this frame: read it back, or do the work that exists
+  /// only to show it.
+  bool wants(std::string_view key) const { return publication && publication->wants(key); }
+};
+
+/// How a technique turns its maps into the resolve targets.
+enum class ResolveMode {
+  /// The renderer's resolve pass (shaders/common/resolve.frag) includes lookupShader() as
+  /// "@lookup": a selection of one of any number of maps + a test in it. Aliasing m comes
+  /// from the screen derivatives of the selected map's texel coordinate.
+  Lookup,
+  /// The technique writes the four targets itself in resolveDeferred (tile by tile, a
+  /// screen-space result...), with the same meaning as the resolve pass's outputs.
+  Deferred,
+};
+
+/// What a deferred resolve reads and writes (Technique::resolveDeferred). The targets
+/// follow shaders/common/resolve.frag: hard mask R8UI (SL_MASK_*), filtered visibility
+/// R8 (1 = lit), aliasing m R32F (texel footprint of the SELECTED map / pixel footprint,
+/// 0 where uncovered), texel RG32F (the selected map's uv, for the grid overlay).
+struct ResolveTargets {
+  int width = 0, height = 0;
+  const gl::Texture& gPosition;  ///< world xyz, w = covered (RGBA32F)
+  const gl::Texture& gNormal;    ///< world normal facing the camera (RGBA32F)
+  const gl::Texture& hard;
+  const gl::Texture& filtered;
+  const gl::Texture& aliasing;
+  const gl::Texture& texel;
+  GLuint framebuffer = 0;  ///< the four as colour attachments 0..3, for a fragment pass
+  const Light& light;      ///< the frame's light (sl::bindLight: common/light.glsl)
+  /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the four
+  /// targets to image units SL_IMAGE_RESOLVE_* (write-only), for a compute pass.
+  void bindForCompute() const;
 };
 
 class Technique {
@@ -49,26 +86,34 @@ class Technique {
   /// Builds this frame's shadow map(s). Throws std::runtime_error on unrecoverable GL
   /// problems; parameter values are already validated.
   virtual void renderShadows(FrameContext& ctx) = 0;
-  /// GLSL file (relative to shaders/) defining the lookup functions listed in
+  virtual ResolveMode resolveMode() const { return ResolveMode::Lookup; }
+  /// Lookup mode: GLSL file (relative to shaders/) defining the lookup functions listed in
   /// shaders/common/resolve.frag (shadowLookupCoord, shadowMapSize, shadowHardAt,
-  /// shadowFilteredAt), included by the resolve pass as "@lookup".
-  virtual std::string lookupShader() const = 0;
-  /// Binds what the lookup needs (textures from `firstUnit` on, uniforms) to `resolve`.
-  virtual void bindLookup(const gl::Program& resolve, int firstUnit) const = 0;
+  /// shadowFilteredAt), included by the resolve pass as "@lookup". Depth maps get them from
+  /// shaders/common/depth_map_test.glsl.
+  virtual std::string lookupShader() const { return {}; }
+  /// Lookup mode: binds what the lookup needs (textures from `firstUnit` on, per-map
+  /// uniforms) to `resolve`. Declared parameters are already bound (bindParams).
+  virtual void bindLookup(const gl::Program& /*resolve*/, int /*firstUnit*/) const {}
+  /// Deferred mode: writes the four resolve targets for this frame. Throws like
+  /// renderShadows. Declared parameters are already bound to programs().
+  virtual void resolveDeferred(const ResolveTargets& /*targets*/, const ParamSet& /*params*/) {}
+  /// Every program of the technique (not the renderer's resolve pass). The renderer binds
+  /// the declared parameters (ParamDecl::uniform) to each before renderShadows, and refuses
+  /// the technique when a declared uniform is in none of them nor in the resolve pass.
+  virtual std::vector<const gl::Program*> programs() const = 0;
   /// Shadow-related GPU resources of the last frame.
   virtual MemoryStats memory() const = 0;
   virtual std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) = 0;
   virtual void resetTemporalState() {}
 };
 
-/// One entry of the technique list: what it is, and how to make one (GL current).
-struct TechniqueEntry {
-  TechniqueInfo info;
-  std::unique_ptr<Technique> (*create)(const gl::ShaderLibrary& lib);
-};
+/// The built-in technique list (TechniqueEntry: core/Renderer.h).
 const std::vector<TechniqueEntry>& techniqueRegistry();
 
 /// Parameters most shadow-map techniques share (resolution, bias, PCF), declared once.
 std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution);
+/// The "shadow map" publication of a technique with one `resolution`^2 depth map.
+PublicationDecl shadowMapPublicationDecl();
 
 }  // namespace sl

@@ -56,6 +56,22 @@ Texture Texture::create2D(GLenum internalFormat, int width, int height, int leve
   return t;
 }
 
+Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int layers) {
+  Texture t;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  t.h_ = Handle<TextureDeleter>(id);
+  glTextureStorage3D(id, 1, internalFormat, width, height, layers);
+  textureBytes()[id] = levelBytes(internalFormat, width, height, 1) * std::uint64_t(layers);
+  t.width_ = width;
+  t.height_ = height;
+  t.layers_ = layers;
+  t.format_ = internalFormat;
+  t.setFilter(GL_NEAREST, GL_NEAREST);
+  t.setWrap(GL_CLAMP_TO_EDGE);
+  return t;
+}
+
 Texture Texture::createBufferView(GLenum internalFormat, const Buffer& buffer) {
   Texture t;
   GLuint id = 0;
@@ -119,6 +135,10 @@ Framebuffer Framebuffer::create() {
 
 void Framebuffer::attach(GLenum attachment, const Texture& texture, int level) {
   glNamedFramebufferTexture(id(), attachment, texture.id(), level);
+}
+
+void Framebuffer::attachLayer(GLenum attachment, const Texture& texture, int layer, int level) {
+  glNamedFramebufferTextureLayer(id(), attachment, texture.id(), level, layer);
 }
 
 void Framebuffer::setDrawBuffers(int count) {

@@ -69,12 +69,15 @@ class Texture {
   /// Allocates immutable storage; `levels` mip levels.
   static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
   static Texture create1D(GLenum internalFormat, int width);
+  /// A 2D array texture of `layers` maps (one level): several shadow maps of one size.
+  static Texture create2DArray(GLenum internalFormat, int width, int height, int layers);
   /// A buffer texture viewing `buffer` (no storage of its own): shaders texelFetch a
   /// samplerBuffer, which software rasterisers serve much faster than SSBO loads.
   static Texture createBufferView(GLenum internalFormat, const class Buffer& buffer);
   GLuint id() const { return h_.id(); }
   int width() const { return width_; }
   int height() const { return height_; }
+  int layers() const { return layers_; }  ///< 1 unless an array
   GLenum format() const { return format_; }
   explicit operator bool() const { return bool(h_); }
   void setFilter(GLenum minFilter, GLenum magFilter);
@@ -83,7 +86,7 @@ class Texture {
 
  private:
   Handle<TextureDeleter> h_;
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, layers_ = 1;
   GLenum format_ = 0;
 };
 
@@ -132,6 +135,8 @@ class Framebuffer {
   static Framebuffer create();
   GLuint id() const { return h_.id(); }
   void attach(GLenum attachment, const Texture& texture, int level = 0);
+  /// Attaches one layer of an array texture.
+  void attachLayer(GLenum attachment, const Texture& texture, int layer, int level = 0);
   /// Sets draw buffers for the colour attachments 0..count-1 (0: none).
   void setDrawBuffers(int count);
   /// Throws std::runtime_error naming `what` when incomplete.

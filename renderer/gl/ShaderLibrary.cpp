@@ -8,6 +8,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "algo/GlslUniforms.h"
+
 #ifndef SHADOWLAB_SHADER_DIR
 #define SHADOWLAB_SHADER_DIR "shaders"
 #endif
@@ -118,7 +120,7 @@ std::string ShaderLibrary::preprocess(const std::string& file, const ProgramDesc
   return out;
 }
 
-GLuint ShaderLibrary::build(const ProgramDesc& desc) const {
+GLuint ShaderLibrary::build(const ProgramDesc& desc, std::set<std::string>* uniforms) const {
   std::vector<GLuint> shaders;
   auto cleanup = [&] {
     for (GLuint s : shaders) glDeleteShader(s);
@@ -132,6 +134,7 @@ GLuint ShaderLibrary::build(const ProgramDesc& desc) const {
       cleanup();
       throw;
     }
+    if (uniforms) uniforms->merge(declaredUniforms(src));
     GLuint sh = glCreateShader(stage);
     shaders.push_back(sh);
     const char* p = src.c_str();
@@ -167,12 +170,16 @@ GLuint ShaderLibrary::build(const ProgramDesc& desc) const {
 }
 
 Program::Program(const ShaderLibrary& lib, ProgramDesc desc) : desc_(std::move(desc)) {
-  h_ = Handle<ProgramDeleter>(lib.build(desc_));
+  std::set<std::string> names;
+  h_ = Handle<ProgramDeleter>(lib.build(desc_, &names));
+  uniforms_ = {names.begin(), names.end()};
 }
 
 std::optional<std::string> Program::rebuild(const ShaderLibrary& lib) {
   try {
-    h_ = Handle<ProgramDeleter>(lib.build(desc_));
+    std::set<std::string> names;
+    h_ = Handle<ProgramDeleter>(lib.build(desc_, &names));
+    uniforms_ = {names.begin(), names.end()};
     locations_.clear();
     return std::nullopt;
   } catch (const ShaderError& e) {
@@ -180,9 +187,19 @@ std::optional<std::string> Program::rebuild(const ShaderLibrary& lib) {
   }
 }
 
+bool Program::declares(std::string_view name) const {
+  return uniforms_.count(uniformBaseName(name)) > 0;
+}
+
 GLint Program::location(const char* name) const {
   auto it = locations_.find(name);
   if (it != locations_.end()) return it->second;
+  if (!declares(name)) {
+    std::string known;
+    for (const std::string& u : uniforms_) known += (known.empty() ? "" : ", ") + u;
+    throw UnknownUniformError("program '" + desc_.name + "' declares no uniform '" +
+                              std::string(name) + "' (declared: " + known + ")");
+  }
   GLint loc = glGetUniformLocation(h_.id(), name);
   locations_.emplace(name, loc);
   return loc;

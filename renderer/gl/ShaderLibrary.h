@@ -1,5 +1,6 @@
 // GLSL programs built from files in shaders/, with `#include "dir/file.glsl"` support
-// (paths relative to the shader root; each file included once per program) and aliases
+// (paths relative to the shader root, or absolute: tests keep their own techniques'
+// shaders next to them; each file included once per program) and aliases
 // (`#include "@lookup"` resolves to a file chosen by the technique). A compile or link
 // error names the file and line; a failed rebuild keeps the last good program in use.
 #pragma once
@@ -7,7 +8,10 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <stdexcept>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -37,14 +41,24 @@ class ShaderLibrary {
   /// Preprocessed source of one stage (for tests and error messages).
   std::string preprocess(const std::string& file, const ProgramDesc& desc,
                          std::vector<std::string>& fileTable) const;
-  /// Compiles and links; throws ShaderError("file:line: message") on failure.
-  GLuint build(const ProgramDesc& desc) const;
+  /// Compiles and links; throws ShaderError("file:line: message") on failure. When
+  /// `uniforms` is given, it receives every uniform name the preprocessed sources declare.
+  GLuint build(const ProgramDesc& desc, std::set<std::string>* uniforms = nullptr) const;
 
  private:
   std::filesystem::path root_;
 };
 
-/// A program that can be rebuilt in place (hot reload) and sets uniforms by name.
+/// Set on a uniform name that none of a program's (preprocessed) sources declares: a
+/// misspelling, or a parameter bound to the wrong program. A declared uniform that the
+/// compiler optimised out is fine (the set is a no-op).
+class UnknownUniformError : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+/// A program that can be rebuilt in place (hot reload) and sets uniforms by name. Every
+/// set() checks the name against the uniforms its sources declare (UnknownUniformError).
 class Program {
  public:
   Program() = default;
@@ -55,7 +69,12 @@ class Program {
   std::optional<std::string> rebuild(const ShaderLibrary& lib);
   void use() const { glUseProgram(h_.id()); }
 
+  /// The location of a declared uniform (-1 when optimised out); UnknownUniformError when
+  /// no source declares it. "name[i]" addresses an array element.
   GLint location(const char* name) const;
+  /// Whether the program's sources declare `name` (arrays by base name).
+  bool declares(std::string_view name) const;
+  const std::string& name() const { return desc_.name; }
   void set(const char* name, int v) const;
   void set(const char* name, unsigned v) const;
   void set(const char* name, float v) const;
@@ -71,6 +90,7 @@ class Program {
   Handle<ProgramDeleter> h_;
   ProgramDesc desc_;
   mutable std::map<std::string, GLint, std::less<>> locations_;
+  std::set<std::string, std::less<>> uniforms_;  ///< declared in the sources
 };
 
 }  // namespace sl::gl

@@ -7,15 +7,16 @@
 #include <cstdint>
 #include <span>
 
+#include "common/shared_constants.h"
 #include "metrics/Image.h"
 
 namespace sl {
 
 /// Shadow-mask encoding shared by the technique's readback and ShadowReference.
 /// Any value other than kMaskShadowed and kMaskUncovered is read as lit.
-inline constexpr std::uint8_t kMaskShadowed = 0;
-inline constexpr std::uint8_t kMaskLit = 1;
-inline constexpr std::uint8_t kMaskUncovered = 255;
+inline constexpr std::uint8_t kMaskShadowed = SL_MASK_SHADOWED;
+inline constexpr std::uint8_t kMaskLit = SL_MASK_LIT;
+inline constexpr std::uint8_t kMaskUncovered = SL_MASK_EMPTY;
 
 struct ShadowErrorStats {
   std::size_t covered = 0;      ///< pixels covered in both masks

@@ -1,18 +1,19 @@
 // Final shading: albedo lit by the light (Lambert, shadowed by the technique's filtered
 // visibility, a spot's cone falloff and the range window: common/light.glsl) plus a sky
 // ambient; a sky gradient where there is no surface.
-uniform sampler2D u_gPosition;
-uniform sampler2D u_gNormal;
-uniform sampler2D u_gAlbedo;
-uniform sampler2D u_visibility;
+#include "common/shared_constants.h"
 #include "common/light.glsl"
-uniform float u_ambient;
+layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;
+layout(binding = SL_UNIT_G_NORMAL) uniform sampler2D u_gNormal;
+layout(binding = SL_UNIT_G_ALBEDO) uniform sampler2D u_gAlbedo;
+layout(binding = SL_UNIT_VISIBILITY) uniform sampler2D u_visibility;
+uniform float u_ambient;  // shading.ambient
 uniform vec3 u_cameraPos;
-uniform usampler2D u_hard;       // technique's hard mask (1 lit, 0 shadow, 255 empty)
-uniform usampler2D u_reference;  // Embree reference mask of this view
-uniform sampler2D u_aliasing;    // m per pixel
-uniform sampler2D u_texel;       // final shadow-map uv (through the warp) per pixel
-uniform int u_overlay;           // 0 none, 1 error, 2 aliasing, 3 warp grid
+layout(binding = SL_UNIT_HARD) uniform usampler2D u_hard;  // technique's hard mask (SL_MASK_*)
+layout(binding = SL_UNIT_REFERENCE) uniform usampler2D u_reference;  // Embree mask of this view
+layout(binding = SL_UNIT_ALIASING) uniform sampler2D u_aliasing;  // m per pixel
+layout(binding = SL_UNIT_TEXEL) uniform sampler2D u_texel;  // selected map's uv (through any warp)
+uniform int u_overlay;  // view.overlay: SL_OVERLAY_*
 in vec2 v_uv;
 
 // Diverging heat map for log2(m) in [-4, 4]: blue (oversampled), white, red (undersampled).
@@ -41,16 +42,16 @@ void main() {
   float d = length(P.xyz - u_cameraPos);
   c = mix(c, vec3(0.78, 0.85, 0.93), clamp((d - 150.0) / 900.0, 0.0, 0.6));
   c = pow(c, vec3(1.0 / 2.2));
-  if (u_overlay == 1) {  // colours as in makeErrorImage (metrics/ErrorMetrics.h)
+  if (u_overlay == SL_OVERLAY_ERROR) {  // colours as in makeErrorImage (metrics/ErrorMetrics.h)
     uint h = texelFetch(u_hard, px, 0).r, r = texelFetch(u_reference, px, 0).r;
     float grey = dot(c, vec3(0.299, 0.587, 0.114)) * 0.5;
     c = vec3(grey);
-    if (h == 1u && r == 0u) c = vec3(1.0, 0.0, 1.0);
-    if (h == 0u && r == 1u) c = vec3(0.0, 1.0, 1.0);
-  } else if (u_overlay == 2) {
+    if (h == SL_MASK_LIT && r == SL_MASK_SHADOWED) c = vec3(1.0, 0.0, 1.0);
+    if (h == SL_MASK_SHADOWED && r == SL_MASK_LIT) c = vec3(0.0, 1.0, 1.0);
+  } else if (u_overlay == SL_OVERLAY_ALIASING) {
     c = mix(c, aliasingColor(texelFetch(u_aliasing, px, 0).r), 0.7);
-  } else if (u_overlay == 3) {
-    vec2 g = texelFetch(u_texel, px, 0).xy * 16.0;  // a line every 1/16 of the map
+  } else if (u_overlay == SL_OVERLAY_GRID) {
+    vec2 g = texelFetch(u_texel, px, 0).xy * float(SL_GRID_LINES_PER_MAP);
     vec2 w = fwidth(g);
     vec2 d = abs(fract(g - 0.5) - 0.5) / max(w, vec2(1e-6));
     float line = 1.0 - clamp(min(d.x, d.y), 0.0, 1.0);

@@ -1,101 +1,135 @@
-// The one bias model of every depth-map lookup (uniform, RTW; later partitioned or paged
-// maps): the receiver's plane is evaluated AT THE CENTRE OF THE TEXEL IT SAMPLES, in
-// unwarped light space, and compared with the depth the map stores for that same centre.
-// Maps store exact depth at texel centres (no polygon offset), so a planar receiver
-// compares against itself exactly; the remaining terms, all scaled by the LOCAL texel
-// size (warp compression included), only cover curvature, rounding and contact edges:
+// The one bias model of every depth-map lookup (uniform, RTW; partitioned, cascaded or paged
+// maps): the receiver's plane is evaluated AT THE CENTRE OF THE TEXEL IT SAMPLES, in the
+// SELECTED map's unwarped light space, and compared with the depth that map stores for that
+// same centre. Maps store exact depth at texel centres (no polygon offset), so a planar
+// receiver compares against itself exactly; the remaining terms, all scaled by the LOCAL
+// texel size of the selected map (warp compression included), only cover curvature,
+// rounding and contact edges:
 //   normal offset  P += N * bias.normal * T * sin(theta_L),   T = largest local texel (m)
 //   slope term     bias.slope * (|dz/du| * t_u + |dz/dv| * t_v)   (t: local texel in uv),
 //                  at most the depth of a slope of 10 over T
-//   constant       bias.constant metres along the light, in window depth
-// Orthographic and perspective light matrices alike (clip w = 1 for the former): the
-// receiver's plane is carried through the full 4x4 matrix (a plane stays a plane, window
-// depth stays affine in light uv on it); metres per uv grow with w; window depth per metre
-// falls with w^2 (glm's perspective depth), so both terms convert per pixel.
+//   constant       bias.constant metres along the light, in the map's window depth
+// Orthographic and perspective map matrices alike (clip w = 1 for the former), per map: the
+// receiver's plane is carried through the map's full 4x4 matrix (a plane stays a plane,
+// window depth stays affine in light uv on it); metres per uv grow with w; window depth per
+// metre falls with w^2 (glm's perspective depth), so both terms convert per pixel. The
+// w-divide is in mapUvzw, the one place a world point enters a map.
 // Needs common/light.glsl (towardsLight) included before.
-// CPU mirror: sl::receiverDepthGradient / windowDepthPerM / shadowDepthBias
-// (algo/ShadowBias.h); C++ binding: bindDepthLookup (core/ShadowPass.cpp).
+// CPU mirror: sl::receiverInMap and its parts (algo/ShadowBias.h); C++ binding:
+// bindDepthLookup (core/ShadowPass.cpp) for the per-map uniforms, bindParams for the
+// bias.* / pcf parameters (their ParamDecl names the uniform).
 //
 // The technique's lookup file defines, BEFORE including this file:
-//   vec2 lightToMapUv(vec2 uv)          unwarped light uv -> map uv (identity when unwarped)
-//   vec2 texelCentreLightUv(ivec2 t)    centre of map texel t, in unwarped light uv
-//   vec2 localTexelLightUv(vec2 uv)     extent of the map texel at light uv, per axis, in uv
-// and gets shadowLookupCoord / shadowMapSize / shadowHardAt / shadowFilteredAt
-// (the contract of shaders/common/resolve.frag). Nearest texels via texelFetch: metrics see
-// the map's true resolution; PCF averages the hard tests of a (2r+1)^2 neighbourhood.
-#include "common/light.glsl"
+//   int   selectShadowMap(vec3 P)             the map serving world point P (its selection
+//                                             function: by light uv, depth, direction...)
+//   ivec2 shadowMapTexels(int map)            the map's size in texels
+//   float shadowMapDepth(int map, ivec2 t)    the depth the map stores at texel t
+//   vec2  lightToMapUv(int map, vec2 uv)      the map's unwarped light uv -> its texture uv
+//                                             (identity when unwarped; a warp, a page table)
+//   vec2  texelCentreLightUv(int map, ivec2 t)  centre of texel t, in the map's light uv
+//   vec2  localTexelLightUv(int map, vec2 uv) extent of the map's texel at light uv, in uv
+// (common/single_depth_map.glsl has the first three for one sampler2D), and gets the
+// contract of shaders/common/resolve.frag: shadowLookupCoord / shadowMapSize /
+// shadowHardAt / shadowFilteredAt. Nearest texels via the technique's fetch: metrics see
+// the map's true resolution; PCF averages the hard tests of a (2r+1)^2 neighbourhood
+// inside the selected map.
+#include "common/shared_constants.h"
+#include "common/shadow_coord.glsl"
 
-uniform sampler2D u_shadowMap;
-uniform int u_pcfRadius;
-uniform mat4 u_lightViewProj;
-uniform mat3 u_lightNormalMatrix;  // plane of N in clip space (sl::lightPlaneMatrix().normal)
-uniform vec3 u_lightPlaneOffset;   // times -dot(N, P) (sl::lightPlaneMatrix().offset; 0 ortho)
-uniform vec2 u_lightExtentM;       // metres per unit of light u and v, at clip w = 1
-uniform float u_biasNormal;        // texels (local)
-uniform float u_biasSlope;         // texels (local)
-uniform float u_biasConstant;      // window depth units, at clip w = 1
-uniform float u_depthPerM;         // window depth per metre along the light, at clip w = 1
+// Per map (bindDepthLookup, one DepthMapView each): its own orthographic or perspective
+// matrix (sl::lightPlaneMatrix splits its plane transform into the two next arrays).
+uniform mat4 u_mapViewProj[SL_MAX_DEPTH_MAPS];
+uniform mat3 u_mapNormalMatrix[SL_MAX_DEPTH_MAPS];  // LightPlaneMatrix::normal
+uniform vec3 u_mapPlaneOffset[SL_MAX_DEPTH_MAPS];   // LightPlaneMatrix::offset (0 ortho)
+uniform vec2 u_mapExtentM[SL_MAX_DEPTH_MAPS];  // metres per unit of light u, v at clip w = 1
+uniform float u_mapDepthPerM[SL_MAX_DEPTH_MAPS];  // window depth per metre at clip w = 1
+// The shared parameters (shadowMapParamDecls).
+uniform int u_pcfRadius;        // pcf
+uniform float u_biasNormal;     // bias.normal, local texels
+uniform float u_biasSlope;      // bias.slope, local texels
+uniform float u_biasConstantM;  // bias.constant, metres along the light
 
-// The receiver of this pixel, set by shadowLookupCoord (one pixel per invocation).
-vec2 g_receiverUv;   // unwarped light uv (after the normal offset)
+// The receiver of this pixel in the selected map, set by shadowLookupCoord.
+vec2 g_receiverUv;   // unwarped light uv of the map (after the normal offset)
 float g_receiverZ;   // window depth
 vec2 g_receiverDz;   // d(window depth) / d(light uv) on the receiver's plane
 float g_receiverBias;
 
-vec2 shadowMapSize() { return vec2(textureSize(u_shadowMap, 0)); }
+vec2 shadowMapSize(int map) { return vec2(shadowMapTexels(map)); }
 
-// Depth gradient of the plane through P with world normal N, per unit of light uv: the
-// plane in clip space m = u_lightNormalMatrix * N - u_lightPlaneOffset * dot(N, P);
+// Depth gradient of the plane through P with world normal N, per unit of the map's light
+// uv: the plane in clip space m = u_mapNormalMatrix * N - u_mapPlaneOffset * dot(N, P);
 // dz/du = -m.x / m.z (the 0.5 factors of uv and window depth cancel). A plane seen edge-on
 // by the light (|m.z| tiny) gets 0: it is shadowed by the N.L test of the resolve pass, or
-// covered by the slope term's clamp. C++: sl::receiverDepthGradient.
-vec2 receiverDepthGradient(vec3 N, vec3 P) {
-  vec3 m = u_lightNormalMatrix * N - u_lightPlaneOffset * dot(N, P);
+// covered by the slope term's clamp. CPU: sl::receiverDepthGradient.
+vec2 receiverDepthGradient(int map, vec3 N, vec3 P) {
+  vec3 m = u_mapNormalMatrix[map] * N - u_mapPlaneOffset[map] * dot(N, P);
   if (!(abs(m.z) > 1e-4 * length(m))) return vec2(0.0);
   return -m.xy / m.z;
 }
 
-vec3 shadowLookupCoord(vec3 P, vec3 N) {
-  vec4 c0 = u_lightViewProj * vec4(P, 1.0);  // orthographic: w = 1
-  // Behind a perspective light (w <= 0) nothing is lit anyway (lightIlluminates): keep the
-  // arithmetic finite.
-  float w = c0.w > 1e-6 ? c0.w : 1e-6;
-  vec2 uv0 = c0.xy / w * 0.5 + 0.5;
-  vec2 t0 = localTexelLightUv(uv0);
-  float texelM = max(t0.x * u_lightExtentM.x, t0.y * u_lightExtentM.y) * w;
+// World point P in the map: xyz = its light uv and window depth, w = its clip w (1 for an
+// orthographic map). Behind a perspective light (w <= 0) nothing is lit anyway
+// (lightIlluminates): w is kept positive so the arithmetic stays finite.
+vec4 mapUvzw(int map, vec3 P) {
+  vec4 c = u_mapViewProj[map] * vec4(P, 1.0);
+  float w = c.w > 1e-6 ? c.w : 1e-6;
+  return vec4(c.xyz / w * 0.5 + 0.5, w);
+}
+
+// Largest local texel of the map at P's light uv, in metres at P (extent x clip w).
+float localTexelM(int map, vec2 t, float w) {
+  return max(t.x * u_mapExtentM[map].x, t.y * u_mapExtentM[map].y) * w;
+}
+
+// CPU: sl::receiverInMap. The map is selected for P; the normal offset is that map's local
+// texel; the offset receiver is selected again (it may cross into a neighbouring map, whose
+// local texel then sets the slope term).
+ShadowCoord shadowLookupCoord(vec3 P, vec3 N) {
+  int map = selectShadowMap(P);
+  vec4 c = mapUvzw(map, P);
+  vec2 t = localTexelLightUv(map, c.xy);
+  float texelM = localTexelM(map, t, c.w);
   float cosL = clamp(dot(N, towardsLight(P)), -1.0, 1.0);
   float sinL = sqrt(max(1.0 - cosL * cosL, 0.0));
-  vec4 c = u_lightViewProj * vec4(P + N * (u_biasNormal * texelM * sinL), 1.0);
-  vec3 uvz = c.xyz / (c.w > 1e-6 ? c.w : 1e-6) * 0.5 + 0.5;
+  vec3 Po = P + N * (u_biasNormal * texelM * sinL);
+  int offsetMap = selectShadowMap(Po);
+  if (offsetMap != map) {
+    map = offsetMap;
+    c = mapUvzw(map, Po);
+    t = localTexelLightUv(map, c.xy);
+    texelM = localTexelM(map, t, c.w);
+  }  // else the offset moved the point by under a texel: same local texel size and w
+  vec3 uvz = mapUvzw(map, Po).xyz;
   g_receiverUv = uvz.xy;
   g_receiverZ = uvz.z;
-  g_receiverDz = receiverDepthGradient(N, P);
-  vec2 t = t0;  // the offset moves the point by under a texel: same local texel size
-  float perW2 = 1.0 / (w * w);  // window depth per metre falls with w^2 (sl::windowDepthPerM)
+  g_receiverDz = receiverDepthGradient(map, N, P);
+  // Window depth per metre at the receiver (sl::windowDepthPerM): falls with w^2.
+  float depthPerM = u_mapDepthPerM[map] / (c.w * c.w);
   // Capped at a slope of 10 (84 degrees from the light) so grazing receivers do not leak.
   float slope = min(abs(g_receiverDz.x) * t.x + abs(g_receiverDz.y) * t.y,
-                    10.0 * texelM * (u_depthPerM * perW2));
-  g_receiverBias = u_biasSlope * slope + u_biasConstant * perW2;
-  return vec3(lightToMapUv(uvz.xy), uvz.z);
+                    10.0 * texelM * depthPerM);
+  g_receiverBias = u_biasSlope * slope + u_biasConstantM * depthPerM;
+  return ShadowCoord(map, vec3(lightToMapUv(map, uvz.xy), uvz.z));
 }
 
-float depthMapTexelTest(vec3 uvz, ivec2 offset) {
-  ivec2 size = textureSize(u_shadowMap, 0);
-  ivec2 t = clamp(ivec2(floor(uvz.xy * vec2(size))) + offset, ivec2(0), size - 1);
-  vec2 centre = texelCentreLightUv(t);
+float depthMapTexelTest(ShadowCoord c, ivec2 offset) {
+  ivec2 size = shadowMapTexels(c.map);
+  ivec2 t = clamp(ivec2(floor(c.uvz.xy * vec2(size))) + offset, ivec2(0), size - 1);
+  vec2 centre = texelCentreLightUv(c.map, t);
   float z = g_receiverZ + dot(g_receiverDz, centre - g_receiverUv) - g_receiverBias;
-  return z <= texelFetch(u_shadowMap, t, 0).r ? 1.0 : 0.0;
+  return z <= shadowMapDepth(c.map, t) ? 1.0 : 0.0;
 }
 
-float shadowHardAt(vec3 uvz) {
-  if (any(lessThan(uvz.xy, vec2(0.0))) || any(greaterThan(uvz.xy, vec2(1.0)))) return 1.0;
-  return depthMapTexelTest(uvz, ivec2(0));
+float shadowHardAt(ShadowCoord c) {
+  if (any(lessThan(c.uvz.xy, vec2(0.0))) || any(greaterThan(c.uvz.xy, vec2(1.0)))) return 1.0;
+  return depthMapTexelTest(c, ivec2(0));
 }
 
-float shadowFilteredAt(vec3 uvz) {
-  if (u_pcfRadius == 0) return shadowHardAt(uvz);
+float shadowFilteredAt(ShadowCoord c) {
+  if (u_pcfRadius == 0) return shadowHardAt(c);
   float sum = 0.0;
   for (int y = -u_pcfRadius; y <= u_pcfRadius; ++y)
-    for (int x = -u_pcfRadius; x <= u_pcfRadius; ++x) sum += depthMapTexelTest(uvz, ivec2(x, y));
+    for (int x = -u_pcfRadius; x <= u_pcfRadius; ++x) sum += depthMapTexelTest(c, ivec2(x, y));
   return sum / float((2 * u_pcfRadius + 1) * (2 * u_pcfRadius + 1));
 }

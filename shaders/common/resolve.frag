@@ -1,46 +1,53 @@
 // Resolve pass: per camera pixel, the technique's shadow test. Writes the hard mask
-// (1 lit, 0 shadowed, 255 no surface) that the metrics compare with the Embree reference,
-// and the filtered visibility used for shading. Surfaces facing away from the light are
-// shadowed, exactly as in ShadowReference::isLit (C++), and so is what lies outside a
-// spot's cone or a light's range (common/light.glsl).
-// A technique's lookup ("@lookup") defines:
-//   vec3 shadowLookupCoord(vec3 P, vec3 N)  final map uv (through any warp) and depth
-//   vec2 shadowMapSize()                    texels
-//   float shadowHardAt(vec3 uvz), float shadowFilteredAt(vec3 uvz)   1 = lit
-// so the (possibly warped) coordinate is computed once per pixel.
-uniform sampler2D u_gPosition;
-uniform sampler2D u_gNormal;
+// (SL_MASK_*: lit, shadowed, no surface) that the metrics compare with the Embree
+// reference, the filtered visibility used for shading, aliasing m and the selected map's
+// uv (grid overlay). Surfaces facing away from the light are shadowed, exactly as in
+// ShadowReference::isLit (C++), and so is what lies outside a spot's cone or a light's
+// range (common/light.glsl). Techniques that resolve in their own deferred pass
+// (Technique::resolveDeferred) write the same four targets themselves.
+// A technique's lookup ("@lookup") defines, over any number of maps:
+//   ShadowCoord shadowLookupCoord(vec3 P, vec3 N)  selects a map (common/shadow_coord.glsl),
+//                                                  its uv (through any warp) and depth
+//   vec2 shadowMapSize(int map)                    texels of that map
+//   float shadowHardAt(ShadowCoord c), float shadowFilteredAt(ShadowCoord c)   1 = lit
+// so the (possibly warped) coordinate is computed once per pixel. Depth-map techniques
+// get all four from common/depth_map_test.glsl; the light (common/light.glsl, bound by
+// sl::bindLight) is included before the lookup.
+#include "common/shared_constants.h"
+#include "common/shadow_coord.glsl"
 #include "common/light.glsl"
+layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;
+layout(binding = SL_UNIT_G_NORMAL) uniform sampler2D u_gNormal;
 
 #include "@lookup"
 
 layout(location = 0) out uint o_hard;
 layout(location = 1) out float o_filtered;
 layout(location = 2) out float o_aliasing;  // m: texel footprint / pixel footprint
-layout(location = 3) out vec2 o_texel;      // final (warped) shadow-map uv, for the grid
+layout(location = 3) out vec2 o_texel;      // the selected map's uv, for the grid
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec4 P = texelFetch(u_gPosition, px, 0);
   vec3 N = texelFetch(u_gNormal, px, 0).xyz;
   // Derivatives first, in uniform control flow (techniques.md, "Measuring"; RMSM's LOD):
-  // A = |dX x dY| texels per pixel, m = 1 / sqrt(A).
-  vec3 uvz = P.w > 0.0 ? shadowLookupCoord(P.xyz, N) : vec3(0.0);
-  vec2 texel = uvz.xy * shadowMapSize();
+  // A = |dX x dY| texels of the SELECTED map per pixel, m = 1 / sqrt(A).
+  ShadowCoord c = P.w > 0.0 ? shadowLookupCoord(P.xyz, N) : ShadowCoord(0, vec3(0.0));
+  vec2 texel = c.uvz.xy * shadowMapSize(c.map);
   vec2 dX = dFdx(texel), dY = dFdy(texel);
   float area = abs(dX.x * dY.y - dX.y * dY.x);
-  o_texel = uvz.xy;
+  o_texel = c.uvz.xy;
   o_aliasing = P.w > 0.0 && area > 0.0 ? inversesqrt(area) : 0.0;
   if (P.w <= 0.0) {
-    o_hard = 255u;
+    o_hard = SL_MASK_EMPTY;
     o_filtered = 1.0;
     return;
   }
   if (dot(N, towardsLight(P.xyz)) <= 0.0 || lightIlluminates(P.xyz) < 0.5) {
-    o_hard = 0u;
+    o_hard = SL_MASK_SHADOWED;
     o_filtered = 0.0;
     return;
   }
-  o_hard = shadowHardAt(uvz) >= 0.5 ? 1u : 0u;
-  o_filtered = shadowFilteredAt(uvz);
+  o_hard = shadowHardAt(c) >= 0.5 ? SL_MASK_LIT : SL_MASK_SHADOWED;
+  o_filtered = shadowFilteredAt(c);
 }

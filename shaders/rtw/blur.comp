@@ -1,11 +1,12 @@
 // Gaussian blur of both 1D maps, clamp to edge, weights computed on the host by
 // sl::rtw::gaussianWeights. Mirrors sl::rtw::gaussianBlur1D (ascending k).
-layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Collapsed { float collapsed[]; };
-layout(std430, binding = 1) writeonly buffer Blurred { float blurred[]; };
+#include "common/shared_constants.h"
+layout(local_size_x = SL_RTW_LINEAR_GROUP) in;
+layout(std430, binding = SL_RTW_BUFFER_COLLAPSED) readonly buffer Collapsed { float collapsed[]; };
+layout(std430, binding = SL_RTW_BUFFER_BLURRED) writeonly buffer Blurred { float blurred[]; };
 uniform int u_n;
 uniform int u_radius;
-uniform float u_weights[65];
+uniform float u_weights[2 * SL_BLUR_MAX_RADIUS + 1];
 
 void main() {
   int i = int(gl_GlobalInvocationID.x);

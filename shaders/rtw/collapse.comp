@@ -1,9 +1,10 @@
 // Collapse the IM to two 1D maps: max over each column (x map) and each row (y map).
 // Mirrors sl::rtw::collapseColumnsMax / collapseRowsMax. The IM holds float bits; for
 // values >= +0 the unsigned max equals the float max.
-layout(local_size_x = 64) in;
-layout(r32ui, binding = 0) readonly uniform uimage2D u_im;
-layout(std430, binding = 0) writeonly buffer Collapsed { float collapsed[]; };  // [x n][y n]
+#include "common/shared_constants.h"
+layout(local_size_x = SL_RTW_LINEAR_GROUP) in;
+layout(r32ui, binding = SL_RTW_IMAGE_IM) readonly uniform uimage2D u_im;
+layout(std430, binding = SL_RTW_BUFFER_COLLAPSED) writeonly buffer Collapsed { float collapsed[]; };  // [x n][y n]
 uniform int u_n;
 
 void main() {

@@ -1,5 +1,6 @@
 // Importance terms; mirrors sl::rtw::eyeDepthTerm / orientationTerm / combineImportance
 // (algo/rtw/Importance.h), multiplied because Lloyd's aliasing m is a product.
+#include "common/shared_constants.h"
 uniform int u_eyeOn;
 uniform float u_eyeWeight;
 uniform int u_orientationOn;
@@ -36,11 +37,11 @@ float shadowEdgeAt(ivec2 px) {
   if (u_edgeOn == 0) return 0.0;
   ivec2 size = textureSize(u_prevHard, 0);
   uint c = texelFetch(u_prevHard, clamp(px, ivec2(0), size - 1), 0).r;
-  if (c == 255u) return 0.0;
+  if (c == SL_MASK_EMPTY) return 0.0;
   for (int dy = -2; dy <= 2; dy += 2)
     for (int dx = -2; dx <= 2; dx += 2) {
       uint o = texelFetch(u_prevHard, clamp(px + ivec2(dx, dy), ivec2(0), size - 1), 0).r;
-      if (o != 255u && o != c) return 1.0;
+      if (o != SL_MASK_EMPTY && o != c) return 1.0;
     }
   return 0.0;
 }

@@ -6,9 +6,10 @@
 // panel shows it, and DA-RTW's smaller moment IM only for DA-RTW. A fragment pass rather
 // than a compute pass: llvmpipe shades fragments several times faster per pixel (measured
 // on this pass: 1280x720, 26 ms as a compute dispatch).
-layout(std430, binding = 0) buffer Collapsed { uint collapsed[]; };  // [x n][y n] float bits
-layout(r32ui, binding = 0) uniform uimage2D u_im;                    // n x n, if u_writeIm
-layout(r32ui, binding = 1) uniform uimage2D u_momentIm;              // if u_writeMomentIm
+#include "common/shared_constants.h"
+layout(std430, binding = SL_RTW_BUFFER_COLLAPSED) buffer Collapsed { uint collapsed[]; };  // [x n][y n] float bits
+layout(r32ui, binding = SL_RTW_IMAGE_IM) uniform uimage2D u_im;                    // n x n, if u_writeIm
+layout(r32ui, binding = SL_RTW_IMAGE_MOMENT_IM) uniform uimage2D u_momentIm;              // if u_writeMomentIm
 uniform int u_n;
 uniform int u_writeIm;
 uniform int u_writeMomentIm;

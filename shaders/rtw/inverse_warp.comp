@@ -3,10 +3,11 @@
 // (algo/rtw/Warp.cpp) operation for operation: binary search for the last edge e in
 // [0, n-1] with c_e = e/n + warp[e] <= s, a plateau steps back to its first edge, else
 // linear interpolation inside the edge interval (GLSL division: 2.5 ulp, parity 1e-6).
-// The exact-depth warped pass and the lookup read these tables (binding 4).
-layout(local_size_x = 64) in;
-layout(std430, binding = 2) readonly buffer WarpMaps { float warpEdges[]; };
-layout(std430, binding = 4) writeonly buffer InverseOut { float inverseWarp[]; };
+// The exact-depth warped pass and the lookup read these tables (SL_RTW_BUFFER_INVERSE).
+#include "common/shared_constants.h"
+layout(local_size_x = SL_RTW_LINEAR_GROUP) in;
+layout(std430, binding = SL_RTW_BUFFER_WARP) readonly buffer WarpMaps { float warpEdges[]; };
+layout(std430, binding = SL_RTW_BUFFER_INVERSE) writeonly buffer InverseOut { float inverseWarp[]; };
 uniform int u_n;     // 1D map size (n + 1 edges per axis)
 uniform int u_size;  // warped map size (entries per axis)
 

@@ -1,9 +1,10 @@
 // DA-RTW moment chain, level 0 (seed 000, after LEAN mapping): six channels per IM texel,
 // I, xI, yI, (xx)I, (yy)I, (xy)I with centred texel coordinates. Mirrors
 // sl::rtw::momentTextures / centredCoordinate (reciprocal from the host).
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(r32ui, binding = 0) readonly uniform uimage2D u_im;
-layout(std430, binding = 3) writeonly buffer Moments { float moments[]; };  // 6 per texel
+#include "common/shared_constants.h"
+layout(local_size_x = SL_RTW_MOMENT_GROUP, local_size_y = SL_RTW_MOMENT_GROUP) in;
+layout(r32ui, binding = SL_RTW_IMAGE_MOMENT_IM) readonly uniform uimage2D u_im;
+layout(std430, binding = SL_RTW_BUFFER_MOMENTS) writeonly buffer Moments { float moments[]; };  // 6 per texel
 uniform ivec2 u_size;
 uniform vec2 u_invSize;
 

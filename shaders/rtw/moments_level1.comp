@@ -3,9 +3,10 @@
 // and sums them as (a00 + a10) + (a01 + a11), texels outside the IM counting as 0 — exactly
 // sl::rtw::reduceMomentLevel(momentTextures(IM)), without writing level 0 (the panels get
 // level 0 from moments.comp when publishing). No shared memory, no barriers.
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(r32ui, binding = 0) readonly uniform uimage2D u_im;
-layout(std430, binding = 3) writeonly buffer Moments { float moments[]; };
+#include "common/shared_constants.h"
+layout(local_size_x = SL_RTW_MOMENT_GROUP, local_size_y = SL_RTW_MOMENT_GROUP) in;
+layout(r32ui, binding = SL_RTW_IMAGE_MOMENT_IM) readonly uniform uimage2D u_im;
+layout(std430, binding = SL_RTW_BUFFER_MOMENTS) writeonly buffer Moments { float moments[]; };
 uniform ivec2 u_size;    // IM size (level 0)
 uniform vec2 u_invSize;  // 1 / size, from the host
 uniform int u_dstOffset;

@@ -1,8 +1,9 @@
 // One level of the moment chain: each texel sums the up-to-four source texels that exist,
 // (a00 + a10) + (a01 + a11); size ceil(src/2). Mirrors sl::rtw::reduceMomentLevel (SUMS,
 // not averages, so non-power-of-two sizes are exact).
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(std430, binding = 3) buffer Moments { float moments[]; };
+#include "common/shared_constants.h"
+layout(local_size_x = SL_RTW_MOMENT_GROUP, local_size_y = SL_RTW_MOMENT_GROUP) in;
+layout(std430, binding = SL_RTW_BUFFER_MOMENTS) buffer Moments { float moments[]; };
 uniform ivec2 u_srcSize;
 uniform int u_srcOffset;  // in floats
 uniform int u_dstOffset;

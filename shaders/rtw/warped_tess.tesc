@@ -7,8 +7,9 @@
 //  3. tessellation levels from how much the warp BENDS each edge: the largest distance, in
 //     warped texels, between the warped edge and its straight chord at the quarter points.
 //     A curve's chord error falls as 1/k^2 with k segments, so the level is
-//     ceil(sqrt(deviation / u_toleranceTexels)), clamped to 1..u_maxLevel. Depth no longer
+//     ceil(sqrt(deviation / u_toleranceTexels)), clamped to 1..SL_MAX_TESSELLATION_LEVEL. Depth no longer
 //     depends on it: tessellation only shapes silhouettes (coverage).
+#include "common/shared_constants.h"
 layout(vertices = 3) out;
 in vec3 vc_worldPos[];
 in vec2 vc_uv[];
@@ -22,7 +23,6 @@ patch out float tp_valid;  // 0: seen edge-on by the light (no plane): interpola
 uniform mat4 u_lightViewProj;
 uniform int u_tessOn;
 uniform float u_toleranceTexels;
-uniform float u_maxLevel;
 uniform vec2 u_smSize;
 #include "rtw/warp.glsl"
 
@@ -51,7 +51,7 @@ float edgeLevel(vec2 ua, vec2 ub) {
     float f = float(q) * 0.25;
     dev = max(dev, distance(warpUv(mix(ca, cb, f)) * u_smSize, mix(ta, tb, f)));
   }
-  return clamp(ceil(sqrt(dev / u_toleranceTexels) / (t1 - t0)), 1.0, u_maxLevel);
+  return clamp(ceil(sqrt(dev / u_toleranceTexels) / (t1 - t0)), 1.0, float(SL_MAX_TESSELLATION_LEVEL));
 }
 
 // f(u, v) = f0 + A (u - u0) + B (v - v0) through the three vertices (Cramer's rule).

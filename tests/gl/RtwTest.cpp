@@ -40,7 +40,7 @@ TEST(RtwParity, CollapseBlurFloorScanWarpMatchCpu) {
   for (int n : {100, 256}) {
     auto r = rtwRenderer("default", "rtw-backward", 512, n);
     ASSERT_TRUE(r);
-    r->setPublishing(true);
+    r->requestPublications({"*"});
     ASSERT_FALSE(r->renderFrame(320, 180, 0));
     const Publication& pub = r->publication();
     rtw::ImportanceMap im = publishedIm(pub);
@@ -79,7 +79,7 @@ TEST(RtwParity, BackwardImportanceMatchesCpuScatter) {
     auto r = rtwRenderer("diagonal", "rtw-backward", 512, 100);
     ASSERT_TRUE(r);
     ASSERT_FALSE(r->params().set("importance.stride", stride));
-    r->setPublishing(true);
+    r->requestPublications({"*"});
     const int w = 320, h = 180;
     ASSERT_FALSE(r->renderFrame(w, h, 0));
     rtw::ImportanceMap gpu = publishedIm(r->publication());
@@ -136,7 +136,7 @@ TEST(RtwParity, MomentChainMatchesCpu) {
   for (int n : {100, 512}) {
     auto r = rtwRenderer("diagonal", "da-rtw", 512, n);
     ASSERT_TRUE(r);
-    r->setPublishing(true);
+    r->requestPublications({"*"});
     ASSERT_FALSE(r->renderFrame(320, 180, 0));
     ASSERT_FALSE(r->renderFrame(320, 180, 0));  // the second frame is rotated
     rtw::ImportanceMap full = publishedIm(r->publication());
@@ -200,7 +200,7 @@ TEST(RtwMemory, ReportsWhatItAllocatesAndMeetsTheTargets) {
     ASSERT_FALSE(r->setTechnique(c.technique));  // the uniform map goes with its technique
     ASSERT_FALSE(r->params().set("resolution", 512));
     ASSERT_FALSE(r->params().set("im.resolution", 512));
-    r->setPublishing(c.publishing);
+    if (c.publishing) r->requestPublications({"*"});
     for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(160, 90, 0));
     const MemoryStats& m = r->stats().memory;
     EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
@@ -211,7 +211,7 @@ TEST(RtwMemory, ReportsWhatItAllocatesAndMeetsTheTargets) {
     if (std::string(c.technique) == "rtw-backward" && !c.publishing) {
       EXPECT_EQ(m.texels(), 266242u);
     }
-    r->setPublishing(false);
+    r->requestPublications({});
     test::expectNoGlErrors(*r);
   }
 }
@@ -276,7 +276,7 @@ TEST(RtwClaims, DaRtwAlignsThePrincipalAxis) {
     const Camera* rowEnd = test::bookmark(*r->scene(), "row-end");
     ASSERT_TRUE(rowEnd);
     r->setCamera(*rowEnd);
-    r->setPublishing(true);
+    r->requestPublications({"*"});
     for (int f = 0; f < 4; ++f) ASSERT_FALSE(r->renderFrame(640, 360, 0));
     const Publication& pub = r->publication();
     const double wx = halfMassWidth(pub.curves.at("importance.x.blurred"));
@@ -378,7 +378,7 @@ TEST(RtwRobustness, AllZeroImportanceGivesIdentityAndNoRotation) {
   Camera sky = r->camera();
   sky.target = sky.position + glm::vec3(0.0f, 1.0f, 0.1f);  // looking up at the sky
   r->setCamera(sky);
-  r->setPublishing(true);
+  r->requestPublications({"*"});
   for (int f = 0; f < 3; ++f) ASSERT_FALSE(r->renderFrame(160, 90, 0));
   const Publication& pub = r->publication();
   for (float w : pub.curves.at("warp.x")) EXPECT_EQ(w, 0.0f);
@@ -397,7 +397,7 @@ TEST(DaRtwStability, StaticSceneHoldsRotationAndMask) {
     auto r = rtwRenderer("diagonal", "da-rtw", 512, 256);
     ASSERT_TRUE(r);
     ASSERT_FALSE(r->params().set("pca.threshold", threshold));
-    r->setPublishing(true);
+    r->requestPublications({"*"});
     int lastChange = -1, changes = 0, maskChangeFrames = 0;
     double previousDeg = 0.0, maxStep = 0.0;
     std::vector<std::uint8_t> previousMask;

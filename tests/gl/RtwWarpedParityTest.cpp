@@ -146,7 +146,7 @@ void checkParity(const Case& k) {
   // Silhouettes bend to within a quarter texel (the default, 1 texel, may move a caster's
   // edge past the one-texel margin around the CPU's silhouettes that "interior" assumes).
   ASSERT_FALSE(p.set("tessellation.tolerance", 0.25));
-  r->setPublishing(true);
+  r->requestPublications({"*"});
   const int w = 320, h = 180;
   ASSERT_FALSE(r->renderFrame(w, h, 0));
   test::expectNoGlErrors(*r);

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The teaching controls (shadowlab --self-test teaching=DIR, see ui/MainWindowSelfTest.cpp)
-# on `diagonal` with DA-RTW: ] steps through the passes of one frame in order (IM, moments,
-# PCA, collapse, blur, scan, warped map, lookup), each raising and marking the panel that
-# shows its output, and past the last pass renders exactly one more frame; Esc resumes;
+# on `diagonal` with DA-RTW: ] steps through the passes of one frame as da-rtw and the
+# renderer declare them (TechniqueInfo::passes; the same order as the timed passes), each
+# raising and marking the panel that shows its output, and past the last pass renders exactly one more frame; Esc resumes;
 # O cycles every overlay the `view.overlay` declaration lists; F7 splits the view with both
 # errors measured; every lesson in scenes/lessons applies its scene and technique. The
 # window at each step is saved to DIR for a look.

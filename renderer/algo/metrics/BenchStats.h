@@ -15,12 +15,14 @@
 #include <utility>
 #include <vector>
 
+#include "common/shared_constants.h"
+
 namespace sl {
 
 /// Mask encoding of the renderer's hard mask and the Embree reference (the same values as
 /// metrics/ErrorMetrics.h): 1 lit, 0 shadowed, 255 not covered; any other value is lit.
-inline constexpr std::uint8_t kStatsMaskShadowed = 0;
-inline constexpr std::uint8_t kStatsMaskUncovered = 255;
+inline constexpr std::uint8_t kStatsMaskShadowed = SL_MASK_SHADOWED;
+inline constexpr std::uint8_t kStatsMaskUncovered = SL_MASK_EMPTY;
 
 /// Percentile p in [0, 100] with linear interpolation between closest ranks (the
 /// "type 7" rule of R and numpy's default): sorted v, rank h = (n - 1) * p / 100,

@@ -28,11 +28,12 @@
 #include <glm/vec2.hpp>
 
 #include "Importance.h"
+#include "common/shared_constants.h"
 
 namespace sl::rtw {
 
 /// Largest blur radius; the shader's weight array has 2 * kMaxBlurRadius + 1 entries.
-inline constexpr int kMaxBlurRadius = 32;
+inline constexpr int kMaxBlurRadius = SL_BLUR_MAX_RADIUS;
 
 // ---------------------------------------------------------------------------------------
 // Step 3: Gaussian blur (1D, clamp-to-edge).

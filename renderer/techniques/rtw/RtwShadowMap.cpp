@@ -1,3 +1,4 @@
+// RTW / DA-RTW (RtwShadowMap.h): analysis, 1D warp maps, the exact warped depth pass.
 #include "RtwShadowMap.h"
 
 #include <bit>
@@ -7,7 +8,10 @@
 #include "algo/Focus.h"
 #include "algo/rtw/Moments.h"
 #include "algo/rtw/Warp.h"
+#include "common/shared_constants.h"
 #include "core/LightBinding.h"
+#include "core/ParamBinding.h"
+#include "core/Publish.h"
 #include "core/SceneGpu.h"
 #include "core/ShadowPass.h"
 
@@ -15,14 +19,13 @@ namespace sl {
 
 namespace {
 
-/// Largest tessellation level the warped pass asks for. GL guarantees 64, but llvmpipe
-/// corrupts the warped map at levels 32-64 (measured: corridor, tolerance 0.01: 55.6 %
-/// error at cap 64, 0.73 % at cap 16).
-constexpr int kMaxTessellationLevel = 16;
+/// Largest tessellation level the warped pass asks for (why 16: shared_constants.h).
+constexpr int kMaxTessellationLevel = SL_MAX_TESSELLATION_LEVEL;
 
-/// DA-RTW's PCA reads the IM reduced to at most this size (block maxima): seed 000's
-/// moments need the distribution's shape, not 512^2 texels.
-constexpr int kMomentImMax = 128;
+/// Work groups of `n` invocations for a group size of `group`.
+GLuint groups(int n, int group) {
+  return GLuint((n + group - 1) / group);
+}
 
 gl::ProgramDesc compute(const std::string& file) {
   return {file, {{GL_COMPUTE_SHADER, file}}, {}, {}};
@@ -40,153 +43,151 @@ std::vector<float> readFloats(const gl::Buffer& b, size_t offset, size_t count) 
 TechniqueInfo RtwShadowMap::info(const std::string& id) {
   std::vector<ParamDecl> p = shadowMapParamDecls(1024);
   auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
-  add({"im.resolution",
-       "IM resolution",
-       "Importance",
-       ParamType::Int,
-       512,
-       32,
-       2048,
-       32,
-       {},
-       "Importance map width and height (light space); also the length of the 1D maps."});
-  add({"importance.eye",
-       "Eye distance term",
-       "Importance",
-       ParamType::Bool,
-       1,
-       0,
-       1,
-       1,
-       {},
-       "Perspective aliasing: importance near/eye depth (seed 002's only term)."});
-  add({"importance.eye.weight",
-       "Eye weight",
-       "Importance",
-       ParamType::Float,
-       1,
-       0,
-       1,
-       0.05,
-       {},
-       "0 = neutral, 1 = the full near/depth falloff."});
-  add({"importance.orientation",
-       "Orientation term",
-       "Importance",
-       ParamType::Bool,
-       1,
-       0,
-       1,
-       1,
-       {},
-       "Projection aliasing: cos(theta_eye) / cos(theta_light) of the surface."});
-  add({"importance.orientation.weight",
-       "Orientation weight",
-       "Importance",
-       ParamType::Float,
-       0.5,
-       0,
-       1,
-       0.05,
-       {},
-       "0 = neutral, 1 = the full cosine ratio."});
-  add({"importance.edge",
-       "Shadow-edge term",
-       "Importance",
-       ParamType::Bool,
-       0,
-       0,
-       1,
-       1,
-       {},
-       "Extra importance within 2 px of a shadow edge of the previous frame."});
-  add({"importance.stride",
-       "Pixel stride",
-       "Importance",
-       ParamType::Int,
-       2,
-       1,
-       4,
-       1,
-       {},
-       "Backward analysis: every k-th camera pixel in x and y scatters its importance (k^2 "
-       "fewer atomics). The IM keeps the maximum per texel, and neighbouring pixels land in "
-       "the same or adjacent texels, which the blur spreads over anyway."});
-  add({"importance.edge.weight",
-       "Edge weight",
-       "Importance",
-       ParamType::Float,
-       4,
-       0,
-       16,
-       0.5,
-       {},
-       "A texel on a shadow edge gets (1 + weight) times the importance."});
-  add({"blur.radius",
-       "Blur radius",
-       "Warp",
-       ParamType::Int,
-       4,
-       0,
-       32,
-       1,
-       {},
-       "Gaussian blur radius of the 1D importance maps, in texels."});
-  add({"blur.sigma",
-       "Blur sigma",
-       "Warp",
-       ParamType::Float,
-       2,
-       0.1,
-       16,
-       0.1,
-       {},
-       "Gaussian blur standard deviation, in texels."});
-  add({"importance.floor",
-       "Importance floor",
-       "Warp",
-       ParamType::Float,
-       0.01,
-       0,
-       1,
-       0.01,
-       {},
-       "Minimum importance as a share of the maximum, so no region collapses to zero texels."});
-  add({"tessellation",
-       "Tessellation",
-       "Warp",
-       ParamType::Bool,
-       1,
-       0,
-       1,
-       1,
-       {},
-       "Tessellate while rendering the warped map so long triangles bend with the warp."});
-  add({"tessellation.tolerance",
-       "Bend tolerance",
-       "Warp",
-       ParamType::Float,
-       1.0,
-       0.01,
-       16,
-       0.05,
-       {},
-       "Tessellation level from the warped edge: how far the warp bends it from a straight "
-       "line, in texels; level = ceil(sqrt(bend / tolerance)), at most " +
-           std::to_string(kMaxTessellationLevel) +
-           ". Depth is exact whatever the level: this only shapes silhouettes."});
+  add({.key = "im.resolution",
+       .label = "IM resolution",
+       .group = "Importance",
+       .type = ParamType::Int,
+       .defaultValue = 512,
+       .minValue = 32,
+       .maxValue = SL_IM_MAX_RESOLUTION,
+       .step = 32,
+       .help = "Importance map width and height (light space); also the length of the 1D maps."});
+  add({.key = "importance.eye",
+       .label = "Eye distance term",
+       .group = "Importance",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Perspective aliasing: importance near/eye depth (seed 002's only term).",
+       .uniform = "u_eyeOn"});
+  add({.key = "importance.eye.weight",
+       .label = "Eye weight",
+       .group = "Importance",
+       .type = ParamType::Float,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 0.05,
+       .help = "0 = neutral, 1 = the full near/depth falloff.",
+       .uniform = "u_eyeWeight"});
+  add({.key = "importance.orientation",
+       .label = "Orientation term",
+       .group = "Importance",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Projection aliasing: cos(theta_eye) / cos(theta_light) of the surface.",
+       .uniform = "u_orientationOn"});
+  add({.key = "importance.orientation.weight",
+       .label = "Orientation weight",
+       .group = "Importance",
+       .type = ParamType::Float,
+       .defaultValue = 0.5,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 0.05,
+       .help = "0 = neutral, 1 = the full cosine ratio.",
+       .uniform = "u_orientationWeight"});
+  add({.key = "importance.edge",
+       .label = "Shadow-edge term",
+       .group = "Importance",
+       .type = ParamType::Bool,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Extra importance within 2 px of a shadow edge of the previous frame.",
+       .uniform = "u_edgeOn"});
+  add({.key = "importance.stride",
+       .label = "Pixel stride",
+       .group = "Importance",
+       .type = ParamType::Int,
+       .defaultValue = 2,
+       .minValue = 1,
+       .maxValue = 4,
+       .step = 1,
+       .help =
+           "Backward analysis: every k-th camera pixel in x and y scatters its importance (k^2 "
+           "fewer atomics). The IM keeps the maximum per texel, and neighbouring pixels land in "
+           "the same or adjacent texels, which the blur spreads over anyway.",
+       .uniform = "u_stride"});
+  add({.key = "importance.edge.weight",
+       .label = "Edge weight",
+       .group = "Importance",
+       .type = ParamType::Float,
+       .defaultValue = 4,
+       .minValue = 0,
+       .maxValue = 16,
+       .step = 0.5,
+       .help = "A texel on a shadow edge gets (1 + weight) times the importance.",
+       .uniform = "u_edgeWeight"});
+  add({.key = "blur.radius",
+       .label = "Blur radius",
+       .group = "Warp",
+       .type = ParamType::Int,
+       .defaultValue = 4,
+       .minValue = 0,
+       .maxValue = rtw::kMaxBlurRadius,
+       .step = 1,
+       .help = "Gaussian blur radius of the 1D importance maps, in texels."});
+  add({.key = "blur.sigma",
+       .label = "Blur sigma",
+       .group = "Warp",
+       .type = ParamType::Float,
+       .defaultValue = 2,
+       .minValue = 0.1,
+       .maxValue = 16,
+       .step = 0.1,
+       .help = "Gaussian blur standard deviation, in texels."});
+  add({.key = "importance.floor",
+       .label = "Importance floor",
+       .group = "Warp",
+       .type = ParamType::Float,
+       .defaultValue = 0.01,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 0.01,
+       .help =
+           "Minimum importance as a share of the maximum, so no region collapses to zero texels.",
+       .uniform = "u_floor"});
+  add({.key = "tessellation",
+       .label = "Tessellation",
+       .group = "Warp",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Tessellate while rendering the warped map so long triangles bend with the warp.",
+       .uniform = "u_tessOn"});
+  add({.key = "tessellation.tolerance",
+       .label = "Bend tolerance",
+       .group = "Warp",
+       .type = ParamType::Float,
+       .defaultValue = 1.0,
+       .minValue = 0.01,
+       .maxValue = 16,
+       .step = 0.05,
+       .help = "Tessellation level from the warped edge: how far the warp bends it from a straight "
+               "line, in texels; level = ceil(sqrt(bend / tolerance)), at most " +
+               std::to_string(kMaxTessellationLevel) +
+               ". Depth is exact whatever the level: this only shapes silhouettes.",
+       .uniform = "u_toleranceTexels"});
   const bool da = id == "da-rtw";
   if (da)
-    add({"pca.threshold",
-         "Vibration threshold",
-         "Rotation",
-         ParamType::Float,
-         0.9999,
-         0.9,
-         1.0,
-         0.0001,
-         {},
-         "Keep the rotation while e_x > threshold (seed 000: 0.9999); 1.0 never holds."});
+    add({.key = "pca.threshold",
+         .label = "Vibration threshold",
+         .group = "Rotation",
+         .type = ParamType::Float,
+         .defaultValue = 0.9999,
+         .minValue = 0.9,
+         .maxValue = 1.0,
+         .step = 0.0001,
+         .help = "Keep the rotation while e_x > threshold (seed 000: 0.9999); 1.0 never holds."});
   std::string name, desc;
   if (id == "rtw-forward") {
     name = "RTW (forward analysis)";
@@ -212,7 +213,11 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   // Directional only: the warp is built over one orthographic light image; a spot's
   // perspective map (or a point light's cube) would need the importance and warp defined in
   // its projective space, which is not implemented.
-  return {id, name, desc + " Directional light only.", p, {LightType::Directional}};
+  TechniqueInfo info{id, name, desc + " Directional light only.", p};
+  info.passes = passDecls(id);
+  info.publications = publicationDecls(id);
+  info.lights = {LightType::Directional};
+  return info;
 }
 
 RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
@@ -250,7 +255,7 @@ void RtwShadowMap::resetTemporalState() {
   momentFence_.reset();
 }
 
-void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
+void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx) {
   const GLbitfield rw = GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT;
   if (smRes != smRes_) {
     shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, smRes, smRes);
@@ -274,8 +279,8 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
     imRes_ = imRes;
     momentFence_.reset();
   }
-  // The 2D IM: always for forward analysis (its render target), else only for the panels.
-  const bool wantIm = !backward() || publishing;
+  // The 2D IM: always for forward analysis (its render target), else only while asked for.
+  const bool wantIm = !backward() || ctx.wants("importance");
   if (wantIm && !importance_) {
     importance_ = gl::Texture::create2D(GL_R32UI, imRes, imRes);
     if (!backward()) {
@@ -289,7 +294,7 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, bool publishing) {
   } else if (!wantIm && importance_) {
     importance_ = {};
   }
-  if (!publishing) uniformMap_ = {};
+  if (!ctx.wants("shadow map.uniform")) uniformMap_ = {};
   // DA-RTW: the PCA's IM, the block maxima of the full IM down to kMomentImMax^2.
   const int momentRes = std::min(imRes, kMomentImMax);
   if (config_.rotation && (momentRes != momentRes_ || !momentIm_)) {
@@ -321,20 +326,17 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   // The angle is measured in metres: the IM's axes span the light frustum's extents.
   rtw::MomentStats stats = rtw::momentsFromTop(t, 0.5f * momentExtentM_);
   lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")));
-  if (ctx.publication) {
-    auto& n = ctx.publication->numbers;
-    n["mean.x"] = stats.meanX;
-    n["mean.y"] = stats.meanY;
-    n["cov.xx"] = stats.covXX;
-    n["cov.xy"] = stats.covXY;
-    n["cov.yy"] = stats.covYY;
-    n["eigen.1"] = stats.lambda1;
-    n["eigen.2"] = stats.lambda2;
-    n["pca.valid"] = stats.valid ? 1 : 0;
-    const char* names[6] = {"moment.I",   "moment.xI",  "moment.yI",
-                            "moment.xxI", "moment.yyI", "moment.xyI"};
-    for (int c = 0; c < 6; ++c) n[names[c]] = top[c];
-  }
+  publishNumber(ctx, "mean.x", stats.meanX);
+  publishNumber(ctx, "mean.y", stats.meanY);
+  publishNumber(ctx, "cov.xx", stats.covXX);
+  publishNumber(ctx, "cov.xy", stats.covXY);
+  publishNumber(ctx, "cov.yy", stats.covYY);
+  publishNumber(ctx, "eigen.1", stats.lambda1);
+  publishNumber(ctx, "eigen.2", stats.lambda2);
+  publishNumber(ctx, "pca.valid", stats.valid ? 1 : 0);
+  const char* names[6] = {"moment.I",   "moment.xI",  "moment.yI",
+                          "moment.xxI", "moment.yyI", "moment.xyI"};
+  for (int c = 0; c < 6; ++c) publishNumber(ctx, names[c], top[c]);
 }
 
 // DA-RTW's moment chain of this frame's moment IM (level 1 straight from it, then one
@@ -344,13 +346,23 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
   const glm::ivec2 size(momentRes_);
   const glm::vec2 invSize(1.0f / float(size.x), 1.0f / float(size.y));
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindImageTexture(0, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, momentBuffer_.id());
-  if (ctx.publication) {  // level 0 only for the panels; the estimate never needs it
+  glBindImageTexture(SL_RTW_IMAGE_MOMENT_IM, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
+                     GL_R32UI);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_MOMENTS, momentBuffer_.id());
+  const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+  auto levelKey = [&ch](int c, size_t level) {
+    return "moment." + std::string(ch[c]) + "." + std::to_string(level);
+  };
+  auto wantsLevel = [&](size_t level) {
+    for (int c = 0; c < 6; ++c)
+      if (ctx.wants(levelKey(c, level))) return true;
+    return false;
+  };
+  if (wantsLevel(0)) {  // level 0 only for the panels; the estimate never needs it
     moments_.use();
     moments_.set("u_size", size);
     moments_.set("u_invSize", invSize);
-    glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
+    glDispatchCompute(groups(size.x, SL_RTW_MOMENT_GROUP), groups(size.y, SL_RTW_MOMENT_GROUP), 1);
   }
   const bool chain = momentSizes_.size() > 1;
   if (chain) {
@@ -358,7 +370,8 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
     momentsLevel1_.set("u_size", size);
     momentsLevel1_.set("u_invSize", invSize);
     momentsLevel1_.set("u_dstOffset", momentOffsets_[1]);
-    glDispatchCompute(GLuint((momentSizes_[1].x + 7) / 8), GLuint((momentSizes_[1].y + 7) / 8), 1);
+    glDispatchCompute(groups(momentSizes_[1].x, SL_RTW_MOMENT_GROUP),
+                      groups(momentSizes_[1].y, SL_RTW_MOMENT_GROUP), 1);
   }
   momentsReduce_.use();
   for (size_t l = chain ? 1 : 0; l + 1 < momentSizes_.size(); ++l) {
@@ -367,27 +380,24 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
     momentsReduce_.set("u_srcSize", momentSizes_[l]);
     momentsReduce_.set("u_srcOffset", momentOffsets_[l]);
     momentsReduce_.set("u_dstOffset", momentOffsets_[l + 1]);
-    glDispatchCompute(GLuint((dst.x + 7) / 8), GLuint((dst.y + 7) / 8), 1);
+    glDispatchCompute(groups(dst.x, SL_RTW_MOMENT_GROUP), groups(dst.y, SL_RTW_MOMENT_GROUP), 1);
   }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   momentFence_.place();
   momentExtentM_ = lastExtentM_;
-  if (!ctx.publication) return;
-  // The chain itself (level images) and its IM, for the moment panel (debug: blocking).
-  Publication& pub = *ctx.publication;
-  FloatImage im{size.x, size.y, 1, std::vector<float>(size_t(size.x) * size_t(size.y))};
-  glGetTextureImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                    GLsizei(im.values.size() * sizeof(float)), im.values.data());  // float bits
-  pub.images["importance.moments"] = std::move(im);
-  const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+  // The chain itself (level images) and its IM, for the moment panel (debug: blocking),
+  // only what is asked for.
+  publishFloatBits(ctx, "importance.moments", momentIm_);
   for (size_t l = 0; l < momentSizes_.size(); ++l) {
+    if (!wantsLevel(l)) continue;
     glm::ivec2 s = momentSizes_[l];
     std::vector<float> all =
-        readFloats(momentBuffer_, size_t(momentOffsets_[l]), size_t(6 * s.x * s.y));
+        readPublishedFloats(ctx, momentBuffer_, size_t(momentOffsets_[l]), size_t(6 * s.x * s.y));
     for (int c = 0; c < 6; ++c) {
+      if (!ctx.wants(levelKey(c, l))) continue;
       FloatImage img{s.x, s.y, 1, std::vector<float>(size_t(s.x * s.y))};
       for (size_t i = 0; i < img.values.size(); ++i) img.values[i] = all[6 * i + size_t(c)];
-      pub.images["moment." + std::string(ch[c]) + "." + std::to_string(l)] = std::move(img);
+      ctx.publication->images[levelKey(c, l)] = std::move(img);
     }
   }
 }
@@ -397,24 +407,19 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
   auto pass = ctx.timer.scope("importance");
   const ParamSet& p = ctx.params;
   auto setTerms = [&](const gl::Program& prog) {
-    prog.set("u_eyeOn", p.getBool("importance.eye") ? 1 : 0);
-    prog.set("u_eyeWeight", float(p.get("importance.eye.weight")));
-    prog.set("u_orientationOn", p.getBool("importance.orientation") ? 1 : 0);
-    prog.set("u_orientationWeight", float(p.get("importance.orientation.weight")));
+    // The importance.* terms are bound from their declarations (bindParams).
     prog.set("u_minCosL", 0.1f);
-    prog.set("u_edgeOn", p.getBool("importance.edge") ? 1 : 0);
-    prog.set("u_edgeWeight", float(p.get("importance.edge.weight")));
     prog.set("u_nearM", ctx.camera.nearM);
     prog.set("u_lightViewProj", lightViewProj);
     prog.set("u_cameraPos", ctx.camera.position);
     prog.set("u_cameraForward", ctx.camera.forward());
     bindLight(prog, ctx.light);
-    prog.set("u_gPosition", 1);
-    prog.set("u_prevHard", 3);
+    prog.set("u_gPosition", SL_UNIT_G_POSITION);
+    prog.set("u_prevHard", SL_UNIT_HARD);
   };
-  glBindTextureUnit(1, ctx.gPosition.id());
-  glBindTextureUnit(2, ctx.gNormal.id());
-  glBindTextureUnit(3, ctx.prevHardMask.id());
+  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
+  glBindTextureUnit(SL_UNIT_HARD, ctx.prevHardMask.id());
   const GLuint zero = 0;
   if (importance_) glClearTexImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   if (momentIm_) glClearTexImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -424,21 +429,23 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     glClearNamedBufferData(collapsed_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     backward_.use();
     setTerms(backward_);
-    backward_.set("u_gNormal", 2);
+    backward_.set("u_gNormal", SL_UNIT_G_NORMAL);
     backward_.set("u_n", imRes_);
     backward_.set("u_writeIm", importance_ ? 1 : 0);
     backward_.set("u_writeMomentIm", momentIm_ ? 1 : 0);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_COLLAPSED, collapsed_.id());
     if (importance_)
-      glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    if (momentIm_) glBindImageTexture(1, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+      glBindImageTexture(SL_RTW_IMAGE_IM, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                         GL_R32UI);
+    if (momentIm_)
+      glBindImageTexture(SL_RTW_IMAGE_MOMENT_IM, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                         GL_R32UI);
     // One full-screen triangle into a framebuffer with no attachments, one fragment per
     // scattering pixel (every importance.stride-th in x and y).
-    const int stride = p.getInt("importance.stride");
+    const int stride = p.getInt("importance.stride");  // u_stride: bound from its declaration
     const int sw = (ctx.width + stride - 1) / stride, sh = (ctx.height + stride - 1) / stride;
-    backward_.set("u_stride", stride);
     glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
     glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, sw);
     glNamedFramebufferParameteri(scatterFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, sh);
@@ -455,7 +462,7 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     forward_.set("u_cameraViewProj", ctx.cameraProj * ctx.cameraView);
     forward_.set("u_hybrid", config_.analysis == Analysis::Hybrid ? 1 : 0);
     forward_.set("u_visibilityToleranceM", 3.0f * lightTexelM);
-    ctx.sceneGpu.draw(forward_, 0);
+    ctx.sceneGpu.draw(forward_, SL_UNIT_MATERIAL);
   }
 }
 
@@ -467,10 +474,10 @@ void RtwShadowMap::buildWarpMaps(FrameContext& ctx) {
   if (!backward()) {  // backward analysis scattered straight into the 1D maps
     auto pass = ctx.timer.scope("collapse");
     collapse_.use();
-    glBindImageTexture(0, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
+    glBindImageTexture(SL_RTW_IMAGE_IM, importance_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_COLLAPSED, collapsed_.id());
     collapse_.set("u_n", n);
-    glDispatchCompute(GLuint((2 * n + 63) / 64), 1, 1);
+    glDispatchCompute(groups(2 * n, SL_RTW_LINEAR_GROUP), 1, 1);
   }
   {
     auto pass = ctx.timer.scope("blur");
@@ -479,30 +486,29 @@ void RtwShadowMap::buildWarpMaps(FrameContext& ctx) {
         rtw::gaussianWeights(p.getInt("blur.radius"), float(p.get("blur.sigma")));
     int radius = int(w.size() / 2);
     blur_.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, collapsed_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, blurred_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_COLLAPSED, collapsed_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_BLURRED, blurred_.id());
     blur_.set("u_n", n);
     blur_.set("u_radius", radius);
     glProgramUniform1fv(blur_.id(), blur_.location("u_weights"), GLsizei(w.size()), w.data());
-    glDispatchCompute(GLuint((2 * n + 63) / 64), 1, 1);
+    glDispatchCompute(groups(2 * n, SL_RTW_LINEAR_GROUP), 1, 1);
   }
   {
     auto pass = ctx.timer.scope("scan + warp");
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scanWarp_.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, blurred_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, warp_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_BLURRED, blurred_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_WARP, warp_.id());
     scanWarp_.set("u_n", n);
     scanWarp_.set("u_m", int(std::bit_ceil(unsigned(n))));
-    scanWarp_.set("u_floor", float(p.get("importance.floor")));
     glDispatchCompute(2, 1, 1);
     // The inverse tables: the unwarped light uv of every warped texel centre.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     inverseWarp_.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, inverse_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_INVERSE, inverse_.id());
     inverseWarp_.set("u_n", n);
     inverseWarp_.set("u_size", smRes_);
-    glDispatchCompute(GLuint((2 * smRes_ + 63) / 64), 1, 1);
+    glDispatchCompute(groups(2 * smRes_, SL_RTW_LINEAR_GROUP), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
 }
@@ -512,31 +518,29 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
   gl::Framebuffer& fbo = warp ? smFbo_ : uniformFbo_;
   beginDepthPass(fbo.id(), smRes_, smRes_);
   warped_.use();
-  bindWarpTextures(warped_, 1);  // unit 0: the material's texture
+  bindWarpTextures(warped_, SL_UNIT_MATERIAL + 1);
   warped_.set("u_lightViewProj", lightViewProj);
   warped_.set("u_warpN", imRes_);
   warped_.set("u_warpOn", warp ? 1 : 0);
   warped_.set("u_smRes", smRes_);
-  warped_.set("u_tessOn", warp && p.getBool("tessellation") ? 1 : 0);
-  warped_.set("u_toleranceTexels", float(p.get("tessellation.tolerance")));
-  warped_.set("u_maxLevel", float(kMaxTessellationLevel));
+  bindParams(warped_, p);                 // tessellation, tessellation.tolerance
+  if (!warp) warped_.set("u_tessOn", 0);  // the unwarped contrast map: no bending
   warped_.set("u_smSize", glm::vec2(float(smRes_)));
-  ctx.sceneGpu.draw(warped_, 0, true, SceneGpu::Geometry::SplitLongTriangles);
+  ctx.sceneGpu.draw(warped_, SL_UNIT_MATERIAL, true, SceneGpu::Geometry::SplitLongTriangles);
 }
 
 void RtwShadowMap::renderShadows(FrameContext& ctx) {
   const ParamSet& p = ctx.params;
-  ensureResources(p.getInt("resolution"), p.getInt("im.resolution"), ctx.publication != nullptr);
+  ensureResources(p.getInt("resolution"), p.getInt("im.resolution"), ctx);
   if (config_.rotation) rotationFromLastMoments(ctx);
-  if (ctx.publication && config_.rotation) {
-    auto& n = ctx.publication->numbers;
-    n["e_x"] = lastUpdate_.e_x;
-    n["e_y"] = lastUpdate_.e_y;
-    n["rotation.held"] = lastUpdate_.held ? 1 : 0;
-    n["rotation.deg"] = rotation_.angleDeg();
-    n["rotation.step_deg"] = lastUpdate_.stepDeg;
-    n["rotation.changes"] = rotation_.changes;
-    n["pca.threshold"] = p.get("pca.threshold");
+  if (config_.rotation) {
+    publishNumber(ctx, "e_x", lastUpdate_.e_x);
+    publishNumber(ctx, "e_y", lastUpdate_.e_y);
+    publishNumber(ctx, "rotation.held", lastUpdate_.held ? 1 : 0);
+    publishNumber(ctx, "rotation.deg", rotation_.angleDeg());
+    publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
+    publishNumber(ctx, "rotation.changes", rotation_.changes);
+    publishNumber(ctx, "pca.threshold", p.get("pca.threshold"));
   }
 
   LightFit fit;
@@ -548,7 +552,7 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
                                        ctx.light.directionalTowards(), fs, fit))
       throw std::runtime_error(*err);
   }
-  lookup_ = depthLookupState(fit, p);
+  view_ = depthMapView(fit);
   lastExtentM_ = fit.extentM;
 
   buildImportance(ctx, fit.viewProj, std::max(fit.extentM.x, fit.extentM.y) / float(imRes_));
@@ -562,28 +566,22 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
 }
 
 void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
-  Publication& pub = *ctx.publication;
-  const int n = imRes_;
-  pub.numbers["light.extent.x"] = lastExtentM_.x;
-  pub.numbers["light.extent.y"] = lastExtentM_.y;
-  FloatImage im{n, n, 1, std::vector<float>(size_t(n) * size_t(n))};
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetTextureImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                    GLsizei(im.values.size() * sizeof(float)), im.values.data());  // float bits
-  pub.images["importance"] = std::move(im);
-  pub.curves["inverse.x"] = readFloats(inverse_, 0, size_t(smRes_));
-  pub.curves["inverse.y"] = readFloats(inverse_, size_t(smRes_), size_t(smRes_));
-  std::vector<float> c = readFloats(collapsed_, 0, size_t(2 * n));
-  std::vector<float> b = readFloats(blurred_, 0, size_t(2 * n));
-  std::vector<float> w = readFloats(warp_, 0, size_t(2 * (n + 1)));
-  pub.curves["importance.x"].assign(c.begin(), c.begin() + n);
-  pub.curves["importance.y"].assign(c.begin() + n, c.end());
-  pub.curves["importance.x.blurred"].assign(b.begin(), b.begin() + n);
-  pub.curves["importance.y.blurred"].assign(b.begin() + n, b.end());
-  pub.curves["warp.x"].assign(w.begin(), w.begin() + n + 1);
-  pub.curves["warp.y"].assign(w.begin() + n + 1, w.end());
-  publishDepth(pub, "shadow map", shadowMap_);
-  // The unwarped map of the same size, for contrast (only while publishing; in memory()).
+  const size_t n = size_t(imRes_), sm = size_t(smRes_);
+  publishNumber(ctx, "light.extent.x", lastExtentM_.x);
+  publishNumber(ctx, "light.extent.y", lastExtentM_.y);
+  if (importance_) publishFloatBits(ctx, "importance", importance_);
+  publishCurve(ctx, "inverse.x", inverse_, 0, sm);
+  publishCurve(ctx, "inverse.y", inverse_, sm, sm);
+  publishCurve(ctx, "importance.x", collapsed_, 0, n);
+  publishCurve(ctx, "importance.y", collapsed_, n, n);
+  publishCurve(ctx, "importance.x.blurred", blurred_, 0, n);
+  publishCurve(ctx, "importance.y.blurred", blurred_, n, n);
+  publishCurve(ctx, "warp.x", warp_, 0, n + 1);
+  publishCurve(ctx, "warp.y", warp_, n + 1, n + 1);
+  publishDepth(ctx, "shadow map", shadowMap_);
+  // The unwarped map of the same size, for contrast: rendered only while asked for (and
+  // then listed in memory()).
+  if (!ctx.wants("shadow map.uniform")) return;
   if (!uniformMap_ || uniformMap_.width() != smRes_) {
     uniformMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, smRes_, smRes_);
     uniformFbo_ = gl::Framebuffer::create();
@@ -592,11 +590,13 @@ void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
     uniformFbo_.checkComplete("RTW contrast map");
   }
   renderWarped(ctx, lightViewProj, false);
-  publishDepth(pub, "shadow map.uniform", uniformMap_);
+  publishDepth(ctx, "shadow map.uniform", uniformMap_);
 }
 
 void RtwShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  bindDepthLookup(resolve, firstUnit, shadowMap_, lookup_);
+  bindDepthLookup(resolve, std::span(&view_, 1));
+  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
+  resolve.set("u_shadowMap", firstUnit);
   bindWarpTextures(resolve, firstUnit + 1);
   resolve.set("u_warpN", imRes_);
   resolve.set("u_warpOn", 1);
@@ -608,6 +608,11 @@ void RtwShadowMap::bindWarpTextures(const gl::Program& prog, int unit) const {
   glBindTextureUnit(GLuint(unit + 1), inverseView_.id());
   prog.set("u_warpEdges", unit);
   prog.set("u_inverseWarp", unit + 1);
+}
+
+std::vector<const gl::Program*> RtwShadowMap::programs() const {
+  return {&backward_,    &forward_, &collapse_, &blur_,          &scanWarp_,
+          &inverseWarp_, &warped_,  &moments_,  &momentsLevel1_, &momentsReduce_};
 }
 
 MemoryStats RtwShadowMap::memory() const {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algo/rtw/Rotation.h"
+#include "common/shared_constants.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 
@@ -21,11 +22,19 @@ class RtwShadowMap : public Technique {
     bool rotation = false;  ///< DA-RTW
   };
   static TechniqueInfo info(const std::string& id);
+  /// DA-RTW's PCA reads the IM reduced to at most this size (block maxima): seed 000's
+  /// moments need the distribution's shape, not 512^2 texels.
+  static constexpr int kMomentImMax = SL_MOMENT_IM_MAX;  ///< common/shared_constants.h
+  /// The passes of technique `id` in frame order, as timed (RtwDeclarations.cpp).
+  static std::vector<PassDecl> passDecls(const std::string& id);
+  /// What technique `id` publishes when asked, with the readback cost of each key.
+  static std::vector<PublicationDecl> publicationDecls(const std::string& id);
   RtwShadowMap(const gl::ShaderLibrary& lib, Config config);
 
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "rtw/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override;
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
   void resetTemporalState() override;
@@ -33,7 +42,7 @@ class RtwShadowMap : public Technique {
   const rtw::RotationState& rotation() const { return rotation_; }
 
  private:
-  void ensureResources(int smRes, int imRes, bool publishing);
+  void ensureResources(int smRes, int imRes, const FrameContext& ctx);
   void rotationFromLastMoments(FrameContext& ctx);
   void buildMoments(FrameContext& ctx);
   void buildImportance(FrameContext& ctx, const glm::mat4& lightViewProj, float lightTexelM);
@@ -62,7 +71,7 @@ class RtwShadowMap : public Technique {
   std::vector<int> momentOffsets_;  ///< float offset of each level
   std::vector<glm::ivec2> momentSizes_;
   int smRes_ = 0, imRes_ = 0, momentRes_ = 0;
-  DepthLookupState lookup_;
+  DepthMapView view_;
   glm::vec2 lastExtentM_{1.0f};
   glm::vec2 momentExtentM_{1.0f};  ///< the light frustum extent the pending moments were taken in
   rtw::RotationState rotation_;

@@ -1,21 +1,29 @@
+// Uniform shadow map (UniformShadowMap.h): fit, exact depth pass, single-map lookup.
 #include "UniformShadowMap.h"
 
 #include <stdexcept>
 
 #include "algo/Focus.h"
 #include "core/SceneGpu.h"
+#include "core/Publish.h"
 #include "core/ShadowPass.h"
 
 namespace sl {
 
 TechniqueInfo UniformShadowMap::info() {
-  return {"uniform",
-          "Uniform shadow map",
-          "Standard shadow map (Williams 1978): one orthographic depth map from the light, "
-          "focused on what the camera sees (directional); for a spot, one perspective map "
-          "covering its cone. The baseline.",
-          shadowMapParamDecls(2048),
-          {LightType::Directional, LightType::Spot}};
+  TechniqueInfo info{"uniform", "Uniform shadow map",
+                     "Standard shadow map (Williams 1978): one orthographic depth map from the "
+                     "light, focused on what the camera sees (directional); for a spot, one "
+                     "perspective map covering its cone. The baseline.",
+                     shadowMapParamDecls(2048)};
+  info.passes = {{"shadow map", "Shadow map",
+                  "Fit the light's frustum (directional: orthographic, focused on what the "
+                  "camera sees; spot: perspective, its cone), then render the scene's depth "
+                  "from the light: uniform texels over the frustum.",
+                  "shadowmap"}};
+  info.publications = {shadowMapPublicationDecl()};
+  info.lights = {LightType::Directional, LightType::Spot};
+  return info;
 }
 
 UniformShadowMap::UniformShadowMap(const gl::ShaderLibrary& lib)
@@ -31,7 +39,7 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
                                             ctx.light.directionalTowards(), FocusSettings{}, fit)) {
     throw std::runtime_error(*err);
   }
-  lookup_ = depthLookupState(fit, ctx.params);
+  view_ = depthMapView(fit);
 
   if (!shadowMap_ || shadowMap_.width() != res) {
     shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
@@ -41,12 +49,13 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
     fbo_.checkComplete("uniform shadow map");
   }
   renderDepth(ctx, depthProgram_, fbo_.id(), res, res, fit.viewProj);
-  if (ctx.publication) publishDepth(*ctx.publication, "shadow map", shadowMap_);
+  publishDepth(ctx, "shadow map", shadowMap_);
 }
 
 void UniformShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  bindDepthLookup(resolve, firstUnit, shadowMap_, lookup_);
-  resolve.set("u_uniformMapSize", glm::vec2(float(shadowMap_.width()), float(shadowMap_.height())));
+  bindDepthLookup(resolve, std::span(&view_, 1));
+  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
+  resolve.set("u_shadowMap", firstUnit);
 }
 
 MemoryStats UniformShadowMap::memory() const {

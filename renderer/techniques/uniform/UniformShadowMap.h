@@ -17,6 +17,7 @@ class UniformShadowMap : public Technique {
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "uniform/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override { return {&depthProgram_}; }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
@@ -24,7 +25,7 @@ class UniformShadowMap : public Technique {
   gl::Program depthProgram_;
   gl::Texture shadowMap_;
   gl::Framebuffer fbo_;
-  DepthLookupState lookup_;
+  DepthMapView view_;
 };
 
 }  // namespace sl

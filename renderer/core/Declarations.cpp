@@ -1,0 +1,106 @@
+// GL-free declarations of what a frame does and publishes (core/Renderer.h): the renderer's
+// own passes, key patterns, and the declared cost of a publication request.
+#include <algorithm>
+
+#include "core/Renderer.h"
+#include "core/Technique.h"
+
+namespace sl {
+
+const char* publicationKindName(PublicationKind kind) {
+  switch (kind) {
+    case PublicationKind::Image:
+      return "image";
+    case PublicationKind::ImageSet:
+      return "image set";
+    case PublicationKind::Curve:
+      return "curve";
+    case PublicationKind::Number:
+      return "number";
+  }
+  return "?";
+}
+
+bool publicationKeyMatches(std::string_view pattern, std::string_view key) {
+  // Glob with '*' only, iterative with one backtrack point (linear in practice).
+  std::size_t p = 0, k = 0, star = std::string_view::npos, mark = 0;
+  while (k < key.size()) {
+    if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      mark = k;
+    } else if (p < pattern.size() && pattern[p] == key[k]) {
+      ++p, ++k;
+    } else if (star != std::string_view::npos) {
+      p = star + 1;
+      k = ++mark;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+bool Publication::wants(std::string_view key) const {
+  return std::any_of(requested.begin(), requested.end(), [key](const std::string& pattern) {
+    return publicationKeyMatches(pattern, key);
+  });
+}
+
+const PublicationDecl* TechniqueInfo::findPublication(std::string_view key) const {
+  for (const PublicationDecl& d : publications)
+    if (publicationKeyMatches(d.key, key)) return &d;
+  return nullptr;
+}
+
+std::vector<PassDecl> rendererPassDecls() {
+  return {
+      {"gbuffer", "Camera G-buffer",
+       "The scene from the camera: world position, normal and albedo of every pixel. Every "
+       "later pass reads it (backward importance analysis, the lookup, the shading).",
+       ""},
+      {"resolve", "Lookup (resolve)",
+       "Every pixel finds its light-space position, goes through the technique's lookup (the "
+       "same warp or partition the map was built with) and compares its own plane, carried to "
+       "the sampled texel's centre, with the depth stored there: the hard mask and the "
+       "filtered visibility. Try the overlays (O): error against the exact reference, texels "
+       "per pixel, the shadow-map grid on the scene.",
+       ""},
+      {"composite", "Shade and composite",
+       "Lambert shading with the filtered visibility and sky ambient, and the overlay chosen "
+       "in the Teaching bar drawn over it.",
+       ""},
+  };
+}
+
+std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique) {
+  std::vector<PassDecl> renderer = rendererPassDecls();
+  std::vector<PassDecl> out{renderer.front()};
+  out.insert(out.end(), technique.passes.begin(), technique.passes.end());
+  out.insert(out.end(), renderer.begin() + 1, renderer.end());
+  return out;
+}
+
+std::uint64_t declaredPublicationBytes(const TechniqueInfo& technique, const ParamSet& params,
+                                       const std::set<std::string>& requested) {
+  std::uint64_t bytes = 0;
+  for (const PublicationDecl& d : technique.publications) {
+    // A declaration is read when a requested pattern matches its key, or (for a declared
+    // pattern such as "moment.*.*") when the two overlap: checked both ways.
+    const bool asked = std::any_of(requested.begin(), requested.end(), [&](const std::string& r) {
+      return publicationKeyMatches(r, d.key) || publicationKeyMatches(d.key, r);
+    });
+    if (asked && d.bytes) bytes += d.bytes(params);
+  }
+  return bytes;
+}
+
+PublicationDecl shadowMapPublicationDecl() {
+  return {"shadow map", PublicationKind::Image, "The shadow map as rendered (depth 0..1).",
+          "4 B x resolution^2", [](const ParamSet& p) {
+            const std::uint64_t r = std::uint64_t(p.getInt("resolution"));
+            return 4 * r * r;
+          }};
+}
+
+}  // namespace sl

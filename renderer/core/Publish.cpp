@@ -1,0 +1,59 @@
+// Readback helpers of core/Publish.h: the only place publication bytes are read and counted.
+#include "core/Publish.h"
+
+#include "gl/Gl.h"
+
+namespace sl {
+
+namespace {
+FloatImage readImage(FrameContext& ctx, const gl::Texture& texture, GLenum format, GLenum type) {
+  FloatImage img;
+  img.width = texture.width();
+  img.height = texture.height();
+  img.values.resize(std::size_t(img.width) * std::size_t(img.height));
+  const std::size_t bytes = img.values.size() * sizeof(float);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(texture.id(), 0, format, type, GLsizei(bytes), img.values.data());
+  ctx.publication->readbackBytes += bytes;
+  return img;
+}
+}  // namespace
+
+bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& depth) {
+  if (!ctx.wants(key)) return false;
+  ctx.publication->images[key] = readImage(ctx, depth, GL_DEPTH_COMPONENT, GL_FLOAT);
+  return true;
+}
+
+bool publishFloatBits(FrameContext& ctx, const std::string& key, const gl::Texture& texture) {
+  if (!ctx.wants(key)) return false;
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  ctx.publication->images[key] = readImage(ctx, texture, GL_RED_INTEGER, GL_UNSIGNED_INT);
+  return true;
+}
+
+std::vector<float> readPublishedFloats(FrameContext& ctx, const gl::Buffer& buffer,
+                                       std::size_t offset, std::size_t count) {
+  std::vector<float> v(count);
+  if (!ctx.publication || count == 0) return v;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(buffer.id(), GLintptr(offset * sizeof(float)),
+                          GLsizeiptr(count * sizeof(float)), v.data());
+  ctx.publication->readbackBytes += count * sizeof(float);
+  return v;
+}
+
+bool publishCurve(FrameContext& ctx, const std::string& key, const gl::Buffer& buffer,
+                  std::size_t offset, std::size_t count) {
+  if (!ctx.wants(key)) return false;
+  ctx.publication->curves[key] = readPublishedFloats(ctx, buffer, offset, count);
+  return true;
+}
+
+bool publishNumber(FrameContext& ctx, const std::string& key, double value) {
+  if (!ctx.wants(key)) return false;
+  ctx.publication->numbers[key] = value;
+  return true;
+}
+
+}  // namespace sl

@@ -1,0 +1,28 @@
+// The readback helpers every technique publishes through: each reads one requested key
+// from the GPU into the Publication and adds the bytes it asked GL for to
+// Publication::readbackBytes (FrameStats::publicationBytes). Nothing is read when the key
+// is not requested (FrameContext::wants).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/Technique.h"
+
+namespace sl {
+
+/// A depth texture as a float image (0..1). False (nothing read) when not requested.
+bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& depth);
+/// An R32UI texture that holds float bits (atomicMax importance) as a float image.
+bool publishFloatBits(FrameContext& ctx, const std::string& key, const gl::Texture& texture);
+/// `count` floats of `buffer` from float `offset` on as a curve.
+bool publishCurve(FrameContext& ctx, const std::string& key, const gl::Buffer& buffer,
+                  std::size_t offset, std::size_t count);
+/// `count` floats of `buffer` from float `offset` on, counted as publication readback (for
+/// data a technique splits into several keys itself).
+std::vector<float> readPublishedFloats(FrameContext& ctx, const gl::Buffer& buffer,
+                                       std::size_t offset, std::size_t count);
+/// A number (no readback); false when not requested.
+bool publishNumber(FrameContext& ctx, const std::string& key, double value);
+
+}  // namespace sl

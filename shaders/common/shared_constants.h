@@ -1,0 +1,65 @@
+// Constants shared by the C++ renderer and the GLSL shaders, declared once: C++ includes
+// this file (the shaders folder is on shadowlab_algo's include path) and GLSL includes it
+// through gl::ShaderLibrary (#include "common/shared_constants.h"). Only #defines and
+// comments: both preprocessors must read it. Unsigned values carry a `u` (valid in both).
+#ifndef SL_SHARED_CONSTANTS_H
+#define SL_SHARED_CONSTANTS_H
+
+// --- Hard shadow mask (R8UI resolve target, Embree reference, metrics).
+#define SL_MASK_SHADOWED 0u
+#define SL_MASK_LIT 1u
+#define SL_MASK_EMPTY 255u  // no surface under the pixel
+
+// --- Texture units. The scene's material texture (SceneGpu::draw) takes SL_UNIT_MATERIAL;
+// the G-buffer and resolve targets keep one unit each in every pass that reads them
+// (resolve, composite, deferred resolves, RTW's analysis).
+#define SL_UNIT_MATERIAL 0
+#define SL_UNIT_G_POSITION 1
+#define SL_UNIT_G_NORMAL 2
+#define SL_UNIT_G_ALBEDO 3
+#define SL_UNIT_VISIBILITY 4    // filtered visibility (resolve target 1)
+#define SL_UNIT_HARD 5          // hard mask (resolve target 0; last frame's for RTW's edges)
+#define SL_UNIT_REFERENCE 6     // Embree reference mask (error overlay)
+#define SL_UNIT_ALIASING 7      // m per pixel (resolve target 2)
+#define SL_UNIT_TEXEL 8         // selected map's uv per pixel (resolve target 3)
+#define SL_UNIT_LOOKUP_FIRST 9  // a technique's lookup textures start here
+
+// --- Image units of a deferred resolve (Technique::resolveDeferred writes these).
+#define SL_IMAGE_RESOLVE_HARD 0      // r8ui
+#define SL_IMAGE_RESOLVE_FILTERED 1  // r8
+#define SL_IMAGE_RESOLVE_ALIASING 2  // r32f
+#define SL_IMAGE_RESOLVE_TEXEL 3     // rg32f
+
+// --- Multi-map lookups (shaders/common/depth_map_test.glsl): per-map uniform arrays.
+#define SL_MAX_DEPTH_MAPS 8
+
+// --- view.overlay (rendererParamDecls' enum order; composite.frag).
+#define SL_OVERLAY_NONE 0
+#define SL_OVERLAY_ERROR 1
+#define SL_OVERLAY_ALIASING 2
+#define SL_OVERLAY_GRID 3
+#define SL_GRID_LINES_PER_MAP 16  // the grid overlay: a line every 1/16 of the selected map
+
+// --- RTW (techniques/rtw, shaders/rtw).
+#define SL_RTW_BUFFER_COLLAPSED 0  // 1D importance [x n][y n], float bits as uint
+#define SL_RTW_BUFFER_BLURRED 1
+#define SL_RTW_BUFFER_WARP 2      // n + 1 edges per axis
+#define SL_RTW_BUFFER_MOMENTS 3   // DA-RTW moment chain, 6 floats per texel
+#define SL_RTW_BUFFER_INVERSE 4   // inverse warp tables
+#define SL_RTW_IMAGE_IM 0         // r32ui 2D importance map
+#define SL_RTW_IMAGE_MOMENT_IM 1  // r32ui DA-RTW moment IM
+#define SL_RTW_LINEAR_GROUP 64    // local_size_x of the 1D passes (collapse, blur, inverse)
+#define SL_RTW_MOMENT_GROUP 8     // local_size_x/y of the moment passes
+// Largest blur radius: rtw::gaussianWeights clamps to it, blur.comp holds 2r + 1 weights.
+#define SL_BLUR_MAX_RADIUS 32
+// Largest importance map (im.resolution): scan_warp.comp scans it in shared memory with
+// one work group of SL_IM_MAX_RESOLUTION / 2 invocations per axis.
+#define SL_IM_MAX_RESOLUTION 2048
+// DA-RTW's PCA reads the IM reduced to at most this size (block maxima).
+#define SL_MOMENT_IM_MAX 128
+// Largest tessellation level of the warped pass. GL guarantees 64, but llvmpipe corrupts
+// the warped map at levels 32-64 (measured: corridor, tolerance 0.01: 55.6 % error at cap
+// 64, 0.73 % at cap 16). SceneGpu splits long triangles so that 16 suffices.
+#define SL_MAX_TESSELLATION_LEVEL 16
+
+#endif  // SL_SHARED_CONSTANTS_H

@@ -1,0 +1,125 @@
+// Per-key publishing: a frame reads back exactly what is requested. The bytes the readback
+// helpers count (FrameStats::publicationBytes) are checked against the sizes of the keys a
+// panel draws (ui/panels/rtw/RtwPanelKeys.h) and against the declared costs
+// (TechniqueInfo::publications), for one panel, every panel and none.
+#include <numeric>
+
+#include "GlTestEnv.h"
+#include "panels/rtw/RtwPanelKeys.h"
+
+namespace sl {
+namespace {
+
+std::set<std::string> allPanelKeys() {
+  std::set<std::string> all;
+  for (const auto& keys :
+       {ui::rtw::importancePanelKeys(), ui::rtw::covariancePanelKeys(), ui::rtw::warpPanelKeys(),
+        ui::rtw::shadowMapPanelKeys(), ui::rtw::momentPanelKeys()})
+    all.insert(keys.begin(), keys.end());
+  return all;
+}
+
+/// Bytes of what `pub` holds: 4 per image texel and curve value (numbers cost nothing).
+std::uint64_t heldBytes(const Publication& pub) {
+  std::uint64_t bytes = 0;
+  for (const auto& [key, image] : pub.images) bytes += 4ull * image.values.size();
+  for (const auto& [key, curve] : pub.curves) bytes += 4ull * curve.size();
+  return bytes;
+}
+
+TEST(Publication, KeyPatterns) {
+  EXPECT_TRUE(publicationKeyMatches("moment.*", "moment.I"));
+  EXPECT_TRUE(publicationKeyMatches("moment.*", "moment.xI.3"));
+  EXPECT_TRUE(publicationKeyMatches("moment.*.*", "moment.xI.3"));
+  EXPECT_FALSE(publicationKeyMatches("moment.*.*", "moment.xI"));
+  EXPECT_TRUE(publicationKeyMatches("*", "shadow map"));
+  EXPECT_FALSE(publicationKeyMatches("importance", "importance.x"));
+  EXPECT_FALSE(publicationKeyMatches("", "importance"));
+  EXPECT_TRUE(publicationKeyMatches("*.blurred", "importance.x.blurred"));
+}
+
+TEST(Publication, ReadsBackOnlyTheRequestedKeys) {
+  auto r = test::makeRenderer("diagonal", "da-rtw");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("resolution", 512));
+  ASSERT_FALSE(r->params().set("im.resolution", 256));
+  const TechniqueInfo& info = *Renderer::findTechnique("da-rtw");
+  auto frame = [&](std::set<std::string> keys) {
+    r->requestPublications(std::move(keys));
+    for (int f = 0; f < 2; ++f) EXPECT_FALSE(r->renderFrame(160, 90, 0));  // moments a frame late
+    return r->stats().publicationBytes;
+  };
+
+  // Only the Covariance panel's keys: its one image (the IM it draws the ellipses over),
+  // 256^2 floats, and numbers that cost no readback. Neither the curves, the shadow maps nor
+  // the moment chain are read.
+  const std::uint64_t covariance = frame(ui::rtw::covariancePanelKeys());
+  EXPECT_EQ(covariance, 4u * 256 * 256);
+  EXPECT_EQ(covariance, heldBytes(r->publication()));
+  EXPECT_EQ(covariance,
+            declaredPublicationBytes(info, r->params(), ui::rtw::covariancePanelKeys()));
+  EXPECT_EQ(r->publication().images.size(), 1u);
+  EXPECT_TRUE(r->publication().images.count("importance"));
+  EXPECT_TRUE(r->publication().curves.empty());
+  EXPECT_TRUE(r->publication().numbers.count("e_x"));
+  for (const auto& [key, value] : r->publication().numbers)
+    EXPECT_TRUE(ui::rtw::covariancePanelKeys().count(key)) << key << " was not requested";
+
+  // Every panel: both 512^2 shadow maps, the IM, the curves and the whole moment chain.
+  const std::uint64_t all = frame(allPanelKeys());
+  std::uint64_t chainTexels = 0;
+  for (int s = 128;; s = (s + 1) / 2) {
+    chainTexels += std::uint64_t(s) * std::uint64_t(s);
+    if (s == 1) break;
+  }
+  const std::uint64_t expected = 4u * (2 * 512 * 512        // shadow map + unwarped contrast map
+                                       + 256 * 256          // importance
+                                       + 4 * 256            // importance.{x,y}[.blurred]
+                                       + 2 * 257            // warp.{x,y}
+                                       + 6 * chainTexels);  // moment.<c>.<level>
+  EXPECT_EQ(all, expected);
+  EXPECT_EQ(all, heldBytes(r->publication()));
+  EXPECT_EQ(all, declaredPublicationBytes(info, r->params(), allPanelKeys()));
+  EXPECT_GT(all, 8 * covariance);
+
+  // Nothing requested: nothing read, and the panel-only work is gone from memory().
+  EXPECT_EQ(frame({}), 0u);
+  for (const ResourceInfo& res : r->stats().memory.resources)
+    EXPECT_EQ(res.name.find("while a panel"), std::string::npos) << res.name;
+
+  // "*" reads every declared key: the declared total for everything.
+  const std::uint64_t everything = frame({"*"});
+  EXPECT_EQ(everything, declaredPublicationBytes(info, r->params(), {"*"}));
+  EXPECT_EQ(everything, heldBytes(r->publication()));
+  test::expectNoGlErrors(*r);
+}
+
+TEST(Publication, EveryPublishedKeyIsDeclaredAndEveryPassIsTimed) {
+  for (const TechniqueInfo& info : Renderer::techniques()) {
+    SCOPED_TRACE(info.id);
+    auto r = test::makeRenderer("diagonal", info.id);
+    ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().set("resolution", 256));
+    r->requestPublications({"*"});
+    for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(160, 90, 0));
+    const Publication& pub = r->publication();
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : pub.images) keys.push_back(k);
+    for (const auto& [k, v] : pub.curves) keys.push_back(k);
+    for (const auto& [k, v] : pub.numbers) keys.push_back(k);
+    EXPECT_FALSE(keys.empty());
+    for (const std::string& k : keys) EXPECT_TRUE(info.findPublication(k)) << k << " undeclared";
+    EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(info, r->params(), {"*"}));
+    // The declared passes are the timed ones, in the same order (glFinish timing: this frame).
+    std::vector<std::string> timed, declared;
+    for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
+    for (const PassDecl& p : framePassDecls(info)) declared.push_back(p.id);
+    if (r->stats().timingFramesLate == 0) {
+      EXPECT_EQ(timed, declared);
+    }
+    test::expectNoGlErrors(*r);
+  }
+}
+
+}  // namespace
+}  // namespace sl

@@ -1,0 +1,158 @@
+// `--grab` runs and the window's image export (see GrabRun.h).
+#include "GrabRun.h"
+
+#include <cstdio>
+
+#include <QAction>
+#include <QCoreApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+
+#include "MainWindow.h"
+#include "ViewportWidget.h"
+
+namespace sl::ui {
+
+namespace {
+constexpr int kGrabTickMs = 30;
+constexpr qint64 kGrabTimeoutMs = 120000;
+
+void printErr(const QString& line) {
+  std::fprintf(stderr, "shadowlab: %s\n", line.toLocal8Bit().constData());
+  std::fflush(stderr);
+}
+}  // namespace
+
+GrabRun::GrabRun(MainWindow& window) : QObject(&window), w_(window) {
+  timer_.setInterval(kGrabTickMs);
+  connect(&timer_, &QTimer::timeout, this, &GrabRun::tick);
+}
+
+void GrabRun::start(const QString& dir, int frames) {
+  dir_ = dir;
+  frames_ = frames;
+  problems_.clear();
+  clock_.start();
+  timer_.start();
+  w_.updatePublishing();
+}
+
+void GrabRun::noteProblem(const QString& message) {
+  if (timer_.isActive()) problems_ << message;
+}
+
+void GrabRun::tick() {
+  if (w_.failed_) return timer_.stop();
+  if (!w_.rendererBound_) {
+    if (clock_.elapsed() > kGrabTimeoutMs) {
+      timer_.stop();
+      w_.report(tr("--grab: the renderer did not start within %1 s (no OpenGL context?)")
+                    .arg(kGrabTimeoutMs / 1000));
+      QCoreApplication::exit(1);
+    }
+    return;
+  }
+  if (framesRendered_ < frames_) {
+    w_.viewport_->update();
+    return;
+  }
+  timer_.stop();
+  finish();
+}
+
+void GrabRun::finish() {
+  // The status line shows the error of the grabbed view. Then freeze the frame, so that
+  // the window, the viewport, every panel and published.json show the same frame.
+  ViewportWidget* viewport = w_.viewport_;
+  viewport->computeErrorNow();
+  w_.waitForFrames(1);  // the error overlay, when on, needs a frame drawn with the reference
+  viewport->setPaused(true, false);
+  QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+  if (const sl::Renderer* r = viewport->renderer()) w_.docks_.feed(*r, true);
+
+  QStringList failures;
+  if (!QDir().mkpath(dir_)) failures << tr("cannot create directory %1").arg(dir_);
+  if (failures.isEmpty()) failures << writeImages(dir_, true);
+  if (failures.isEmpty()) {
+    const QString path = QDir(dir_).absoluteFilePath(QStringLiteral("published.json"));
+    QFile file(path);
+    if (file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+        file.write(QJsonDocument(publicationJson()).toJson()) > 0) {
+      std::printf("%s\n", path.toLocal8Bit().constData());
+    } else {
+      failures << tr("cannot write %1").arg(path);
+    }
+  }
+  std::fflush(stdout);
+  for (const QString& problem : problems_) failures << tr("while rendering: %1").arg(problem);
+  for (const QString& f : failures) printErr(f);
+  QCoreApplication::exit(failures.isEmpty() ? 0 : 1);
+}
+
+QStringList GrabRun::writeImages(const QString& dirPath, bool printPaths) {
+  QStringList failures;
+  const QDir dir(dirPath);
+  auto save = [&](const QImage& image, const QString& name) {
+    const QString path = dir.absoluteFilePath(name);
+    if (image.isNull() || !image.save(path)) {
+      failures << tr("cannot write %1").arg(path);
+      return;
+    }
+    if (printPaths) std::printf("%s\n", path.toLocal8Bit().constData());
+  };
+  save(w_.grab().toImage(), QStringLiteral("window.png"));
+  save(w_.viewport_->grabView(), QStringLiteral("viewport.png"));
+  // Tabbed docks: bring each to the front so that it is laid out and painted.
+  std::vector<QDockWidget*> front;
+  for (QDockWidget* dock : w_.findChildren<QDockWidget*>())
+    if (dock->isVisible()) front.push_back(dock);
+  for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) {
+    if (dock->isHidden() && !dock->toggleViewAction()->isChecked()) continue;  // closed
+    dock->raise();
+    QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+    save(dock->grab().toImage(), QStringLiteral("panel-%1.png").arg(dock->objectName()));
+  }
+  for (QDockWidget* dock : front) dock->raise();
+  QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+  return failures;
+}
+
+QJsonObject GrabRun::publicationJson() const {
+  QJsonObject o;
+  const ViewportWidget* viewport = w_.viewport_;
+  const sl::Renderer* r = viewport->renderer();
+  if (!r) return o;
+  const sl::Publication& pub = r->publication();
+  o[QStringLiteral("frame")] = static_cast<qint64>(pub.frameIndex);
+  o[QStringLiteral("technique")] = QString::fromStdString(r->techniqueId());
+  o[QStringLiteral("published_technique")] = QString::fromStdString(pub.techniqueId);
+  o[QStringLiteral("scene")] = w_.sceneSpec_;
+  QJsonObject numbers;
+  for (const auto& [key, value] : pub.numbers) numbers[QString::fromStdString(key)] = value;
+  o[QStringLiteral("numbers")] = numbers;
+  QJsonObject images;
+  for (const auto& [key, image] : pub.images)
+    images[QString::fromStdString(key)] = QJsonArray{image.width, image.height, image.channels};
+  o[QStringLiteral("images")] = images;
+  QJsonObject curves;
+  for (const auto& [key, curve] : pub.curves)
+    curves[QString::fromStdString(key)] = static_cast<qint64>(curve.size());
+  o[QStringLiteral("curves")] = curves;
+  QJsonArray requested;
+  for (const std::string& key : pub.requested) requested.append(QString::fromStdString(key));
+  o[QStringLiteral("requested")] = requested;
+  o[QStringLiteral("publication_bytes")] = static_cast<qint64>(r->stats().publicationBytes);
+  o[QStringLiteral("panels")] = w_.docks_.drawnValues();
+  o[QStringLiteral("frame_ms")] = r->stats().totalMs;
+  if (auto error = viewport->errorPct()) o[QStringLiteral("error_pct")] = *error;
+  if (!viewport->splitTechnique().empty()) {
+    o[QStringLiteral("split_technique")] = QString::fromStdString(viewport->splitTechnique());
+    if (auto error = viewport->splitErrorPct()) o[QStringLiteral("split_error_pct")] = *error;
+  }
+  return o;
+}
+
+}  // namespace sl::ui

@@ -1,0 +1,150 @@
+// Lessons (see LessonController.h): presets from scenes/lessons applied to the window.
+#include "LessonController.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <QAction>
+#include <QDockWidget>
+#include <QMenu>
+
+#include "LaunchOptions.h"
+#include "MainWindow.h"
+#include "PassStepper.h"
+#include "TeachingBar.h"
+#include "ViewportWidget.h"
+#include "panels/common/ParamPanel.h"
+
+namespace sl::ui {
+
+namespace {
+/// First paragraph of a lesson explanation (the banner's "what to look at").
+QString firstParagraph(const std::string& text) {
+  return QString::fromStdString(text).section(QStringLiteral("\n\n"), 0, 0).simplified();
+}
+}  // namespace
+
+LessonController::LessonController(MainWindow& window) : QObject(&window), w_(window) {}
+
+void LessonController::createMenu(QMenu* menu) {
+  QStringList errors;
+  lessons_ = loadLessons(&errors);
+  for (const QString& e : errors) std::fprintf(stderr, "shadowlab: lesson %s\n", qPrintable(e));
+  for (std::size_t i = 0; i < lessons_.size(); ++i) {
+    QAction* a = menu->addAction(
+        tr("&%1 %2").arg(i + 1).arg(QString::fromStdString(lessons_[i].preset.title)), this,
+        [this, i] { apply(static_cast<int>(i)); });
+    if (i < 9) {
+      a->setShortcut(QKeySequence(Qt::ALT | static_cast<Qt::Key>(Qt::Key_1 + int(i))));
+      a->setShortcutContext(Qt::ApplicationShortcut);
+    }
+    a->setToolTip(firstParagraph(lessons_[i].preset.explanation));
+  }
+  if (lessons_.empty())
+    menu->addAction(tr("(no lessons in %1)").arg(lessonDirectory()))->setEnabled(false);
+  menu->addSeparator();
+  bannerAction_ = menu->addAction(tr("Show the lesson &banner over the view"));
+  bannerAction_->setCheckable(true);
+  bannerAction_->setChecked(true);
+  bannerAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+  bannerAction_->setShortcutContext(Qt::ApplicationShortcut);
+  connect(bannerAction_, &QAction::toggled, this, [this] { w_.updateBanner(); });
+  menu->setToolTipsVisible(true);
+}
+
+void LessonController::connectPanel(LessonPanel* panel) {
+  connect(panel, &LessonPanel::previousRequested, this, [this] { apply(std::max(0, index_ - 1)); });
+  connect(panel, &LessonPanel::nextRequested, this,
+          [this] { apply(std::min(static_cast<int>(lessons_.size()) - 1, index_ + 1)); });
+  connect(panel, &LessonPanel::restartRequested, this, [this] { apply(index_); });
+  connect(panel, &LessonPanel::lessonChosen, this, &LessonController::apply);
+  QStringList titles;
+  for (const Lesson& l : lessons_) titles << QString::fromStdString(l.preset.title);
+  panel->setLessonTitles(titles);
+  panel->showLesson(nullptr, -1, static_cast<int>(lessons_.size()));
+}
+
+bool LessonController::start(const QString& lesson) {
+  int found = findLesson(lessons_, lesson);
+  if (found < 0) {  // a preset outside the lesson folder
+    QString error;
+    std::optional<Lesson> other = resolveLesson(lesson, &error);
+    if (!other) {
+      w_.report(error, tr("Cannot open lesson"));
+      return false;
+    }
+    lessons_.push_back(std::move(*other));
+    found = static_cast<int>(lessons_.size()) - 1;
+  }
+  apply(found);
+  return true;
+}
+
+void LessonController::apply(int index) {
+  if (index < 0 || index >= static_cast<int>(lessons_.size())) return;
+  MainWindow& w = w_;
+  w.passes_->stop();
+  index_ = index;
+  const sl::Preset& p = lessons_[static_cast<std::size_t>(index)].preset;
+  QStringList problems;
+
+  const QString scene = QString::fromStdString(p.scene);
+  if (!scene.isEmpty() && scene != w.sceneSpec_) {
+    if (!w.loadScene(scene)) problems << tr("scene '%1' could not be loaded").arg(scene);
+  } else if (w.viewport_->scene()) {
+    w.viewport_->setScene(w.viewport_->scene());  // back to the scene's sun and first camera
+    w.refreshBookmarks();
+  }
+  if (!p.technique.empty()) {
+    if (!sl::Renderer::findTechnique(p.technique))
+      problems << tr("this lesson needs the technique '%1', which this build does not have")
+                      .arg(QString::fromStdString(p.technique));
+    else
+      w.setTechnique(QString::fromStdString(p.technique));
+  }
+  QStringList assignments;
+  for (const auto& [key, value] : p.params)
+    assignments << QString::fromStdString(key + "=" + value);
+  if (sl::Renderer* r = w.viewport_->renderer()) {
+    r->params().resetToDefaults();
+    r->rendererParams().resetToDefaults();
+    for (const QString& kv : assignments)
+      if (auto error = assignParameter(r->params(), r->rendererParams(), kv.toStdString()))
+        problems << QString::fromStdString(*error);
+    r->resetTemporalState();
+    w.paramPanel_->refreshValues();
+    w.teaching_->syncOverlayCombo();
+  } else {
+    // Applied when the renderer starts, before those of the command line (which win).
+    w.pendingAssignments_ = assignments + w.pendingAssignments_;
+  }
+  if (p.camera) w.viewport_->setCamera(*p.camera);
+  if (p.light) {
+    w.viewport_->setLight(*p.light);
+    w.syncLightControls();
+  }
+  w.docks_.resetHistory();
+
+  w.lessonPanel_->showLesson(&lessons_[static_cast<std::size_t>(index)], index,
+                             static_cast<int>(lessons_.size()));
+  w.lessonPanel_->setNote(problems.join(QLatin1Char('\n')));
+  for (const QString& problem : problems) w.report(tr("lesson: %1").arg(problem));
+  w.lessonDock_->show();
+  w.lessonDock_->raise();
+  w.updateBanner();
+  if (w.viewport_->paused()) w.viewport_->stepFrame();
+  w.viewport_->update();
+}
+
+QString LessonController::bannerTitle() const {
+  if (index_ < 0 || !bannerAction_ || !bannerAction_->isChecked()) return {};
+  const sl::Preset& p = lessons_[static_cast<std::size_t>(index_)].preset;
+  return tr("Lesson %1: %2").arg(index_ + 1).arg(QString::fromStdString(p.title));
+}
+
+QString LessonController::bannerText() const {
+  if (index_ < 0 || !bannerAction_ || !bannerAction_->isChecked()) return {};
+  return firstParagraph(lessons_[static_cast<std::size_t>(index_)].preset.explanation);
+}
+
+}  // namespace sl::ui

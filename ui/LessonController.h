@@ -1,0 +1,46 @@
+// Lessons: the Lessons menu, starting a lesson (its scene, technique, parameters, camera and
+// light), the Lesson dock's previous / next / restart, and the lesson banner over the view.
+#pragma once
+
+#include <vector>
+
+#include <QObject>
+#include <QString>
+
+#include "panels/common/LessonPanel.h"
+
+class QAction;
+class QMenu;
+
+namespace sl::ui {
+
+class MainWindow;
+
+class LessonController : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit LessonController(MainWindow& window);
+
+  /// Fills the Lessons menu (one entry per lesson file, Alt+1..9, the banner toggle).
+  void createMenu(QMenu* menu);
+  /// Connects the Lesson dock's buttons (after the dock exists).
+  void connectPanel(LessonPanel* panel);
+  /// A lesson by number, base name or preset path; false (reported) when none.
+  bool start(const QString& lesson);
+  void apply(int index);
+
+  const std::vector<Lesson>& lessons() const { return lessons_; }
+  int index() const { return index_; }
+  /// Banner title and text of the active lesson (empty: none, or the banner is off).
+  QString bannerTitle() const;
+  QString bannerText() const;
+
+ private:
+  MainWindow& w_;
+  std::vector<Lesson> lessons_;
+  int index_ = -1;
+  QAction* bannerAction_ = nullptr;
+};
+
+}  // namespace sl::ui

@@ -1,0 +1,47 @@
+// The docks of the publication panels (panels/PanelRegistry.h): which keys they request
+// from the renderer (only the visible ones'), whether the last frame published them, and
+// handing the Publication to them.
+#pragma once
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include <QJsonObject>
+
+#include "panels/PanelRegistry.h"
+
+class QDockWidget;
+
+namespace sl::ui {
+
+class PublicationDocks {
+ public:
+  struct Dock {
+    PanelEntry entry;
+    QDockWidget* dock = nullptr;
+    PublicationPanel* panel = nullptr;
+  };
+
+  void add(const PanelEntry& entry, QDockWidget* dock, PublicationPanel* panel);
+  const std::vector<Dock>& docks() const { return docks_; }
+  /// The dock of panel `id` (PassDecl::panel), null when no panel has that id.
+  QDockWidget* dock(const std::string& id) const;
+
+  /// The keys of the visible panels (`all`: of every panel).
+  std::set<std::string> keys(bool all) const;
+  /// The renderer's last frame published (at least) what keys(all) asks for.
+  bool isCurrent(const sl::Renderer& renderer, bool all) const;
+  /// Hands the last publication to the visible panels (`all`: to every panel).
+  void feed(const sl::Renderer& renderer, bool all) const;
+
+  void resetHistory() const;
+  void highlightPass(const QString& passId) const;
+  /// What each panel drew, by dock name (for --grab's published.json).
+  QJsonObject drawnValues() const;
+
+ private:
+  std::vector<Dock> docks_;
+};
+
+}  // namespace sl::ui

@@ -1,0 +1,535 @@
+// GUI self-tests (`shadowlab --self-test NAME`, driven by tests/gui/*.sh under Xvfb). They
+// act as a user would — typing into the generated parameter editors, going through
+// File > Open with Qt's own file dialog, reading the message box — and check what the
+// renderer and the window did. Each check prints "ok   ..." or "FAIL ..."; exit 0 = pass.
+#include <cmath>
+#include <cstdio>
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QComboBox>
+#include <QDragEnterEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSlider>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTimer>
+#include <QUrl>
+
+#include "SelfTests.h"
+
+#include "LessonController.h"
+#include "MainWindow.h"
+#include "MessageText.h"
+#include "PassStepper.h"
+#include "TeachingBar.h"
+#include "ViewportWidget.h"
+#include "panels/common/ChartsPanel.h"
+#include "panels/common/ParamPanel.h"
+
+namespace sl::ui {
+
+namespace {
+constexpr qint64 kStartTimeoutMs = 120000;
+
+/// Types `text` into a spin box like a user (select all, keys, Return).
+void typeInto(QAbstractSpinBox* spin, const QString& text) {
+  spin->setFocus(Qt::OtherFocusReason);
+  if (auto* edit = spin->findChild<QLineEdit*>()) edit->selectAll();
+  for (const QChar ch : text) {
+    QKeyEvent press(QEvent::KeyPress, ch.unicode(), Qt::NoModifier, QString(ch));
+    QApplication::sendEvent(spin, &press);
+    QKeyEvent release(QEvent::KeyRelease, ch.unicode(), Qt::NoModifier, QString(ch));
+    QApplication::sendEvent(spin, &release);
+  }
+  QKeyEvent enter(QEvent::KeyPress, Qt::Key_Return, Qt::NoModifier);
+  QApplication::sendEvent(spin, &enter);
+}
+
+double meanLuminance(const QImage& image) {
+  const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+  double sum = 0;
+  for (int y = 0; y < rgb.height(); ++y) {
+    const auto* line = reinterpret_cast<const QRgb*>(rgb.constScanLine(y));
+    for (int x = 0; x < rgb.width(); ++x) sum += qGray(line[x]);
+  }
+  return rgb.isNull() ? 0.0 : sum / (double(rgb.width()) * rgb.height());
+}
+
+QString number(double v) {
+  return QString::number(v, 'g', 10);
+}
+}  // namespace
+
+SelfTests::SelfTests(MainWindow& window) : QObject(&window), w_(window) {}
+
+void SelfTests::start(const QString& name, const QString& argument) {
+  name_ = name;
+  argument_ = argument;
+  failures_ = 0;
+  w_.dialogs_ = true;  // the tests check the message boxes a user would see
+  auto* timer = new QTimer(this);
+  auto* clock = new QElapsedTimer;
+  clock->start();
+  connect(timer, &QTimer::timeout, this, [this, timer, clock] {
+    if (w_.failed_) {
+      timer->stop();
+      return;
+    }
+    if (!w_.rendererBound_ || w_.viewport_->framesRendered() < 2) {
+      if (clock->elapsed() > kStartTimeoutMs) {
+        timer->stop();
+        w_.report(
+            tr("--self-test: the renderer did not start within %1 s").arg(kStartTimeoutMs / 1000));
+        QCoreApplication::exit(1);
+      }
+      w_.viewport_->update();
+      return;
+    }
+    timer->stop();
+    timer->deleteLater();
+    delete clock;
+    run();
+  });
+  timer->start(30);
+}
+
+void SelfTests::run() {
+  std::printf("self-test %s: technique %s, scene %s\n", qPrintable(name_),
+              w_.viewport_->techniqueId().c_str(), qPrintable(w_.sceneSpec_));
+  bool ran = false;
+  if (name_ == QLatin1String("params"))
+    ran = params();
+  else if (name_ == QLatin1String("teaching"))
+    ran = teaching(argument_);
+  else if (name_ == QLatin1String("charts"))
+    ran = charts(argument_);
+  else
+    ran = badGltf(argument_);
+  const bool pass = ran && failures_ == 0;
+  std::printf("%s\n", pass ? "PASS" : "FAIL");
+  std::fflush(stdout);
+  QCoreApplication::exit(pass ? 0 : 1);
+}
+
+bool SelfTests::charts(const QString& dir) {
+  w_.chartsDock_->show();
+  w_.chartsDock_->raise();
+  QCoreApplication::processEvents();
+  // 3 configurations x 2 frames: uniform at two resolutions that differ from the view's, and
+  // a small RTW map (slower than uniform, but little memory: the fronts against time and
+  // against memory can differ).
+  sl::Renderer* r = w_.viewport_->renderer();
+  const int shownResolution = r->paramsOf("uniform").getInt("resolution");
+  const int wanted = shownResolution == 256 ? 512 : 256;
+  w_.chartsPanel_->setSweepText(
+      QStringLiteral("uniform:resolution=%1,2048 rtw-backward:resolution=256").arg(wanted));
+  w_.chartsPanel_->setFramesPerConfig(2);
+  bool finished = false, completed = false;
+  const auto connection = connect(w_.chartsPanel_, &ChartsPanel::sweepFinished, this,
+                                  [&](bool c) { finished = true, completed = c; });
+  // Cancel: a sweep stopped after its first frame reports itself not completed.
+  bool cancelled = w_.chartsPanel_->startSweep();
+  QCoreApplication::processEvents();
+  w_.chartsPanel_->cancelSweep();
+  cancelled = cancelled && finished && !completed && !w_.chartsPanel_->running();
+  check(cancelled, QStringLiteral("Cancel stops a running sweep"));
+  finished = completed = false;
+  const bool started = w_.chartsPanel_->startSweep();
+  check(started, QStringLiteral("the sweep starts"));
+  if (!started) return false;
+  QElapsedTimer clock;
+  clock.start();
+  while (!finished && clock.elapsed() < 40000)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+  disconnect(connection);
+  check(finished && completed, QStringLiteral("the sweep completes"));
+  const auto& configs = w_.chartsPanel_->configs();
+  bool measured = configs.size() == 3;
+  for (const auto& c : configs) {
+    measured = measured && c.done && c.ms.size() == 2 && c.medianMs > 0.0 &&
+               std::isfinite(c.medianErrorPct) && c.medianErrorPct >= 0.0;
+    std::printf("     %s: %.3g ms, %.3g %% error\n", qPrintable(c.label), c.medianMs,
+                c.medianErrorPct);
+  }
+  check(measured, QStringLiteral("3 configurations x 2 frames measured"));
+  if (!measured) return false;
+  QCoreApplication::processEvents();
+  if (!dir.isEmpty()) {
+    QDir().mkpath(dir);
+    const QString png = QDir(dir).filePath(QStringLiteral("panel-charts.png"));
+    check(w_.chartsDock_->grab().toImage().save(png), QStringLiteral("saved ") + png);
+  }
+  if (!chartsAxis(dir)) return false;
+  // A click on the first point (the slot the scatter series' clicked signal calls), from
+  // another technique.
+  w_.setTechnique(QStringLiteral("rtw-backward"));
+  w_.chartsPanel_->choose(0);
+  w_.waitForFrames(1);
+  r = w_.viewport_->renderer();
+  check(r && r->techniqueId() == "uniform",
+        QStringLiteral("clicking a point switches the technique to uniform"));
+  check(r && r->params().getInt("resolution") == wanted,
+        QStringLiteral("clicking a point sets resolution=%1").arg(wanted));
+  const int index =
+      w_.techniqueCombo_->findData(QString::fromStdString(r ? r->techniqueId() : std::string()));
+  check(index >= 0 && w_.techniqueCombo_->currentIndex() == index,
+        QStringLiteral("the technique combo follows"));
+  return true;
+}
+
+bool SelfTests::chartsAxis(const QString& dir) {
+  // x: memory through the combo box, as a user would: axis and front change, no new sweep.
+  const auto& configs = w_.chartsPanel_->configs();
+  auto* xCombo = w_.chartsPanel_->findChild<QComboBox*>(QStringLiteral("chartsX"));
+  check(xCombo && xCombo->count() == 2, QStringLiteral("the x combo box is there"));
+  if (!xCombo) return false;
+  // The front the panel should draw against each x, from the measured medians.
+  auto expectedFront = [&](bool bytes) {
+    std::vector<sl::CostPoint> costs;
+    for (const auto& c : configs)
+      costs.push_back({bytes ? c.medianBytes : c.medianMs, c.medianErrorPct});
+    return sl::paretoFront(costs);
+  };
+  xCombo->setCurrentIndex(xCombo->findData(QStringLiteral("bytes")));
+  QCoreApplication::processEvents();
+  // uniform's memory is its one map: it grows with resolution² ("resolution=N" sweeps).
+  auto resolutionOf = [](const ChartsPanel::Config& c) {
+    return c.assignments.front().section(QLatin1Char('='), 1).toDouble();
+  };
+  const double ratio =
+      configs[0].medianBytes > 0.0 ? configs[1].medianBytes / configs[0].medianBytes : 0.0;
+  const double wantedRatio = std::pow(resolutionOf(configs[1]) / resolutionOf(configs[0]), 2.0);
+  std::printf("     memory: %.0f and %.0f bytes (ratio %g, expected %g)\n", configs[0].medianBytes,
+              configs[1].medianBytes, ratio, wantedRatio);
+  check(ratio == wantedRatio,
+        QStringLiteral("shadow memory measured per configuration (resolution²)"));
+  check(w_.chartsPanel_->chartX() == sl::ChartX::Bytes &&
+            w_.chartsPanel_->xAxisTitle().contains(QStringLiteral("memory")) &&
+            w_.chartsPanel_->xAxisTitle().contains(QStringLiteral("iB")),
+        QStringLiteral("x: memory switches the axis (\"%1\")").arg(w_.chartsPanel_->xAxisTitle()));
+  auto frontText = [](const std::vector<std::size_t>& front) {
+    QStringList s;
+    for (std::size_t i : front) s << QString::number(i);
+    return s.join(QLatin1Char(','));
+  };
+  check(w_.chartsPanel_->drawnFront() == expectedFront(true),
+        QStringLiteral("the Pareto front is against memory (%1; against time: %2)")
+            .arg(frontText(w_.chartsPanel_->drawnFront()), frontText(expectedFront(false))));
+  check(!w_.chartsPanel_->running() && configs[0].ms.size() == 2,
+        QStringLiteral("switching x measures nothing again"));
+  if (!dir.isEmpty()) {
+    const QString png = QDir(dir).filePath(QStringLiteral("panel-charts-bytes.png"));
+    check(w_.chartsDock_->grab().toImage().save(png), QStringLiteral("saved ") + png);
+  }
+  xCombo->setCurrentIndex(xCombo->findData(QStringLiteral("ms")));
+  QCoreApplication::processEvents();
+  check(w_.chartsPanel_->chartX() == sl::ChartX::TimeMs &&
+            w_.chartsPanel_->xAxisTitle().contains(QStringLiteral("ms")) &&
+            w_.chartsPanel_->drawnFront() == expectedFront(false),
+        QStringLiteral("x: time switches back (axis and front)"));
+  return true;
+}
+
+void SelfTests::check(bool ok, const QString& what) {
+  std::printf("%s %s\n", ok ? "ok  " : "FAIL", qPrintable(what));
+  std::fflush(stdout);
+  if (!ok) ++failures_;
+}
+
+bool SelfTests::params() {
+  sl::Renderer* r = w_.viewport_->renderer();
+  w_.paramDock_->show();
+  w_.paramDock_->raise();
+  QCoreApplication::processEvents();
+
+  // 1. A shared parameter, typed into its spin box: the renderer's value and the next frame.
+  const std::string ambientKey = "shading.ambient";
+  auto* ambient =
+      w_.paramPanel_->findChild<QDoubleSpinBox*>(QStringLiteral("param:shading.ambient"));
+  check(ambient != nullptr, tr("the Parameters panel has an editor for shading.ambient"));
+  if (!ambient) return false;
+  const sl::ParamDecl& ambientDecl = *r->rendererParams().find(ambientKey);
+  const double before = r->rendererParams().get(ambientKey);
+  const double target = before < 0.5 ? 0.9 : 0.1;
+  w_.waitForFrames(1);
+  const double lumBefore = meanLuminance(w_.viewport_->grabFramebuffer());
+  const std::uint64_t frameBefore = r->stats().frameIndex;
+  typeInto(ambient, number(target));
+  check(std::abs(r->rendererParams().get(ambientKey) - target) < 1e-9,
+        tr("typing %1 into Ambient sets the renderer's shading.ambient (was %2, now %3)")
+            .arg(number(target), number(before), number(r->rendererParams().get(ambientKey))));
+  const bool rendered = w_.waitForFrames(1);
+  check(rendered && r->stats().frameIndex > frameBefore,
+        tr("a new frame was rendered after the change (frame %1 -> %2)")
+            .arg(frameBefore)
+            .arg(r->stats().frameIndex));
+  const double lumAfter = meanLuminance(w_.viewport_->grabFramebuffer());
+  check((target > before) ? lumAfter > lumBefore + 1.0 : lumAfter < lumBefore - 1.0,
+        tr("the new frame shows it: mean luminance %1 -> %2")
+            .arg(lumBefore, 0, 'f', 2)
+            .arg(lumAfter, 0, 'f', 2));
+
+  // 2. Out of range: refused with the declaration's message, nothing changes.
+  w_.statusBar()->clearMessage();
+  const std::uint64_t revision = r->rendererParams().revision();
+  typeInto(ambient, QStringLiteral("5"));
+  const QString message = w_.statusBar()->currentMessage();
+  const QString range = QString::fromStdString(sl::describeRange(ambientDecl));
+  check(std::abs(r->rendererParams().get(ambientKey) - target) < 1e-9 &&
+            r->rendererParams().revision() == revision,
+        tr("typing 5 (out of range) leaves shading.ambient at %1")
+            .arg(number(r->rendererParams().get(ambientKey))));
+  check(message.contains(QStringLiteral("shading.ambient")) && message.contains(range),
+        tr("the refusal is reported with the key and range %1: \"%2\"").arg(range, message));
+  check(std::abs(ambient->value() - target) < 1e-9,
+        tr("the editor shows the kept value again (%1)").arg(number(ambient->value())));
+
+  // 3. The slider of the same row: to its left end = the declared minimum.
+  if (auto* slider =
+          w_.paramPanel_->findChild<QSlider*>(QStringLiteral("param:shading.ambient:slider"))) {
+    slider->setValue(slider->minimum());
+    check(std::abs(r->rendererParams().get(ambientKey) - ambientDecl.minValue) < 1e-9,
+          tr("dragging the Ambient slider to its left end sets %1")
+              .arg(number(ambientDecl.minValue)));
+  } else {
+    check(false, tr("the Ambient row has a slider"));
+  }
+
+  // 4. A technique parameter: the shadow-map resolution (an integer), if declared.
+  const std::string resKey = "resolution";
+  if (const sl::ParamDecl* res = r->params().find(resKey)) {
+    auto* spin = w_.paramPanel_->findChild<QSpinBox*>(QStringLiteral("param:resolution"));
+    check(spin != nullptr, tr("the Parameters panel has an editor for resolution"));
+    if (!spin) return false;
+    const int old = r->params().getInt(resKey);
+    const int wanted = old / 2 >= res->minValue ? old / 2 : old * 2;
+    typeInto(spin, QString::number(wanted));
+    check(r->params().getInt(resKey) == wanted,
+          tr("typing %1 into Resolution sets the technique's resolution (now %2)")
+              .arg(wanted)
+              .arg(r->params().getInt(resKey)));
+    w_.waitForFrames(1);
+    bool resized = false;
+    for (const sl::ResourceInfo& info : r->stats().memory.resources)
+      resized = resized || info.width == wanted;
+    check(resized, tr("the next frame's shadow resources include a %1-texel-wide map").arg(wanted));
+    w_.statusBar()->clearMessage();
+    const QString tooBig = QString::number(static_cast<long long>(res->maxValue) * 2);
+    typeInto(spin, tooBig);
+    const QString refusal = w_.statusBar()->currentMessage();
+    check(r->params().getInt(resKey) == wanted &&
+              refusal.contains(QString::fromStdString(sl::describeRange(*res))),
+          tr("typing %1 into Resolution is refused: \"%2\"").arg(tooBig, refusal));
+  } else {
+    std::printf("skip the technique has no 'resolution' parameter\n");
+  }
+  return true;
+}
+
+bool SelfTests::teaching(const QString& dir) {
+  const bool save = !dir.isEmpty() && QDir().mkpath(dir);
+  auto saveImage = [&](const QImage& image, const QString& name) {
+    if (save) image.save(QDir(dir).filePath(name));
+  };
+  // 1. Step through the passes of one frame: each raises the panel showing its output.
+  PassStepper& passes = *w_.passes_;
+  passes.step(+1);
+  for (int i = 0; i < 50 && passes.index() < 0; ++i) w_.waitForFrames(1, 2000);
+  check(passes.index() == 0 && w_.viewport_->paused(),
+        tr("] starts stepping at the first pass, paused (%1 passes)").arg(passes.steps().size()));
+  QStringList seen;
+  for (int i = 0; i < static_cast<int>(passes.steps().size()); ++i) {
+    if (i > 0) passes.step(+1);
+    QCoreApplication::processEvents();
+    const PassStepper::Step& step = passes.steps()[static_cast<std::size_t>(passes.index())];
+    seen << step.id;
+    const bool raised =
+        !step.dock || (step.dock->isVisible() && !step.dock->visibleRegion().isEmpty() &&
+                       step.dock->windowTitle().startsWith(QStringLiteral("\u25b6")));
+    check(passes.index() == i && raised,
+          tr("pass %1 %2: %3")
+              .arg(i + 1)
+              .arg(step.id,
+                   step.dock
+                       ? tr("its panel (%1) is in front and marked").arg(step.dock->objectName())
+                       : tr("the view")));
+    QString file = step.id;
+    file.replace(QLatin1Char(' '), QLatin1Char('-')).remove(QLatin1Char('+'));
+    saveImage(w_.grab().toImage(), QStringLiteral("pass-%1-%2.png").arg(i + 1).arg(file));
+  }
+  // The steps are the declared passes of the technique, in the order they were timed.
+  const sl::Renderer* r = w_.viewport_->renderer();
+  QStringList declared, timed;
+  for (const sl::PassDecl& p : sl::framePassDecls(*sl::Renderer::findTechnique(r->techniqueId())))
+    declared << QString::fromStdString(p.id);
+  for (const sl::PassTiming& p : r->stats().passes) timed << QString::fromStdString(p.name);
+  check(seen == declared && (r->stats().timingFramesLate > 0 || timed == declared),
+        tr("the passes come as declared and in frame order: %1 (timed: %2)")
+            .arg(seen.join(QStringLiteral(" -> ")), timed.join(QStringLiteral(" -> "))));
+  const std::uint64_t frame = r->stats().frameIndex;
+  passes.step(+1);  // past the last pass: the next frame, from its first pass
+  for (int i = 0; i < 50 && (passes.waitingForFrame() || passes.index() != 0); ++i)
+    w_.waitForFrames(1, 2000);
+  check(passes.index() == 0 && w_.viewport_->renderer()->stats().frameIndex == frame + 1,
+        tr("] after the last pass renders exactly one more frame (%1 -> %2)")
+            .arg(frame)
+            .arg(w_.viewport_->renderer()->stats().frameIndex));
+  passes.stop();
+  check(passes.index() < 0 && !w_.viewport_->paused(), tr("Esc stops stepping and resumes"));
+
+  // 2. Overlays: O cycles through every value the declaration lists.
+  sl::ParamSet& shared = w_.viewport_->renderer()->rendererParams();
+  const sl::ParamDecl* overlay = shared.find("view.overlay");
+  QStringList values;
+  for (std::size_t i = 0; overlay && i < overlay->enumNames.size(); ++i) {
+    w_.teaching_->cycleOverlay();
+    w_.waitForFrames(1);
+    values << QString::fromStdString(shared.format("view.overlay"));
+    saveImage(w_.viewport_->grabView(), QStringLiteral("overlay-%1.png").arg(values.back()));
+  }
+  check(overlay && values.size() == static_cast<int>(overlay->enumNames.size()) &&
+            values.back() == QString::fromStdString(overlay->enumNames.front()),
+        tr("O cycles the overlays: %1").arg(values.join(QStringLiteral(", "))));
+
+  // 3. Split view: the other technique on the right half, both errors measured.
+  w_.teaching_->toggleSplit();
+  w_.waitForFrames(2);
+  const auto error = w_.viewport_->computeErrorNow();
+  w_.waitForFrames(1);
+  check(!w_.viewport_->splitTechnique().empty() && error && w_.viewport_->splitErrorPct(),
+        tr("F7 splits the view: %1 %2 % | %3 %4 %")
+            .arg(QString::fromStdString(w_.viewport_->techniqueId()))
+            .arg(error.value_or(-1), 0, 'f', 3)
+            .arg(QString::fromStdString(w_.viewport_->splitTechnique()))
+            .arg(w_.viewport_->splitErrorPct().value_or(-1), 0, 'f', 3));
+  saveImage(w_.viewport_->grabView(), QStringLiteral("split.png"));
+  w_.teaching_->toggleSplit();
+  check(w_.viewport_->splitTechnique().empty(), tr("F7 again ends the split view"));
+
+  // 4. Lessons: each applies its scene and technique.
+  const std::vector<Lesson>& lessons = w_.lessons_->lessons();
+  for (std::size_t i = 0; i < lessons.size(); ++i) {
+    w_.lessons_->apply(static_cast<int>(i));
+    w_.waitForFrames(2);
+    const sl::Preset& p = lessons[i].preset;
+    check(w_.sceneSpec_ == QString::fromStdString(p.scene) &&
+              (p.technique.empty() || w_.viewport_->techniqueId() == p.technique),
+          tr("lesson %1 (%2): scene %3, technique %4")
+              .arg(i + 1)
+              .arg(QString::fromStdString(p.title), w_.sceneSpec_,
+                   QString::fromStdString(w_.viewport_->techniqueId())));
+    saveImage(w_.grab().toImage(), QStringLiteral("lesson-%1.png").arg(i + 1));
+  }
+  return true;
+}
+
+bool SelfTests::badGltf(const QString& paths) {
+  const QStringList files = paths.split(QLatin1Char(','), Qt::SkipEmptyParts);
+  check(!files.isEmpty(), tr("bad-gltf names at least one file"));
+  for (const QString& path : files) {
+    check(QFileInfo::exists(path), tr("the broken glTF %1 exists").arg(path));
+    if (!QFileInfo::exists(path)) return false;
+    badGltfOpen(path, false);
+    badGltfOpen(path, true);
+  }
+  return true;
+}
+
+void SelfTests::badGltfOpen(const QString& path, bool drop) {
+  const std::shared_ptr<const sl::Scene> sceneBefore = w_.viewport_->scene();
+  const QString specBefore = w_.sceneSpec_;
+  const QString comboBefore = w_.sceneCombo_->currentText();
+  const QString titleBefore = w_.windowTitle();
+  const QString fileName = QFileInfo(path).fileName();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  const QString how = drop ? tr("dropped") : tr("File > Open");
+  std::printf("---- %s, %s\n", qPrintable(fileName), qPrintable(how));
+  w_.statusBar()->clearMessage();
+
+  // Drive the modal dialogs the way a user would: pick the file, read the error, close it.
+  bool sawFileDialog = false, sawMessage = false;
+  QString messageText, detailsText;
+  QTimer driver;
+  driver.setInterval(50);
+  int ticks = 0;
+  connect(&driver, &QTimer::timeout, this, [&] {
+    QWidget* modal = QApplication::activeModalWidget();
+    if (modal && ++ticks > 200) {  // 10 s: a dialog that will not close; give up, no hang
+      QMetaObject::invokeMethod(modal, "reject", Qt::QueuedConnection);
+      return;
+    }
+    if (auto* dialog = qobject_cast<QFileDialog*>(modal)) {
+      sawFileDialog = true;
+      // Type the path into the dialog's file name field and press Return.
+      if (auto* edit = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"))) {
+        edit->setText(absolute);
+        QKeyEvent enter(QEvent::KeyPress, Qt::Key_Return, Qt::NoModifier);
+        QApplication::sendEvent(edit, &enter);
+      }
+    } else if (auto* box = qobject_cast<QMessageBox*>(modal)) {
+      sawMessage = true;
+      messageText = box->text();
+      detailsText = box->detailedText();
+      box->accept();
+    }
+  });
+  QElapsedTimer clock;
+  clock.start();
+  driver.start();
+  if (drop) {
+    // A file dragged from a file manager onto the window: enter, then drop, with its URL.
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(absolute)});
+    const QPoint at = w_.rect().center();
+    QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(&w_, &enter);
+    check(enter.isAccepted(), tr("dragging %1 over the window is accepted").arg(fileName));
+    QDropEvent dropEvent(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(&w_, &dropEvent);  // returns once the error dialog is closed
+  } else {
+    w_.openAction_->trigger();  // File > Open glTF…: returns once both dialogs are closed
+    check(sawFileDialog, tr("File > Open glTF… showed the file dialog"));
+  }
+  driver.stop();
+  const qint64 ms = clock.elapsed();
+
+  const QString status = w_.statusBar()->currentMessage();
+  auto quoted = [](const QString& text) {  // what this log prints of a shown text
+    return text.size() > 120 ? text.left(120) + QStringLiteral("…") : text;
+  };
+  check(sawMessage && messageText.contains(fileName),
+        tr("an error dialog naming the file appeared: \"%1\"").arg(quoted(messageText)));
+  check(status.contains(fileName), tr("the status bar names the file: \"%1\"").arg(quoted(status)));
+  // Elided (MessageText.h): a hostile file's text cannot freeze the window.
+  const int limit = kShownMessageChars + 1;
+  check(messageText.size() <= limit && status.size() <= limit &&
+            detailsText.size() <= kMessageDetailsChars + 200,
+        tr("the dialog and the status bar show at most %1 characters (%2, %3; details %4)")
+            .arg(limit)
+            .arg(messageText.size())
+            .arg(status.size())
+            .arg(detailsText.size()));
+  check(ms < 20000, tr("%1 the file, read the error and closed it in %2 ms").arg(how).arg(ms));
+  check(w_.viewport_->scene() == sceneBefore && w_.sceneSpec_ == specBefore,
+        tr("the previous scene (%1) is still shown").arg(specBefore));
+  check(w_.sceneCombo_->currentText() == comboBefore && w_.windowTitle() == titleBefore,
+        tr("the scene selector and the title still name it (%1)").arg(comboBefore));
+  const std::uint64_t frame = w_.viewport_->renderer()->stats().frameIndex;
+  const bool rendered = w_.waitForFrames(2);
+  check(rendered && w_.viewport_->renderer()->stats().frameIndex > frame,
+        tr("the view keeps rendering (frame %1 -> %2)")
+            .arg(frame)
+            .arg(w_.viewport_->renderer()->stats().frameIndex));
+}
+
+}  // namespace sl::ui

@@ -1,0 +1,20 @@
+// The one list of publication-panel families (see PanelRegistry.h).
+#include "panels/PanelRegistry.h"
+
+#include "panels/rtw/RtwPanels.h"
+
+namespace sl::ui {
+
+const std::vector<PanelEntry>& publicationPanels() {
+  static const std::vector<PanelEntry> list = [] {
+    std::vector<PanelEntry> all;
+    for (std::vector<PanelEntry> family : {
+             rtwPanels(),
+         })
+      all.insert(all.end(), family.begin(), family.end());
+    return all;
+  }();
+  return list;
+}
+
+}  // namespace sl::ui

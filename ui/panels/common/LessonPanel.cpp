@@ -1,0 +1,179 @@
+// Lessons and the Lesson dock (see LessonPanel.h).
+#include "LessonPanel.h"
+
+#include "core/Renderer.h"
+
+#include <algorithm>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QTextBrowser>
+#include <QUrl>
+#include <QVBoxLayout>
+
+#include "MessageText.h"
+#include "scene/GltfLoader.h"
+
+namespace sl::ui {
+
+QString lessonDirectory() {
+  return QDir(QString::fromStdString(sl::builtinSceneDir().string()))
+      .filePath(QStringLiteral("lessons"));
+}
+
+std::vector<Lesson> loadLessons(QStringList* errors) {
+  std::vector<Lesson> out;
+  const QDir dir(lessonDirectory());
+  QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+  for (const QString& file : files) {
+    const QString path = dir.filePath(file);
+    std::string error;
+    std::optional<sl::Preset> preset = sl::loadPreset(path.toStdString(), &error);
+    if (!preset) {
+      if (errors) *errors << QString::fromStdString(error);
+      continue;
+    }
+    if (preset->title.empty()) preset->title = QFileInfo(file).baseName().toStdString();
+    out.push_back({path, std::move(*preset)});
+  }
+  return out;
+}
+
+int findLesson(const std::vector<Lesson>& lessons, const QString& spec) {
+  bool isNumber = false;
+  const int number = spec.toInt(&isNumber);
+  if (isNumber) return number >= 1 && number <= static_cast<int>(lessons.size()) ? number - 1 : -1;
+  for (std::size_t i = 0; i < lessons.size(); ++i) {
+    const QFileInfo info(lessons[i].path);
+    if (info.completeBaseName() == spec || info.fileName() == spec ||
+        QFileInfo(spec).absoluteFilePath() == info.absoluteFilePath())
+      return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::optional<Lesson> resolveLesson(const QString& spec, QString* error) {
+  const std::vector<Lesson> lessons = loadLessons(nullptr);
+  const int index = findLesson(lessons, spec);
+  if (index >= 0) return lessons[static_cast<std::size_t>(index)];
+  if (QFileInfo::exists(spec) && QFileInfo(spec).isFile()) {
+    std::string message;
+    std::optional<sl::Preset> preset = sl::loadPreset(spec.toStdString(), &message);
+    if (preset) return Lesson{spec, std::move(*preset)};
+    if (error) *error = QString::fromStdString(message);
+    return std::nullopt;
+  }
+  QStringList known;
+  for (const Lesson& l : lessons) known << QFileInfo(l.path).completeBaseName();
+  if (error)
+    *error =
+        QStringLiteral("unknown lesson '%1' (known: %2)")
+            .arg(spec, known.isEmpty() ? QStringLiteral("none") : known.join(QStringLiteral(", ")));
+  return std::nullopt;
+}
+
+LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(8, 6, 8, 8);
+  title_ = new QLabel;
+  title_->setObjectName(QStringLiteral("lessonTitle"));
+  QFont f = title_->font();
+  f.setBold(true);
+  f.setPointSizeF(f.pointSizeF() * 1.2);
+  title_->setFont(f);
+  title_->setWordWrap(true);
+  layout->addWidget(title_);
+  text_ = new QTextBrowser;
+  text_->setObjectName(QStringLiteral("lessonText"));
+  text_->setOpenLinks(false);
+  text_->setFrameShape(QFrame::NoFrame);
+  connect(text_, &QTextBrowser::anchorClicked, this, [this](const QUrl& url) {
+    bool ok = false;
+    const int index = url.fragment().toInt(&ok);
+    if (ok) Q_EMIT lessonChosen(index);
+  });
+  layout->addWidget(text_, 1);
+  note_ = new QLabel;
+  note_->setWordWrap(true);
+  note_->setForegroundRole(QPalette::BrightText);
+  note_->hide();
+  layout->addWidget(note_);
+  auto* buttons = new QHBoxLayout;
+  previous_ = new QPushButton(tr("◀ Previous"));
+  restart_ = new QPushButton(tr("Restart"));
+  restart_->setToolTip(tr("Apply the lesson's scene, camera, light and parameters again"));
+  next_ = new QPushButton(tr("Next ▶"));
+  connect(previous_, &QPushButton::clicked, this, &LessonPanel::previousRequested);
+  connect(next_, &QPushButton::clicked, this, &LessonPanel::nextRequested);
+  connect(restart_, &QPushButton::clicked, this, &LessonPanel::restartRequested);
+  buttons->addWidget(previous_);
+  buttons->addStretch(1);
+  buttons->addWidget(restart_);
+  buttons->addWidget(next_);
+  layout->addLayout(buttons);
+  showLesson(nullptr, -1, 0);
+}
+
+void LessonPanel::setLessonTitles(const QStringList& titles) {
+  titles_ = titles;
+}
+
+void LessonPanel::showLesson(const Lesson* lesson, int index, int count) {
+  note_->hide();
+  if (!lesson) {
+    title_->setText(tr("Lessons"));
+    QString html =
+        tr("<p>Each lesson sets up a scene, camera, light, technique and parameters "
+           "and says what to look at. Choose one (Lessons menu, Ctrl+1…):</p><ol>");
+    for (int i = 0; i < titles_.size(); ++i)
+      html +=
+          QStringLiteral("<li><a href='#%1'>%2</a></li>").arg(i).arg(titles_[i].toHtmlEscaped());
+    html += QStringLiteral("</ol>");
+    if (titles_.isEmpty())
+      html = tr("<p>No lessons found in %1.</p>").arg(lessonDirectory().toHtmlEscaped());
+    text_->setHtml(html);
+    previous_->setEnabled(false);
+    next_->setEnabled(!titles_.isEmpty());
+    restart_->setEnabled(false);
+    return;
+  }
+  title_->setText(tr("Lesson %1 of %2: %3")
+                      .arg(index + 1)
+                      .arg(count)
+                      .arg(shownMessage(QString::fromStdString(lesson->preset.title))));
+  // Explanations are plain text; blank lines separate paragraphs.
+  QString html;
+  for (const QString& para :
+       QString::fromStdString(lesson->preset.explanation).split(QStringLiteral("\n\n")))
+    html += QStringLiteral("<p>%1</p>")
+                .arg(para.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>")));
+  html += QStringLiteral("<p style='color:gray'>%1</p>")
+              .arg(tr("Scene %1 · technique %2")
+                       .arg(QString::fromStdString(lesson->preset.scene),
+                            QString::fromStdString(lesson->preset.technique))
+                       .toHtmlEscaped());
+  // The passes of the lesson's technique, from their declaration: what ] steps through.
+  if (const sl::TechniqueInfo* t = sl::Renderer::findTechnique(lesson->preset.technique)) {
+    QStringList titles;
+    for (const sl::PassDecl& pass : sl::framePassDecls(*t))
+      titles << QString::fromStdString(pass.title).toHtmlEscaped();
+    html += QStringLiteral("<p style='color:gray'>%1</p>")
+                .arg(tr("Its passes (] steps through them): %1")
+                         .arg(titles.join(QStringLiteral(" → "))));
+  }
+  text_->setHtml(html);
+  previous_->setEnabled(index > 0);
+  next_->setEnabled(index + 1 < count);
+  restart_->setEnabled(true);
+}
+
+void LessonPanel::setNote(const QString& note) {
+  note_->setText(shownMessage(note));
+  note_->setToolTip(messageDetails(note));
+  note_->setVisible(!note.isEmpty());
+}
+
+}  // namespace sl::ui

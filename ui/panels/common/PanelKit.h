@@ -1,0 +1,227 @@
+// Shared pieces of the debug panels: colour maps, float images to QImage, a zoomable image
+// view with a legend and a value readout, a line plot with hover readout, and the base
+// class of every panel that shows the renderer's Publication. QPainter only, no GL.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <set>
+#include <string>
+#include <span>
+#include <vector>
+
+#include <QImage>
+#include <QJsonObject>
+#include <QPointF>
+#include <QString>
+#include <QWidget>
+
+#include "core/Renderer.h"
+
+class QLabel;
+class QStackedWidget;
+
+namespace sl::ui {
+
+// --- Colour maps ---------------------------------------------------------------------------
+
+enum class ColorMap {
+  Viridis,    ///< perceptual, for non-negative quantities (importance)
+  Grey,       ///< depth maps
+  Diverging,  ///< signed quantities, 0 in the middle (blue - white - red)
+};
+
+/// Colour of t in [0, 1] (clamped; NaN -> black).
+QRgb mapColor(ColorMap map, float t);
+
+/// How values become t in [0, 1]: linear between lo and hi, or log10 between them (lo > 0).
+struct ValueRange {
+  float lo = 0.0f;
+  float hi = 1.0f;
+  bool log = false;
+  float normalize(float v) const;
+  float denormalize(float t) const;  ///< inverse of normalize, for legend labels
+};
+
+/// Range of the finite values of `values` (channel `channel` of `channels`), ignoring values
+/// >= ignoreFrom (e.g. 1.0 = the cleared depth of a shadow map). Empty: {0, 1}. A flat
+/// range is widened so that normalize() stays finite.
+ValueRange finiteRange(std::span<const float> values, int channels = 1, int channel = 0,
+                       float ignoreFrom = std::numeric_limits<float>::infinity());
+/// Symmetric range [-m, m] with m = max |v| (for ColorMap::Diverging).
+ValueRange symmetricRange(std::span<const float> values, int channels = 1, int channel = 0);
+
+/// Colours one channel of a float image. FloatImage row 0 is the bottom; the QImage's row 0
+/// is the top (so it displays upright).
+QImage colorize(const sl::FloatImage& image, int channel, const ValueRange& range, ColorMap map);
+
+/// "0.0123", "1.23e+05": four significant digits.
+QString formatValue(double v);
+
+/// Text for a panel whose data (`keys`) the current technique does not publish, naming
+/// the techniques that declare them.
+QString noDataText(const QString& techniqueId, const QString& what,
+                   const std::set<std::string>& keys);
+
+// --- ImageView -----------------------------------------------------------------------------
+
+/// Shows an image of a texel grid (uv in [0,1]^2, v up) with zoom (wheel), pan (drag),
+/// fit (double click), a colour legend and the value under the cursor.
+class ImageView : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit ImageView(QWidget* parent = nullptr);
+
+  /// `image` shows a texelsW x texelsH grid (the image may be larger or smaller).
+  void setImage(const QImage& image, int texelsW, int texelsH);
+  void clearImage(const QString& placeholder);
+  bool hasImage() const { return !image_.isNull(); }
+  QSize texelSize() const { return {texelsW_, texelsH_}; }
+
+  /// Text for the texel under the cursor (x right, y up from the bottom row).
+  void setValueReader(std::function<QString(int x, int y)> reader);
+  /// Colour legend on the right: `range` through `map`, `unit` under it. An empty unit
+  /// and a default range with `show` false hides it.
+  void setLegend(const ValueRange& range, ColorMap map, const QString& title, bool show = true);
+  /// Drawn over the image; `imageRect` is where uv [0,1]^2 lies in widget coordinates
+  /// (u = 0 at left(), v = 0 at bottom()).
+  void setOverlay(std::function<void(QPainter&, const QRectF& imageRect)> overlay);
+  void setCaption(const QString& caption);
+  /// A coloured frame (pass stepping: "this is the output of the current pass").
+  void setHighlighted(bool on);
+
+  /// Back to "fit to view".
+  void resetZoom();
+
+  QSize sizeHint() const override { return {320, 300}; }
+  QSize minimumSizeHint() const override { return {120, 110}; }
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void mouseDoubleClickEvent(QMouseEvent* event) override;
+  void leaveEvent(QEvent* event) override;
+
+ private:
+  int legendWidth() const;   ///< 0 without a legend
+  QRectF viewArea() const;   ///< the part of the widget available to the image
+  QRectF imageRect() const;  ///< where the image lies, zoom and pan applied
+
+  QImage image_;
+  int texelsW_ = 0, texelsH_ = 0;
+  QString placeholder_;
+  QString caption_;
+  std::function<QString(int, int)> reader_;
+  std::function<void(QPainter&, const QRectF&)> overlay_;
+  ValueRange legendRange_;
+  ColorMap legendMap_ = ColorMap::Viridis;
+  QString legendTitle_;
+  bool legend_ = false;
+  bool highlighted_ = false;
+  double zoom_ = 1.0;
+  QPointF pan_;  ///< offset of the image centre from the view centre, widget pixels
+  QPoint lastMouse_;
+  bool dragging_ = false;
+  QPoint hover_{-1, -1};
+};
+
+// --- PlotWidget ----------------------------------------------------------------------------
+
+/// A small line plot: several series over a shared x axis, optional log y, horizontal
+/// reference lines, and a hover cursor that reads every series at the cursor's x.
+class PlotWidget : public QWidget {
+  Q_OBJECT
+
+ public:
+  struct Series {
+    QString name;
+    std::vector<QPointF> points;  ///< ascending x
+    QColor color;
+    Qt::PenStyle style = Qt::SolidLine;
+    qreal width = 1.6;
+    bool highlighted = false;  ///< drawn thicker with a glow
+  };
+  struct Line {
+    double y = 0.0;
+    QColor color;
+    QString label;
+  };
+
+  explicit PlotWidget(QWidget* parent = nullptr);
+
+  void setTitle(const QString& title) { title_ = title, update(); }
+  void setAxisLabels(const QString& x, const QString& y);
+  void setSeries(std::vector<Series> series);
+  void setLines(std::vector<Line> lines);
+  /// Fixed ranges (lo >= hi: automatic from the data).
+  void setXRange(double lo, double hi);
+  void setYRange(double lo, double hi);
+  void setLogY(bool on);
+  void setPlaceholder(const QString& text);
+  void setHighlighted(bool on);
+  const std::vector<Series>& series() const { return series_; }
+
+  QSize sizeHint() const override { return {320, 190}; }
+  QSize minimumSizeHint() const override { return {140, 100}; }
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void leaveEvent(QEvent* event) override;
+
+ private:
+  struct Ranges {
+    double x0, x1, y0, y1;
+  };
+  Ranges ranges() const;
+  QRectF plotArea() const;
+  double yToT(double y, const Ranges& r) const;
+
+  QString title_, xLabel_, yLabel_, placeholder_;
+  std::vector<Series> series_;
+  std::vector<Line> lines_;
+  double fixedX0_ = 0, fixedX1_ = 0, fixedY0_ = 0, fixedY1_ = 0;
+  bool logY_ = false;
+  bool highlighted_ = false;
+  int hoverX_ = -1;
+};
+
+// --- Panels --------------------------------------------------------------------------------
+
+/// Base of the panels that show the renderer's Publication. The main window requests the
+/// panel's observedKeys() while it is visible and calls showPublication() after each frame;
+/// a panel keeps whatever it needs (the Publication is replaced by the next frame). A
+/// technique that does not publish a panel's keys gets the placeholder (showContent(false,
+/// noDataText(...))).
+class PublicationPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit PublicationPanel(QWidget* parent = nullptr);
+
+  /// The publication keys (or patterns) this panel draws: requested from the renderer
+  /// while the panel is visible, nothing while it is hidden.
+  virtual std::set<std::string> observedKeys() const = 0;
+  virtual void showPublication(const sl::Publication& publication) = 0;
+  /// Pass stepping: emphasise what shows pass `passId` ("" = nothing).
+  virtual void highlightPass(const QString& passId) { (void)passId; }
+  /// Values the panel computed or drew (for --grab's published.json).
+  virtual QJsonObject drawnValues() const { return {}; }
+  /// Forgets accumulated history (new scene or technique).
+  virtual void resetHistory() {}
+
+ protected:
+  /// Puts `content` under a placeholder switch: showContent(false, text) shows the text.
+  void setContent(QWidget* content);
+  void showContent(bool on, const QString& placeholder = {});
+
+ private:
+  QStackedWidget* stack_ = nullptr;
+  QLabel* placeholder_ = nullptr;
+};
+
+}  // namespace sl::ui

@@ -1,0 +1,284 @@
+// The Timing panel (see TimingPanel.h): painted bars and a sparkline, no charts library,
+// so that it stays cheap to update every frame.
+#include "TimingPanel.h"
+
+#include <algorithm>
+#include <deque>
+#include <numeric>
+#include <vector>
+
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPainter>
+#include <QPainterPath>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace sl::ui {
+
+namespace {
+QString formatMs(double ms) {
+  return QStringLiteral("%1 ms").arg(ms, 0, 'f', ms < 10 ? 2 : 1);
+}
+
+QString formatBytes(std::uint64_t bytes) {
+  const double mib = static_cast<double>(bytes) / (1024.0 * 1024.0);
+  if (mib >= 1.0) return QStringLiteral("%1 MiB").arg(mib, 0, 'f', 2);
+  return QStringLiteral("%1 KiB").arg(static_cast<double>(bytes) / 1024.0, 0, 'f', 1);
+}
+
+QString formatCount(std::uint64_t n) {
+  return QLocale::c().toString(static_cast<qulonglong>(n));
+}
+}  // namespace
+
+/// One row per pass: name, a bar proportional to its share of the frame, and the time.
+class PassBarsWidget : public QWidget {
+ public:
+  using QWidget::QWidget;
+
+  void setPasses(std::vector<sl::PassTiming> passes, double totalMs) {
+    passes_ = std::move(passes);
+    totalMs_ = totalMs;
+    updateGeometry();
+    update();
+  }
+
+  QSize sizeHint() const override {
+    return {320, rowHeight() * std::max<int>(3, int(passes_.size()))};
+  }
+  QSize minimumSizeHint() const override { return {200, rowHeight() * 2}; }
+
+ protected:
+  void paintEvent(QPaintEvent*) override {
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QPalette& pal = palette();
+    if (passes_.empty()) {
+      p.setPen(pal.color(QPalette::Disabled, QPalette::Text));
+      p.drawText(rect(), Qt::AlignCenter, tr("No frame yet"));
+      return;
+    }
+    double sum = 0;
+    for (const auto& pass : passes_) sum += pass.ms;
+    const double scale = std::max({totalMs_, sum, 1e-6});
+    const QFontMetrics fm = fontMetrics();
+    int nameW = 0;
+    for (const auto& pass : passes_)
+      nameW = std::max(nameW, fm.horizontalAdvance(QString::fromStdString(pass.name)));
+    nameW = std::min(nameW + 10, width() * 9 / 20);
+    const int valueW = fm.horizontalAdvance(QStringLiteral("0000.00 ms  100%")) + 8;
+    const int barX = nameW, barW = std::max(10, width() - nameW - valueW);
+    QColor bar = pal.color(QPalette::Highlight);
+    int y = 0;
+    for (const auto& pass : passes_) {
+      const QRect row(0, y, width(), rowHeight());
+      p.setPen(pal.color(QPalette::Text));
+      p.drawText(QRect(0, y, nameW - 6, row.height()), Qt::AlignVCenter | Qt::AlignRight,
+                 fm.elidedText(QString::fromStdString(pass.name), Qt::ElideRight, nameW - 6));
+      const QRectF track(barX, y + 4, barW, row.height() - 8);
+      p.setPen(Qt::NoPen);
+      p.setBrush(pal.color(QPalette::AlternateBase));
+      p.drawRoundedRect(track, 3, 3);
+      QRectF fill = track;
+      fill.setWidth(std::max(2.0, track.width() * pass.ms / scale));
+      p.setBrush(bar);
+      p.drawRoundedRect(fill, 3, 3);
+      p.setPen(pal.color(QPalette::Text));
+      p.drawText(
+          QRect(barX + barW + 8, y, valueW - 8, row.height()), Qt::AlignVCenter | Qt::AlignLeft,
+          QStringLiteral("%1  %2%").arg(formatMs(pass.ms)).arg(100.0 * pass.ms / scale, 0, 'f', 0));
+      y += rowHeight();
+    }
+  }
+
+ private:
+  int rowHeight() const { return fontMetrics().height() + 8; }
+  std::vector<sl::PassTiming> passes_;
+  double totalMs_ = 0;
+};
+
+/// The total frame time of the last frames, newest on the right, with min/avg/max.
+class FrameHistoryWidget : public QWidget {
+ public:
+  using QWidget::QWidget;
+  static constexpr std::size_t kFrames = 180;
+
+  void add(double ms) {
+    frames_.push_back(ms);
+    while (frames_.size() > kFrames) frames_.pop_front();
+    update();
+  }
+  void clear() {
+    frames_.clear();
+    update();
+  }
+  QSize sizeHint() const override { return {260, 90}; }
+  QSize minimumSizeHint() const override { return {120, 50}; }
+
+ protected:
+  void paintEvent(QPaintEvent*) override {
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QPalette& pal = palette();
+    const QFontMetrics fm = fontMetrics();
+    const QRectF area = QRectF(rect()).adjusted(2, fm.height() + 4, -2, -2);
+    p.setPen(Qt::NoPen);
+    p.setBrush(pal.color(QPalette::AlternateBase));
+    p.drawRoundedRect(area, 3, 3);
+    if (frames_.empty()) {
+      p.setPen(pal.color(QPalette::Disabled, QPalette::Text));
+      p.drawText(area, Qt::AlignCenter, tr("No frame yet"));
+      return;
+    }
+    const auto [lo, hi] = std::minmax_element(frames_.begin(), frames_.end());
+    const double avg =
+        std::accumulate(frames_.begin(), frames_.end(), 0.0) / double(frames_.size());
+    // Scale to the 90th percentile so that one slow frame (shader compile) does not
+    // flatten the rest; taller frames are clipped at the top.
+    std::vector<double> sorted(frames_.begin(), frames_.end());
+    std::sort(sorted.begin(), sorted.end());
+    const double p90 = sorted[std::min(sorted.size() - 1, sorted.size() * 9 / 10)];
+    const double top = std::max(p90 * 1.4, 1e-3);
+    p.setPen(pal.color(QPalette::Text));
+    p.drawText(QRect(2, 0, width() - 4, fm.height() + 2), Qt::AlignLeft | Qt::AlignVCenter,
+               fm.elidedText(
+                   tr("min %1 · avg %2 · max %3").arg(formatMs(*lo), formatMs(avg), formatMs(*hi)),
+                   Qt::ElideRight, width() - 4));
+    QPainterPath path;
+    const double dx = area.width() / double(kFrames - 1);
+    const double x0 = area.right() - dx * double(frames_.size() - 1);
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+      const QPointF pt(x0 + dx * double(i),
+                       area.bottom() - area.height() * std::min(frames_[i] / top, 1.0));
+      i == 0 ? path.moveTo(pt) : path.lineTo(pt);
+    }
+    QColor line = pal.color(QPalette::Highlight);
+    p.setPen(QPen(line, 1.5));
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(path);
+    // Average as a dashed line.
+    const double yAvg = area.bottom() - area.height() * avg / top;
+    QColor avgColor = pal.color(QPalette::Text);
+    avgColor.setAlpha(110);
+    p.setPen(QPen(avgColor, 1, Qt::DashLine));
+    p.drawLine(QPointF(area.left(), yAvg), QPointF(area.right(), yAvg));
+  }
+
+ private:
+  std::deque<double> frames_;
+};
+
+TimingPanel::TimingPanel(QWidget* parent) : QWidget(parent) {
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(8, 4, 8, 6);
+  outer->setSpacing(4);
+  summary_ = new QLabel(tr("No frame yet"));
+  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  outer->addWidget(summary_);
+
+  auto* row = new QHBoxLayout;
+  row->setSpacing(10);
+  auto* passBox = new QGroupBox(tr("Passes (current frame)"));
+  auto* passLayout = new QVBoxLayout(passBox);
+  passes_ = new PassBarsWidget;
+  passLayout->addWidget(passes_);
+  passLayout->addStretch(1);
+  row->addWidget(passBox, 4);
+
+  auto* historyBox =
+      new QGroupBox(tr("Frame time (last %1 frames)").arg(FrameHistoryWidget::kFrames));
+  auto* historyLayout = new QVBoxLayout(historyBox);
+  history_ = new FrameHistoryWidget;
+  historyLayout->addWidget(history_);
+  row->addWidget(historyBox, 3);
+
+  auto* memoryBox = new QGroupBox(tr("Shadow memory"));
+  auto* memoryLayout = new QVBoxLayout(memoryBox);
+  memory_ = new QTreeWidget;
+  memory_->setRootIsDecorated(false);
+  memory_->setUniformRowHeights(true);
+  memory_->setAlternatingRowColors(true);
+  memory_->setHeaderLabels({tr("Resource"), tr("Format"), tr("Size"), tr("Bytes")});
+  memory_->header()->setStretchLastSection(false);
+  memory_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  memory_->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+  memory_->header()->setMinimumSectionSize(60);
+  memoryLayout->addWidget(memory_);
+  memoryTotal_ = new QLabel;
+  memoryLayout->addWidget(memoryTotal_);
+  row->addWidget(memoryBox, 4);
+  outer->addLayout(row, 1);
+}
+
+void TimingPanel::showStats(const sl::FrameStats& stats) {
+  summary_->setText(tr("Frame %1  ·  %2 × %3 px  ·  total <b>%4</b>  ·  timing: %5")
+                        .arg(stats.frameIndex)
+                        .arg(stats.width)
+                        .arg(stats.height)
+                        .arg(formatMs(stats.totalMs))
+                        .arg(stats.timingMethod.empty()
+                                 ? tr("unknown")
+                                 : QString::fromStdString(stats.timingMethod)) +
+                    tr("  ·  panels read back %1").arg(formatBytes(stats.publicationBytes)));
+  // Bars in the declared frame order, named by their declared titles (an undeclared timer
+  // scope keeps its id); the explanations in the tooltip.
+  std::vector<sl::PassTiming> rows;
+  QString tip;
+  std::vector<bool> used(stats.passes.size(), false);
+  for (const sl::PassDecl& d : declared_) {
+    for (std::size_t i = 0; i < stats.passes.size(); ++i) {
+      if (used[i] || stats.passes[i].name != d.id) continue;
+      used[i] = true;
+      rows.push_back({d.title, stats.passes[i].ms});
+      tip += QStringLiteral("<p><b>%1</b> <code>%2</code><br>%3</p>")
+                 .arg(QString::fromStdString(d.title).toHtmlEscaped(),
+                      QString::fromStdString(d.id).toHtmlEscaped(),
+                      QString::fromStdString(d.explanation).toHtmlEscaped());
+      break;
+    }
+  }
+  for (std::size_t i = 0; i < stats.passes.size(); ++i)
+    if (!used[i]) rows.push_back(stats.passes[i]);
+  passes_->setToolTip(tip);
+  passes_->setPasses(std::move(rows), stats.totalMs);
+  history_->add(stats.totalMs);
+
+  // The memory list only changes with the technique or its parameters.
+  QStringList key;
+  for (const sl::ResourceInfo& r : stats.memory.resources)
+    key << QStringLiteral("%1|%2|%3x%4x%5|%6")
+               .arg(QString::fromStdString(r.name), QString::fromStdString(r.format))
+               .arg(r.width)
+               .arg(r.height)
+               .arg(r.layers)
+               .arg(r.bytes);
+  if (key == memoryKey_) return;
+  memoryKey_ = key;
+  memory_->clear();
+  for (const sl::ResourceInfo& r : stats.memory.resources) {
+    QString size = QStringLiteral("%1 × %2").arg(r.width).arg(r.height);
+    if (r.layers > 1) size += QStringLiteral(" × %1").arg(r.layers);
+    auto* item =
+        new QTreeWidgetItem({QString::fromStdString(r.name), QString::fromStdString(r.format), size,
+                             formatBytes(r.bytes)});
+    item->setToolTip(0, tr("%1 texels").arg(formatCount(r.texels)));
+    for (int c = 2; c < 4; ++c) item->setTextAlignment(c, Qt::AlignRight | Qt::AlignVCenter);
+    memory_->addTopLevelItem(item);
+  }
+  memoryTotal_->setText(
+      tr("Total: %1 texels, %2")
+          .arg(formatCount(stats.memory.texels()), formatBytes(stats.memory.bytes())));
+}
+
+void TimingPanel::setTechnique(const sl::TechniqueInfo* technique) {
+  declared_ = technique ? sl::framePassDecls(*technique) : std::vector<sl::PassDecl>{};
+}
+
+void TimingPanel::resetHistory() {
+  history_->clear();
+}
+
+}  // namespace sl::ui

@@ -1,0 +1,44 @@
+// The Timing panel: per-pass times of the current frame (bars), the recent frame-time
+// history, the shadow-related GPU memory and the bytes the panels read back, all read from
+// the renderer's FrameStats; the passes are named and explained by their declarations.
+#pragma once
+
+#include <QStringList>
+#include <QWidget>
+
+#include <vector>
+
+#include "core/Renderer.h"
+
+class QLabel;
+class QTreeWidget;
+
+namespace sl::ui {
+
+class PassBarsWidget;
+class FrameHistoryWidget;
+
+class TimingPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit TimingPanel(QWidget* parent = nullptr);
+
+  /// The technique whose declared passes (core/Renderer.h framePassDecls) name the bars.
+  void setTechnique(const sl::TechniqueInfo* technique);
+  /// Shows the stats of the frame just rendered.
+  void showStats(const sl::FrameStats& stats);
+  /// Forgets the history (new scene or technique: old times are not comparable).
+  void resetHistory();
+
+ private:
+  QLabel* summary_ = nullptr;
+  PassBarsWidget* passes_ = nullptr;
+  FrameHistoryWidget* history_ = nullptr;
+  QTreeWidget* memory_ = nullptr;
+  QLabel* memoryTotal_ = nullptr;
+  QStringList memoryKey_;
+  std::vector<sl::PassDecl> declared_;  ///< what the memory list shows, to skip identical rebuilds
+};
+
+}  // namespace sl::ui

@@ -1,0 +1,356 @@
+// The Covariance panel (see CovariancePanel.h). The principal axis is computed here, from
+// the published top-level moment sums, with the CPU reference (sl::rtw::momentsFromTop);
+// the grab test compares it with the e_x, e_y the renderer published.
+//
+// Ellipse geometry: Σ is in light-frustum metres (the sums' centred IM coordinates scaled
+// by the half-extents S = diag(sx, sy)). The ellipse {p : pᵀ Σ⁻¹ p = k²} in IM coordinates
+// is q = S⁻¹ p, which is the same as the ellipse of the unscaled Σ, so both scalings draw
+// the same curve; the metric principal axis e is drawn as the direction S⁻¹ e.
+#include "CovariancePanel.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QPainterPath>
+#include <QVBoxLayout>
+
+#include "algo/rtw/Moments.h"
+
+namespace sl::ui {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kMinOneMinusEx = 1e-9;  ///< floor of 1 - e_x on the log scales
+
+double numberOr(const std::map<std::string, double>& numbers, const std::string& key,
+                double fallback) {
+  auto it = numbers.find(key);
+  return it == numbers.end() ? fallback : it->second;
+}
+
+/// Angle difference folded into (-90, 90] (an axis has no sign).
+double axisDifferenceDeg(double a, double b) {
+  double d = std::fmod(a - b, 180.0);
+  if (d > 90.0) d -= 180.0;
+  if (d <= -90.0) d += 180.0;
+  return d;
+}
+}  // namespace
+
+/// e_x on a log scale of 1 - e_x (0.9 .. 0.9999999), with the threshold marked: right of it
+/// the rotation is held.
+class ThresholdGauge : public QWidget {
+ public:
+  using QWidget::QWidget;
+  void set(double ex, double threshold, bool valid) {
+    ex_ = ex;
+    threshold_ = threshold;
+    valid_ = valid;
+    update();
+  }
+  QSize sizeHint() const override { return {260, 3 * fontMetrics().height() + 16}; }
+  QSize minimumSizeHint() const override { return {160, 3 * fontMetrics().height() + 16}; }
+
+ protected:
+  void paintEvent(QPaintEvent*) override {
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QPalette& pal = palette();
+    const int line = fontMetrics().height();
+    const QRectF track(8, line + 6, width() - 16, line + 4);
+    constexpr double kL0 = -1.0, kL1 = -7.0;  // log10(1 - e_x) at the left and right ends
+    auto xOf = [&](double ex) {
+      const double l = std::log10(std::max(1.0 - ex, kMinOneMinusEx));
+      return track.left() + std::clamp((l - kL0) / (kL1 - kL0), 0.0, 1.0) * track.width();
+    };
+    const double tx = xOf(threshold_);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(214, 128, 40, 170));
+    p.drawRect(QRectF(track.left(), track.top(), tx - track.left(), track.height()));
+    p.setBrush(QColor(60, 170, 90, 170));
+    p.drawRect(QRectF(tx, track.top(), track.right() - tx, track.height()));
+    p.setPen(Qt::white);
+    p.drawText(QRectF(track.left() + 4, track.top(), tx - track.left() - 8, track.height()),
+               Qt::AlignLeft | Qt::AlignVCenter, tr("rotate"));
+    p.drawText(QRectF(tx + 4, track.top(), track.right() - tx - 8, track.height()),
+               Qt::AlignRight | Qt::AlignVCenter, tr("hold"));
+    p.setPen(pal.color(QPalette::PlaceholderText));
+    for (int d = 1; d <= 7; ++d) {
+      const double x = xOf(1.0 - std::pow(10.0, -d));
+      p.drawLine(QPointF(x, track.bottom()), QPointF(x, track.bottom() + 3));
+      const Qt::Alignment align =
+          d == 1 ? Qt::AlignLeft : (d == 7 ? Qt::AlignRight : Qt::AlignHCenter);
+      const double left = d == 1 ? x : (d == 7 ? x - 60 : x - 30);
+      p.drawText(QRectF(left, track.bottom() + 3, 60, line), align, QStringLiteral("1e-%1").arg(d));
+    }
+    p.setPen(QPen(Qt::white, 2));
+    p.drawLine(QPointF(tx, track.top() - 3), QPointF(tx, track.bottom() + 3));
+    p.setPen(pal.color(QPalette::Text));
+    const QString head =
+        valid_ ? tr("1 − e_x = %1   (threshold: %2)")
+                     .arg(formatValue(std::max(1.0 - ex_, 0.0)), formatValue(1.0 - threshold_))
+               : tr("no principal axis   (threshold 1 − %1)").arg(formatValue(1.0 - threshold_));
+    p.drawText(QRectF(8, 0, width() - 16, line + 4), Qt::AlignLeft | Qt::AlignVCenter, head);
+    if (valid_) {
+      const double x = xOf(ex_);
+      QPainterPath marker;
+      marker.moveTo(x, track.top() + 2);
+      marker.lineTo(x - 6, track.top() - 6);
+      marker.lineTo(x + 6, track.top() - 6);
+      marker.closeSubpath();
+      p.setPen(Qt::NoPen);
+      p.setBrush(QColor(255, 210, 40));
+      p.drawPath(marker);
+      p.setPen(QPen(QColor(255, 210, 40), 2.5));
+      p.drawLine(QPointF(x, track.top()), QPointF(x, track.bottom()));
+    }
+  }
+
+ private:
+  double ex_ = 1.0, threshold_ = 0.9999;
+  bool valid_ = false;
+};
+
+CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
+  // State and gauge across the top; the IM with the ellipses beside the numbers; the
+  // history plots at the bottom.
+  auto* content = new QWidget;
+  auto* outer = new QVBoxLayout(content);
+  outer->setContentsMargins(4, 4, 4, 4);
+  outer->setSpacing(4);
+  state_ = new QLabel;
+  state_->setObjectName(QStringLiteral("covarianceState"));
+  state_->setAlignment(Qt::AlignCenter);
+  state_->setMargin(3);
+  QFont bold = state_->font();
+  bold.setBold(true);
+  state_->setFont(bold);
+  outer->addWidget(state_);
+  gauge_ = new ThresholdGauge;
+  outer->addWidget(gauge_);
+  auto* middle = new QHBoxLayout;
+  view_ = new ImageView;
+  view_->setObjectName(QStringLiteral("covarianceView"));
+  middle->addWidget(view_, 3);
+  numbers_ = new QLabel;
+  numbers_->setTextFormat(Qt::RichText);
+  numbers_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  numbers_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  middle->addWidget(numbers_, 2);
+  outer->addLayout(middle, 3);
+  auto* plots = new QHBoxLayout;
+  anglePlot_ = new PlotWidget;
+  anglePlot_->setTitle(tr("Rotation of R (°)"));
+  anglePlot_->setAxisLabels(tr("frame"), QString());
+  exPlot_ = new PlotWidget;
+  exPlot_->setTitle(tr("1 − e_x (log)"));
+  exPlot_->setAxisLabels(tr("frame"), QString());
+  exPlot_->setLogY(true);
+  plots->addWidget(anglePlot_);
+  plots->addWidget(exPlot_);
+  outer->addLayout(plots, 2);
+  setContent(content);
+}
+
+void CovariancePanel::resetHistory() {
+  history_.clear();
+  updateHistoryPlots();
+}
+
+void CovariancePanel::showPublication(const sl::Publication& pub) {
+  const auto& n = pub.numbers;
+  auto imIt = pub.images.find("importance");
+  const sl::FloatImage* im =
+      imIt != pub.images.end() && imIt->second.width > 0 ? &imIt->second : nullptr;
+  // The six sums: published numbers, else the chain's 1x1 level, else the IM on the CPU.
+  sl::rtw::MomentTexel sums{};
+  QString source;
+  bool haveSums = true;
+  for (int c = 0; c < sl::rtw::kMomCount; ++c) {
+    static const char* keys[] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+    auto it = n.find(std::string("moment.") + keys[c]);
+    if (it == n.end()) {
+      haveSums = false;
+      break;
+    }
+    sums[c] = static_cast<float>(it->second);
+  }
+  if (haveSums) {
+    source = QStringLiteral("published moment sums");
+  } else if (im) {
+    sl::rtw::ImportanceMap map(im->width, im->height);
+    for (int y = 0; y < im->height; ++y)
+      for (int x = 0; x < im->width; ++x)
+        map.at(x, y) = im->values[(size_t(y) * im->width + x) * im->channels];
+    sums = sl::rtw::buildMomentChain(map).back().texels[0];
+    source = QStringLiteral("importance map (CPU)");
+  } else {
+    drawn_ = {};
+    showContent(false, noDataText(QString::fromStdString(pub.techniqueId),
+                                  tr("importance map or moments"), observedKeys()));
+    return;
+  }
+  showContent(true);
+  // light.extent.* are the light frustum's full widths (m); Σ uses the half-extents.
+  const double sx = 0.5 * numberOr(n, "light.extent.x", 2.0),
+               sy = 0.5 * numberOr(n, "light.extent.y", 2.0);
+  const sl::rtw::MomentStats s =
+      sl::rtw::momentsFromTop(sums, glm::vec2(static_cast<float>(sx), static_cast<float>(sy)));
+  threshold_ = numberOr(n, "pca.threshold", threshold_);
+
+  // The axis in metres and as drawn on the IM's texel grid.
+  const double axisDeg = std::atan2(s.ey, s.ex) * 180.0 / kPi;
+  const double ix = s.ex / std::max(sx, 1e-12), iy = s.ey / std::max(sy, 1e-12);
+  const double imageDeg = std::atan2(iy, ix) * 180.0 / kPi;
+  const bool havePublished = n.count("e_x") && n.count("e_y");
+  const double pubEx = numberOr(n, "e_x", 1.0), pubEy = numberOr(n, "e_y", 0.0);
+  const double publishedDeg = std::atan2(pubEy, pubEx) * 180.0 / kPi;
+  const bool held = numberOr(n, "rotation.held", 0.0) != 0.0;
+  const bool pcaValid = n.count("pca.valid") ? n.at("pca.valid") != 0.0 : s.valid;
+  drawn_ = {{QStringLiteral("source"), source},     {QStringLiteral("valid"), s.valid},
+            {QStringLiteral("axis_deg"), axisDeg},  {QStringLiteral("axis_image_deg"), imageDeg},
+            {QStringLiteral("e_x"), s.ex},          {QStringLiteral("e_y"), s.ey},
+            {QStringLiteral("eigen.1"), s.lambda1}, {QStringLiteral("eigen.2"), s.lambda2},
+            {QStringLiteral("mean.x"), s.meanX},    {QStringLiteral("mean.y"), s.meanY}};
+  if (havePublished)
+    drawn_[QStringLiteral("axis_minus_published_deg")] = axisDifferenceDeg(axisDeg, publishedDeg);
+
+  // Image with the ellipses.
+  if (im) {
+    const ValueRange range = finiteRange(im->values, im->channels);
+    view_->setImage(colorize(*im, 0, {0.0f, std::max(range.hi, 1e-30f), false}, ColorMap::Viridis),
+                    im->width, im->height);
+    view_->setLegend({0.0f, std::max(range.hi, 1e-30f), false}, ColorMap::Viridis,
+                     tr("importance"));
+    const sl::FloatImage copy = *im;
+    view_->setValueReader([copy](int x, int y) {
+      return QStringLiteral("I = %1").arg(
+          formatValue(copy.values[(size_t(y) * copy.width + x) * copy.channels]));
+    });
+  } else {
+    view_->clearImage(tr("No importance image published; the numbers come from the sums."));
+  }
+  const bool valid = s.valid;
+  view_->setOverlay([s, sx, sy, valid](QPainter& p, const QRectF& r) {
+    auto toWidget = [&r](double x, double y) {  // centred IM coordinates -> widget
+      return QPointF(r.left() + (x + 1.0) * 0.5 * r.width(),
+                     r.bottom() - (y + 1.0) * 0.5 * r.height());
+    };
+    const double mx = s.meanX, my = s.meanY;
+    const double l1 = std::sqrt(std::max(0.0f, s.lambda1)),
+                 l2 = std::sqrt(std::max(0.0f, s.lambda2));
+    const double e1x = s.ex, e1y = s.ey, e2x = -s.ey, e2y = s.ex;
+    for (int k = 1; k <= 2; ++k) {
+      QPainterPath path;
+      for (int i = 0; i <= 96; ++i) {
+        const double t = 2.0 * kPi * i / 96;
+        const double px = k * (l1 * std::cos(t) * e1x + l2 * std::sin(t) * e2x);
+        const double py = k * (l1 * std::cos(t) * e1y + l2 * std::sin(t) * e2y);
+        const QPointF q = toWidget(mx + px / sx, my + py / sy);
+        if (i == 0)
+          path.moveTo(q);
+        else
+          path.lineTo(q);
+      }
+      p.setPen(QPen(QColor(255, 255, 255, k == 1 ? 240 : 170), k == 1 ? 2.0 : 1.4,
+                    k == 1 ? Qt::SolidLine : Qt::DashLine));
+      p.setBrush(Qt::NoBrush);
+      p.drawPath(path);
+    }
+    p.setPen(QPen(QColor(255, 160, 40), 2.4));
+    if (valid) {
+      const double len = 2.6 * l1;  // principal axis, past the 2σ ellipse
+      p.drawLine(toWidget(mx - len * e1x / sx, my - len * e1y / sy),
+                 toWidget(mx + len * e1x / sx, my + len * e1y / sy));
+      p.setPen(QPen(QColor(120, 200, 255), 1.6, Qt::DashLine));
+      const double len2 = 2.6 * l2;
+      p.drawLine(toWidget(mx - len2 * e2x / sx, my - len2 * e2y / sy),
+                 toWidget(mx + len2 * e2x / sx, my + len2 * e2y / sy));
+    }
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(255, 160, 40));
+    p.drawEllipse(toWidget(mx, my), 3.5, 3.5);
+  });
+  view_->setCaption(tr("1σ, 2σ and the principal axis (orange)"));
+  view_->setToolTip(tr("Computed from the %1 with sl::rtw::momentsFromTop").arg(source));
+
+  // State, gauge and numbers.
+  QString stateText;
+  QColor stateColor;
+  if (!pcaValid) {
+    stateText = tr("NO AXIS — isotropic or empty IM: R unchanged");
+    stateColor = QColor(128, 131, 136);
+  } else if (held) {
+    stateText = tr("HELD — e_x > threshold: R_k = R_k−1");
+    stateColor = QColor(60, 150, 80);
+  } else if (n.count("rotation.held")) {
+    stateText = tr("ROTATED by %1°").arg(numberOr(n, "rotation.step_deg", 0.0), 0, 'f', 3);
+    stateColor = QColor(200, 110, 30);
+  } else {
+    stateText = tr("no rotation published (not DA-RTW)");
+    stateColor = QColor(90, 94, 100);
+  }
+  state_->setText(stateText);
+  state_->setStyleSheet(
+      QStringLiteral("background:%1;color:white;border-radius:4px;").arg(stateColor.name()));
+  const double ex = havePublished ? pubEx : s.ex;
+  gauge_->set(ex, threshold_, pcaValid);
+
+  auto row = [](const QString& name, const QString& value) {
+    return QStringLiteral("<tr><td>%1&nbsp;</td><td align='right'>%2</td></tr>").arg(name, value);
+  };
+  QString html = QStringLiteral("<table cellspacing='0' cellpadding='1'>");
+  html += row(tr("λ1"), formatValue(s.lambda1) + QStringLiteral(" m²"));
+  html += row(tr("λ2"), formatValue(s.lambda2) + QStringLiteral(" m²"));
+  html += row(tr("anisotropy"), QString::number(s.anisotropy, 'f', 3));
+  html += row(tr("e_x"), QString::number(ex, 'f', 7));
+  html += row(tr("e_y"), QString::number(havePublished ? pubEy : s.ey, 'f', 7));
+  html += row(tr("axis (panel)"), QStringLiteral("%1°").arg(axisDeg, 0, 'f', 3));
+  if (havePublished)
+    html += row(tr("axis (renderer)"), QStringLiteral("%1°").arg(publishedDeg, 0, 'f', 3));
+  if (n.count("rotation.deg"))
+    html +=
+        row(tr("R turned"), QStringLiteral("%1°").arg(numberOr(n, "rotation.deg", 0.0), 0, 'f', 2));
+  if (n.count("rotation.changes"))
+    html += row(tr("R changed"), tr("%1×").arg(numberOr(n, "rotation.changes", 0.0)));
+  html += QStringLiteral("</table>");
+  numbers_->setText(html);
+
+  // History.
+  // A frame shown again (e.g. while paused) replaces its sample; an older one (a new
+  // renderer) starts a new history.
+  if (!history_.empty() && pub.frameIndex < history_.back().frame) history_.clear();
+  if (!history_.empty() && pub.frameIndex == history_.back().frame) history_.pop_back();
+  history_.push_back({pub.frameIndex, numberOr(n, "rotation.deg", axisDeg), ex, held});
+  while (history_.size() > kHistoryFrames) history_.pop_front();
+  updateHistoryPlots();
+}
+
+void CovariancePanel::updateHistoryPlots() {
+  PlotWidget::Series angle{tr("angle"), {}, QColor(255, 160, 40)};
+  PlotWidget::Series oneMinus{tr("1 − e_x"), {}, QColor(255, 210, 40)};
+  for (const Sample& s : history_) {
+    angle.points.emplace_back(double(s.frame), s.angleDeg);
+    oneMinus.points.emplace_back(double(s.frame), std::max(1.0 - s.ex, kMinOneMinusEx));
+  }
+  anglePlot_->setSeries({angle});
+  exPlot_->setSeries({oneMinus});
+  exPlot_->setLines({{1.0 - threshold_, QColor(255, 255, 255), tr("threshold (hold below)")}});
+  anglePlot_->setPlaceholder(tr("No frames yet."));
+  exPlot_->setPlaceholder(tr("No frames yet."));
+}
+
+void CovariancePanel::highlightPass(const QString& passId) {
+  const bool on = passId == QLatin1String("rotation estimate");
+  view_->setHighlighted(on);
+  exPlot_->setHighlighted(on);
+}
+
+QJsonObject CovariancePanel::drawnValues() const {
+  return drawn_;
+}
+
+}  // namespace sl::ui

@@ -214,6 +214,23 @@ TEST(GltfLoaderLimits, DeepJsonIsRefusedBeforeParsing) {
   EXPECT_TRUE(loadGltf(dir / "at-limit.gltf"));
 }
 
+TEST(GltfLoaderLimits, TooManyJsonArraysAndObjectsAreRefusedBeforeParsing) {
+  fs::path dir = outDir("json-containers");
+  // 2^20 + 1 empty arrays (3 MB): tinygltf would build a value for each.
+  std::string many;
+  many.reserve(3 << 20);
+  for (std::size_t i = 0; i <= (std::size_t(1) << 20); ++i) many += "[],";
+  many.pop_back();
+  writeFile(dir / "many.gltf", R"({"asset":{"version":"2.0"},"extras":[)" + many + "]}");
+  expectRefused(dir / "many.gltf",
+                {"the JSON holds more than 1048576 arrays and objects", "kMaxJsonContainers"});
+  // Brackets in strings are not arrays.
+  writeFile(dir / "strings.gltf",
+            gltfText(R"({"mesh":0,"name":")" + std::string(3 << 20, '[') + R"("})", "0"));
+  SceneLoadResult r = loadGltf(dir / "strings.gltf");
+  EXPECT_TRUE(r) << r.error;
+}
+
 TEST(GltfLoaderLimits, BracketsInsideStringsDoNotCount) {
   fs::path dir = outDir("json-strings");
   std::string name = std::string(5000, '[') + "\\\"" + std::string(5000, '{') + "\\\\";
@@ -309,7 +326,9 @@ TEST(GltfLoaderLimits, OutOfRangeChildIsNamed) {
   expectRefused(dir / "bad.gltf", {"child of node 0: node 5 is out of range (1 nodes)"});
 }
 
-TEST(GltfLoaderLimits, TooManyNodeInstancesAreRefused) {
+// 2^20 + 1 nodes are 2^20 + 1 JSON objects: refused before parsing (kMaxJsonContainers), so
+// kMaxNodeInstances (a hierarchy is a tree: one instance per node) stays a backstop.
+TEST(GltfLoaderLimits, TooManyNodesAreRefusedBeforeParsing) {
   fs::path dir = outDir("instances");
   const std::size_t count = (std::size_t(1) << 20) + 1;
   std::string nodes;
@@ -321,7 +340,8 @@ TEST(GltfLoaderLimits, TooManyNodeInstancesAreRefused) {
   text.replace(text.find(R"("scene":0,"scenes":[{"nodes":[0]}],)"),
                std::strlen(R"("scene":0,"scenes":[{"nodes":[0]}],)"), "");
   writeFile(dir / "many.gltf", text);
-  expectRefused(dir / "many.gltf", {"more than 1048576 node instances", "kMaxNodeInstances"}, 5.0);
+  expectRefused(dir / "many.gltf",
+                {"the JSON holds more than 1048576 arrays and objects", "kMaxJsonContainers"}, 5.0);
 }
 
 TEST(GltfLoaderLimits, TooManyTrianglesAreRefusedBeforeReading) {

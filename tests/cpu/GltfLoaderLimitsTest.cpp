@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -32,6 +33,18 @@ fs::path outDir(const std::string& sub) {
 void writeFile(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary).write(text.data(), std::streamsize(text.size()));
 }
+
+/// Wall and CPU time since construction. Limits on work are checked in CPU time: this test
+/// runs beside others (ctest -j) on shared machines, where the wall clock of a 2 s load
+/// reaches 9 s.
+struct Stopwatch {
+  std::chrono::steady_clock::time_point wallStart = std::chrono::steady_clock::now();
+  std::clock_t cpuStart = std::clock();
+  double wall() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+  }
+  double cpu() const { return double(std::clock() - cpuStart) / CLOCKS_PER_SEC; }
+};
 
 std::string base64(const unsigned char* p, std::size_t n) {
   static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -272,11 +285,10 @@ TEST(GltfLoaderLimits, DeepNodeChainsLoadWithoutRecursion) {
   for (std::size_t depth : {std::size_t(15000), std::size_t(200000)}) {
     SCOPED_TRACE(depth);
     writeFile(dir / "chain.gltf", gltfText(chainNodes(depth), "0"));
-    auto start = std::chrono::steady_clock::now();
+    Stopwatch clock;
     SceneLoadResult r = loadGltf(dir / "chain.gltf");
-    double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_TRUE(r) << r.error;
-    EXPECT_LT(took, 5.0);
+    EXPECT_LT(clock.cpu(), 5.0) << clock.wall() << " s wall";
     ASSERT_EQ(r.scene->primitives.size(), 1u);
     EXPECT_FLOAT_EQ(r.scene->primitives[0].positions[0].z, 0.25f * float(depth - 1));
   }
@@ -435,16 +447,17 @@ TEST(GltfLoaderLimits, ManyCamerasLoadInLinearTime) {
   // with the BVH it loads in 1.7 s (RelWithDebInfo, this test's machine).
   const std::size_t count = 100000;
   writeFile(dir / "many.gltf", cameraScene(count, true, count / 2));
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch clock;
   SceneLoadResult r = loadGltf(dir / "many.gltf");
-  double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double took = clock.cpu();
   ASSERT_TRUE(r) << r.error;
-  EXPECT_LT(took, 5.0);
+  EXPECT_LT(took, 5.0) << clock.wall() << " s wall";
   EXPECT_EQ(r.scene->cameras.size(), count);
   EXPECT_EQ(r.scene->paths.size(), count / 2);
   for (std::size_t i : {std::size_t(0), std::size_t(54321), count - 1})
     EXPECT_NEAR(r.scene->cameras[i].camera.target.z, 0.0f, 1e-4f) << i;
-  std::printf("[ timing   ] %zu cameras on %zu triangles: %.2f s\n", count, count, took);
+  std::printf("[ timing   ] %zu cameras on %zu triangles: %.2f s CPU, %.2f s wall\n", count, count,
+              took, clock.wall());
 }
 
 // ---- far from the origin -------------------------------------------------------------------

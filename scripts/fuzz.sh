@@ -5,7 +5,8 @@
 # crash, leak, timeout (-timeout=5 s per input), memory blow-up (-rss_limit_mb=2048) or
 # message that is not one bounded line naming the file.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]    TARGET: gltf json chart_csv (default: all)
-# SECONDS 0 only builds.
+# SECONDS 0 only builds. FUZZ_MAX_LEN: the largest input libFuzzer makes (default 262144, the
+# size of the largest seed; smaller runs faster on the small inputs).
 # The corpora grow in build-fuzz/corpus/TARGET (kept between runs); each run also reads the
 # seeds, copied from the repository at run time (tests/data, scenes, lessons, suites,
 # tests/fixtures/hostile, tests/fuzz/seeds). A finding is saved as
@@ -59,7 +60,7 @@ for t in "${targets[@]}"; do
   echo "fuzz.sh: fuzz_$t for $seconds s (log: $log)"
   rc=0 start=$SECONDS
   nice -n 19 "$build/tests/fuzz/fuzz_$t" "${dict[@]}" -max_total_time="$seconds" -timeout=5 \
-    -rss_limit_mb=2048 -max_len=262144 -print_final_stats=1 \
+    -rss_limit_mb=2048 -max_len="${FUZZ_MAX_LEN:-262144}" -print_final_stats=1 \
     -artifact_prefix="$build/findings/$t-" "$corpus" "$seed" >"$log" 2>&1 || rc=$?
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
   line="fuzz_$t: ${execs:-?} executions in $((SECONDS - start)) s, corpus $(ls "$corpus" | wc -l) files"

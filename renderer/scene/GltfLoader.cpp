@@ -57,6 +57,9 @@ constexpr std::size_t kMaxTriangles = std::size_t(1) << 25;
 /// Longest side and pixel count of a decoded image (larger ones are not decoded).
 constexpr int kMaxImageSide = 16384;
 constexpr std::uint64_t kMaxImagePixels = std::uint64_t(1) << 26;
+/// Pixels of all the images of one file together (256 MiB as RGBA8): a PNG of 8192x8192 zeros
+/// is 260 KB, so without it a few MB of images would decode to gigabytes.
+constexpr std::uint64_t kMaxTotalImagePixels = std::uint64_t(1) << 26;
 /// Input quoted in a message is cut to this many bytes.
 constexpr std::size_t kMaxQuotedBytes = 120;
 /// A whole message or warning (tinygltf's texts quote input, such as a whole data: URI) is
@@ -1468,11 +1471,12 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> imageSize(const unsigned 
 
 /// tinygltf's image decoder, except that an undecodable image is a warning, not a failure.
 /// Only PNG and JPEG (glTF's image formats) are decoded, and only up to kMaxImageSide and
-/// kMaxImagePixels: the header is read first, so a small file cannot make the decoder
-/// allocate gigabytes.
+/// kMaxImagePixels, and kMaxTotalImagePixels for all of a file's images (`user`: the pixels
+/// decoded so far, a std::uint64_t): the header is read first, so a small file cannot make the
+/// decoder allocate gigabytes.
 bool decodeImageLeniently(tinygltf::Image* image, const int imageIndex, std::string* err,
                           std::string* warn, int reqWidth, int reqHeight,
-                          const unsigned char* bytes, int size, void*) {
+                          const unsigned char* bytes, int size, void* user) {
   (void)err;
   const std::string label = "image " + std::to_string(imageIndex) + " not decoded: ";
   auto dims = imageSize(bytes, size > 0 ? std::size_t(size) : 0);
@@ -1489,6 +1493,17 @@ bool decodeImageLeniently(tinygltf::Image* image, const int imageIndex, std::str
                " per side (kMaxImageSide) and " + std::to_string(kMaxImagePixels) +
                " pixels (kMaxImagePixels)\n";
     return true;
+  }
+  auto* totalPixels = static_cast<std::uint64_t*>(user);
+  if (totalPixels) {
+    if (*totalPixels + std::uint64_t(w) * h > kMaxTotalImagePixels) {
+      if (warn)
+        *warn += label + std::to_string(w) + "x" + std::to_string(h) +
+                 " pixels would take the file's images beyond " +
+                 std::to_string(kMaxTotalImagePixels) + " pixels in all (kMaxTotalImagePixels)\n";
+      return true;
+    }
+    *totalPixels += std::uint64_t(w) * h;  // counted when tried: a failed decode allocated too
   }
   std::string why;
   if (tinygltf::LoadImageData(image, imageIndex, &why, warn, reqWidth, reqHeight, bytes, size,
@@ -1570,7 +1585,8 @@ std::shared_ptr<Scene> loadOrFail(const fs::path& path) {
   }
 
   tinygltf::TinyGLTF parser;
-  parser.SetImageLoader(&decodeImageLeniently, nullptr);
+  std::uint64_t decodedPixels = 0;
+  parser.SetImageLoader(&decodeImageLeniently, &decodedPixels);
   std::string baseDir = path.parent_path().string();
   if (baseDir.empty()) baseDir = ".";
   ExternalFiles files;

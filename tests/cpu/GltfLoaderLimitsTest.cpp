@@ -512,5 +512,29 @@ TEST(GltfLoaderLimits, HugeImageDimensionsAreNotDecoded) {
   EXPECT_EQ(r.scene->images[0].width, 0);
 }
 
+TEST(GltfLoaderLimits, ImagesTogetherAreBoundedToo) {
+  fs::path dir = outDir("images-total");
+  // PNG signature and IHDR of 8192 x 8192 (2^26 pixels: within kMaxImagePixels), no data.
+  const unsigned char png[33] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0,
+                                 13,   'I', 'H', 'D', 'R',  0,    0,    0x20, 0, 0, 0,
+                                 0x20, 0,   8,   6,   0,    0,    0,    0,    0, 0, 0};
+  const std::string uri = "data:image/png;base64," + base64(png, sizeof png);
+  std::string images, textures;
+  for (int i = 0; i < 3; ++i) {
+    images += std::string(i ? "," : "") + R"({"uri":")" + uri + "\"}";
+    textures += std::string(i ? "," : "") + R"({"source":)" + std::to_string(i) + "}";
+  }
+  writeFile(dir / "three.gltf",
+            gltfText(R"({"mesh":0})", "0", triangleDataUri(),
+                     R"(,"images":[)" + images + R"(],"textures":[)" + textures + "]"));
+  SceneLoadResult r = loadGltf(dir / "three.gltf");
+  ASSERT_TRUE(r) << r.error;
+  // The first is tried (and fails: no pixel data); the other two would pass the total.
+  int overTotal = 0;
+  for (const std::string& w : r.scene->warnings)
+    overTotal += w.find("kMaxTotalImagePixels") != std::string::npos;
+  EXPECT_EQ(overTotal, 2);
+}
+
 }  // namespace
 }  // namespace sl

@@ -56,10 +56,7 @@ expect_exactly 2 "shadowlab-cli: --light: unknown light kind 'area' (dir:AZ,EL |
   render --scene plane-box --light area:1 $o
 # Presets.
 ok render --preset "$data/presets/light-spot.json" $o
-expect_exactly 2 "shadowlab-cli: --preset: $data/presets/light-bad-type.json: light.type: expected \"directional\", \"spot\" or \"point\", got \"area\"" \
-  render --preset "$data/presets/light-bad-type.json" $o
-expect_exactly 2 "shadowlab-cli: --preset: $data/presets/light-point-key.json: light.direction: unknown key 'direction' (known: type, position, rangeM)" \
-  render --preset "$data/presets/light-point-key.json" $o
+# Bad light objects in presets: tests/fixtures/hostile (preset-light-*.json, cli.hostile_fixtures).
 # Suites.
 ok stability --suite "$data/suites/light-spot.json" --json "$out/spot.json"
 expect_exactly 2 "shadowlab-cli: $data/suites/light-point-uniform.json: cases[0] (case 'point-on-uniform'): technique 'uniform' supports: directional, spot; the light is a point light" \

@@ -366,6 +366,16 @@ void MainWindow::createPanelDocks() {
   for (const PanelEntry& entry : publicationPanels()) {
     PublicationPanel* panel = entry.create();
     docks_.add(entry, addPanelDock(panel, entry.title, entry.id, entry.area), panel);
+    connect(panel, &PublicationPanel::lightChosen, this, [this](double azimuth, double elevation) {
+      sl::DirectionalLight light = viewport_->light();
+      light.azimuthDeg = static_cast<float>(azimuth);
+      light.elevationDeg = static_cast<float>(elevation);
+      viewport_->setLight(light);
+      syncLightControls();
+      info(tr("Light moved to azimuth %1°, elevation %2°")
+               .arg(azimuth, 0, 'f', 1)
+               .arg(elevation, 0, 'f', 1));
+    });
   }
   lessonPanel_ = new LessonPanel;
   lessonDock_ =
@@ -381,15 +391,17 @@ void MainWindow::createPanelDocks() {
     dock->addAction(save);
     dock->setContextMenuPolicy(Qt::ActionsContextMenu);
   }
-  std::vector<QDockWidget*> toggled;
-  for (const PublicationDocks::Dock& d : docks_.docks()) toggled.push_back(d.dock);
-  toggled.push_back(lessonDock_);
-  toggled.push_back(chartsDock_);
+  std::vector<std::pair<QDockWidget*, QKeySequence>> toggled;
+  for (const PublicationDocks::Dock& d : docks_.docks())
+    toggled.push_back({d.dock, d.entry.shortcut});
+  toggled.push_back({lessonDock_, {}});
+  toggled.push_back({chartsDock_, {}});
   int key = Qt::Key_3;
-  for (QDockWidget* dock : toggled) {
+  for (const auto& [dock, shortcut] : toggled) {
     QAction* toggle = dock->toggleViewAction();
-    if (key <= Qt::Key_9) {
-      toggle->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(key++)));
+    if (!shortcut.isEmpty() || key <= Qt::Key_9) {
+      toggle->setShortcut(shortcut.isEmpty() ? QKeySequence(Qt::CTRL | static_cast<Qt::Key>(key++))
+                                             : shortcut);
       toggle->setShortcutContext(Qt::ApplicationShortcut);
     }
     panels->addAction(toggle);

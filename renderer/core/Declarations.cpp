@@ -93,7 +93,8 @@ const std::vector<PublicationDecl>& rendererPublicationDecls() {
        "4 B x (4 + " + std::to_string(SL_ALIASING_BINS) + " bins)",
        [](const ParamSet&) { return std::uint64_t(4 * (4 + SL_ALIASING_BINS)); }},
       {"camera.*", PublicationKind::Number,
-       "The frame's camera: near_m, far_m, fov_deg (full vertical), aspect, forward.{x,y,z}, "
+       "The frame's camera: near_m, far_m, fov_deg (full vertical), aspect, height_px, "
+       "forward.{x,y,z}, "
        "up.{x,y,z}.",
        "", nullptr},
       {"light.azimuth_deg", PublicationKind::Number, "The frame's light: azimuth (degrees).", "",

@@ -386,7 +386,7 @@ void Renderer::resetTemporalState() {
 namespace {
 
 /// The renderer's own numbers (rendererPublicationDecls): camera, light, parameter values.
-void publishFrameNumbers(RendererState& s, float aspect) {
+void publishFrameNumbers(RendererState& s, int height, float aspect) {
   Publication& pub = s.publication;
   auto number = [&](const std::string& key, double v) {
     if (pub.wants(key)) pub.numbers[key] = v;
@@ -396,6 +396,7 @@ void publishFrameNumbers(RendererState& s, float aspect) {
   number("camera.far_m", c.farM);
   number("camera.fov_deg", c.fovYDeg);
   number("camera.aspect", aspect);
+  number("camera.height_px", height);
   const glm::vec3 f = c.forward();
   const glm::vec3 up = glm::normalize(glm::cross(glm::cross(f, c.up), f));
   const char* axes[] = {"x", "y", "z"};
@@ -495,7 +496,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     s.publication.frameIndex = s.frameIndex;
     s.publication.techniqueId = s.techniqueId;
     s.publication.requested = s.requested;
-    publishFrameNumbers(s, aspect);
+    publishFrameNumbers(s, height, aspect);
   }
 
   {  // 1. Camera G-buffer.

@@ -111,8 +111,9 @@ struct FloatImage {
 ///           "aliasing.bin_octaves" (m over the covered pixels: the exact maximum, the
 ///           percentiles from a GPU histogram of log2 m, within half a bin of the exact ones),
 ///           "camera.near_m", "camera.far_m", "camera.fov_deg" (full vertical angle),
-///           "camera.aspect", "camera.forward.{x,y,z}", "camera.up.{x,y,z}" (unit, orthogonal),
-///           "light.azimuth_deg", "light.elevation_deg", "param.<key>" (the technique's values)
+///           "camera.aspect", "camera.height_px", "camera.forward.{x,y,z}", "camera.up.{x,y,z}"
+///           (unit, orthogonal), "light.azimuth_deg", "light.elevation_deg", "param.<key>" (the
+///           technique's values)
 ///  every shadow-map technique:  "shadow map" (image: the map as rendered, depth 0..1)
 ///  RTW keys (listed between the markers; tests/source/ui_names_no_rtw_key.sh checks that no
 ///  file in ui/ outside ui/panels/rtw/ names one):

@@ -248,6 +248,9 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
   s_->aliasingStatsProgram = gl::Program(
       s_->shaders,
       {"common/aliasing_stats", {{GL_COMPUTE_SHADER, "common/aliasing_stats.comp"}}, {}, {}});
+  // 4 KiB the renderer owns from the start (not a technique's memory()).
+  s_->aliasingStats = gl::Buffer::create(GLsizeiptr(sizeof(std::uint32_t) * (4 + SL_ALIASING_BINS)),
+                                         nullptr, GL_DYNAMIC_STORAGE_BIT);
   {
     const gl::Program* own[] = {&s_->compositeProgram};
     const std::vector<ParamDecl> decls = rendererParamDecls();
@@ -422,8 +425,6 @@ bool wantsAliasingStats(const Publication& pub) {
 /// the whole m image.
 void publishAliasingStats(RendererState& s) {
   constexpr GLsizeiptr bytes = GLsizeiptr(sizeof(std::uint32_t) * (4 + SL_ALIASING_BINS));
-  if (!s.aliasingStats)
-    s.aliasingStats = gl::Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
   const std::uint32_t zero = 0;
   glClearNamedBufferData(s.aliasingStats.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   s.aliasingStatsProgram.use();

@@ -194,8 +194,11 @@ class EtaView : public QChartView {
     for (int i = 0; i < series.size() && i < 4; ++i) series[i]->setName(names[i]);
     if (!c->axes(Qt::Horizontal).isEmpty())
       c->axes(Qt::Horizontal).front()->setTitleText(tr("eta: -1 uniform, 0 LiSPSM, 1 PSM"));
-    if (!c->axes(Qt::Vertical).isEmpty())
-      c->axes(Qt::Vertical).front()->setTitleText(tr("/ maximum over eta"));
+    if (!c->axes(Qt::Vertical).isEmpty()) {
+      QAbstractAxis* y = c->axes(Qt::Vertical).front();
+      y->setTitleText(tr("/ maximum over eta"));
+      if (auto* v = qobject_cast<QValueAxis*>(y)) v->setTickCount(4);  // room for the labels
+    }
     c->setMargins(QMargins(2, 2, 2, 2));
     setChart(c);
     delete old;  // setChart releases the previous chart's ownership

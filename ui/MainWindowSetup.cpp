@@ -336,6 +336,15 @@ void MainWindow::createPanelDocks() {
   for (const PanelEntry& entry : publicationPanels()) {
     PublicationPanel* panel = entry.create();
     docks_.add(entry, addPanelDock(panel, entry.title, entry.id, entry.area), panel);
+    connect(panel, &PublicationPanel::lightChosen, this, [this](double azimuth, double elevation) {
+      // The storage analysis is for a directional light: a click makes the light one.
+      viewport_->setLight(
+          sl::Light::directional(static_cast<float>(azimuth), static_cast<float>(elevation)));
+      syncLightControls();
+      info(tr("Light moved to azimuth %1°, elevation %2°")
+               .arg(azimuth, 0, 'f', 1)
+               .arg(elevation, 0, 'f', 1));
+    });
   }
   lessonPanel_ = new LessonPanel;
   lessonDock_ =
@@ -359,16 +368,18 @@ void MainWindow::createPanelDocks() {
     dock->addAction(save);
     dock->setContextMenuPolicy(Qt::ActionsContextMenu);
   }
-  std::vector<QDockWidget*> toggled;
-  for (const PublicationDocks::Dock& d : docks_.docks()) toggled.push_back(d.dock);
-  toggled.push_back(lessonDock_);
-  toggled.push_back(chartsDock_);  // Ctrl+9 (README)
-  toggled.push_back(lightDock_);   // past Ctrl+9: View > Panels only
+  std::vector<std::pair<QDockWidget*, QKeySequence>> toggled;
+  for (const PublicationDocks::Dock& d : docks_.docks())
+    toggled.push_back({d.dock, d.entry.shortcut});
+  toggled.push_back({lessonDock_, {}});
+  toggled.push_back({chartsDock_, {}});
+  toggled.push_back({lightDock_, {}});  // past Ctrl+9: View > Panels only
   int key = Qt::Key_3;
-  for (QDockWidget* dock : toggled) {
+  for (const auto& [dock, shortcut] : toggled) {
     QAction* toggle = dock->toggleViewAction();
-    if (key <= Qt::Key_9) {
-      toggle->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(key++)));
+    if (!shortcut.isEmpty() || key <= Qt::Key_9) {
+      toggle->setShortcut(shortcut.isEmpty() ? QKeySequence(Qt::CTRL | static_cast<Qt::Key>(key++))
+                                             : shortcut);
       toggle->setShortcutContext(Qt::ApplicationShortcut);
     }
     panels->addAction(toggle);

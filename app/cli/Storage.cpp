@@ -11,6 +11,7 @@
 #include "Commands.h"
 #include "StorageCharts.h"
 #include "algo/partition/StorageFactor.h"
+#include "algo/partition/StoragePlots.h"
 
 namespace sl::cli {
 
@@ -188,15 +189,8 @@ int cmdStorage(Args& a) {
   if (o.csv.empty() && o.out.empty()) return 0;
 
   // Fig. 6: one warp over eta for this light.
-  EtaCurve curve;
-  for (int i = 0; i <= 200; ++i) {
-    SchemeSettings s;
-    s.scheme = Scheme::Eta;
-    s.eta = -1.0 + i / 100.0;
-    const StorageResult r = evaluate(s, light);
-    curve.eta.push_back(s.eta), curve.mx.push_back(r.mx), curve.mz.push_back(r.mz);
-    curve.s.push_back(r.s);
-  }
+  partition::EtaCurve curve;
+  if (auto e = partition::etaCurve(view, light, 201, curve)) throw UsageError(*e);
   curve.title =
       "Maximum error and storage factor over the warp parameter eta (Lloyd et al. 2006, Fig. 6)";
   curve.subtitle = "n " + fmt(o.nearM) + ", f " + fmt(o.farM) + ", fov " + fmt(o.fovDeg) +
@@ -224,39 +218,32 @@ int cmdStorage(Args& a) {
   zw.partitionWarp = true;
   panels.push_back({"cascades k=" + std::to_string(kz) + " + LiSPSM", zw});
   panels.push_back({"face + cascades k=" + std::to_string(kz), settingsFor("face", kz, o)});
-  HemisphereFigure fig;
+  partition::HemisphereFigure fig;
   fig.title = "Storage factor S over the light's hemisphere (Lloyd et al. 2006, Fig. 7)";
   fig.subtitle = "n " + fmt(o.nearM) + ", f " + fmt(o.farM) + ", fov " + fmt(o.fovDeg) +
                  " deg. Centre: light overhead; rim: horizon; left: behind the viewer; right: in "
                  "front; top: to its right. Cross: --light. One colour scale (log10) for all.";
-  const double zen = glm::radians(90.0 - o.elevationDeg), az = glm::radians(o.azimuthDeg);
-  // The --light in disk coordinates: u along "in front" (-z), v to the right (+x).
-  fig.markU = -std::cos(az) * zen / (0.5 * M_PI);
-  fig.markV = std::sin(az) * zen / (0.5 * M_PI);
+  const partition::HemisphereFrame frame;  // the viewer looks along -z, y up
+  const glm::dvec2 mark = frame.disk(light);
+  fig.markU = mark.x, fig.markV = mark.y;
   std::ostringstream csv;
   csv << "plot,scheme,eta,azimuth_deg,elevation_deg,mx,mz,s\n";
   for (std::size_t i = 0; i < curve.eta.size(); ++i)
     csv << "eta,eta," << fmt(curve.eta[i]) << ',' << fmt(o.azimuthDeg) << ',' << fmt(o.elevationDeg)
         << ',' << fmt(curve.mx[i]) << ',' << fmt(curve.mz[i]) << ',' << fmt(curve.s[i]) << '\n';
   for (const Panel& p : panels) {
-    HemispherePanel hp;
+    partition::HemispherePanel hp;
     hp.title = p.title;
-    hp.grid = o.grid;
-    hp.s.assign(std::size_t(o.grid * o.grid), std::nan(""));
+    if (auto e = partition::hemispherePanel(view, frame, p.s, o.grid, hp)) throw UsageError(*e);
     for (int r = 0; r < o.grid; ++r)
       for (int c = 0; c < o.grid; ++c) {
-        const double u = -1.0 + (2.0 * c + 1.0) / o.grid, v = 1.0 - (2.0 * r + 1.0) / o.grid;
-        const double rad = std::hypot(u, v);
-        if (rad > 1.0) continue;
-        const double z = rad * 0.5 * M_PI;  // zenith angle
-        const glm::dvec3 l =
-            rad > 0.0 ? glm::dvec3(std::sin(z) * v / rad, std::cos(z), -std::sin(z) * u / rad)
-                      : glm::dvec3(0, 1, 0);
-        const StorageResult sr = evaluate(p.s, l);
-        hp.s[std::size_t(r * o.grid + c)] = sr.s;
-        csv << "hemisphere," << p.title << ",," << fmt(glm::degrees(std::atan2(l.x, l.z))) << ','
-            << fmt(glm::degrees(std::asin(std::clamp(l.y, -1.0, 1.0)))) << ',' << fmt(sr.mx) << ','
-            << fmt(sr.mz) << ',' << fmt(sr.s) << '\n';
+        const glm::dvec2 uv = hp.cellCentre(r, c);
+        const std::optional<glm::dvec3> l = frame.direction(uv.x, uv.y);
+        if (!l) continue;
+        const std::size_t i = std::size_t(r * o.grid + c);
+        csv << "hemisphere," << p.title << ",," << fmt(glm::degrees(std::atan2(l->x, l->z))) << ','
+            << fmt(glm::degrees(std::asin(std::clamp(l->y, -1.0, 1.0)))) << ',' << fmt(hp.mx[i])
+            << ',' << fmt(hp.mz[i]) << ',' << fmt(hp.s[i]) << '\n';
       }
     fig.panels.push_back(std::move(hp));
   }

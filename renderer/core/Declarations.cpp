@@ -2,6 +2,7 @@
 // own passes, key patterns, and the declared cost of a publication request.
 #include <algorithm>
 
+#include "common/shared_constants.h"
 #include "core/Renderer.h"
 #include "core/Technique.h"
 
@@ -81,10 +82,46 @@ std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique) {
   return out;
 }
 
+const std::vector<PublicationDecl>& rendererPublicationDecls() {
+  static const std::vector<PublicationDecl> decls = {
+      {"aliasing.*", PublicationKind::Number,
+       "Perspective aliasing m over the covered pixels: p50, p95 (from a GPU histogram of log2 "
+       "m, " +
+           std::to_string(SL_ALIASING_BINS_PER_OCTAVE) +
+           " bins per octave: within half a bin), the exact max, the pixel count, the bin width "
+           "in octaves.",
+       "4 B x (4 + " + std::to_string(SL_ALIASING_BINS) + " bins)",
+       [](const ParamSet&) { return std::uint64_t(4 * (4 + SL_ALIASING_BINS)); }},
+      {"camera.*", PublicationKind::Number,
+       "The frame's camera: near_m, far_m, fov_deg (full vertical), aspect, height_px, "
+       "forward.{x,y,z}, "
+       "up.{x,y,z}.",
+       "", nullptr},
+      {"light.azimuth_deg", PublicationKind::Number, "The frame's light: azimuth (degrees).", "",
+       nullptr},
+      {"light.elevation_deg", PublicationKind::Number,
+       "The frame's light: elevation above the horizon (degrees).", "", nullptr},
+      {"param.*", PublicationKind::Number,
+       "The technique's parameter values of this frame, by key (enums as their index).", "",
+       nullptr},
+  };
+  return decls;
+}
+
+const PublicationDecl* findFramePublication(const TechniqueInfo& technique, std::string_view key) {
+  for (const PublicationDecl& d : rendererPublicationDecls())
+    if (publicationKeyMatches(d.key, key)) return &d;
+  return technique.findPublication(key);
+}
+
 std::uint64_t declaredPublicationBytes(const TechniqueInfo& technique, const ParamSet& params,
                                        const std::set<std::string>& requested) {
   std::uint64_t bytes = 0;
-  for (const PublicationDecl& d : technique.publications) {
+  std::vector<const PublicationDecl*> decls;
+  for (const PublicationDecl& d : rendererPublicationDecls()) decls.push_back(&d);
+  for (const PublicationDecl& d : technique.publications) decls.push_back(&d);
+  for (const PublicationDecl* dp : decls) {
+    const PublicationDecl& d = *dp;
     // A declaration is read when a requested pattern matches its key, or (for a declared
     // pattern such as "moment.*.*") when the two overlap: checked both ways.
     const bool asked = std::any_of(requested.begin(), requested.end(), [&](const std::string& r) {

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <mutex>
 #include <span>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "core/ParamBinding.h"
 #include "core/SceneGpu.h"
 #include "core/Technique.h"
+#include "algo/metrics/BenchStats.h"
 #include "gl/Gl.h"
 #include "metrics/ShadowReference.h"
 
@@ -95,6 +97,8 @@ struct RendererState {
   std::set<std::string> requested;  ///< publication patterns (empty: publish nothing)
   std::uint64_t frameIndex = 0;
   gl::Program gbufferProgram, compositeProgram;
+  gl::Program aliasingStatsProgram;  ///< common/aliasing_stats.comp ("aliasing.*")
+  gl::Buffer aliasingStats;          ///< its counters and histogram (SL_ALIASING_BINS)
   std::map<std::string, gl::Program> resolvePrograms;  // per lookup shader
   gl::VertexArray emptyVao;
   Targets targets;
@@ -249,6 +253,12 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
                                                     {GL_FRAGMENT_SHADER, "common/composite.frag"}},
                                                    {},
                                                    {}});
+  s_->aliasingStatsProgram = gl::Program(
+      s_->shaders,
+      {"common/aliasing_stats", {{GL_COMPUTE_SHADER, "common/aliasing_stats.comp"}}, {}, {}});
+  // 4 KiB the renderer owns from the start (not a technique's memory()).
+  s_->aliasingStats = gl::Buffer::create(GLsizeiptr(sizeof(std::uint32_t) * (4 + SL_ALIASING_BINS)),
+                                         nullptr, GL_DYNAMIC_STORAGE_BIT);
   {
     const gl::Program* own[] = {&s_->compositeProgram};
     const std::vector<ParamDecl> decls = rendererParamDecls();
@@ -384,6 +394,73 @@ void Renderer::resetTemporalState() {
   if (s_->technique) s_->technique->resetTemporalState();
 }
 
+namespace {
+
+/// The renderer's own numbers (rendererPublicationDecls): camera, light, parameter values.
+void publishFrameNumbers(RendererState& s, int height, float aspect) {
+  Publication& pub = s.publication;
+  auto number = [&](const std::string& key, double v) {
+    if (pub.wants(key)) pub.numbers[key] = v;
+  };
+  const Camera& c = s.camera;
+  number("camera.near_m", c.nearM);
+  number("camera.far_m", c.farM);
+  number("camera.fov_deg", c.fovYDeg);
+  number("camera.aspect", aspect);
+  number("camera.height_px", height);
+  const glm::vec3 f = c.forward();
+  const glm::vec3 up = glm::normalize(glm::cross(glm::cross(f, c.up), f));
+  const char* axes[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    number(std::string("camera.forward.") + axes[i], f[i]);
+    number(std::string("camera.up.") + axes[i], up[i]);
+  }
+  number("light.azimuth_deg", s.light.azimuthDeg);
+  number("light.elevation_deg", s.light.elevationDeg);
+  const ParamSet& params = paramsFor(s, s.techniqueId);
+  for (const ParamDecl& d : params.decls()) number("param." + d.key, params.get(d.key));
+}
+
+bool wantsAliasingStats(const Publication& pub) {
+  for (const char* k :
+       {"aliasing.p50", "aliasing.p95", "aliasing.max", "aliasing.pixels", "aliasing.bin_octaves"})
+    if (pub.wants(k)) return true;
+  return false;
+}
+
+/// A GPU reduction of the aliasing target (common/aliasing_stats.comp): a histogram of log2 m,
+/// the count and the exact maximum, read back (4 KiB, counted in readbackBytes) instead of
+/// the whole m image.
+void publishAliasingStats(RendererState& s) {
+  constexpr GLsizeiptr bytes = GLsizeiptr(sizeof(std::uint32_t) * (4 + SL_ALIASING_BINS));
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(s.aliasingStats.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  s.aliasingStatsProgram.use();
+  glBindTextureUnit(SL_UNIT_ALIASING, s.targets.aliasing.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_BUFFER_ALIASING_STATS, s.aliasingStats.id());
+  const auto groups = [](int n) { return GLuint((n + SL_ALIASING_GROUP - 1) / SL_ALIASING_GROUP); };
+  glDispatchCompute(groups(s.targets.width), groups(s.targets.height), 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<std::uint32_t> data(4 + SL_ALIASING_BINS);
+  glGetNamedBufferSubData(s.aliasingStats.id(), 0, bytes, data.data());
+  s.publication.readbackBytes += std::uint64_t(bytes);
+  Log2Histogram h;
+  for (std::size_t b = 0; b < h.counts.size(); ++b) h.counts[b] = data[4 + b];
+  float maxM = 0.0f;
+  std::memcpy(&maxM, &data[1], sizeof maxM);
+  Publication& pub = s.publication;
+  auto number = [&](const std::string& key, double v) {
+    if (pub.wants(key)) pub.numbers[key] = v;
+  };
+  number("aliasing.pixels", data[0]);
+  number("aliasing.max", maxM);
+  number("aliasing.p50", histogramPercentile(h, 50.0, maxM));
+  number("aliasing.p95", histogramPercentile(h, 95.0, maxM));
+  number("aliasing.bin_octaves", h.binOctaves());
+}
+
+}  // namespace
+
 std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned target) {
   RendererState& s = *s_;
   auto neutral = [&](const std::string& why) -> std::optional<std::string> {
@@ -429,6 +506,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     s.publication.frameIndex = s.frameIndex;
     s.publication.techniqueId = s.techniqueId;
     s.publication.requested = s.requested;
+    publishFrameNumbers(s, height, aspect);
   }
 
   {  // 1. Camera G-buffer.
@@ -494,6 +572,8 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                       GL_TEXTURE_UPDATE_BARRIER_BIT);
     }
+    // Measured aliasing statistics, only while requested (timed with the resolve).
+    if (publishing && wantsAliasingStats(s.publication)) publishAliasingStats(s);
   } catch (const std::exception& e) {
     s.timer->endFrame();
     return neutral(std::string("technique '") + s.techniqueId + "': " + e.what());
@@ -619,6 +699,7 @@ std::optional<std::string> Renderer::reloadShaders() {
   };
   note(s_->gbufferProgram.rebuild(s_->shaders));
   note(s_->compositeProgram.rebuild(s_->shaders));
+  note(s_->aliasingStatsProgram.rebuild(s_->shaders));
   for (auto& [name, prog] : s_->resolvePrograms) note(prog.rebuild(s_->shaders));
   if (s_->technique) note(s_->technique->reloadShaders(s_->shaders));
   if (errors.empty()) return std::nullopt;

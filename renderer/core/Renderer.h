@@ -54,7 +54,8 @@ struct PublicationDecl {
   std::string what;  ///< one line
   /// The cost as a formula the UI can show ("4 B x im.resolution^2"); empty for numbers.
   std::string cost;
-  /// Bytes read back from the GPU per frame for `params` (the technique's); numbers: 0.
+  /// Bytes read back from the GPU per frame for `params` (the technique's); numbers: 0
+  /// unless computing them reads something back (the renderer's "aliasing.*").
   std::function<std::uint64_t(const ParamSet& params)> bytes;
 };
 
@@ -84,8 +85,17 @@ std::vector<PassDecl> rendererPassDecls();
 /// Every pass of a frame with `technique`, in frame order: gbuffer, the technique's
 /// passes, resolve, composite.
 std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique);
-/// Bytes `technique` reads back per frame with `params` when `requested` (patterns) is
-/// asked for: the sum of the declared costs of every publication a pattern matches.
+/// Publications of the renderer itself, whatever the technique, declared once (next to
+/// rendererPassDecls): the measured aliasing statistics "aliasing.*" (a GPU reduction of the
+/// resolve pass's m, run only while requested), the frame's camera "camera.*" and light
+/// "light.azimuth_deg" / "light.elevation_deg", and the technique's parameter values
+/// "param.<key>" (enums as their index), so that panels read what the frame used.
+const std::vector<PublicationDecl>& rendererPublicationDecls();
+/// The declaration matching `key` among the renderer's and then `technique`'s publications.
+const PublicationDecl* findFramePublication(const TechniqueInfo& technique, std::string_view key);
+/// Bytes a frame with `technique` reads back with `params` when `requested` (patterns) is
+/// asked for: the sum of the declared costs of every publication (the renderer's and the
+/// technique's) a pattern matches.
 std::uint64_t declaredPublicationBytes(const TechniqueInfo& technique, const ParamSet& params,
                                        const std::set<std::string>& requested);
 
@@ -102,6 +112,14 @@ struct FloatImage {
 /// (Renderer::requestPublications): images, curves and numbers. Each technique declares its
 /// keys and their cost in TechniqueInfo::publications. Keys (absent when a technique has no
 /// such thing):
+///  the renderer, any technique (rendererPublicationDecls):
+///           "aliasing.p50", "aliasing.p95", "aliasing.max", "aliasing.pixels",
+///           "aliasing.bin_octaves" (m over the covered pixels: the exact maximum, the
+///           percentiles from a GPU histogram of log2 m, within half a bin of the exact ones),
+///           "camera.near_m", "camera.far_m", "camera.fov_deg" (full vertical angle),
+///           "camera.aspect", "camera.height_px", "camera.forward.{x,y,z}", "camera.up.{x,y,z}"
+///           (unit, orthogonal), "light.azimuth_deg", "light.elevation_deg", "param.<key>" (the
+///           technique's values)
 ///  every shadow-map technique:  "shadow map" (image: the map as rendered, depth 0..1)
 ///  RTW keys (listed between the markers; tests/source/ui_names_no_rtw_key.sh checks that no
 ///  file in ui/ outside ui/panels/rtw/ names one):

@@ -40,6 +40,16 @@
 #define SL_OVERLAY_GRID 3
 #define SL_GRID_LINES_PER_MAP 16  // the grid overlay: a line every 1/16 of the selected map
 
+// --- Aliasing statistics (common/aliasing_stats.comp, the renderer's "aliasing.*"
+// publication; CPU mirror sl::Log2Histogram): a histogram of log2 m over the covered pixels,
+// SL_ALIASING_BINS_PER_OCTAVE bins per octave from 2^SL_ALIASING_LOG2_MIN up (values outside
+// fall in the end bins), the count and the exact maximum. Buffer: 4 uints, then the bins.
+#define SL_ALIASING_BINS 1024
+#define SL_ALIASING_BINS_PER_OCTAVE 32
+#define SL_ALIASING_LOG2_MIN (-16)
+#define SL_ALIASING_GROUP 16     // local_size_x/y
+#define SL_BUFFER_ALIASING_STATS 7  // SSBO binding (the renderer's, after the technique's)
+
 // --- RTW (techniques/rtw, shaders/rtw).
 #define SL_RTW_BUFFER_COLLAPSED 0  // 1D importance [x n][y n], float bits as uint
 #define SL_RTW_BUFFER_BLURRED 1

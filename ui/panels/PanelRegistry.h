@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include <QKeySequence>
 #include <QString>
 
 #include "panels/common/PanelKit.h"
@@ -17,6 +18,8 @@ struct PanelEntry {
   QString title;  ///< dock title ("Warp functions")
   Qt::DockWidgetArea area = Qt::BottomDockWidgetArea;
   std::function<PublicationPanel*()> create;
+  /// Its View > Panels shortcut; empty: the next free one of Ctrl+3...9 in registry order.
+  QKeySequence shortcut = {};
 };
 
 /// Every publication panel of every family, in the order their docks are created.

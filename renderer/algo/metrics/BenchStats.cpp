@@ -80,6 +80,54 @@ AliasingStats computeAliasingStats(std::span<const float> aliasing,
   return s;
 }
 
+std::uint64_t Log2Histogram::total() const {
+  return std::accumulate(counts.begin(), counts.end(), std::uint64_t(0));
+}
+
+std::size_t Log2Histogram::binOf(double m) const {
+  const double t = std::floor((std::log2(m) - log2Min) * binsPerOctave);
+  if (!(t > 0.0)) return 0;  // also NaN
+  return std::min(counts.size() - 1, std::size_t(std::min(t, 1e15)));
+}
+
+double Log2Histogram::binCentre(std::size_t bin) const {
+  return std::exp2(log2Min + (double(bin) + 0.5) / binsPerOctave);
+}
+
+Log2Histogram aliasingHistogram(std::span<const float> aliasing,
+                                std::span<const std::uint8_t> hardMask) {
+  if (!hardMask.empty()) requireSameSize(aliasing.size(), hardMask.size(), "aliasing histogram");
+  Log2Histogram h;
+  for (std::size_t i = 0; i < aliasing.size(); ++i) {
+    if (!hardMask.empty() && !covered(hardMask[i])) continue;
+    const float m = aliasing[i];
+    if (std::isfinite(m) && m > 0.0f) ++h.counts[h.binOf(m)];
+  }
+  return h;
+}
+
+double histogramPercentile(const Log2Histogram& h, double p, double maxValue) {
+  const std::uint64_t n = h.total();
+  if (n == 0) return 0.0;
+  if (!(p > 0.0)) p = 0.0;
+  p = std::min(p, 100.0);
+  const double rank = double(n - 1) * p / 100.0;
+  const std::uint64_t lo = std::uint64_t(std::floor(rank));
+  const double frac = rank - double(lo);
+  // The value of the rank-th smallest (0-based): the centre of the bin holding it.
+  auto valueAt = [&](std::uint64_t r) {
+    std::uint64_t seen = 0;
+    for (std::size_t b = 0; b < h.counts.size(); ++b) {
+      seen += h.counts[b];
+      if (seen > r) return h.binCentre(b);
+    }
+    return h.binCentre(h.counts.size() - 1);
+  };
+  const double a = valueAt(lo);
+  const double v = frac == 0.0 || lo + 1 >= n ? a : a + frac * (valueAt(lo + 1) - a);
+  return maxValue > 0.0 ? std::min(v, maxValue) : v;
+}
+
 MaskChange compareConsecutiveMasks(std::span<const std::uint8_t> previous,
                                    std::span<const std::uint8_t> current) {
   requireSameSize(previous.size(), current.size(), "mask change");

@@ -49,6 +49,31 @@ struct AliasingStats {
 AliasingStats computeAliasingStats(std::span<const float> aliasing,
                                    std::span<const std::uint8_t> hardMask);
 
+/// A histogram of log2 m (the renderer's GPU aliasing statistics, common/aliasing_stats.comp,
+/// and its CPU mirror): `binsPerOctave` bins per octave from 2^log2Min up; values below or
+/// above the range fall in the first or last bin.
+struct Log2Histogram {
+  double log2Min = SL_ALIASING_LOG2_MIN;
+  int binsPerOctave = SL_ALIASING_BINS_PER_OCTAVE;
+  std::vector<std::uint64_t> counts = std::vector<std::uint64_t>(SL_ALIASING_BINS, 0);
+
+  std::uint64_t total() const;
+  std::size_t binOf(double m) const;  ///< m > 0
+  /// The geometric centre of a bin: 2^(log2Min + (bin + 1/2) / binsPerOctave).
+  double binCentre(std::size_t bin) const;
+  /// The bin width in octaves (the precision of a percentile: see histogramPercentile).
+  double binOctaves() const { return 1.0 / binsPerOctave; }
+};
+/// The histogram of the finite m > 0 of `aliasing` where `hardMask` is covered (the pixels
+/// computeAliasingStats summarises).
+Log2Histogram aliasingHistogram(std::span<const float> aliasing,
+                                std::span<const std::uint8_t> hardMask);
+/// Percentile p in [0, 100] of the histogram's values by percentile()'s rank rule, each rank's
+/// value taken as its bin's centre, at most `maxValue` (the exact maximum). Within half a bin
+/// (a factor 2^(1/(2 binsPerOctave))) of percentile() over the values when they lie inside the
+/// histogram's range. 0 for an empty histogram.
+double histogramPercentile(const Log2Histogram& histogram, double p, double maxValue);
+
 /// Change of a technique's hard mask between two consecutive frames.
 struct MaskChange {
   std::size_t compared = 0;  ///< pixels covered in both frames

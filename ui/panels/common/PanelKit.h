@@ -214,6 +214,11 @@ class PublicationPanel : public QWidget {
   /// Forgets accumulated history (new scene or technique).
   virtual void resetHistory() {}
 
+ Q_SIGNALS:
+  /// The panel asks the window to move the light (degrees; e.g. a click on the Storage
+  /// factor panel's hemisphere).
+  void lightChosen(double azimuthDeg, double elevationDeg);
+
  protected:
   /// Puts `content` under a placeholder switch: showContent(false, text) shows the text.
   void setContent(QWidget* content);

@@ -1,0 +1,74 @@
+// The Storage factor panel (Lloyd et al. 2006): S = M_x M_z over the hemisphere of light
+// directions for the current camera and the technique's scheme (their Fig. 7; a click moves
+// the light there), M_x, M_z, S over eta with the current eta marked (Fig. 6), and the
+// predicted maximum error next to the frame's measured m (p95, max). The analysis runs off
+// the UI thread, and only when camera, light or scheme change.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "algo/partition/StoragePlots.h"
+#include "panels/analysis/StoragePanelKeys.h"
+#include "panels/common/PanelKit.h"
+
+class QLabel;
+
+namespace sl::ui {
+
+class HemisphereView;
+class EtaView;
+
+/// What the analysis needs from a frame (the panel's inputs; equal inputs: no recompute).
+struct StorageInputs {
+  sl::warp::ViewFrustum view;
+  glm::dvec3 towardsLight{0.0, 1.0, 0.0};
+  sl::partition::SchemeSettings settings;
+  std::string schemeLabel;    ///< "uniform (uniform)", "eta 0 (lispsm)", "cascades k=4"
+  std::optional<double> eta;  ///< the scheme's eta, marked on the eta plot
+  int grid = 41;              ///< hemisphere cells per side
+  bool operator==(const StorageInputs& o) const;
+};
+
+/// The scheme of technique `info` with parameter values `param` (by key, from the
+/// declarations): cascades' k when it declares "partitions", the eta of "warp.eta", else
+/// uniform (uniform, RTW). Pure: unit-testable without a renderer.
+void schemeFromDeclarations(const sl::TechniqueInfo* info,
+                            const std::function<std::optional<double>(const std::string&)>& param,
+                            StorageInputs& out);
+
+class StoragePanel : public PublicationPanel {
+  Q_OBJECT
+
+ public:
+  explicit StoragePanel(QWidget* parent = nullptr);
+  ~StoragePanel() override;
+
+  std::set<std::string> observedKeys() const override { return analysis::storagePanelKeys(); }
+  void showPublication(const sl::Publication& publication) override;
+  /// A click on the hemisphere emits lightChosen (PublicationPanel) with that direction.
+  /// "scheme", "s", "mx", "mz" (the current light), "predicted_m_x", "predicted_m_z"
+  /// (texels per pixel at this resolution), "measured_p95", "measured_max", "grid",
+  /// "compute_ms".
+  QJsonObject drawnValues() const override;
+
+ private:
+  struct Result;
+  struct Shared;
+  void start();
+  void finished(std::shared_ptr<const Result> result);
+  void updateNumbers();
+
+  HemisphereView* hemisphere_ = nullptr;
+  EtaView* eta_ = nullptr;
+  QLabel* numbers_ = nullptr;
+  std::optional<StorageInputs> inputs_;  ///< the latest frame's
+  std::optional<StorageInputs> running_;
+  std::shared_ptr<const Result> result_;
+  std::shared_ptr<Shared> shared_;
+  double measuredP95_ = -1.0, measuredMax_ = -1.0, binOctaves_ = 0.0;
+  double heightPx_ = 0.0, mapResolution_ = 0.0;
+  QJsonObject drawn_;
+};
+
+}  // namespace sl::ui

@@ -162,6 +162,12 @@ std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm:
     fit.hi = glm::max(fit.hi, q);
     nearAxis = std::min(nearAxis, glm::dot(p - view.eye, axis3));
   }
+  for (const glm::dvec3& p : settings.depthOnly) {
+    if (!finite(p)) return "warp: a depth-only point is not finite";
+    const double ly = glm::dot(p, fit.space.y);
+    fit.lo.y = std::min(fit.lo.y, ly);
+    fit.hi.y = std::max(fit.hi.y, ly);
+  }
   fit.depthM = fit.hi.z - fit.lo.z;
   fit.nearAxisM = nearAxis;
   fit.sinGamma = glm::length(glm::cross(axis3, y));

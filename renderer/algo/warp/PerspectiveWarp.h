@@ -76,17 +76,21 @@ struct WarpSettings {
   std::optional<glm::dvec3> projectedAxis;
   /// Revert to uniform when the view frustum looks square from the light (the paper's §4.4).
   bool squareFallback = true;
+  /// World points that only widen the map's depth range (light-space y), not its x/z
+  /// extent or the warp: the scene's casters between the light and the body.
+  std::vector<glm::dvec3> depthOnly;
 };
 
 /// The fitted warp and what the UI shows about it.
 struct WarpFit {
   LightSpace space;
-  glm::dvec3 lo{0.0}, hi{0.0};  ///< the body's light-space bounds (x, y, z), metres
-  double depthM = 0.0;          ///< L = hi.z - lo.z
-  double sinGamma = 1.0;        ///< sin of the angle between the warp's 3D axis and the light
-  double alpha = 1.0;           ///< eq. 11's alpha = z1 / z0 (f / n for an overhead light)
-  double nearAxisM = 0.0;       ///< near distance along the warp's 3D axis (n for the frustum)
-  double eta = -1.0;            ///< the eta of this warp (eq. 11 inverted for TSM)
+  /// The body's light-space bounds (x, y, z), metres; y widened by WarpSettings::depthOnly.
+  glm::dvec3 lo{0.0}, hi{0.0};
+  double depthM = 0.0;     ///< L = hi.z - lo.z
+  double sinGamma = 1.0;   ///< sin of the angle between the warp's 3D axis and the light
+  double alpha = 1.0;      ///< eq. 11's alpha = z1 / z0 (f / n for an overhead light)
+  double nearAxisM = 0.0;  ///< near distance along the warp's 3D axis (n for the frustum)
+  double eta = -1.0;       ///< the eta of this warp (eq. 11 inverted for TSM)
   /// n': distance from the projection centre c to the body's near face along z. Infinite
   /// for uniform.
   double nPrime = 0.0;

@@ -119,6 +119,17 @@ glm::dvec2 WarpFit::beamWidths(const glm::dvec3& world) const {
   return {2.0 * zp * tanHalfX, depthM * zp * zp / (fp * nPrime)};
 }
 
+DepthMapFrame WarpFit::mapFrame() const {
+  const double np = nPrime, fp = np + depthM;
+  DepthMapFrame f;
+  f.viewProj = lightProj * lightView;
+  f.extentM = glm::vec2(float(2.0 * tanHalfX), float((fp - np) / (fp * np)));
+  f.extentWPower = glm::vec2(1.0f, 2.0f);
+  f.depthPerM = 0.5f * std::abs(lightProj[2][2]);  // |d depth_ndc / d y| = n' / (yHalf w)
+  f.depthWPower = 1.0f;
+  return f;
+}
+
 std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm::dvec3> body,
                                    const glm::dvec3& towardsLight, const WarpSettings& settings,
                                    WarpFit& out) {

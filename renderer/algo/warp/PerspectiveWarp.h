@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "algo/Camera.h"
+#include "algo/ShadowBias.h"
 
 namespace sl::warp {
 
@@ -111,6 +112,11 @@ struct WarpFit {
   glm::dvec2 mapUv(const glm::dvec3& world) const;
   /// Light beam widths (w_lx, w_lz) at a world point for a 1x1 map (eqs. 3-4, res = 1).
   glm::dvec2 beamWidths(const glm::dvec3& world) const;
+  /// The map as the lookup's bias model sees it (warped only; the uniform case is the
+  /// technique's orthographic fit): lightProj * lightView, w = z'; metres per unit s =
+  /// 2 tan(theta') w, per unit t = w^2 (f' - n') / (f' n') (eq. 6), window depth per metre
+  /// n' / (2 yHalf w): extentWPower (1, 2), depthWPower 1.
+  DepthMapFrame mapFrame() const;
 };
 
 /// n' from eta (eq. 11): n' = n (sqrt(a) + 1 - eta (a - 1)) / (eta + 1) for eta <= 0,

@@ -139,16 +139,14 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
         throw std::runtime_error(*err);
       view_ = depthMapView(uniformFit);
     } else {
-      // Metres per unit s = 2 tan(theta') z', per unit t = 2 z'^2 / -B (eq. 6), window depth
-      // per metre = n' / (2 yHalf z'): w = z' (PerspectiveWarp.cpp's matrix).
-      const double np = fit_.nPrime, fp = np + fit_.depthM;
+      const DepthMapFrame frame = fit_.mapFrame();
       view_ = DepthMapView{};
-      view_.lightViewProj = fit_.lightProj * fit_.lightView;
+      view_.lightViewProj = frame.viewProj;
       view_.perspective = true;
-      view_.extentM = glm::vec2(float(2.0 * fit_.tanHalfX), float((fp - np) / (fp * np)));
-      view_.extentWPower = glm::vec2(1.0f, 2.0f);
-      view_.depthPerMOverride = 0.5f * std::abs(fit_.lightProj[2][2]);
-      view_.depthWPower = 1.0f;
+      view_.extentM = frame.extentM;
+      view_.extentWPower = frame.extentWPower;
+      view_.depthPerMOverride = frame.depthPerM;
+      view_.depthWPower = frame.depthWPower;
     }
   }
   publishNumber(ctx, "warp.n_prime", fit_.nPrime);

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "GlTestEnv.h"
+#include "algo/warp/PerspectiveWarp.h"
 #include "gl/Gl.h"
 
 namespace sl {
@@ -14,7 +15,7 @@ namespace {
 
 struct Measured {
   double errorPct = 0.0;
-  double nPrime = 0.0, eta = 0.0, fallback = 0.0;
+  double nPrime = 0.0, eta = 0.0, fallback = 0.0, cause = 0.0;
   double mP50 = 0.0, mP95 = 0.0;  ///< aliasing m over covered pixels
   std::vector<std::uint8_t> mask;
 };
@@ -47,6 +48,7 @@ Measured measure(Renderer& r, const std::string& technique, int res,
     if (pub.numbers.count("warp.n_prime")) m.nPrime = pub.numbers.at("warp.n_prime");
     if (pub.numbers.count("warp.eta")) m.eta = pub.numbers.at("warp.eta");
     if (pub.numbers.count("warp.fallback")) m.fallback = pub.numbers.at("warp.fallback");
+    if (pub.numbers.count("warp.fallback_cause")) m.cause = pub.numbers.at("warp.fallback_cause");
   }
   r.requestPublications({});
   test::expectNoGlErrors(r);
@@ -121,6 +123,7 @@ TEST(PerspectiveWarp, EtaMinusOneIsTheUniformMapExactly) {
     EXPECT_EQ(e.errorPct, u.errorPct);
     EXPECT_TRUE(e.mask == u.mask);
     EXPECT_EQ(e.fallback, 0.0);
+    EXPECT_EQ(e.cause, 0.0);
     EXPECT_EQ(e.eta, -1.0);
     EXPECT_TRUE(std::isinf(e.nPrime));
   }
@@ -148,6 +151,7 @@ TEST(PerspectiveWarp, LightBehindTheViewerFallsBackToUniformAndSaysSo) {
     SCOPED_TRACE(t);
     const Measured f = measure(*r, t, 512);
     EXPECT_EQ(f.fallback, 1.0);
+    EXPECT_EQ(f.cause, double(int(warp::FallbackCause::SquareLightBehind)));
     EXPECT_EQ(f.eta, -1.0);
     EXPECT_TRUE(std::isinf(f.nPrime));
     EXPECT_TRUE(f.mask == u.mask);
@@ -169,6 +173,7 @@ TEST(PerspectiveWarp, TsmFocusAndItsFallback) {
   EXPECT_LT(t.eta, 1.0);
   const Measured far = measure(*r, "tsm", 512, {{"warp.focus", 1.0}});
   EXPECT_EQ(far.fallback, 1.0);
+  EXPECT_EQ(far.cause, double(int(warp::FallbackCause::TsmFocusBeyondLine)));
   EXPECT_TRUE(std::isinf(far.nPrime));
 }
 

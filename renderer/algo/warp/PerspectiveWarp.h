@@ -82,6 +82,17 @@ struct WarpSettings {
   std::vector<glm::dvec3> depthOnly;
 };
 
+/// Why a warp asked for fell back to uniform (WarpFit::fallbackReason says it in words).
+enum class FallbackCause {
+  None,
+  SquareLightBehind,   ///< the light behind the viewer, inside the view cone (the paper's §4.4)
+  SquareLightInFront,  ///< the light in front of the viewer, inside the view cone
+  TsmFocusBeyondLine,  ///< TSM's focus point lies beyond its line along the depth
+  Degenerate,          ///< light parallel to the axis, no depth, body at the eye, n' infinite
+};
+/// One line for a panel: "light behind the viewer: the frustum looks square from the light".
+const char* fallbackCauseText(FallbackCause cause);
+
 /// The fitted warp and what the UI shows about it.
 struct WarpFit {
   LightSpace space;
@@ -101,6 +112,7 @@ struct WarpFit {
   bool uniform = false;       ///< orthographic (asked for, or the fallback)
   bool fallback = false;      ///< a warp was asked for but uniform was used
   std::string fallbackReason;
+  FallbackCause fallbackCause = FallbackCause::None;
   bool lightBehindViewer = false;  ///< v . y < 0 (PSM would need its inverted projection)
   bool nearClamped = false;        ///< n' was raised to minNearShare * L (PSM singularity)
   std::string note;                ///< what was done about the light behind / the clamp

@@ -75,8 +75,8 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
                   "along the view vector projected, the warping frustum's n' from warp.eta (or "
                   "TSM's focus). Where the frustum looks square from the light (light behind or "
                   "in front of the viewer) the warp falls back to the uniform map, published as "
-                  "warp.fallback = 1.",
-                  ""},
+                  "warp.fallback = 1 (the Perspective warp panel says why).",
+                  "perspective"},
                  {"shadow map", "Shadow map",
                   "Render the scene's depth through the warp's perspective: texels dense near the "
                   "viewer, sparse far away (uniform when warp.fallback = 1).",
@@ -89,6 +89,10 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
       {"warp.eta", PublicationKind::Number, "eta of the warp used (-1 = uniform)", "", nullptr},
       {"warp.fallback", PublicationKind::Number,
        "1 when a warp was asked for but the uniform map was used (frustum square from the light)",
+       "", nullptr},
+      {"warp.fallback_cause", PublicationKind::Number,
+       "why: 0 none, 1 light behind the viewer, 2 light in front, 3 TSM focus beyond its line, "
+       "4 degenerate (warp::FallbackCause)",
        "", nullptr}};
   info.lights = {LightType::Directional};
   return info;
@@ -152,6 +156,7 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "warp.n_prime", fit_.nPrime);
   publishNumber(ctx, "warp.eta", fit_.eta);
   publishNumber(ctx, "warp.fallback", fit_.fallback ? 1.0 : 0.0);
+  publishNumber(ctx, "warp.fallback_cause", double(int(fit_.fallbackCause)));
 
   auto pass = ctx.timer.scope("shadow map");
   if (!shadowMap_ || shadowMap_.width() != res) {

@@ -34,8 +34,8 @@ glm::vec2 receiverDepthGradient(const glm::mat3& normalMatrix, const glm::vec3& 
   return receiverDepthGradient(LightPlaneMatrix{normalMatrix, glm::vec3(0.0f)}, N, glm::vec3(0.0f));
 }
 
-float windowDepthPerM(float depthPerMAtUnitW, float clipW) {
-  return depthPerMAtUnitW / (clipW * clipW);
+float windowDepthPerM(float depthPerMAtUnitW, float clipW, float power) {
+  return depthPerMAtUnitW / std::pow(clipW, power);
 }
 
 float depthPerMAtUnitW(bool perspective, float depthRangeM, float nearM, float farM) {
@@ -64,7 +64,8 @@ MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
                           glm::vec3 towardsLight, glm::vec2 localTexelUv,
                           const ShadowBiasSettings& s) {
   const float w = mapUvzw(map, P).w;
-  const float texelM = std::max(localTexelUv.x * map.extentM.x, localTexelUv.y * map.extentM.y) * w;
+  const float texelM = std::max(localTexelUv.x * map.extentM.x * std::pow(w, map.extentWPower.x),
+                                localTexelUv.y * map.extentM.y * std::pow(w, map.extentWPower.y));
   const float cosL = std::clamp(glm::dot(N, towardsLight), -1.0f, 1.0f);
   const float sinL = std::sqrt(std::max(1.0f - cosL * cosL, 0.0f));
   const glm::vec3 offset = P + N * (s.normalTexels * texelM * sinL);
@@ -73,7 +74,8 @@ MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
   r.uv = glm::vec2(uvz);
   r.z = uvz.z;
   r.gradient = receiverDepthGradient(lightPlaneMatrix(map.viewProj), N, P);
-  r.bias = shadowDepthBias(s, r.gradient, localTexelUv, texelM, windowDepthPerM(map.depthPerM, w));
+  r.bias = shadowDepthBias(s, r.gradient, localTexelUv, texelM,
+                           windowDepthPerM(map.depthPerM, w, map.depthWPower));
   return r;
 }
 

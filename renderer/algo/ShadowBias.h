@@ -43,10 +43,11 @@ glm::vec2 receiverDepthGradient(const LightPlaneMatrix& plane, const glm::vec3& 
 /// The orthographic case (no dependence on P).
 glm::vec2 receiverDepthGradient(const glm::mat3& normalMatrix, const glm::vec3& N);
 
-/// Window depth per metre along the light at a point of clip w: `depthPerMAtUnitW` / w^2.
+/// Window depth per metre along the light at a point of clip w: `depthPerMAtUnitW` / w^power
+/// (power 2 for a spot's frustum, 1 for a warp along light-space z; DepthMapFrame).
 /// Orthographic: w = 1 and depthPerMAtUnitW = 1 / depth range; perspective (glm, depth -1..1
 /// to window 0..1): depthPerMAtUnitW = far * near / (far - near), w = view depth.
-float windowDepthPerM(float depthPerMAtUnitW, float clipW);
+float windowDepthPerM(float depthPerMAtUnitW, float clipW, float power = 2.0f);
 /// The window depth per metre at w = 1 of a light fit (see windowDepthPerM).
 float depthPerMAtUnitW(bool perspective, float depthRangeM, float nearM, float farM);
 
@@ -69,6 +70,12 @@ struct DepthMapFrame {
   glm::mat4 viewProj{1.0f};  ///< world -> the map's clip space (orthographic: w = 1)
   glm::vec2 extentM{1.0f};   ///< metres per unit of the map's light uv, at clip w = 1
   float depthPerM = 1.0f;    ///< window depth per metre along the light, at clip w = 1
+  /// How extent and depth per metre scale with clip w: metres per uv = extentM * w^p.xy,
+  /// depth per metre = depthPerM / w^q. A spot's frustum: p = (1, 1), q = 2 (glm's depth);
+  /// a warp along light-space z (PSM, LiSPSM: w = z' does not change along a light ray):
+  /// p = (1, 2), q = 1. Orthographic: w = 1, the powers do not matter.
+  glm::vec2 extentWPower{1.0f};
+  float depthWPower = 2.0f;
 };
 
 /// World point P in `map`: xyz = light uv and window depth (after the divide by clip w),

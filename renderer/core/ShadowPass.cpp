@@ -35,6 +35,7 @@ void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint fra
 }
 
 float DepthMapView::depthPerMAtUnitW() const {
+  if (depthPerMOverride > 0.0f) return depthPerMOverride;
   return sl::depthPerMAtUnitW(perspective, depthRangeM, nearM, farM);
 }
 
@@ -63,6 +64,8 @@ void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> m
     resolve.set(("u_mapPlaneOffset" + at).c_str(), plane.offset);
     resolve.set(("u_mapExtentM" + at).c_str(), m.extentM);
     resolve.set(("u_mapDepthPerM" + at).c_str(), m.depthPerMAtUnitW());
+    resolve.set(("u_mapExtentWPower" + at).c_str(), m.extentWPower);
+    resolve.set(("u_mapDepthWPower" + at).c_str(), m.depthWPower);
   }
 }
 

@@ -37,6 +37,12 @@ struct DepthMapView {
   float depthRangeM = 1.0f;         ///< orthographic: metres per unit of window depth
   bool perspective = false;         ///< a perspective map (sl::LightFit::perspective)
   float nearM = 0.0f, farM = 0.0f;  ///< perspective: the frustum's near and far planes
+  /// Set instead of nearM/farM by a map whose depth is not glm's perspective depth (a
+  /// light-space warp): window depth per metre at clip w = 1; 0 = derive it.
+  float depthPerMOverride = 0.0f;
+  /// How metres per uv and depth per metre scale with clip w (sl::DepthMapFrame).
+  glm::vec2 extentWPower{1.0f};
+  float depthWPower = 2.0f;
   /// Window depth per metre along the light at clip w = 1 (sl::depthPerMAtUnitW).
   float depthPerMAtUnitW() const;
 };

@@ -1,6 +1,7 @@
 // The list of techniques. Adding a technique: its folder under techniques/ and shaders/,
 // and one line here.
 #include "core/Technique.h"
+#include "techniques/perspective/PerspectiveShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
 
@@ -11,6 +12,14 @@ template <RtwShadowMap::Analysis A, bool Rotation>
 TechniqueEntry rtwEntry(const char* id) {
   return {RtwShadowMap::info(id), [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
             return std::make_unique<RtwShadowMap>(lib, RtwShadowMap::Config{A, Rotation});
+          }};
+}
+
+template <PerspectiveShadowMap::Kind K>
+TechniqueEntry perspectiveEntry(const char* id) {
+  return {PerspectiveShadowMap::info(id),
+          [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
+            return std::make_unique<PerspectiveShadowMap>(lib, K);
           }};
 }
 
@@ -29,6 +38,9 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       rtwEntry<RtwShadowMap::Analysis::Backward, false>("rtw-backward"),
       rtwEntry<RtwShadowMap::Analysis::Hybrid, false>("rtw-hybrid"),
       rtwEntry<RtwShadowMap::Analysis::Backward, true>("da-rtw"),
+      perspectiveEntry<PerspectiveShadowMap::Kind::Psm>("psm"),
+      perspectiveEntry<PerspectiveShadowMap::Kind::Lispsm>("lispsm"),
+      perspectiveEntry<PerspectiveShadowMap::Kind::Tsm>("tsm"),
   };
   return list;
 }

@@ -12,7 +12,8 @@
 // Orthographic and perspective map matrices alike (clip w = 1 for the former), per map: the
 // receiver's plane is carried through the map's full 4x4 matrix (a plane stays a plane,
 // window depth stays affine in light uv on it); metres per uv grow with w; window depth per
-// metre falls with w^2 (glm's perspective depth), so both terms convert per pixel. The
+// metre falls with w^2 (glm's perspective depth; other powers for a light-space warp:
+// u_map*WPower), so both terms convert per pixel. The
 // w-divide is in mapUvzw, the one place a world point enters a map.
 // Needs common/light.glsl (towardsLight) included before.
 // CPU mirror: sl::receiverInMap and its parts (algo/ShadowBias.h); C++ binding:
@@ -43,6 +44,10 @@ uniform mat3 u_mapNormalMatrix[SL_MAX_DEPTH_MAPS];  // LightPlaneMatrix::normal
 uniform vec3 u_mapPlaneOffset[SL_MAX_DEPTH_MAPS];   // LightPlaneMatrix::offset (0 ortho)
 uniform vec2 u_mapExtentM[SL_MAX_DEPTH_MAPS];  // metres per unit of light u, v at clip w = 1
 uniform float u_mapDepthPerM[SL_MAX_DEPTH_MAPS];  // window depth per metre at clip w = 1
+// How they scale with clip w (DepthMapFrame::extentWPower, depthWPower): metres per uv =
+// extent * w^p, depth per metre = depthPerM / w^q; spot (1, 1; 2), light-space warp (1, 2; 1).
+uniform vec2 u_mapExtentWPower[SL_MAX_DEPTH_MAPS];
+uniform float u_mapDepthWPower[SL_MAX_DEPTH_MAPS];
 // The shared parameters (shadowMapParamDecls).
 uniform int u_pcfRadius;        // pcf
 uniform float u_biasNormal;     // bias.normal, local texels
@@ -77,9 +82,10 @@ vec4 mapUvzw(int map, vec3 P) {
   return vec4(c.xyz / w * 0.5 + 0.5, w);
 }
 
-// Largest local texel of the map at P's light uv, in metres at P (extent x clip w).
+// Largest local texel of the map at P's light uv, in metres at P (extent x clip w^p).
 float localTexelM(int map, vec2 t, float w) {
-  return max(t.x * u_mapExtentM[map].x, t.y * u_mapExtentM[map].y) * w;
+  vec2 scale = u_mapExtentM[map] * pow(vec2(w), u_mapExtentWPower[map]);
+  return max(t.x * scale.x, t.y * scale.y);
 }
 
 // CPU: sl::receiverInMap. The map is selected for P; the normal offset is that map's local
@@ -104,8 +110,8 @@ ShadowCoord shadowLookupCoord(vec3 P, vec3 N) {
   g_receiverUv = uvz.xy;
   g_receiverZ = uvz.z;
   g_receiverDz = receiverDepthGradient(map, N, P);
-  // Window depth per metre at the receiver (sl::windowDepthPerM): falls with w^2.
-  float depthPerM = u_mapDepthPerM[map] / (c.w * c.w);
+  // Window depth per metre at the receiver (sl::windowDepthPerM): falls with w^q.
+  float depthPerM = u_mapDepthPerM[map] / pow(c.w, u_mapDepthWPower[map]);
   // Capped at a slope of 10 (84 degrees from the light) so grazing receivers do not leak.
   float slope = min(abs(g_receiverDz.x) * t.x + abs(g_receiverDz.y) * t.y,
                     10.0 * texelM * depthPerM);

@@ -2,6 +2,7 @@
 #include "panels/PanelRegistry.h"
 
 #include "panels/analysis/AnalysisPanels.h"
+#include "panels/perspective/PerspectivePanels.h"
 #include "panels/rtw/RtwPanels.h"
 
 namespace sl::ui {
@@ -12,6 +13,7 @@ const std::vector<PanelEntry>& publicationPanels() {
     for (std::vector<PanelEntry> family : {
              rtwPanels(),
              analysisPanels(),
+             perspectivePanels(),
          })
       all.insert(all.end(), family.begin(), family.end());
     return all;

@@ -89,6 +89,25 @@ double etaFromNPrime(double nPrime, double nearM, double farM) {
   return std::clamp((ra + 1.0 - q) / (q * ra), 0.0, 1.0);    // second branch solved
 }
 
+const char* fallbackCauseText(FallbackCause cause) {
+  switch (cause) {
+    case FallbackCause::None:
+      return "warped";
+    case FallbackCause::SquareLightBehind:
+      return "light behind the viewer, inside the view cone: the frustum looks square from "
+             "the light, nothing to warp (uniform)";
+    case FallbackCause::SquareLightInFront:
+      return "light in front of the viewer, inside the view cone: the frustum looks square "
+             "from the light, nothing to warp (uniform)";
+    case FallbackCause::TsmFocusBeyondLine:
+      return "TSM's focus point lies beyond its line along the light-space depth (uniform)";
+    case FallbackCause::Degenerate:
+      return "no usable warp: light parallel to the axis, no depth, or the body at the eye "
+             "(uniform)";
+  }
+  return "?";
+}
+
 bool frustumLooksSquare(const ViewFrustum& view, const glm::dvec3& towardsLight) {
   const glm::dvec3 y = glm::normalize(towardsLight), r = view.right();
   for (double sign : {1.0, -1.0}) {
@@ -119,6 +138,17 @@ glm::dvec2 WarpFit::beamWidths(const glm::dvec3& world) const {
   return {2.0 * zp * tanHalfX, depthM * zp * zp / (fp * nPrime)};
 }
 
+DepthMapFrame WarpFit::mapFrame() const {
+  const double np = nPrime, fp = np + depthM;
+  DepthMapFrame f;
+  f.viewProj = lightProj * lightView;
+  f.extentM = glm::vec2(float(2.0 * tanHalfX), float((fp - np) / (fp * np)));
+  f.extentWPower = glm::vec2(1.0f, 2.0f);
+  f.depthPerM = 0.5f * std::abs(lightProj[2][2]);  // |d depth_ndc / d y| = n' / (yHalf w)
+  f.depthWPower = 1.0f;
+  return f;
+}
+
 std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm::dvec3> body,
                                    const glm::dvec3& towardsLight, const WarpSettings& settings,
                                    WarpFit& out) {
@@ -141,11 +171,14 @@ std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm:
   const glm::dvec3 projected = settings.projectedAxis.value_or(axis3);
   std::optional<LightSpace> space = makeLightSpace(y, projected);
   fit.lightBehindViewer = glm::dot(view.forward, y) < -1e-9;
-  auto fallBack = [&](const std::string& why) {
+  auto fallBack = [&](const std::string& why, FallbackCause cause = FallbackCause::Degenerate) {
     fit.uniform = true;
     fit.fallback = settings.kind != WarpKind::Uniform &&
                    !(settings.kind == WarpKind::Eta && settings.eta <= -1.0);
-    if (fit.fallback) fit.fallbackReason = why;
+    if (fit.fallback) {
+      fit.fallbackReason = why;
+      fit.fallbackCause = cause;
+    }
   };
   if (space) {
     fit.space = *space;
@@ -162,6 +195,12 @@ std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm:
     fit.hi = glm::max(fit.hi, q);
     nearAxis = std::min(nearAxis, glm::dot(p - view.eye, axis3));
   }
+  for (const glm::dvec3& p : settings.depthOnly) {
+    if (!finite(p)) return "warp: a depth-only point is not finite";
+    const double ly = glm::dot(p, fit.space.y);
+    fit.lo.y = std::min(fit.lo.y, ly);
+    fit.hi.y = std::max(fit.hi.y, ly);
+  }
   fit.depthM = fit.hi.z - fit.lo.z;
   fit.nearAxisM = nearAxis;
   fit.sinGamma = glm::length(glm::cross(axis3, y));
@@ -172,8 +211,10 @@ std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm:
   if (!fit.uniform && settings.squareFallback && !settings.axis && !settings.projectedAxis &&
       frustumLooksSquare(view, y))
     fallBack(std::string("the light is ") + (fit.lightBehindViewer ? "behind" : "in front of") +
-             " the viewer, inside the view frustum's cone: the frustum looks square from the "
-             "light, no trapezoid to warp (uniform, as the paper's PSM, LiSPSM and TSM do)");
+                 " the viewer, inside the view frustum's cone: the frustum looks square from the "
+                 "light, no trapezoid to warp (uniform, as the paper's PSM, LiSPSM and TSM do)",
+             fit.lightBehindViewer ? FallbackCause::SquareLightBehind
+                                   : FallbackCause::SquareLightInFront);
   if (!fit.uniform && !(fit.depthM > 1e-12 * std::max(1.0, glm::length(fit.hi - fit.lo))))
     fallBack("the body has no depth along the warp axis (uniform)");
   if (!fit.uniform && !(nearAxis > 0.0))
@@ -209,7 +250,8 @@ std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm:
       const double line = settings.tsmFocusLine, L = fit.depthM;
       if (delta >= line * L)
         fallBack("TSM: the focus point lies beyond the " + std::to_string(int(line * 100)) +
-                 " % line along the light-space depth (uniform)");
+                     " % line along the light-space depth (uniform)",
+                 FallbackCause::TsmFocusBeyondLine);
       else
         fit.nPrime = (1.0 - line) * L * std::max(delta, 0.0) / (line * L - delta);
       if (!fit.uniform) fit.eta = etaFromNPrime(fit.nPrime, nEff, fEff);

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "algo/Camera.h"
+#include "algo/ShadowBias.h"
 
 namespace sl::warp {
 
@@ -76,17 +77,32 @@ struct WarpSettings {
   std::optional<glm::dvec3> projectedAxis;
   /// Revert to uniform when the view frustum looks square from the light (the paper's §4.4).
   bool squareFallback = true;
+  /// World points that only widen the map's depth range (light-space y), not its x/z
+  /// extent or the warp: the scene's casters between the light and the body.
+  std::vector<glm::dvec3> depthOnly;
 };
+
+/// Why a warp asked for fell back to uniform (WarpFit::fallbackReason says it in words).
+enum class FallbackCause {
+  None,
+  SquareLightBehind,   ///< the light behind the viewer, inside the view cone (the paper's §4.4)
+  SquareLightInFront,  ///< the light in front of the viewer, inside the view cone
+  TsmFocusBeyondLine,  ///< TSM's focus point lies beyond its line along the depth
+  Degenerate,          ///< light parallel to the axis, no depth, body at the eye, n' infinite
+};
+/// One line for a panel: "light behind the viewer: the frustum looks square from the light".
+const char* fallbackCauseText(FallbackCause cause);
 
 /// The fitted warp and what the UI shows about it.
 struct WarpFit {
   LightSpace space;
-  glm::dvec3 lo{0.0}, hi{0.0};  ///< the body's light-space bounds (x, y, z), metres
-  double depthM = 0.0;          ///< L = hi.z - lo.z
-  double sinGamma = 1.0;        ///< sin of the angle between the warp's 3D axis and the light
-  double alpha = 1.0;           ///< eq. 11's alpha = z1 / z0 (f / n for an overhead light)
-  double nearAxisM = 0.0;       ///< near distance along the warp's 3D axis (n for the frustum)
-  double eta = -1.0;            ///< the eta of this warp (eq. 11 inverted for TSM)
+  /// The body's light-space bounds (x, y, z), metres; y widened by WarpSettings::depthOnly.
+  glm::dvec3 lo{0.0}, hi{0.0};
+  double depthM = 0.0;     ///< L = hi.z - lo.z
+  double sinGamma = 1.0;   ///< sin of the angle between the warp's 3D axis and the light
+  double alpha = 1.0;      ///< eq. 11's alpha = z1 / z0 (f / n for an overhead light)
+  double nearAxisM = 0.0;  ///< near distance along the warp's 3D axis (n for the frustum)
+  double eta = -1.0;       ///< the eta of this warp (eq. 11 inverted for TSM)
   /// n': distance from the projection centre c to the body's near face along z. Infinite
   /// for uniform.
   double nPrime = 0.0;
@@ -96,6 +112,7 @@ struct WarpFit {
   bool uniform = false;       ///< orthographic (asked for, or the fallback)
   bool fallback = false;      ///< a warp was asked for but uniform was used
   std::string fallbackReason;
+  FallbackCause fallbackCause = FallbackCause::None;
   bool lightBehindViewer = false;  ///< v . y < 0 (PSM would need its inverted projection)
   bool nearClamped = false;        ///< n' was raised to minNearShare * L (PSM singularity)
   std::string note;                ///< what was done about the light behind / the clamp
@@ -107,6 +124,11 @@ struct WarpFit {
   glm::dvec2 mapUv(const glm::dvec3& world) const;
   /// Light beam widths (w_lx, w_lz) at a world point for a 1x1 map (eqs. 3-4, res = 1).
   glm::dvec2 beamWidths(const glm::dvec3& world) const;
+  /// The map as the lookup's bias model sees it (warped only; the uniform case is the
+  /// technique's orthographic fit): lightProj * lightView, w = z'; metres per unit s =
+  /// 2 tan(theta') w, per unit t = w^2 (f' - n') / (f' n') (eq. 6), window depth per metre
+  /// n' / (2 yHalf w): extentWPower (1, 2), depthWPower 1.
+  DepthMapFrame mapFrame() const;
 };
 
 /// n' from eta (eq. 11): n' = n (sqrt(a) + 1 - eta (a - 1)) / (eta + 1) for eta <= 0,

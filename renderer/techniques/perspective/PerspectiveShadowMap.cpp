@@ -1,0 +1,191 @@
+// PSM / LiSPSM / TSM (PerspectiveShadowMap.h): fit the warp around view frustum ∩ scene,
+// render exact depth through it, look up one perspective map.
+#include "PerspectiveShadowMap.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "algo/Focus.h"
+#include "core/Publish.h"
+#include "core/SceneGpu.h"
+
+namespace sl {
+
+namespace {
+
+ParamDecl etaDecl(double defaultEta) {
+  return {.key = "warp.eta",
+          .label = "Warp eta",
+          .group = "Warp",
+          .type = ParamType::Float,
+          .defaultValue = defaultEta,
+          .minValue = -1.0,
+          .maxValue = 1.0,
+          .step = 0.05,
+          .help =
+              "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), "
+              "1 PSM (n' = n). Shared by psm and lispsm, which differ only in the default."};
+}
+
+ParamDecl focusDecl() {
+  return {.key = "warp.focus",
+          .label = "TSM focus",
+          .group = "Warp",
+          .type = ParamType::Float,
+          .defaultValue = 0.5,
+          .minValue = 0.0,
+          .maxValue = 1.0,
+          .step = 0.05,
+          .help =
+              "TSM's focus point on the view axis at near + this share of (far - near); the "
+              "warp maps it to the 80 % line of the map (Martin and Tan 2004)."};
+}
+
+}  // namespace
+
+TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
+  std::vector<ParamDecl> params = shadowMapParamDecls(2048);
+  std::string name, description;
+  if (id == "psm") {
+    name = "Perspective shadow map (PSM)";
+    description =
+        "Stamminger and Drettakis 2002 in the light space of Lloyd et al. 2006: one depth map "
+        "warped by a perspective along light-space z with n' = n (warp.eta = 1); the "
+        "singularity clamped (Kozlov).";
+    params.insert(params.begin(), etaDecl(1.0));
+  } else if (id == "lispsm") {
+    name = "Light space perspective shadow map (LiSPSM)";
+    description =
+        "Wimmer et al. 2004: one depth map warped along light-space z with n' = n + sqrt(f n) "
+        "(warp.eta = 0), error spread evenly over depth (Lloyd et al. 2006, eq. 11).";
+    params.insert(params.begin(), etaDecl(0.0));
+  } else if (id == "tsm") {
+    name = "Trapezoidal shadow map (TSM)";
+    description =
+        "Martin and Tan 2004 in the light space of Lloyd et al. 2006: the warp that maps a focus "
+        "point on the view axis to the map's 80 % line.";
+    params.insert(params.begin(), focusDecl());
+  } else {
+    throw std::invalid_argument("perspective shadow map: unknown id '" + id +
+                                "' (psm, lispsm, tsm)");
+  }
+  TechniqueInfo info{id, name, description, params};
+  info.passes = {{"warp", "Fit the warp",
+                  "Light space of Lloyd et al.'s Fig. 3 around view frustum ∩ scene bounds: z "
+                  "along the view vector projected, the warping frustum's n' from warp.eta (or "
+                  "TSM's focus). Where the frustum looks square from the light (light behind or "
+                  "in front of the viewer) the warp falls back to the uniform map, published as "
+                  "warp.fallback = 1 (the Perspective warp panel says why).",
+                  "perspective"},
+                 {"shadow map", "Shadow map",
+                  "Render the scene's depth through the warp's perspective: texels dense near the "
+                  "viewer, sparse far away (uniform when warp.fallback = 1).",
+                  "shadowmap"}};
+  info.publications = {
+      shadowMapPublicationDecl(),
+      {"warp.n_prime", PublicationKind::Number,
+       "n': distance from the warp's projection centre to the body, metres (inf = uniform)", "",
+       nullptr},
+      {"warp.eta", PublicationKind::Number, "eta of the warp used (-1 = uniform)", "", nullptr},
+      {"warp.fallback", PublicationKind::Number,
+       "1 when a warp was asked for but the uniform map was used (frustum square from the light)",
+       "", nullptr},
+      {"warp.fallback_cause", PublicationKind::Number,
+       "why: 0 none, 1 light behind the viewer, 2 light in front, 3 TSM focus beyond its line, "
+       "4 degenerate (warp::FallbackCause)",
+       "", nullptr}};
+  info.lights = {LightType::Directional};
+  return info;
+}
+
+PerspectiveShadowMap::PerspectiveShadowMap(const gl::ShaderLibrary& lib, Kind kind)
+    : kind_(kind), depthProgram_(lib, depthProgramDesc()) {}
+
+void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
+  const int res = ctx.params.getInt("resolution");
+  const glm::vec3 towards = ctx.light.directionalTowards();
+  {
+    auto pass = ctx.timer.scope("warp");
+    // The body: view frustum ∩ scene bounds (the whole scene when the camera sees none of it).
+    std::vector<glm::vec3> focus = intersectFrustumWithBox(
+        ctx.camera.frustumCorners(ctx.aspect, ctx.camera.nearM, ctx.camera.farM), ctx.scene.bounds);
+    const auto box = ctx.scene.bounds.corners();
+    if (focus.empty()) focus.assign(box.begin(), box.end());
+    std::vector<glm::dvec3> body(focus.begin(), focus.end());
+    warp::WarpSettings settings;
+    if (kind_ == Kind::Tsm) {
+      settings.kind = warp::WarpKind::Tsm;
+      settings.tsmFocusFraction = ctx.params.get("warp.focus");
+    } else {
+      settings.kind = warp::WarpKind::Eta;
+      settings.eta = ctx.params.get("warp.eta");
+    }
+    settings.depthOnly.assign(box.begin(), box.end());  // every caster toward the light
+    // The view's depth range clipped to the body: TSM's focus point lies within what the
+    // camera sees of the scene, not on the far plane's empty kilometres.
+    warp::ViewFrustum view = warp::ViewFrustum::fromCamera(ctx.camera, ctx.aspect);
+    double nearBody = view.farM, farBody = view.nearM;
+    for (const glm::dvec3& p : body) {
+      const double d = glm::dot(p - view.eye, view.forward);
+      nearBody = std::min(nearBody, d);
+      farBody = std::max(farBody, d);
+    }
+    view.nearM = std::max(view.nearM, nearBody);
+    view.farM = std::max(std::min(view.farM, farBody), view.nearM * (1.0 + 1e-6));
+    if (auto err = warp::fitWarp(view, body, glm::dvec3(towards), settings, fit_))
+      throw std::runtime_error(*err);
+
+    if (fit_.uniform) {
+      // The uniform map exactly as `uniform` renders it: eta = -1 and the fallback are it.
+      LightFit uniformFit;
+      if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
+                                         FocusSettings{}, uniformFit))
+        throw std::runtime_error(*err);
+      view_ = depthMapView(uniformFit);
+    } else {
+      const DepthMapFrame frame = fit_.mapFrame();
+      view_ = DepthMapView{};
+      view_.lightViewProj = frame.viewProj;
+      view_.perspective = true;
+      view_.extentM = frame.extentM;
+      view_.extentWPower = frame.extentWPower;
+      view_.depthPerMOverride = frame.depthPerM;
+      view_.depthWPower = frame.depthWPower;
+    }
+  }
+  publishNumber(ctx, "warp.n_prime", fit_.nPrime);
+  publishNumber(ctx, "warp.eta", fit_.eta);
+  publishNumber(ctx, "warp.fallback", fit_.fallback ? 1.0 : 0.0);
+  publishNumber(ctx, "warp.fallback_cause", double(int(fit_.fallbackCause)));
+
+  auto pass = ctx.timer.scope("shadow map");
+  if (!shadowMap_ || shadowMap_.width() != res) {
+    shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
+    fbo_ = gl::Framebuffer::create();
+    fbo_.attach(GL_DEPTH_ATTACHMENT, shadowMap_);
+    fbo_.setDrawBuffers(0);
+    fbo_.checkComplete("perspective shadow map");
+  }
+  renderDepth(ctx, depthProgram_, fbo_.id(), res, res, view_.lightViewProj);
+  publishDepth(ctx, "shadow map", shadowMap_);
+}
+
+void PerspectiveShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
+  bindDepthLookup(resolve, std::span(&view_, 1));
+  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
+  resolve.set("u_shadowMap", firstUnit);
+}
+
+MemoryStats PerspectiveShadowMap::memory() const {
+  MemoryStats m;
+  if (shadowMap_)
+    m.add("shadow map", gl::formatName(shadowMap_.format()), shadowMap_.width(),
+          shadowMap_.height(), 1, gl::bytesPerTexel(shadowMap_.format()));
+  return m;
+}
+
+std::optional<std::string> PerspectiveShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  return depthProgram_.rebuild(lib);
+}
+
+}  // namespace sl

@@ -1,0 +1,40 @@
+// PSM, LiSPSM and TSM: one depth map rendered through a perspective warp along light-space z
+// (Lloyd et al., EGSR 2006, §4 and eq. 11; Wimmer et al. 2004; Stamminger and Drettakis 2002;
+// Martin and Tan 2004), fitted each frame around view frustum ∩ scene (algo/warp).
+#pragma once
+
+#include <string>
+
+#include "algo/warp/PerspectiveWarp.h"
+#include "core/ShadowPass.h"
+#include "core/Technique.h"
+
+namespace sl {
+
+class PerspectiveShadowMap : public Technique {
+ public:
+  enum class Kind { Psm, Lispsm, Tsm };
+  /// "psm", "lispsm" or "tsm"; throws std::invalid_argument for anything else.
+  static TechniqueInfo info(const std::string& id);
+  PerspectiveShadowMap(const gl::ShaderLibrary& lib, Kind kind);
+
+  void renderShadows(FrameContext& ctx) override;
+  std::string lookupShader() const override { return "perspective/lookup.glsl"; }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override { return {&depthProgram_}; }
+  MemoryStats memory() const override;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+
+  /// The last frame's warp (n', eta, the fallback and its reason, the PSM clamp note).
+  const warp::WarpFit& lastFit() const { return fit_; }
+
+ private:
+  Kind kind_;
+  gl::Program depthProgram_;
+  gl::Texture shadowMap_;
+  gl::Framebuffer fbo_;
+  DepthMapView view_;
+  warp::WarpFit fit_;
+};
+
+}  // namespace sl

@@ -19,6 +19,22 @@ FloatImage readImage(FrameContext& ctx, const gl::Texture& texture, GLenum forma
 }
 }  // namespace
 
+bool publishDepthLayer(FrameContext& ctx, const std::string& key, const gl::Texture& depth,
+                       int layer) {
+  if (!ctx.wants(key)) return false;
+  FloatImage img;
+  img.width = depth.width();
+  img.height = depth.height();
+  img.values.resize(std::size_t(img.width) * std::size_t(img.height));
+  const std::size_t bytes = img.values.size() * sizeof(float);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureSubImage(depth.id(), 0, 0, 0, layer, img.width, img.height, 1, GL_DEPTH_COMPONENT,
+                       GL_FLOAT, GLsizei(bytes), img.values.data());
+  ctx.publication->readbackBytes += bytes;
+  ctx.publication->images[key] = std::move(img);
+  return true;
+}
+
 bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& depth) {
   if (!ctx.wants(key)) return false;
   ctx.publication->images[key] = readImage(ctx, depth, GL_DEPTH_COMPONENT, GL_FLOAT);

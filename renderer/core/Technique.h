@@ -64,7 +64,8 @@ enum class ResolveMode {
 /// What a deferred resolve reads and writes (Technique::resolveDeferred). The targets
 /// follow shaders/common/resolve.frag: hard mask R8UI (SL_MASK_*), filtered visibility
 /// R8 (1 = lit), aliasing m R32F (texel footprint of the SELECTED map / pixel footprint,
-/// 0 where uncovered), texel RG32F (the selected map's uv, for the grid overlay).
+/// 0 where uncovered), texel RG32F (the selected map's uv, for the grid overlay), map index
+/// R8UI (the selected map, for the partition overlay; cleared to 0 before the call).
 struct ResolveTargets {
   int width = 0, height = 0;
   const gl::Texture& gPosition;  ///< world xyz, w = covered (RGBA32F)
@@ -73,9 +74,10 @@ struct ResolveTargets {
   const gl::Texture& filtered;
   const gl::Texture& aliasing;
   const gl::Texture& texel;
-  GLuint framebuffer = 0;  ///< the four as colour attachments 0..3, for a fragment pass
+  const gl::Texture& mapIndex;
+  GLuint framebuffer = 0;  ///< the five as colour attachments 0..4, for a fragment pass
   glm::vec3 towardsLight{0.0f, 1.0f, 0.0f};
-  /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the four
+  /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the five
   /// targets to image units SL_IMAGE_RESOLVE_* (write-only), for a compute pass.
   void bindForCompute() const;
 };

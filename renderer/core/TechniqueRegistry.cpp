@@ -1,6 +1,7 @@
 // The list of techniques. Adding a technique: its folder under techniques/ and shaders/,
 // and one line here.
 #include "core/Technique.h"
+#include "techniques/cascades/CascadedShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
 
@@ -29,6 +30,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       rtwEntry<RtwShadowMap::Analysis::Backward, false>("rtw-backward"),
       rtwEntry<RtwShadowMap::Analysis::Hybrid, false>("rtw-hybrid"),
       rtwEntry<RtwShadowMap::Analysis::Backward, true>("da-rtw"),
+      entry<CascadedShadowMap>(),
   };
   return list;
 }

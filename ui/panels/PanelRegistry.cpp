@@ -1,6 +1,7 @@
 // The one list of publication-panel families (see PanelRegistry.h).
 #include "panels/PanelRegistry.h"
 
+#include "panels/partition/PartitionPanels.h"
 #include "panels/rtw/RtwPanels.h"
 
 namespace sl::ui {
@@ -10,6 +11,7 @@ const std::vector<PanelEntry>& publicationPanels() {
     std::vector<PanelEntry> all;
     for (std::vector<PanelEntry> family : {
              rtwPanels(),
+             partitionPanels(),
          })
       all.insert(all.end(), family.begin(), family.end());
     return all;

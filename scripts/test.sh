@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs every test (ctest). GUI tests start their own
-# Xvfb. CI (.ci/run) calls exactly this.
+# Installs what is missing, builds, and runs every test (ctest), then fuzzes the file readers
+# for 60 s per target (scripts/fuzz.sh). GUI tests start their own Xvfb. CI (.ci/run) calls
+# exactly this.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -11,3 +12,6 @@ cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_BUIL
   >/dev/null
 cmake --build build-release -j2 --target shadowlab-cli shadowlab
 ctest --preset default -j2 "$@"
+# A short fuzzing run of the file readers (issue 14): 60 s per target, after the tests
+# (SHADOWLAB_FUZZ_SECONDS=0: build the fuzz targets only).
+scripts/fuzz.sh "${SHADOWLAB_FUZZ_SECONDS:-60}"

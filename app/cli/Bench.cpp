@@ -15,9 +15,9 @@
 #include <string_view>
 
 #include "Chart.h"
+#include "ChartCsv.h"
 #include "Commands.h"
 #include "Measure.h"
-#include "algo/InputFile.h"
 #include "gl/EglContext.h"
 
 namespace sl::cli {
@@ -30,14 +30,6 @@ const char* const kBenchUsage =
     "                           [--chart-y auto|linear|log] [--x ms|bytes]\n";
 
 namespace {
-
-/// Limits on a CSV read by `chart` (bench writes a few KiB): each refused with a message
-/// naming the file, the line and the limit.
-constexpr std::uint64_t kMaxCsvBytes = std::uint64_t(64) << 20;
-constexpr std::size_t kMaxCsvLineBytes = std::size_t(1) << 20;
-constexpr std::size_t kMaxCsvRows = 100000;
-constexpr std::size_t kMaxCsvParamsBytes = 4096;  ///< the params (and technique) cell
-constexpr std::size_t kMaxCsvParams = 64;         ///< KEY=VALUE pairs in one params cell
 
 struct BenchConfig {
   std::string scene;
@@ -206,13 +198,6 @@ ConfigSummary summarise(const std::vector<FrameSample>& frames) {
   return s;
 }
 
-/// One configuration's place on the chart (from a bench run or its CSV).
-struct ChartRow {
-  std::string technique;
-  std::vector<std::pair<std::string, std::string>> params;
-  double totalMs = 0, bytes = 0, errorPct = 0;
-};
-
 /// Point labels: per technique, the values of the parameters that vary between its rows
 /// (all its parameters when it has one row); the legend names those parameters.
 void writeChart(const std::vector<ChartRow>& rows, ChartSpec spec, const std::string& png) {
@@ -269,30 +254,6 @@ void writeChart(const std::vector<ChartRow>& rows, ChartSpec spec, const std::st
   std::printf("chart -> %s\n", png.c_str());
 }
 
-/// Fields of one CSV line (RFC 4180 quoting; no newlines inside fields).
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> out(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    char ch = line[i];
-    if (quoted) {
-      if (ch == '"' && i + 1 < line.size() && line[i + 1] == '"')
-        out.back() += '"', ++i;
-      else if (ch == '"')
-        quoted = false;
-      else
-        out.back() += ch;
-    } else if (ch == '"') {
-      quoted = true;
-    } else if (ch == ',') {
-      out.emplace_back();
-    } else if (ch != '\r') {
-      out.back() += ch;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 const char* const kChartUsage =
@@ -321,107 +282,9 @@ int cmdChart(Args& a) {
   if (chartY != "auto" && chartY != "linear" && chartY != "log")
     throw UsageError("--chart-y: expected auto, linear or log, got '" + chartY + "'");
   checkOutputs({{"--chart", png}}, {{"--csv", csvPath}});
-  // A bench CSV is a few KiB; everything past the limits below is refused, naming the file,
-  // the line and the limit, before it can take unbounded time or memory.
-  std::vector<unsigned char> bytes;
-  try {
-    bytes = readRegularFile(csvPath, kMaxCsvBytes, "kMaxCsvBytes");
-  } catch (const InputFileError& e) {
-    throw UsageError(csvPath + ": " + e.what());
-  }
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  std::size_t pos = 0;
-  int lineNo = 0;
-  std::string line;
-  auto at = [&] { return csvPath + ":" + std::to_string(lineNo) + ": "; };
-  // The next line into `line` (without its '\n'); false at the end of the file.
-  auto nextLine = [&] {
-    if (pos >= text.size()) return false;
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    ++lineNo;
-    if (end - pos > kMaxCsvLineBytes)
-      throw UsageError(at() + "line of " + std::to_string(end - pos) +
-                       " bytes, over the limit of " + byteLimitText(kMaxCsvLineBytes) +
-                       " (kMaxCsvLineBytes)");
-    line.assign(text.substr(pos, end - pos));
-    pos = end + 1;
-    return true;
-  };
-  if (!nextLine()) throw UsageError(csvPath + ": empty");
-  const std::vector<std::string> header = splitCsvLine(line);
-  auto column = [&](const std::string& name) {
-    auto it = std::find(header.begin(), header.end(), name);
-    if (it == header.end())
-      throw UsageError(csvPath + ": no column '" + name + "' (not a bench CSV?)");
-    return std::size_t(it - header.begin());
-  };
-  const std::size_t cTech = column("technique"), cParams = column("params"),
-                    cMs = column("total_ms"), cErr = column("error_pct"), cScene = column("scene"),
-                    cCamera = column("camera"), cW = column("width"), cH = column("height"),
-                    cFrames = column("frames"), cTiming = column("timing_method");
-  // Memory is read only when charted (a CSV without it still charts against time).
-  const std::size_t cBytes = chartX == ChartX::Bytes ? column("bytes") : cMs;
-  auto gl = std::find(header.begin(), header.end(), "gl");
-  std::vector<ChartRow> rows;
-  std::vector<std::string> first;
-  std::size_t unmeasured = 0;  // rows with an empty error_pct (no covered pixel)
-  while (nextLine()) {
-    if (line.empty() || line == "\r") continue;
-    if (rows.size() >= kMaxCsvRows)
-      throw UsageError(at() + "more than " + std::to_string(kMaxCsvRows) +
-                       " rows: refused (kMaxCsvRows)");
-    std::vector<std::string> f = splitCsvLine(line);
-    if (f.size() != header.size())
-      throw UsageError(at() + std::to_string(f.size()) + " fields, the header has " +
-                       std::to_string(header.size()));
-    if (first.empty()) first = f;
-    ChartRow r;
-    r.technique = f[cTech];
-    if (r.technique.size() > kMaxCsvParamsBytes)
-      throw UsageError(at() + "technique of " + std::to_string(r.technique.size()) +
-                       " bytes, over the limit of " + std::to_string(kMaxCsvParamsBytes) +
-                       " (kMaxCsvParamsBytes)");
-    if (f[cParams].size() > kMaxCsvParamsBytes)
-      throw UsageError(at() + "params of " + std::to_string(f[cParams].size()) +
-                       " bytes, over the limit of " + std::to_string(kMaxCsvParamsBytes) +
-                       " (kMaxCsvParamsBytes)");
-    std::istringstream ps(f[cParams]);
-    for (std::string kv; ps >> kv;) {
-      auto eq = kv.find('=');
-      if (eq == std::string::npos) continue;
-      if (r.params.size() >= kMaxCsvParams)
-        throw UsageError(at() + "more than " + std::to_string(kMaxCsvParams) +
-                         " parameters in params: refused (kMaxCsvParams)");
-      r.params.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
-    }
-    try {
-      r.totalMs = parseDouble("total_ms", f[cMs], -1e300, 1e300);
-      r.bytes = parseDouble("bytes", f[cBytes], -1e300, 1e300);
-      // An empty error cell: bench measured nothing (no covered pixel); not plotted.
-      if (f[cErr].empty()) {
-        ++unmeasured;
-        continue;
-      }
-      r.errorPct = parseDouble("error_pct", f[cErr], -1e300, 1e300);
-    } catch (const UsageError& e) {
-      throw UsageError(at() + e.what());
-    }
-    rows.push_back(std::move(r));
-  }
-  if (rows.empty())
-    throw UsageError(csvPath + (unmeasured
-                                    ? ": no row has a measured error_pct (" +
-                                          std::to_string(unmeasured) + " without a covered pixel)"
-                                    : std::string(": no rows")));
-  ChartSpec spec;
-  spec.yScale = chartY;
-  spec.x = chartX;
-  spec.title = std::string(chartHeadline(chartX)) + ": " + first[cScene] + ", " + first[cCamera];
-  spec.subtitle = first[cW] + "x" + first[cH] + ", " + first[cFrames] +
-                  " frames (medians), timing " + first[cTiming] +
-                  (gl == header.end() ? "" : ", " + first[std::size_t(gl - header.begin())]);
-  writeChart(rows, spec, png);
+  ChartCsv csv = readChartCsv(csvPath, chartX);
+  csv.spec.yScale = chartY;
+  writeChart(csv.rows, csv.spec, png);
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "core/JsonInput.h"
 #include "core/Renderer.h"
 #include "scene/GltfLoader.h"
 
@@ -30,7 +31,7 @@ int parseInt(const std::string& opt, const std::string& text, int lo, int hi) {
   } catch (const UsageError&) {
     throw;
   } catch (const std::exception&) {
-    throw UsageError(opt + ": expected an integer, got '" + text + "'");
+    throw UsageError(opt + ": expected an integer, got '" + quoteText(text) + "'");
   }
 }
 
@@ -40,21 +41,22 @@ double parseDouble(const std::string& opt, const std::string& text, double lo, d
     double v = std::stod(text, &used);
     if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument(text);
     if (v < lo || v > hi) {
-      char buf[160];
-      std::snprintf(buf, sizeof buf, ": %s is out of range %g..%g", text.c_str(), lo, hi);
-      throw UsageError(opt + buf);
+      char range[96];
+      std::snprintf(range, sizeof range, " is out of range %g..%g", lo, hi);
+      throw UsageError(opt + ": " + quoteText(text) + range);
     }
     return v;
   } catch (const UsageError&) {
     throw;
   } catch (const std::exception&) {
-    throw UsageError(opt + ": expected a number, got '" + text + "'");
+    throw UsageError(opt + ": expected a number, got '" + quoteText(text) + "'");
   }
 }
 
 std::pair<int, int> parseSize(const std::string& text) {
   auto x = text.find('x');
-  if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + text + "'");
+  if (x == std::string::npos)
+    throw UsageError("--size: expected WxH, got '" + quoteText(text) + "'");
   // The real limit is the GL implementation's (checkFrameSize, once a context exists).
   return {parseInt("--size", text.substr(0, x), 1, 1 << 16),
           parseInt("--size", text.substr(x + 1), 1, 1 << 16)};

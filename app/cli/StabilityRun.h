@@ -96,4 +96,10 @@ int runSuite(const std::string& file, double framesScale,
              const std::vector<std::string>& onlyCases,
              const std::vector<std::string>& onlyTechniques, const std::string& jsonPath);
 
+/// Reads and checks a suite file as runSuite does before any case runs (keys, techniques,
+/// parameters, expectations, scene names; not the frame sizes, which need a GL context).
+/// Returns the number of cases; throws UsageError naming the file and the JSON path. Needs
+/// no GL: the fuzz target tests/fuzz/fuzz_json.cpp calls it. Suite.cpp.
+std::size_t checkSuiteFile(const std::string& file);
+
 }  // namespace sl::cli

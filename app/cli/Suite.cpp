@@ -576,6 +576,15 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
 
 }  // namespace
 
+std::size_t checkSuiteFile(const std::string& file) {
+  const JsonReader reader(file);
+  try {
+    return parseSuite(reader, reader.parseFile(), 1.0, std::nullopt, {}).size();
+  } catch (const JsonInputError& e) {
+    throw UsageError(e.what());
+  }
+}
+
 int runSuite(const std::string& file, double framesScale,
              const std::optional<std::pair<int, int>>& sizeOverride,
              const std::vector<std::string>& onlyCases,

@@ -66,8 +66,13 @@ std::vector<unsigned char> readRegularFile(const std::filesystem::path& path,
   return bytes;
 }
 
-std::size_t jsonDepthExcess(std::string_view text, int maxDepth, bool comments) {
-  int depth = 0;
+namespace {
+
+/// One pass over JSON text: opened() for every '[' or '{' outside strings (and, with
+/// `comments`, outside // and /* */ comments), closed() for every ']' or '}'. Stops at the
+/// first opening for which opened() returns true and returns its offset; npos otherwise.
+template <typename Opened, typename Closed>
+std::size_t scanJsonBrackets(std::string_view text, bool comments, Opened opened, Closed closed) {
   bool inString = false;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
@@ -89,12 +94,29 @@ std::size_t jsonDepthExcess(std::string_view text, int maxDepth, bool comments) 
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
-      if (++depth > maxDepth) return i;
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
+      if (opened()) return i;
+    } else if (c == ']' || c == '}') {
+      closed();
     }
   }
   return std::string_view::npos;
+}
+
+}  // namespace
+
+std::size_t jsonDepthExcess(std::string_view text, int maxDepth, bool comments) {
+  int depth = 0;
+  return scanJsonBrackets(
+      text, comments, [&] { return ++depth > maxDepth; },
+      [&] {
+        if (depth > 0) --depth;
+      });
+}
+
+std::size_t jsonContainerExcess(std::string_view text, std::size_t maxContainers, bool comments) {
+  std::size_t count = 0;
+  return scanJsonBrackets(
+      text, comments, [&] { return ++count > maxContainers; }, [] {});
 }
 
 }  // namespace sl

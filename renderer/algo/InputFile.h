@@ -37,4 +37,10 @@ std::vector<unsigned char> readRegularFile(const std::filesystem::path& path,
 /// after it). Malformed JSON is left for the parser to describe.
 std::size_t jsonDepthExcess(std::string_view text, int maxDepth, bool comments = false);
 
+/// The byte offset of the '[' or '{' that opens the (maxContainers + 1)-th array or object, or
+/// std::string_view::npos: parsers build a node per value (tinygltf's model, hundreds of bytes
+/// per node), so the count bounds their memory before they start. Same scan as above.
+std::size_t jsonContainerExcess(std::string_view text, std::size_t maxContainers,
+                                bool comments = false);
+
 }  // namespace sl

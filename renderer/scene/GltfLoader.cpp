@@ -46,6 +46,10 @@ constexpr std::size_t kMaxAccessorElements = std::size_t(1) << 28;
 constexpr std::uint64_t kMaxFileBytes = std::uint64_t(1) << 30;
 /// Nesting of JSON arrays and objects (the JSON parsers recurse; real files need < 20).
 constexpr int kMaxJsonDepth = 256;
+/// Arrays and objects in the JSON, counted before parsing: tinygltf's DOM and model take
+/// ~1 KiB per node, so a 22 MB chain of 1,000,000 nodes took 1.2 GB (100,000 cameras on
+/// 100,000 nodes, a large but real file, have 600,000).
+constexpr std::size_t kMaxJsonContainers = std::size_t(1) << 20;
 /// Node instances in the flattened hierarchy.
 constexpr std::size_t kMaxNodeInstances = std::size_t(1) << 20;
 /// Triangles in the flattened scene (all instances together).
@@ -53,8 +57,14 @@ constexpr std::size_t kMaxTriangles = std::size_t(1) << 25;
 /// Longest side and pixel count of a decoded image (larger ones are not decoded).
 constexpr int kMaxImageSide = 16384;
 constexpr std::uint64_t kMaxImagePixels = std::uint64_t(1) << 26;
+/// Pixels of all the images of one file together (256 MiB as RGBA8): a PNG of 8192x8192 zeros
+/// is 260 KB, so without it a few MB of images would decode to gigabytes.
+constexpr std::uint64_t kMaxTotalImagePixels = std::uint64_t(1) << 26;
 /// Input quoted in a message is cut to this many bytes.
-constexpr std::size_t kMaxQuotedBytes = 200;
+constexpr std::size_t kMaxQuotedBytes = 120;
+/// A whole message or warning (tinygltf's texts quote input, such as a whole data: URI) is
+/// cut to this many bytes after the file's name.
+constexpr std::size_t kMaxMessageBytes = 300;
 /// How far from the origin (largest |x|, |y| or |z| of the bounds, metres) the geometry may
 /// reach. Positions, shadow maps and depths are floats in world space, and a float's spacing
 /// grows with its magnitude: below 1e5 m (2^16..2^17) it is 2^-7 m, about 8 mm, still finer
@@ -105,6 +115,16 @@ std::string oneLine(const std::string& text) {
   return out;
 }
 
+/// `text` cut to `maxBytes` ("... (N bytes)" after the cut; never inside a UTF-8 sequence).
+std::string cutText(std::string text, std::size_t maxBytes = kMaxMessageBytes) {
+  if (text.size() <= maxBytes) return text;
+  const std::size_t total = text.size();
+  std::size_t n = maxBytes;
+  while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80) --n;
+  text.resize(n);
+  return text + "... (" + std::to_string(total) + " bytes)";
+}
+
 void addLines(std::vector<std::string>& to, const std::string& text) {
   std::size_t start = 0;
   while (start < text.size()) {
@@ -112,7 +132,7 @@ void addLines(std::vector<std::string>& to, const std::string& text) {
     if (end == std::string::npos) end = text.size();
     std::string line = text.substr(start, end - start);
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
-    if (!line.empty()) to.push_back(line);
+    if (!line.empty()) to.push_back(cutText(std::move(line)));
     start = end + 1;
   }
 }
@@ -1306,13 +1326,18 @@ std::vector<unsigned char> readRegularFile(const fs::path& path, const std::stri
   }
 }
 
-/// Refuses JSON nested deeper than kMaxJsonDepth, before any recursive parser sees it.
+/// Refuses JSON nested deeper than kMaxJsonDepth (before any recursive parser sees it) or
+/// holding more than kMaxJsonContainers arrays and objects (before any parser allocates).
 void checkJsonDepth(const unsigned char* bytes, std::size_t size, const std::string& what) {
-  const std::size_t at =
-      jsonDepthExcess({reinterpret_cast<const char*>(bytes), size}, kMaxJsonDepth);
+  const std::string_view text(reinterpret_cast<const char*>(bytes), size);
+  std::size_t at = jsonDepthExcess(text, kMaxJsonDepth);
   if (at != std::string_view::npos)
-    fail(what + "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (at byte " +
+    fail(what + " is nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (at byte " +
          std::to_string(at) + "): refused (kMaxJsonDepth)");
+  at = jsonContainerExcess(text, kMaxJsonContainers);
+  if (at != std::string_view::npos)
+    fail(what + " holds more than " + std::to_string(kMaxJsonContainers) +
+         " arrays and objects (at byte " + std::to_string(at) + "): refused (kMaxJsonContainers)");
 }
 
 /// Why an external (non-data:) URI is refused, or "" if it is a relative path that stays
@@ -1446,11 +1471,12 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> imageSize(const unsigned 
 
 /// tinygltf's image decoder, except that an undecodable image is a warning, not a failure.
 /// Only PNG and JPEG (glTF's image formats) are decoded, and only up to kMaxImageSide and
-/// kMaxImagePixels: the header is read first, so a small file cannot make the decoder
-/// allocate gigabytes.
+/// kMaxImagePixels, and kMaxTotalImagePixels for all of a file's images (`user`: the pixels
+/// decoded so far, a std::uint64_t): the header is read first, so a small file cannot make the
+/// decoder allocate gigabytes.
 bool decodeImageLeniently(tinygltf::Image* image, const int imageIndex, std::string* err,
                           std::string* warn, int reqWidth, int reqHeight,
-                          const unsigned char* bytes, int size, void*) {
+                          const unsigned char* bytes, int size, void* user) {
   (void)err;
   const std::string label = "image " + std::to_string(imageIndex) + " not decoded: ";
   auto dims = imageSize(bytes, size > 0 ? std::size_t(size) : 0);
@@ -1467,6 +1493,17 @@ bool decodeImageLeniently(tinygltf::Image* image, const int imageIndex, std::str
                " per side (kMaxImageSide) and " + std::to_string(kMaxImagePixels) +
                " pixels (kMaxImagePixels)\n";
     return true;
+  }
+  auto* totalPixels = static_cast<std::uint64_t*>(user);
+  if (totalPixels) {
+    if (*totalPixels + std::uint64_t(w) * h > kMaxTotalImagePixels) {
+      if (warn)
+        *warn += label + std::to_string(w) + "x" + std::to_string(h) +
+                 " pixels would take the file's images beyond " +
+                 std::to_string(kMaxTotalImagePixels) + " pixels in all (kMaxTotalImagePixels)\n";
+      return true;
+    }
+    *totalPixels += std::uint64_t(w) * h;  // counted when tried: a failed decode allocated too
   }
   std::string why;
   if (tinygltf::LoadImageData(image, imageIndex, &why, warn, reqWidth, reqHeight, bytes, size,
@@ -1501,7 +1538,7 @@ void checkGlbHeader(const std::vector<unsigned char>& bytes) {
 }
 
 std::string describeParseError(const std::string& tinygltfError) {
-  std::string msg = oneLine(tinygltfError);
+  std::string msg = cutText(oneLine(tinygltfError), 2 * kMaxQuotedBytes);
   if (msg.empty()) return "could not be parsed as glTF";
   if (std::size_t p = msg.find("[json.exception."); p != std::string::npos) {
     std::size_t close = msg.find("] ", p);
@@ -1542,13 +1579,14 @@ std::shared_ptr<Scene> loadOrFail(const fs::path& path) {
   }
   if (binary) {
     checkGlbHeader(bytes);
-    checkJsonDepth(bytes.data() + 20, readU32(bytes, 12), "the JSON chunk is ");
+    checkJsonDepth(bytes.data() + 20, readU32(bytes, 12), "the JSON chunk");
   } else {
-    checkJsonDepth(bytes.data(), bytes.size(), "the JSON is ");
+    checkJsonDepth(bytes.data(), bytes.size(), "the JSON");
   }
 
   tinygltf::TinyGLTF parser;
-  parser.SetImageLoader(&decodeImageLeniently, nullptr);
+  std::uint64_t decodedPixels = 0;
+  parser.SetImageLoader(&decodeImageLeniently, &decodedPixels);
   std::string baseDir = path.parent_path().string();
   if (baseDir.empty()) baseDir = ".";
   ExternalFiles files;
@@ -1587,11 +1625,11 @@ SceneLoadResult loadGltf(const std::filesystem::path& path) {
   try {
     result.scene = loadOrFail(path);
   } catch (const LoadFailure& f) {
-    result.error = path.string() + ": " + oneLine(f.message);
+    result.error = path.string() + ": " + cutText(oneLine(f.message));
   } catch (const std::bad_alloc&) {
     result.error = path.string() + ": out of memory while loading";
   } catch (const std::exception& e) {
-    result.error = path.string() + ": " + oneLine(e.what());
+    result.error = path.string() + ": " + cutText(oneLine(e.what()));
   } catch (...) {
     result.error = path.string() + ": unknown error while loading";
   }

@@ -6,14 +6,19 @@
 namespace sl {
 
 namespace {
-FloatImage readImage(FrameContext& ctx, const gl::Texture& texture, GLenum format, GLenum type) {
+FloatImage readImage(FrameContext& ctx, const gl::Texture& texture, GLenum format, GLenum type,
+                     int layer = -1) {
   FloatImage img;
   img.width = texture.width();
   img.height = texture.height();
   img.values.resize(std::size_t(img.width) * std::size_t(img.height));
   const std::size_t bytes = img.values.size() * sizeof(float);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(texture.id(), 0, format, type, GLsizei(bytes), img.values.data());
+  if (layer < 0)
+    glGetTextureImage(texture.id(), 0, format, type, GLsizei(bytes), img.values.data());
+  else  // one layer of an array
+    glGetTextureSubImage(texture.id(), 0, 0, 0, layer, img.width, img.height, 1, format, type,
+                         GLsizei(bytes), img.values.data());
   ctx.publication->readbackBytes += bytes;
   return img;
 }
@@ -22,16 +27,7 @@ FloatImage readImage(FrameContext& ctx, const gl::Texture& texture, GLenum forma
 bool publishDepthLayer(FrameContext& ctx, const std::string& key, const gl::Texture& depth,
                        int layer) {
   if (!ctx.wants(key)) return false;
-  FloatImage img;
-  img.width = depth.width();
-  img.height = depth.height();
-  img.values.resize(std::size_t(img.width) * std::size_t(img.height));
-  const std::size_t bytes = img.values.size() * sizeof(float);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureSubImage(depth.id(), 0, 0, 0, layer, img.width, img.height, 1, GL_DEPTH_COMPONENT,
-                       GL_FLOAT, GLsizei(bytes), img.values.data());
-  ctx.publication->readbackBytes += bytes;
-  ctx.publication->images[key] = std::move(img);
+  ctx.publication->images[key] = readImage(ctx, depth, GL_DEPTH_COMPONENT, GL_FLOAT, layer);
   return true;
 }
 

@@ -149,3 +149,20 @@ TEST(CascadeFit, BadInputIsNamed) {
 
 }  // namespace
 }  // namespace sl::partition
+
+namespace sl::partition {
+namespace {
+TEST(CascadeFit, DepthRangeHysteresis) {
+  const glm::dvec2 first = holdDepthRange(std::nullopt, {2.0, 100.0});
+  EXPECT_NEAR(first.x, 2.0 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(first.y, 100.0 * std::sqrt(2.0), 1e-12);
+  // Small motions: held.
+  EXPECT_EQ(holdDepthRange(first, {1.9, 110.0}), first);
+  EXPECT_EQ(holdDepthRange(first, {2.5, 90.0}), first);
+  // Outside: re-centred on the new range.
+  EXPECT_NEAR(holdDepthRange(first, {1.0, 100.0}).x, 1.0 / std::sqrt(2.0), 1e-12);
+  // Much narrower than held (the camera came close to a wall): re-fitted, not kept wide.
+  EXPECT_NEAR(holdDepthRange(first, {10.0, 20.0}).y, 20.0 * std::sqrt(2.0), 1e-12);
+}
+}  // namespace
+}  // namespace sl::partition

@@ -49,6 +49,15 @@ glm::dvec2 visibleDepthRange(const Camera& camera, float aspect, const Aabb& box
           std::clamp(hi, double(camera.nearM), double(camera.farM))};
 }
 
+glm::dvec2 holdDepthRange(const std::optional<glm::dvec2>& held, const glm::dvec2& measured,
+                          double slack) {
+  if (held && held->x <= measured.x && held->y >= measured.y && held->x * slack >= measured.x &&
+      held->y <= measured.y * slack)
+    return *held;
+  const double w = std::sqrt(slack);
+  return {measured.x / w, measured.y * w};
+}
+
 std::optional<std::string> fitCascades(const Camera& camera, float aspect, const Aabb& sceneBounds,
                                        const glm::vec3& towardsLight, const CascadeSettings& s,
                                        CascadeFit& out) {

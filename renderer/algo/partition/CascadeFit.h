@@ -47,6 +47,13 @@ struct CascadeFit {
 /// intersect).
 glm::dvec2 visibleDepthRange(const Camera& camera, float aspect, const Aabb& box);
 
+/// Hysteresis for a measured depth range under stabilisation: keeps `held` while it contains
+/// `measured` and is at most `slack` times wider at either end (near: held.x >= measured.x /
+/// slack; far: held.y <= measured.y * slack); else returns `measured` widened by sqrt(slack)
+/// at both ends, so small motions leave the splits, and every map, unchanged.
+glm::dvec2 holdDepthRange(const std::optional<glm::dvec2>& held, const glm::dvec2& measured,
+                          double slack = 2.0);
+
 /// Fits the k partitions. Errors name the bad input (camera, light, bounds, settings).
 std::optional<std::string> fitCascades(const Camera& camera, float aspect, const Aabb& sceneBounds,
                                        const glm::vec3& towardsLight,

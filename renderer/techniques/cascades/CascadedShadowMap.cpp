@@ -151,6 +151,7 @@ CascadedShadowMap::CascadedShadowMap(const gl::ShaderLibrary& lib)
 void CascadedShadowMap::resetTemporalState() {
   rangeFence_.reset();
   lastRange_.reset();
+  heldRange_.reset();
 }
 
 std::optional<glm::dvec2> CascadedShadowMap::readDepthRange() {
@@ -198,8 +199,17 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
   s.resolution = res;
   s.stabilize = ctx.params.getBool("stabilize");
   if (fitDepth) {
-    // Last frame's range, widened by 5 % each way for this frame's motion.
-    if (auto r = readDepthRange()) s.visibleDepthM = glm::dvec2(r->x / 1.05, r->y * 1.05);
+    // Last frame's range, widened by 5 % each way for this frame's motion; stabilised, held
+    // while it still fits (hysteresis), so the splits do not move with every frame.
+    if (auto r = readDepthRange()) {
+      const glm::dvec2 measured(r->x / 1.05, r->y * 1.05);
+      if (s.stabilize) {
+        heldRange_ = partition::holdDepthRange(heldRange_, measured);
+        s.visibleDepthM = heldRange_;
+      } else {
+        s.visibleDepthM = measured;
+      }
+    }
   } else {
     resetTemporalState();
   }

@@ -39,6 +39,7 @@ class CascadedShadowMap : public Technique {
   gl::Buffer rangeBuffer_;  ///< 2 uints: min and max view depth bits
   gl::Fence rangeFence_;
   std::optional<glm::dvec2> lastRange_;  ///< the last range read back (kept while unchanged)
+  std::optional<glm::dvec2> heldRange_;  ///< stabilised: the range the splits cut (hysteresis)
   partition::CascadeFit fit_;
   std::vector<DepthMapView> views_;
   glm::vec3 eye_{0.0f}, forward_{0.0f, 0.0f, -1.0f};

@@ -27,22 +27,6 @@ QColor partitionColour(int i) {
   return QColor::fromRgbF(rgb[0], rgb[1], rgb[2]);
 }
 
-sl::FloatImage displayCopy(const sl::FloatImage& image) {
-  const int step = std::max(
-      1, (std::max(image.width, image.height) + kMaxDisplayTexels - 1) / kMaxDisplayTexels);
-  if (step == 1) return image;
-  sl::FloatImage out;
-  out.width = (image.width + step - 1) / step;
-  out.height = (image.height + step - 1) / step;
-  out.values.resize(size_t(out.width) * size_t(out.height));
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x)
-      out.values[size_t(y) * size_t(out.width) + size_t(x)] =
-          image.values[(size_t(y * step) * size_t(image.width) + size_t(x * step)) *
-                       size_t(image.channels)];
-  return out;
-}
-
 double number(const sl::Publication& pub, const std::string& key, double fallback = -1.0) {
   auto it = pub.numbers.find(key);
   return it == pub.numbers.end() ? fallback : it->second;
@@ -93,7 +77,7 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
     auto img = pub.images.find(key + ".map");
     if (img != pub.images.end() && img->second.width > 0) {
       const auto full = std::make_shared<const sl::FloatImage>(img->second);
-      const sl::FloatImage shown = displayCopy(img->second);
+      const sl::FloatImage shown = displayCopy(img->second, kMaxDisplayTexels);
       const ValueRange range = finiteRange(shown.values, 1, 0, 1.0f);  // 1 = empty
       v->setImage(colorize(shown, 0, range, ColorMap::Grey), full->width, full->height);
       v->setLegend(range, ColorMap::Grey, QString(), false);

@@ -56,7 +56,7 @@ enum class ResolveMode {
   /// "@lookup": a selection of one of any number of maps + a test in it. Aliasing m comes
   /// from the screen derivatives of the selected map's texel coordinate.
   Lookup,
-  /// The technique writes the four targets itself in resolveDeferred (tile by tile, a
+  /// The technique writes the targets itself in resolveDeferred (tile by tile, a
   /// screen-space result...), with the same meaning as the resolve pass's outputs.
   Deferred,
 };
@@ -97,7 +97,7 @@ class Technique {
   /// Lookup mode: binds what the lookup needs (textures from `firstUnit` on, per-map
   /// uniforms) to `resolve`. Declared parameters are already bound (bindParams).
   virtual void bindLookup(const gl::Program& /*resolve*/, int /*firstUnit*/) const {}
-  /// Deferred mode: writes the four resolve targets for this frame. Throws like
+  /// Deferred mode: writes the resolve targets for this frame (the map index optionally). Throws like
   /// renderShadows. Declared parameters are already bound to programs().
   virtual void resolveDeferred(const ResolveTargets& /*targets*/, const ParamSet& /*params*/) {}
   /// Every program of the technique (not the renderer's resolve pass). The renderer binds

@@ -257,3 +257,22 @@ TEST(Golden, CorridorCascadesPartitionOverlay) {
 
 }  // namespace
 }  // namespace sl
+
+namespace sl {
+namespace {
+// 8 partitions of 16384^2 would be 8 GiB: refused with a message naming the sizes, and the
+// renderer keeps working.
+TEST(Cascades, OversizedArrayIsRefused) {
+  auto r = test::makeRenderer("plane-box", "cascades");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("partitions", 8));
+  ASSERT_FALSE(r->params().set("resolution", 16384));
+  auto err = r->renderFrame(64, 36, 0);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("8 partitions of 16384^2 need 8192 MiB"), std::string::npos) << *err;
+  ASSERT_FALSE(r->params().set("resolution", 256));
+  EXPECT_FALSE(r->renderFrame(64, 36, 0));
+  test::expectNoGlErrors(*r);
+}
+}  // namespace
+}  // namespace sl

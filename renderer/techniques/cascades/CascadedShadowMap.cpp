@@ -15,6 +15,8 @@ namespace sl {
 namespace {
 
 constexpr std::uint32_t kFloatMaxBits = 0x7f7fffffu;
+/// The largest partition array (4 GiB): k x resolution^2 x 4 B beyond it is refused.
+constexpr std::uint64_t kMaxArrayBytes = 4ull << 30;
 
 gl::ProgramDesc rangeProgramDesc() {
   return {"cascades/depth_range", {{GL_COMPUTE_SHADER, "cascades/depth_range.comp"}}, {}, {}};
@@ -225,6 +227,13 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     forward_ = ctx.camera.forward();
 
     if (!maps_ || maps_.width() != res || maps_.layers() != k) {
+      const std::uint64_t bytes = 4ull * std::uint64_t(res) * std::uint64_t(res) * std::uint64_t(k);
+      if (bytes > kMaxArrayBytes)
+        throw std::runtime_error("cascades: " + std::to_string(k) + " partitions of " +
+                                 std::to_string(res) + "^2 need " + std::to_string(bytes >> 20) +
+                                 " MiB of depth maps, more than the " +
+                                 std::to_string(kMaxArrayBytes >> 20) +
+                                 " MiB one array may take; lower resolution or partitions");
       maps_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, k);
       fbos_.clear();
       for (int i = 0; i < k; ++i) {

@@ -460,6 +460,8 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                    t.position,
                    t.normal,
                    t.hard,
+                   t.aliasing,
+                   t.mapIndex,
                    params(),
                    *s.timer,
                    s.shaders,

@@ -38,6 +38,10 @@ struct FrameContext {
   const gl::Texture& gNormal;
   /// The previous frame's hard shadow mask (R8UI, camera space): shadow-edge importance.
   const gl::Texture& prevHardMask;
+  /// The previous frame's aliasing m (R32F) and selected map index (R8UI) per pixel: the
+  /// resolve targets before this frame's resolve (per-map statistics a frame late).
+  const gl::Texture& prevAliasing;
+  const gl::Texture& prevMapIndex;
   const ParamSet& params;  ///< the technique's own parameters
   gl::GpuTimer& timer;
   const gl::ShaderLibrary& shaders;

@@ -56,6 +56,10 @@
 // --- Cascades (techniques/cascades, shaders/cascades).
 #define SL_CASCADE_BUFFER_DEPTH_RANGE 0  // min, max view depth (float bits as uint)
 #define SL_CASCADE_GROUP 8               // local_size_x/y of the depth-range reduction
+#define SL_CASCADE_BUFFER_M_STATS 1      // per map: histogram of log2 m, count, max m bits
+#define SL_CASCADE_M_BINS 128            // histogram bins over log2 m in [-8, 8): 1/8 octave
+#define SL_CASCADE_M_LOG2_MIN -8.0
+#define SL_CASCADE_M_LOG2_MAX 8.0
 
 // --- RTW (techniques/rtw, shaders/rtw).
 #define SL_RTW_BUFFER_COLLAPSED 0  // 1D importance [x n][y n], float bits as uint

@@ -166,3 +166,20 @@ TEST(CascadeFit, DepthRangeHysteresis) {
 }
 }  // namespace
 }  // namespace sl::partition
+
+namespace sl::partition {
+namespace {
+TEST(CascadeFit, HistogramQuantile) {
+  // 16 bins over log2 in [-8, 8): one octave each. 90 values in bin 8 ([1, 2)), 10 in bin 10
+  // ([4, 8)): the median's bin ends at 2, the 95th percentile's at 8.
+  std::vector<std::uint32_t> bins(16, 0);
+  bins[8] = 90;
+  bins[10] = 10;
+  EXPECT_DOUBLE_EQ(histogramQuantileLog2(bins, 0.5, -8.0, 8.0), 2.0);
+  EXPECT_DOUBLE_EQ(histogramQuantileLog2(bins, 0.9, -8.0, 8.0), 2.0);
+  EXPECT_DOUBLE_EQ(histogramQuantileLog2(bins, 0.95, -8.0, 8.0), 8.0);
+  EXPECT_DOUBLE_EQ(histogramQuantileLog2(bins, 1.0, -8.0, 8.0), 8.0);
+  EXPECT_EQ(histogramQuantileLog2(std::vector<std::uint32_t>(16, 0), 0.95, -8.0, 8.0), 0.0);
+}
+}  // namespace
+}  // namespace sl::partition

@@ -192,16 +192,22 @@ TEST(Cascades, MemoryIsExact) {
   ASSERT_FALSE(r->renderFrame(160, 90, 0));
   const std::uint64_t before = gl::allocatedBytes() - r->stats().memory.bytes();
   ASSERT_FALSE(r->setTechnique("cascades"));
-  for (auto [k, res, fit] : {std::tuple{4, 512, 1}, {3, 256, 0}, {8, 128, 1}}) {
+  for (auto [k, res, fit, publishing] :
+       {std::tuple{4, 512, 1, false}, {3, 256, 0, false}, {8, 128, 1, true}, {2, 128, 1, false}}) {
     SCOPED_TRACE(k);
+    // The depth-range buffer and the m histograms exist only while used.
+    r->requestPublications(publishing ? std::set<std::string>{"partition.*.m.p95"}
+                                      : std::set<std::string>{});
     ASSERT_FALSE(r->params().set("partitions", k));
     ASSERT_FALSE(r->params().set("resolution", res));
     ASSERT_FALSE(r->params().set("depth.fit", fit));
     for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(160, 90, 0));
     const MemoryStats& m = r->stats().memory;
     EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
-    // k maps of res^2 32-bit depths, and the 8-byte depth-range buffer once it exists.
-    EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(res) * std::uint64_t(res) * std::uint64_t(k) + 8);
+    // k maps of res^2 32-bit depths, the 8-byte depth-range buffer with depth.fit, the m
+    // histograms while requested.
+    EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(res) * std::uint64_t(res) * std::uint64_t(k) +
+                             (fit ? 8 : 0) + (publishing ? 4ull * (SL_CASCADE_M_BINS + 2) * k : 0));
   }
   test::expectNoGlErrors(*r);
 }
@@ -215,7 +221,9 @@ TEST(Cascades, DeclaredPassesAndPanelKeys) {
   ASSERT_FALSE(r->params().set("partitions", 3));
   const std::set<std::string> keys = ui::partition::partitionsPanelKeys();
   r->requestPublications(keys);
-  for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(160, 90, 0));
+  // Frames 2 and 3 use the same fitted range: frame 3's m statistics (of frame 2's resolve)
+  // describe the frame read back below.
+  for (int f = 0; f < 3; ++f) ASSERT_FALSE(r->renderFrame(160, 90, 0));
   std::vector<std::string> timed, declared;
   for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
   const TechniqueInfo* info = Renderer::findTechnique("cascades");
@@ -236,7 +244,23 @@ TEST(Cascades, DeclaredPassesAndPanelKeys) {
   // Near partitions have finer texels.
   EXPECT_GT(pub.numbers.at("partition.0.texels_per_m"), pub.numbers.at("partition.2.texels_per_m"));
   EXPECT_EQ(pub.numbers.at("depth.fitted"), 1.0);  // the second frame read the first's range
-  EXPECT_EQ(r->stats().publicationBytes, 3ull * 256 * 256 * 4);
+  EXPECT_EQ(r->stats().publicationBytes, 3ull * 256 * 256 * 4 + 3ull * (SL_CASCADE_M_BINS + 2) * 4);
+  // m per partition: the pixels that selected each map, their largest m, a p95 within one
+  // 1/8-octave bin above the exact one.
+  const FrameReadback fr = r->readback();
+  for (int i = 0; i < 3; ++i) {
+    std::vector<float> ms;
+    for (std::size_t p = 0; p < fr.aliasing.size(); ++p)
+      if (fr.aliasing[p] > 0.0f && fr.mapIndex[p] == i) ms.push_back(fr.aliasing[p]);
+    const std::string k = "partition." + std::to_string(i) + ".m.";
+    EXPECT_EQ(pub.numbers.at(k + "pixels"), double(ms.size())) << i;
+    if (ms.empty()) continue;
+    std::sort(ms.begin(), ms.end());
+    EXPECT_FLOAT_EQ(float(pub.numbers.at(k + "max")), ms.back()) << i;
+    const double p95 = ms[std::min(ms.size() - 1, std::size_t(0.95 * double(ms.size())))];
+    EXPECT_GE(pub.numbers.at(k + "p95"), p95 * 0.999) << i;
+    EXPECT_LE(pub.numbers.at(k + "p95"), p95 * 1.091 * 1.001) << i;
+  }
   EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(*info, r->params(), keys));
   test::expectNoGlErrors(*r);
 }

@@ -58,6 +58,21 @@ glm::dvec2 holdDepthRange(const std::optional<glm::dvec2>& held, const glm::dvec
   return {measured.x / w, measured.y * w};
 }
 
+double histogramQuantileLog2(const std::vector<std::uint32_t>& bins, double q, double log2Min,
+                             double log2Max) {
+  std::uint64_t total = 0;
+  for (std::uint32_t b : bins) total += b;
+  if (total == 0 || bins.empty()) return 0.0;
+  const double need = std::clamp(q, 0.0, 1.0) * double(total);
+  const double width = (log2Max - log2Min) / double(bins.size());
+  std::uint64_t sum = 0;
+  for (std::size_t i = 0; i < bins.size(); ++i) {
+    sum += bins[i];
+    if (double(sum) >= need && bins[i] > 0) return std::exp2(log2Min + width * double(i + 1));
+  }
+  return std::exp2(log2Max);
+}
+
 std::optional<std::string> fitCascades(const Camera& camera, float aspect, const Aabb& sceneBounds,
                                        const glm::vec3& towardsLight, const CascadeSettings& s,
                                        CascadeFit& out) {

@@ -5,6 +5,7 @@
 // `cascades` technique (renderer/techniques/cascades) renders what this computes.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,6 +54,13 @@ glm::dvec2 visibleDepthRange(const Camera& camera, float aspect, const Aabb& box
 /// at both ends, so small motions leave the splits, and every map, unchanged.
 glm::dvec2 holdDepthRange(const std::optional<glm::dvec2>& held, const glm::dvec2& measured,
                           double slack = 2.0);
+
+/// The q-quantile (0 < q <= 1) of values binned in `bins` equal bins of log2 over
+/// [log2Min, log2Max): the upper edge (as a value, 2^edge) of the bin where the cumulative
+/// count first reaches q * total; 0 when the bins are empty. Values below or above the range
+/// are in the first or last bin.
+double histogramQuantileLog2(const std::vector<std::uint32_t>& bins, double q, double log2Min,
+                             double log2Max);
 
 /// Fits the k partitions. Errors name the bad input (camera, light, bounds, settings).
 std::optional<std::string> fitCascades(const Camera& camera, float aspect, const Aabb& sceneBounds,

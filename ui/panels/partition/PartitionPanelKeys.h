@@ -18,7 +18,10 @@ inline std::set<std::string> partitionsPanelKeys() {
           "partition.*.extent_m",
           "depth.near",
           "depth.far",
-          "depth.fitted"};
+          "depth.fitted",
+          "partition.*.m.p95",
+          "partition.*.m.max",
+          "partition.*.m.pixels"};
 }
 
 }  // namespace sl::ui::partition

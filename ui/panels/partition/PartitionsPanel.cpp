@@ -73,6 +73,8 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
     const double perM = number(pub, key + ".texels_per_m");
     const double texels = number(pub, key + ".texels");
     const double extent = number(pub, key + ".extent_m");
+    const double mP95 = number(pub, key + ".m.p95"), mMax = number(pub, key + ".m.max");
+    const double mPixels = number(pub, key + ".m.pixels");
     const QString caption = tr("%1: %2 – %3 m").arg(i).arg(formatValue(nearM), formatValue(farM));
     auto img = pub.images.find(key + ".map");
     if (img != pub.images.end() && img->second.width > 0) {
@@ -96,25 +98,32 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
       p.setBrush(Qt::NoBrush);
       p.drawRect(r.adjusted(2, 2, -2, -2));
     });
-    rows += QStringLiteral(
-                "<tr><td><span style='color:%1'>&#9632;</span> %2</td><td>%3</td><td>%4</td>"
-                "<td>%5</td><td>%6</td><td>%7</td></tr>")
-                .arg(colour.name())
-                .arg(i)
-                .arg(formatValue(nearM), formatValue(farM), formatValue(extent),
-                     formatValue(texels), formatValue(perM));
+    rows +=
+        QStringLiteral(
+            "<tr><td><span style='color:%1'>&#9632;</span> %2</td><td>%3</td><td>%4</td>"
+            "<td>%5</td><td>%6</td><td>%7</td><td>%8</td><td>%9</td></tr>")
+            .arg(colour.name())
+            .arg(i)
+            .arg(formatValue(nearM), formatValue(farM), formatValue(extent), formatValue(texels),
+                 formatValue(perM), mPixels > 0 ? formatValue(mP95) : QStringLiteral("–"),
+                 mPixels > 0 ? formatValue(mMax) : QStringLiteral("–"));
     parts.append(QJsonObject{{QStringLiteral("near_m"), nearM},
                              {QStringLiteral("far_m"), farM},
                              {QStringLiteral("extent_m"), extent},
                              {QStringLiteral("texels"), texels},
                              {QStringLiteral("texels_per_m"), perM},
+                             {QStringLiteral("m_p95"), mP95},
+                             {QStringLiteral("m_max"), mMax},
+                             {QStringLiteral("m_pixels"), mPixels},
                              {QStringLiteral("map_published"), img != pub.images.end()}});
   }
   const double dn = number(pub, "depth.near"), df = number(pub, "depth.far");
   const bool fitted = number(pub, "depth.fitted", 0.0) > 0.5;
   table_->setText(tr("<table cellspacing=6><tr><th>map</th><th>near (m)</th><th>far (m)</th>"
-                     "<th>width (m)</th><th>texels</th><th>texels/m</th></tr>%1</table>"
-                     "Split range %2 – %3 m (%4). Colours as the view's <i>partition</i> overlay.")
+                     "<th>width (m)</th><th>texels</th><th>texels/m</th><th>m p95</th>"
+                     "<th>m max</th></tr>%1</table>Split range %2 – %3 m (%4). m: texels per "
+                     "pixel over last frame's pixels that selected the map (p95 to 1/8 octave). "
+                     "Colours as the view's <i>partition</i> overlay.")
                       .arg(rows, formatValue(dn), formatValue(df),
                            fitted ? tr("fitted to last frame's G-buffer depths")
                                   : tr("view frustum ∩ scene bounds")));

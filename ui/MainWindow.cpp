@@ -23,7 +23,6 @@
 #include <QMimeData>
 #include <QScreen>
 #include <QSettings>
-#include <QSlider>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QToolButton>
@@ -42,6 +41,7 @@
 #include "panels/common/LessonPanel.h"
 #include "panels/common/ParamPanel.h"
 #include "panels/common/TimingPanel.h"
+#include "panels/light/LightPanel.h"
 #include "scene/GltfLoader.h"
 
 namespace sl::ui {
@@ -393,28 +393,7 @@ void MainWindow::onErrorComputed(double errorPct) {
 // --- Light, camera, misc -------------------------------------------------------------------
 
 void MainWindow::syncLightControls() {
-  const sl::DirectionalLight& light = viewport_->light();
-  {
-    QSignalBlocker a(azimuthSlider_), e(elevationSlider_);
-    float az = std::fmod(light.azimuthDeg + 180.0f, 360.0f);
-    az = (az < 0 ? az + 360.0f : az) - 180.0f;
-    azimuthSlider_->setValue(static_cast<int>(std::lround(az)));
-    elevationSlider_->setValue(static_cast<int>(std::lround(light.elevationDeg)));
-  }
-  showLightValues();
-}
-
-void MainWindow::showLightValues() {
-  azimuthLabel_->setText(QStringLiteral("%1°").arg(azimuthSlider_->value()));
-  elevationLabel_->setText(QStringLiteral("%1°").arg(elevationSlider_->value()));
-}
-
-void MainWindow::updateLightFromControls() {
-  sl::DirectionalLight light = viewport_->light();
-  light.azimuthDeg = static_cast<float>(azimuthSlider_->value());
-  light.elevationDeg = static_cast<float>(elevationSlider_->value());
-  viewport_->setLight(light);
-  showLightValues();
+  if (lightPanel_) lightPanel_->showLight(viewport_->light());
 }
 
 void MainWindow::updateTitle() {

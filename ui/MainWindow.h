@@ -1,6 +1,6 @@
 // The main window: the viewport in the middle, dockable panels around it (Parameters,
-// Timing, Lesson, Charts and the publication panels of panels/PanelRegistry.h), toolbars
-// for scene / technique / sun / camera, the status line. Its parts live in their own
+// Timing, Lesson, Light, Charts and the publication panels of panels/PanelRegistry.h),
+// toolbars for scene / technique / camera, the status line. Its parts live in their own
 // classes: TeachingBar (overlays, split view, pause), PassStepper, LessonController,
 // GrabRun (`--grab`) and SelfTests (`--self-test`).
 #pragma once
@@ -21,7 +21,6 @@ class QComboBox;
 class QToolBar;
 class QDockWidget;
 class QLabel;
-class QSlider;
 
 namespace sl {
 struct Scene;
@@ -34,6 +33,7 @@ class ChartsPanel;
 class GrabRun;
 class LessonController;
 class LessonPanel;
+class LightPanel;
 class ParamPanel;
 class PassStepper;
 class SelfTests;
@@ -121,8 +121,6 @@ class MainWindow : public QMainWindow {
   void syncSceneCombo();
   void syncTechniqueCombo();
   void syncLightControls();
-  void showLightValues();
-  void updateLightFromControls();
   void updateTitle();
   void showShortcuts();
   void saveScreenshot();
@@ -156,6 +154,7 @@ class MainWindow : public QMainWindow {
   ShortcutsDialog* shortcuts_ = nullptr;
   LessonPanel* lessonPanel_ = nullptr;
   QDockWidget* lessonDock_ = nullptr;
+  QDockWidget* lightDock_ = nullptr;
   ChartsPanel* chartsPanel_ = nullptr;
   QDockWidget* chartsDock_ = nullptr;
   /// The docks of the publication panels (panels/PanelRegistry.h), in registry order.
@@ -170,10 +169,7 @@ class MainWindow : public QMainWindow {
   QComboBox* sceneCombo_ = nullptr;
   QComboBox* techniqueCombo_ = nullptr;
   QComboBox* bookmarkCombo_ = nullptr;
-  QSlider* azimuthSlider_ = nullptr;
-  QSlider* elevationSlider_ = nullptr;
-  QLabel* azimuthLabel_ = nullptr;
-  QLabel* elevationLabel_ = nullptr;
+  LightPanel* lightPanel_ = nullptr;  ///< the Light dock (ui/panels/light)
 
   QLabel* sceneLabel_ = nullptr;
   QLabel* frameLabel_ = nullptr;

@@ -1,7 +1,7 @@
 // The construction of the main window (see MainWindow.h): menus and their shortcuts, the
-// main toolbar (scene, technique, sun, camera), the docks (Parameters, Timing, the
-// publication panels of panels/PanelRegistry.h, Lesson, Charts), the status bar and the
-// default layout. MainWindow.cpp has the window's behaviour.
+// main toolbar (scene, technique, camera), the docks (Parameters, Timing, the
+// publication panels of panels/PanelRegistry.h, Lesson, Light, Charts), the status bar and
+// the default layout. MainWindow.cpp has the window's behaviour.
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -11,7 +11,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScreen>
-#include <QSlider>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QToolButton>
@@ -25,6 +24,7 @@
 #include "panels/common/LessonPanel.h"
 #include "panels/common/ParamPanel.h"
 #include "panels/common/TimingPanel.h"
+#include "panels/light/LightPanel.h"
 #include "scene/GltfLoader.h"
 
 namespace sl::ui {
@@ -193,37 +193,6 @@ void MainWindow::createToolBar() {
   bar->addWidget(techniqueCombo_);
   bar->addSeparator();
 
-  // Sun direction: azimuth around +y (from +z towards +x) and elevation above the horizon.
-  addLabel(tr("Sun"));
-  auto addLightSlider = [&](const QString& name, const QString& caption, int lo, int hi,
-                            const QString& tip, QLabel** valueLabel) {
-    auto* captionLabel = new QLabel(caption);
-    captionLabel->setContentsMargins(4, 0, 2, 0);
-    captionLabel->setForegroundRole(QPalette::PlaceholderText);
-    bar->addWidget(captionLabel);
-    auto* s = new QSlider(Qt::Horizontal);
-    s->setObjectName(name);
-    s->setRange(lo, hi);
-    s->setFixedWidth(110);
-    s->setToolTip(tip);
-    connect(s, &QSlider::valueChanged, this, &MainWindow::updateLightFromControls);
-    bar->addWidget(s);
-    *valueLabel = new QLabel;
-    (*valueLabel)
-        ->setMinimumWidth((*valueLabel)->fontMetrics().horizontalAdvance(QStringLiteral("-180°")) +
-                          6);
-    (*valueLabel)->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    bar->addWidget(*valueLabel);
-    return s;
-  };
-  azimuthSlider_ = addLightSlider(
-      QStringLiteral("sunAzimuth"), tr("azimuth"), -180, 180,
-      tr("Sun azimuth: degrees around the vertical, from +z towards +x"), &azimuthLabel_);
-  elevationSlider_ =
-      addLightSlider(QStringLiteral("sunElevation"), tr("elevation"), 0, 90,
-                     tr("Sun elevation: degrees above the horizon"), &elevationLabel_);
-  bar->addSeparator();
-
   addLabel(tr("View"));
   bookmarkCombo_ = new QComboBox;
   bookmarkCombo_->setObjectName(QStringLiteral("bookmarkCombo"));
@@ -237,7 +206,6 @@ void MainWindow::createToolBar() {
   reset->setToolTip(tr("Back to the scene's first camera (Home)"));
   connect(reset, &QToolButton::clicked, this, [this] { viewport_->resetView(); });
   bar->addWidget(reset);
-  syncLightControls();
 }
 
 void MainWindow::createDocks() {
@@ -307,13 +275,15 @@ void MainWindow::applyDefaultLayout() {
   const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
   QSize size = kDefaultWindowSize;
   if (screen) size = size.boundedTo(screen->availableGeometry().size());
-  // Right: Parameters | Lesson | Charts. Left: the registry's left panels, one over the
-  // other. Bottom: its bottom panels tabbed, then Timing.
+  // Right: Parameters | Lesson | Charts, the Light under them. Left: the registry's left
+  // panels, one over the other. Bottom: its bottom panels tabbed, then Timing.
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {
     dock->setFloating(false);
     dock->show();
   }
   addDockWidget(Qt::RightDockWidgetArea, paramDock_);
+  addDockWidget(Qt::RightDockWidgetArea, lightDock_);
+  splitDockWidget(paramDock_, lightDock_, Qt::Vertical);  // before the tabs: a neighbour
   addDockWidget(Qt::RightDockWidgetArea, lessonDock_);
   tabifyDockWidget(paramDock_, lessonDock_);
   addDockWidget(Qt::RightDockWidgetArea, chartsDock_);
@@ -370,6 +340,14 @@ void MainWindow::createPanelDocks() {
   lessonPanel_ = new LessonPanel;
   lessonDock_ =
       addPanelDock(lessonPanel_, tr("Lesson"), QStringLiteral("lesson"), Qt::RightDockWidgetArea);
+  // The light is edited, not published: its dock is not a registry entry
+  // (panels/PanelRegistry.h lists PublicationPanels).
+  lightPanel_ = new LightPanel;
+  lightDock_ =
+      addPanelDock(lightPanel_, tr("Light"), QStringLiteral("light"), Qt::RightDockWidgetArea);
+  connect(lightPanel_, &LightPanel::lightEdited, viewport_, &ViewportWidget::setLight);
+  connect(viewport_, &ViewportWidget::lightChanged, this, &MainWindow::syncLightControls);
+  syncLightControls();
   chartsPanel_ = new ChartsPanel(viewport_);
   chartsDock_ =
       addPanelDock(chartsPanel_, tr("Charts"), QStringLiteral("charts"), Qt::RightDockWidgetArea);
@@ -384,7 +362,8 @@ void MainWindow::createPanelDocks() {
   std::vector<QDockWidget*> toggled;
   for (const PublicationDocks::Dock& d : docks_.docks()) toggled.push_back(d.dock);
   toggled.push_back(lessonDock_);
-  toggled.push_back(chartsDock_);
+  toggled.push_back(chartsDock_);  // Ctrl+9 (README)
+  toggled.push_back(lightDock_);   // past Ctrl+9: View > Panels only
   int key = Qt::Key_3;
   for (QDockWidget* dock : toggled) {
     QAction* toggle = dock->toggleViewAction();

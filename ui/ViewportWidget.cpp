@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <QGuiApplication>
 #include <QKeyEvent>
@@ -75,11 +76,14 @@ class ViewOverlay : public QWidget {
   QImage split;  ///< right half (device pixels), null when the split view is off
   QString leftCaption, rightCaption, bannerTitle, bannerText, pausedText;
   enum class Legend { None, Error, Aliasing, WarpGrid } legend = Legend::None;
+  /// The light gizmo (widget pixels): lines, and the light's own point when on screen.
+  QVector<QLineF> gizmoLines;
+  std::optional<QPointF> gizmoPoint;
   bool errorStale = false;
 
   bool hasContent() const {
     return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() ||
-           !pausedText.isEmpty() || legend != Legend::None;
+           !pausedText.isEmpty() || legend != Legend::None || !gizmoLines.isEmpty() || gizmoPoint;
   }
 
  protected:
@@ -95,6 +99,14 @@ class ViewOverlay : public QWidget {
       p.drawRoundedRect(r, 5, 5);
     };
     int bottomInset = 8;
+    if (!gizmoLines.isEmpty() || gizmoPoint) {  // the light (Alt+drag moves it)
+      p.setPen(QPen(QColor(255, 214, 60, 230), 1.6));
+      p.drawLines(gizmoLines);
+      if (gizmoPoint) {
+        p.setBrush(QColor(255, 230, 120, 230));
+        p.drawEllipse(*gizmoPoint, 6.0, 6.0);
+      }
+    }
     if (!split.isNull()) {
       const int half = width() / 2;
       p.drawImage(QRect(half, 0, width() - half, height()), split);
@@ -341,6 +353,7 @@ void ViewportWidget::renderSplitHalf(int width, int height, std::string& problem
 }
 
 void ViewportWidget::updateOverlayWidget() {
+  updateLightGizmo();
   const bool split = !splitTechniqueId_.empty() && splitRenderer_;
   overlay_->split = split ? splitImage_ : QImage();
   if (split) {
@@ -431,7 +444,8 @@ void ViewportWidget::resizeGL(int, int) {
 
 void ViewportWidget::setScene(std::shared_ptr<const sl::Scene> scene) {
   scene_ = std::move(scene);
-  if (scene_ && scene_->sun) light_ = *scene_->sun;
+  if (scene_ && scene_->light) light_ = *scene_->light;
+  Q_EMIT lightChanged();
   if (renderer_) {
     makeCurrent();
     renderer_->setScene(scene_);
@@ -482,10 +496,90 @@ void ViewportWidget::resetView() {
   goToBookmark(0);
 }
 
-void ViewportWidget::setLight(const sl::DirectionalLight& light) {
+void ViewportWidget::setLight(const sl::Light& light) {
+  if (light_ == light) return;
   light_ = light;
   markViewChanged();
   update();
+  Q_EMIT lightChanged();
+}
+
+void ViewportWidget::updateLightGizmo() {
+  overlay_->gizmoLines.clear();
+  overlay_->gizmoPoint.reset();
+  if (!scene_ || !scene_->bounds.valid() || width() <= 0 || height() <= 0) return;
+  const glm::mat4 viewProj = camera_.projection(float(width()) / float(height())) * camera_.view();
+  auto project = [&](const glm::vec3& p) -> std::optional<QPointF> {
+    const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
+    if (!(c.w > 1e-4f)) return std::nullopt;  // behind the camera
+    return QPointF((c.x / c.w * 0.5 + 0.5) * width(), (0.5 - c.y / c.w * 0.5) * height());
+  };
+  auto line = [&](const glm::vec3& a, const glm::vec3& b) {
+    auto pa = project(a), pb = project(b);
+    if (pa && pb) overlay_->gizmoLines.append(QLineF(*pa, *pb));
+  };
+  const float size = glm::length(scene_->bounds.size());
+  if (light_.type == sl::LightType::Directional) {
+    // An arrow from the sky down to the scene's centre, along the light.
+    const glm::vec3 end = scene_->bounds.center();
+    const glm::vec3 start = end + light_.directionalTowards() * (0.35f * size);
+    line(start, end);
+    const glm::vec3 d = glm::normalize(end - start);
+    const glm::vec3 side = glm::normalize(
+        glm::cross(d, std::abs(d.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+    const float head = 0.04f * size;
+    line(end, end - d * head + side * (0.5f * head));
+    line(end, end - d * head - side * (0.5f * head));
+    overlay_->gizmoPoint = project(start);
+    return;
+  }
+  const glm::vec3 pos = light_.positionM;
+  overlay_->gizmoPoint = project(pos);
+  if (light_.type == sl::LightType::Point) {  // a bulb: short rays around the point
+    const float r = 0.03f * size;
+    for (glm::vec3 d : {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)}) {
+      line(pos + d * r, pos + d * (2.0f * r));
+      line(pos - d * r, pos - d * (2.0f * r));
+    }
+    line(pos, glm::vec3(pos.x, scene_->bounds.min.y, pos.z));  // its foot on the ground
+    return;
+  }
+  // Spot: the outer cone's outline down to the scene's floor (or 1/3 of its size).
+  const glm::vec3 axis = light_.spotAxis();
+  float len = 0.33f * size;
+  if (axis.y < -0.05f) len = std::min(2.0f * size, (pos.y - scene_->bounds.min.y) / -axis.y);
+  const glm::vec3 u = glm::normalize(
+      glm::cross(axis, std::abs(axis.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+  const glm::vec3 v = glm::cross(axis, u);
+  const float radius = len * std::tan(glm::radians(light_.outerConeDeg));
+  glm::vec3 previous{};
+  for (int i = 0; i <= 32; ++i) {
+    const float a = float(i) / 32.0f * 6.2831853f;
+    const glm::vec3 p = pos + axis * len + (u * std::cos(a) + v * std::sin(a)) * radius;
+    if (i > 0) line(previous, p);
+    if (i % 8 == 0 && i < 32) line(pos, p);
+    previous = p;
+  }
+}
+
+void ViewportWidget::dragLight(const QPoint& d) {
+  sl::Light l = light_;
+  if (l.type == sl::LightType::Directional) {
+    l.azimuthDeg = std::remainder(l.azimuthDeg + float(d.x()) * 0.5f, 360.0f);
+    l.elevationDeg = std::clamp(l.elevationDeg - float(d.y()) * 0.5f, 1.0f, 90.0f);
+  } else {
+    // Move on the horizontal plane through the light, right/forward as the camera sees it.
+    const glm::vec3 fw = camera_.forward();
+    glm::vec3 forward(fw.x, 0.0f, fw.z);
+    if (glm::length(forward) < 1e-3f) forward = glm::vec3(0, 0, -1);
+    forward = glm::normalize(forward);
+    const glm::vec3 right(-forward.z, 0.0f, forward.x);
+    const float distM = std::max(0.1f, glm::length(l.positionM - camera_.position));
+    const float mPerPixel = 2.0f * distM * std::tan(glm::radians(camera_.fovYDeg) * 0.5f) /
+                            float(std::max(1, height()));
+    l.positionM += right * (float(d.x()) * mPerPixel) - forward * (float(d.y()) * mPerPixel);
+  }
+  if (!l.validate()) setLight(l);
 }
 
 void ViewportWidget::setContinuous(bool on) {
@@ -549,7 +643,8 @@ float ViewportWidget::sceneScaleM() const {
   return std::max(0.5f, glm::length(camera_.position - camera_.target));
 }
 
-// --- Mouse: left-drag orbit, right/middle-drag (or shift+left) pan, ctrl+left look, wheel dolly.
+// --- Mouse: left-drag orbit, right/middle-drag (or shift+left) pan, ctrl+left look, alt+left
+// moves the light, wheel dolly.
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   if (dragButton_ == Qt::NoButton) {
@@ -567,6 +662,10 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   lastMouse_ = pos;
   if (d.isNull()) return;
   const Qt::KeyboardModifiers mods = event->modifiers();
+  if (dragButton_ == Qt::LeftButton && (mods & Qt::AltModifier)) {
+    dragLight(d);
+    return;
+  }
   sl::Camera cam = camera_;
   if (dragButton_ == Qt::LeftButton && (mods & Qt::ControlModifier)) {
     cam.look(-d.x() * kLookDegPerPixel, -d.y() * kLookDegPerPixel);

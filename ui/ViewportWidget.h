@@ -48,8 +48,8 @@ class ViewportWidget : public QOpenGLWidget {
   void goToBookmark(int index);
   void resetView();
 
-  void setLight(const sl::DirectionalLight& light);
-  const sl::DirectionalLight& light() const { return light_; }
+  void setLight(const sl::Light& light);
+  const sl::Light& light() const { return light_; }
 
   /// Renders continuously (for techniques that converge over frames) instead of on demand.
   void setContinuous(bool on);
@@ -106,6 +106,8 @@ class ViewportWidget : public QOpenGLWidget {
   void renderProblem(const QString& message);
   /// The camera moved (mouse, keys, bookmark, reset).
   void cameraChanged();
+  /// The light changed (setLight, a new scene, Alt+drag in the view).
+  void lightChanged();
   /// Something that changes the image changed: the shown error is out of date.
   void viewChanged();
   /// A fresh error for the current view, in percent of covered pixels.
@@ -130,6 +132,11 @@ class ViewportWidget : public QOpenGLWidget {
   void applyStateToRenderer();
   void renderSplitHalf(int width, int height, std::string& problem);
   void updateOverlayWidget();
+  /// The light gizmo in widget pixels (sun arrow, bulb, or spot cone) for the overlay.
+  void updateLightGizmo();
+  /// Alt+left drag: az/el for a directional light, the position on a horizontal plane
+  /// for spot and point (the point under the cursor follows it, at the light's depth).
+  void dragLight(const QPoint& delta);
   void markViewChanged();
   void flyStep();
   void computeErrorIfStill();
@@ -151,7 +158,7 @@ class ViewportWidget : public QOpenGLWidget {
   std::shared_ptr<const sl::Scene> scene_;
   std::string techniqueId_;
   sl::Camera camera_;
-  sl::DirectionalLight light_;
+  sl::Light light_;
   bool continuous_ = false;
 
   // What the renderer saw last frame; any difference means "view changed".

@@ -25,7 +25,7 @@ namespace sl::cli {
 const char* const kBenchUsage =
     "       shadowlab-cli bench --scene NAME|FILE --technique ID[:KEY=V1,V2,...]...\n"
     "                           [--path NAME|INDEX | --camera NAME|INDEX] [--frames N]\n"
-    "                           [--warmup N] [--size WxH] [--light AZIMUTH,ELEVATION]\n"
+    "                           [--warmup N] [--size WxH] [--light LIGHT]\n"
     "                           [--set KEY=VALUE]... --csv FILE.csv [--chart FILE.png]\n"
     "                           [--chart-y auto|linear|log] [--x ms|bytes]\n";
 
@@ -39,7 +39,7 @@ struct BenchConfig {
   int frames = 12;
   int warmup = 3;
   int width = 640, height = 360;
-  std::optional<DirectionalLight> light;
+  std::optional<Light> light;
   std::string csv, chart;
   std::string chartY = "auto";
   ChartX chartX = ChartX::TimeMs;  ///< the chart's x (the CSV has both)

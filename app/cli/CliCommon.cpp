@@ -66,13 +66,43 @@ void checkFrameSize(int width, int height) {
   if (auto e = Renderer::checkFrameSize(width, height)) throw UsageError("--size: " + *e);
 }
 
-DirectionalLight parseLight(const std::string& opt, const std::string& v) {
-  auto c = v.find(',');
-  if (c == std::string::npos)
-    throw UsageError(opt + ": expected AZIMUTH,ELEVATION in degrees, got '" + v + "'");
-  DirectionalLight l;
-  l.azimuthDeg = float(parseDouble(opt, v.substr(0, c), -1e6, 1e6));
-  l.elevationDeg = float(parseDouble(opt, v.substr(c + 1), -1e6, 1e6));
+Light parseLight(const std::string& opt, const std::string& v) {
+  std::string kind = "dir", rest = v;
+  if (auto colon = v.find(':'); colon != std::string::npos) {
+    kind = v.substr(0, colon);
+    rest = v.substr(colon + 1);
+  }
+  std::vector<std::string> f;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = rest.find(',', start);
+    f.push_back(rest.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  auto num = [&](std::size_t i, const char* field) {
+    return float(parseDouble(opt + " (" + kind + " " + field + ")", f[i], -1e6, 1e6));
+  };
+  Light l;
+  if (kind == "dir" || kind == "directional") {
+    if (f.size() != 2)
+      throw UsageError(opt + ": expected [dir:]AZIMUTH,ELEVATION in degrees, got '" + v + "'");
+    l = Light::directional(num(0, "azimuth"), num(1, "elevation"));
+  } else if (kind == "point") {
+    if (f.size() != 3 && f.size() != 4)
+      throw UsageError(opt + ": expected point:X,Y,Z[,RANGE] (metres), got '" + v + "'");
+    l = Light::point({num(0, "x"), num(1, "y"), num(2, "z")},
+                     f.size() > 3 ? num(3, "range") : 0.0f);
+  } else if (kind == "spot") {
+    if (f.size() < 7 || f.size() > 9)
+      throw UsageError(opt + ": expected spot:X,Y,Z,DX,DY,DZ,OUTER_DEG[,INNER_DEG[,RANGE]], got '" +
+                       v + "'");
+    l = Light::spot({num(0, "x"), num(1, "y"), num(2, "z")},
+                    {num(3, "direction x"), num(4, "direction y"), num(5, "direction z")},
+                    num(6, "outer cone"), f.size() > 7 ? num(7, "inner cone") : 0.0f,
+                    f.size() > 8 ? num(8, "range") : 0.0f);
+  } else {
+    throw UsageError(opt + ": unknown light kind '" + kind + "' (" + kLightSyntax + ")");
+  }
   if (auto e = l.validate()) throw UsageError(opt + ": " + *e);
   return l;
 }

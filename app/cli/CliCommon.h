@@ -42,8 +42,13 @@ std::pair<int, int> parseSize(const std::string& text);  ///< "WxH" for --size
 /// Refuses a frame larger than this OpenGL implementation renders (Renderer::checkFrameSize):
 /// UsageError naming --size and the limit. Needs a current GL context.
 void checkFrameSize(int width, int height);
-/// "AZIMUTH,ELEVATION" in degrees, validated (for --light).
-DirectionalLight parseLight(const std::string& opt, const std::string& text);
+/// A --light value, validated: "dir:AZ,EL" or "AZ,EL" (directional, degrees),
+/// "point:X,Y,Z[,RANGE]", "spot:X,Y,Z,DX,DY,DZ,OUTER_DEG[,INNER_DEG[,RANGE]]" (metres,
+/// degrees; range 0 = infinite). UsageError naming the bad field.
+Light parseLight(const std::string& opt, const std::string& text);
+/// The --light syntax, for usage texts.
+inline constexpr const char* kLightSyntax =
+    "dir:AZ,EL | point:X,Y,Z[,RANGE] | spot:X,Y,Z,DX,DY,DZ,OUTER[,INNER[,RANGE]]";
 
 /// Loads a scene (UsageError on failure) and prints each of the loader's warnings on
 /// stderr as "warning: FILE: ..." (once per call: load a scene once per command).

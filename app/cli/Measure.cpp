@@ -106,30 +106,33 @@ std::vector<ConfigSpec> expandTechniqueSweep(const std::string& text, const std:
 }
 
 const std::vector<std::uint8_t>& ReferenceCache::evaluate(const FrameReadback& frame,
-                                                          const glm::vec3& towardsLight) {
+                                                          const Light& light) {
   auto same = [](const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
     return a.size() == b.size() &&
            (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)) == 0);
   };
-  if (valid_ && light_ == towardsLight && same(positions_, frame.positions) &&
+  if (valid_ && light_ == light && same(positions_, frame.positions) &&
       same(normals_, frame.normals))
     return mask_;
-  reference_.evaluate(frame.positions, frame.normals, towardsLight, mask_);
+  reference_.evaluate(frame.positions, frame.normals, light, mask_);
   positions_ = frame.positions;
   normals_ = frame.normals;
-  light_ = towardsLight;
+  light_ = light;
   valid_ = true;
   ++evaluations_;
   return mask_;
 }
 
 ConfigRunner::ConfigRunner(ConfigSpec spec, std::shared_ptr<const Scene> scene,
-                           const std::optional<DirectionalLight>& light)
+                           const std::optional<Light>& light)
     : spec_(std::move(spec)), renderer_(std::make_unique<Renderer>()) {
   liveRenderers().push_back(renderer_.get());
   renderer_->setScene(std::move(scene));
   if (light) renderer_->setLight(*light);
   if (auto e = renderer_->setTechnique(spec_.techniqueId)) throw UsageError(*e);
+  // A light the technique cannot render is refused up front (renderFrame would too).
+  if (const TechniqueInfo* info = Renderer::findTechnique(spec_.techniqueId))
+    if (auto e = checkLightSupport(*info, renderer_->light().type)) throw UsageError(*e);
   for (const auto& [k, v] : spec_.sets) {
     ParamSet* set = paramSetFor(*renderer_, k);
     if (!set)
@@ -192,7 +195,7 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
   if (!previousMask_.empty() && previousMask_.size() == frame.hardMask.size())
     s.maskChange = compareConsecutiveMasks(previousMask_, frame.hardMask);
   if (reference) {
-    const std::vector<std::uint8_t>& ref = reference->evaluate(frame, r.light().towardsLight());
+    const std::vector<std::uint8_t>& ref = reference->evaluate(frame, r.light());
     s.hasReference = true;
     s.error = compareShadowMasks(frame.hardMask, ref);
     if (!previousReference_.empty() && previousReference_.size() == ref.size() &&

@@ -45,14 +45,13 @@ std::vector<ConfigSpec> expandTechniqueSweep(const std::string& text,
 class ReferenceCache {
  public:
   explicit ReferenceCache(const Scene& scene) : reference_(scene) {}
-  const std::vector<std::uint8_t>& evaluate(const FrameReadback& frame,
-                                            const glm::vec3& towardsLight);
+  const std::vector<std::uint8_t>& evaluate(const FrameReadback& frame, const Light& light);
   int evaluations() const { return evaluations_; }
 
  private:
   ShadowReference reference_;
   std::vector<glm::vec4> positions_, normals_;
-  glm::vec3 light_{0.0f};
+  Light light_;
   std::vector<std::uint8_t> mask_;
   bool valid_ = false;
   int evaluations_ = 0;
@@ -88,7 +87,7 @@ struct MeasureOptions {
 class ConfigRunner {
  public:
   ConfigRunner(ConfigSpec spec, std::shared_ptr<const Scene> scene,
-               const std::optional<DirectionalLight>& light);
+               const std::optional<Light>& light);
   ~ConfigRunner();
   ConfigRunner(const ConfigRunner&) = delete;
   ConfigRunner& operator=(const ConfigRunner&) = delete;

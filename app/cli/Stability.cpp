@@ -17,7 +17,7 @@ namespace sl::cli {
 const char* const kStabilityUsage =
     "       shadowlab-cli stability --scene NAME|FILE --technique ID [--set KEY=VALUE]...\n"
     "                               [--frames N] [--orbit DEG_PER_FRAME] [--camera NAME|INDEX]\n"
-    "                               [--light AZIMUTH,ELEVATION] [--size WxH] [--warmup N]\n"
+    "                               [--light LIGHT] [--size WxH] [--warmup N]\n"
     "                               [--reference] --json FILE.json\n"
     "       shadowlab-cli stability --suite FILE.json [--frames-scale S] [--size WxH]\n"
     "                               [--case NAME]... [--techniques ID,ID...] [--json FILE.json]\n";
@@ -32,7 +32,7 @@ int runSingle(Args& a) {
   int frames = 100, warmup = 0, width = 640, height = 360;
   double orbit = 0.0;
   bool withReference = false;
-  std::optional<DirectionalLight> light;
+  std::optional<Light> light;
   for (std::size_t i = 1; i < a.rest.size(); ++i) {
     const std::string& o = a.rest[i];
     if (o == "--scene")

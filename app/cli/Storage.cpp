@@ -95,7 +95,12 @@ StorageOptions parse(Args& a) {
     } else if (opt == "--fov") {
       o.fovDeg = parseDouble(opt, a.take(i, opt), 1.0, 170.0);
     } else if (opt == "--light") {
-      const DirectionalLight l = parseLight(opt, a.take(i, opt));
+      const Light l = parseLight(opt, a.take(i, opt));
+      if (l.type != LightType::Directional)
+        throw UsageError(
+            "--light: the storage analysis is for a directional light "
+            "([dir:]AZIMUTH,ELEVATION), got a " +
+            std::string(lightTypeName(l.type)) + " light");
       if (l.elevationDeg < 0.0f)
         throw UsageError(
             "--light: elevation must be in 0..90 degrees (the hemisphere above "

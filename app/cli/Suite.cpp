@@ -15,6 +15,7 @@
 
 #include "StabilityRun.h"
 #include "core/JsonInput.h"
+#include "core/LightJson.h"
 #include "gl/EglContext.h"
 #include "scene/GltfLoader.h"
 
@@ -66,7 +67,7 @@ struct SuiteCase {
   std::string name, what, sceneName;
   std::string cameraName;  ///< a bookmark ("" with cameraObject or for the first one)
   std::optional<Camera> cameraObject;
-  std::optional<DirectionalLight> light;
+  std::optional<Light> light;
   std::string motion = "static";  ///< static | orbit | path
   double orbitDegPerFrame = 0.2;
   std::string path;
@@ -130,15 +131,8 @@ Camera cameraOf(const JsonReader& r, const json& c, const std::string& path) {
   return cam;
 }
 
-DirectionalLight lightOf(const JsonReader& r, const json& l, const std::string& path) {
-  r.onlyKeys(l, path, {"azimuth_deg", "elevation_deg"});
-  if (!l.contains("azimuth_deg") || !l.contains("elevation_deg"))
-    r.expected(l, path, "{\"azimuth_deg\": A, \"elevation_deg\": E}");
-  DirectionalLight light;
-  light.azimuthDeg = float(r.number(l["azimuth_deg"], jsonPath(path, "azimuth_deg")));
-  light.elevationDeg = float(r.number(l["elevation_deg"], jsonPath(path, "elevation_deg")));
-  if (auto e = light.validate()) r.fail(path, *e);
-  return light;
+Light lightOf(const JsonReader& r, const json& l, const std::string& path) {
+  return readLightJson(r, l, path, JsonKeyStyle::SnakeCase, true);
 }
 
 /// One entry of a case's "techniques": "ID" or {"id", "set", "label", "optional"}. An

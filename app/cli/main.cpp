@@ -41,9 +41,11 @@ const char* kUsage =
     "usage: shadowlab-cli list\n"
     "       shadowlab-cli render --scene NAME|FILE --technique ID [--set KEY=VALUE]...\n"
     "                            [--size WxH] [--frames N] [--camera NAME|INDEX]\n"
-    "                            [--light AZIMUTH,ELEVATION] [--preset FILE.json]\n"
+    "                            [--light LIGHT] [--preset FILE.json]\n"
     "                            --out FILE.png [--metrics FILE.json] [--error-image FILE.png]\n"
-    "       shadowlab-cli compare [--scene NAME|FILE] [--size WxH] --out-dir DIR\n";
+    "       shadowlab-cli compare [--scene NAME|FILE] [--size WxH] --out-dir DIR\n"
+    "  LIGHT: AZ,EL or dir:AZ,EL (degrees) | point:X,Y,Z[,RANGE] |\n"
+    "         spot:X,Y,Z,DX,DY,DZ,OUTER_DEG[,INNER_DEG[,RANGE]] (metres; range 0 = infinite)\n";
 
 struct RenderConfig {
   std::string scene = "default";
@@ -53,7 +55,7 @@ struct RenderConfig {
   int frames = 1;
   std::string camera;
   std::optional<sl::Camera> presetCamera;  ///< a --preset's camera (a later --camera wins)
-  std::optional<sl::DirectionalLight> light;
+  std::optional<sl::Light> light;
   std::string out, metrics, errorImage;
 };
 
@@ -196,6 +198,9 @@ void configure(sl::Renderer& r, const RenderConfig& cfg, const std::shared_ptr<s
   }
   r.setCamera(cfg.presetCamera ? *cfg.presetCamera : pickCamera(*scene, cfg.camera));
   if (cfg.light) r.setLight(*cfg.light);
+  // A light the technique cannot render: exit 2 with the renderer's own message.
+  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r.techniqueId()))
+    if (auto e = sl::checkLightSupport(*info, r.light().type)) throw UsageError(*e);
 }
 
 int cmdList() {

@@ -107,25 +107,4 @@ void Camera::look(float yawDeg, float pitchDeg) {
   target = rotateAround(position, target, yawDeg, pitchDeg);
 }
 
-glm::vec3 DirectionalLight::towardsLight() const {
-  float az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
-  return glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-}
-
-DirectionalLight DirectionalLight::fromDirection(const glm::vec3& towards) {
-  glm::vec3 d = glm::normalize(towards);
-  DirectionalLight l;
-  l.elevationDeg = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
-  l.azimuthDeg = glm::degrees(std::atan2(d.x, d.z));
-  return l;
-}
-
-std::optional<std::string> DirectionalLight::validate() const {
-  if (!std::isfinite(azimuthDeg) || !std::isfinite(elevationDeg))
-    return "light: azimuth or elevation is not finite";
-  if (elevationDeg < -90.0f || elevationDeg > 90.0f)
-    return "light: elevation must be in -90..90 degrees";
-  return std::nullopt;
-}
-
 }  // namespace sl

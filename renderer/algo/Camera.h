@@ -1,4 +1,4 @@
-// Camera, directional light and the small geometric types shared by every layer.
+// Camera and the small geometric types shared by every layer (the light: Light.h).
 // Plain math on glm, no GL: the GUI, CLI and tests all manipulate these.
 #pragma once
 
@@ -51,16 +51,6 @@ struct Camera {
   void pan(float rightM, float upM);         ///< moves position and target
   void fly(float forwardM, float rightM, float upM);
   void look(float yawDeg, float pitchDeg);  ///< turns the view, position fixed
-};
-
-/// A directional light ("the sun"): azimuth around +y measured from +z towards +x,
-/// elevation above the horizon.
-struct DirectionalLight {
-  float azimuthDeg = 35.0f;
-  float elevationDeg = 50.0f;
-  glm::vec3 towardsLight() const;  ///< unit vector from the scene towards the light
-  static DirectionalLight fromDirection(const glm::vec3& towardsLight);
-  std::optional<std::string> validate() const;
 };
 
 }  // namespace sl

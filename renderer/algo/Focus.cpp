@@ -139,4 +139,38 @@ std::optional<std::string> fitDirectionalLight(const Camera& camera, float aspec
   return std::nullopt;
 }
 
+std::optional<std::string> fitSpotLight(const Light& light, const Aabb& sceneBounds,
+                                        LightFit& out) {
+  if (light.type != LightType::Spot) return "light: not a spot light";
+  if (auto err = light.validate()) return err;
+  if (!sceneBounds.valid()) return "scene: empty bounds (no geometry)";
+  const glm::vec3 pos = light.positionM, axis = light.spotAxis();
+  // Farthest point of the bounds along the axis, within range.
+  float far = 0.0f;
+  for (const glm::vec3& c : sceneBounds.corners()) far = std::max(far, glm::dot(c - pos, axis));
+  if (light.rangeM > 0.0f) far = std::min(far, light.rangeM);
+  if (!(far > 0.0f)) return "spot light: the scene lies behind the light or beyond its range";
+  // Nearest point of the bounds: a point inside the cone at distance r lies at least
+  // r cos(outer) along the axis.
+  const glm::vec3 nearest = glm::clamp(pos, sceneBounds.min, sceneBounds.max);
+  const float dist = glm::length(nearest - pos);
+  const float cosOuter = std::cos(glm::radians(light.outerConeDeg));
+  float near = std::max(0.99f * dist * cosOuter, 1e-3f * far);
+  far *= 1.01f;
+  if (!(near < far)) return "spot light: the scene lies behind the light or beyond its range";
+  const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+  const float fov = 2.0f * glm::radians(light.outerConeDeg);
+  out.view = glm::lookAt(pos, pos + axis, up);
+  out.proj = glm::perspective(fov, 1.0f, near, far);
+  out.viewProj = out.proj * out.view;
+  const float side = 2.0f * std::tan(0.5f * fov);
+  out.extentM = glm::vec2(side);
+  out.depthRangeM = far - near;
+  out.perspective = true;
+  out.nearM = near;
+  out.farM = far;
+  out.focusPoints.clear();
+  return std::nullopt;
+}
+
 }  // namespace sl

@@ -1,7 +1,8 @@
 // Focusing a directional light's orthographic frustum on what the camera sees:
 // the light's x/y extent covers the intersection of the view frustum and the scene
 // bounds (the "focus region"), the depth range covers every possible caster.
-// Also carries DA-RTW's rotation of the light image plane (seed 000, R_k).
+// Also carries DA-RTW's rotation of the light image plane (seed 000, R_k), and the
+// perspective frustum of a spot light (its cone, near/far fitted to the scene).
 #pragma once
 
 #include <optional>
@@ -11,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "Camera.h"
+#include "Light.h"
 
 namespace sl {
 
@@ -27,11 +29,16 @@ glm::mat4 lightBaseView(const glm::vec3& towardsLight);
 glm::mat4 imagePlaneRotation(const glm::mat2& rotation);
 
 struct LightFit {
-  glm::mat4 view{1.0f};                ///< world -> light view (rotation applied)
-  glm::mat4 proj{1.0f};                ///< orthographic, light view -> clip
-  glm::mat4 viewProj{1.0f};            ///< proj * view
-  glm::vec2 extentM{0.0f};             ///< width and height of the light frustum in metres
+  glm::mat4 view{1.0f};      ///< world -> light view (rotation applied)
+  glm::mat4 proj{1.0f};      ///< orthographic (directional) or perspective (spot)
+  glm::mat4 viewProj{1.0f};  ///< proj * view
+  /// Width and height of the light frustum in metres at clip w = 1: orthographic, the
+  /// frustum's size; perspective, its size at 1 m along the axis (2 tan(cone)); metres per
+  /// unit of light uv at a point = extentM * its clip w.
+  glm::vec2 extentM{0.0f};
   float depthRangeM = 0.0f;            ///< near..far of the light frustum in metres
+  bool perspective = false;            ///< proj is a perspective projection (spot)
+  float nearM = 0.0f, farM = 0.0f;     ///< perspective: near and far planes, metres
   std::vector<glm::vec3> focusPoints;  ///< vertices of the focus region (world)
 };
 
@@ -47,5 +54,13 @@ std::optional<std::string> fitDirectionalLight(const Camera& camera, float aspec
                                                const Aabb& sceneBounds,
                                                const glm::vec3& towardsLight,
                                                const FocusSettings& settings, LightFit& out);
+
+/// A spot light's one perspective frustum: from its position along its axis, a square
+/// field of view of twice the outer cone angle (the cone's bounding square), near and far
+/// fitted to the scene bounds within the light's range. Every point of the scene inside
+/// the cone lies inside the frustum: near is the bounds' distance times cos(cone) (or
+/// 1e-3 far when the light is inside the bounds). Error for a light that is not a valid
+/// spot, or empty bounds, or bounds wholly behind the light or beyond its range.
+std::optional<std::string> fitSpotLight(const Light& light, const Aabb& sceneBounds, LightFit& out);
 
 }  // namespace sl

@@ -10,10 +10,37 @@ glm::mat3 lightNormalMatrix(const glm::mat4& lightViewProj) {
   return glm::transpose(glm::inverse(glm::mat3(lightViewProj)));
 }
 
-glm::vec2 receiverDepthGradient(const glm::mat3& normalMatrix, const glm::vec3& N) {
-  glm::vec3 m = normalMatrix * N;
+LightPlaneMatrix lightPlaneMatrix(const glm::mat4& m) {
+  LightPlaneMatrix p;
+  const bool affine = m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f;
+  if (affine) {  // bit for bit what the orthographic model always used
+    p.normal = lightNormalMatrix(m);
+    return p;
+  }
+  const glm::mat4 it = glm::transpose(glm::inverse(m));
+  p.normal = glm::mat3(it);
+  p.offset = glm::vec3(it[3]);
+  return p;
+}
+
+glm::vec2 receiverDepthGradient(const LightPlaneMatrix& plane, const glm::vec3& N,
+                                const glm::vec3& P) {
+  glm::vec3 m = plane.normal * N - plane.offset * glm::dot(N, P);
   if (!(std::abs(m.z) > 1e-4f * glm::length(m))) return glm::vec2(0.0f);
   return -glm::vec2(m) / m.z;
+}
+
+glm::vec2 receiverDepthGradient(const glm::mat3& normalMatrix, const glm::vec3& N) {
+  return receiverDepthGradient(LightPlaneMatrix{normalMatrix, glm::vec3(0.0f)}, N, glm::vec3(0.0f));
+}
+
+float windowDepthPerM(float depthPerMAtUnitW, float clipW) {
+  return depthPerMAtUnitW / (clipW * clipW);
+}
+
+float depthPerMAtUnitW(bool perspective, float depthRangeM, float nearM, float farM) {
+  if (perspective) return farM * nearM / (farM - nearM);
+  return 1.0f / (depthRangeM > 0.0f ? depthRangeM : 1.0f);
 }
 
 float receiverDepthAt(glm::vec2 uv, float z, glm::vec2 gradient, glm::vec2 centre) {
@@ -27,19 +54,26 @@ float shadowDepthBias(const ShadowBiasSettings& s, glm::vec2 gradient, glm::vec2
   return s.slopeTexels * rise + s.constantM * depthPerM;
 }
 
+glm::vec4 mapUvzw(const DepthMapFrame& map, glm::vec3 P) {
+  const glm::vec4 c = map.viewProj * glm::vec4(P, 1.0f);
+  const float w = c.w > 1e-6f ? c.w : 1e-6f;
+  return glm::vec4(glm::vec3(c) / w * 0.5f + 0.5f, w);
+}
+
 MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
                           glm::vec3 towardsLight, glm::vec2 localTexelUv,
                           const ShadowBiasSettings& s) {
-  const float texelM = std::max(localTexelUv.x * map.extentM.x, localTexelUv.y * map.extentM.y);
+  const float w = mapUvzw(map, P).w;
+  const float texelM = std::max(localTexelUv.x * map.extentM.x, localTexelUv.y * map.extentM.y) * w;
   const float cosL = std::clamp(glm::dot(N, towardsLight), -1.0f, 1.0f);
   const float sinL = std::sqrt(std::max(1.0f - cosL * cosL, 0.0f));
   const glm::vec3 offset = P + N * (s.normalTexels * texelM * sinL);
-  const glm::vec3 uvz = glm::vec3(map.viewProj * glm::vec4(offset, 1.0f)) * 0.5f + 0.5f;
+  const glm::vec3 uvz = glm::vec3(mapUvzw(map, offset));
   MapReceiver r;
   r.uv = glm::vec2(uvz);
   r.z = uvz.z;
-  r.gradient = receiverDepthGradient(lightNormalMatrix(map.viewProj), N);
-  r.bias = shadowDepthBias(s, r.gradient, localTexelUv, texelM, map.depthPerM);
+  r.gradient = receiverDepthGradient(lightPlaneMatrix(map.viewProj), N, P);
+  r.bias = shadowDepthBias(s, r.gradient, localTexelUv, texelM, windowDepthPerM(map.depthPerM, w));
   return r;
 }
 

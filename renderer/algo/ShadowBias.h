@@ -4,7 +4,9 @@
 // depth, in UNWARPED light space), so a planar receiver compares against itself exactly.
 // Normal offset, slope term and constant are scaled by the LOCAL texel size, so warped,
 // partitioned or paged maps reuse the model by saying where their texel centres are and
-// how large their texels are locally.
+// how large their texels are locally. Orthographic (directional) and perspective (spot)
+// light matrices alike: a plane stays a plane under the projective map, so window depth is
+// affine in light uv on it; metres per uv and window depth per metre vary with clip w.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -19,14 +21,34 @@ struct ShadowBiasSettings {
   bool operator==(const ShadowBiasSettings&) const = default;
 };
 
-/// transpose(inverse(mat3(lightViewProj))): maps a world normal to the clip-space plane
-/// normal. The GLSL uniform u_lightNormalMatrix.
+/// How a world plane (N, -N.P) maps to a clip-space plane: the first three rows of
+/// transpose(inverse(lightViewProj)) split into the part that multiplies N (`normal`, the
+/// GLSL u_lightNormalMatrix) and the one that multiplies the plane's offset -N.P
+/// (`offset`, u_lightPlaneOffset). For an affine (orthographic) matrix `normal` is
+/// transpose(inverse(mat3(lightViewProj))) and `offset` is exactly zero.
+struct LightPlaneMatrix {
+  glm::mat3 normal{1.0f};
+  glm::vec3 offset{0.0f};
+};
+LightPlaneMatrix lightPlaneMatrix(const glm::mat4& lightViewProj);
+/// transpose(inverse(mat3(lightViewProj))) (the orthographic case of lightPlaneMatrix).
 glm::mat3 lightNormalMatrix(const glm::mat4& lightViewProj);
 
-/// d(window depth) / d(light uv) on the plane with world normal N, for an orthographic
-/// light: m = normalMatrix * N, gradient = -m.xy / m.z; (0, 0) when the light sees the
-/// plane edge-on (|m.z| <= 1e-4 |m|).
+/// d(window depth) / d(light uv) on the plane through P with world normal N: the clip
+/// plane m = normal * N - offset * dot(N, P), gradient = -m.xy / m.z (the 0.5 factors of uv
+/// and window depth cancel); (0, 0) when the light sees the plane edge-on
+/// (|m.z| <= 1e-4 |m|).
+glm::vec2 receiverDepthGradient(const LightPlaneMatrix& plane, const glm::vec3& N,
+                                const glm::vec3& P);
+/// The orthographic case (no dependence on P).
 glm::vec2 receiverDepthGradient(const glm::mat3& normalMatrix, const glm::vec3& N);
+
+/// Window depth per metre along the light at a point of clip w: `depthPerMAtUnitW` / w^2.
+/// Orthographic: w = 1 and depthPerMAtUnitW = 1 / depth range; perspective (glm, depth -1..1
+/// to window 0..1): depthPerMAtUnitW = far * near / (far - near), w = view depth.
+float windowDepthPerM(float depthPerMAtUnitW, float clipW);
+/// The window depth per metre at w = 1 of a light fit (see windowDepthPerM).
+float depthPerMAtUnitW(bool perspective, float depthRangeM, float nearM, float farM);
 
 /// The receiver's window depth carried along its plane to the light uv `centre`:
 /// z + gradient . (centre - uv).
@@ -34,18 +56,25 @@ float receiverDepthAt(glm::vec2 uv, float z, glm::vec2 gradient, glm::vec2 centr
 
 /// The slope and constant terms, in window depth: slopeTexels * min(|g.x| t.x + |g.y| t.y,
 /// 10 * texelM * depthPerM) + constantM * depthPerM, with t the local texel size in light uv,
-/// texelM the largest local texel in metres, depthPerM = 1 / light depth range (m).
+/// texelM the largest local texel in metres AT THE RECEIVER (extent x clip w), depthPerM the
+/// window depth per metre at the receiver (windowDepthPerM).
 float shadowDepthBias(const ShadowBiasSettings& s, glm::vec2 gradient, glm::vec2 localTexelUv,
                       float texelM, float depthPerM);
 
 /// One depth map as the bias model sees it: a technique with several maps (an array, an
-/// atlas, cascades, cube faces) has one per map, each with its own matrix. GLSL:
-/// u_mapViewProj / u_mapExtentM / u_mapDepthPerM[i] of depth_map_test.glsl.
+/// atlas, cascades, cube faces) has one per map, each with its own matrix, orthographic or
+/// perspective. GLSL: u_mapViewProj / u_mapExtentM / u_mapDepthPerM[i] of
+/// depth_map_test.glsl.
 struct DepthMapFrame {
   glm::mat4 viewProj{1.0f};  ///< world -> the map's clip space (orthographic: w = 1)
-  glm::vec2 extentM{1.0f};   ///< metres per unit of the map's light uv
-  float depthPerM = 1.0f;    ///< window depth per metre along the light
+  glm::vec2 extentM{1.0f};   ///< metres per unit of the map's light uv, at clip w = 1
+  float depthPerM = 1.0f;    ///< window depth per metre along the light, at clip w = 1
 };
+
+/// World point P in `map`: xyz = light uv and window depth (after the divide by clip w),
+/// w = clip w (1 for an orthographic map; kept >= 1e-6 behind a perspective light, where
+/// nothing is lit). GLSL: mapUvzw.
+glm::vec4 mapUvzw(const DepthMapFrame& map, glm::vec3 P);
 
 /// A pixel's receiver in the SELECTED map (GLSL: the g_receiver* of shadowLookupCoord):
 /// after the normal offset, in that map's light uv and window depth.
@@ -57,8 +86,9 @@ struct MapReceiver {
 };
 
 /// The receiver of world point P with normal N in `map`, whose texels are `localTexelUv`
-/// wide (in its light uv) around P: normal offset by the largest local texel in metres
-/// times sin(theta_L), then the plane and the bias terms in that map. Comparing
+/// wide (in its light uv) around P: normal offset by the largest local texel in metres at P
+/// (extent x clip w) times sin(theta_L), then the plane (through the map's full matrix)
+/// and the bias terms in that map, with the window depth per metre at P's clip w. Comparing
 /// receiverDepthAt(r.uv, r.z, r.gradient, centre) - r.bias with the depth the map stores at
 /// `centre` is the hard test.
 MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,

@@ -4,6 +4,7 @@
 
 #include "algo/Params.h"
 #include "core/JsonInput.h"
+#include "core/LightJson.h"
 #include "core/Renderer.h"
 
 namespace sl {
@@ -82,12 +83,7 @@ Preset parsePreset(const JsonReader& r, const json& j) {
     p.camera = cam;
   }
   if (const json* l = JsonReader::member(j, "light")) {
-    r.onlyKeys(*l, "light", {"azimuthDeg", "elevationDeg"});
-    DirectionalLight light;
-    light.azimuthDeg = float(r.number(*l, "light", "azimuthDeg", light.azimuthDeg));
-    light.elevationDeg = float(r.number(*l, "light", "elevationDeg", light.elevationDeg));
-    if (auto err = light.validate()) r.fail("light", *err);
-    p.light = light;
+    p.light = readLightJson(r, *l, "light", JsonKeyStyle::CamelCase, false);
   }
   return p;
 }
@@ -119,8 +115,7 @@ std::string presetToJson(const Preset& p) {
                    {"nearM", c.nearM},
                    {"farM", c.farM}};
   }
-  if (p.light)
-    j["light"] = {{"azimuthDeg", p.light->azimuthDeg}, {"elevationDeg", p.light->elevationDeg}};
+  if (p.light) j["light"] = lightToJson(*p.light, JsonKeyStyle::CamelCase);
   return j.dump(2);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "algo/Camera.h"
+#include "algo/Light.h"
 
 namespace sl {
 
@@ -18,7 +19,7 @@ struct Preset {
   std::string technique;
   std::map<std::string, std::string> params;  ///< key -> value text (validated on apply)
   std::optional<Camera> camera;
-  std::optional<DirectionalLight> light;
+  std::optional<Light> light;  ///< core/LightJson: {"type", ...}
 };
 
 /// Reads a preset; the error names the file and the problem.

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "common/shared_constants.h"
+#include "core/LightBinding.h"
 #include "core/ParamBinding.h"
 #include "core/SceneGpu.h"
 #include "core/Technique.h"
@@ -91,7 +92,7 @@ struct RendererState {
   std::map<std::string, ParamSet, std::less<>> techniqueParams;
   ParamSet rendererParams{rendererParamDecls()};
   Camera camera;
-  DirectionalLight light;
+  Light light;
   Renderer::FrameSizeLimit maxFrame;  ///< the context's limits, queried once
   FrameStats stats;
   Publication publication;
@@ -215,6 +216,13 @@ const TechniqueInfo* Renderer::findTechnique(std::string_view id) {
   return nullptr;
 }
 
+std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightType type) {
+  for (LightType t : info.lights)
+    if (t == type) return std::nullopt;
+  return "technique '" + info.id + "' supports: " + lightTypeList(info.lights) + "; the light is " +
+         "a " + std::string(lightTypeName(type)) + " light";
+}
+
 Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<RendererState>()) {
   if (epoxy_gl_version() < 45 || !epoxy_is_desktop_gl())
     throw std::runtime_error("ShadowLab needs a desktop OpenGL 4.5 core context; got " +
@@ -311,7 +319,7 @@ std::optional<std::string> Renderer::checkFrameSize(int width, int height) {
 void Renderer::setScene(std::shared_ptr<const Scene> scene) {
   s_->sceneGpu = scene ? std::make_unique<SceneGpu>(*scene) : nullptr;
   s_->scene = std::move(scene);
-  if (s_->scene && s_->scene->sun) s_->light = *s_->scene->sun;
+  if (s_->scene && s_->scene->light) s_->light = *s_->scene->light;
   if (s_->technique) s_->technique->resetTemporalState();
 }
 
@@ -361,10 +369,10 @@ void Renderer::setCamera(const Camera& camera) {
 const Camera& Renderer::camera() const {
   return s_->camera;
 }
-void Renderer::setLight(const DirectionalLight& light) {
+void Renderer::setLight(const Light& light) {
   s_->light = light;
 }
-const DirectionalLight& Renderer::light() const {
+const Light& Renderer::light() const {
   return s_->light;
 }
 const FrameStats& Renderer::stats() const {
@@ -402,15 +410,17 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   if (!s.scene || !s.sceneGpu) return neutral("no scene loaded");
   if (auto err = s.camera.validate()) return neutral(*err);
   if (auto err = s.light.validate()) return neutral(*err);
+  if (const TechniqueInfo* info = findTechnique(s.techniqueId))
+    if (auto err = checkLightSupport(*info, s.light.type)) return neutral(*err);
 
   {  // What this frame shows; the error overlay is only drawn for a matching reference.
     const Camera& c = s.camera;
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%p|%s|%u|%d|%d|%g,%g,%g|%g,%g,%g|%g,%g,%g|%g|%g,%g",
+    std::snprintf(buf, sizeof buf, "%p|%s|%u|%d|%d|%g,%g,%g|%g,%g,%g|%g,%g,%g|%g|%s",
                   static_cast<const void*>(s.scene.get()), s.techniqueId.c_str(),
                   params().revision(), width, height, c.position.x, c.position.y, c.position.z,
                   c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg,
-                  s.light.azimuthDeg, s.light.elevationDeg);
+                  s.light.describe().c_str());
     s.frameSignature = buf;
   }
   const auto frameStart = std::chrono::steady_clock::now();
@@ -418,7 +428,6 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   Targets& t = s.targets;
   const float aspect = float(width) / float(height);
   const glm::mat4 view = s.camera.view(), proj = s.camera.projection(aspect);
-  const glm::vec3 towardsLight = s.light.towardsLight();
   ++s.frameIndex;
   s.timer->beginFrame();
   const bool publishing = !s.requested.empty();
@@ -454,7 +463,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                    aspect,
                    view,
                    proj,
-                   towardsLight,
+                   s.light,
                    width,
                    height,
                    t.position,
@@ -482,7 +491,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     if (s.technique->resolveMode() == ResolveMode::Lookup) {
       const gl::Program& resolve = s.resolveProgramFor(s.technique->lookupShader());
       resolve.use();
-      resolve.set("u_towardsLight", towardsLight);
+      bindLight(resolve, s.light);
       bindParams(resolve, params());
       s.technique->bindLookup(resolve, SL_UNIT_LOOKUP_FIRST);
       glBindVertexArray(s.emptyVao.id());
@@ -491,9 +500,9 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
       // Map 0 for every pixel unless the technique writes its selection.
       const GLuint zero = 0;
       glClearTexImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-      const ResolveTargets targets{width,      height,     t.position, t.normal,
-                                   t.hard,     t.filtered, t.aliasing, t.texel,
-                                   t.mapIndex, t.resolve.id(), towardsLight};
+      const ResolveTargets targets{width,      height,         t.position, t.normal,
+                                   t.hard,     t.filtered,     t.aliasing, t.texel,
+                                   t.mapIndex, t.resolve.id(), s.light};
       s.technique->resolveDeferred(targets, params());
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                       GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -519,7 +528,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     glBindTextureUnit(SL_UNIT_ALIASING, t.aliasing.id());
     glBindTextureUnit(SL_UNIT_TEXEL, t.texel.id());
     glBindTextureUnit(SL_UNIT_MAP_INDEX, t.mapIndex.id());
-    c.set("u_towardsLight", towardsLight);
+    bindLight(c, s.light);
     c.set("u_cameraPos", s.camera.position);
     bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
     if (s.rendererParams.getInt("view.overlay") == SL_OVERLAY_ERROR &&
@@ -606,8 +615,7 @@ Renderer::ErrorResult Renderer::computeError() const {
     s_->reference = std::make_shared<ShadowReference>(*s_->scene);
     s_->referenceScene = s_->scene.get();
   }
-  s_->reference->evaluate(res.frame.positions, res.frame.normals, s_->light.towardsLight(),
-                          res.referenceMask);
+  s_->reference->evaluate(res.frame.positions, res.frame.normals, s_->light, res.referenceMask);
   res.stats = compareShadowMasks(res.frame.hardMask, res.referenceMask);
   // Keep it for the error overlay (GL order: bottom row first).
   const Targets& t = s_->targets;

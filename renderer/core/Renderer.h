@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "algo/Camera.h"
+#include "algo/Light.h"
 #include "algo/Params.h"
 #include "core/FrameStats.h"
 #include "metrics/ErrorMetrics.h"
@@ -68,9 +69,14 @@ struct TechniqueInfo {
   std::vector<ParamDecl> params;
   std::vector<PassDecl> passes;  ///< the technique's own passes, in frame order
   std::vector<PublicationDecl> publications;
+  /// The light kinds it renders; renderFrame refuses any other (an error, a neutral frame).
+  std::vector<LightType> lights{LightType::Directional};
   /// The declaration matching `key` (exactly or by pattern); null when not published.
   const PublicationDecl* findPublication(std::string_view key) const;
 };
+/// An error like "technique 'uniform' supports: directional, spot; the light is a point
+/// light" when `info` does not support `type`, else nothing.
+std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightType type);
 
 /// Passes of the renderer itself, declared once: "gbuffer" (before the technique's),
 /// "resolve" and "composite" (after).
@@ -205,12 +211,13 @@ class Renderer {
 
   void setCamera(const Camera& camera);
   const Camera& camera() const;
-  void setLight(const DirectionalLight& light);
-  const DirectionalLight& light() const;
+  void setLight(const Light& light);
+  const Light& light() const;
 
   /// Renders one frame of width x height into `targetFramebuffer` (0 = default).
   /// Returns an error (and renders a neutral frame) when the camera, light or size is
-  /// degenerate; the renderer keeps working.
+  /// degenerate, or the technique does not support the light's kind (checkLightSupport);
+  /// the renderer keeps working.
   std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer);
   const FrameStats& stats() const;
 

@@ -34,8 +34,19 @@ void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint fra
   ctx.sceneGpu.draw(program, SL_UNIT_MATERIAL);
 }
 
+float DepthMapView::depthPerMAtUnitW() const {
+  return sl::depthPerMAtUnitW(perspective, depthRangeM, nearM, farM);
+}
+
 DepthMapView depthMapView(const LightFit& fit) {
-  return {fit.viewProj, fit.extentM, fit.depthRangeM > 0.0f ? fit.depthRangeM : 1.0f};
+  DepthMapView v;
+  v.lightViewProj = fit.viewProj;
+  v.extentM = fit.extentM;
+  v.depthRangeM = fit.depthRangeM > 0.0f ? fit.depthRangeM : 1.0f;
+  v.perspective = fit.perspective;
+  v.nearM = fit.nearM;
+  v.farM = fit.farM;
+  return v;
 }
 
 void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> maps) {
@@ -46,10 +57,12 @@ void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> m
   for (size_t i = 0; i < maps.size(); ++i) {
     const std::string at = "[" + std::to_string(i) + "]";
     const DepthMapView& m = maps[i];
+    const LightPlaneMatrix plane = lightPlaneMatrix(m.lightViewProj);
     resolve.set(("u_mapViewProj" + at).c_str(), m.lightViewProj);
-    resolve.set(("u_mapNormalMatrix" + at).c_str(), lightNormalMatrix(m.lightViewProj));
+    resolve.set(("u_mapNormalMatrix" + at).c_str(), plane.normal);
+    resolve.set(("u_mapPlaneOffset" + at).c_str(), plane.offset);
     resolve.set(("u_mapExtentM" + at).c_str(), m.extentM);
-    resolve.set(("u_mapDepthPerM" + at).c_str(), 1.0f / m.depthRangeM);
+    resolve.set(("u_mapDepthPerM" + at).c_str(), m.depthPerMAtUnitW());
   }
 }
 

@@ -26,13 +26,19 @@ void beginDepthPass(GLuint framebuffer, int width, int height);
 void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
                  int height, const glm::mat4& lightViewProj);
 
-/// One depth map of a lookup (common/depth_map_test.glsl): its own orthographic light
-/// matrix and extent. A technique with several maps (an array, an atlas, cascades, faces)
-/// has one view per map; its GLSL selection function picks the index.
+/// One depth map of a lookup (common/depth_map_test.glsl): its own light matrix and
+/// extent. A technique with several maps (an array, an atlas, cascades, faces) has one view
+/// per map; its GLSL selection function picks the index. The matrix may be orthographic
+/// (directional) or perspective (a spot's frustum, a cube face): the lookup divides by the
+/// map's clip w.
 struct DepthMapView {
-  glm::mat4 lightViewProj{1.0f};  ///< world -> the map's clip space
-  glm::vec2 extentM{1.0f};        ///< metres per unit of the map's light uv
-  float depthRangeM = 1.0f;       ///< metres per unit of window depth
+  glm::mat4 lightViewProj{1.0f};    ///< world -> the map's clip space
+  glm::vec2 extentM{1.0f};          ///< metres per unit of the map's light uv, at clip w = 1
+  float depthRangeM = 1.0f;         ///< orthographic: metres per unit of window depth
+  bool perspective = false;         ///< a perspective map (sl::LightFit::perspective)
+  float nearM = 0.0f, farM = 0.0f;  ///< perspective: the frustum's near and far planes
+  /// Window depth per metre along the light at clip w = 1 (sl::depthPerMAtUnitW).
+  float depthPerMAtUnitW() const;
 };
 /// The view of one map covering this frame's fit.
 DepthMapView depthMapView(const LightFit& fit);

@@ -30,7 +30,7 @@ struct FrameContext {
   const Camera& camera;
   float aspect = 1.0f;
   glm::mat4 cameraView{1.0f}, cameraProj{1.0f};
-  glm::vec3 towardsLight{0.0f, 1.0f, 0.0f};
+  const Light& light;         ///< validated, of a kind the technique supports
   int width = 0, height = 0;  ///< camera image size in pixels
   /// Camera G-buffer of this frame (for backward analysis): world position (w = covered)
   /// and world normal, RGBA32F, width x height.
@@ -80,7 +80,7 @@ struct ResolveTargets {
   const gl::Texture& texel;
   const gl::Texture& mapIndex;
   GLuint framebuffer = 0;  ///< the five as colour attachments 0..4, for a fragment pass
-  glm::vec3 towardsLight{0.0f, 1.0f, 0.0f};
+  const Light& light;      ///< the frame's light (sl::bindLight: common/light.glsl)
   /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the five
   /// targets to image units SL_IMAGE_RESOLVE_* (write-only), for a compute pass.
   void bindForCompute() const;
@@ -101,8 +101,8 @@ class Technique {
   /// Lookup mode: binds what the lookup needs (textures from `firstUnit` on, per-map
   /// uniforms) to `resolve`. Declared parameters are already bound (bindParams).
   virtual void bindLookup(const gl::Program& /*resolve*/, int /*firstUnit*/) const {}
-  /// Deferred mode: writes the resolve targets for this frame (the map index optionally). Throws like
-  /// renderShadows. Declared parameters are already bound to programs().
+  /// Deferred mode: writes the resolve targets for this frame (the map index optionally). Throws
+  /// like renderShadows. Declared parameters are already bound to programs().
   virtual void resolveDeferred(const ResolveTargets& /*targets*/, const ParamSet& /*params*/) {}
   /// Every program of the technique (not the renderer's resolve pass). The renderer binds
   /// the declared parameters (ParamDecl::uniform) to each before renderShadows, and refuses

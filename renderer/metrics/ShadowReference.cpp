@@ -101,16 +101,34 @@ const Material& materialOf(const Scene& scene, const MeshPrimitive& prim) {
 }
 
 /// The occlusion ray of isLit() (both paths build it here so they agree bit for bit).
-/// `lightDir` is unit; returns false when the point faces away from the light.
-bool makeShadowRay(const glm::vec3& p, const glm::vec3& n, const glm::vec3& lightDir,
-                   float normalOffset, float tnear, RTCRay& ray) {
+/// Returns false when the point faces away from the light or lies outside its cone or
+/// range. Directional: towards `light`'s unit direction `dirTowards`, to infinity; spot and
+/// point: towards the light's position, ending tnear short of it.
+bool makeShadowRay(const glm::vec3& p, const glm::vec3& n, const Light& light,
+                   const glm::vec3& dirTowards, float normalOffset, float tnear, RTCRay& ray) {
+  const bool positional = light.type != LightType::Directional;
+  const glm::vec3 lightDir = positional ? light.towardsLight(p) : dirTowards;
   const float nDotL = glm::dot(n, lightDir);
   if (!(nDotL > 0.0f)) return false;  // facing away (or NaN)
+  if (positional && !light.illuminates(p)) return false;
   const glm::vec3 origin = p + normalOffset * glm::normalize(n);
+  glm::vec3 dir = lightDir;
+  float tfar = std::numeric_limits<float>::infinity();
+  if (positional) {
+    const glm::vec3 toLight = light.positionM - origin;
+    const float dist = glm::length(toLight);
+    if (!(dist > 2.0f * tnear)) {  // at the light: nothing can lie between (tfar < tnear)
+      ray.tnear = tnear;
+      ray.tfar = 0.0f;
+      return true;
+    }
+    dir = toLight / dist;
+    tfar = dist - tnear;
+  }
   ray.org_x = origin.x, ray.org_y = origin.y, ray.org_z = origin.z;
-  ray.dir_x = lightDir.x, ray.dir_y = lightDir.y, ray.dir_z = lightDir.z;
+  ray.dir_x = dir.x, ray.dir_y = dir.y, ray.dir_z = dir.z;
   ray.tnear = tnear;
-  ray.tfar = std::numeric_limits<float>::infinity();
+  ray.tfar = tfar;
   ray.time = 0.0f;
   ray.mask = 0xFFFFFFFFu;
   ray.id = 0;
@@ -305,8 +323,19 @@ bool ShadowReference::isLit(const glm::vec3& p, const glm::vec3& n,
                             const glm::vec3& towardsLight) const {
   const auto dir = unitLightDir(towardsLight);
   if (!dir) return false;
+  return isLitTowards(p, n, Light::directionalFromTowards(*dir), *dir);
+}
+
+bool ShadowReference::isLit(const glm::vec3& p, const glm::vec3& n, const Light& light) const {
+  if (light.validate()) return false;
+  return isLitTowards(p, n, light, light.directionalTowards());
+}
+
+bool ShadowReference::isLitTowards(const glm::vec3& p, const glm::vec3& n, const Light& light,
+                                   const glm::vec3& dirTowards) const {
   RTCRay ray;
-  if (!makeShadowRay(p, n, *dir, impl_->normalOffset, impl_->tnear, ray)) return false;
+  if (!makeShadowRay(p, n, light, dirTowards, impl_->normalOffset, impl_->tnear, ray)) return false;
+  if (ray.tfar < ray.tnear) return true;  // at the light itself
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcOccluded1(impl_->scene, &context, &ray);
@@ -316,12 +345,26 @@ bool ShadowReference::isLit(const glm::vec3& p, const glm::vec3& n,
 void ShadowReference::evaluate(std::span<const glm::vec4> positions,
                                std::span<const glm::vec4> normals, const glm::vec3& towardsLight,
                                std::vector<std::uint8_t>& out) const {
+  const auto dir = unitLightDir(towardsLight);
+  evaluateTowards(positions, normals, dir ? Light::directionalFromTowards(*dir) : Light{},
+                  dir ? &*dir : nullptr, out);
+}
+
+void ShadowReference::evaluate(std::span<const glm::vec4> positions,
+                               std::span<const glm::vec4> normals, const Light& light,
+                               std::vector<std::uint8_t>& out) const {
+  const glm::vec3 dir = light.directionalTowards();
+  evaluateTowards(positions, normals, light, light.validate() ? nullptr : &dir, out);
+}
+
+void ShadowReference::evaluateTowards(std::span<const glm::vec4> positions,
+                                      std::span<const glm::vec4> normals, const Light& light,
+                                      const glm::vec3* dir, std::vector<std::uint8_t>& out) const {
   if (positions.size() != normals.size())
     throw std::invalid_argument("ShadowReference::evaluate: " + std::to_string(positions.size()) +
                                 " positions but " + std::to_string(normals.size()) + " normals");
   const std::size_t count = positions.size();
   out.assign(count, kMaskUncovered);
-  const auto dir = unitLightDir(towardsLight);
 
   constexpr std::size_t kChunk = 4096;  // pixels per work item (and per ray stream)
   const std::size_t chunks = (count + kChunk - 1) / kChunk;
@@ -340,9 +383,12 @@ void ShadowReference::evaluate(std::span<const glm::vec4> positions,
       for (std::size_t i = begin; i < end; ++i) {
         if (!(positions[i].w > 0.0f)) continue;  // stays kMaskUncovered
         out[i] = kMaskShadowed;
-        if (dir && makeShadowRay(glm::vec3(positions[i]), glm::vec3(normals[i]), *dir,
+        if (dir && makeShadowRay(glm::vec3(positions[i]), glm::vec3(normals[i]), light, *dir,
                                  m.normalOffset, m.tnear, rays[streamed])) {
-          pixel[streamed++] = std::uint32_t(i - begin);
+          if (rays[streamed].tfar < rays[streamed].tnear)
+            out[i] = kMaskLit;  // at the light itself
+          else
+            pixel[streamed++] = std::uint32_t(i - begin);
         }
       }
       if (streamed == 0) continue;

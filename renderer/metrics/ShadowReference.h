@@ -1,6 +1,7 @@
 // The exact hard-shadow reference (techniques.md, "Measuring"): for each visible surface
-// point an occlusion ray towards the directional light is traced against the scene's
-// triangles with Embree 3. Every shadow-map technique's pixel error is measured against it.
+// point an occlusion ray towards the light (directional: to infinity; spot, point: to its
+// position) is traced against the scene's triangles with Embree 3. Every shadow-map technique's
+// pixel error is measured against it.
 #pragma once
 
 #include <cstddef>
@@ -11,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "algo/Light.h"
 #include "scene/Scene.h"
 
 namespace sl {
@@ -31,7 +33,9 @@ namespace sl {
 /// - Opaque: opaque, texture alpha ignored.
 ///
 /// Self-shadowing: the ray starts at p + normalize(n) * normalOffsetM() and ignores hits
-/// closer than rayTNearM() (= normalOffsetM()) along the ray; far end: infinity. The offset
+/// closer than rayTNearM() (= normalOffsetM()) along the ray; far end: infinity for a
+/// directional light, the light's position minus rayTNearM() for spot and point lights.
+/// Outside a spot's cone or a light's range (Light::illuminates): not lit. The offset
 /// is normalOffsetFraction times the scene's size (the larger of its bounding-box diagonal
 /// and its largest coordinate magnitude, as float precision falls with distance), at least
 /// 1 um: the default 1e-5 gives 0.28 mm for a 20 x 20 m scene, which moves a shadow border
@@ -53,6 +57,9 @@ class ShadowReference {
   /// otherwise true when nothing blocks the ray towards the light.
   /// `towardsLight` need not be unit; it must not be zero.
   bool isLit(const glm::vec3& p, const glm::vec3& n, const glm::vec3& towardsLight) const;
+  /// The same for any light (Light::towardsLight(p), illuminates(p), rays ending at the
+  /// light's position for spot and point). Not lit when the light does not validate().
+  bool isLit(const glm::vec3& p, const glm::vec3& n, const Light& light) const;
 
   /// A whole frame: positions[i].xyz world position, positions[i].w > 0 where pixel i is
   /// covered; normals[i].xyz its normal. out[i] = 1 lit, 0 shadowed, 255 not covered
@@ -61,6 +68,9 @@ class ShadowReference {
   /// streams. Throws std::invalid_argument when positions and normals differ in size.
   void evaluate(std::span<const glm::vec4> positions, std::span<const glm::vec4> normals,
                 const glm::vec3& towardsLight, std::vector<std::uint8_t>& out) const;
+  /// The same for any light (see isLit(p, n, light)).
+  void evaluate(std::span<const glm::vec4> positions, std::span<const glm::vec4> normals,
+                const Light& light, std::vector<std::uint8_t>& out) const;
 
   std::size_t triangleCount() const;         ///< triangles in the BVH
   std::size_t alphaTestedTriangles() const;  ///< of which alpha-tested (Mask materials)
@@ -68,6 +78,15 @@ class ShadowReference {
   float rayTNearM() const;                   ///< hits closer than this along the ray are ignored
 
  private:
+  /// isLit / evaluate with the directional case's exact unit vector `dirTowards` (so the
+  /// vector overloads trace exactly the direction they were given).
+  bool isLitTowards(const glm::vec3& p, const glm::vec3& n, const Light& light,
+                    const glm::vec3& dirTowards) const;
+  /// dir: null when nothing can be lit (zero or invalid light).
+  void evaluateTowards(std::span<const glm::vec4> positions, std::span<const glm::vec4> normals,
+                       const Light& light, const glm::vec3* dir,
+                       std::vector<std::uint8_t>& out) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -1,5 +1,5 @@
 // glTF 2.0 loading through tinygltf 2.7: parse (.gltf or .glb), check, and flatten the node
-// hierarchy into world-space triangle lists, materials, images, the sun (KHR_lights_punctual),
+// hierarchy into world-space triangle lists, materials, images, the light (KHR_lights_punctual),
 // camera bookmarks and camera paths. Spec: https://registry.khronos.org/glTF/specs/2.0/
 #include "GltfLoader.h"
 
@@ -29,11 +29,11 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Extensions a file may list in `extensionsRequired`. The first three are implemented
-/// (punctual lights: the first directional one is the sun; texture transforms are baked into
-/// the base colour uvs; quantized attributes are read like any normalized accessor). The
-/// last two only change shading that ShadowLab does its own way, so ignoring them cannot
-/// change geometry, alpha cut-outs or shadows. Everything else (Draco, meshopt, BasisU,
-/// WebP, ...) would leave geometry or textures unreadable: such files are refused.
+/// (punctual lights: the first directional one, else the first spot or point, lights the scene;
+/// texture transforms are baked into the base colour uvs; quantized attributes are read like any
+/// normalized accessor). The last two only change shading that ShadowLab does its own way, so
+/// ignoring them cannot change geometry, alpha cut-outs or shadows. Everything else (Draco,
+/// meshopt, BasisU, WebP, ...) would leave geometry or textures unreadable: such files are refused.
 constexpr std::array<std::string_view, 5> kAcceptedRequiredExtensions = {
     "KHR_lights_punctual", "KHR_texture_transform", "KHR_mesh_quantization",
     "KHR_materials_emissive_strength", "KHR_materials_unlit"};
@@ -1039,7 +1039,16 @@ class Flattener {
     prim.indices = std::move(flat.indices);
   }
 
+  /// KHR_lights_punctual: the scene's light is its first directional light (the sun), or,
+  /// when it has none, its first spot or point light (in node order). Position and axis
+  /// come from the node's world transform (lights shine along the node's -z); cone angles
+  /// and range from the light (range is not scaled by the node, as the extension says).
   void addLights() {
+    struct Candidate {
+      Light light;
+      std::string label;  ///< "spot light 'lamp'"
+    };
+    std::vector<Candidate> found;
     for (const NodeInstance& inst : instances_) {
       const tinygltf::Node& node = model_.nodes[std::size_t(inst.node)];
       auto it = node.extensions.find("KHR_lights_punctual");
@@ -1051,28 +1060,60 @@ class Flattener {
         warn(nodeName(inst.node) + ": light " + std::to_string(index) + " does not exist, ignored");
         continue;
       }
-      const tinygltf::Light& light = model_.lights[std::size_t(index)];
-      std::string name =
-          light.name.empty() ? "light " + std::to_string(index) : inQuotes(light.name);
-      if (light.type != "directional") {
-        warn(light.type + " light " + name +
-             " ignored (ShadowLab lights the scene with one directional sun)");
+      const tinygltf::Light& gl = model_.lights[std::size_t(index)];
+      std::string name = gl.name.empty() ? "light " + std::to_string(index) : inQuotes(gl.name);
+      std::optional<LightType> type = lightTypeFromName(gl.type);
+      if (!type) {
+        warn("light " + name + " of unknown type '" + gl.type + "' ignored");
         continue;
       }
-      if (scene_.sun) {
-        warn("directional light " + name + " ignored (the first directional light is the sun)");
-        continue;
-      }
+      const std::string label = gl.type + " light " + name;
       // glTF lights shine along their node's -z: the light lies towards +z.
       glm::dvec3 towards = glm::dvec3(inst.world * glm::dvec4(0.0, 0.0, 1.0, 0.0));
+      glm::dvec3 position = glm::dvec3(inst.world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
       double len = glm::length(towards);
-      if (!(len > 0.0) || !std::isfinite(len)) {
-        warn("directional light " + name + " has a degenerate node transform, ignored");
+      if (*type != LightType::Point && (!(len > 0.0) || !std::isfinite(len))) {
+        warn(label + " has a degenerate node transform, ignored");
         continue;
       }
-      scene_.sun = DirectionalLight::fromDirection(glm::vec3(towards / len));
+      Light light;
+      if (*type == LightType::Directional) {
+        light = Light::directionalFromTowards(glm::vec3(towards / len));
+      } else {
+        light.type = *type;
+        light.positionM = glm::vec3(position);
+        light.rangeM = float(gl.range);
+        if (*type == LightType::Spot) {
+          light.direction = -glm::vec3(towards / len);
+          light.outerConeDeg = float(glm::degrees(gl.spot.outerConeAngle));
+          light.innerConeDeg = float(glm::degrees(gl.spot.innerConeAngle));
+          if (light.outerConeDeg >= 89.0f && light.outerConeDeg <= 90.0f) {
+            warn(label + ": outer cone angle " + std::to_string(light.outerConeDeg) +
+                 " degrees narrowed to 89 (one perspective shadow map covers less than a "
+                 "half-space)");
+            light.outerConeDeg = 89.0f;
+            light.innerConeDeg = std::min(light.innerConeDeg, light.outerConeDeg);
+          }
+        }
+        if (gl.intensity <= 0.0) warn(label + " has no intensity; it still casts shadows");
+      }
+      if (auto err = light.validate()) {
+        warn(label + " ignored: " + *err);
+        continue;
+      }
+      found.push_back({light, label});
     }
-    if (!scene_.sun)
+    std::size_t chosen = found.size();
+    for (std::size_t i = 0; i < found.size() && chosen == found.size(); ++i)
+      if (found[i].light.type == LightType::Directional) chosen = i;
+    if (chosen == found.size() && !found.empty()) chosen = 0;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      if (i == chosen) continue;
+      warn(found[i].label +
+           " ignored (ShadowLab lights the scene with one light: " + found[chosen].label + ")");
+    }
+    if (chosen < found.size()) scene_.light = found[chosen].light;
+    if (!scene_.light)
       warn("no directional light (KHR_lights_punctual): the scene has no sun of its own");
   }
 

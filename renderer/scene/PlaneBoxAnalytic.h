@@ -24,7 +24,7 @@ inline constexpr float kOccluderThicknessM = 0.02f;    ///< in y
 inline constexpr float kSunAzimuthDeg = 30.0f;         ///< from +z towards +x
 inline constexpr float kSunElevationDeg = 60.0f;       ///< above the horizon
 
-/// The scene's sun, unit vector towards the light (same convention as DirectionalLight):
+/// The scene's sun, unit vector towards the light (same convention as Light::directionalTowards):
 /// (cos 60 sin 30, sin 60, cos 60 cos 30) = (0.25, 0.8660, 0.4330).
 inline glm::vec3 sunTowardsLight() {
   const float az = glm::radians(kSunAzimuthDeg), el = glm::radians(kSunElevationDeg);

@@ -12,6 +12,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "algo/Camera.h"
+#include "algo/Light.h"
 
 namespace sl {
 
@@ -81,7 +82,7 @@ struct Scene {
   std::vector<MeshPrimitive> primitives;
   std::vector<Material> materials;
   std::vector<SceneImage> images;
-  std::optional<DirectionalLight> sun;  ///< from KHR_lights_punctual (directional)
+  std::optional<Light> light;           ///< from KHR_lights_punctual (GltfLoader::addLights)
   std::vector<CameraBookmark> cameras;  ///< from glTF cameras
   std::vector<CameraPath> paths;        ///< from animations of camera nodes
   std::vector<std::string> warnings;    ///< non-fatal notes from loading

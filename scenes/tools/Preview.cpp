@@ -1,5 +1,6 @@
 // A CPU ray-cast look at a loaded scene from each of its camera bookmarks (Lambert + exact
-// ray-traced sun shadows, alpha masks honoured): lets one check a scene without a GPU.
+// ray-traced shadows of the scene's light, alpha masks honoured): lets one check a scene without a
+// GPU.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -140,7 +141,7 @@ int writePreviews(const Scene& scene, const std::filesystem::path& dir) {
 #else
   const int width = 480, height = 270;
   Tracer tracer(scene);
-  glm::vec3 toSun = scene.sun ? scene.sun->towardsLight() : DirectionalLight{}.towardsLight();
+  const Light light = scene.light ? *scene.light : Light{};
   for (const CameraBookmark& bookmark : scene.cameras) {
     const Camera& cam = bookmark.camera;
     glm::vec3 fw = cam.forward();
@@ -162,11 +163,16 @@ int writePreviews(const Scene& scene, const std::filesystem::path& dir) {
           glm::vec3 p = cam.position + h.t * d;
           glm::vec3 n = tracer.normal(h);
           if (glm::dot(n, d) > 0.0f) n = -n;  // the side we see
-          float lambert = std::max(glm::dot(n, toSun), 0.0f);
+          const glm::vec3 toLight = light.towardsLight(p);
+          float lambert = std::max(glm::dot(n, toLight), 0.0f) * light.falloff(p);
           float lit = 0.0f;
           if (lambert > 0.0f) {
             glm::vec3 origin = p + n * (1e-4f * std::max(1.0f, h.t));
-            lit = tracer.trace(origin, toSun, 0.0f, true).prim ? 0.0f : 1.0f;
+            const bool positional = light.type != LightType::Directional;
+            Hit blocker =
+                tracer.trace(origin, toLight, 0.0f, !positional);  // nearest if positional
+            const float toLightM = glm::length(light.positionM - origin);
+            lit = blocker.prim && (!positional || blocker.t < toLightM) ? 0.0f : 1.0f;
           }
           glm::vec3 base = glm::vec3(tracer.baseColor(h));
           color = base * (0.30f + 0.75f * lambert * lit);

@@ -243,17 +243,9 @@ int SceneBuilder::addNode(const std::string& name, int mesh, const glm::vec3& tr
   return index;
 }
 
-int SceneBuilder::addSun(float azimuthDeg, float elevationDeg, float intensityLux) {
-  tinygltf::Light light;
-  light.name = "sun";
-  light.type = "directional";
-  light.color = {1.0, 0.96, 0.9};
-  light.intensity = intensityLux;
+int SceneBuilder::addLightNode(const tinygltf::Light& light, tinygltf::Node node) {
   model_.lights.push_back(light);
-  tinygltf::Node node;
-  node.name = "sun";
-  glm::quat q = rotationWithZAxis(towardsLightFromAngles(azimuthDeg, elevationDeg));
-  node.rotation = {q.x, q.y, q.z, q.w};
+  node.name = light.name;
   tinygltf::Value::Object ref;
   ref["light"] = tinygltf::Value(int(model_.lights.size() - 1));
   node.extensions["KHR_lights_punctual"] = tinygltf::Value(ref);
@@ -261,6 +253,49 @@ int SceneBuilder::addSun(float azimuthDeg, float elevationDeg, float intensityLu
   int index = int(model_.nodes.size() - 1);
   model_.scenes[0].nodes.push_back(index);
   return index;
+}
+
+int SceneBuilder::addSun(float azimuthDeg, float elevationDeg, float intensityLux) {
+  tinygltf::Light light;
+  light.name = "sun";
+  light.type = "directional";
+  light.color = {1.0, 0.96, 0.9};
+  light.intensity = intensityLux;
+  tinygltf::Node node;
+  glm::quat q = rotationWithZAxis(towardsLightFromAngles(azimuthDeg, elevationDeg));
+  node.rotation = {q.x, q.y, q.z, q.w};
+  return addLightNode(light, node);
+}
+
+int SceneBuilder::addPointLight(const std::string& name, const glm::vec3& positionM, float rangeM,
+                                float intensityCd) {
+  tinygltf::Light light;
+  light.name = name;
+  light.type = "point";
+  light.color = {1.0, 0.96, 0.9};
+  light.intensity = intensityCd;
+  light.range = rangeM;
+  tinygltf::Node node;
+  node.translation = {positionM.x, positionM.y, positionM.z};
+  return addLightNode(light, node);
+}
+
+int SceneBuilder::addSpotLight(const std::string& name, const glm::vec3& positionM,
+                               const glm::vec3& direction, float outerConeDeg, float innerConeDeg,
+                               float rangeM, float intensityCd) {
+  tinygltf::Light light;
+  light.name = name;
+  light.type = "spot";
+  light.color = {1.0, 0.96, 0.9};
+  light.intensity = intensityCd;
+  light.range = rangeM;
+  light.spot.outerConeAngle = glm::radians(double(outerConeDeg));
+  light.spot.innerConeAngle = glm::radians(double(innerConeDeg));
+  tinygltf::Node node;
+  node.translation = {positionM.x, positionM.y, positionM.z};
+  glm::quat q = rotationWithZAxis(-glm::normalize(direction));  // shines along -z
+  node.rotation = {q.x, q.y, q.z, q.w};
+  return addLightNode(light, node);
 }
 
 int SceneBuilder::addCamera(const std::string& name, const glm::vec3& eye, const glm::vec3& target,

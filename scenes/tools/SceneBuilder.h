@@ -38,7 +38,7 @@ struct MeshData {
 /// can): the node rotation of a light shining along -z, or of a camera looking along -z.
 glm::quat rotationWithZAxis(const glm::vec3& z);
 /// Unit vector towards a light at azimuth (from +z towards +x) and elevation, in degrees;
-/// the same convention as sl::DirectionalLight.
+/// the same convention as sl::Light::directionalTowards.
 glm::vec3 towardsLightFromAngles(float azimuthDeg, float elevationDeg);
 
 struct CameraKeyframe {
@@ -61,6 +61,14 @@ class SceneBuilder {
   int addNode(const std::string& name, int mesh, const glm::vec3& translation = glm::vec3(0.0f));
   /// A KHR_lights_punctual directional light; its node's +z points towards the light.
   int addSun(float azimuthDeg, float elevationDeg, float intensityLux = 3.0f);
+  /// A KHR_lights_punctual point light at `positionM` (range 0: none written = infinite).
+  int addPointLight(const std::string& name, const glm::vec3& positionM, float rangeM = 0.0f,
+                    float intensityCd = 100.0f);
+  /// A KHR_lights_punctual spot light at `positionM` shining along `direction` (its node's
+  /// -z), cone half-angles in degrees.
+  int addSpotLight(const std::string& name, const glm::vec3& positionM, const glm::vec3& direction,
+                   float outerConeDeg, float innerConeDeg, float rangeM = 0.0f,
+                   float intensityCd = 200.0f);
   /// A perspective camera node looking from `eye` at `target`.
   int addCamera(const std::string& name, const glm::vec3& eye, const glm::vec3& target,
                 float yfovDeg, float znearM, float zfarM);
@@ -73,6 +81,8 @@ class SceneBuilder {
   std::string write(const std::string& path);
 
  private:
+  /// Appends `light` and `node` (named after the light, referring to it) as a root node.
+  int addLightNode(const tinygltf::Light& light, tinygltf::Node node);
   int addAccessor(const void* data, std::size_t bytes, int componentType, int type,
                   std::size_t count, int target, std::vector<double> minValues = {},
                   std::vector<double> maxValues = {});

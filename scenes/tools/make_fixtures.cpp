@@ -354,6 +354,61 @@ void stripFanLines(const fs::path& dir) {
   f.writeGltf(dir / "strip-fan-lines.gltf");
 }
 
+/// A 10 x 10 m ground quad and KHR_lights_punctual in extensionsUsed.
+void groundAndLightsExtension(Fixture& f) {
+  f.meshNode("ground",
+             json::array({triangles(f.positions({{-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5}}),
+                                    f.indices(std::vector<std::uint16_t>(kQuadIndices.begin(),
+                                                                         kQuadIndices.end())))}));
+  f.root()["extensionsUsed"] = {"KHR_lights_punctual"};
+}
+
+/// Punctual lights without a sun: a spot under a translated parent node (its child turned
+/// -90 degrees about x, so it shines straight down), a point light with a range, a spot with
+/// a cone wider than a hemisphere (ignored) and a light of unknown type (ignored). The
+/// first valid one in node order, the spot, lights the scene.
+void punctualLights(const fs::path& dir) {
+  Fixture f;
+  groundAndLightsExtension(f);
+  f.root()["extensions"] = {
+      {"KHR_lights_punctual",
+       {{"lights", json::array({json{{"name", "lamp"},
+                                     {"type", "spot"},
+                                     {"range", 12.0},
+                                     {"spot", {{"innerConeAngle", 0.3}, {"outerConeAngle", 0.6}}}},
+                                json{{"name", "bulb"}, {"type", "point"}, {"range", 8.0}},
+                                json{{"name", "too-wide"},
+                                     {"type", "spot"},
+                                     {"spot", {{"innerConeAngle", 0.1}, {"outerConeAngle", 2.0}}}},
+                                json{{"name", "odd"}, {"type", "area"}}})}}}};
+  glm::quat down = glm::angleAxis(glm::radians(-90.0f), glm::vec3(1, 0, 0));
+  int child = f.node({{"name", "lamp"},
+                      {"rotation", {down.x, down.y, down.z, down.w}},
+                      {"translation", {0, 1, 0}},
+                      {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+                     false);
+  f.node({{"name", "lamp-mount"}, {"translation", {1, 3, -2}}, {"children", {child}}});
+  f.node({{"name", "bulb"},
+          {"translation", {-1, 2.5, 0.5}},
+          {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+  f.node({{"name", "too-wide"}, {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+  f.node({{"name", "odd"}, {"extensions", {{"KHR_lights_punctual", {{"light", 3}}}}}});
+  f.writeGltf(dir / "punctual-lights.gltf");
+}
+
+/// Only a point light (with no range: infinite).
+void pointLightOnly(const fs::path& dir) {
+  Fixture f;
+  groundAndLightsExtension(f);
+  f.root()["extensions"] = {
+      {"KHR_lights_punctual",
+       {{"lights", json::array({json{{"name", "bulb"}, {"type", "point"}}})}}}};
+  f.node({{"name", "bulb"},
+          {"translation", {0.5, 4, -0.25}},
+          {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  f.writeGltf(dir / "point-light.gltf");
+}
+
 /// A sun (directional light on a rotated node), a point light, a perspective camera with
 /// no zfar animated by LINEAR translation and STEP rotation keys, and an orthographic camera.
 void cameraPath(const fs::path& dir) {
@@ -508,6 +563,8 @@ int writeFixtures(const std::filesystem::path& dir) {
   maskMaterial(dir);
   stripFanLines(dir);
   cameraPath(dir);
+  punctualLights(dir);
+  pointLightOnly(dir);
   skinnedAnimated(dir);
   glb(dir);
   badFiles(dir);

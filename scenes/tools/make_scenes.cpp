@@ -21,7 +21,7 @@ int writePreviews(const Scene& scene, const std::filesystem::path& dir);
 
 namespace {
 
-/// A point `distM` from `target` seen at azimuth/elevation (degrees, DirectionalLight's
+/// A point `distM` from `target` seen at azimuth/elevation (degrees, Light::directional's
 /// convention), for placing cameras.
 glm::vec3 orbitEye(const glm::vec3& target, float azimuthDeg, float elevationDeg, float distM) {
   return target + distM * towardsLightFromAngles(azimuthDeg, elevationDeg);
@@ -74,6 +74,40 @@ SceneBuilder makePlaneBox() {
     keys.push_back({float(k), orbitEye(shadow, az, el, dist), shadow});
   }
   addPath(b, "orbit-in", 45.0f, 0.05f, 60.0f, keys);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
+// spot-box and point-box: a square occluder and two boxes on a ground plane under a
+// positional light (KHR_lights_punctual spot / point): perspective shadows whose size grows
+// with the occluder's height (side s H / (H - h) under a light at height H).
+constexpr float kPunctualGroundHalfM = 6.0f;
+constexpr float kPunctualOccluderHalfM = 0.75f, kPunctualOccluderHeightM = 1.5f;
+
+SceneBuilder makePunctualBox(const std::string& name, bool spot) {
+  SceneBuilder b(name);
+  int ground = b.addMaterial("ground", {0.80f, 0.80f, 0.78f, 1.0f});
+  int occluder = b.addMaterial("occluder", {0.85f, 0.36f, 0.24f, 1.0f});
+  int boxMat = b.addMaterial("box", {0.30f, 0.45f, 0.70f, 1.0f});
+  const float g = kPunctualGroundHalfM;
+  b.addNode("ground", b.addMesh("ground", groundQuad(-g, g, -g, g), ground));
+  MeshData plate;
+  plate.addBox({0.0f, kPunctualOccluderHeightM, 0.0f},
+               {kPunctualOccluderHalfM, 0.01f, kPunctualOccluderHalfM});
+  b.addNode("occluder", b.addMesh("occluder", plate, occluder));
+  MeshData boxes;
+  boxes.addBox({2.2f, 0.5f, -1.4f}, {0.5f, 0.5f, 0.5f});
+  boxes.addBox({-2.0f, 0.35f, 1.6f}, {0.35f, 0.35f, 0.6f});
+  b.addNode("boxes", b.addMesh("boxes", boxes, boxMat));
+  if (spot)  // from above and to one side, the ground's far corners outside the cone
+    b.addSpotLight("spot", {1.5f, 5.0f, 2.0f}, glm::vec3(-0.25f, -5.0f, -2.0f), 40.0f, 30.0f,
+                   20.0f);
+  else
+    b.addPointLight("bulb", {0.2f, 4.0f, 0.3f}, 15.0f);
+  const glm::vec3 centre(0.0f, 0.0f, 0.0f);
+  b.addCamera("overview", orbitEye(centre, 210.0f, 40.0f, 11.0f), centre, 45.0f, 0.1f, 60.0f);
+  glm::vec3 corner(-1.2f, 0.0f, -1.2f);
+  b.addCamera("edge-closeup", orbitEye(corner, 200.0f, 45.0f, 2.0f), corner, 45.0f, 0.02f, 40.0f);
   return b;
 }
 
@@ -291,12 +325,7 @@ int writeScene(SceneBuilder builder, const std::string& name, const std::filesys
               path.string().c_str(), s.triangleCount(), double(bytes) / 1024.0,
               double(s.bounds.min.x), double(s.bounds.min.y), double(s.bounds.min.z),
               double(s.bounds.max.x), double(s.bounds.max.y), double(s.bounds.max.z));
-  if (s.sun) {
-    glm::vec3 l = s.sun->towardsLight();
-    std::printf("  sun: azimuth %.2f, elevation %.2f, towards light (%.4f %.4f %.4f)\n",
-                double(s.sun->azimuthDeg), double(s.sun->elevationDeg), double(l.x), double(l.y),
-                double(l.z));
-  }
+  if (s.light) std::printf("  light: %s\n", s.light->describe().c_str());
   for (const CameraBookmark& c : s.cameras)
     std::printf(
         "  camera %-14s eye (%.2f %.2f %.2f) target (%.2f %.2f %.2f) fov %.0f near %.2f far %.0f\n",
@@ -331,7 +360,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr,
                    "usage: %s [--scenes DIR] [--fixtures DIR] [--preview DIR]\n"
                    "  --scenes DIR    write the built-in scenes (plane-box, diagonal, corridor, "
-                   "default) as DIR/<name>.gltf\n"
+                   "default, spot-box, point-box) as DIR/<name>.gltf\n"
                    "  --fixtures DIR  write the loader's test fixtures into DIR\n"
                    "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n",
                    argv[0]);
@@ -350,6 +379,10 @@ int main(int argc, char** argv) {
     rc |= sl::gen::writeScene(sl::gen::makeDiagonal(), "diagonal", scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeCorridor(), "corridor", scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeDefault(), "default", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makePunctualBox("spot-box", true), "spot-box", scenesDir,
+                              previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makePunctualBox("point-box", false), "point-box", scenesDir,
+                              previewDir);
   }
   if (!fixturesDir.empty()) {
     fs::create_directories(fixturesDir);

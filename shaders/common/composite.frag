@@ -1,11 +1,12 @@
-// Final shading: albedo lit by the sun (Lambert, shadowed by the technique's filtered
-// visibility) plus a sky ambient; a sky gradient where there is no surface.
+// Final shading: albedo lit by the light (Lambert, shadowed by the technique's filtered
+// visibility, a spot's cone falloff and the range window: common/light.glsl) plus a sky
+// ambient; a sky gradient where there is no surface.
 #include "common/shared_constants.h"
+#include "common/light.glsl"
 layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;
 layout(binding = SL_UNIT_G_NORMAL) uniform sampler2D u_gNormal;
 layout(binding = SL_UNIT_G_ALBEDO) uniform sampler2D u_gAlbedo;
 layout(binding = SL_UNIT_VISIBILITY) uniform sampler2D u_visibility;
-uniform vec3 u_towardsLight;
 uniform float u_ambient;  // shading.ambient
 uniform vec3 u_cameraPos;
 layout(binding = SL_UNIT_HARD) uniform usampler2D u_hard;  // technique's hard mask (SL_MASK_*)
@@ -43,7 +44,7 @@ void main() {
   vec3 N = texelFetch(u_gNormal, px, 0).xyz;
   vec3 albedo = texelFetch(u_gAlbedo, px, 0).rgb;
   float vis = texelFetch(u_visibility, px, 0).r;
-  float ndl = max(dot(N, u_towardsLight), 0.0);
+  float ndl = max(dot(N, towardsLight(P.xyz)), 0.0) * lightFalloff(P.xyz);
   float sky = 0.5 + 0.5 * N.y;
   vec3 light = vec3(1.0, 0.96, 0.88) * ndl * vis + u_ambient * mix(vec3(0.55, 0.5, 0.45), vec3(0.75, 0.85, 1.0), sky);
   vec3 c = albedo * light;

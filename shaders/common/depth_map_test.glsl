@@ -9,6 +9,12 @@
 //   slope term     bias.slope * (|dz/du| * t_u + |dz/dv| * t_v)   (t: local texel in uv),
 //                  at most the depth of a slope of 10 over T
 //   constant       bias.constant metres along the light, in the map's window depth
+// Orthographic and perspective map matrices alike (clip w = 1 for the former), per map: the
+// receiver's plane is carried through the map's full 4x4 matrix (a plane stays a plane,
+// window depth stays affine in light uv on it); metres per uv grow with w; window depth per
+// metre falls with w^2 (glm's perspective depth), so both terms convert per pixel. The
+// w-divide is in mapUvzw, the one place a world point enters a map.
+// Needs common/light.glsl (towardsLight) included before.
 // CPU mirror: sl::receiverInMap and its parts (algo/ShadowBias.h); C++ binding:
 // bindDepthLookup (core/ShadowPass.cpp) for the per-map uniforms, bindParams for the
 // bias.* / pcf parameters (their ParamDecl names the uniform).
@@ -30,11 +36,13 @@
 #include "common/shared_constants.h"
 #include "common/shadow_coord.glsl"
 
-// Per map (bindDepthLookup, one DepthMapView each): its own orthographic matrix.
+// Per map (bindDepthLookup, one DepthMapView each): its own orthographic or perspective
+// matrix (sl::lightPlaneMatrix splits its plane transform into the two next arrays).
 uniform mat4 u_mapViewProj[SL_MAX_DEPTH_MAPS];
-uniform mat3 u_mapNormalMatrix[SL_MAX_DEPTH_MAPS];  // transpose(inverse(mat3(viewProj)))
-uniform vec2 u_mapExtentM[SL_MAX_DEPTH_MAPS];       // metres per unit of the map's light u, v
-uniform float u_mapDepthPerM[SL_MAX_DEPTH_MAPS];    // window depth per metre along the light
+uniform mat3 u_mapNormalMatrix[SL_MAX_DEPTH_MAPS];  // LightPlaneMatrix::normal
+uniform vec3 u_mapPlaneOffset[SL_MAX_DEPTH_MAPS];   // LightPlaneMatrix::offset (0 ortho)
+uniform vec2 u_mapExtentM[SL_MAX_DEPTH_MAPS];  // metres per unit of light u, v at clip w = 1
+uniform float u_mapDepthPerM[SL_MAX_DEPTH_MAPS];  // window depth per metre at clip w = 1
 // The shared parameters (shadowMapParamDecls).
 uniform int u_pcfRadius;        // pcf
 uniform float u_biasNormal;     // bias.normal, local texels
@@ -50,18 +58,28 @@ float g_receiverBias;
 vec2 shadowMapSize(int map) { return vec2(shadowMapTexels(map)); }
 
 // Depth gradient of the plane through P with world normal N, per unit of the map's light
-// uv: the normal in clip space m = u_mapNormalMatrix * N; dz/du = -m.x / m.z (the 0.5
-// factors of uv and window depth cancel). A plane seen edge-on by the light (|m.z| tiny)
-// gets 0: it is shadowed by the N.L test of the resolve pass, or covered by the slope
-// term's clamp. CPU: sl::receiverDepthGradient.
-vec2 receiverDepthGradient(int map, vec3 N) {
-  vec3 m = u_mapNormalMatrix[map] * N;
+// uv: the plane in clip space m = u_mapNormalMatrix * N - u_mapPlaneOffset * dot(N, P);
+// dz/du = -m.x / m.z (the 0.5 factors of uv and window depth cancel). A plane seen edge-on
+// by the light (|m.z| tiny) gets 0: it is shadowed by the N.L test of the resolve pass, or
+// covered by the slope term's clamp. CPU: sl::receiverDepthGradient.
+vec2 receiverDepthGradient(int map, vec3 N, vec3 P) {
+  vec3 m = u_mapNormalMatrix[map] * N - u_mapPlaneOffset[map] * dot(N, P);
   if (!(abs(m.z) > 1e-4 * length(m))) return vec2(0.0);
   return -m.xy / m.z;
 }
 
-vec3 mapUvz(int map, vec3 P) {
-  return (u_mapViewProj[map] * vec4(P, 1.0)).xyz * 0.5 + 0.5;  // orthographic: w = 1
+// World point P in the map: xyz = its light uv and window depth, w = its clip w (1 for an
+// orthographic map). Behind a perspective light (w <= 0) nothing is lit anyway
+// (lightIlluminates): w is kept positive so the arithmetic stays finite.
+vec4 mapUvzw(int map, vec3 P) {
+  vec4 c = u_mapViewProj[map] * vec4(P, 1.0);
+  float w = c.w > 1e-6 ? c.w : 1e-6;
+  return vec4(c.xyz / w * 0.5 + 0.5, w);
+}
+
+// Largest local texel of the map at P's light uv, in metres at P (extent x clip w).
+float localTexelM(int map, vec2 t, float w) {
+  return max(t.x * u_mapExtentM[map].x, t.y * u_mapExtentM[map].y) * w;
 }
 
 // CPU: sl::receiverInMap. The map is selected for P; the normal offset is that map's local
@@ -69,23 +87,26 @@ vec3 mapUvz(int map, vec3 P) {
 // local texel then sets the slope term).
 ShadowCoord shadowLookupCoord(vec3 P, vec3 N) {
   int map = selectShadowMap(P);
-  vec2 t = localTexelLightUv(map, mapUvz(map, P).xy);
-  float texelM = max(t.x * u_mapExtentM[map].x, t.y * u_mapExtentM[map].y);
-  float cosL = clamp(dot(N, u_towardsLight), -1.0, 1.0);
+  vec4 c = mapUvzw(map, P);
+  vec2 t = localTexelLightUv(map, c.xy);
+  float texelM = localTexelM(map, t, c.w);
+  float cosL = clamp(dot(N, towardsLight(P)), -1.0, 1.0);
   float sinL = sqrt(max(1.0 - cosL * cosL, 0.0));
   vec3 Po = P + N * (u_biasNormal * texelM * sinL);
   int offsetMap = selectShadowMap(Po);
   if (offsetMap != map) {
     map = offsetMap;
-    t = localTexelLightUv(map, mapUvz(map, Po).xy);
-    texelM = max(t.x * u_mapExtentM[map].x, t.y * u_mapExtentM[map].y);
-  }  // else the offset moved the point by under a texel: same local texel size
-  vec3 uvz = mapUvz(map, Po);
+    c = mapUvzw(map, Po);
+    t = localTexelLightUv(map, c.xy);
+    texelM = localTexelM(map, t, c.w);
+  }  // else the offset moved the point by under a texel: same local texel size and w
+  vec3 uvz = mapUvzw(map, Po).xyz;
   g_receiverUv = uvz.xy;
   g_receiverZ = uvz.z;
-  g_receiverDz = receiverDepthGradient(map, N);
+  g_receiverDz = receiverDepthGradient(map, N, P);
+  // Window depth per metre at the receiver (sl::windowDepthPerM): falls with w^2.
+  float depthPerM = u_mapDepthPerM[map] / (c.w * c.w);
   // Capped at a slope of 10 (84 degrees from the light) so grazing receivers do not leak.
-  float depthPerM = u_mapDepthPerM[map];
   float slope = min(abs(g_receiverDz.x) * t.x + abs(g_receiverDz.y) * t.y,
                     10.0 * texelM * depthPerM);
   g_receiverBias = u_biasSlope * slope + u_biasConstantM * depthPerM;

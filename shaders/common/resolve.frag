@@ -1,8 +1,9 @@
 // Resolve pass: per camera pixel, the technique's shadow test. Writes the hard mask
 // (SL_MASK_*: lit, shadowed, no surface) that the metrics compare with the Embree
 // reference, the filtered visibility used for shading, aliasing m and the selected map's
-// uv (grid overlay) and index (partition overlay). Surfaces facing away from the light are shadowed, exactly as in
-// ShadowReference::isLit (C++). Techniques that resolve in their own deferred pass
+// uv (grid overlay) and index (partition overlay). Surfaces facing away from the light are
+// shadowed, exactly as in ShadowReference::isLit (C++), and so is what lies outside a spot's
+// cone or a light's range (common/light.glsl). Techniques that resolve in their own deferred pass
 // (Technique::resolveDeferred) write the same four targets themselves.
 // A technique's lookup ("@lookup") defines, over any number of maps:
 //   ShadowCoord shadowLookupCoord(vec3 P, vec3 N)  selects a map (common/shadow_coord.glsl),
@@ -10,12 +11,13 @@
 //   vec2 shadowMapSize(int map)                    texels of that map
 //   float shadowHardAt(ShadowCoord c), float shadowFilteredAt(ShadowCoord c)   1 = lit
 // so the (possibly warped) coordinate is computed once per pixel. Depth-map techniques
-// get all four from common/depth_map_test.glsl.
+// get all four from common/depth_map_test.glsl; the light (common/light.glsl, bound by
+// sl::bindLight) is included before the lookup.
 #include "common/shared_constants.h"
 #include "common/shadow_coord.glsl"
+#include "common/light.glsl"
 layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;
 layout(binding = SL_UNIT_G_NORMAL) uniform sampler2D u_gNormal;
-uniform vec3 u_towardsLight;
 
 #include "@lookup"
 
@@ -43,7 +45,7 @@ void main() {
     o_filtered = 1.0;
     return;
   }
-  if (dot(N, u_towardsLight) <= 0.0) {
+  if (dot(N, towardsLight(P.xyz)) <= 0.0 || lightIlluminates(P.xyz) < 0.5) {
     o_hard = SL_MASK_SHADOWED;
     o_filtered = 0.0;
     return;

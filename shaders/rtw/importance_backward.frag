@@ -19,7 +19,7 @@ uniform sampler2D u_gNormal;
 uniform mat4 u_lightViewProj;
 uniform vec3 u_cameraPos;
 uniform vec3 u_cameraForward;
-uniform vec3 u_towardsLight;
+#include "common/light.glsl"
 #include "rtw/importance.glsl"
 
 void main() {
@@ -34,7 +34,7 @@ void main() {
   vec3 N = texelFetch(u_gNormal, px, 0).xyz;
   vec3 V = normalize(u_cameraPos - P.xyz);
   float eyeDepth = dot(P.xyz - u_cameraPos, u_cameraForward);
-  float imp = combineImportance(eyeDepth, dot(N, u_towardsLight), dot(N, V), shadowEdgeAt(px));
+  float imp = combineImportance(eyeDepth, dot(N, towardsLight(P.xyz)), dot(N, V), shadowEdgeAt(px));
   if (!(imp > 0.0) || isinf(imp)) return;
   uint bits = floatBitsToUint(imp);
   ivec2 t = ivec2(f);

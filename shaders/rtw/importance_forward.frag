@@ -10,7 +10,7 @@ in vec2 v_uv;
 uniform mat4 u_cameraViewProj;
 uniform vec3 u_cameraPos;
 uniform vec3 u_cameraForward;
-uniform vec3 u_towardsLight;
+#include "common/light.glsl"
 uniform int u_hybrid;
 uniform float u_visibilityToleranceM;
 uniform sampler2D u_gPosition;
@@ -32,6 +32,6 @@ void main() {
   vec3 V = normalize(u_cameraPos - v_worldPos);
   if (dot(N, V) < 0.0) N = -N;
   float eyeDepth = dot(v_worldPos - u_cameraPos, u_cameraForward);
-  float imp = combineImportance(eyeDepth, dot(N, u_towardsLight), dot(N, V), shadowEdgeAt(px));
+  float imp = combineImportance(eyeDepth, dot(N, towardsLight(v_worldPos)), dot(N, V), shadowEdgeAt(px));
   if (imp > 0.0 && !isinf(imp)) o_importance = floatBitsToUint(imp);
 }

@@ -211,8 +211,8 @@ TEST(GltfLoader, SunCamerasAndStepAndLinearPaths) {
   auto s = loadOk("camera-path.gltf");
   ASSERT_TRUE(s);
   // The sun's node is turned -60 degrees about x: its +z, towards the light, is (0, sin, cos).
-  ASSERT_TRUE(s->sun);
-  glm::vec3 l = s->sun->towardsLight();
+  ASSERT_TRUE(s->light);
+  glm::vec3 l = s->light->directionalTowards();
   EXPECT_NEAR(l.x, 0.0f, 1e-5f);
   EXPECT_NEAR(l.y, std::sin(glm::radians(60.0f)), 1e-5f);
   EXPECT_NEAR(l.z, std::cos(glm::radians(60.0f)), 1e-5f);
@@ -244,6 +244,37 @@ TEST(GltfLoader, SunCamerasAndStepAndLinearPaths) {
   EXPECT_NEAR(path.fovYDeg, glm::degrees(0.8f), 1e-4f);
 }
 
+TEST(GltfLoader, SpotAndPointLightsFromTheirNodes) {
+  auto s = loadOk("punctual-lights.gltf");
+  ASSERT_TRUE(s);
+  // No directional light: the first valid light in node order, the spot, lights the scene.
+  ASSERT_TRUE(s->light);
+  const Light& l = *s->light;
+  EXPECT_EQ(l.type, LightType::Spot);
+  // Parent at (1, 3, -2), child at (0, 1, 0) turned -90 degrees about x: -z becomes -y.
+  EXPECT_NEAR(glm::length(l.positionM - glm::vec3(1, 4, -2)), 0.0f, 1e-5f);
+  EXPECT_NEAR(glm::length(l.spotAxis() - glm::vec3(0, -1, 0)), 0.0f, 1e-5f);
+  EXPECT_NEAR(l.outerConeDeg, glm::degrees(0.6f), 1e-3f);
+  EXPECT_NEAR(l.innerConeDeg, glm::degrees(0.3f), 1e-3f);
+  EXPECT_FLOAT_EQ(l.rangeM, 12.0f);
+  EXPECT_TRUE(anyWarningContains(*s,
+                                 "point light 'bulb' ignored (ShadowLab lights the scene "
+                                 "with one light: spot light 'lamp')"));
+  EXPECT_TRUE(anyWarningContains(*s, "spot light 'too-wide' ignored: spot light: outer cone"));
+  EXPECT_TRUE(anyWarningContains(*s, "light 'odd' of unknown type 'area' ignored"));
+  EXPECT_FALSE(anyWarningContains(*s, "no directional light"));
+}
+
+TEST(GltfLoader, PointLightOnly) {
+  auto s = loadOk("point-light.gltf");
+  ASSERT_TRUE(s);
+  ASSERT_TRUE(s->light);
+  EXPECT_EQ(s->light->type, LightType::Point);
+  EXPECT_NEAR(glm::length(s->light->positionM - glm::vec3(0.5f, 4, -0.25f)), 0.0f, 1e-6f);
+  EXPECT_EQ(s->light->rangeM, 0.0f);  // absent: infinite
+  EXPECT_TRUE(s->warnings.empty()) << s->warnings.front();
+}
+
 TEST(GltfLoader, SkinnedAndAnimatedMeshesStayInRestPose) {
   auto s = loadOk("skinned-animated.gltf");
   ASSERT_TRUE(s);
@@ -262,7 +293,7 @@ TEST(GltfLoader, BinaryGlbLoads) {
   EXPECT_NEAR(glm::length(s->bounds.min - glm::vec3(-0.5f, 0.0f, -0.5f)), 0.0f, 1e-6f);
   EXPECT_NEAR(glm::length(s->bounds.max - glm::vec3(0.5f, 1.0f, 0.5f)), 0.0f, 1e-6f);
   expectWindingAgreesWithNormals(s->primitives[0]);
-  EXPECT_FALSE(s->sun);
+  EXPECT_FALSE(s->light);
   EXPECT_TRUE(anyWarningContains(*s, "no directional light"));
 }
 

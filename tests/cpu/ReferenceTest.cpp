@@ -117,6 +117,90 @@ TEST(ShadowReference, SamplesCloseToTheShadowBorder) {
   }
 }
 
+// ---- positional lights: rays end at the light ---------------------------------------------
+
+/// Centred occluder for the positional tests: side kSide at height kH over the ground.
+constexpr float kSide = 2.0f, kH = 1.0f;
+
+Scene groundAndCentredSquare() {
+  Scene s;
+  s.primitives.push_back(
+      horizontalQuad("ground", -kHalfGround, kHalfGround, -kHalfGround, kHalfGround, 0, -1));
+  s.primitives.push_back(
+      horizontalQuad("square", -0.5f * kSide, 0.5f * kSide, -0.5f * kSide, 0.5f * kSide, kH, -1));
+  return s;
+}
+
+TEST(ShadowReference, PointLightCastsTheScaledSquare) {
+  // A point light at height H over the square's centre: the shadow is a square of side
+  // s H / (H - h) (similar triangles). Ground samples every 1 cm (a pixel's footprint),
+  // those within one footprint of the analytic edge skipped.
+  const ShadowReference ref(groundAndCentredSquare());
+  for (float H : {2.5f, 4.0f, 7.0f}) {
+    const Light light = Light::point({0, H, 0});
+    const float half = 0.5f * kSide * H / (H - kH);
+    std::vector<glm::vec4> pos, nrm;
+    for (int i = -300; i <= 300; ++i)
+      for (int j = -300; j <= 300; j += 7) {
+        pos.emplace_back(0.01f * float(i), 0.0f, 0.01f * float(j), 1.0f);
+        nrm.emplace_back(0, 1, 0, 0);
+      }
+    std::vector<std::uint8_t> mask;
+    ref.evaluate(pos, nrm, light, mask);
+    int checked = 0, wrong = 0, shadowed = 0;
+    for (std::size_t k = 0; k < pos.size(); ++k) {
+      const float edge = std::max(std::abs(pos[k].x), std::abs(pos[k].z));
+      if (std::abs(edge - half) < 0.01f) continue;
+      ++checked;
+      const bool analyticLit = edge > half;
+      if (analyticLit != (mask[k] == kMaskLit)) ++wrong;
+      if (mask[k] == kMaskShadowed) ++shadowed;
+      EXPECT_EQ(mask[k] == kMaskLit, ref.isLit(glm::vec3(pos[k]), {0, 1, 0}, light));
+    }
+    EXPECT_EQ(wrong, 0) << "H " << H;
+    EXPECT_GT(shadowed, 1000) << "H " << H;
+    EXPECT_GT(checked, 20000);
+    // The shadow's side along x through the centre, measured on the mask: s H / (H - h).
+    EXPECT_FALSE(ref.isLit({half - 0.005f, 0, 0}, {0, 1, 0}, light)) << H;
+    EXPECT_TRUE(ref.isLit({half + 0.005f, 0, 0}, {0, 1, 0}, light)) << H;
+  }
+}
+
+TEST(ShadowReference, SpotConeAndRangeAreNotLit) {
+  const ShadowReference ref(groundAndCentredSquare());
+  const glm::vec3 up(0, 1, 0);
+  // Straight down from 5 m, 45 degree cone: the lit disc has radius 5 m on the ground.
+  const Light spot = Light::spot({0, 5, 0}, {0, -1, 0}, 45.0f);
+  EXPECT_FALSE(ref.isLit({0, 0, 0}, up, spot));     // under the square
+  EXPECT_TRUE(ref.isLit({4.9f, 0, 0}, up, spot));   // in the cone, unoccluded
+  EXPECT_FALSE(ref.isLit({5.1f, 0, 0}, up, spot));  // outside the cone, unoccluded
+  Light ranged = spot;
+  ranged.rangeM = 6.0f;  // reaches sqrt(25 + r^2) <= 6: r <= 3.32 m
+  EXPECT_TRUE(ref.isLit({3.2f, 0, 0}, up, ranged));
+  EXPECT_FALSE(ref.isLit({3.5f, 0, 0}, up, ranged));
+  EXPECT_FALSE(ref.isLit({3.5f, 0, 0}, up, Light::point({0, 5, 0}, 6.0f)));
+  EXPECT_TRUE(ref.isLit({3.5f, 0, 0}, up, Light::point({0, 5, 0})));
+  // Below the light but facing up towards it from above the light's height: facing away.
+  EXPECT_FALSE(ref.isLit({2, 6, 0}, up, Light::point({0, 5, 0})));
+  // An invalid light lights nothing.
+  EXPECT_FALSE(ref.isLit({3.5f, 0, 0}, up, Light::point({0, 5, 0}, -1.0f)));
+}
+
+TEST(ShadowReference, OccludersBeyondThePositionalLightCastNothing) {
+  // The square at 1 m, the light at 0.5 m under it: rays stop at the light, so the square
+  // (beyond the light) shadows nothing; a directional light from above is blocked by it.
+  const ShadowReference ref(groundAndCentredSquare());
+  const glm::vec3 up(0, 1, 0);
+  EXPECT_TRUE(ref.isLit({0.1f, 0, 0.1f}, up, Light::point({0, 0.5f, 0})));
+  EXPECT_FALSE(ref.isLit({0.1f, 0, 0.1f}, up, Light::directional(0, 90)));
+  std::vector<glm::vec4> pos = {{0.1f, 0, 0.1f, 1}, {0, 0.5f, 0, 1}};  // the 2nd at the light
+  std::vector<glm::vec4> nrm = {{0, 1, 0, 0}, {0, 1, 0, 0}};
+  std::vector<std::uint8_t> mask;
+  ref.evaluate(pos, nrm, Light::point({0, 0.5f, 0}), mask);
+  EXPECT_EQ(mask[0], kMaskLit);
+  EXPECT_EQ(mask[1], kMaskLit);
+}
+
 TEST(ShadowReference, FacingAwayIsUnlitAndNoSelfShadowing) {
   const ShadowReference ref(groundAndSquare());
   const glm::vec3 l = lightDir(50.0f, 35.0f);

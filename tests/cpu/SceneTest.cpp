@@ -80,8 +80,8 @@ TEST(Scene, EveryBuiltinSceneLoadsWithSunCamerasAndPath) {
     ASSERT_TRUE(s);
     EXPECT_EQ(s->name, name);
     EXPECT_TRUE(s->warnings.empty()) << s->warnings.front();
-    EXPECT_TRUE(s->sun);
-    EXPECT_FALSE(s->sun->validate());
+    EXPECT_TRUE(s->light);
+    EXPECT_FALSE(s->light->validate());
     EXPECT_GE(s->cameras.size(), 2u);
     for (const CameraBookmark& c : s->cameras) EXPECT_FALSE(c.camera.validate()) << c.name;
     ASSERT_EQ(s->paths.size(), 1u);
@@ -106,20 +106,48 @@ TEST(Scene, PlaneBoxGeometryAndSun) {
   EXPECT_EQ(s->triangleCount(), 14u);  // ground quad + box
   EXPECT_NEAR(glm::length(s->bounds.min - glm::vec3(-10.0f, 0.0f, -10.0f)), 0.0f, 1e-5f);
   EXPECT_NEAR(glm::length(s->bounds.max - glm::vec3(10.0f, 1.01f, 10.0f)), 0.0f, 1e-5f);
-  glm::vec3 l = s->sun->towardsLight();
+  glm::vec3 l = s->light->directionalTowards();
   EXPECT_NEAR(glm::length(l - planebox::sunTowardsLight()), 0.0f, 1e-5f);
-  EXPECT_NEAR(s->sun->azimuthDeg, 30.0f, 1e-3f);
-  EXPECT_NEAR(s->sun->elevationDeg, 60.0f, 1e-3f);
+  EXPECT_NEAR(s->light->azimuthDeg, 30.0f, 1e-3f);
+  EXPECT_NEAR(s->light->elevationDeg, 60.0f, 1e-3f);
   const CameraBookmark* overview = findCamera(*s, "overview");
   ASSERT_TRUE(overview);
   float dist = glm::length(overview->camera.position - overview->camera.target);
   EXPECT_NEAR(dist, 8.0f, 0.05f);  // looks down at the shadow's centre from 8 m
 }
 
+TEST(Scene, SpotBoxAndPointBoxCarryTheirPositionalLights) {
+  for (std::string name : {"spot-box", "point-box"}) {
+    SCOPED_TRACE(name);
+    auto s = loadBuiltin(name);
+    ASSERT_TRUE(s);
+    EXPECT_TRUE(s->warnings.empty()) << s->warnings.front();
+    ASSERT_TRUE(s->light);
+    EXPECT_FALSE(s->light->validate());
+    EXPECT_GE(s->cameras.size(), 2u);
+    EXPECT_LT(s->triangleCount(), 100u);
+    EXPECT_NEAR(s->bounds.min.y, 0.0f, 1e-6f);
+    EXPECT_GT(s->light->positionM.y, s->bounds.max.y);  // above everything
+    EXPECT_TRUE(s->light->illuminates({0, 0, 0}));
+  }
+  auto spot = loadBuiltin("spot-box");
+  ASSERT_TRUE(spot && spot->light);
+  EXPECT_EQ(spot->light->type, LightType::Spot);
+  EXPECT_NEAR(spot->light->outerConeDeg, 40.0f, 1e-3f);
+  EXPECT_NEAR(spot->light->innerConeDeg, 30.0f, 1e-3f);
+  EXPECT_NEAR(spot->light->rangeM, 20.0f, 1e-5f);
+  EXPECT_NEAR(glm::length(spot->light->positionM - glm::vec3(1.5f, 5.0f, 2.0f)), 0.0f, 1e-5f);
+  EXPECT_FALSE(spot->light->illuminates({6, 0, 6}));  // a ground corner outside the cone
+  auto point = loadBuiltin("point-box");
+  ASSERT_TRUE(point && point->light);
+  EXPECT_EQ(point->light->type, LightType::Point);
+  EXPECT_NEAR(point->light->rangeM, 15.0f, 1e-5f);
+}
+
 TEST(Scene, PlaneBoxAnalyticShadowMatchesRayCastGeometry) {
   auto s = loadBuiltin("plane-box");
   ASSERT_TRUE(s);
-  const glm::vec3 l = s->sun->towardsLight();
+  const glm::vec3 l = s->light->directionalTowards();
   auto occluderOnly = [](const glm::vec3& p) { return p.y > 0.5f; };
   int inside = 0, compared = 0;
   for (int i = 0; i <= 125; ++i) {
@@ -176,7 +204,7 @@ TEST(Scene, DiagonalRowLiesAt45DegreesInTheLightImage) {
   auto s = loadBuiltin("diagonal");
   ASSERT_TRUE(s);
   // The light's image axes in the usual light view (lookAt along -L with world +y up).
-  glm::vec3 forward = -s->sun->towardsLight();
+  glm::vec3 forward = -s->light->directionalTowards();
   glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
   glm::vec3 up = glm::cross(right, forward);
   glm::vec3 row(1, 0, 0);  // the posts stand along +x

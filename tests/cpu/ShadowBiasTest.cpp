@@ -1,8 +1,13 @@
 // The shared bias model's CPU mirror (algo/ShadowBias.h) per selected map: a map split into
 // 2x2 sub-maps, each with its own matrix, must see a receiver exactly as the whole map
 // does — same plane depth at the same texel centre, same bias — because the model works in
-// the selected map's light uv with that map's local texel size.
+// the selected map's light uv with that map's local texel size. Orthographic (directional)
+// and perspective (spot) maps alike: the sub-map of a perspective map is perspective too,
+// and the w-divide, texel size x w and depth per metre / w^2 happen per map.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -11,23 +16,23 @@
 namespace sl {
 namespace {
 
-TEST(ShadowBias, SubMapWithItsOwnMatrixSeesTheReceiverAsTheWholeMapDoes) {
-  constexpr float kHalfM = 10.0f, kNearM = 1.0f, kFarM = 41.0f;
+// Splits `whole` into its 2x2 sub-maps and checks that each sees the receivers of a tilted
+// plane exactly as the whole map does.
+void expectSubMapsMatchWholeMap(const DepthMapFrame& whole, glm::vec3 towardsLightDir,
+                                bool pointLight, glm::vec3 lightPos) {
   constexpr int kRes = 1024;
-  const glm::vec3 towardsLight = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
-  const glm::mat4 view = glm::lookAt(20.0f * towardsLight, glm::vec3(0.0f), {0.0f, 0.0f, -1.0f});
-  const glm::mat4 proj = glm::ortho(-kHalfM, kHalfM, -kHalfM, kHalfM, kNearM, kFarM);
-  const DepthMapFrame whole{proj * view, glm::vec2(2.0f * kHalfM), 1.0f / (kFarM - kNearM)};
   const ShadowBiasSettings bias{0.5f, 0.25f, 0.001f};
 
   // A tilted receiver at a few points spread over all four quarters.
   const glm::vec3 N = glm::normalize(glm::vec3(0.2f, 1.0f, -0.4f));
   for (glm::vec3 P : {glm::vec3(-4.0f, 0.3f, -3.0f), glm::vec3(5.0f, -0.2f, -2.0f),
                       glm::vec3(-3.0f, 0.1f, 6.0f), glm::vec3(2.5f, 0.4f, 4.5f)}) {
+    const glm::vec3 towardsLight = pointLight ? glm::normalize(lightPos - P) : towardsLightDir;
     const MapReceiver w = receiverInMap(whole, P, N, towardsLight, glm::vec2(1.0f / kRes), bias);
     const int kx = w.uv.x >= 0.5f, ky = w.uv.y >= 0.5f;
     SCOPED_TRACE("sub-map " + std::to_string(kx + 2 * ky));
     // Sub-map (kx, ky): the quarter of the light uv square as its own [0, 1], res / 2.
+    // clip' = 2 clip + (1 - 2k) w: a perspective map's sub-map keeps its w.
     glm::mat4 s(1.0f);
     s[0][0] = s[1][1] = 2.0f;
     s[3][0] = 1.0f - 2.0f * float(kx);
@@ -48,6 +53,51 @@ TEST(ShadowBias, SubMapWithItsOwnMatrixSeesTheReceiverAsTheWholeMapDoes) {
     EXPECT_NEAR(receiverDepthAt(r.uv, r.z, r.gradient, centreSub),
                 receiverDepthAt(w.uv, w.z, w.gradient, centreWhole), 1e-6f);
   }
+}
+
+TEST(ShadowBias, SubMapWithItsOwnMatrixSeesTheReceiverAsTheWholeMapDoes) {
+  constexpr float kHalfM = 10.0f, kNearM = 1.0f, kFarM = 41.0f;
+  const glm::vec3 towardsLight = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+  const glm::mat4 view = glm::lookAt(20.0f * towardsLight, glm::vec3(0.0f), {0.0f, 0.0f, -1.0f});
+  const glm::mat4 proj = glm::ortho(-kHalfM, kHalfM, -kHalfM, kHalfM, kNearM, kFarM);
+  const DepthMapFrame whole{proj * view, glm::vec2(2.0f * kHalfM), 1.0f / (kFarM - kNearM)};
+  expectSubMapsMatchWholeMap(whole, towardsLight, false, glm::vec3(0.0f));
+}
+
+TEST(ShadowBias, PerspectiveSubMapSeesTheReceiverAsTheWholePerspectiveMapDoes) {
+  // A spot 20 m above the origin looking down with a 90 degree frustum: its sub-maps are
+  // perspective as well (each has its own w-divide, texel size x w, depth per metre / w^2).
+  constexpr float kNearM = 1.0f, kFarM = 41.0f, kFovDeg = 90.0f;
+  const glm::vec3 lightPos(3.0f, 20.0f, 2.0f);
+  const glm::mat4 view = glm::lookAt(lightPos, glm::vec3(0.0f), {0.0f, 0.0f, -1.0f});
+  const glm::mat4 proj = glm::perspective(glm::radians(kFovDeg), 1.0f, kNearM, kFarM);
+  const float extent = 2.0f * std::tan(glm::radians(0.5f * kFovDeg));
+  const DepthMapFrame whole{proj * view, glm::vec2(extent),
+                            depthPerMAtUnitW(true, 0.0f, kNearM, kFarM)};
+  ASSERT_GT(mapUvzw(whole, glm::vec3(0.0f)).w, 15.0f);  // really perspective
+  expectSubMapsMatchWholeMap(whole, glm::vec3(0.0f), true, lightPos);
+}
+
+TEST(ShadowBias, OrthographicMapIsTheAffineFormulaBitForBit) {
+  // The perspective-capable model must leave directional maps exactly as before: w = 1,
+  // uvz = M P * 0.5 + 0.5, texel and depth per metre unscaled, gradient from the 3x3 part.
+  const glm::vec3 towardsLight = glm::normalize(glm::vec3(-0.4f, 1.0f, 0.3f));
+  const glm::mat4 vp = glm::ortho(-7.0f, 9.0f, -6.0f, 8.0f, 0.5f, 30.0f) *
+                       glm::lookAt(15.0f * towardsLight, glm::vec3(1.0f), {0.0f, 1.0f, 0.0f});
+  const DepthMapFrame map{vp, glm::vec2(16.0f, 14.0f), 1.0f / 29.5f};
+  const ShadowBiasSettings bias{0.7f, 0.3f, 0.002f};
+  const glm::vec3 N = glm::normalize(glm::vec3(0.1f, 1.0f, 0.5f)), P(0.3f, 0.2f, -1.7f);
+  const glm::vec2 t(1.0f / 2048.0f);
+  const MapReceiver r = receiverInMap(map, P, N, towardsLight, t, bias);
+  const float texelM = std::max(t.x * 16.0f, t.y * 14.0f);
+  const float cosL = glm::dot(N, towardsLight), sinL = std::sqrt(1.0f - cosL * cosL);
+  const glm::vec3 uvz =
+      glm::vec3(vp * glm::vec4(P + N * (bias.normalTexels * texelM * sinL), 1.0f)) * 0.5f + 0.5f;
+  const glm::vec2 g = receiverDepthGradient(lightNormalMatrix(vp), N);
+  EXPECT_EQ(r.uv, glm::vec2(uvz));
+  EXPECT_EQ(r.z, uvz.z);
+  EXPECT_EQ(r.gradient, g);
+  EXPECT_EQ(r.bias, shadowDepthBias(bias, g, t, texelM, map.depthPerM));
 }
 
 }  // namespace

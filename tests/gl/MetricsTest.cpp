@@ -29,13 +29,13 @@ TEST(Metrics, AliasingOnAPlaneFacingTheLightIsTheAnalyticRatio) {
   cam.farM = 20.0f;
   ASSERT_FALSE(cam.validate());
   r->setCamera(cam);
-  DirectionalLight light;
+  Light light;
   light.azimuthDeg = 0.0f;
   light.elevationDeg = 90.0f;
   r->setLight(light);
 
   LightFit fit;
-  ASSERT_FALSE(fitDirectionalLight(cam, 1.0f, r->scene()->bounds, light.towardsLight(),
+  ASSERT_FALSE(fitDirectionalLight(cam, 1.0f, r->scene()->bounds, light.directionalTowards(),
                                    FocusSettings{}, fit));
   const double pixelM = 2.0 * kHeightM * std::tan(glm::radians(kFovDeg) / 2.0) / kSize;
 
@@ -87,7 +87,7 @@ TEST(Metrics, StaticSceneHasNoMaskChangeAndNoFlicker) {
     ASSERT_FALSE(r->renderFrame(320, 180, 0));
     FrameReadback f = r->readback();
     std::vector<std::uint8_t> ref;
-    reference.evaluate(f.positions, f.normals, r->light().towardsLight(), ref);
+    reference.evaluate(f.positions, f.normals, r->light().directionalTowards(), ref);
     if (frame > 0) {
       MaskChange c = compareConsecutiveMasks(previousMask, f.hardMask);
       FlickerStats fl = computeFlicker(previousMask, f.hardMask, previousReference, ref);

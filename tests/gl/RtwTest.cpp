@@ -86,7 +86,7 @@ TEST(RtwParity, BackwardImportanceMatchesCpuScatter) {
     FrameReadback fb = r->readback();
     LightFit fit;
     ASSERT_FALSE(fitDirectionalLight(r->camera(), float(w) / float(h), r->scene()->bounds,
-                                     r->light().towardsLight(), FocusSettings{}, fit));
+                                     r->light().directionalTowards(), FocusSettings{}, fit));
     const ParamSet& p = r->params();
     rtw::ImportanceSettings s;
     s.eyeOn = p.getBool("importance.eye");
@@ -98,7 +98,7 @@ TEST(RtwParity, BackwardImportanceMatchesCpuScatter) {
     s.nearM = r->camera().nearM;
     ASSERT_FALSE(p.getBool("importance.edge"));
     rtw::ImportanceMap cpu(gpu.width, gpu.height);
-    const glm::vec3 L = r->light().towardsLight(), C = r->camera().position,
+    const glm::vec3 L = r->light().directionalTowards(), C = r->camera().position,
                     F = r->camera().forward();
     for (size_t i = 0; i < fb.positions.size(); ++i) {
       if (fb.positions[i].w <= 0.0f) continue;

@@ -162,7 +162,7 @@ void checkParity(const Case& k) {
   // The light fit of that frame, exactly as the technique computes it (no rotation).
   LightFit fit;
   ASSERT_FALSE(fitDirectionalLight(r->camera(), float(w) / float(h), r->scene()->bounds,
-                                   r->light().towardsLight(), FocusSettings{}, fit));
+                                   r->light().directionalTowards(), FocusSettings{}, fit));
   const std::vector<rtw::LightTriangle> tris = sceneLightTriangles(*r->scene(), fit.viewProj);
   const rtw::WarpedRaster cpu = rtw::rasterizeWarped(maps, k.smRes, tris);
 

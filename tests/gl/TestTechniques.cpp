@@ -9,6 +9,7 @@
 #include "GlTestEnv.h"
 #include "algo/Focus.h"
 #include "common/shared_constants.h"
+#include "core/LightBinding.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 #include "techniques/uniform/UniformShadowMap.h"
@@ -29,8 +30,8 @@ class Array2x2 : public Technique {
     auto pass = ctx.timer.scope("shadow map");
     const int sub = ctx.params.getInt("resolution") / 2;
     LightFit fit;
-    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
-                                       FocusSettings{}, fit))
+    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                       ctx.light.directionalTowards(), FocusSettings{}, fit))
       throw std::runtime_error(*err);
     select_ = fit.viewProj;
     if (!maps_ || maps_.width() != sub) {
@@ -95,7 +96,7 @@ class DeferredUniform : public Technique {
   void resolveDeferred(const ResolveTargets& t, const ParamSet&) override {
     t.bindForCompute();
     resolve_.use();
-    resolve_.set("u_towardsLight", t.towardsLight);
+    bindLight(resolve_, t.light);
     resolve_.set("u_size", glm::ivec2(t.width, t.height));
     inner_.bindLookup(resolve_, SL_UNIT_LOOKUP_FIRST);
     glDispatchCompute(GLuint((t.width + 7) / 8), GLuint((t.height + 7) / 8), 1);

@@ -39,7 +39,7 @@ TEST(UniformAccuracy, ReferenceMatchesAnalyticShadowSquare) {
   ASSERT_TRUE(r);
   ASSERT_FALSE(r->renderFrame(320, 240, 0));
   auto err = r->computeError();
-  const glm::vec3 L = r->light().towardsLight();
+  const glm::vec3 L = r->light().directionalTowards();
   size_t ground = 0, disagree = 0;
   for (size_t i = 0; i < err.frame.positions.size(); ++i) {
     const glm::vec4& p = err.frame.positions[i];

@@ -93,7 +93,7 @@ TechniqueInfo CascadedShadowMap::info() {
   TechniqueInfo info{"cascades", "Cascaded shadow maps",
                      "z-partitioning (Lloyd et al. 2006 §5.2; parallel-split maps, Zhang et al. "
                      "2006): k orthographic maps, each fitted to one depth slice of the view "
-                     "frustum, selected per pixel by view depth.",
+                     "frustum, selected per pixel by view depth. Directional light only.",
                      std::move(p)};
   info.passes = {
       {"partition maps", "Partition maps",
@@ -275,7 +275,7 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     auto pass = ctx.timer.scope("partition maps");
     partition::CascadeFit fit;
     if (auto err = partition::fitCascades(ctx.camera, ctx.aspect, ctx.scene.bounds,
-                                          ctx.towardsLight, s, fit))
+                                          ctx.light.directionalTowards(), s, fit))
       throw std::runtime_error(*err);
     fit_ = std::move(fit);
     eye_ = ctx.camera.position;

@@ -9,6 +9,7 @@
 #include "algo/rtw/Moments.h"
 #include "algo/rtw/Warp.h"
 #include "common/shared_constants.h"
+#include "core/LightBinding.h"
 #include "core/ParamBinding.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
@@ -209,9 +210,13 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
         "Backward RTW with the light frustum rotated by PCA of the importance map "
         "(Tokuyoshi et al. 2014, seed 000), with a vibration threshold.";
   }
-  TechniqueInfo info{id, name, desc, p};
+  // Directional only: the warp is built over one orthographic light image; a spot's
+  // perspective map (or a point light's cube) would need the importance and warp defined in
+  // its projective space, which is not implemented.
+  TechniqueInfo info{id, name, desc + " Directional light only.", p};
   info.passes = passDecls(id);
   info.publications = publicationDecls(id);
+  info.lights = {LightType::Directional};
   return info;
 }
 
@@ -408,7 +413,7 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     prog.set("u_lightViewProj", lightViewProj);
     prog.set("u_cameraPos", ctx.camera.position);
     prog.set("u_cameraForward", ctx.camera.forward());
-    prog.set("u_towardsLight", ctx.towardsLight);
+    bindLight(prog, ctx.light);
     prog.set("u_gPosition", SL_UNIT_G_POSITION);
     prog.set("u_prevHard", SL_UNIT_HARD);
   };
@@ -543,8 +548,8 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
     auto pass = ctx.timer.scope("focus");
     FocusSettings fs;
     if (config_.rotation) fs.rotation = rtw::lightViewRotation(rotation_);
-    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
-                                       fs, fit))
+    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                       ctx.light.directionalTowards(), fs, fit))
       throw std::runtime_error(*err);
   }
   view_ = depthMapView(fit);

@@ -13,13 +13,16 @@ namespace sl {
 TechniqueInfo UniformShadowMap::info() {
   TechniqueInfo info{"uniform", "Uniform shadow map",
                      "Standard shadow map (Williams 1978): one orthographic depth map from the "
-                     "light, focused on what the camera sees. The baseline.",
+                     "light, focused on what the camera sees (directional); for a spot, one "
+                     "perspective map covering its cone. The baseline.",
                      shadowMapParamDecls(2048)};
   info.passes = {{"shadow map", "Shadow map",
-                  "Fit the light's orthographic frustum to what the camera sees, then render "
-                  "the scene's depth from the light: uniform texels over the focused frustum.",
+                  "Fit the light's frustum (directional: orthographic, focused on what the "
+                  "camera sees; spot: perspective, its cone), then render the scene's depth "
+                  "from the light: uniform texels over the frustum.",
                   "shadowmap"}};
   info.publications = {shadowMapPublicationDecl()};
+  info.lights = {LightType::Directional, LightType::Spot};
   return info;
 }
 
@@ -30,9 +33,12 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
   auto pass = ctx.timer.scope("shadow map");
   const int res = ctx.params.getInt("resolution");
   LightFit fit;
-  if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, ctx.towardsLight,
-                                     FocusSettings{}, fit))
+  if (ctx.light.type == LightType::Spot) {
+    if (auto err = fitSpotLight(ctx.light, ctx.scene.bounds, fit)) throw std::runtime_error(*err);
+  } else if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                            ctx.light.directionalTowards(), FocusSettings{}, fit)) {
     throw std::runtime_error(*err);
+  }
   view_ = depthMapView(fit);
 
   if (!shadowMap_ || shadowMap_.width() != res) {

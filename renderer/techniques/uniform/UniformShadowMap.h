@@ -1,6 +1,7 @@
-// Uniform (standard) shadow map, Williams 1978: one orthographic depth map from the light,
-// focused on the part of the scene the camera sees (techniques.md §1). The baseline every
-// other technique is compared against at the same texel budget.
+// Uniform (standard) shadow map, Williams 1978: one orthographic depth map from a
+// directional light, focused on the part of the scene the camera sees (techniques.md §1), or
+// one perspective map over a spot's cone. The baseline every other technique is compared
+// against at the same texel budget.
 #pragma once
 
 #include "core/ShadowPass.h"

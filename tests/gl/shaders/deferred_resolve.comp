@@ -11,7 +11,8 @@ layout(r8ui, binding = SL_IMAGE_RESOLVE_HARD) writeonly uniform uimage2D o_hard;
 layout(r8, binding = SL_IMAGE_RESOLVE_FILTERED) writeonly uniform image2D o_filtered;
 layout(r32f, binding = SL_IMAGE_RESOLVE_ALIASING) writeonly uniform image2D o_aliasing;
 layout(rg32f, binding = SL_IMAGE_RESOLVE_TEXEL) writeonly uniform image2D o_texel;
-uniform vec3 u_towardsLight;
+// The light: common/light.glsl, bound by sl::bindLight.
+#include "common/light.glsl"
 uniform ivec2 u_size;
 
 #include "uniform/lookup.glsl"
@@ -43,7 +44,7 @@ void main() {
   if (P.w <= 0.0) {
     hard = SL_MASK_EMPTY;
     filtered = 1.0;
-  } else if (dot(N, u_towardsLight) <= 0.0) {
+  } else if (dot(N, towardsLight(P.xyz)) <= 0.0 || lightIlluminates(P.xyz) < 0.5) {
     hard = SL_MASK_SHADOWED;
     filtered = 0.0;
   } else {

@@ -6,18 +6,30 @@
 namespace sl {
 
 namespace {
-FloatImage readImage(FrameContext& ctx, const gl::Texture& texture, GLenum format, GLenum type) {
+FloatImage readImage(FrameContext& ctx, const gl::Texture& texture, GLenum format, GLenum type,
+                     int layer = -1) {
   FloatImage img;
   img.width = texture.width();
   img.height = texture.height();
   img.values.resize(std::size_t(img.width) * std::size_t(img.height));
   const std::size_t bytes = img.values.size() * sizeof(float);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(texture.id(), 0, format, type, GLsizei(bytes), img.values.data());
+  if (layer < 0)
+    glGetTextureImage(texture.id(), 0, format, type, GLsizei(bytes), img.values.data());
+  else  // one layer of an array
+    glGetTextureSubImage(texture.id(), 0, 0, 0, layer, img.width, img.height, 1, format, type,
+                         GLsizei(bytes), img.values.data());
   ctx.publication->readbackBytes += bytes;
   return img;
 }
 }  // namespace
+
+bool publishDepthLayer(FrameContext& ctx, const std::string& key, const gl::Texture& depth,
+                       int layer) {
+  if (!ctx.wants(key)) return false;
+  ctx.publication->images[key] = readImage(ctx, depth, GL_DEPTH_COMPONENT, GL_FLOAT, layer);
+  return true;
+}
 
 bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& depth) {
   if (!ctx.wants(key)) return false;

@@ -13,6 +13,9 @@ namespace sl {
 
 /// A depth texture as a float image (0..1). False (nothing read) when not requested.
 bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& depth);
+/// One layer of a depth array texture (cascades, faces) as a float image (0..1).
+bool publishDepthLayer(FrameContext& ctx, const std::string& key, const gl::Texture& depth,
+                       int layer);
 /// An R32UI texture that holds float bits (atomicMax importance) as a float image.
 bool publishFloatBits(FrameContext& ctx, const std::string& key, const gl::Texture& texture);
 /// `count` floats of `buffer` from float `offset` on as a curve.

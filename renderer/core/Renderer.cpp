@@ -24,11 +24,12 @@ namespace sl {
 namespace {
 /// view.overlay's names, value i at index i (SL_OVERLAY_*, composite.frag).
 std::vector<std::string> overlayNames() {
-  std::vector<std::string> names(SL_OVERLAY_GRID + 1);
+  std::vector<std::string> names(SL_OVERLAY_PARTITION + 1);
   names[SL_OVERLAY_NONE] = "none";
   names[SL_OVERLAY_ERROR] = "error";
   names[SL_OVERLAY_ALIASING] = "aliasing";
   names[SL_OVERLAY_GRID] = "warp-grid";
+  names[SL_OVERLAY_PARTITION] = "partition";
   return names;
 }
 }  // namespace
@@ -51,7 +52,7 @@ std::vector<ParamDecl> rendererParamDecls() {
        .type = ParamType::Enum,
        .defaultValue = SL_OVERLAY_NONE,
        .minValue = SL_OVERLAY_NONE,
-       .maxValue = SL_OVERLAY_GRID,
+       .maxValue = SL_OVERLAY_PARTITION,
        .step = 1,
        .enumNames = overlayNames(),
        .help =
@@ -60,7 +61,10 @@ std::vector<ParamDecl> rendererParamDecls() {
            "m as a heat map (blue: m<1 oversampled, white: m=1, red: m>1 undersampled; log2 scale "
            "-4..4), or the shadow-map texel grid (every 1/" +
            std::to_string(SL_GRID_LINES_PER_MAP) +
-           " of the selected map) projected onto the scene.",
+           " of the selected map) projected onto the scene, or the partition: each pixel coloured "
+           "by the index of the map it selected (cascade, face, layer; colours repeat every " +
+           std::to_string(SL_PARTITION_COLOURS) +
+           "): 0 red, 1 green, 2 blue, 3 yellow, 4 magenta, 5 cyan, 6 orange, 7 violet.",
        .uniform = "u_overlay"},
   };
 }
@@ -72,7 +76,7 @@ void GLAPIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum seve
 
 struct Targets {
   int width = 0, height = 0;
-  gl::Texture position, normal, albedo, depth, hard, filtered, aliasing, texel, color;
+  gl::Texture position, normal, albedo, depth, hard, filtered, aliasing, texel, mapIndex, color;
   gl::Texture reference;  // R8UI reference mask of the last computeError() (error overlay)
   gl::Framebuffer gbuffer, resolve, composite;
 };
@@ -134,6 +138,7 @@ struct RendererState {
     t.filtered = gl::Texture::create2D(GL_R8, w, h);
     t.aliasing = gl::Texture::create2D(GL_R32F, w, h);
     t.texel = gl::Texture::create2D(GL_RG32F, w, h);
+    t.mapIndex = gl::Texture::create2D(GL_R8UI, w, h);
     t.reference = gl::Texture::create2D(GL_R8UI, w, h);
     t.color = gl::Texture::create2D(GL_RGBA8, w, h);
     t.gbuffer = gl::Framebuffer::create();
@@ -148,7 +153,8 @@ struct RendererState {
     t.resolve.attach(GL_COLOR_ATTACHMENT1, t.filtered);
     t.resolve.attach(GL_COLOR_ATTACHMENT2, t.aliasing);
     t.resolve.attach(GL_COLOR_ATTACHMENT3, t.texel);
-    t.resolve.setDrawBuffers(4);
+    t.resolve.attach(GL_COLOR_ATTACHMENT4, t.mapIndex);
+    t.resolve.setDrawBuffers(5);
     t.resolve.checkComplete("resolve");
     t.composite = gl::Framebuffer::create();
     t.composite.attach(GL_COLOR_ATTACHMENT0, t.color);
@@ -167,6 +173,7 @@ void ResolveTargets::bindForCompute() const {
   glBindImageTexture(SL_IMAGE_RESOLVE_ALIASING, aliasing.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      GL_R32F);
   glBindImageTexture(SL_IMAGE_RESOLVE_TEXEL, texel.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glBindImageTexture(SL_IMAGE_RESOLVE_MAP, mapIndex.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
 }
 
 namespace {
@@ -540,6 +547,8 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                    t.position,
                    t.normal,
                    t.hard,
+                   t.aliasing,
+                   t.mapIndex,
                    params(),
                    *s.timer,
                    s.shaders,
@@ -566,8 +575,12 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
       glBindVertexArray(s.emptyVao.id());
       glDrawArrays(GL_TRIANGLES, 0, 3);
     } else {
-      const ResolveTargets targets{width,      height,     t.position, t.normal,       t.hard,
-                                   t.filtered, t.aliasing, t.texel,    t.resolve.id(), s.light};
+      // Map 0 for every pixel unless the technique writes its selection.
+      const GLuint zero = 0;
+      glClearTexImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+      const ResolveTargets targets{width,      height,         t.position, t.normal,
+                                   t.hard,     t.filtered,     t.aliasing, t.texel,
+                                   t.mapIndex, t.resolve.id(), s.light};
       s.technique->resolveDeferred(targets, params());
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                       GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -594,6 +607,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     glBindTextureUnit(SL_UNIT_REFERENCE, t.reference.id());
     glBindTextureUnit(SL_UNIT_ALIASING, t.aliasing.id());
     glBindTextureUnit(SL_UNIT_TEXEL, t.texel.id());
+    glBindTextureUnit(SL_UNIT_MAP_INDEX, t.mapIndex.id());
     bindLight(c, s.light);
     c.set("u_cameraPos", s.camera.position);
     bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
@@ -649,6 +663,9 @@ FrameReadback Renderer::readback() const {
   r.texel.resize(n);
   glGetTextureImage(t.texel.id(), 0, GL_RG, GL_FLOAT, GLsizei(n * sizeof(glm::vec2)),
                     r.texel.data());
+  r.mapIndex.resize(n);
+  glGetTextureImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, GLsizei(n),
+                    r.mapIndex.data());
   r.color.width = t.width;
   r.color.height = t.height;
   r.color.pixels.resize(n * 4);
@@ -666,6 +683,7 @@ FrameReadback Renderer::readback() const {
   flip(r.hardMask);
   flip(r.aliasing);
   flip(r.texel);
+  flip(r.mapIndex);
   return r;
 }
 

@@ -167,6 +167,9 @@ struct FrameReadback {
   /// The final shadow-map uv the resolve pass looked up per pixel (through any warp, with
   /// the technique's normal offset applied); (0, 0) where uncovered.
   std::vector<glm::vec2> texel;
+  /// The index of the map the resolve selected per pixel (a cascade, face, layer; 0 for
+  /// single-map techniques and where uncovered).
+  std::vector<std::uint8_t> mapIndex;
   ImageRGBA8 color;  ///< final shaded image, row 0 = top
 };
 

@@ -38,6 +38,10 @@ struct FrameContext {
   const gl::Texture& gNormal;
   /// The previous frame's hard shadow mask (R8UI, camera space): shadow-edge importance.
   const gl::Texture& prevHardMask;
+  /// The previous frame's aliasing m (R32F) and selected map index (R8UI) per pixel: the
+  /// resolve targets before this frame's resolve (per-map statistics a frame late).
+  const gl::Texture& prevAliasing;
+  const gl::Texture& prevMapIndex;
   const ParamSet& params;  ///< the technique's own parameters
   gl::GpuTimer& timer;
   const gl::ShaderLibrary& shaders;
@@ -56,7 +60,7 @@ enum class ResolveMode {
   /// "@lookup": a selection of one of any number of maps + a test in it. Aliasing m comes
   /// from the screen derivatives of the selected map's texel coordinate.
   Lookup,
-  /// The technique writes the four targets itself in resolveDeferred (tile by tile, a
+  /// The technique writes the targets itself in resolveDeferred (tile by tile, a
   /// screen-space result...), with the same meaning as the resolve pass's outputs.
   Deferred,
 };
@@ -64,7 +68,8 @@ enum class ResolveMode {
 /// What a deferred resolve reads and writes (Technique::resolveDeferred). The targets
 /// follow shaders/common/resolve.frag: hard mask R8UI (SL_MASK_*), filtered visibility
 /// R8 (1 = lit), aliasing m R32F (texel footprint of the SELECTED map / pixel footprint,
-/// 0 where uncovered), texel RG32F (the selected map's uv, for the grid overlay).
+/// 0 where uncovered), texel RG32F (the selected map's uv, for the grid overlay), map index
+/// R8UI (the selected map, for the partition overlay; cleared to 0 before the call).
 struct ResolveTargets {
   int width = 0, height = 0;
   const gl::Texture& gPosition;  ///< world xyz, w = covered (RGBA32F)
@@ -73,9 +78,10 @@ struct ResolveTargets {
   const gl::Texture& filtered;
   const gl::Texture& aliasing;
   const gl::Texture& texel;
-  GLuint framebuffer = 0;  ///< the four as colour attachments 0..3, for a fragment pass
+  const gl::Texture& mapIndex;
+  GLuint framebuffer = 0;  ///< the five as colour attachments 0..4, for a fragment pass
   const Light& light;      ///< the frame's light (sl::bindLight: common/light.glsl)
-  /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the four
+  /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the five
   /// targets to image units SL_IMAGE_RESOLVE_* (write-only), for a compute pass.
   void bindForCompute() const;
 };
@@ -95,8 +101,8 @@ class Technique {
   /// Lookup mode: binds what the lookup needs (textures from `firstUnit` on, per-map
   /// uniforms) to `resolve`. Declared parameters are already bound (bindParams).
   virtual void bindLookup(const gl::Program& /*resolve*/, int /*firstUnit*/) const {}
-  /// Deferred mode: writes the four resolve targets for this frame. Throws like
-  /// renderShadows. Declared parameters are already bound to programs().
+  /// Deferred mode: writes the resolve targets for this frame (the map index optionally). Throws
+  /// like renderShadows. Declared parameters are already bound to programs().
   virtual void resolveDeferred(const ResolveTargets& /*targets*/, const ParamSet& /*params*/) {}
   /// Every program of the technique (not the renderer's resolve pass). The renderer binds
   /// the declared parameters (ParamDecl::uniform) to each before renderShadows, and refuses

@@ -1,6 +1,7 @@
 // The list of techniques. Adding a technique: its folder under techniques/ and shaders/,
 // and one line here.
 #include "core/Technique.h"
+#include "techniques/cascades/CascadedShadowMap.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
@@ -41,6 +42,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       perspectiveEntry<PerspectiveShadowMap::Kind::Psm>("psm"),
       perspectiveEntry<PerspectiveShadowMap::Kind::Lispsm>("lispsm"),
       perspectiveEntry<PerspectiveShadowMap::Kind::Tsm>("tsm"),
+      entry<CascadedShadowMap>(),
   };
   return list;
 }

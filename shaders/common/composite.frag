@@ -13,6 +13,7 @@ layout(binding = SL_UNIT_HARD) uniform usampler2D u_hard;  // technique's hard m
 layout(binding = SL_UNIT_REFERENCE) uniform usampler2D u_reference;  // Embree mask of this view
 layout(binding = SL_UNIT_ALIASING) uniform sampler2D u_aliasing;  // m per pixel
 layout(binding = SL_UNIT_TEXEL) uniform sampler2D u_texel;  // selected map's uv (through any warp)
+layout(binding = SL_UNIT_MAP_INDEX) uniform usampler2D u_mapIndex;  // selected map per pixel
 uniform int u_overlay;  // view.overlay: SL_OVERLAY_*
 in vec2 v_uv;
 
@@ -20,6 +21,15 @@ in vec2 v_uv;
 vec3 aliasingColor(float m) {
   float t = clamp(log2(max(m, 1e-6)) / 4.0, -1.0, 1.0);
   return t < 0.0 ? mix(vec3(1.0), vec3(0.15, 0.35, 0.95), -t) : mix(vec3(1.0), vec3(0.9, 0.1, 0.1), t);
+}
+// The partition overlay's colours, index mod SL_PARTITION_COLOURS (legend: view.overlay's
+// help in rendererParamDecls).
+vec3 partitionColor(uint i) {
+  const vec3 c[SL_PARTITION_COLOURS] = vec3[](
+      vec3(SL_PARTITION_COLOUR_0), vec3(SL_PARTITION_COLOUR_1), vec3(SL_PARTITION_COLOUR_2),
+      vec3(SL_PARTITION_COLOUR_3), vec3(SL_PARTITION_COLOUR_4), vec3(SL_PARTITION_COLOUR_5),
+      vec3(SL_PARTITION_COLOUR_6), vec3(SL_PARTITION_COLOUR_7));
+  return c[i % uint(SL_PARTITION_COLOURS)];
 }
 out vec4 o_color;
 
@@ -56,6 +66,8 @@ void main() {
     vec2 d = abs(fract(g - 0.5) - 0.5) / max(w, vec2(1e-6));
     float line = 1.0 - clamp(min(d.x, d.y), 0.0, 1.0);
     c = mix(c, vec3(1.0, 0.85, 0.1), line * 0.85);
+  } else if (u_overlay == SL_OVERLAY_PARTITION) {
+    c = mix(c, partitionColor(texelFetch(u_mapIndex, px, 0).r), 0.55);
   }
   o_color = vec4(c, 1.0);
 }

@@ -1,9 +1,9 @@
 // Resolve pass: per camera pixel, the technique's shadow test. Writes the hard mask
 // (SL_MASK_*: lit, shadowed, no surface) that the metrics compare with the Embree
 // reference, the filtered visibility used for shading, aliasing m and the selected map's
-// uv (grid overlay). Surfaces facing away from the light are shadowed, exactly as in
-// ShadowReference::isLit (C++), and so is what lies outside a spot's cone or a light's
-// range (common/light.glsl). Techniques that resolve in their own deferred pass
+// uv (grid overlay) and index (partition overlay). Surfaces facing away from the light are
+// shadowed, exactly as in ShadowReference::isLit (C++), and so is what lies outside a spot's
+// cone or a light's range (common/light.glsl). Techniques that resolve in their own deferred pass
 // (Technique::resolveDeferred) write the same four targets themselves.
 // A technique's lookup ("@lookup") defines, over any number of maps:
 //   ShadowCoord shadowLookupCoord(vec3 P, vec3 N)  selects a map (common/shadow_coord.glsl),
@@ -25,6 +25,7 @@ layout(location = 0) out uint o_hard;
 layout(location = 1) out float o_filtered;
 layout(location = 2) out float o_aliasing;  // m: texel footprint / pixel footprint
 layout(location = 3) out vec2 o_texel;      // the selected map's uv, for the grid
+layout(location = 4) out uint o_map;        // the selected map's index (partition overlay)
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
@@ -37,6 +38,7 @@ void main() {
   vec2 dX = dFdx(texel), dY = dFdy(texel);
   float area = abs(dX.x * dY.y - dX.y * dY.x);
   o_texel = c.uvz.xy;
+  o_map = uint(clamp(c.map, 0, 255));
   o_aliasing = P.w > 0.0 && area > 0.0 ? inversesqrt(area) : 0.0;
   if (P.w <= 0.0) {
     o_hard = SL_MASK_EMPTY;

@@ -22,13 +22,15 @@
 #define SL_UNIT_REFERENCE 6     // Embree reference mask (error overlay)
 #define SL_UNIT_ALIASING 7      // m per pixel (resolve target 2)
 #define SL_UNIT_TEXEL 8         // selected map's uv per pixel (resolve target 3)
-#define SL_UNIT_LOOKUP_FIRST 9  // a technique's lookup textures start here
+#define SL_UNIT_MAP_INDEX 9     // selected map's index per pixel (resolve target 4)
+#define SL_UNIT_LOOKUP_FIRST 10  // a technique's lookup textures start here
 
 // --- Image units of a deferred resolve (Technique::resolveDeferred writes these).
 #define SL_IMAGE_RESOLVE_HARD 0      // r8ui
 #define SL_IMAGE_RESOLVE_FILTERED 1  // r8
 #define SL_IMAGE_RESOLVE_ALIASING 2  // r32f
 #define SL_IMAGE_RESOLVE_TEXEL 3     // rg32f
+#define SL_IMAGE_RESOLVE_MAP 4       // r8ui: the selected map's index (partition overlay)
 
 // --- Multi-map lookups (shaders/common/depth_map_test.glsl): per-map uniform arrays.
 #define SL_MAX_DEPTH_MAPS 8
@@ -38,6 +40,17 @@
 #define SL_OVERLAY_ERROR 1
 #define SL_OVERLAY_ALIASING 2
 #define SL_OVERLAY_GRID 3
+#define SL_OVERLAY_PARTITION 4  // each pixel coloured by the index of the map it selected
+#define SL_PARTITION_COLOURS 8  // distinct overlay colours (composite.frag); index mod 8
+// Their RGB (0..1): composite.frag and the Partitions panel (ui/panels/partition).
+#define SL_PARTITION_COLOUR_0 0.90, 0.20, 0.20  // red
+#define SL_PARTITION_COLOUR_1 0.20, 0.75, 0.25  // green
+#define SL_PARTITION_COLOUR_2 0.25, 0.40, 0.95  // blue
+#define SL_PARTITION_COLOUR_3 0.95, 0.85, 0.20  // yellow
+#define SL_PARTITION_COLOUR_4 0.85, 0.25, 0.85  // magenta
+#define SL_PARTITION_COLOUR_5 0.20, 0.85, 0.90  // cyan
+#define SL_PARTITION_COLOUR_6 1.00, 0.55, 0.10  // orange
+#define SL_PARTITION_COLOUR_7 0.55, 0.35, 0.85  // violet
 #define SL_GRID_LINES_PER_MAP 16  // the grid overlay: a line every 1/16 of the selected map
 
 // --- Aliasing statistics (common/aliasing_stats.comp, the renderer's "aliasing.*"
@@ -49,6 +62,14 @@
 #define SL_ALIASING_LOG2_MIN (-16)
 #define SL_ALIASING_GROUP 16     // local_size_x/y
 #define SL_BUFFER_ALIASING_STATS 7  // SSBO binding (the renderer's, after the technique's)
+
+// --- Cascades (techniques/cascades, shaders/cascades).
+#define SL_CASCADE_BUFFER_DEPTH_RANGE 0  // min, max view depth (float bits as uint)
+#define SL_CASCADE_GROUP 8               // local_size_x/y of the depth-range reduction
+#define SL_CASCADE_BUFFER_M_STATS 1      // per map: histogram of log2 m, count, max m bits
+#define SL_CASCADE_M_BINS 128            // histogram bins over log2 m in [-8, 8): 1/8 octave
+#define SL_CASCADE_M_LOG2_MIN -8.0
+#define SL_CASCADE_M_LOG2_MAX 8.0
 
 // --- RTW (techniques/rtw, shaders/rtw).
 #define SL_RTW_BUFFER_COLLAPSED 0  // 1D importance [x n][y n], float bits as uint

@@ -3,6 +3,7 @@
 
 #include "panels/analysis/AnalysisPanels.h"
 #include "panels/perspective/PerspectivePanels.h"
+#include "panels/partition/PartitionPanels.h"
 #include "panels/rtw/RtwPanels.h"
 
 namespace sl::ui {
@@ -14,6 +15,7 @@ const std::vector<PanelEntry>& publicationPanels() {
              rtwPanels(),
              analysisPanels(),
              perspectivePanels(),
+             partitionPanels(),
          })
       all.insert(all.end(), family.begin(), family.end());
     return all;

@@ -151,6 +151,23 @@ QString formatValue(double v) {
   return QString::number(v, 'g', 4);
 }
 
+sl::FloatImage displayCopy(const sl::FloatImage& image, int maxTexels) {
+  const int step =
+      std::max(1, (std::max(image.width, image.height) + maxTexels - 1) / std::max(1, maxTexels));
+  if (step == 1) return image;
+  sl::FloatImage out;
+  out.width = (image.width + step - 1) / step;
+  out.height = (image.height + step - 1) / step;
+  out.channels = 1;
+  out.values.resize(size_t(out.width) * size_t(out.height));
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      out.values[size_t(y) * size_t(out.width) + size_t(x)] =
+          image.values[(size_t(y * step) * size_t(image.width) + size_t(x * step)) *
+                       size_t(image.channels)];
+  return out;
+}
+
 QString noDataText(const QString& techniqueId, const QString& what,
                    const std::set<std::string>& keys) {
   const QString id = techniqueId.isEmpty() ? QObject::tr("this technique") : techniqueId;

@@ -55,6 +55,10 @@ ValueRange symmetricRange(std::span<const float> values, int channels = 1, int c
 /// is the top (so it displays upright).
 QImage colorize(const sl::FloatImage& image, int channel, const ValueRange& range, ColorMap map);
 
+/// A display copy of channel 0 of `image` with at most `maxTexels` per side (point sampled;
+/// the image itself when it is small enough).
+sl::FloatImage displayCopy(const sl::FloatImage& image, int maxTexels);
+
 /// "0.0123", "1.23e+05": four significant digits.
 QString formatValue(double v);
 

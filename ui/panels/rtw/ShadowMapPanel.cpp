@@ -21,26 +21,9 @@ namespace sl::ui {
 namespace {
 constexpr int kMaxDisplayTexels = 1024;  ///< larger maps are point-sampled for display
 
-/// A display copy of at most kMaxDisplayTexels per side (point sampled).
-sl::FloatImage displayCopy(const sl::FloatImage& image) {
-  const int step = std::max(
-      1, (std::max(image.width, image.height) + kMaxDisplayTexels - 1) / kMaxDisplayTexels);
-  if (step == 1) return image;
-  sl::FloatImage out;
-  out.width = (image.width + step - 1) / step;
-  out.height = (image.height + step - 1) / step;
-  out.channels = 1;
-  out.values.resize(size_t(out.width) * out.height);
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x)
-      out.values[size_t(y) * out.width + x] =
-          image.values[(size_t(y * step) * image.width + size_t(x * step)) * image.channels];
-  return out;
-}
-
 void showDepth(ImageView* view, const sl::FloatImage& image, const QString& caption) {
   const auto full = std::make_shared<const sl::FloatImage>(image);
-  const sl::FloatImage shown = displayCopy(image);
+  const sl::FloatImage shown = displayCopy(image, kMaxDisplayTexels);
   // Depth 1 = nothing rendered there (the clear value): left out of the range.
   const ValueRange range = finiteRange(shown.values, 1, 0, 1.0f);
   view->setImage(colorize(shown, 0, range, ColorMap::Grey), image.width, image.height);

@@ -1,0 +1,366 @@
+// Cascaded shadow maps (CascadedShadowMap.h): fit the k slices, render each into its layer,
+// reduce the G-buffer's view-depth range for the next frame, select by view depth.
+#include "CascadedShadowMap.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "common/shared_constants.h"
+#include "core/Publish.h"
+#include "core/SceneGpu.h"
+
+namespace sl {
+
+namespace {
+
+constexpr std::uint32_t kFloatMaxBits = 0x7f7fffffu;
+/// The largest partition array (4 GiB): k x resolution^2 x 4 B beyond it is refused.
+constexpr std::uint64_t kMaxArrayBytes = 4ull << 30;
+
+gl::ProgramDesc rangeProgramDesc() {
+  return {"cascades/depth_range", {{GL_COMPUTE_SHADER, "cascades/depth_range.comp"}}, {}, {}};
+}
+gl::ProgramDesc mProgramDesc() {
+  return {"cascades/partition_m", {{GL_COMPUTE_SHADER, "cascades/partition_m.comp"}}, {}, {}};
+}
+constexpr std::size_t kMStride = SL_CASCADE_M_BINS + 2;  ///< uints per map in mStats_
+const char* const kMKeys[] = {"m.p95", "m.max", "m.pixels"};
+
+}  // namespace
+
+TechniqueInfo CascadedShadowMap::info() {
+  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
+  for (ParamDecl& d : p)
+    if (d.key == "resolution")
+      d.help =
+          "Width and height of EVERY partition's map in texels (the total is k times its "
+          "square).";
+  auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
+  add({.key = "partitions",
+       .label = "Partitions",
+       .group = "Cascades",
+       .type = ParamType::Int,
+       .defaultValue = 4,
+       .minValue = 1,
+       .maxValue = SL_MAX_DEPTH_MAPS,
+       .step = 1,
+       .help = "k: the view frustum is cut into k slices along the view depth, one "
+               "orthographic map each (z-partitioning)."});
+  add({.key = "split",
+       .label = "Split scheme",
+       .group = "Cascades",
+       .type = ParamType::Enum,
+       .defaultValue = double(int(partition::SplitScheme::Log)),
+       .minValue = 0,
+       .maxValue = 2,
+       .step = 1,
+       .enumNames = {"uniform", "log", "practical"},
+       .help = "Where the slices end: uniform in depth, logarithmic z_i = n (f/n)^(i/k) (equal "
+               "error per slice, Lloyd et al. 2006), or practical: split.lambda * log + "
+               "(1 - split.lambda) * uniform (Zhang et al. 2006)."});
+  add({.key = "split.lambda",
+       .label = "Practical lambda",
+       .group = "Cascades",
+       .type = ParamType::Float,
+       .defaultValue = 0.5,
+       .minValue = 0.0,
+       .maxValue = 1.0,
+       .step = 0.05,
+       .help = "Blend of the practical split: 1 = logarithmic, 0 = uniform."});
+  add({.key = "stabilize",
+       .label = "Stabilise",
+       .group = "Cascades",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .help = "Each slice's map covers its bounding sphere (extent quantised, so it does not "
+               "change as the camera turns) and moves by whole texels (so edges do not crawl as "
+               "the camera moves); the split range is quantised to 1/8 octave. Off: fitted "
+               "tightly to slice ∩ scene bounds (more texels on the scene, shimmering edges)."});
+  add({.key = "depth.fit",
+       .label = "Fit depth range",
+       .group = "Cascades",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .help = "Cut the splits over the view depths the G-buffer actually holds (a min/max "
+               "reduction, read back a frame late behind a fence) instead of the whole view "
+               "frustum ∩ scene bounds."});
+
+  TechniqueInfo info{"cascades", "Cascaded shadow maps",
+                     "z-partitioning (Lloyd et al. 2006 §5.2; parallel-split maps, Zhang et al. "
+                     "2006): k orthographic maps, each fitted to one depth slice of the view "
+                     "frustum, selected per pixel by view depth. Directional light only.",
+                     std::move(p)};
+  info.passes = {
+      {"partition maps", "Partition maps",
+       "Cut the visible depth range into k slices (the split scheme), fit one orthographic light "
+       "frustum to each slice (stabilised: its bounding sphere, snapped to whole texels) and "
+       "render the scene's depth into that slice's layer. Near slices are small: their texels "
+       "are small where the camera is close.",
+       "partitions"},
+      {"depth range", "Depth range reduction",
+       "Min and max view depth over the G-buffer's covered pixels (a compute reduction), fenced "
+       "and read back next frame to fit the split range to what the camera really sees.",
+       "partitions"},
+      {"partition m", "Aliasing per partition",
+       "Only while the Partitions panel (or a partition.<i>.m.* key) is shown: the previous "
+       "frame's texels per pixel m, binned per selected map (1/8-octave histogram): p95 and "
+       "max of every partition.",
+       "partitions"},
+  };
+  info.publications = {
+      {"partition.*.map", PublicationKind::ImageSet,
+       "Every partition's depth map as rendered (depth 0..1), i = 0..k-1.",
+       "4 B x resolution^2 x partitions",
+       [](const ParamSet& ps) {
+         const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
+         return 4 * r * r * std::uint64_t(ps.getInt("partitions"));
+       }},
+      {"partition.*.m.*", PublicationKind::Number,
+       "Partition i's perspective aliasing m over the previous frame's pixels that selected it: "
+       "m.p95 (upper edge of its 1/8-octave histogram bin), m.max, m.pixels.",
+       "4 B x (" + std::to_string(SL_CASCADE_M_BINS) + " + 2) x partitions",
+       [](const ParamSet& ps) {
+         return std::uint64_t(4 * kMStride) * std::uint64_t(ps.getInt("partitions"));
+       }},
+      {"partition.count", PublicationKind::Number, "k, the number of partitions.", "", {}},
+      {"partition.*.near",
+       PublicationKind::Number,
+       "Partition i's near split (view depth, m).",
+       "",
+       {}},
+      {"partition.*.far",
+       PublicationKind::Number,
+       "Partition i's far split (view depth, m).",
+       "",
+       {}},
+      {"partition.*.texels_per_m",
+       PublicationKind::Number,
+       "Partition i's shadow-map texels per metre (resolution / light-frustum width).",
+       "",
+       {}},
+      {"partition.*.extent_m",
+       PublicationKind::Number,
+       "Partition i's light-frustum width (m).",
+       "",
+       {}},
+      {"partition.*.texels", PublicationKind::Number, "Partition i's texel count.", "", {}},
+      {"depth.near",
+       PublicationKind::Number,
+       "Near end of the split range (view depth, m).",
+       "",
+       {}},
+      {"depth.far", PublicationKind::Number, "Far end of the split range (view depth, m).", "", {}},
+      {"depth.fitted",
+       PublicationKind::Number,
+       "1 when the split range used last frame's G-buffer depth range.",
+       "",
+       {}},
+  };
+  return info;
+}
+
+CascadedShadowMap::CascadedShadowMap(const gl::ShaderLibrary& lib)
+    : depthProgram_(lib, depthProgramDesc()),
+      rangeProgram_(lib, rangeProgramDesc()),
+      mProgram_(lib, mProgramDesc()) {}
+
+void CascadedShadowMap::resetTemporalState() {
+  rangeFence_.reset();
+  lastRange_.reset();
+  heldRange_.reset();
+}
+
+std::optional<glm::dvec2> CascadedShadowMap::readDepthRange() {
+  if (rangeFence_ && rangeFence_.wait()) {
+    rangeFence_.reset();
+    std::uint32_t bits[2] = {0, 0};
+    glGetNamedBufferSubData(rangeBuffer_.id(), 0, sizeof bits, bits);
+    float lo = 0.0f, hi = 0.0f;
+    std::memcpy(&lo, &bits[0], 4);
+    std::memcpy(&hi, &bits[1], 4);
+    // Nothing covered: no range (the whole visible range is cut).
+    if (bits[1] != 0u && bits[0] != kFloatMaxBits && hi >= lo)
+      lastRange_ = glm::dvec2(lo, hi);
+    else
+      lastRange_.reset();
+  }
+  return lastRange_;
+}
+
+void CascadedShadowMap::reduceDepthRange(const FrameContext& ctx) {
+  auto pass = ctx.timer.scope("depth range");
+  if (!rangeBuffer_) rangeBuffer_ = gl::Buffer::create(8, nullptr);
+  const std::uint32_t init[2] = {kFloatMaxBits, 0u};
+  glNamedBufferSubData(rangeBuffer_.id(), 0, sizeof init, init);
+  rangeProgram_.use();
+  rangeProgram_.set("u_eye", ctx.camera.position);
+  rangeProgram_.set("u_forward", ctx.camera.forward());
+  rangeProgram_.set("u_size", glm::ivec2(ctx.width, ctx.height));
+  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_CASCADE_BUFFER_DEPTH_RANGE, rangeBuffer_.id());
+  glDispatchCompute(GLuint((ctx.width + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP),
+                    GLuint((ctx.height + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP), 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  rangeFence_.place();
+}
+
+void CascadedShadowMap::measurePartitionM(FrameContext& ctx, int k) {
+  auto pass = ctx.timer.scope("partition m");
+  const GLsizeiptr bytes = GLsizeiptr(4 * kMStride * std::size_t(k));
+  if (!mStats_ || mStats_.size() != bytes) mStats_ = gl::Buffer::create(bytes, nullptr);
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(mStats_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  mProgram_.use();
+  mProgram_.set("u_size", glm::ivec2(ctx.width, ctx.height));
+  mProgram_.set("u_maps", k);
+  glBindTextureUnit(SL_UNIT_ALIASING, ctx.prevAliasing.id());
+  glBindTextureUnit(SL_UNIT_MAP_INDEX, ctx.prevMapIndex.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_CASCADE_BUFFER_M_STATS, mStats_.id());
+  glDispatchCompute(GLuint((ctx.width + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP),
+                    GLuint((ctx.height + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP), 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  // Read as floats by the counting helper; the words are uint counts and float bits.
+  const std::vector<float> words = readPublishedFloats(ctx, mStats_, 0, kMStride * std::size_t(k));
+  for (int i = 0; i < k; ++i) {
+    const float* w = words.data() + kMStride * std::size_t(i);
+    std::vector<std::uint32_t> bins(SL_CASCADE_M_BINS);
+    std::memcpy(bins.data(), w, bins.size() * 4);
+    std::uint32_t count = 0, maxBits = 0;
+    std::memcpy(&count, w + SL_CASCADE_M_BINS, 4);
+    std::memcpy(&maxBits, w + SL_CASCADE_M_BINS + 1, 4);
+    float maxM = 0.0f;
+    std::memcpy(&maxM, &maxBits, 4);
+    const std::string key = "partition." + std::to_string(i) + ".";
+    publishNumber(
+        ctx, key + "m.p95",
+        partition::histogramQuantileLog2(bins, 0.95, SL_CASCADE_M_LOG2_MIN, SL_CASCADE_M_LOG2_MAX));
+    publishNumber(ctx, key + "m.max", count > 0 ? double(maxM) : 0.0);
+    publishNumber(ctx, key + "m.pixels", double(count));
+  }
+}
+
+void CascadedShadowMap::renderShadows(FrameContext& ctx) {
+  const int res = ctx.params.getInt("resolution");
+  const int k = ctx.params.getInt("partitions");
+  const bool fitDepth = ctx.params.getBool("depth.fit");
+  partition::CascadeSettings s;
+  s.partitions = k;
+  s.split = partition::SplitScheme(ctx.params.getInt("split"));
+  s.lambda = ctx.params.get("split.lambda");
+  s.resolution = res;
+  s.stabilize = ctx.params.getBool("stabilize");
+  if (fitDepth) {
+    // Last frame's range, widened by 5 % each way for this frame's motion; stabilised, held
+    // while it still fits (hysteresis), so the splits do not move with every frame.
+    if (auto r = readDepthRange()) {
+      const glm::dvec2 measured(r->x / 1.05, r->y * 1.05);
+      if (s.stabilize) {
+        heldRange_ = partition::holdDepthRange(heldRange_, measured);
+        s.visibleDepthM = heldRange_;
+      } else {
+        s.visibleDepthM = measured;
+      }
+    }
+  } else {
+    resetTemporalState();
+    rangeBuffer_ = {};  // held only while used (memory())
+  }
+
+  {
+    auto pass = ctx.timer.scope("partition maps");
+    partition::CascadeFit fit;
+    if (auto err = partition::fitCascades(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                          ctx.light.directionalTowards(), s, fit))
+      throw std::runtime_error(*err);
+    fit_ = std::move(fit);
+    eye_ = ctx.camera.position;
+    forward_ = ctx.camera.forward();
+
+    if (!maps_ || maps_.width() != res || maps_.layers() != k) {
+      const std::uint64_t bytes = 4ull * std::uint64_t(res) * std::uint64_t(res) * std::uint64_t(k);
+      if (bytes > kMaxArrayBytes)
+        throw std::runtime_error("cascades: " + std::to_string(k) + " partitions of " +
+                                 std::to_string(res) + "^2 need " + std::to_string(bytes >> 20) +
+                                 " MiB of depth maps, more than the " +
+                                 std::to_string(kMaxArrayBytes >> 20) +
+                                 " MiB one array may take; lower resolution or partitions");
+      maps_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, k);
+      fbos_.clear();
+      for (int i = 0; i < k; ++i) {
+        gl::Framebuffer f = gl::Framebuffer::create();
+        f.attachLayer(GL_DEPTH_ATTACHMENT, maps_, i);
+        f.setDrawBuffers(0);
+        f.checkComplete("cascade partition " + std::to_string(i));
+        fbos_.push_back(std::move(f));
+      }
+    }
+    views_.clear();
+    for (int i = 0; i < k; ++i) {
+      const partition::CascadePart& p = fit_.parts[size_t(i)];
+      views_.push_back(
+          {p.viewProj, glm::vec2(p.extentM), p.depthRangeM > 0.0 ? float(p.depthRangeM) : 1.0f});
+      renderDepth(ctx, depthProgram_, fbos_[size_t(i)].id(), res, res, p.viewProj);
+    }
+  }
+  if (fitDepth) reduceDepthRange(ctx);
+  bool wantM = false;
+  for (int i = 0; i < k && !wantM; ++i)
+    for (const char* m : kMKeys)
+      wantM = wantM || ctx.wants("partition." + std::to_string(i) + "." + m);
+  if (wantM)
+    measurePartitionM(ctx, k);
+  else
+    mStats_ = {};  // held only while requested (memory())
+
+  // Publications: the maps (only when asked), the splits and texel densities (numbers).
+  publishNumber(ctx, "partition.count", k);
+  publishNumber(ctx, "depth.near", fit_.nearM);
+  publishNumber(ctx, "depth.far", fit_.farM);
+  publishNumber(ctx, "depth.fitted", s.visibleDepthM ? 1.0 : 0.0);
+  for (int i = 0; i < k; ++i) {
+    const partition::CascadePart& p = fit_.parts[size_t(i)];
+    const std::string key = "partition." + std::to_string(i);
+    publishDepthLayer(ctx, key + ".map", maps_, i);
+    publishNumber(ctx, key + ".near", p.nearM);
+    publishNumber(ctx, key + ".far", p.farM);
+    publishNumber(ctx, key + ".extent_m", std::max(p.extentM.x, p.extentM.y));
+    publishNumber(ctx, key + ".texels_per_m", p.texelM > 0.0 ? 1.0 / p.texelM : 0.0);
+    publishNumber(ctx, key + ".texels", double(res) * double(res));
+  }
+}
+
+void CascadedShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
+  bindDepthLookup(resolve, views_);
+  glBindTextureUnit(GLuint(firstUnit), maps_.id());
+  resolve.set("u_cascadeMaps", firstUnit);
+  resolve.set("u_cascadeCount", int(fit_.parts.size()));
+  resolve.set("u_cascadeEye", eye_);
+  resolve.set("u_cascadeForward", forward_);
+  for (size_t i = 0; i < fit_.parts.size(); ++i)
+    resolve.set(("u_cascadeFar[" + std::to_string(i) + "]").c_str(), float(fit_.parts[i].farM));
+}
+
+MemoryStats CascadedShadowMap::memory() const {
+  MemoryStats m;
+  if (maps_)
+    m.add("partition maps (array)", gl::formatName(maps_.format()), maps_.width(), maps_.height(),
+          maps_.layers(), gl::bytesPerTexel(maps_.format()));
+  if (rangeBuffer_) m.add("depth range (min, max)", "R32UI", 2, 1, 1, 4);
+  if (mStats_)
+    m.add("m histograms (per partition, while requested)", "R32UI", int(mStats_.size() / 4), 1, 1,
+          4);
+  return m;
+}
+
+std::optional<std::string> CascadedShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  if (auto e = depthProgram_.rebuild(lib)) return e;
+  if (auto e = rangeProgram_.rebuild(lib)) return e;
+  return mProgram_.rebuild(lib);
+}
+
+}  // namespace sl

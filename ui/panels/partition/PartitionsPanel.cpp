@@ -1,0 +1,146 @@
+// The Partitions panel (see PartitionsPanel.h).
+#include "PartitionsPanel.h"
+
+#include <algorithm>
+#include <memory>
+
+#include <QHBoxLayout>
+#include <QJsonArray>
+#include <QLabel>
+#include <QPainter>
+#include <QVBoxLayout>
+
+#include "common/shared_constants.h"
+
+namespace sl::ui {
+
+namespace {
+constexpr int kMaxDisplayTexels = 512;  ///< larger maps are point-sampled for display
+
+/// The partition overlay's colour of map `i` (shared_constants.h, composite.frag).
+QColor partitionColour(int i) {
+  static const float c[SL_PARTITION_COLOURS][3] = {
+      {SL_PARTITION_COLOUR_0}, {SL_PARTITION_COLOUR_1}, {SL_PARTITION_COLOUR_2},
+      {SL_PARTITION_COLOUR_3}, {SL_PARTITION_COLOUR_4}, {SL_PARTITION_COLOUR_5},
+      {SL_PARTITION_COLOUR_6}, {SL_PARTITION_COLOUR_7}};
+  const float* rgb = c[i % SL_PARTITION_COLOURS];
+  return QColor::fromRgbF(rgb[0], rgb[1], rgb[2]);
+}
+
+double number(const sl::Publication& pub, const std::string& key, double fallback = -1.0) {
+  auto it = pub.numbers.find(key);
+  return it == pub.numbers.end() ? fallback : it->second;
+}
+}  // namespace
+
+PartitionsPanel::PartitionsPanel(QWidget* parent) : PublicationPanel(parent) {
+  auto* content = new QWidget;
+  auto* layout = new QVBoxLayout(content);
+  layout->setContentsMargins(4, 4, 4, 4);
+  maps_ = new QHBoxLayout;
+  layout->addLayout(maps_, 1);
+  table_ = new QLabel;
+  table_->setObjectName(QStringLiteral("partitionTable"));
+  table_->setTextFormat(Qt::RichText);
+  table_->setWordWrap(true);
+  layout->addWidget(table_);
+  setContent(content);
+}
+
+void PartitionsPanel::showPublication(const sl::Publication& pub) {
+  const int k = int(number(pub, "partition.count", 0.0));
+  if (k <= 0) {
+    drawn_ = {};
+    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("partitions"),
+                                  observedKeys()));
+    return;
+  }
+  showContent(true);
+  while (int(views_.size()) < k) {
+    auto* v = new ImageView;
+    v->setObjectName(QStringLiteral("partitionMap%1").arg(views_.size()));
+    maps_->addWidget(v);
+    views_.push_back(v);
+  }
+  QJsonArray parts;
+  QString rows;
+  for (int i = 0; i < int(views_.size()); ++i) {
+    ImageView* v = views_[size_t(i)];
+    v->setVisible(i < k);
+    if (i >= k) continue;
+    const std::string key = "partition." + std::to_string(i);
+    const double nearM = number(pub, key + ".near"), farM = number(pub, key + ".far");
+    const double perM = number(pub, key + ".texels_per_m");
+    const double texels = number(pub, key + ".texels");
+    const double extent = number(pub, key + ".extent_m");
+    const double mP95 = number(pub, key + ".m.p95"), mMax = number(pub, key + ".m.max");
+    const double mPixels = number(pub, key + ".m.pixels");
+    const QString caption = tr("%1: %2 – %3 m").arg(i).arg(formatValue(nearM), formatValue(farM));
+    auto img = pub.images.find(key + ".map");
+    if (img != pub.images.end() && img->second.width > 0) {
+      const auto full = std::make_shared<const sl::FloatImage>(img->second);
+      const sl::FloatImage shown = displayCopy(img->second, kMaxDisplayTexels);
+      const ValueRange range = finiteRange(shown.values, 1, 0, 1.0f);  // 1 = empty
+      v->setImage(colorize(shown, 0, range, ColorMap::Grey), full->width, full->height);
+      v->setLegend(range, ColorMap::Grey, QString(), false);
+      v->setValueReader([full](int x, int y) {
+        const float d = full->values[(size_t(y) * size_t(full->width) + size_t(x))];
+        return QStringLiteral("depth = %1")
+            .arg(d >= 1.0f ? QObject::tr("1 (empty)") : formatValue(d));
+      });
+    } else {
+      v->clearImage(tr("map not published"));
+    }
+    v->setCaption(caption);
+    const QColor colour = partitionColour(i);
+    v->setOverlay([colour](QPainter& p, const QRectF& r) {
+      p.setPen(QPen(colour, 4.0));
+      p.setBrush(Qt::NoBrush);
+      p.drawRect(r.adjusted(2, 2, -2, -2));
+    });
+    rows +=
+        QStringLiteral(
+            "<tr><td><span style='color:%1'>&#9632;</span> %2</td><td>%3</td><td>%4</td>"
+            "<td>%5</td><td>%6</td><td>%7</td><td>%8</td><td>%9</td></tr>")
+            .arg(colour.name())
+            .arg(i)
+            .arg(formatValue(nearM), formatValue(farM), formatValue(extent), formatValue(texels),
+                 formatValue(perM), mPixels > 0 ? formatValue(mP95) : QStringLiteral("–"),
+                 mPixels > 0 ? formatValue(mMax) : QStringLiteral("–"));
+    parts.append(QJsonObject{{QStringLiteral("near_m"), nearM},
+                             {QStringLiteral("far_m"), farM},
+                             {QStringLiteral("extent_m"), extent},
+                             {QStringLiteral("texels"), texels},
+                             {QStringLiteral("texels_per_m"), perM},
+                             {QStringLiteral("m_p95"), mP95},
+                             {QStringLiteral("m_max"), mMax},
+                             {QStringLiteral("m_pixels"), mPixels},
+                             {QStringLiteral("map_published"), img != pub.images.end()}});
+  }
+  const double dn = number(pub, "depth.near"), df = number(pub, "depth.far");
+  const bool fitted = number(pub, "depth.fitted", 0.0) > 0.5;
+  table_->setText(tr("<table cellspacing=6><tr><th>map</th><th>near (m)</th><th>far (m)</th>"
+                     "<th>width (m)</th><th>texels</th><th>texels/m</th><th>m p95</th>"
+                     "<th>m max</th></tr>%1</table>Split range %2 – %3 m (%4). m: texels per "
+                     "pixel over last frame's pixels that selected the map (p95 to 1/8 octave). "
+                     "Colours as the view's <i>partition</i> overlay.")
+                      .arg(rows, formatValue(dn), formatValue(df),
+                           fitted ? tr("fitted to last frame's G-buffer depths")
+                                  : tr("view frustum ∩ scene bounds")));
+  drawn_ = {{QStringLiteral("partitions"), k},
+            {QStringLiteral("depth_near_m"), dn},
+            {QStringLiteral("depth_far_m"), df},
+            {QStringLiteral("depth_fitted"), fitted},
+            {QStringLiteral("parts"), parts}};
+}
+
+void PartitionsPanel::highlightPass(const QString& passId) {
+  const bool on = passId == QLatin1String("partition maps");
+  for (ImageView* v : views_) v->setHighlighted(on);
+}
+
+QJsonObject PartitionsPanel::drawnValues() const {
+  return drawn_;
+}
+
+}  // namespace sl::ui

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "common/shared_constants.h"
+#include "core/Publish.h"
 #include "core/SceneGpu.h"
 
 namespace sl {
@@ -67,6 +68,40 @@ void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> m
     resolve.set(("u_mapExtentWPower" + at).c_str(), m.extentWPower);
     resolve.set(("u_mapDepthWPower" + at).c_str(), m.depthWPower);
   }
+}
+
+SingleDepthMap::SingleDepthMap(const gl::ShaderLibrary& lib, std::string label)
+    : label_(std::move(label)), program_(lib, depthProgramDesc()) {}
+
+void SingleDepthMap::render(FrameContext& ctx, int resolution, const DepthMapView& view) {
+  view_ = view;
+  if (!map_ || map_.width() != resolution) {
+    map_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, resolution, resolution);
+    fbo_ = gl::Framebuffer::create();
+    fbo_.attach(GL_DEPTH_ATTACHMENT, map_);
+    fbo_.setDrawBuffers(0);
+    fbo_.checkComplete(label_);
+  }
+  renderDepth(ctx, program_, fbo_.id(), resolution, resolution, view_.lightViewProj);
+  publishDepth(ctx, "shadow map", map_);
+}
+
+void SingleDepthMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
+  bindDepthLookup(resolve, std::span(&view_, 1));
+  glBindTextureUnit(GLuint(firstUnit), map_.id());
+  resolve.set("u_shadowMap", firstUnit);
+}
+
+MemoryStats SingleDepthMap::memory() const {
+  MemoryStats m;
+  if (map_)
+    m.add("shadow map", gl::formatName(map_.format()), map_.width(), map_.height(), 1,
+          gl::bytesPerTexel(map_.format()));
+  return m;
+}
+
+std::optional<std::string> SingleDepthMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  return program_.rebuild(lib);
 }
 
 }  // namespace sl

@@ -53,4 +53,27 @@ DepthMapView depthMapView(const LightFit& fit);
 /// Throws std::logic_error for more than SL_MAX_DEPTH_MAPS maps.
 void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> maps);
 
+/// One square depth map with its framebuffer and depth program, looked up by
+/// shaders/common/single_depth_map.glsl: what `uniform` and the perspective warps share.
+class SingleDepthMap {
+ public:
+  /// `label` names the map in framebuffer errors.
+  SingleDepthMap(const gl::ShaderLibrary& lib, std::string label);
+  /// (Re)allocates the map when `resolution` changes, renders the scene's exact depth
+  /// through view.lightViewProj and publishes it as "shadow map" when that key is requested.
+  void render(FrameContext& ctx, int resolution, const DepthMapView& view);
+  /// The lookup's per-map uniforms and the map on `firstUnit` (as u_shadowMap).
+  void bindLookup(const gl::Program& resolve, int firstUnit) const;
+  MemoryStats memory() const;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib);
+  const gl::Program& program() const { return program_; }
+
+ private:
+  std::string label_;
+  gl::Program program_;
+  gl::Texture map_;
+  gl::Framebuffer fbo_;
+  DepthMapView view_;
+};
+
 }  // namespace sl

@@ -99,11 +99,11 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
 }
 
 PerspectiveShadowMap::PerspectiveShadowMap(const gl::ShaderLibrary& lib, Kind kind)
-    : kind_(kind), depthProgram_(lib, depthProgramDesc()) {}
+    : kind_(kind), map_(lib, "perspective shadow map") {}
 
 void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
-  const int res = ctx.params.getInt("resolution");
   const glm::vec3 towards = ctx.light.directionalTowards();
+  DepthMapView mapView;
   {
     auto pass = ctx.timer.scope("warp");
     // The body: view frustum ∩ scene bounds (the whole scene when the camera sees none of it).
@@ -141,16 +141,15 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
       if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
                                          FocusSettings{}, uniformFit))
         throw std::runtime_error(*err);
-      view_ = depthMapView(uniformFit);
+      mapView = depthMapView(uniformFit);
     } else {
       const DepthMapFrame frame = fit_.mapFrame();
-      view_ = DepthMapView{};
-      view_.lightViewProj = frame.viewProj;
-      view_.perspective = true;
-      view_.extentM = frame.extentM;
-      view_.extentWPower = frame.extentWPower;
-      view_.depthPerMOverride = frame.depthPerM;
-      view_.depthWPower = frame.depthWPower;
+      mapView.lightViewProj = frame.viewProj;
+      mapView.perspective = true;
+      mapView.extentM = frame.extentM;
+      mapView.extentWPower = frame.extentWPower;
+      mapView.depthPerMOverride = frame.depthPerM;
+      mapView.depthWPower = frame.depthWPower;
     }
   }
   publishNumber(ctx, "warp.n_prime", fit_.nPrime);
@@ -159,33 +158,7 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "warp.fallback_cause", double(int(fit_.fallbackCause)));
 
   auto pass = ctx.timer.scope("shadow map");
-  if (!shadowMap_ || shadowMap_.width() != res) {
-    shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
-    fbo_ = gl::Framebuffer::create();
-    fbo_.attach(GL_DEPTH_ATTACHMENT, shadowMap_);
-    fbo_.setDrawBuffers(0);
-    fbo_.checkComplete("perspective shadow map");
-  }
-  renderDepth(ctx, depthProgram_, fbo_.id(), res, res, view_.lightViewProj);
-  publishDepth(ctx, "shadow map", shadowMap_);
-}
-
-void PerspectiveShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  bindDepthLookup(resolve, std::span(&view_, 1));
-  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
-  resolve.set("u_shadowMap", firstUnit);
-}
-
-MemoryStats PerspectiveShadowMap::memory() const {
-  MemoryStats m;
-  if (shadowMap_)
-    m.add("shadow map", gl::formatName(shadowMap_.format()), shadowMap_.width(),
-          shadowMap_.height(), 1, gl::bytesPerTexel(shadowMap_.format()));
-  return m;
-}
-
-std::optional<std::string> PerspectiveShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
-  return depthProgram_.rebuild(lib);
+  map_.render(ctx, ctx.params.getInt("resolution"), mapView);
 }
 
 }  // namespace sl

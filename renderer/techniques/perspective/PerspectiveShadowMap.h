@@ -20,20 +20,21 @@ class PerspectiveShadowMap : public Technique {
 
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "perspective/lookup.glsl"; }
-  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
-  std::vector<const gl::Program*> programs() const override { return {&depthProgram_}; }
-  MemoryStats memory() const override;
-  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override {
+    map_.bindLookup(resolve, firstUnit);
+  }
+  std::vector<const gl::Program*> programs() const override { return {&map_.program()}; }
+  MemoryStats memory() const override { return map_.memory(); }
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
+    return map_.reloadShaders(lib);
+  }
 
   /// The last frame's warp (n', eta, the fallback and its reason, the PSM clamp note).
   const warp::WarpFit& lastFit() const { return fit_; }
 
  private:
   Kind kind_;
-  gl::Program depthProgram_;
-  gl::Texture shadowMap_;
-  gl::Framebuffer fbo_;
-  DepthMapView view_;
+  SingleDepthMap map_;
   warp::WarpFit fit_;
 };
 

@@ -4,8 +4,6 @@
 #include <stdexcept>
 
 #include "algo/Focus.h"
-#include "core/SceneGpu.h"
-#include "core/Publish.h"
 #include "core/ShadowPass.h"
 
 namespace sl {
@@ -27,11 +25,10 @@ TechniqueInfo UniformShadowMap::info() {
 }
 
 UniformShadowMap::UniformShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthProgramDesc()) {}
+    : map_(lib, "uniform shadow map") {}
 
 void UniformShadowMap::renderShadows(FrameContext& ctx) {
   auto pass = ctx.timer.scope("shadow map");
-  const int res = ctx.params.getInt("resolution");
   LightFit fit;
   if (ctx.light.type == LightType::Spot) {
     if (auto err = fitSpotLight(ctx.light, ctx.scene.bounds, fit)) throw std::runtime_error(*err);
@@ -39,35 +36,7 @@ void UniformShadowMap::renderShadows(FrameContext& ctx) {
                                             ctx.light.directionalTowards(), FocusSettings{}, fit)) {
     throw std::runtime_error(*err);
   }
-  view_ = depthMapView(fit);
-
-  if (!shadowMap_ || shadowMap_.width() != res) {
-    shadowMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
-    fbo_ = gl::Framebuffer::create();
-    fbo_.attach(GL_DEPTH_ATTACHMENT, shadowMap_);
-    fbo_.setDrawBuffers(0);
-    fbo_.checkComplete("uniform shadow map");
-  }
-  renderDepth(ctx, depthProgram_, fbo_.id(), res, res, fit.viewProj);
-  publishDepth(ctx, "shadow map", shadowMap_);
-}
-
-void UniformShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  bindDepthLookup(resolve, std::span(&view_, 1));
-  glBindTextureUnit(GLuint(firstUnit), shadowMap_.id());
-  resolve.set("u_shadowMap", firstUnit);
-}
-
-MemoryStats UniformShadowMap::memory() const {
-  MemoryStats m;
-  if (shadowMap_)
-    m.add("shadow map", gl::formatName(shadowMap_.format()), shadowMap_.width(),
-          shadowMap_.height(), 1, gl::bytesPerTexel(shadowMap_.format()));
-  return m;
-}
-
-std::optional<std::string> UniformShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
-  return depthProgram_.rebuild(lib);
+  map_.render(ctx, ctx.params.getInt("resolution"), depthMapView(fit));
 }
 
 }  // namespace sl

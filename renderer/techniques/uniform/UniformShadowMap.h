@@ -16,16 +16,17 @@ class UniformShadowMap : public Technique {
 
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "uniform/lookup.glsl"; }
-  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
-  std::vector<const gl::Program*> programs() const override { return {&depthProgram_}; }
-  MemoryStats memory() const override;
-  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override {
+    map_.bindLookup(resolve, firstUnit);
+  }
+  std::vector<const gl::Program*> programs() const override { return {&map_.program()}; }
+  MemoryStats memory() const override { return map_.memory(); }
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
+    return map_.reloadShaders(lib);
+  }
 
  private:
-  gl::Program depthProgram_;
-  gl::Texture shadowMap_;
-  gl::Framebuffer fbo_;
-  DepthMapView view_;
+  SingleDepthMap map_;
 };
 
 }  // namespace sl

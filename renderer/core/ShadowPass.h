@@ -76,4 +76,23 @@ class SingleDepthMap {
   DepthMapView view_;
 };
 
+/// A technique whose lookup is one SingleDepthMap (uniform, the perspective warps): it fits
+/// a view and calls map_.render(); the lookup binding, programs, memory and reload are these.
+class SingleDepthMapTechnique : public Technique {
+ public:
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override {
+    map_.bindLookup(resolve, firstUnit);
+  }
+  std::vector<const gl::Program*> programs() const override { return {&map_.program()}; }
+  MemoryStats memory() const override { return map_.memory(); }
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
+    return map_.reloadShaders(lib);
+  }
+
+ protected:
+  SingleDepthMapTechnique(const gl::ShaderLibrary& lib, std::string label)
+      : map_(lib, std::move(label)) {}
+  SingleDepthMap map_;
+};
+
 }  // namespace sl

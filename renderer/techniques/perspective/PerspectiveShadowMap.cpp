@@ -99,7 +99,7 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
 }
 
 PerspectiveShadowMap::PerspectiveShadowMap(const gl::ShaderLibrary& lib, Kind kind)
-    : kind_(kind), map_(lib, "perspective shadow map") {}
+    : SingleDepthMapTechnique(lib, "perspective shadow map"), kind_(kind) {}
 
 void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
   const glm::vec3 towards = ctx.light.directionalTowards();

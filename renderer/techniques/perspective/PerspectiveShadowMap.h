@@ -11,7 +11,7 @@
 
 namespace sl {
 
-class PerspectiveShadowMap : public Technique {
+class PerspectiveShadowMap : public SingleDepthMapTechnique {
  public:
   enum class Kind { Psm, Lispsm, Tsm };
   /// "psm", "lispsm" or "tsm"; throws std::invalid_argument for anything else.
@@ -20,21 +20,12 @@ class PerspectiveShadowMap : public Technique {
 
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "perspective/lookup.glsl"; }
-  void bindLookup(const gl::Program& resolve, int firstUnit) const override {
-    map_.bindLookup(resolve, firstUnit);
-  }
-  std::vector<const gl::Program*> programs() const override { return {&map_.program()}; }
-  MemoryStats memory() const override { return map_.memory(); }
-  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
-    return map_.reloadShaders(lib);
-  }
 
   /// The last frame's warp (n', eta, the fallback and its reason, the PSM clamp note).
   const warp::WarpFit& lastFit() const { return fit_; }
 
  private:
   Kind kind_;
-  SingleDepthMap map_;
   warp::WarpFit fit_;
 };
 

@@ -25,7 +25,7 @@ TechniqueInfo UniformShadowMap::info() {
 }
 
 UniformShadowMap::UniformShadowMap(const gl::ShaderLibrary& lib)
-    : map_(lib, "uniform shadow map") {}
+    : SingleDepthMapTechnique(lib, "uniform shadow map") {}
 
 void UniformShadowMap::renderShadows(FrameContext& ctx) {
   auto pass = ctx.timer.scope("shadow map");

@@ -9,24 +9,13 @@
 
 namespace sl {
 
-class UniformShadowMap : public Technique {
+class UniformShadowMap : public SingleDepthMapTechnique {
  public:
   static TechniqueInfo info();
   explicit UniformShadowMap(const gl::ShaderLibrary& lib);
 
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "uniform/lookup.glsl"; }
-  void bindLookup(const gl::Program& resolve, int firstUnit) const override {
-    map_.bindLookup(resolve, firstUnit);
-  }
-  std::vector<const gl::Program*> programs() const override { return {&map_.program()}; }
-  MemoryStats memory() const override { return map_.memory(); }
-  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
-    return map_.reloadShaders(lib);
-  }
-
- private:
-  SingleDepthMap map_;
 };
 
 }  // namespace sl

@@ -39,7 +39,8 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   QCommandLineOption selfTest(
       QStringLiteral("self-test"),
       QStringLiteral(
-          "Run a GUI self-test (params, bad-gltf=FILE[,FILE...], teaching[=DIR], charts[=DIR])."),
+          "Run a GUI self-test (params, bad-gltf=FILE[,FILE...], teaching[=DIR], charts[=DIR], "
+          "split-resize[=TECHNIQUE])."),
       QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
   parser.addOptions({scene, technique, set, lesson, grab, grabAfter, selfTest});
@@ -77,12 +78,12 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   o.selfTestArgument = parser.value(selfTest).section(QLatin1Char('='), 1);
   if (parser.isSet(selfTest) && o.selfTest != QLatin1String("params") &&
       o.selfTest != QLatin1String("bad-gltf") && o.selfTest != QLatin1String("teaching") &&
-      o.selfTest != QLatin1String("charts")) {
+      o.selfTest != QLatin1String("charts") && o.selfTest != QLatin1String("split-resize")) {
     out.exitCode = 2;
     out.messageIsError = true;
     out.message = QStringLiteral(
                       "unknown --self-test '%1' (known: params, bad-gltf=FILE[,FILE...], "
-                      "teaching[=DIR], charts[=DIR])")
+                      "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE])")
                       .arg(parser.value(selfTest));
     return out;
   }

@@ -113,12 +113,80 @@ void SelfTests::run() {
     ran = teaching(argument_);
   else if (name_ == QLatin1String("charts"))
     ran = charts(argument_);
+  else if (name_ == QLatin1String("split-resize"))
+    ran = splitResize(argument_);
   else
     ran = badGltf(argument_);
   const bool pass = ran && failures_ == 0;
   std::printf("%s\n", pass ? "PASS" : "FAIL");
   std::fflush(stdout);
   QCoreApplication::exit(pass ? 0 : 1);
+}
+
+bool SelfTests::splitResize(const QString& splitTechnique) {
+  // Both halves measured, the window shrunk until the view is a few pixels, then restored:
+  // the same view must measure the same errors (the renderers' size-dependent state
+  // follows the restored size).
+  const QString other = splitTechnique.isEmpty() ? QStringLiteral("rtw-backward") : splitTechnique;
+  if (auto e = w_.viewport_->setSplitTechnique(other.toStdString())) {
+    check(false, QString::fromStdString(*e));
+    return false;
+  }
+  // The view pinned to its current size, so that "before" and "after" are the same frame.
+  const QSize viewBefore = w_.viewport_->size();
+  w_.viewport_->setFixedSize(viewBefore);
+  QCoreApplication::processEvents();
+  w_.waitForFrames(3);
+  const auto mainBefore = w_.viewport_->computeErrorNow();
+  const auto splitBefore = w_.viewport_->splitErrorPct();
+  // Every size a window dragged to its smallest can leave the view (each half 0-2 pixels).
+  const QString tech = QString::fromStdString(w_.viewport_->techniqueId());
+  for (const int side : {3, 2, 1, 0}) {
+    QStringList problems;
+    const auto connection = connect(w_.viewport_, &ViewportWidget::renderProblem, this,
+                                    [&problems](const QString& p) { problems << p; });
+    w_.viewport_->setFixedSize(side, side);
+    QCoreApplication::processEvents();
+    w_.waitForFrames(8);  // long enough for temporal state (DA-RTW's moments) to settle there
+    const QSize shrunk = w_.viewport_->size();
+    w_.viewport_->setFixedSize(viewBefore);
+    QCoreApplication::processEvents();
+    w_.waitForFrames(3);
+    const auto mainAfter = w_.viewport_->computeErrorNow();
+    const auto splitAfter = w_.viewport_->splitErrorPct();
+    check(shrunk == QSize(side, side) && w_.viewport_->size() == viewBefore,
+          tr("the view went to %1x%2 and back to %3x%4")
+              .arg(shrunk.width())
+              .arg(shrunk.height())
+              .arg(w_.viewport_->width())
+              .arg(w_.viewport_->height()));
+    // The same frame in the same state: identical (both halves are deterministic once the
+    // temporal state restarts), so 0.01 percentage points.
+    const auto same = [](std::optional<double> a, std::optional<double> b) {
+      return a && b && std::abs(*a - *b) <= 0.01;
+    };
+    check(same(mainBefore, mainAfter), tr("%1x%1, left half (%2): %3 % before, %4 % after")
+                                           .arg(side)
+                                           .arg(tech)
+                                           .arg(mainBefore.value_or(-1), 0, 'f', 3)
+                                           .arg(mainAfter.value_or(-1), 0, 'f', 3));
+    check(same(splitBefore, splitAfter), tr("%1x%1, right half (%2): %3 % before, %4 % after")
+                                             .arg(side)
+                                             .arg(other)
+                                             .arg(splitBefore.value_or(-1), 0, 'f', 3)
+                                             .arg(splitAfter.value_or(-1), 0, 'f', 3));
+    disconnect(connection);
+    // A view too small to draw is a window state, not a rendering problem.
+    check(
+        problems.isEmpty(),
+        tr("%1x%1 reports no rendering problem%2")
+            .arg(side)
+            .arg(problems.isEmpty() ? QString()
+                                    : QStringLiteral(": ") + problems.join(QStringLiteral("; "))));
+  }
+  w_.viewport_->setMinimumSize(0, 0);
+  w_.viewport_->setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+  return true;
 }
 
 bool SelfTests::charts(const QString& dir) {

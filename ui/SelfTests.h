@@ -1,6 +1,7 @@
 // GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
-// params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR. They act as a user would and
-// check what the renderer and the window did; each check prints "ok   ..." or "FAIL ...".
+// params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE]. They act as a
+// user would and check what the renderer and the window did; each check prints "ok   ..." or "FAIL
+// ...".
 #pragma once
 
 #include <QObject>
@@ -34,6 +35,9 @@ class SelfTests : public QObject {
   bool charts(const QString& dir);
   /// Part of charts(): x: memory and back through the combo box (axis, front).
   bool chartsAxis(const QString& dir);
+  /// split-resize[=TECHNIQUE]: the split view measures the same errors after the window
+  /// was shrunk to 3x3 and restored.
+  bool splitResize(const QString& splitTechnique);
   void check(bool ok, const QString& what);
 
   MainWindow& w_;

@@ -293,7 +293,8 @@ void ViewportWidget::paintGL() {
   renderer_->setLight(light_);
 
   std::string problem;
-  const bool split = !splitTechniqueId_.empty();
+  // A view narrower than 2 pixels (a window dragged to its smallest) has no right half.
+  const bool split = !splitTechniqueId_.empty() && w >= 2;
   const int mainWidth = split ? std::max(1, w / 2) : w;
   if (split) renderSplitHalf(w - mainWidth, h, problem);
 

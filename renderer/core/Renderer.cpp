@@ -96,6 +96,9 @@ struct RendererState {
   Camera camera;
   Light light;
   Renderer::FrameSizeLimit maxFrame;  ///< the context's limits, queried once
+  /// The previous frame's size: a technique's temporal state (DA-RTW's frame-late moments
+  /// and its rotation hysteresis) describes that view, not a resized one.
+  int lastWidth = 0, lastHeight = 0;
   FrameStats stats;
   Publication publication;
   std::set<std::string> requested;  ///< publication patterns (empty: publish nothing)
@@ -499,6 +502,13 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                   c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg,
                   s.light.describe().c_str());
     s.frameSignature = buf;
+  }
+  if (width != s.lastWidth || height != s.lastHeight) {
+    // A view shrunk to a few pixels gives a degenerate importance map; the rotation kept by
+    // the vibration threshold would outlive it when the view is restored.
+    if (s.technique) s.technique->resetTemporalState();
+    s.lastWidth = width;
+    s.lastHeight = height;
   }
   const auto frameStart = std::chrono::steady_clock::now();
   s.ensureTargets(width, height);

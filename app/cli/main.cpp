@@ -59,10 +59,12 @@ struct RenderConfig {
   std::string out, metrics, errorImage;
 };
 
-/// Techniques whose shadow map depends on earlier frames through DA-RTW's rotation (R_k
-/// from the previous frame's IM): a single frame is rtw-backward with R = I.
+/// Techniques whose shadow map depends on earlier frames through a rotation (DA-RTW's R_k
+/// from the previous frame's IM; TechniqueInfo::temporalRotation): a single frame of
+/// DA-RTW is rtw-backward with R = I.
 bool hasTemporalRotation(const std::string& techniqueId) {
-  return techniqueId == "da-rtw";
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(techniqueId);
+  return info && info->temporalRotation;
 }
 constexpr int kMaxRotationWarmup = 32;
 

@@ -72,6 +72,10 @@ struct TechniqueInfo {
   std::vector<PublicationDecl> publications;
   /// The light kinds it renders; renderFrame refuses any other (an error, a neutral frame).
   std::vector<LightType> lights{LightType::Directional};
+  /// Keeps a rotation across frames (DA-RTW: R_k from the previous frame's moments), so one
+  /// frame is not what a user sees: measuring commands render unmeasured frames until it
+  /// settles. Such a technique publishes "pca.valid", "rotation.held", "rotation.step_deg".
+  bool temporalRotation = false;
   /// The declaration matching `key` (exactly or by pattern); null when not published.
   const PublicationDecl* findPublication(std::string_view key) const;
 };

@@ -39,6 +39,19 @@ TEST(Publication, KeyPatterns) {
   EXPECT_TRUE(publicationKeyMatches("*.blurred", "importance.x.blurred"));
 }
 
+// The CLI warms a temporal rotation up by reading these numbers: a technique that declares
+// the rotation must publish them (and only DA-RTW keeps one today).
+TEST(Publication, TemporalRotationDeclaresTheNumbersItsWarmUpReads) {
+  std::vector<std::string> temporal;
+  for (const TechniqueInfo& t : Renderer::techniques()) {
+    if (!t.temporalRotation) continue;
+    temporal.push_back(t.id);
+    for (const char* key : {"pca.valid", "rotation.held", "rotation.step_deg"})
+      EXPECT_NE(t.findPublication(key), nullptr) << t.id << " does not publish " << key;
+  }
+  EXPECT_EQ(temporal, std::vector<std::string>{"da-rtw"});
+}
+
 TEST(Publication, ReadsBackOnlyTheRequestedKeys) {
   auto r = test::makeRenderer("diagonal", "da-rtw");
   ASSERT_TRUE(r);

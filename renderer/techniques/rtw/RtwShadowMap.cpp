@@ -217,6 +217,7 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   info.passes = passDecls(id);
   info.publications = publicationDecls(id);
   info.lights = {LightType::Directional};
+  info.temporalRotation = id == "da-rtw";
   return info;
 }
 

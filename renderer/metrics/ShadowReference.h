@@ -36,10 +36,11 @@ namespace sl {
 /// closer than rayTNearM() (= normalOffsetM()) along the ray; far end: infinity for a
 /// directional light, the light's position minus rayTNearM() for spot and point lights.
 /// Outside a spot's cone or a light's range (Light::illuminates): not lit. The offset
-/// is normalOffsetFraction times the scene's size (the larger of its bounding-box diagonal
-/// and its largest coordinate magnitude, as float precision falls with distance), at least
-/// 1 um: the default 1e-5 gives 0.28 mm for a 20 x 20 m scene, which moves a shadow border
-/// by 0.28 mm / tan(elevation) (0.5 mm at 30 degrees).
+/// is normalOffsetFraction times the scene's bounding-box diagonal, at least 1 um, or four
+/// float spacings of the point's largest coordinate where that is more (a scene far from
+/// the origin: 1.6 cm at 5e4 m; scaling the offset by the distance instead moved every
+/// shadow border there by 0.7 m): the default 1e-5 gives 0.28 mm for a 20 x 20 m scene, which moves
+/// a shadow border by 0.28 mm / tan(elevation) (0.5 mm at 30 degrees).
 class ShadowReference {
  public:
   /// Copies what it needs from `scene` (the scene may be destroyed afterwards). Throws

@@ -117,6 +117,29 @@ TEST(ShadowReference, SamplesCloseToTheShadowBorder) {
   }
 }
 
+TEST(ShadowReference, SceneFarFromTheOriginKeepsItsShadowBorders) {
+  // The same scene 5e4 m from the origin (float spacing 3.9 mm there). The self-shadowing
+  // offset is four spacings (1.6 cm), not a share of the distance from the origin (which
+  // lifted every ray by 0.7 m and moved the border by as much): points 5 cm either side of
+  // the analytic border answer as at the origin.
+  const glm::vec3 shift(5e4f, 0.0f, 5e4f);
+  Scene far = groundAndSquare();
+  for (MeshPrimitive& prim : far.primitives)
+    for (glm::vec3& v : prim.positions) v += shift;
+  const ShadowReference ref(far);
+  EXPECT_LT(ref.normalOffsetM(), 1e-3f);  // the scene's own share: its diagonal
+  const glm::vec3 up(0, 1, 0);
+  for (float elevation : {45.0f, 60.0f, 80.0f}) {
+    const glm::vec3 l = lightDir(elevation, 0.0f);
+    const float zEdge = kOccZ0 - l.z * (kOccY / l.y);
+    const float x = 0.5f * (kOccX0 + kOccX1);
+    EXPECT_TRUE(ref.isLit(shift + glm::vec3(x, 0, zEdge - 0.05f), up, l)) << elevation;
+    EXPECT_FALSE(ref.isLit(shift + glm::vec3(x, 0, zEdge + 0.05f), up, l)) << elevation;
+    // Far from any occluder: lit (no self-shadowing at 3.9 mm precision).
+    EXPECT_TRUE(ref.isLit(shift + glm::vec3(-8.0f, 0, 8.0f), up, l)) << elevation;
+  }
+}
+
 // ---- positional lights: rays end at the light ---------------------------------------------
 
 /// Centred occluder for the positional tests: side kSide at height kH over the ground.

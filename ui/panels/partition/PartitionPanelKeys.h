@@ -18,6 +18,7 @@ inline std::set<std::string> partitionsPanelKeys() {
           "partition.*.extent_m",
           "partition.*.warped",
           "partition.*.warp.fallback_cause",
+          "partition.*.warp.n_prime",
           "partition.*.slice_uv",
           "depth.near",
           "depth.far",

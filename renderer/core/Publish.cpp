@@ -62,6 +62,12 @@ bool publishCurve(FrameContext& ctx, const std::string& key, const gl::Buffer& b
   return true;
 }
 
+bool publishValues(FrameContext& ctx, const std::string& key, std::vector<float> values) {
+  if (!ctx.wants(key)) return false;
+  ctx.publication->curves[key] = std::move(values);
+  return true;
+}
+
 bool publishNumber(FrameContext& ctx, const std::string& key, double value) {
   if (!ctx.wants(key)) return false;
   ctx.publication->numbers[key] = value;

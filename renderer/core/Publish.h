@@ -25,6 +25,8 @@ bool publishCurve(FrameContext& ctx, const std::string& key, const gl::Buffer& b
 /// data a technique splits into several keys itself).
 std::vector<float> readPublishedFloats(FrameContext& ctx, const gl::Buffer& buffer,
                                        std::size_t offset, std::size_t count);
+/// Values computed on the CPU as a curve (no readback); false when not requested.
+bool publishValues(FrameContext& ctx, const std::string& key, std::vector<float> values);
 /// A number (no readback); false when not requested.
 bool publishNumber(FrameContext& ctx, const std::string& key, double value);
 

@@ -1,12 +1,16 @@
 // algo/partition/CascadeFit: every slice ∩ scene inside its partition's light frustum, the
 // split chain, stabilisation (extent unchanged as the camera turns, bounds on whole texels
-// as it moves), the measured depth range, and bad input named.
+// as it moves), the measured depth range, bad input named, and partition.warp (LiSPSM per
+// partition, the per-partition fallback, the slice outline in map uv).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "algo/Focus.h"
 #include "algo/partition/CascadeFit.h"
+#include "algo/partition/StorageFactor.h"
 
 namespace sl::partition {
 namespace {
@@ -181,5 +185,130 @@ TEST(CascadeFit, HistogramQuantile) {
   EXPECT_DOUBLE_EQ(histogramQuantileLog2(bins, 1.0, -8.0, 8.0), 8.0);
   EXPECT_EQ(histogramQuantileLog2(std::vector<std::uint32_t>(16, 0), 0.95, -8.0, 8.0), 0.0);
 }
+}  // namespace
+}  // namespace sl::partition
+
+// partition.warp: each partition warped with LiSPSM fitted around slice ∩ scene. Every
+// point of the slice ∩ scene lands inside its map (after the perspective divide, w > 0),
+// n' is the LiSPSM value of that slice's depth range (eq. 11 at eta = 0, Wimmer's general
+// form), and over the slice's body the warp's maximum aliasing (the paper's S = M_x M_z of
+// that body) is below the orthographic fit's: the point of warping every partition.
+namespace sl::partition {
+namespace {
+
+TEST(CascadeFit, WarpedPartitionsCoverTheirSliceWithLispsm) {
+  const Camera cam = lookingDownZ();
+  const Aabb scene = box({-20, 0, -300}, {20, 10, 5});
+  const float aspect = 16.0f / 9.0f;
+  CascadeSettings s;
+  s.partitions = 4;
+  s.split = SplitScheme::Log;
+  s.warp = true;
+  CascadeFit fit;
+  ASSERT_FALSE(fitCascades(cam, aspect, scene, kLight, s, fit));
+  ASSERT_EQ(fit.parts.size(), 4u);
+  const warp::ViewFrustum view = warp::ViewFrustum::fromCamera(cam, aspect);
+  for (size_t i = 0; i < fit.parts.size(); ++i) {
+    SCOPED_TRACE("partition " + std::to_string(i));
+    const CascadePart& p = fit.parts[i];
+    ASSERT_TRUE(p.warpFit);
+    ASSERT_TRUE(p.warped()) << p.warpFit->fallbackReason;
+    EXPECT_EQ(p.warpFit->fallbackCause, warp::FallbackCause::None);
+    EXPECT_NEAR(p.warpFit->eta, 0.0, 1e-12);
+    EXPECT_NEAR(p.warpFit->nPrime, p.warpFit->nPrimeLispsm, 1e-9 * p.warpFit->nPrime);
+    const auto pts =
+        intersectFrustumWithBox(cam.frustumCorners(aspect, float(p.nearM), float(p.farM)), scene);
+    ASSERT_FALSE(pts.empty());
+    std::vector<glm::dvec3> body(pts.begin(), pts.end());
+    for (const glm::dvec3& q : body) {
+      const glm::dvec4 c = glm::dmat4(p.viewProj) * glm::dvec4(q, 1.0);
+      ASSERT_GT(c.w, 0.0);
+      EXPECT_LE(std::abs(c.x / c.w), 1.0 + 1e-5);
+      EXPECT_LE(std::abs(c.y / c.w), 1.0 + 1e-5);
+      EXPECT_LE(std::abs(c.z / c.w), 1.0 + 1e-5);
+    }
+    // The same body, fitted orthographically (n' infinite): larger maximum aliasing.
+    warp::WarpSettings ortho;
+    ortho.kind = warp::WarpKind::Uniform;
+    warp::WarpFit flat;
+    ASSERT_FALSE(warp::fitWarp(view, body, glm::dvec3(kLight), ortho, flat));
+    const Storage warped = storageOfBody(view, *p.warpFit, body);
+    const Storage uniform = storageOfBody(view, flat, body);
+    EXPECT_LT(warped.s, uniform.s);
+    // The coarsest texel (at the slice's far face) is what texelM reports.
+    EXPECT_GT(p.texelM, 0.0);
+  }
+}
+
+// Light behind the viewer, inside the view cone: the frustum looks square from the light
+// for every slice; each partition falls back to uniform, says why, and is stabilised
+// exactly as without partition.warp.
+TEST(CascadeFit, WarpFallsBackPerPartitionWhenTheFrustumLooksSquare) {
+  const Camera cam = lookingDownZ();
+  const Aabb scene = box({-20, 0, -300}, {20, 10, 5});
+  // Towards the light: 6 degrees off the view axis, behind the camera (exactly on the axis
+  // is the degenerate case: no direction to warp along).
+  const glm::vec3 back = glm::normalize(cam.position - cam.target);
+  const glm::vec3 behind =
+      glm::normalize(back + 0.1f * glm::normalize(glm::cross(back, {0, 1, 0})));
+  CascadeSettings s;
+  s.partitions = 3;
+  CascadeFit plain, warped;
+  ASSERT_FALSE(fitCascades(cam, 1.0f, scene, behind, s, plain));
+  s.warp = true;
+  ASSERT_FALSE(fitCascades(cam, 1.0f, scene, behind, s, warped));
+  for (size_t i = 0; i < warped.parts.size(); ++i) {
+    const CascadePart& p = warped.parts[i];
+    ASSERT_TRUE(p.warpFit);
+    EXPECT_FALSE(p.warped());
+    EXPECT_TRUE(p.warpFit->fallback);
+    EXPECT_EQ(p.warpFit->fallbackCause, warp::FallbackCause::SquareLightBehind);
+    EXPECT_EQ(p.viewProj, plain.parts[i].viewProj);
+    EXPECT_DOUBLE_EQ(p.texelM, plain.parts[i].texelM);
+  }
+  // eta = -1 is the uniform map too (no fallback: asked for).
+  s.eta = -1.0;
+  ASSERT_FALSE(fitCascades(cam, 1.0f, scene, kLight, s, warped));
+  for (const CascadePart& p : warped.parts) {
+    EXPECT_FALSE(p.warped());
+    EXPECT_FALSE(p.warpFit->fallback);
+  }
+  s.eta = 1.5;
+  const auto e = fitCascades(cam, 1.0f, scene, kLight, s, warped);
+  ASSERT_TRUE(e);
+  EXPECT_NE(e->find("warp.eta"), std::string::npos) << *e;
+}
+
+// The slice outline of the Partitions panel: an orthographic map of the unit cube sees the
+// 12 edges of a box inside it where they are; a perspective map clips edges behind its
+// centre (w <= 0) and everything to [-1, 2]^2.
+TEST(CascadeFit, SliceEdgesInMapUv) {
+  // corners of the cube [-0.5, 0.5]^3 in ViewFrustum::corners order (z = -0.5 near ring).
+  std::array<glm::dvec3, 8> c;
+  const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+  for (int i = 0; i < 4; ++i) {
+    c[size_t(i)] = {0.5 * sx[i], 0.5 * sy[i], -0.5};
+    c[size_t(4 + i)] = {0.5 * sx[i], 0.5 * sy[i], 0.5};
+  }
+  const glm::mat4 ortho = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, -1.0f, 1.0f);
+  std::vector<float> e = sliceEdgesInMapUv(c, ortho);
+  ASSERT_EQ(e.size(), 48u);
+  for (float v : e) EXPECT_TRUE(std::abs(v - 0.25f) < 1e-6f || std::abs(v - 0.75f) < 1e-6f) << v;
+  // Looking down -z from z = 0 (the cube's centre): the near ring (z = -0.5) is in front,
+  // the far ring (z = +0.5) behind: the 4 far edges vanish, the 4 sides are cut at w > 0
+  // and run off towards infinity, clipped to the [-1, 2]^2 square.
+  const glm::mat4 persp = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
+  e = sliceEdgesInMapUv(c, persp);
+  ASSERT_EQ(e.size(), 32u);
+  for (float v : e) {
+    EXPECT_GE(v, -1.0f - 1e-5f);
+    EXPECT_LE(v, 2.0f + 1e-5f);
+  }
+  // The near ring: a square of side 1 at distance 0.5 under a 90-degree frustum: the map.
+  for (size_t k = 0; k < 4; ++k)
+    for (size_t j = 0; j < 4; ++j)
+      EXPECT_TRUE(std::abs(e[k * 8 + j] - 0.0f) < 1e-5f || std::abs(e[k * 8 + j] - 1.0f) < 1e-5f);
+}
+
 }  // namespace
 }  // namespace sl::partition

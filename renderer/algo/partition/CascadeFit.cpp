@@ -73,6 +73,48 @@ double histogramQuantileLog2(const std::vector<std::uint32_t>& bins, double q, d
   return std::exp2(log2Max);
 }
 
+std::vector<float> sliceEdgesInMapUv(const std::array<glm::dvec3, 8>& c,
+                                     const glm::mat4& viewProj) {
+  const glm::dmat4 m(viewProj);
+  std::array<glm::dvec4, 8> clip;
+  for (std::size_t i = 0; i < 8; ++i) clip[i] = m * glm::dvec4(c[i], 1.0);
+  std::vector<float> out;
+  auto edge = [&](std::size_t a, std::size_t b) {
+    glm::dvec4 p = clip[a], q = clip[b];
+    const double eps = 1e-9 * std::max({std::abs(p.w), std::abs(q.w), 1e-300});
+    if (p.w <= eps && q.w <= eps) return;
+    if (p.w <= eps) p = p + (q - p) * ((eps - p.w) / (q.w - p.w));
+    if (q.w <= eps) q = q + (p - q) * ((eps - q.w) / (p.w - q.w));
+    glm::dvec2 u0 = glm::dvec2(p) / p.w * 0.5 + 0.5, u1 = glm::dvec2(q) / q.w * 0.5 + 0.5;
+    // Liang-Barsky against [-1, 2]^2: the map and a margin, never kilometres of uv.
+    double t0 = 0.0, t1 = 1.0;
+    const glm::dvec2 d = u1 - u0;
+    for (int axis = 0; axis < 2; ++axis)
+      for (double side : {-1.0, 1.0}) {
+        const double num = side < 0.0 ? u0[axis] - (-1.0) : 2.0 - u0[axis];
+        const double den = side < 0.0 ? -d[axis] : d[axis];
+        if (den == 0.0) {
+          if (num < 0.0) return;
+        } else {
+          const double t = num / den;
+          if (den < 0.0)
+            t0 = std::max(t0, t);
+          else
+            t1 = std::min(t1, t);
+        }
+      }
+    if (t0 > t1) return;
+    const glm::dvec2 a0 = u0 + t0 * d, a1 = u0 + t1 * d;
+    out.insert(out.end(), {float(a0.x), float(a0.y), float(a1.x), float(a1.y)});
+  };
+  for (std::size_t i = 0; i < 4; ++i) {
+    edge(i, (i + 1) % 4);          // near ring
+    edge(4 + i, 4 + (i + 1) % 4);  // far ring
+    edge(i, i + 4);                // sides
+  }
+  return out;
+}
+
 std::optional<std::string> fitCascades(const Camera& camera, float aspect, const Aabb& sceneBounds,
                                        const glm::vec3& towardsLight, const CascadeSettings& s,
                                        CascadeFit& out) {
@@ -83,6 +125,8 @@ std::optional<std::string> fitCascades(const Camera& camera, float aspect, const
   if (s.partitions < 1 || s.partitions > 8)
     return "cascades: partitions must be 1..8 (got " + std::to_string(s.partitions) + ")";
   if (s.resolution < 2) return "cascades: resolution must be >= 2";
+  if (s.warp && !(s.eta >= -1.0 && s.eta <= 1.0))
+    return "cascades: warp.eta must be in [-1, 1] (got " + std::to_string(s.eta) + ")";
 
   // The range the splits cut: what the camera can see of the scene, then (when measured)
   // what it did see.
@@ -118,7 +162,42 @@ std::optional<std::string> fitCascades(const Camera& camera, float aspect, const
     CascadePart p;
     p.nearM = fit.splits[size_t(i)];
     p.farM = fit.splits[size_t(i) + 1];
-    if (s.stabilize) {
+    if (s.warp) {
+      // LiSPSM (eq. 11 with eta) around slice ∩ scene, as `lispsm` fits the whole frustum:
+      // the slice's depth range clipped to the body, casters toward the light depth-only.
+      Camera slice = camera;
+      slice.nearM = float(p.nearM);
+      slice.farM = float(p.farM);
+      const std::vector<glm::vec3> pts =
+          intersectFrustumWithBox(slice.frustumCorners(aspect, slice.nearM, slice.farM), box);
+      std::vector<glm::dvec3> body(pts.begin(), pts.end());
+      if (body.empty()) {  // the slice sees none of the scene: cover the slice itself
+        const auto c = frustum.corners(p.nearM, p.farM);
+        body.assign(c.begin(), c.end());
+      }
+      const warp::ViewFrustum view = frustum.clippedToBody(body);
+      warp::WarpSettings ws;
+      ws.kind = warp::WarpKind::Eta;
+      ws.eta = s.eta;
+      const auto bc = box.corners();
+      ws.depthOnly.assign(bc.begin(), bc.end());
+      warp::WarpFit wf;
+      if (auto e = warp::fitWarp(view, body, L, ws, wf)) return "cascades: " + *e;
+      p.warpFit = std::move(wf);
+    }
+    if (p.warped()) {
+      const warp::WarpFit& w = *p.warpFit;
+      p.view = w.lightView;
+      p.proj = w.lightProj;
+      // The body's light-space width and depth; texels vary with w: the coarsest, at the
+      // slice's far face (w = n' + L), is texelM.
+      p.extentM = glm::dvec2(w.hi.x - w.lo.x, w.depthM);
+      p.depthRangeM = w.hi.y - w.lo.y;
+      const DepthMapFrame f = w.mapFrame();
+      const double wFar = w.nPrime + w.depthM;
+      p.texelM =
+          std::max(double(f.extentM.x) * wFar, double(f.extentM.y) * wFar * wFar) / s.resolution;
+    } else if (s.stabilize) {
       // Extent quantum: 1/8 of the power of two below the sphere's diameter.
       const double T =
           frustum.tanHalfX() * frustum.tanHalfX() + frustum.tanHalfY() * frustum.tanHalfY();
@@ -148,7 +227,8 @@ std::optional<std::string> fitCascades(const Camera& camera, float aspect, const
       p.depthRangeM = lf.depthRangeM;
     }
     p.viewProj = p.proj * p.view;
-    p.texelM = std::max(p.extentM.x, p.extentM.y) / s.resolution;
+    if (!p.warped()) p.texelM = std::max(p.extentM.x, p.extentM.y) / s.resolution;
+    p.sliceUv = sliceEdgesInMapUv(frustum.corners(p.nearM, p.farM), p.viewProj);
     fit.parts.push_back(p);
   }
   out = std::move(fit);

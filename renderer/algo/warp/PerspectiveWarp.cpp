@@ -64,6 +64,19 @@ ViewFrustum ViewFrustum::fromCamera(const Camera& camera, double aspect) {
   return v;
 }
 
+ViewFrustum ViewFrustum::clippedToBody(std::span<const glm::dvec3> body) const {
+  ViewFrustum v = *this;
+  double nearBody = farM, farBody = nearM;
+  for (const glm::dvec3& p : body) {
+    const double d = glm::dot(p - eye, forward);
+    nearBody = std::min(nearBody, d);
+    farBody = std::max(farBody, d);
+  }
+  v.nearM = std::max(nearM, nearBody);
+  v.farM = std::max(std::min(farM, farBody), v.nearM * (1.0 + 1e-6));
+  return v;
+}
+
 std::optional<LightSpace> makeLightSpace(const glm::dvec3& towardsLight, const glm::dvec3& axis) {
   const glm::dvec3 y = glm::normalize(towardsLight);
   const glm::dvec3 a = axis - glm::dot(axis, y) * y;

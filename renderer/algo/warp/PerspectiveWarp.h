@@ -36,6 +36,10 @@ struct ViewFrustum {
   std::optional<std::string> validate() const;
 
   static ViewFrustum fromCamera(const Camera& camera, double aspect);
+  /// This frustum with near and far clipped to the view-depth range of `body` (a warp
+  /// fitted around view frustum ∩ scene: TSM's focus and LiSPSM's n, f lie within what the
+  /// camera sees of the scene, not on the far plane's empty kilometres).
+  ViewFrustum clippedToBody(std::span<const glm::dvec3> body) const;
 };
 
 /// Light space of the paper's Fig. 3: y towards the light, z the warp axis (perpendicular

@@ -9,6 +9,7 @@
 #include "common/shared_constants.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
+#include "techniques/perspective/PerspectiveShadowMap.h"
 
 namespace sl {
 
@@ -78,7 +79,24 @@ TechniqueInfo CascadedShadowMap::info() {
        .help = "Each slice's map covers its bounding sphere (extent quantised, so it does not "
                "change as the camera turns) and moves by whole texels (so edges do not crawl as "
                "the camera moves); the split range is quantised to 1/8 octave. Off: fitted "
-               "tightly to slice ∩ scene bounds (more texels on the scene, shimmering edges)."});
+               "tightly to slice ∩ scene bounds (more texels on the scene, shimmering edges). "
+               "Unwarped partitions only: with partition.warp a warped map is fitted tightly "
+               "(its texels change size along the warp, so no whole-texel step holds them "
+               "still); a partition whose warp falls back to uniform is stabilised."});
+  add({.key = "partition.warp",
+       .label = "Warp partitions",
+       .group = "Cascades",
+       .type = ParamType::Bool,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Warp every partition with a perspective along light-space z (LiSPSM at "
+               "warp.eta = 0) fitted around its slice ∩ scene bounds: warping combined with "
+               "z-partitioning, the least error for k maps (Lloyd et al. 2006 §5). Where the "
+               "frustum looks square from the light a partition falls back to uniform "
+               "(partition.<i>.warped = 0 and its cause)."});
+  add(PerspectiveShadowMap::etaDecl(0.0));
   add({.key = "depth.fit",
        .label = "Fit depth range",
        .group = "Cascades",
@@ -149,6 +167,29 @@ TechniqueInfo CascadedShadowMap::info() {
        "",
        {}},
       {"partition.*.texels", PublicationKind::Number, "Partition i's texel count.", "", {}},
+      {"partition.*.warped",
+       PublicationKind::Number,
+       "1 when partition i's map is warped (partition.warp on and no fallback), else 0.",
+       "",
+       {}},
+      {"partition.*.warp.fallback_cause",
+       PublicationKind::Number,
+       "Why partition i asked for a warp and got the uniform map: 0 none (or not asked), 1 "
+       "light behind the viewer, 2 in front, 4 degenerate (warp::FallbackCause).",
+       "",
+       {}},
+      {"partition.*.warp.n_prime",
+       PublicationKind::Number,
+       "Partition i's n' (m): its warp's projection centre to its body; 0 = unwarped (no inf: the "
+       "suites count non-finite numbers).",
+       "",
+       {}},
+      {"partition.*.slice_uv",
+       PublicationKind::Curve,
+       "Partition i's slice of the view frustum in its map's uv (0..1 = the map): the 12 edges "
+       "clipped to the map's front and to [-1, 2]^2, 4 values (u0, v0, u1, v1) per segment.",
+       "",
+       {}},
       {"depth.near",
        PublicationKind::Number,
        "Near end of the split range (view depth, m).",
@@ -254,6 +295,8 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
   s.lambda = ctx.params.get("split.lambda");
   s.resolution = res;
   s.stabilize = ctx.params.getBool("stabilize");
+  s.warp = ctx.params.getBool("partition.warp");
+  s.eta = ctx.params.get("warp.eta");
   if (fitDepth) {
     // Last frame's range, widened by 5 % each way for this frame's motion; stabilised, held
     // while it still fits (hysteresis), so the splits do not move with every frame.
@@ -302,8 +345,12 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     views_.clear();
     for (int i = 0; i < k; ++i) {
       const partition::CascadePart& p = fit_.parts[size_t(i)];
-      views_.push_back(
-          {p.viewProj, glm::vec2(p.extentM), p.depthRangeM > 0.0 ? float(p.depthRangeM) : 1.0f});
+      // Warped: as `lispsm`, the warp's perspective (w = z'), per map.
+      const DepthMapView v = p.warped()
+                                 ? depthMapView(p.warpFit->mapFrame())
+                                 : DepthMapView{p.viewProj, glm::vec2(p.extentM),
+                                                p.depthRangeM > 0.0 ? float(p.depthRangeM) : 1.0f};
+      views_.push_back(v);
       renderDepth(ctx, depthProgram_, fbos_[size_t(i)].id(), res, res, p.viewProj);
     }
   }
@@ -331,6 +378,11 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, key + ".extent_m", std::max(p.extentM.x, p.extentM.y));
     publishNumber(ctx, key + ".texels_per_m", p.texelM > 0.0 ? 1.0 / p.texelM : 0.0);
     publishNumber(ctx, key + ".texels", double(res) * double(res));
+    publishNumber(ctx, key + ".warped", p.warped() ? 1.0 : 0.0);
+    publishNumber(ctx, key + ".warp.fallback_cause",
+                  p.warpFit ? double(int(p.warpFit->fallbackCause)) : 0.0);
+    publishNumber(ctx, key + ".warp.n_prime", p.warped() ? p.warpFit->nPrime : 0.0);
+    publishValues(ctx, key + ".slice_uv", p.sliceUv);
   }
 }
 

@@ -11,9 +11,7 @@
 
 namespace sl {
 
-namespace {
-
-ParamDecl etaDecl(double defaultEta) {
+ParamDecl PerspectiveShadowMap::etaDecl(double defaultEta) {
   return {.key = "warp.eta",
           .label = "Warp eta",
           .group = "Warp",
@@ -24,8 +22,11 @@ ParamDecl etaDecl(double defaultEta) {
           .step = 0.05,
           .help =
               "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), "
-              "1 PSM (n' = n). Shared by psm and lispsm, which differ only in the default."};
+              "1 PSM (n' = n). Shared by psm, lispsm (which differ only in the default) and "
+              "cascades with partition.warp (per partition: n and f of its slice)."};
 }
+
+namespace {
 
 ParamDecl focusDecl() {
   return {.key = "warp.focus",
@@ -121,17 +122,8 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
       settings.eta = ctx.params.get("warp.eta");
     }
     settings.depthOnly.assign(box.begin(), box.end());  // every caster toward the light
-    // The view's depth range clipped to the body: TSM's focus point lies within what the
-    // camera sees of the scene, not on the far plane's empty kilometres.
-    warp::ViewFrustum view = warp::ViewFrustum::fromCamera(ctx.camera, ctx.aspect);
-    double nearBody = view.farM, farBody = view.nearM;
-    for (const glm::dvec3& p : body) {
-      const double d = glm::dot(p - view.eye, view.forward);
-      nearBody = std::min(nearBody, d);
-      farBody = std::max(farBody, d);
-    }
-    view.nearM = std::max(view.nearM, nearBody);
-    view.farM = std::max(std::min(view.farM, farBody), view.nearM * (1.0 + 1e-6));
+    const warp::ViewFrustum view =
+        warp::ViewFrustum::fromCamera(ctx.camera, ctx.aspect).clippedToBody(body);
     if (auto err = warp::fitWarp(view, body, glm::dvec3(towards), settings, fit_))
       throw std::runtime_error(*err);
 
@@ -143,13 +135,7 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
         throw std::runtime_error(*err);
       mapView = depthMapView(uniformFit);
     } else {
-      const DepthMapFrame frame = fit_.mapFrame();
-      mapView.lightViewProj = frame.viewProj;
-      mapView.perspective = true;
-      mapView.extentM = frame.extentM;
-      mapView.extentWPower = frame.extentWPower;
-      mapView.depthPerMOverride = frame.depthPerM;
-      mapView.depthWPower = frame.depthWPower;
+      mapView = depthMapView(fit_.mapFrame());
     }
   }
   publishNumber(ctx, "warp.n_prime", fit_.nPrime);

@@ -16,6 +16,9 @@ class PerspectiveShadowMap : public SingleDepthMapTechnique {
   enum class Kind { Psm, Lispsm, Tsm };
   /// "psm", "lispsm" or "tsm"; throws std::invalid_argument for anything else.
   static TechniqueInfo info(const std::string& id);
+  /// The shared `warp.eta` parameter (eq. 11), with the technique's default: psm, lispsm and
+  /// the warped partitions of `cascades` declare this one.
+  static ParamDecl etaDecl(double defaultEta);
   PerspectiveShadowMap(const gl::ShaderLibrary& lib, Kind kind);
 
   void renderShadows(FrameContext& ctx) override;

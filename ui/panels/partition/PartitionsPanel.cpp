@@ -10,6 +10,7 @@
 #include <QPainter>
 #include <QVBoxLayout>
 
+#include "algo/warp/PerspectiveWarp.h"
 #include "common/shared_constants.h"
 
 namespace sl::ui {
@@ -64,6 +65,7 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
   }
   QJsonArray parts;
   QString rows;
+  bool anyWarp = false;  // a partition asked for a warp (warped or fell back)
   for (int i = 0; i < int(views_.size()); ++i) {
     ImageView* v = views_[size_t(i)];
     v->setVisible(i < k);
@@ -93,20 +95,52 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
     }
     v->setCaption(caption);
     const QColor colour = partitionColour(i);
-    v->setOverlay([colour](QPainter& p, const QRectF& r) {
+    // The partition's slice of the view frustum in its map's uv (u right, v up): where the
+    // map's texels go; the scene's depth inside it is what the slice sees.
+    std::vector<float> slice;
+    if (auto c = pub.curves.find(key + ".slice_uv"); c != pub.curves.end()) slice = c->second;
+    v->setOverlay([colour, slice](QPainter& p, const QRectF& r) {
       p.setPen(QPen(colour, 4.0));
       p.setBrush(Qt::NoBrush);
       p.drawRect(r.adjusted(2, 2, -2, -2));
+      p.save();
+      p.setClipRect(r);
+      auto at = [&r](float u, float w) {
+        return QPointF(r.left() + double(u) * r.width(), r.bottom() - double(w) * r.height());
+      };
+      // Dark under light dashes: visible on the empty (white) and the filled (grey) map.
+      for (const QPen& pen :
+           {QPen(QColor(0, 0, 0, 200), 3.0), QPen(QColor(0, 255, 255), 1.5, Qt::DashLine)}) {
+        p.setPen(pen);
+        for (std::size_t s = 0; s + 3 < slice.size(); s += 4)
+          p.drawLine(at(slice[s], slice[s + 1]), at(slice[s + 2], slice[s + 3]));
+      }
+      p.restore();
     });
+    // The warp of this partition: warped (n'), the uniform fallback and why, or not asked.
+    const double warped = number(pub, key + ".warped", 0.0);
+    const int cause = int(number(pub, key + ".warp.fallback_cause", 0.0));
+    QString warpText = QStringLiteral("–");
+    if (warped > 0.5) {
+      warpText = tr("LiSPSM, n' %1 m").arg(formatValue(number(pub, key + ".warp.n_prime", 0.0)));
+      anyWarp = true;
+    } else if (cause > 0) {
+      const auto c =
+          sl::warp::FallbackCause(std::clamp(cause, 0, int(sl::warp::FallbackCause::Degenerate)));
+      warpText =
+          tr("uniform: %1").arg(QString::fromUtf8(sl::warp::fallbackCauseText(c)).toHtmlEscaped());
+      anyWarp = true;
+    }
     rows +=
         QStringLiteral(
             "<tr><td><span style='color:%1'>&#9632;</span> %2</td><td>%3</td><td>%4</td>"
-            "<td>%5</td><td>%6</td><td>%7</td><td>%8</td><td>%9</td></tr>")
+            "<td>%5</td><td>%6</td><td>%7</td><td>%8</td><td>%9</td><td>%10</td></tr>")
             .arg(colour.name())
             .arg(i)
             .arg(formatValue(nearM), formatValue(farM), formatValue(extent), formatValue(texels),
                  formatValue(perM), mPixels > 0 ? formatValue(mP95) : QStringLiteral("–"),
-                 mPixels > 0 ? formatValue(mMax) : QStringLiteral("–"));
+                 mPixels > 0 ? formatValue(mMax) : QStringLiteral("–"))
+            .arg(warpText);
     parts.append(QJsonObject{{QStringLiteral("near_m"), nearM},
                              {QStringLiteral("far_m"), farM},
                              {QStringLiteral("extent_m"), extent},
@@ -115,23 +149,30 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
                              {QStringLiteral("m_p95"), mP95},
                              {QStringLiteral("m_max"), mMax},
                              {QStringLiteral("m_pixels"), mPixels},
+                             {QStringLiteral("warped"), warped > 0.5},
+                             {QStringLiteral("warp_fallback_cause"), cause},
+                             {QStringLiteral("slice_segments"), int(slice.size() / 4)},
                              {QStringLiteral("map_published"), img != pub.images.end()}});
   }
   const double dn = number(pub, "depth.near"), df = number(pub, "depth.far");
   const bool fitted = number(pub, "depth.fitted", 0.0) > 0.5;
-  table_->setText(tr("<table cellspacing=6><tr><th>map</th><th>near (m)</th><th>far (m)</th>"
-                     "<th>width (m)</th><th>texels</th><th>texels/m</th><th>m p95</th>"
-                     "<th>m max</th></tr>%1</table>Split range %2 – %3 m (%4). m: texels per "
-                     "pixel over last frame's pixels that selected the map (p95 to 1/8 octave). "
-                     "Colours as the view's <i>partition</i> overlay.")
-                      .arg(rows, formatValue(dn), formatValue(df),
-                           fitted ? tr("fitted to last frame's G-buffer depths")
-                                  : tr("view frustum ∩ scene bounds")));
-  drawn_ = {{QStringLiteral("partitions"), k},
-            {QStringLiteral("depth_near_m"), dn},
-            {QStringLiteral("depth_far_m"), df},
-            {QStringLiteral("depth_fitted"), fitted},
-            {QStringLiteral("parts"), parts}};
+  table_->setText(
+      tr("<table cellspacing=6><tr><th>map</th><th>near (m)</th><th>far (m)</th>"
+         "<th>width (m)</th><th>texels</th><th>texels/m</th><th>m p95</th>"
+         "<th>m max</th><th>warp</th></tr>%1</table>Split range %2 – %3 m (%4). m: "
+         "texels per pixel over last frame's pixels that selected the map (p95 to "
+         "1/8 octave). Dashed (cyan): each map's slice of the view frustum. Colours as the "
+         "view's <i>partition</i> overlay.%5")
+          .arg(rows, formatValue(dn), formatValue(df),
+               fitted ? tr("fitted to last frame's G-buffer depths")
+                      : tr("view frustum ∩ scene bounds"),
+               anyWarp ? tr(" <b>partition.warp</b>: warped maps are fitted tightly, "
+                            "not stabilised (their texels change size along the "
+                            "warp); only uniform partitions are stabilised.")
+                       : QString()));
+  drawn_ = {{QStringLiteral("partitions"), k},       {QStringLiteral("depth_near_m"), dn},
+            {QStringLiteral("depth_far_m"), df},     {QStringLiteral("depth_fitted"), fitted},
+            {QStringLiteral("warp_asked"), anyWarp}, {QStringLiteral("parts"), parts}};
 }
 
 void PartitionsPanel::highlightPass(const QString& passId) {

@@ -51,6 +51,17 @@ DepthMapView depthMapView(const LightFit& fit) {
   return v;
 }
 
+DepthMapView depthMapView(const DepthMapFrame& frame) {
+  DepthMapView v;
+  v.lightViewProj = frame.viewProj;
+  v.perspective = true;
+  v.extentM = frame.extentM;
+  v.extentWPower = frame.extentWPower;
+  v.depthPerMOverride = frame.depthPerM;
+  v.depthWPower = frame.depthWPower;
+  return v;
+}
+
 void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> maps) {
   if (maps.size() > SL_MAX_DEPTH_MAPS)
     throw std::logic_error("a depth lookup over " + std::to_string(maps.size()) +

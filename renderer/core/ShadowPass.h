@@ -48,6 +48,8 @@ struct DepthMapView {
 };
 /// The view of one map covering this frame's fit.
 DepthMapView depthMapView(const LightFit& fit);
+/// The view of a perspective map described by its frame (a light-space warp's mapFrame()).
+DepthMapView depthMapView(const DepthMapFrame& frame);
 /// Sets the per-map uniforms of common/depth_map_test.glsl (u_map*[i] for map i). The
 /// maps' textures and the shared parameters (bias.*, pcf: bindParams) are bound elsewhere.
 /// Throws std::logic_error for more than SL_MAX_DEPTH_MAPS maps.

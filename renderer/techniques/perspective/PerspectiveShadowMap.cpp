@@ -11,9 +11,7 @@
 
 namespace sl {
 
-namespace {
-
-ParamDecl etaDecl(double defaultEta) {
+ParamDecl warpEtaDecl(double defaultEta) {
   return {.key = "warp.eta",
           .label = "Warp eta",
           .group = "Warp",
@@ -24,8 +22,11 @@ ParamDecl etaDecl(double defaultEta) {
           .step = 0.05,
           .help =
               "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), "
-              "1 PSM (n' = n). Shared by psm and lispsm, which differ only in the default."};
+              "1 PSM (n' = n). Shared by psm, lispsm (which differ only in the default) and "
+              "face-partition (one warp per face)."};
 }
+
+namespace {
 
 ParamDecl focusDecl() {
   return {.key = "warp.focus",
@@ -52,13 +53,13 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
         "Stamminger and Drettakis 2002 in the light space of Lloyd et al. 2006: one depth map "
         "warped by a perspective along light-space z with n' = n (warp.eta = 1); the "
         "singularity clamped (Kozlov).";
-    params.insert(params.begin(), etaDecl(1.0));
+    params.insert(params.begin(), warpEtaDecl(1.0));
   } else if (id == "lispsm") {
     name = "Light space perspective shadow map (LiSPSM)";
     description =
         "Wimmer et al. 2004: one depth map warped along light-space z with n' = n + sqrt(f n) "
         "(warp.eta = 0), error spread evenly over depth (Lloyd et al. 2006, eq. 11).";
-    params.insert(params.begin(), etaDecl(0.0));
+    params.insert(params.begin(), warpEtaDecl(0.0));
   } else if (id == "tsm") {
     name = "Trapezoidal shadow map (TSM)";
     description =
@@ -143,13 +144,7 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
         throw std::runtime_error(*err);
       mapView = depthMapView(uniformFit);
     } else {
-      const DepthMapFrame frame = fit_.mapFrame();
-      mapView.lightViewProj = frame.viewProj;
-      mapView.perspective = true;
-      mapView.extentM = frame.extentM;
-      mapView.extentWPower = frame.extentWPower;
-      mapView.depthPerMOverride = frame.depthPerM;
-      mapView.depthWPower = frame.depthWPower;
+      mapView = depthMapView(fit_.mapFrame());
     }
   }
   publishNumber(ctx, "warp.n_prime", fit_.nPrime);

@@ -11,6 +11,9 @@
 
 namespace sl {
 
+/// The `warp.eta` parameter (eq. 11) with this default: psm, lispsm and face-partition.
+ParamDecl warpEtaDecl(double defaultEta);
+
 class PerspectiveShadowMap : public SingleDepthMapTechnique {
  public:
   enum class Kind { Psm, Lispsm, Tsm };

@@ -11,6 +11,11 @@
 
 namespace sl::partition {
 
+int faceSlot(int face) {
+  constexpr std::array<int, 6> slots{0, -1, 1, 2, 3, 4};
+  return face >= 0 && face < 6 ? slots[std::size_t(face)] : -1;
+}
+
 int selectFacePartition(const FaceSelection& sel, const glm::dvec3& p, double* secondGap) {
   int best = -1;
   double bestT = std::numeric_limits<double>::infinity();
@@ -77,6 +82,8 @@ std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect
        facePartitions(fit.view, fit.view.nearM, fit.view.farM, y, clipMin, clipMax)) {
     FacePart part;
     part.face = f.face;
+    part.slot = faceSlot(f.face);
+    if (part.slot < 0) continue;  // the far face: never towards or away from the light alone
     part.body = std::move(f.body);
     warp::WarpSettings ws = base;
     ws.axis = f.axis;
@@ -90,7 +97,7 @@ std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect
       part.nearM = std::min(part.nearM, d);
       part.farM = std::max(part.farM, d);
     }
-    fit.selection.partitionOfFace[std::size_t(f.face)] = int(fit.parts.size());
+    fit.selection.partitionOfFace[std::size_t(f.face)] = part.slot;
     fit.parts.push_back(std::move(part));
   }
   if (fit.parts.empty()) {
@@ -98,6 +105,7 @@ std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect
     // uniform map over what it sees, selected everywhere (partition 0).
     FacePart part;
     part.face = -1;
+    part.slot = 0;
     if (seen.empty()) {
       const auto c = fit.view.corners();
       part.body.assign(c.begin(), c.end());

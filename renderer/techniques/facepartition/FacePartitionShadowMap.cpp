@@ -3,6 +3,7 @@
 #include "FacePartitionShadowMap.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "algo/partition/StorageFactor.h"
@@ -14,10 +15,10 @@ namespace sl {
 
 namespace {
 
-/// The most partitions a frustum has towards one side of the light: the near face and the
-/// four side faces.
-constexpr int kMaxFaceParts = 5;
-static_assert(kMaxFaceParts <= SL_MAX_DEPTH_MAPS);
+constexpr int kSlots = partition::kFaceSlots;
+static_assert(kSlots <= SL_MAX_DEPTH_MAPS);
+/// The largest map array (4 GiB): 5 x resolution^2 x 4 B beyond it is refused.
+constexpr std::uint64_t kMaxArrayBytes = 4ull << 30;
 
 /// The lookup's view of one partition's map: its warp's perspective frame, or the
 /// orthographic fit when the warp fell back to uniform.
@@ -38,8 +39,9 @@ TechniqueInfo FacePartitionShadowMap::info() {
   for (ParamDecl& d : p)
     if (d.key == "resolution")
       d.help =
-          "Width and height of EVERY face partition's map in texels (the total is the number of "
-          "partitions, 1 to 5, times its square: partition.count).";
+          "Width and height of EVERY face partition's map in texels. There are 5 (the near face "
+          "and the four sides, one slot each, unused ones empty): the total is 5 times its "
+          "square.";
   p.insert(p.begin(), warpEtaDecl(0.0));
   TechniqueInfo info{
       "face-partition", "Face-partitioned shadow maps",
@@ -61,59 +63,39 @@ TechniqueInfo FacePartitionShadowMap::info() {
        "dense where the face is close to the camera.",
        "partitions"},
   };
+  auto number = [](std::string key, std::string what) {
+    return PublicationDecl{std::move(key), PublicationKind::Number, std::move(what), "", {}};
+  };
   info.publications = {
       {"partition.*.map", PublicationKind::ImageSet,
-       "Every face partition's depth map as rendered (depth 0..1, warped), i = 0..count-1.",
-       "4 B x resolution^2 x partitions (at most 5)",
+       "Every face slot's depth map as rendered (depth 0..1, warped; 1 everywhere when the slot "
+       "is unused), i = 0 near, 1 -x, 2 +x, 3 -y (bottom), 4 +y (top).",
+       "4 B x resolution^2 x 5",
        [](const ParamSet& ps) {
          const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
-         return 4 * r * r * kMaxFaceParts;
+         return 4 * r * r * kSlots;
        }},
-      {"partition.count", PublicationKind::Number, "Number of face partitions (1 to 5).", "", {}},
-      {"partition.*.face",
-       PublicationKind::Number,
-       "The frustum face of partition i: 0 near, 2 -x, 3 +x, 4 -y (bottom), 5 +y (top).",
-       "",
-       {}},
-      {"partition.*.near",
-       PublicationKind::Number,
-       "Nearest view depth of partition i's region (m).",
-       "",
-       {}},
-      {"partition.*.far",
-       PublicationKind::Number,
-       "Farthest view depth of partition i's region (m).",
-       "",
-       {}},
-      {"partition.*.extent_m",
-       PublicationKind::Number,
-       "Partition i's light-space width: the larger of its x and z extents (m).",
-       "",
-       {}},
-      {"partition.*.texels", PublicationKind::Number, "Partition i's texel count.", "", {}},
-      {"partition.*.warp.eta",
-       PublicationKind::Number,
-       "eta of partition i's warp (-1: uniform).",
-       "",
-       {}},
-      {"partition.*.warp.fallback",
-       PublicationKind::Number,
-       "1 when partition i asked for a warp but used the uniform map (warp::FallbackCause in "
-       "partition.*.warp.fallback_cause).",
-       "",
-       {}},
-      {"partition.*.warp.fallback_cause",
-       PublicationKind::Number,
-       "why: 0 none, 1 light behind, 2 light in front, 4 degenerate (warp::FallbackCause).",
-       "",
-       {}},
-      {"faces.front",
-       PublicationKind::Number,
-       "1 when the front faces (towards the light, v . y < 0) are used, 0 for the back faces.",
-       "",
-       {}},
-      {"depth.near", PublicationKind::Number, "Near plane of the clipped frustum (m).", "", {}},
-      {"depth.far", PublicationKind::Number, "Far plane of the clipped frustum (m).", "", {}},
+      number("partition.count", "Number of face slots (5)."),
+      number("partition.active",
+             "Number of faces used this frame (1 to 5: those towards the light, or away)."),
+      number("partition.*.active", "1 when slot i's face is used this frame."),
+      number("partition.*.face",
+             "The frustum face of slot i (StorageFactor's order: 0 near, 2 -x, 3 +x, 4 -y, 5 +y; "
+             "0 when unused)."),
+      number("partition.*.near", "Nearest view depth of slot i's region (m; 0 when unused)."),
+      number("partition.*.far", "Farthest view depth of slot i's region (m; 0 when unused)."),
+      number("partition.*.extent_m",
+             "Slot i's light-space width: the larger of its x and z extents (m)."),
+      number("partition.*.texels", "Slot i's texel count."),
+      number("partition.*.warp.eta", "eta of slot i's warp (-1: uniform)."),
+      number("partition.*.warp.fallback",
+             "1 when slot i asked for a warp but used the uniform map."),
+      number("partition.*.warp.fallback_cause",
+             "why: 0 none, 1 light behind, 2 light in front, 4 degenerate (warp::FallbackCause)."),
+      number("faces.front",
+             "1 when the front faces (towards the light, v . y < 0) are used, 0 for the back."),
+      number("depth.near", "Near plane of the frustum clipped to the scene (m)."),
+      number("depth.far", "Far plane of the frustum clipped to the scene (m)."),
   };
   info.lights = {LightType::Directional};
   return info;
@@ -132,16 +114,21 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
                                                 ctx.params.get("warp.eta"), fit))
       throw std::runtime_error(*err);
     fit_ = std::move(fit);
-    views_.clear();
-    for (const partition::FacePart& p : fit_.parts) views_.push_back(partView(p.fit));
+    views_.assign(kSlots, DepthMapView{});
+    for (const partition::FacePart& p : fit_.parts) views_[std::size_t(p.slot)] = partView(p.fit);
   }
-  const int k = int(fit_.parts.size());
   {
     auto pass = ctx.timer.scope("face maps");
-    if (!maps_ || maps_.width() != res || maps_.layers() != k) {
-      maps_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, k);
+    if (!maps_ || maps_.width() != res) {
+      const std::uint64_t bytes = 4ull * std::uint64_t(res) * std::uint64_t(res) * kSlots;
+      if (bytes > kMaxArrayBytes)
+        throw std::runtime_error("face-partition: 5 maps of " + std::to_string(res) + "^2 need " +
+                                 std::to_string(bytes >> 20) + " MiB, more than the " +
+                                 std::to_string(kMaxArrayBytes >> 20) +
+                                 " MiB one array may take; lower resolution");
+      maps_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, kSlots);
       fbos_.clear();
-      for (int i = 0; i < k; ++i) {
+      for (int i = 0; i < kSlots; ++i) {
         gl::Framebuffer f = gl::Framebuffer::create();
         f.attachLayer(GL_DEPTH_ATTACHMENT, maps_, i);
         f.setDrawBuffers(0);
@@ -149,25 +136,43 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
         fbos_.push_back(std::move(f));
       }
     }
-    for (int i = 0; i < k; ++i)
-      renderDepth(ctx, depthProgram_, fbos_[std::size_t(i)].id(), res, res,
-                  views_[std::size_t(i)].lightViewProj);
+    std::array<bool, kSlots> used{};
+    for (const partition::FacePart& p : fit_.parts) {
+      used[std::size_t(p.slot)] = true;
+      renderDepth(ctx, depthProgram_, fbos_[std::size_t(p.slot)].id(), res, res,
+                  views_[std::size_t(p.slot)].lightViewProj);
+    }
+    for (int i = 0; i < kSlots; ++i)
+      if (!used[std::size_t(i)]) {
+        beginDepthPass(fbos_[std::size_t(i)].id(), res, res);  // cleared to 1: empty
+      }
   }
 
-  publishNumber(ctx, "partition.count", k);
+  publishNumber(ctx, "partition.count", kSlots);
+  publishNumber(ctx, "partition.active", double(fit_.parts.size()));
   publishNumber(ctx, "faces.front", fit_.selection.frontFaces ? 1.0 : 0.0);
   publishNumber(ctx, "depth.near", fit_.view.nearM);
   publishNumber(ctx, "depth.far", fit_.view.farM);
-  for (int i = 0; i < k; ++i) {
-    const partition::FacePart& p = fit_.parts[std::size_t(i)];
+  for (int i = 0; i < kSlots; ++i) {
     const std::string key = "partition." + std::to_string(i);
     publishDepthLayer(ctx, key + ".map", maps_, i);
+    publishNumber(ctx, key + ".texels", double(res) * double(res));
+    const auto part = std::find_if(fit_.parts.begin(), fit_.parts.end(),
+                                   [&](const partition::FacePart& p) { return p.slot == i; });
+    const bool active = part != fit_.parts.end();
+    publishNumber(ctx, key + ".active", active ? 1.0 : 0.0);
+    if (!active) {
+      for (const char* k : {".face", ".near", ".far", ".extent_m", ".warp.eta", ".warp.fallback",
+                            ".warp.fallback_cause"})
+        publishNumber(ctx, key + k, 0.0);
+      continue;
+    }
+    const partition::FacePart& p = *part;
     publishNumber(ctx, key + ".face", p.face);
     publishNumber(ctx, key + ".near", p.nearM);
     publishNumber(ctx, key + ".far", p.farM);
     publishNumber(ctx, key + ".extent_m",
                   std::max(p.fit.hi.x - p.fit.lo.x, p.fit.hi.z - p.fit.lo.z));
-    publishNumber(ctx, key + ".texels", double(res) * double(res));
     publishNumber(ctx, key + ".warp.eta", p.fit.eta);
     publishNumber(ctx, key + ".warp.fallback", p.fit.fallback ? 1.0 : 0.0);
     publishNumber(ctx, key + ".warp.fallback_cause", double(int(p.fit.fallbackCause)));

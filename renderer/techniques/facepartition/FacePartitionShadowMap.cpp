@@ -87,6 +87,9 @@ TechniqueInfo FacePartitionShadowMap::info() {
       number("partition.*.extent_m",
              "Slot i's light-space width: the larger of its x and z extents (m)."),
       number("partition.*.texels", "Slot i's texel count."),
+      number("partition.*.texels_per_m",
+             "Slot i's mean texels per metre across its map: resolution / extent_m (a warp puts "
+             "more of them near the camera, fewer far away; 0 when unused)."),
       number("partition.*.warp.eta", "eta of slot i's warp (-1: uniform)."),
       number("partition.*.warp.fallback",
              "1 when slot i asked for a warp but used the uniform map."),
@@ -162,8 +165,8 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
     const bool active = part != fit_.parts.end();
     publishNumber(ctx, key + ".active", active ? 1.0 : 0.0);
     if (!active) {
-      for (const char* k : {".face", ".near", ".far", ".extent_m", ".warp.eta", ".warp.fallback",
-                            ".warp.fallback_cause"})
+      for (const char* k : {".face", ".near", ".far", ".extent_m", ".texels_per_m", ".warp.eta",
+                            ".warp.fallback", ".warp.fallback_cause"})
         publishNumber(ctx, key + k, 0.0);
       continue;
     }
@@ -171,8 +174,9 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, key + ".face", p.face);
     publishNumber(ctx, key + ".near", p.nearM);
     publishNumber(ctx, key + ".far", p.farM);
-    publishNumber(ctx, key + ".extent_m",
-                  std::max(p.fit.hi.x - p.fit.lo.x, p.fit.hi.z - p.fit.lo.z));
+    const double extent = std::max(p.fit.hi.x - p.fit.lo.x, p.fit.hi.z - p.fit.lo.z);
+    publishNumber(ctx, key + ".extent_m", extent);
+    publishNumber(ctx, key + ".texels_per_m", extent > 0.0 ? double(res) / extent : 0.0);
     publishNumber(ctx, key + ".warp.eta", p.fit.eta);
     publishNumber(ctx, key + ".warp.fallback", p.fit.fallback ? 1.0 : 0.0);
     publishNumber(ctx, key + ".warp.fallback_cause", double(int(p.fit.fallbackCause)));

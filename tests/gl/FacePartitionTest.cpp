@@ -193,6 +193,13 @@ TEST(FacePartition, DeclaredPassesAndPanelKeys) {
     EXPECT_GE(pub.numbers.at(k + ".far"), pub.numbers.at(k + ".near"));
   }
   EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(*info, r->params(), keys));
+  // 5 maps of 16384^2 would be 5 GiB: refused with the sizes named, the renderer keeps working.
+  ASSERT_FALSE(r->params().set("resolution", 16384));
+  auto err = r->renderFrame(64, 36, 0);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("5 maps of 16384^2 need 5120 MiB"), std::string::npos) << *err;
+  ASSERT_FALSE(r->params().set("resolution", 256));
+  EXPECT_FALSE(r->renderFrame(160, 90, 0));
   // A point light is refused with a message, the renderer keeps working.
   r->setLight(Light::point({0.0f, 3.0f, 0.0f}, 20.0f));
   EXPECT_TRUE(r->renderFrame(160, 90, 0));

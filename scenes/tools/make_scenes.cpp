@@ -182,6 +182,49 @@ SceneBuilder makeCorridor() {
 }
 
 // ----------------------------------------------------------------------------------------
+// dueling: the camera looks towards a low sun behind the far end (Lloyd et al. 2006 §4.4,
+// §5.1: "dueling frusta"). Seen from the light the view frustum is square, so one warp
+// cannot help; shadows of posts, rails and blocks run back towards the camera.
+constexpr float kDuelingSunAzimuthDeg = 180.0f, kDuelingSunElevationDeg = 14.0f;
+
+SceneBuilder makeDueling() {
+  SceneBuilder b("dueling");
+  int ground = b.addMaterial("ground", {0.76f, 0.72f, 0.62f, 1.0f});
+  int post = b.addMaterial("post", {0.36f, 0.30f, 0.26f, 1.0f});
+  int block = b.addMaterial("block", {0.30f, 0.45f, 0.70f, 1.0f});
+  b.addNode("ground", b.addMesh("ground", groundQuad(-16.0f, 16.0f, -90.0f, 4.0f), ground));
+  MeshData posts;
+  for (int i = 0; i < 24; ++i) {  // two rows of posts, 3 m apart, 2 m high, along the view
+    const float z = -1.5f - 3.0f * float(i);
+    posts.addBox({-3.0f, 1.0f, z}, {0.06f, 1.0f, 0.06f});
+    posts.addBox({3.0f, 1.0f, z}, {0.06f, 1.0f, 0.06f});
+  }
+  // A picket fence across the view 4 m ahead (0.05 m pickets every 0.15 m, 0.5 m high): its
+  // striped shadow runs 2 m back towards the camera.
+  for (int i = 0; i < 27; ++i)
+    posts.addBox({-2.0f + 0.15f * float(i), 0.25f, -2.0f}, {0.025f, 0.25f, 0.025f});
+  b.addNode("posts", b.addMesh("posts", posts, post));
+  MeshData blocks;  // small blocks scattered 1 m to 10 m ahead, a few large ones further out
+  Rng rng(20261123u);
+  for (int i = 0; i < 30; ++i) {
+    const float z = 0.5f - 9.0f * rng.uniform(), x = -2.4f + 4.8f * rng.uniform();
+    const float h = 0.04f + 0.1f * rng.uniform();
+    blocks.addBox({x, h, z}, glm::vec3(h), 90.0f * rng.uniform());
+  }
+  blocks.addBox({1.5f, 1.0f, -30.0f}, {1.0f, 1.0f, 1.0f});
+  blocks.addBox({-6.0f, 1.5f, -12.0f}, {0.8f, 1.5f, 0.8f}, 35.0f);
+  blocks.addBox({7.0f, 2.0f, -26.0f}, {1.2f, 2.0f, 1.2f}, -20.0f);
+  b.addNode("blocks", b.addMesh("blocks", blocks, block));
+  b.addSun(kDuelingSunAzimuthDeg, kDuelingSunElevationDeg);
+
+  // Looking down -z into the sun: the light lies inside the view cone (square frustum).
+  b.addCamera("into-sun", {0.0f, 1.2f, 2.0f}, {0.0f, 0.2f, -12.0f}, 50.0f, 0.1f, 120.0f);
+  // The same spot looking back along +z: the sun behind the viewer.
+  b.addCamera("sun-behind", {0.0f, 1.7f, -48.0f}, {0.0f, 0.6f, -26.0f}, 50.0f, 0.1f, 120.0f);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
 // default: a small pleasant scene, near and far, fine and large shadows, alpha-masked leaves.
 constexpr float kDefaultSunAzimuthDeg = 240.0f, kDefaultSunElevationDeg = 35.0f;
 
@@ -360,7 +403,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr,
                    "usage: %s [--scenes DIR] [--fixtures DIR] [--preview DIR]\n"
                    "  --scenes DIR    write the built-in scenes (plane-box, diagonal, corridor, "
-                   "default, spot-box, point-box) as DIR/<name>.gltf\n"
+                   "default, dueling, spot-box, point-box) as DIR/<name>.gltf\n"
                    "  --fixtures DIR  write the loader's test fixtures into DIR\n"
                    "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n",
                    argv[0]);
@@ -379,6 +422,7 @@ int main(int argc, char** argv) {
     rc |= sl::gen::writeScene(sl::gen::makeDiagonal(), "diagonal", scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeCorridor(), "corridor", scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeDefault(), "default", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeDueling(), "dueling", scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makePunctualBox("spot-box", true), "spot-box", scenesDir,
                               previewDir);
     rc |= sl::gen::writeScene(sl::gen::makePunctualBox("point-box", false), "point-box", scenesDir,

@@ -103,23 +103,42 @@ constexpr std::array<std::array<int, 4>, 6> kFaces = {
 
 }  // namespace
 
-std::vector<FacePartition> facePartitions(const ViewFrustum& view, double a, double b,
-                                          const glm::dvec3& towardsLight) {
+std::array<glm::dvec4, 6> frustumFacePlanes(const ViewFrustum& view, double a, double b) {
   const std::array<glm::dvec3, 8> c = view.corners(a, b);
-  const glm::dvec3 y = glm::normalize(towardsLight);
   glm::dvec3 centroid(0.0);
   for (const glm::dvec3& p : c) centroid += p / 8.0;
-  const double scale = std::max(b, glm::length(c[7] - c[0]));
-  std::vector<Plane> frustum;
-  std::array<glm::dvec3, 6> normals;
+  std::array<glm::dvec4, 6> out;
   for (int f = 0; f < 6; ++f) {
     const auto& q = kFaces[std::size_t(f)];
     glm::dvec3 n = glm::normalize(glm::cross(c[std::size_t(q[1])] - c[std::size_t(q[0])],
                                              c[std::size_t(q[3])] - c[std::size_t(q[0])]));
     if (glm::dot(n, centroid - c[std::size_t(q[0])]) > 0.0) n = -n;  // outward
-    normals[std::size_t(f)] = n;
-    frustum.push_back({n, glm::dot(n, c[std::size_t(q[0])])});
+    out[std::size_t(f)] = glm::dvec4(n, glm::dot(n, c[std::size_t(q[0])]));
   }
+  return out;
+}
+
+std::vector<FacePartition> facePartitions(const ViewFrustum& view, double a, double b,
+                                          const glm::dvec3& towardsLight,
+                                          const std::optional<glm::dvec3>& clipMin,
+                                          const std::optional<glm::dvec3>& clipMax) {
+  const std::array<glm::dvec3, 8> c = view.corners(a, b);
+  const glm::dvec3 y = glm::normalize(towardsLight);
+  const double scale = std::max(b, glm::length(c[7] - c[0]));
+  std::vector<Plane> frustum;
+  std::array<glm::dvec3, 6> normals;
+  const std::array<glm::dvec4, 6> planes6 = frustumFacePlanes(view, a, b);
+  for (int f = 0; f < 6; ++f) {
+    normals[std::size_t(f)] = glm::dvec3(planes6[std::size_t(f)]);
+    frustum.push_back({normals[std::size_t(f)], planes6[std::size_t(f)].w});
+  }
+  if (clipMin && clipMax)
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::dvec3 n(0.0);
+      n[axis] = 1.0;
+      frustum.push_back({n, (*clipMax)[axis]});
+      frustum.push_back({-n, -(*clipMin)[axis]});
+    }
   // Front faces (towards the light) when v . y < 0, back faces otherwise (§5.1).
   const bool front = glm::dot(view.forward, y) < 0.0;
   std::vector<FacePartition> out;

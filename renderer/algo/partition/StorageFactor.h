@@ -3,6 +3,7 @@
 // beam widths at the view-frustum vertices, §5.1 face partitioning, §5.2 z-partitioning).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,8 +84,16 @@ struct FacePartition {
   std::optional<glm::dvec3> bisector;  ///< bisector of the projected side edges
 };
 const char* faceName(int face);
+/// The 6 faces of the frustum slice as planes: xyz = outward unit normal, w = d (inside:
+/// dot(n, p) <= d), in facePartitions' face order (0 near, 1 far, 2 -x, 3 +x, 4 -y, 5 +y).
+std::array<glm::dvec4, 6> frustumFacePlanes(const warp::ViewFrustum& view, double sliceNear,
+                                            double sliceFar);
+/// `clipMin`/`clipMax`, when given, also clip every partition's body to that box (the
+/// scene's bounds: a map need not cover empty space).
 std::vector<FacePartition> facePartitions(const warp::ViewFrustum& view, double sliceNear,
-                                          double sliceFar, const glm::dvec3& towardsLight);
+                                          double sliceFar, const glm::dvec3& towardsLight,
+                                          const std::optional<glm::dvec3>& clipMin = {},
+                                          const std::optional<glm::dvec3>& clipMax = {});
 
 /// Closed forms for the overhead light (light space aligned with the view, §4.1), res = 1.
 namespace overhead {

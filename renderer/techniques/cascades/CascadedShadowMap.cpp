@@ -96,7 +96,7 @@ TechniqueInfo CascadedShadowMap::info() {
                "z-partitioning, the least error for k maps (Lloyd et al. 2006 §5). Where the "
                "frustum looks square from the light a partition falls back to uniform "
                "(partition.<i>.warped = 0 and its cause)."});
-  add(PerspectiveShadowMap::etaDecl(0.0));
+  add(warpEtaDecl(0.0));
   add({.key = "depth.fit",
        .label = "Fit depth range",
        .group = "Cascades",

@@ -11,7 +11,7 @@
 
 namespace sl {
 
-ParamDecl PerspectiveShadowMap::etaDecl(double defaultEta) {
+ParamDecl warpEtaDecl(double defaultEta) {
   return {.key = "warp.eta",
           .label = "Warp eta",
           .group = "Warp",
@@ -23,7 +23,8 @@ ParamDecl PerspectiveShadowMap::etaDecl(double defaultEta) {
           .help =
               "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), "
               "1 PSM (n' = n). Shared by psm, lispsm (which differ only in the default) and "
-              "cascades with partition.warp (per partition: n and f of its slice)."};
+              "cascades with partition.warp (per partition: n and f of its slice) and "
+              "face-partition (one warp per face)."};
 }
 
 namespace {
@@ -53,13 +54,13 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
         "Stamminger and Drettakis 2002 in the light space of Lloyd et al. 2006: one depth map "
         "warped by a perspective along light-space z with n' = n (warp.eta = 1); the "
         "singularity clamped (Kozlov).";
-    params.insert(params.begin(), etaDecl(1.0));
+    params.insert(params.begin(), warpEtaDecl(1.0));
   } else if (id == "lispsm") {
     name = "Light space perspective shadow map (LiSPSM)";
     description =
         "Wimmer et al. 2004: one depth map warped along light-space z with n' = n + sqrt(f n) "
         "(warp.eta = 0), error spread evenly over depth (Lloyd et al. 2006, eq. 11).";
-    params.insert(params.begin(), etaDecl(0.0));
+    params.insert(params.begin(), warpEtaDecl(0.0));
   } else if (id == "tsm") {
     name = "Trapezoidal shadow map (TSM)";
     description =

@@ -11,14 +11,15 @@
 
 namespace sl {
 
+/// The `warp.eta` parameter (eq. 11) with this default: psm, lispsm, the warped partitions
+/// of `cascades` and face-partition declare this one.
+ParamDecl warpEtaDecl(double defaultEta);
+
 class PerspectiveShadowMap : public SingleDepthMapTechnique {
  public:
   enum class Kind { Psm, Lispsm, Tsm };
   /// "psm", "lispsm" or "tsm"; throws std::invalid_argument for anything else.
   static TechniqueInfo info(const std::string& id);
-  /// The shared `warp.eta` parameter (eq. 11), with the technique's default: psm, lispsm and
-  /// the warped partitions of `cascades` declare this one.
-  static ParamDecl etaDecl(double defaultEta);
   PerspectiveShadowMap(const gl::ShaderLibrary& lib, Kind kind);
 
   void renderShadows(FrameContext& ctx) override;

@@ -66,6 +66,11 @@ void schemeFromDeclarations(const sl::TechniqueInfo* info,
                   sl::partition::splitSchemeName(s.split), s.partitionWarp ? " + LiSPSM" : "",
                   id.c_str());
     out.eta.reset();
+  } else if (info && info->findPublication("faces.front")) {  // face partitions (§5.1)
+    s.scheme = Scheme::Face;
+    std::snprintf(buf, sizeof buf, "face partitions, LiSPSM per face (%s%s)", id.c_str(),
+                  eta && *eta != 0.0 ? ": analysed at eta 0" : "");
+    out.eta.reset();
   } else if (eta) {
     s.scheme = Scheme::Eta;
     s.eta = std::clamp(*eta, -1.0, 1.0);

@@ -1,0 +1,127 @@
+// Face partitioning for rendering (FacePartitionFit.h): clip the frustum to the scene, cut it
+// along its faces (StorageFactor's facePartitions), warp every part along its bisector.
+#include "FacePartitionFit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "StorageFactor.h"
+#include "algo/Focus.h"
+
+namespace sl::partition {
+
+int faceSlot(int face) {
+  constexpr std::array<int, 6> slots{0, -1, 1, 2, 3, 4};
+  return face >= 0 && face < 6 ? slots[std::size_t(face)] : -1;
+}
+
+int selectFacePartition(const FaceSelection& sel, const glm::dvec3& p, double* secondGap) {
+  int best = -1;
+  double bestT = std::numeric_limits<double>::infinity();
+  double secondT = bestT;
+  for (std::size_t f = 0; f < 6; ++f) {
+    if (sel.partitionOfFace[f] < 0) continue;
+    const glm::dvec3 n(sel.planes[f]);
+    const double nd = glm::dot(n, sel.rayDir);
+    if (!(nd > 0.0)) continue;
+    const double t = (sel.planes[f].w - glm::dot(n, p)) / nd;
+    if (t < bestT) {
+      secondT = bestT;
+      bestT = t;
+      best = sel.partitionOfFace[f];
+    } else if (t < secondT) {
+      secondT = t;
+    }
+  }
+  if (secondGap) *secondGap = secondT - bestT;
+  return best < 0 ? 0 : best;
+}
+
+std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect,
+                                             const Aabb& sceneBounds,
+                                             const glm::dvec3& towardsLight, double eta,
+                                             FacePartitionFit& out) {
+  if (!sceneBounds.valid()) return "face partitions: the scene bounds are empty";
+  if (!(eta >= -1.0 && eta <= 1.0)) return "face partitions: warp.eta must be in [-1, 1]";
+  if (!(glm::length(towardsLight) > 1e-12) || !std::isfinite(glm::length(towardsLight)))
+    return "face partitions: the light direction is zero or not finite";
+  FacePartitionFit fit;
+  fit.view = warp::ViewFrustum::fromCamera(camera, aspect);
+  if (auto e = fit.view.validate()) return "face partitions: " + *e;
+  const glm::dvec3 y = glm::normalize(towardsLight);
+
+  // The frustum's depth range clipped to what it sees of the scene (as the perspective
+  // warps do); the whole frustum when it sees none of it.
+  const std::vector<glm::vec3> seen = intersectFrustumWithBox(
+      camera.frustumCorners(float(aspect), camera.nearM, camera.farM), sceneBounds);
+  std::optional<glm::dvec3> clipMin, clipMax;
+  if (!seen.empty()) {
+    double lo = fit.view.farM, hi = fit.view.nearM;
+    for (const glm::vec3& p : seen) {
+      const double d = glm::dot(glm::dvec3(p) - fit.view.eye, fit.view.forward);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    fit.view.nearM = std::clamp(lo, fit.view.nearM, fit.view.farM);
+    fit.view.farM = std::max(std::min(hi, fit.view.farM), fit.view.nearM * (1.0 + 1e-6));
+    clipMin = glm::dvec3(sceneBounds.min);
+    clipMax = glm::dvec3(sceneBounds.max);
+  }
+
+  const auto box = sceneBounds.corners();
+  warp::WarpSettings base;
+  base.kind = warp::WarpKind::Eta;
+  base.eta = eta;
+  base.depthOnly.assign(box.begin(), box.end());  // every caster toward the light
+
+  fit.selection.planes = frustumFacePlanes(fit.view, fit.view.nearM, fit.view.farM);
+  fit.selection.frontFaces = glm::dot(fit.view.forward, y) < 0.0;
+  fit.selection.rayDir = fit.selection.frontFaces ? y : -y;
+  for (FacePartition& f :
+       facePartitions(fit.view, fit.view.nearM, fit.view.farM, y, clipMin, clipMax)) {
+    FacePart part;
+    part.face = f.face;
+    part.slot = faceSlot(f.face);
+    if (part.slot < 0) continue;  // the far face: never towards or away from the light alone
+    part.body = std::move(f.body);
+    warp::WarpSettings ws = base;
+    ws.axis = f.axis;
+    if (f.axis) ws.projectedAxis = f.bisector;
+    if (auto e = warp::fitWarp(fit.view, part.body, y, ws, part.fit))
+      return "face partitions: " + *e;
+    part.nearM = std::numeric_limits<double>::max();
+    part.farM = -part.nearM;
+    for (const glm::dvec3& p : part.body) {
+      const double d = glm::dot(p - fit.view.eye, fit.view.forward);
+      part.nearM = std::min(part.nearM, d);
+      part.farM = std::max(part.farM, d);
+    }
+    fit.selection.partitionOfFace[std::size_t(f.face)] = part.slot;
+    fit.parts.push_back(std::move(part));
+  }
+  if (fit.parts.empty()) {
+    // No face region with volume (the frustum sees a flat sliver of the scene): one
+    // uniform map over what it sees, selected everywhere (partition 0).
+    FacePart part;
+    part.face = -1;
+    part.slot = 0;
+    if (seen.empty()) {
+      const auto c = fit.view.corners();
+      part.body.assign(c.begin(), c.end());
+    } else {
+      part.body.assign(seen.begin(), seen.end());
+    }
+    warp::WarpSettings ws = base;
+    ws.kind = warp::WarpKind::Uniform;
+    if (auto e = warp::fitWarp(fit.view, part.body, y, ws, part.fit))
+      return "face partitions: " + *e;
+    part.nearM = fit.view.nearM;
+    part.farM = fit.view.farM;
+    fit.parts.push_back(std::move(part));
+  }
+  out = std::move(fit);
+  return std::nullopt;
+}
+
+}  // namespace sl::partition

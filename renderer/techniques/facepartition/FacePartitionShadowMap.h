@@ -1,0 +1,38 @@
+// Face-partitioned shadow maps (Lloyd, Tuft, Yoon, Manocha, EGSR 2006 §5.1): the view frustum
+// split along its faces as seen from the light, one LiSPSM map per face (its own layer of a
+// texture array) warped along the bisector of the face's projected side edges; the lookup
+// picks a pixel's face by where its light ray leaves the frustum (algo/partition/FacePartitionFit).
+#pragma once
+
+#include <vector>
+
+#include "algo/partition/FacePartitionFit.h"
+#include "core/ShadowPass.h"
+#include "core/Technique.h"
+
+namespace sl {
+
+class FacePartitionShadowMap : public Technique {
+ public:
+  static TechniqueInfo info();
+  explicit FacePartitionShadowMap(const gl::ShaderLibrary& lib);
+
+  void renderShadows(FrameContext& ctx) override;
+  std::string lookupShader() const override { return "facepartition/lookup.glsl"; }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override { return {&depthProgram_}; }
+  MemoryStats memory() const override;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+
+  /// The last frame's partitions (their faces, bodies, warps and the selection rule).
+  const partition::FacePartitionFit& lastFit() const { return fit_; }
+
+ private:
+  gl::Program depthProgram_;
+  gl::Texture maps_;  ///< DEPTH_COMPONENT32F array, one layer per face partition
+  std::vector<gl::Framebuffer> fbos_;
+  partition::FacePartitionFit fit_;
+  std::vector<DepthMapView> views_;
+};
+
+}  // namespace sl

@@ -292,10 +292,19 @@ void ViewportWidget::paintGL() {
   renderer_->setCamera(camera_);
   renderer_->setLight(light_);
 
+  // A view dragged down to a few pixels draws nothing: a frame that small feeds temporal
+  // state (DA-RTW's rotation, kept by its vibration threshold) a degenerate importance
+  // map, and the restored view measured 0.188 % error instead of 0.174 % (split_resize.sh).
+  if (w < kMinDrawnPx || h < kMinDrawnPx) {
+    sl::Renderer::clearFrame(w, h, defaultFramebufferObject());
+    ++framesRendered_;
+    Q_EMIT frameRendered();
+    return;
+  }
   std::string problem;
-  // A view narrower than 2 pixels (a window dragged to its smallest) has no right half.
-  const bool split = !splitTechniqueId_.empty() && w >= 2;
-  const int mainWidth = split ? std::max(1, w / 2) : w;
+  // No right half narrower than the smallest drawn view: the left half takes it all.
+  const bool split = !splitTechniqueId_.empty() && w / 2 >= kMinDrawnPx;
+  const int mainWidth = split ? w / 2 : w;
   if (split) renderSplitHalf(w - mainWidth, h, problem);
 
   std::optional<std::string> error;

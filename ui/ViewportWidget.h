@@ -68,6 +68,8 @@ class ViewportWidget : public QOpenGLWidget {
 
   /// How long the view must be still before the error is recomputed.
   static constexpr int kErrorDelayMs = 1200;
+  /// Views (and split halves) narrower or lower than this are not rendered.
+  static constexpr int kMinDrawnPx = 16;
 
   /// Paused: no new frames (the last one stays on screen) until stepFrame() or resume.
   /// Camera and parameter changes wait for the next frame.

@@ -347,6 +347,22 @@ int main(int argc, char** argv) {
       return a.rest.empty() ? 2 : 0;
     }
     const std::string& cmd = a.rest[0];
+    // `shadowlab-cli COMMAND --help`: that command's usage, exit 0.
+    if (std::find_if(a.rest.begin() + 1, a.rest.end(), [](const std::string& s) {
+          return s == "--help" || s == "-h";
+        }) != a.rest.end()) {
+      if (cmd == "bench")
+        std::cout << kBenchUsage;
+      else if (cmd == "chart")
+        std::cout << kChartUsage;
+      else if (cmd == "stability")
+        std::cout << kStabilityUsage;
+      else if (cmd == "storage")
+        std::cout << kStorageUsage;
+      else
+        std::cout << kUsage;
+      return 0;
+    }
     if (cmd == "list") return cmdList();
     if (cmd == "render") return cmdRender(a);
     if (cmd == "compare") return cmdCompare(a);

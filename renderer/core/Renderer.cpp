@@ -96,9 +96,6 @@ struct RendererState {
   Camera camera;
   Light light;
   Renderer::FrameSizeLimit maxFrame;  ///< the context's limits, queried once
-  /// The previous frame's size: a technique's temporal state (DA-RTW's frame-late moments
-  /// and its rotation hysteresis) describes that view, not a resized one.
-  int lastWidth = 0, lastHeight = 0;
   FrameStats stats;
   Publication publication;
   std::set<std::string> requested;  ///< publication patterns (empty: publish nothing)
@@ -471,15 +468,19 @@ void publishAliasingStats(RendererState& s) {
 
 }  // namespace
 
+void Renderer::clearFrame(int width, int height, unsigned target) {
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+    if (width > 0 && height > 0) glViewport(0, 0, width, height);
+    glClearColor(0.25f, 0.25f, 0.28f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+}
+
 std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned target) {
   RendererState& s = *s_;
   auto neutral = [&](const std::string& why) -> std::optional<std::string> {
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
-      if (width > 0 && height > 0) glViewport(0, 0, width, height);
-      glClearColor(0.25f, 0.25f, 0.28f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    }
+    clearFrame(width, height, target);
     return why;
   };
   if (width <= 0 || height <= 0 || width > s.maxFrame.width || height > s.maxFrame.height)
@@ -502,13 +503,6 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                   c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg,
                   s.light.describe().c_str());
     s.frameSignature = buf;
-  }
-  if (width != s.lastWidth || height != s.lastHeight) {
-    // A view shrunk to a few pixels gives a degenerate importance map; the rotation kept by
-    // the vibration threshold would outlive it when the view is restored.
-    if (s.technique) s.technique->resetTemporalState();
-    s.lastWidth = width;
-    s.lastHeight = height;
   }
   const auto frameStart = std::chrono::steady_clock::now();
   s.ensureTargets(width, height);

@@ -241,6 +241,9 @@ class Renderer {
   /// degenerate, or the technique does not support the light's kind (checkLightSupport);
   /// the renderer keeps working.
   std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer);
+  /// Fills the target with the neutral background and renders nothing: no pass runs, no
+  /// temporal state changes (a view too small to show anything).
+  static void clearFrame(int width, int height, unsigned targetFramebuffer);
   const FrameStats& stats() const;
 
   /// The publication keys (or patterns, '*' = any run of characters; "*" = everything)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The split view after the window is dragged to its smallest and back (issue 14): the view
 # pinned, measured, shrunk to 3x3, 2x2, 1x1 and 0x0, restored, measured again. Both halves
-# must measure the same error as before (DA-RTW's temporal state restarts on a resize instead
-# of keeping the rotation of a degenerate 2-pixel frame), and no size reports a problem.
+# must measure the same error as before (a view below 16 px is not rendered, so DA-RTW's
+# rotation is not taken from a degenerate 2-pixel frame), and no size reports a problem.
 # usage: split_resize.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1

@@ -87,6 +87,20 @@ void MainWindow::createActions() {
   QAction* split = view->addAction(tr("&Split view (compare two techniques)"), this,
                                    [this] { teaching_->toggleSplit(); });
   split->setShortcut(Qt::Key_F7);
+  QAction* outside = view->addAction(tr("O&utside view (the frusta from a third camera)"));
+  outside->setObjectName(QStringLiteral("outsideViewAction"));
+  outside->setCheckable(true);
+  outside->setShortcut(Qt::Key_V);
+  outside->setToolTip(
+      tr("A third camera shows the view frustum, split planes, light and warp "
+         "frusta; drag orbits it, the wheel moves it (view.outside)"));
+  connect(outside, &QAction::triggered, this, [this, outside] {
+    const bool on = !viewport_->outsideView();  // the parameter may have changed (a lesson)
+    if (!viewport_->setOutsideView(on)) showStatus(tr("This renderer has no outside view."));
+    outside->setChecked(viewport_->outsideView());
+  });
+  connect(view, &QMenu::aboutToShow, this,
+          [this, outside] { outside->setChecked(viewport_->outsideView()); });
   view->addSeparator();
   QMenu* panels = view->addMenu(tr("&Panels"));
   panels->setObjectName(QStringLiteral("panelsMenu"));
@@ -132,9 +146,9 @@ void MainWindow::createActions() {
                            .arg(QCoreApplication::applicationVersion()));
   });
 
-  commandActions_ = {open,      reload,        screenshot,        saveAll,       quit,
-                     resetView, error,         continuousAction_, resetTemporal, cycleOverlay,
-                     split,     defaultLayout, shortcuts};
+  commandActions_ = {open,      reload,  screenshot,        saveAll,       quit,
+                     resetView, error,   continuousAction_, resetTemporal, cycleOverlay,
+                     split,     outside, defaultLayout,     shortcuts};
   // Shortcuts work wherever the focus is (also while the viewport has it).
   for (QAction* a : commandActions_) a->setShortcutContext(Qt::ApplicationShortcut);
   // Frame stepping keys: plain keys, so only while the main window has the focus (typing

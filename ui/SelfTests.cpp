@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include <QAbstractButton>
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDragEnterEvent>
@@ -17,6 +18,7 @@
 #include <QFileInfo>
 #include <QKeyEvent>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSlider>
@@ -483,6 +485,46 @@ bool SelfTests::teaching(const QString& dir) {
   saveImage(w_.viewport_->grabView(), QStringLiteral("split.png"));
   w_.teaching_->toggleSplit();
   check(w_.viewport_->splitTechnique().empty(), tr("F7 again ends the split view"));
+
+  // 3b. Outside view: V shows the third camera (the renderer reports it); a left drag orbits
+  // it and leaves the main camera (which the metrics measure) where it was; V again ends it.
+  auto* outside = w_.findChild<QAction*>(QStringLiteral("outsideViewAction"));
+  check(outside != nullptr, tr("View > Outside view exists"));
+  if (outside) {
+    outside->trigger();
+    w_.waitForFrames(2);
+    const sl::Renderer* view = w_.viewport_->renderer();
+    check(w_.viewport_->outsideView() && view->stats().outsideCamera.has_value() &&
+              !view->stats().outlines.frusta.empty(),
+          tr("V turns the outside view on (%1 frusta drawn)")
+              .arg(view->stats().outlines.frusta.size()));
+    saveImage(w_.viewport_->grabView(), QStringLiteral("outside.png"));
+    const sl::Camera before = w_.viewport_->camera();
+    const double azimuth = shared.get("view.outside.azimuth_deg");
+    const QPointF from(w_.viewport_->width() / 2.0, w_.viewport_->height() / 2.0),
+        to = from + QPointF(60, 0);
+    QMouseEvent press(QEvent::MouseButtonPress, from, w_.viewport_->mapToGlobal(from),
+                      Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    QMouseEvent move(QEvent::MouseMove, to, w_.viewport_->mapToGlobal(to), Qt::NoButton,
+                     Qt::LeftButton, Qt::NoModifier);
+    QMouseEvent release(QEvent::MouseButtonRelease, to, w_.viewport_->mapToGlobal(to),
+                        Qt::LeftButton, Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(w_.viewport_, &press);
+    QApplication::sendEvent(w_.viewport_, &move);
+    QApplication::sendEvent(w_.viewport_, &release);
+    w_.waitForFrames(1);
+    const sl::Camera after = w_.viewport_->camera();
+    check(after.position == before.position && after.target == before.target &&
+              shared.get("view.outside.azimuth_deg") != azimuth,
+          tr("a drag in the outside view orbits the third camera (azimuth %1 -> %2), not the main "
+             "one")
+              .arg(azimuth)
+              .arg(shared.get("view.outside.azimuth_deg")));
+    outside->trigger();
+    w_.waitForFrames(1);
+    check(!w_.viewport_->outsideView() && !view->stats().outsideCamera.has_value(),
+          tr("V again ends the outside view"));
+  }
 
   // 4. Lessons: each applies its scene and technique.
   const std::vector<Lesson>& lessons = w_.lessons_->lessons();

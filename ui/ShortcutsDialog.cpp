@@ -24,6 +24,8 @@ constexpr Binding kViewportBindings[] = {
     {"A / D", "Fly left / right"},
     {"Q / E", "Fly down / up"},
     {"Shift (held)", "Fly four times faster"},
+    {"Left drag / wheel in the outside view (V)",
+     "Orbit / move the third camera; the main camera stays"},
     {"Drop a .gltf / .glb file", "Open it"},
 };
 

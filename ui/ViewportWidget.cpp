@@ -76,6 +76,8 @@ class ViewOverlay : public QWidget {
   QImage split;  ///< right half (device pixels), null when the split view is off
   QString leftCaption, rightCaption, bannerTitle, bannerText, pausedText;
   enum class Legend { None, Error, Aliasing, WarpGrid } legend = Legend::None;
+  /// The outside view's line colours and what they stand for (empty: not in outside view).
+  QVector<QPair<QColor, QString>> outsideLegend;
   /// The light gizmo (widget pixels): lines, and the light's own point when on screen.
   QVector<QLineF> gizmoLines;
   std::optional<QPointF> gizmoPoint;
@@ -83,7 +85,8 @@ class ViewOverlay : public QWidget {
 
   bool hasContent() const {
     return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() ||
-           !pausedText.isEmpty() || legend != Legend::None || !gizmoLines.isEmpty() || gizmoPoint;
+           !pausedText.isEmpty() || legend != Legend::None || !gizmoLines.isEmpty() || gizmoPoint ||
+           !outsideLegend.isEmpty();
   }
 
  protected:
@@ -154,6 +157,25 @@ class ViewOverlay : public QWidget {
       boxColor = QColor(20, 22, 25, 200);
       p.setPen(Qt::white);
       p.drawText(r, Qt::AlignCenter, pausedText);
+    }
+    if (!outsideLegend.isEmpty()) {  // top right, under the pause badge
+      int tw = fm.horizontalAdvance(tr("OUTSIDE VIEW (V)"));
+      for (const auto& [colour, text] : outsideLegend)
+        tw = std::max(tw, fm.horizontalAdvance(text));
+      tw += 44;
+      const int rows = int(outsideLegend.size()) + 1;
+      const QRectF r(width() - tw - 12, line + 28, tw, rows * line + 12);
+      box(r);
+      p.setPen(QColor(255, 200, 60));
+      p.drawText(QRectF(r.left() + 10, r.top() + 6, tw - 16, line),
+                 Qt::AlignLeft | Qt::AlignVCenter, tr("OUTSIDE VIEW (V)"));
+      for (int i = 0; i < int(outsideLegend.size()); ++i) {
+        const double y = r.top() + 6 + (i + 1) * line;
+        p.fillRect(QRectF(r.left() + 10, y + line / 2.0 - 1.5, 18, 3), outsideLegend[i].first);
+        p.setPen(Qt::white);
+        p.drawText(QRectF(r.left() + 34, y, tw - 40, line), Qt::AlignLeft | Qt::AlignVCenter,
+                   outsideLegend[i].second);
+      }
     }
     if (legend == Legend::Aliasing) {
       // Same colours as aliasingColor() in shaders/common/composite.frag (log2 m in -4..4,
@@ -383,6 +405,31 @@ void ViewportWidget::updateOverlayWidget() {
     else if (v == enumIndexOf(p, "view.overlay", "warp-grid"))
       overlay_->legend = ViewOverlay::Legend::WarpGrid;
   }
+  overlay_->outsideLegend.clear();
+  if (renderer_ && outsideView() && renderer_->stats().outsideCamera) {
+    auto colour = [](sl::OutlineRole role, int map) {
+      const glm::vec3 c = sl::outlineColour(role, map);
+      return QColor::fromRgbF(c.r, c.g, c.b);
+    };
+    const sl::FrameOutlines& o = renderer_->stats().outlines;
+    auto& legend = overlay_->outsideLegend;
+    legend.append(
+        {colour(sl::OutlineRole::Camera, 0), tr("camera frustum (to the scene's far end)")});
+    if (!o.splitDepthsM.empty())
+      legend.append({colour(sl::OutlineRole::Split, 0), tr("split planes")});
+    int maps = 0;
+    bool warp = false;
+    for (const sl::FrustumOutline& f : o.frusta) {
+      if (f.role == sl::OutlineRole::LightMap) maps = std::max(maps, f.map + 1);
+      warp = warp || f.role == sl::OutlineRole::Warp;
+    }
+    for (int i = 0; i < std::min(maps, 8); ++i)
+      legend.append({colour(sl::OutlineRole::LightMap, i),
+                     maps == 1 ? (warp ? tr("light frustum (unwarped)") : tr("light frustum"))
+                               : tr("light frustum, map %1").arg(i)});
+    if (warp)
+      legend.append({colour(sl::OutlineRole::Warp, 0), tr("warped map's frustum, to its centre")});
+  }
   overlay_->errorStale = !errorIsCurrent();
   overlay_->pausedText =
       paused_ && pausedBadge_
@@ -514,9 +561,38 @@ void ViewportWidget::setLight(const sl::Light& light) {
   Q_EMIT lightChanged();
 }
 
+bool ViewportWidget::outsideView() const {
+  return renderer_ && renderer_->rendererParams().has("view.outside") &&
+         renderer_->rendererParams().getBool("view.outside");
+}
+
+bool ViewportWidget::setOutsideView(bool on) {
+  if (!renderer_ || !renderer_->rendererParams().has("view.outside")) return false;
+  if (outsideView() == on) return true;
+  if (renderer_->rendererParams().set("view.outside", on ? 1.0 : 0.0)) return false;
+  updateOverlayWidget();
+  update();
+  return true;
+}
+
+void ViewportWidget::adjustOutsideView(float azimuthDeg, float elevationDeg, float zoomFactor) {
+  sl::ParamSet& p = renderer_->rendererParams();
+  auto clampSet = [&](const char* key, double v) {
+    const sl::ParamDecl* d = p.find(key);
+    if (d) (void)p.set(key, std::clamp(v, d->minValue, d->maxValue));
+  };
+  double az = p.get("view.outside.azimuth_deg") + azimuthDeg;
+  az = std::remainder(az, 360.0);
+  clampSet("view.outside.azimuth_deg", az);
+  clampSet("view.outside.elevation_deg", p.get("view.outside.elevation_deg") + elevationDeg);
+  clampSet("view.outside.zoom", p.get("view.outside.zoom") * zoomFactor);
+  update();
+}
+
 void ViewportWidget::updateLightGizmo() {
   overlay_->gizmoLines.clear();
   overlay_->gizmoPoint.reset();
+  if (outsideView()) return;  // the gizmo is drawn for the main camera's projection
   if (!scene_ || !scene_->bounds.valid() || width() <= 0 || height() <= 0) return;
   const glm::mat4 viewProj = camera_.projection(float(width()) / float(height())) * camera_.view();
   auto project = [&](const glm::vec3& p) -> std::optional<QPointF> {
@@ -676,6 +752,11 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     dragLight(d);
     return;
   }
+  if (outsideView() && dragButton_ == Qt::LeftButton && !(mods & Qt::ShiftModifier)) {
+    // Outside view: the drag orbits the third camera, the main camera stays.
+    adjustOutsideView(-d.x() * kOrbitDegPerPixel, d.y() * kOrbitDegPerPixel, 1.0f);
+    return;
+  }
   sl::Camera cam = camera_;
   if (dragButton_ == Qt::LeftButton && (mods & Qt::ControlModifier)) {
     cam.look(-d.x() * kLookDegPerPixel, -d.y() * kLookDegPerPixel);
@@ -699,6 +780,11 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
 void ViewportWidget::wheelEvent(QWheelEvent* event) {
   const float steps = static_cast<float>(event->angleDelta().y()) / 120.0f;
   if (steps == 0.0f) return;
+  if (outsideView()) {
+    adjustOutsideView(0.0f, 0.0f, std::pow(kDollyPerWheelStep, steps));
+    event->accept();
+    return;
+  }
   sl::Camera cam = camera_;
   cam.dolly(std::pow(kDollyPerWheelStep, steps));
   if (!cam.validate()) setCamera(cam);

@@ -47,6 +47,10 @@ class ViewportWidget : public QOpenGLWidget {
   /// Camera of the scene's bookmark `index`, or the framing view for -1.
   void goToBookmark(int index);
   void resetView();
+  /// The outside view (the renderer's view.outside): a third camera showing the frusta;
+  /// while on, a left drag orbits it and the wheel moves it in or out (main camera fixed).
+  bool outsideView() const;
+  bool setOutsideView(bool on);  ///< false when the renderer has no such parameter
 
   void setLight(const sl::Light& light);
   const sl::Light& light() const { return light_; }
@@ -130,6 +134,8 @@ class ViewportWidget : public QOpenGLWidget {
   void focusOutEvent(QFocusEvent* event) override;
 
  private:
+  /// Turns the outside camera and scales its zoom (clamped to the declared ranges).
+  void adjustOutsideView(float azimuthDeg, float elevationDeg, float zoomFactor);
   void destroyRenderer();
   void applyStateToRenderer();
   void renderSplitHalf(int width, int height, std::string& problem);

@@ -280,7 +280,9 @@ int cmdRender(Args& a) {
   configure(r, cfg, loadScene(cfg.scene));
   sl::Renderer::ErrorResult err;
   json j = renderAndMeasure(r, cfg, err, /*showProgress=*/true);
-  writePng(cfg.out, err.frame.color);
+  // view.outside=on: --out is the outside view (what a host shows); the error image and the
+  // metrics stay the main camera's.
+  writePng(cfg.out, err.frame.outside.pixels.empty() ? err.frame.color : err.frame.outside);
   if (!cfg.metrics.empty()) writeText(cfg.metrics, j.dump(2));
   if (!cfg.errorImage.empty())
     writePng(cfg.errorImage,

@@ -3,8 +3,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "algo/Camera.h"
+#include "algo/OutsideView.h"
 
 namespace sl {
 
@@ -45,6 +49,11 @@ struct FrameStats {
   /// Bytes read back from the GPU this frame for the requested publications (0 when
   /// nothing is requested), counted by the readback helpers themselves.
   std::uint64_t publicationBytes = 0;
+  /// What the technique published for the outside view (its maps' frusta, split depths);
+  /// filled every frame, drawn only while view.outside is on.
+  FrameOutlines outlines;
+  /// The third camera of this frame when view.outside is on (algo/OutsideView).
+  std::optional<Camera> outsideCamera;
   double passMs(const std::string& name) const;
 };
 

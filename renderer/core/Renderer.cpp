@@ -66,6 +66,50 @@ std::vector<ParamDecl> rendererParamDecls() {
            std::to_string(SL_PARTITION_COLOURS) +
            "): 0 red, 1 green, 2 blue, 3 yellow, 4 magenta, 5 cyan, 6 orange, 7 violet.",
        .uniform = "u_overlay"},
+      {.key = "view.outside",
+       .label = "Outside view",
+       .group = "View",
+       .type = ParamType::Bool,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .help = "Show the scene from a third camera, placed so that the view frustum and the "
+               "light's frusta are visible, with lines: the camera's frustum (white, near to the "
+               "deepest point of the scene bounds), split planes (grey), each shadow map's light "
+               "frustum (its partition colour) and a warped map's frustum (cyan, its sides "
+               "extended to the warp's centre of projection). The metrics still measure the "
+               "main camera's image."},
+      {.key = "view.outside.azimuth_deg",
+       .label = "Outside azimuth",
+       .group = "View",
+       .type = ParamType::Float,
+       .defaultValue = 60.0,
+       .minValue = -180.0,
+       .maxValue = 180.0,
+       .step = 5.0,
+       .help = "Direction of the outside view's camera around the vertical, degrees: 0 behind "
+               "the main camera, 90 from its right (dragging in the outside view changes it)."},
+      {.key = "view.outside.elevation_deg",
+       .label = "Outside elevation",
+       .group = "View",
+       .type = ParamType::Float,
+       .defaultValue = 35.0,
+       .minValue = -80.0,
+       .maxValue = 85.0,
+       .step = 5.0,
+       .help = "Height of the outside view's camera above the horizon, degrees."},
+      {.key = "view.outside.zoom",
+       .label = "Outside zoom",
+       .group = "View",
+       .type = ParamType::Float,
+       .defaultValue = 1.0,
+       .minValue = 0.001,
+       .maxValue = 1.0,
+       .step = 0.01,
+       .help = "1 frames every line; a smaller value frames that share of the view, centred "
+               "near the main camera's view axis that share of the way in (0.05: the first "
+               "twentieth of a kilometre-deep frustum). The mouse wheel in the outside view "
+               "changes it."},
   };
 }
 
@@ -125,8 +169,19 @@ struct RendererState {
     return resolvePrograms.emplace(lookup, gl::Program(shaders, d)).first->second;
   }
 
+  Targets outsideTargets;  ///< the outside view's G-buffer, resolve and composite (view.outside)
+  gl::Program outlineProgram;  ///< common/outline.vert/.frag: the outside view's lines
+  bool lastFrameOutside = false;
+
   void ensureTargets(int w, int h) {
     if (targets.width == w && targets.height == h) return;
+    targets = makeTargets(w, h);
+  }
+  void ensureOutsideTargets(int w, int h) {
+    if (outsideTargets.width == w && outsideTargets.height == h) return;
+    outsideTargets = makeTargets(w, h);
+  }
+  static Targets makeTargets(int w, int h) {
     Targets t;
     t.width = w;
     t.height = h;
@@ -160,7 +215,7 @@ struct RendererState {
     t.composite.attach(GL_COLOR_ATTACHMENT0, t.color);
     t.composite.setDrawBuffers(1);
     t.composite.checkComplete("composite");
-    targets = std::move(t);
+    return t;
   }
 };
 
@@ -271,6 +326,11 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
     const std::vector<ParamDecl> decls = rendererParamDecls();
     if (auto err = checkParamUniforms(decls, own)) throw std::logic_error(*err);
   }
+  s_->outlineProgram = gl::Program(s_->shaders, {"common/outline",
+                                                 {{GL_VERTEX_SHADER, "common/outline.vert"},
+                                                  {GL_FRAGMENT_SHADER, "common/outline.frag"}},
+                                                 {},
+                                                 {}});
   s_->emptyVao = gl::createVertexArray();
   if (auto err = setTechnique("uniform")) throw std::runtime_error(*err);
 }
@@ -466,6 +526,141 @@ void publishAliasingStats(RendererState& s) {
   number("aliasing.bin_octaves", h.binOctaves());
 }
 
+/// The G-buffer pass into `t` from a camera (the main one, or the outside view's).
+void drawGBuffer(RendererState& s, Targets& t, const glm::mat4& viewProj, const glm::vec3& eye) {
+  glBindFramebuffer(GL_FRAMEBUFFER, t.gbuffer.id());
+  glViewport(0, 0, t.width, t.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
+  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(t.gbuffer.id(), GL_COLOR, i, zero);
+  glClearNamedFramebufferfv(t.gbuffer.id(), GL_DEPTH, 0, &one);
+  s.gbufferProgram.use();
+  s.gbufferProgram.set("u_viewProj", viewProj);
+  s.gbufferProgram.set("u_cameraPos", eye);
+  s.sceneGpu->draw(s.gbufferProgram, SL_UNIT_MATERIAL);
+}
+
+/// The resolve of `t`'s G-buffer into its targets with the technique's maps (lookup or
+/// deferred), as they were built this frame.
+void resolveInto(RendererState& s, Targets& t) {
+  const ParamSet& params = paramsFor(s, s.techniqueId);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.resolve.id());
+  glViewport(0, 0, t.width, t.height);
+  glDisable(GL_DEPTH_TEST);
+  glBindTextureUnit(SL_UNIT_G_POSITION, t.position.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, t.normal.id());
+  if (s.technique->resolveMode() == ResolveMode::Lookup) {
+    const gl::Program& resolve = s.resolveProgramFor(s.technique->lookupShader());
+    resolve.use();
+    bindLight(resolve, s.light);
+    bindParams(resolve, params);
+    s.technique->bindLookup(resolve, SL_UNIT_LOOKUP_FIRST);
+    glBindVertexArray(s.emptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  } else {
+    // Map 0 for every pixel unless the technique writes its selection.
+    const GLuint zero = 0;
+    glClearTexImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    const ResolveTargets targets{t.width,    t.height,       t.position, t.normal,
+                                 t.hard,     t.filtered,     t.aliasing, t.texel,
+                                 t.mapIndex, t.resolve.id(), s.light};
+    s.technique->resolveDeferred(targets, params);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
+  }
+}
+
+/// Shading of `t` seen from `eye`, with the view.overlay; the error overlay only when
+/// `referenceMatches` (a reference of this exact view was computed).
+void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool referenceMatches) {
+  glBindFramebuffer(GL_FRAMEBUFFER, t.composite.id());
+  glViewport(0, 0, t.width, t.height);
+  const gl::Program& c = s.compositeProgram;
+  c.use();
+  // Samplers: layout(binding = SL_UNIT_*) in composite.frag.
+  glBindTextureUnit(SL_UNIT_G_POSITION, t.position.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, t.normal.id());
+  glBindTextureUnit(SL_UNIT_G_ALBEDO, t.albedo.id());
+  glBindTextureUnit(SL_UNIT_VISIBILITY, t.filtered.id());
+  glBindTextureUnit(SL_UNIT_HARD, t.hard.id());
+  glBindTextureUnit(SL_UNIT_REFERENCE, t.reference.id());
+  glBindTextureUnit(SL_UNIT_ALIASING, t.aliasing.id());
+  glBindTextureUnit(SL_UNIT_TEXEL, t.texel.id());
+  glBindTextureUnit(SL_UNIT_MAP_INDEX, t.mapIndex.id());
+  bindLight(c, s.light);
+  c.set("u_cameraPos", eye);
+  bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
+  if (s.rendererParams.getInt("view.overlay") == SL_OVERLAY_ERROR && !referenceMatches)
+    c.set("u_overlay", SL_OVERLAY_NONE);  // no reference of this exact view
+  glBindVertexArray(s.emptyVao.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+/// The outside view (view.outside) into s.outsideTargets: G-buffer from the third camera,
+/// the technique's resolve with this frame's maps, shading, then the outline segments as
+/// lines two pixels wide, on top (no depth test: a frustum is never hidden by the scene).
+Camera renderOutsideView(RendererState& s, int width, int height, float aspect,
+                         const FrameOutlines& outlines) {
+  const ParamSet& p = s.rendererParams;
+  const std::vector<OutlineSegment> segments =
+      outlineSegments(s.camera, aspect, s.scene->bounds, outlines);
+  OutsideViewSettings settings;
+  settings.azimuthDeg = float(p.get("view.outside.azimuth_deg"));
+  settings.elevationDeg = float(p.get("view.outside.elevation_deg"));
+  settings.zoom = float(p.get("view.outside.zoom"));
+  const Camera cam = fitOutsideCamera(s.camera, aspect, segments, settings);
+  if (auto err = cam.validate()) throw std::runtime_error(*err);
+  const glm::mat4 viewProj = cam.projection(aspect) * cam.view();
+
+  s.ensureOutsideTargets(width, height);
+  Targets& o = s.outsideTargets;
+  drawGBuffer(s, o, viewProj, cam.position);
+  resolveInto(s, o);
+  compositeInto(s, o, cam.position, false);
+
+  if (segments.empty()) return cam;
+  struct Vertex {
+    glm::vec3 position, colour;
+  };
+  std::vector<Vertex> vertices;
+  vertices.reserve(segments.size() * 2);
+  for (const OutlineSegment& seg : segments) {
+    vertices.push_back({seg.a, seg.colour});
+    vertices.push_back({seg.b, seg.colour});
+  }
+  const gl::Buffer buffer =
+      gl::Buffer::create(GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), 0);
+  const gl::VertexArray vao = gl::createVertexArray();
+  glVertexArrayVertexBuffer(vao.id(), 0, buffer.id(), 0, sizeof(Vertex));
+  glEnableVertexArrayAttrib(vao.id(), 0);
+  glEnableVertexArrayAttrib(vao.id(), 1);
+  glVertexArrayAttribFormat(vao.id(), 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
+  glVertexArrayAttribFormat(vao.id(), 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, colour));
+  glVertexArrayAttribBinding(vao.id(), 0, 0);
+  glVertexArrayAttribBinding(vao.id(), 1, 0);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, o.composite.id());
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  s.outlineProgram.use();
+  s.outlineProgram.set("u_viewProj", viewProj);
+  glBindVertexArray(vao.id());
+  const glm::vec2 pixel(2.0f / float(width), 2.0f / float(height));
+  for (const glm::vec2 offset :
+       {glm::vec2(0.0f), glm::vec2(pixel.x, 0.0f), glm::vec2(0.0f, pixel.y)}) {
+    s.outlineProgram.set("u_pixelOffset", offset);
+    glDrawArrays(GL_LINES, 0, GLsizei(vertices.size()));
+  }
+  glBindVertexArray(0);
+  return cam;
+}
+
 }  // namespace
 
 void Renderer::clearFrame(int width, int height, unsigned target) {
@@ -522,23 +717,11 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
   {  // 1. Camera G-buffer.
     auto pass = s.timer->scope("gbuffer");
-    glBindFramebuffer(GL_FRAMEBUFFER, t.gbuffer.id());
-    glViewport(0, 0, width, height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
-    for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(t.gbuffer.id(), GL_COLOR, i, zero);
-    glClearNamedFramebufferfv(t.gbuffer.id(), GL_DEPTH, 0, &one);
-    s.gbufferProgram.use();
-    s.gbufferProgram.set("u_viewProj", proj * view);
-    s.gbufferProgram.set("u_cameraPos", s.camera.position);
-    s.sceneGpu->draw(s.gbufferProgram, SL_UNIT_MATERIAL);
+    drawGBuffer(s, t, proj * view, s.camera.position);
   }
 
   // 2. The technique's shadow passes.
+  FrameOutlines outlines;  // what the outside view draws (the technique adds its frusta)
   FrameContext ctx{*s.scene,
                    *s.sceneGpu,
                    s.camera,
@@ -557,7 +740,8 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                    *s.timer,
                    s.shaders,
                    s.frameIndex,
-                   publishing ? &s.publication : nullptr};
+                   publishing ? &s.publication : nullptr,
+                   &outlines};
   try {
     // Declared parameters reach every program of the technique from their declaration.
     for (const gl::Program* p : s.technique->programs()) bindParams(*p, params());
@@ -565,30 +749,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
     // 3. Resolve: hard mask, filtered visibility, aliasing m, selected map's uv per pixel.
     auto pass = s.timer->scope("resolve");
-    glBindFramebuffer(GL_FRAMEBUFFER, t.resolve.id());
-    glViewport(0, 0, width, height);
-    glDisable(GL_DEPTH_TEST);
-    glBindTextureUnit(SL_UNIT_G_POSITION, t.position.id());
-    glBindTextureUnit(SL_UNIT_G_NORMAL, t.normal.id());
-    if (s.technique->resolveMode() == ResolveMode::Lookup) {
-      const gl::Program& resolve = s.resolveProgramFor(s.technique->lookupShader());
-      resolve.use();
-      bindLight(resolve, s.light);
-      bindParams(resolve, params());
-      s.technique->bindLookup(resolve, SL_UNIT_LOOKUP_FIRST);
-      glBindVertexArray(s.emptyVao.id());
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-    } else {
-      // Map 0 for every pixel unless the technique writes its selection.
-      const GLuint zero = 0;
-      glClearTexImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-      const ResolveTargets targets{width,      height,         t.position, t.normal,
-                                   t.hard,     t.filtered,     t.aliasing, t.texel,
-                                   t.mapIndex, t.resolve.id(), s.light};
-      s.technique->resolveDeferred(targets, params());
-      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                      GL_TEXTURE_UPDATE_BARRIER_BIT);
-    }
+    resolveInto(s, t);
     // Measured aliasing statistics, only while requested (timed with the resolve).
     if (publishing && wantsAliasingStats(s.publication)) publishAliasingStats(s);
   } catch (const std::exception& e) {
@@ -598,35 +759,28 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
   {  // 4. Composite (shading).
     auto pass = s.timer->scope("composite");
-    glBindFramebuffer(GL_FRAMEBUFFER, t.composite.id());
-    glViewport(0, 0, width, height);
-    const gl::Program& c = s.compositeProgram;
-    c.use();
-    // Samplers: layout(binding = SL_UNIT_*) in composite.frag.
-    glBindTextureUnit(SL_UNIT_G_POSITION, t.position.id());
-    glBindTextureUnit(SL_UNIT_G_NORMAL, t.normal.id());
-    glBindTextureUnit(SL_UNIT_G_ALBEDO, t.albedo.id());
-    glBindTextureUnit(SL_UNIT_VISIBILITY, t.filtered.id());
-    glBindTextureUnit(SL_UNIT_HARD, t.hard.id());
-    glBindTextureUnit(SL_UNIT_REFERENCE, t.reference.id());
-    glBindTextureUnit(SL_UNIT_ALIASING, t.aliasing.id());
-    glBindTextureUnit(SL_UNIT_TEXEL, t.texel.id());
-    glBindTextureUnit(SL_UNIT_MAP_INDEX, t.mapIndex.id());
-    bindLight(c, s.light);
-    c.set("u_cameraPos", s.camera.position);
-    bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
-    if (s.rendererParams.getInt("view.overlay") == SL_OVERLAY_ERROR &&
-        s.referenceSignature != s.frameSignature)
-      c.set("u_overlay", SL_OVERLAY_NONE);  // no reference of this exact view
-    glBindVertexArray(s.emptyVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
+    compositeInto(s, t, s.camera.position, s.referenceSignature == s.frameSignature);
   }
+
+  // 4b. The outside view (view.outside): the same scene and shadows from a third camera, with
+  // the frusta as lines. Not timed, and no metric reads it: the main camera's targets stay.
+  s.lastFrameOutside = false;
+  std::optional<Camera> outsideCamera;
+  if (s.rendererParams.getBool("view.outside")) {
+    try {
+      outsideCamera = renderOutsideView(s, width, height, aspect, outlines);
+      s.lastFrameOutside = true;
+    } catch (const std::exception& e) {
+      s.timer->endFrame();
+      return neutral(std::string("outside view: ") + e.what());
+    }
+  }
+  const Targets& shown = s.lastFrameOutside ? s.outsideTargets : t;
 
   // 5. To the host's framebuffer (a surfaceless EGL context has none: the frame then
   // stays in the renderer's colour target, which readback() returns).
   if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE)
-    glBlitNamedFramebuffer(t.composite.id(), target, 0, 0, width, height, 0, 0, width, height,
+    glBlitNamedFramebuffer(shown.composite.id(), target, 0, 0, width, height, 0, 0, width, height,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, target);
 
@@ -640,6 +794,8 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   s.stats.memory = s.technique->memory();
   s.stats.publicationBytes = publishing ? s.publication.readbackBytes : 0;
   for (const PassTiming& p : s.stats.passes) s.stats.totalMs += p.ms;
+  s.stats.outlines = std::move(outlines);
+  s.stats.outsideCamera = outsideCamera;
   (void)frameStart;
   return std::nullopt;
 }
@@ -677,6 +833,15 @@ FrameReadback Renderer::readback() const {
                     r.color.pixels.data());
   // Everything top row first, like the colour image (GL textures are bottom row first).
   flipVertically(r.color);
+  if (s_->lastFrameOutside && s_->outsideTargets.width == t.width &&
+      s_->outsideTargets.height == t.height) {
+    r.outside.width = t.width;
+    r.outside.height = t.height;
+    r.outside.pixels.resize(n * 4);
+    glGetTextureImage(s_->outsideTargets.color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(n * 4),
+                      r.outside.pixels.data());
+    flipVertically(r.outside);
+  }
   auto flip = [&](auto& v) {
     std::span<std::uint8_t> bytes(reinterpret_cast<std::uint8_t*>(v.data()),
                                   v.size() * sizeof(v[0]));
@@ -722,6 +887,7 @@ std::optional<std::string> Renderer::reloadShaders() {
   note(s_->gbufferProgram.rebuild(s_->shaders));
   note(s_->compositeProgram.rebuild(s_->shaders));
   note(s_->aliasingStatsProgram.rebuild(s_->shaders));
+  note(s_->outlineProgram.rebuild(s_->shaders));
   for (auto& [name, prog] : s_->resolvePrograms) note(prog.rebuild(s_->shaders));
   if (s_->technique) note(s_->technique->reloadShaders(s_->shaders));
   if (errors.empty()) return std::nullopt;

@@ -174,7 +174,10 @@ struct FrameReadback {
   /// The index of the map the resolve selected per pixel (a cascade, face, layer; 0 for
   /// single-map techniques and where uncovered).
   std::vector<std::uint8_t> mapIndex;
-  ImageRGBA8 color;  ///< final shaded image, row 0 = top
+  ImageRGBA8 color;  ///< final shaded image of the main camera, row 0 = top
+  /// The outside view's image (view.outside on: the third camera with the frusta drawn, what
+  /// the host was shown); empty otherwise. Every other array is the main camera's.
+  ImageRGBA8 outside;
 };
 
 /// One entry of a technique list: what it is, and how to make one (GL current; throws

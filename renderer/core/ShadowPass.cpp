@@ -84,8 +84,10 @@ void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> m
 SingleDepthMap::SingleDepthMap(const gl::ShaderLibrary& lib, std::string label)
     : label_(std::move(label)), program_(lib, depthProgramDesc()) {}
 
-void SingleDepthMap::render(FrameContext& ctx, int resolution, const DepthMapView& view) {
+void SingleDepthMap::render(FrameContext& ctx, int resolution, const DepthMapView& view,
+                            bool outline) {
   view_ = view;
+  if (outline) ctx.addOutline(view.lightViewProj, OutlineRole::LightMap);
   if (!map_ || map_.width() != resolution) {
     map_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, resolution, resolution);
     fbo_ = gl::Framebuffer::create();

@@ -64,7 +64,8 @@ class SingleDepthMap {
   SingleDepthMap(const gl::ShaderLibrary& lib, std::string label);
   /// (Re)allocates the map when `resolution` changes, renders the scene's exact depth
   /// through view.lightViewProj and publishes it as "shadow map" when that key is requested.
-  void render(FrameContext& ctx, int resolution, const DepthMapView& view);
+  /// With `outline`, adds the map's frustum (the inverse of its matrix) to the outside view.
+  void render(FrameContext& ctx, int resolution, const DepthMapView& view, bool outline = true);
   /// The lookup's per-map uniforms and the map on `firstUnit` (as u_shadowMap).
   void bindLookup(const gl::Program& resolve, int firstUnit) const;
   MemoryStats memory() const;

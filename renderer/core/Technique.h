@@ -52,6 +52,12 @@ struct FrameContext {
   /// True when `key` is requested this frame: read it back, or do the work that exists
   /// only to show it.
   bool wants(std::string_view key) const { return publication && publication->wants(key); }
+  /// What the outside view draws (algo/OutsideView.h): every technique adds each map's
+  /// world -> clip matrix (and a warp's, and its split depths) every frame; cheap, no GL.
+  FrameOutlines* outlines = nullptr;
+  void addOutline(const glm::mat4& worldToClip, OutlineRole role, int map = 0) const {
+    if (outlines) outlines->frusta.push_back(FrustumOutline::fromClip(worldToClip, role, map));
+  }
 };
 
 /// How a technique turns its maps into the resolve targets.

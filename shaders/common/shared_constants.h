@@ -52,6 +52,11 @@
 #define SL_PARTITION_COLOUR_6 1.00, 0.55, 0.10  // orange
 #define SL_PARTITION_COLOUR_7 0.55, 0.35, 0.85  // violet
 #define SL_GRID_LINES_PER_MAP 16  // the grid overlay: a line every 1/16 of the selected map
+// --- Outside view (view.outside; algo/OutsideView, common/outline.frag, the viewport's legend):
+// line colours (RGB 0..1). A shadow map's light frustum takes its partition colour above.
+#define SL_OUTLINE_CAMERA_COLOUR 1.00, 1.00, 1.00  // the main camera's frustum: white
+#define SL_OUTLINE_SPLIT_COLOUR 0.62, 0.62, 0.66   // split planes of a multi-map technique: grey
+#define SL_OUTLINE_WARP_COLOUR 0.35, 0.95, 1.00    // a warped map's frustum (PSM/LiSPSM/TSM): cyan
 
 // --- Aliasing statistics (common/aliasing_stats.comp, the renderer's "aliasing.*"
 // publication; CPU mirror sl::Log2Histogram): a histogram of log2 m over the covered pixels,

@@ -4,7 +4,8 @@
 # renderer declare them (TechniqueInfo::passes; the same order as the timed passes), each
 # raising and marking the panel that shows its output, and past the last pass renders exactly one more frame; Esc resumes;
 # O cycles every overlay the `view.overlay` declaration lists; F7 splits the view with both
-# errors measured; every lesson in scenes/lessons applies its scene and technique. The
+# errors measured; V shows the outside view, a drag there turns the third camera only;
+# every lesson in scenes/lessons applies its scene and technique. The
 # window at each step is saved to DIR for a look.
 # usage: teaching.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail

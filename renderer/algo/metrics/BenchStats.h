@@ -150,7 +150,7 @@ ChartAxis planChartAxis(std::span<const double> values, AxisScale scale, double 
 /// in byteUnitFor(largest), log base 2 when the values span more than 8x.
 ChartAxis planCostAxis(ChartX x, std::span<const double> values);
 
-/// Colour of the i-th technique (Okabe-Ito palette, 8 colours, repeating), 8-bit RGB.
+/// Colour of the i-th technique (the Okabe-Ito palette and 3 more, repeating), 8-bit RGB.
 std::array<std::uint8_t, 3> chartColorRgb(std::size_t i);
 
 }  // namespace sl

@@ -352,6 +352,8 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
                                                 p.depthRangeM > 0.0 ? float(p.depthRangeM) : 1.0f};
       views_.push_back(v);
       renderDepth(ctx, depthProgram_, fbos_[size_t(i)].id(), res, res, p.viewProj);
+      ctx.addOutline(p.viewProj, OutlineRole::LightMap, i);
+      if (ctx.outlines && i + 1 < k) ctx.outlines->splitDepthsM.push_back(float(p.farM));
     }
   }
   if (fitDepth) reduceDepthRange(ctx);

@@ -29,6 +29,8 @@ class PerspectiveShadowMap : public SingleDepthMapTechnique {
   const warp::WarpFit& lastFit() const { return fit_; }
 
  private:
+  /// The outside view's outlines of a warped fit: the light-space box and the warping frustum.
+  void addWarpOutlines(FrameOutlines& out) const;
   Kind kind_;
   warp::WarpFit fit_;
 };

@@ -555,6 +555,7 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
   }
   view_ = depthMapView(fit);
   lastExtentM_ = fit.extentM;
+  ctx.addOutline(fit.viewProj, OutlineRole::LightMap);  // the unwarped light frustum
 
   buildImportance(ctx, fit.viewProj, std::max(fit.extentM.x, fit.extentM.y) / float(imRes_));
   if (config_.rotation) buildMoments(ctx);

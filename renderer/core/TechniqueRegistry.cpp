@@ -2,6 +2,7 @@
 // and one line here.
 #include "core/Technique.h"
 #include "techniques/cascades/CascadedShadowMap.h"
+#include "techniques/cube/CubeShadowMap.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
@@ -43,6 +44,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       perspectiveEntry<PerspectiveShadowMap::Kind::Lispsm>("lispsm"),
       perspectiveEntry<PerspectiveShadowMap::Kind::Tsm>("tsm"),
       entry<CascadedShadowMap>(),
+      entry<CubeShadowMap>(),
   };
   return list;
 }

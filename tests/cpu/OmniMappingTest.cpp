@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -173,6 +174,45 @@ TEST(OmniParaboloid, DensityRimOverCentreIsFour) {
       omega += 1.0 / paraboloidTexelsPerSteradian(f, paraboloidDirection(f, 0, uv), n);
     }
   EXPECT_NEAR(omega, 2.0 * std::numbers::pi, 2e-2);
+}
+
+// Solid angle of the spherical triangle a b c (unit vectors; Van Oosterom and Strackee 1983).
+double triangleSolidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const double num = std::abs(glm::dot(a, glm::cross(b, c)));
+  const double den = 1.0 + glm::dot(a, b) + glm::dot(b, c) + glm::dot(c, a);
+  return 2.0 * std::atan2(num, den);
+}
+/// The solid angle of the texel whose uv corners are lo..hi, mapped by `dir`.
+template <class Dir>
+double texelSolidAngle(Dir dir, glm::dvec2 lo, glm::dvec2 hi) {
+  const glm::dvec3 a = dir({lo.x, lo.y}), b = dir({hi.x, lo.y}), c = dir({hi.x, hi.y}),
+                   d = dir({lo.x, hi.y});
+  return triangleSolidAngle(a, b, c) + triangleSolidAngle(a, c, d);
+}
+
+TEST(OmniDensity, MeasuredTexelSolidAnglesMatchTheAnalyticRatios) {
+  // Measured: the exact solid angle of real texels (their four corner directions through
+  // the inverse mappings), independent of the density formulas. README quotes these lines.
+  const int res = 1024;
+  const double t = 1.0 / res;
+  auto cube = [](glm::dvec2 uv) { return cubeDirection(4, uv); };
+  const double centre = texelSolidAngle(cube, {0.5, 0.5}, {0.5 + t, 0.5 + t});
+  const double corner = texelSolidAngle(cube, {1.0 - t, 1.0 - t}, {1.0, 1.0});
+  const double cubeRatio = centre / corner;
+  const ParaboloidFrame f = paraboloidFrame({0, 1, 0});
+  auto disc = [&](glm::dvec2 uv) { return paraboloidDirection(f, 0, uv); };
+  const double pCentre = texelSolidAngle(disc, {0.5, 0.5}, {0.5 + t, 0.5 + t});
+  const double pRim = texelSolidAngle(disc, {1.0 - t, 0.5}, {1.0, 0.5 + t});
+  const double discRatio = pCentre / pRim;
+  std::printf("cube %d^2: texels per sr, corner / centre = %.4f (analytic 3√3 = %.4f)\n", res,
+              cubeRatio, 3.0 * std::sqrt(3.0));
+  std::printf("paraboloid %d^2: texels per sr, rim / centre = %.4f (analytic 4)\n", res, discRatio);
+  EXPECT_NEAR(cubeRatio, 3.0 * std::sqrt(3.0), 0.02);
+  EXPECT_NEAR(discRatio, 4.0, 0.02);
+  // And each measured texel against the density formula at its centre direction.
+  EXPECT_NEAR(centre * cubeTexelsPerSteradian(cube({0.5 + t / 2, 0.5 + t / 2}), res), 1.0, 1e-3);
+  EXPECT_NEAR(pRim * paraboloidTexelsPerSteradian(f, disc({1.0 - t / 2, 0.5 + t / 2}), res), 1.0,
+              1e-2);
 }
 
 }  // namespace

@@ -52,7 +52,7 @@ TechniqueInfo CubeShadowMap::info() {
                   "(+x, -x, +y, -y, +z, -z), in one layered pass or six: one frustum cannot "
                   "hold a light that shines every way. Texels are densest at the face "
                   "corners (3√3 times the centre's per steradian).",
-                  ""}};
+                  "omni"}};
   info.publications = {
       {"face.*.map", PublicationKind::ImageSet,
        "Every rendered face's depth map (window depth 0..1 of its 90° perspective), i = "

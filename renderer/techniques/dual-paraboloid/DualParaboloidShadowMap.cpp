@@ -71,7 +71,7 @@ TechniqueInfo DualParaboloidShadowMap::info() {
                   "so straight edges become curves; the tessellator cuts long triangles so "
                   "their edges follow them, and every texel's depth is the distance to the "
                   "triangle's plane along its own direction.",
-                  ""}};
+                  "omni"}};
   info.publications = {
       {"half.*.map", PublicationKind::ImageSet,
        "Each hemisphere's map (window depth = distance / far), i = 0 (along dp.axis), 1.",

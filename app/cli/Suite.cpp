@@ -48,6 +48,18 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
+/// joined(items), cut after the item that passes `maxChars` with ", ... (N in all: `list`)":
+/// error lines stay bounded (one line of at most 300 bytes) however many there are.
+std::string joinedBounded(const std::vector<std::string>& items, std::size_t maxChars) {
+  std::string out;
+  for (const std::string& s : items) {
+    if (out.size() > maxChars)
+      return out + ", ... (" + std::to_string(items.size()) + " in all: shadowlab-cli list)";
+    out += (out.empty() ? "" : ", ") + s;
+  }
+  return out;
+}
+
 struct SuiteTechnique {
   ConfigSpec spec;
   bool optional = false;    ///< "optional": true: skipped (not an error) when not registered
@@ -164,9 +176,8 @@ SuiteTechnique techniqueOf(const JsonReader& r, const json& t, const std::string
     }
     std::vector<std::string> known;
     for (const TechniqueInfo& ti : Renderer::techniques()) known.push_back(ti.id);
-    r.fail(idPath, "unknown technique '" + quoteText(st.spec.techniqueId, 60) +
-                       "' (known: " + joined(known) +
-                       "; add \"optional\": true to an {\"id\": ...} entry to skip it)");
+    r.fail(idPath, "unknown technique '" + quoteText(st.spec.techniqueId, 60) + "' (known: " +
+                       joinedBounded(known, 60) + "; \"optional\": true in its entry skips it)");
   }
   const json* set = JsonReader::member(t, "set");
   if (set) {

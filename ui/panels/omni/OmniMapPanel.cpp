@@ -121,17 +121,18 @@ void OmniMapPanel::showPublication(const sl::Publication& pub) {
   }
   kind_ = cube ? QStringLiteral("cube") : QStringLiteral("paraboloid");
   const double analytic = cube ? 3.0 * std::sqrt(3.0) : 4.0;
-  info_->setText(
-      cube ? tr("Cube: %1 of 6 faces of %2 × %2 texels (cross: +y above, −y below +x +z −x −z). Texels "
-                "per steradian grow %3× from a face's centre to its corners.")
-                 .arg(nFaces)
-                 .arg(resolution_)
-                 .arg(formatValue(analytic))
-           : tr("Dual paraboloid: %1 hemisphere(s) of %2 × %2 texels (left: along dp.axis). Texels per "
-                "steradian grow %3× from a disc's centre to its rim (the split plane).")
-                 .arg(nHalves)
-                 .arg(resolution_)
-                 .arg(formatValue(analytic)));
+  info_->setText(cube ? tr("Cube: %1 of 6 faces of %2 × %2 texels (cross: +y above, −y below +x +z "
+                           "−x −z). Texels "
+                           "per steradian grow %3× from a face's centre to its corners.")
+                            .arg(nFaces)
+                            .arg(resolution_)
+                            .arg(formatValue(analytic))
+                      : tr("Dual paraboloid: %1 hemisphere(s) of %2 × %2 texels (left: along "
+                           "dp.axis). Texels per "
+                           "steradian grow %3× from a disc's centre to its rim (the split plane).")
+                            .arg(nHalves)
+                            .arg(resolution_)
+                            .arg(formatValue(analytic)));
   drawn_ = {{QStringLiteral("kind"), kind_},
             {QStringLiteral("maps"), cube ? nFaces : nHalves},
             {QStringLiteral("resolution"), resolution_},

@@ -34,8 +34,9 @@ void LessonController::createMenu(QMenu* menu) {
     QAction* a = menu->addAction(
         tr("&%1 %2").arg(i + 1).arg(QString::fromStdString(lessons_[i].preset.title)), this,
         [this, i] { apply(static_cast<int>(i)); });
-    if (i < 9) {
-      a->setShortcut(QKeySequence(Qt::ALT | static_cast<Qt::Key>(Qt::Key_1 + int(i))));
+    if (i < 10) {  // Alt+1 … Alt+9, then Alt+0 for the tenth (as on the keyboard's row)
+      const Qt::Key key = i < 9 ? static_cast<Qt::Key>(Qt::Key_1 + int(i)) : Qt::Key_0;
+      a->setShortcut(QKeySequence(Qt::ALT | key));
       a->setShortcutContext(Qt::ApplicationShortcut);
     }
     a->setToolTip(firstParagraph(lessons_[i].preset.explanation));

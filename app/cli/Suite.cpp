@@ -48,6 +48,18 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
+/// joined(items), cut after the item that passes `maxChars` with ", ... (N in all: `list`)":
+/// error lines stay bounded (one line of at most 300 bytes) however many there are.
+std::string joinedBounded(const std::vector<std::string>& items, std::size_t maxChars) {
+  std::string out;
+  for (const std::string& s : items) {
+    if (out.size() > maxChars)
+      return out + ", ... (" + std::to_string(items.size()) + " in all: shadowlab-cli list)";
+    out += (out.empty() ? "" : ", ") + s;
+  }
+  return out;
+}
+
 struct SuiteTechnique {
   ConfigSpec spec;
   bool optional = false;    ///< "optional": true: skipped (not an error) when not registered
@@ -162,14 +174,12 @@ SuiteTechnique techniqueOf(const JsonReader& r, const json& t, const std::string
       st.skipped = "technique " + st.spec.techniqueId + " not available (optional)";
       return st;
     }
-    // The known ids, unless the id was elided (not a typo): that line would outgrow what a
-    // hostile input may make the tool print (tests/fixtures/hostile: 300 bytes).
+    // The known ids, bounded: the whole line stays within what a hostile input may make the
+    // tool print (tests/fixtures/hostile: 300 bytes).
     std::vector<std::string> known;
     for (const TechniqueInfo& ti : Renderer::techniques()) known.push_back(ti.id);
-    const bool elided = st.spec.techniqueId.size() > 60;
     r.fail(idPath, "unknown technique '" + quoteText(st.spec.techniqueId, 60) + "' (known: " +
-                       (elided ? std::string("see shadowlab-cli list") : joined(known)) +
-                       "; add \"optional\": true to an {\"id\": ...} entry to skip it)");
+                       joinedBounded(known, 60) + "; \"optional\": true in its entry skips it)");
   }
   const json* set = JsonReader::member(t, "set");
   if (set) {

@@ -307,7 +307,16 @@ int cmdCompare(Args& a) {
   json summary = json::array();
   std::printf("%-14s %10s %12s %10s %10s %10s\n", "technique", "total ms", "texels", "error %",
               "false lit", "false shd");
+  r.setScene(scene);  // the scene's light, or --light's
+  if (base.light) r.setLight(*base.light);
+  const sl::LightType lightType = r.light().type;
   for (const auto& t : sl::Renderer::techniques()) {
+    // A technique that cannot render this light (cube: no directional) gets a row saying
+    // so, not a wrong picture; the others go on.
+    if (auto e = sl::checkLightSupport(t, lightType)) {
+      std::printf("%-14s skipped: %s\n", t.id.c_str(), e->c_str());
+      continue;
+    }
     RenderConfig cfg = base;
     cfg.technique = t.id;
     cfg.frames = std::max(cfg.frames, 3);

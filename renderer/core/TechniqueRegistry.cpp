@@ -3,6 +3,8 @@
 #include "core/Technique.h"
 #include "techniques/cascades/CascadedShadowMap.h"
 #include "techniques/facepartition/FacePartitionShadowMap.h"
+#include "techniques/cube/CubeShadowMap.h"
+#include "techniques/dual-paraboloid/DualParaboloidShadowMap.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
@@ -45,6 +47,8 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       perspectiveEntry<PerspectiveShadowMap::Kind::Tsm>("tsm"),
       entry<CascadedShadowMap>(),
       entry<FacePartitionShadowMap>(),
+      entry<CubeShadowMap>(),
+      entry<DualParaboloidShadowMap>(),
   };
   return list;
 }

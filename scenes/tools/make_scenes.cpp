@@ -112,6 +112,83 @@ SceneBuilder makePunctualBox(const std::string& name, bool spot) {
 }
 
 // ----------------------------------------------------------------------------------------
+// omni-room: a point light in the middle of a closed room, with casters on every side of it
+// (a table below, a hanging plate above, a pillar, a crate and a ball around): shadows fall
+// on the floor, the ceiling and all four walls, so no single frustum can hold them (cube and
+// dual-paraboloid shadow maps, seed 001).
+constexpr float kRoomHalfXM = 4.0f, kRoomHalfZM = 3.0f, kRoomHeightM = 3.0f;
+
+/// A quad centred at `c` facing along unit `n`, spanning u (half-extent hu) and v (hv),
+/// cross(u, v) = n; uvs in metres.
+void addFacingQuad(MeshData& m, const glm::vec3& c, const glm::vec3& u, const glm::vec3& v,
+                   float hu, float hv) {
+  m.addQuad(c - u * hu - v * hv, c + u * hu - v * hv, c + u * hu + v * hv, c - u * hu + v * hv,
+            glm::vec2(2.0f * hu, 2.0f * hv));
+}
+
+SceneBuilder makeOmniRoom() {
+  SceneBuilder b("omni-room");
+  int wall = b.addMaterial("wall", {0.82f, 0.80f, 0.76f, 1.0f});
+  int floorMat = b.addMaterial("floor", {0.62f, 0.55f, 0.46f, 1.0f});
+  int wood = b.addMaterial("wood", {0.55f, 0.36f, 0.22f, 1.0f});
+  int blue = b.addMaterial("blue", {0.30f, 0.45f, 0.70f, 1.0f});
+  const float X = kRoomHalfXM, Z = kRoomHalfZM, H = kRoomHeightM;
+  // Six inward-facing sides: floor, ceiling, walls at x = +-X and z = +-Z.
+  MeshData room;
+  addFacingQuad(room, {0, H, 0}, {1, 0, 0}, {0, 0, 1}, X, Z);            // ceiling, facing down
+  addFacingQuad(room, {X, H / 2, 0}, {0, 0, 1}, {0, 1, 0}, Z, H / 2);    // facing -x
+  addFacingQuad(room, {-X, H / 2, 0}, {0, 0, -1}, {0, 1, 0}, Z, H / 2);  // facing +x
+  addFacingQuad(room, {0, H / 2, Z}, {-1, 0, 0}, {0, 1, 0}, X, H / 2);   // facing -z
+  addFacingQuad(room, {0, H / 2, -Z}, {1, 0, 0}, {0, 1, 0}, X, H / 2);   // facing +z
+  b.addNode("floor", b.addMesh("floor", groundQuad(-X, X, -Z, Z), floorMat));
+  b.addNode("walls", b.addMesh("walls", room, wall));
+  MeshData table;  // below the light: its shadow falls straight down
+  table.addBox({0.1f, 0.78f, -0.1f}, {0.6f, 0.03f, 0.45f});
+  for (float sx : {-1.0f, 1.0f})
+    for (float sz : {-1.0f, 1.0f})
+      table.addBox({0.1f + 0.52f * sx, 0.375f, -0.1f + 0.37f * sz}, {0.04f, 0.375f, 0.04f});
+  table.addBox({0.0f, 2.45f, 0.15f}, {0.35f, 0.01f, 0.25f});  // hanging plate: straight up
+  table.addBox({2.6f, 1.5f, 1.2f}, {0.15f, 1.5f, 0.15f});     // pillar: shadow on +x, +z walls
+  b.addNode("furniture", b.addMesh("furniture", table, wood));
+  MeshData things;
+  things.addBox({-2.2f, 0.4f, -1.6f}, {0.4f, 0.4f, 0.4f}, 25.0f);  // crate: -x, -z walls
+  things.addSphere({-2.4f, 1.2f, -0.1f}, 0.3f, 16, 10);            // ball in the air: -x wall
+  b.addNode("things", b.addMesh("things", things, blue));
+  b.addPointLight("bulb", {0.2f, 1.7f, 0.1f}, 0.0f);
+  b.addCamera("overview", {-3.6f, 2.7f, 2.6f}, {0.6f, 0.6f, -0.9f}, 70.0f, 0.05f, 20.0f);
+  b.addCamera("floor", {-2.0f, 2.4f, 2.0f}, {0.2f, 0.0f, -0.2f}, 60.0f, 0.05f, 20.0f);
+  b.addCamera("ceiling", {-2.5f, 0.4f, 2.2f}, {0.2f, 3.0f, -0.2f}, 70.0f, 0.05f, 20.0f);
+  b.addCamera("corner", {3.5f, 1.6f, -2.5f}, {-1.0f, 1.0f, 1.0f}, 75.0f, 0.05f, 20.0f);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
+// spot-yard: a wide spot on a mast over a yard of crates and posts; its cone reaches three
+// of the cube's faces (the `cube` technique renders only those).
+SceneBuilder makeSpotYard() {
+  SceneBuilder b("spot-yard");
+  int ground = b.addMaterial("ground", {0.62f, 0.60f, 0.55f, 1.0f});
+  int crate = b.addMaterial("crate", {0.70f, 0.52f, 0.30f, 1.0f});
+  int stone = b.addMaterial("stone", {0.55f, 0.55f, 0.60f, 1.0f});
+  b.addNode("ground", b.addMesh("ground", groundQuad(-10.0f, 10.0f, -10.0f, 10.0f), ground));
+  MeshData crates, posts;
+  crates.addBox({0.5f, 0.5f, 0.0f}, {0.5f, 0.5f, 0.5f}, 20.0f);
+  crates.addBox({2.5f, 0.35f, 2.0f}, {0.35f, 0.35f, 0.7f}, -10.0f);
+  crates.addBox({-1.5f, 0.6f, 2.5f}, {0.6f, 0.6f, 0.4f}, 40.0f);
+  for (int i = 0; i < 6; ++i)  // a row of thin posts
+    posts.addBox({-3.0f + 1.2f * float(i), 1.0f, -2.0f}, {0.05f, 1.0f, 0.05f});
+  posts.addBox({-4.0f, 3.0f, -4.0f}, {0.08f, 3.0f, 0.08f});  // the mast
+  b.addNode("crates", b.addMesh("crates", crates, crate));
+  b.addNode("posts", b.addMesh("posts", posts, stone));
+  b.addSpotLight("flood", {-3.7f, 5.5f, -3.7f}, glm::vec3(4.2f, -5.5f, 4.7f), 55.0f, 45.0f, 30.0f);
+  const glm::vec3 centre(0.5f, 0.0f, 0.5f);
+  b.addCamera("overview", orbitEye(centre, 30.0f, 40.0f, 12.0f), centre, 50.0f, 0.1f, 60.0f);
+  glm::vec3 posts0(-1.5f, 0.0f, -0.5f);
+  b.addCamera("posts", orbitEye(posts0, 60.0f, 35.0f, 4.0f), posts0, 50.0f, 0.05f, 40.0f);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
 // diagonal: a row of thin posts at 45 degrees to the light's image axes.
 constexpr float kDiagonalSunAzimuthDeg = 55.0f, kDiagonalSunElevationDeg = 45.0f;
 
@@ -403,7 +480,8 @@ int main(int argc, char** argv) {
       std::fprintf(stderr,
                    "usage: %s [--scenes DIR] [--fixtures DIR] [--preview DIR]\n"
                    "  --scenes DIR    write the built-in scenes (plane-box, diagonal, corridor, "
-                   "default, dueling, spot-box, point-box) as DIR/<name>.gltf\n"
+                   "default, dueling, spot-box, point-box, omni-room, spot-yard) as "
+                   "DIR/<name>.gltf\n"
                    "  --fixtures DIR  write the loader's test fixtures into DIR\n"
                    "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n",
                    argv[0]);
@@ -427,6 +505,8 @@ int main(int argc, char** argv) {
                               previewDir);
     rc |= sl::gen::writeScene(sl::gen::makePunctualBox("point-box", false), "point-box", scenesDir,
                               previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeOmniRoom(), "omni-room", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeSpotYard(), "spot-yard", scenesDir, previewDir);
   }
   if (!fixturesDir.empty()) {
     fs::create_directories(fixturesDir);

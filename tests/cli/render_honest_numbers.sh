@@ -67,9 +67,12 @@ fi
 check "--camera after --preset wins" test "$(field "$out/sky0.json" covered_pixels)" -gt 0
 # compare: every technique's row says n/a, its JSON holds null.
 if "$cli" compare --preset "$out/sky.json" --size 64x36 --out-dir "$out/cmp" >"$out/cmp.stdout"; then
-  # One row per technique `list` names (its "  id - Name" lines).
+  # One row per technique `list` names (its "  id - Name" lines): n/a, or skipped by one
+  # that cannot render the scene's directional light (cube).
   techniques=$("$cli" list | grep -c '^  [a-z0-9-]* - ')
-  check "compare: n/a rows" test "$(grep -c ' n/a (no covered pixel)$' "$out/cmp.stdout")" == "$techniques"
+  skipped=$(grep -c ' skipped: .*the light is a directional light$' "$out/cmp.stdout" || true)
+  check "compare: n/a rows" test "$(( $(grep -c ' n/a (no covered pixel)$' "$out/cmp.stdout") + skipped ))" == "$techniques"
+  check "compare: cube skipped" grep -q '^cube  *skipped: ' "$out/cmp.stdout"
   check "compare: da-rtw error_pct null" test "$(field "$out/cmp/da-rtw.json" error_pct)" == null
 else
   echo "FAIL: compare --preset sky"; fail=1

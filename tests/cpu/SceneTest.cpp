@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "algo/omni/OmniMapping.h"
 #include "scene/GltfLoader.h"
 #include "scene/PlaneBoxAnalytic.h"
 
@@ -142,6 +143,41 @@ TEST(Scene, SpotBoxAndPointBoxCarryTheirPositionalLights) {
   ASSERT_TRUE(point && point->light);
   EXPECT_EQ(point->light->type, LightType::Point);
   EXPECT_NEAR(point->light->rangeM, 15.0f, 1e-5f);
+}
+
+TEST(Scene, OmniRoomIsClosedWithCastersAboveAndBelowTheLight) {
+  auto s = loadBuiltin("omni-room");
+  ASSERT_TRUE(s && s->light);
+  EXPECT_TRUE(s->warnings.empty());
+  EXPECT_EQ(s->light->type, LightType::Point);
+  EXPECT_LT(s->triangleCount(), 1000u);  // small: interactive on llvmpipe
+  EXPECT_GE(s->cameras.size(), 3u);
+  const glm::vec3 L = s->light->positionM;
+  EXPECT_TRUE(glm::all(glm::greaterThan(L, s->bounds.min)) &&
+              glm::all(glm::lessThan(L, s->bounds.max)));
+  // Closed: every ray from the light hits the room.
+  auto any = [](const glm::vec3&) { return true; };
+  for (int i = 0; i < 200; ++i) {
+    const float a = 2.399963f * float(i), y = 1.0f - 2.0f * (float(i) + 0.5f) / 200.0f;
+    const float r = std::sqrt(1.0f - y * y);
+    EXPECT_TRUE(rayHits(*s, L, {r * std::cos(a), y, r * std::sin(a)}, any)) << i;
+  }
+  // Shadows straight up and straight down: casters between the light and ceiling / floor.
+  const float H = s->bounds.max.y;
+  EXPECT_TRUE(rayHits(*s, L, {0, 1, 0}, [&](const glm::vec3& p) { return p.y < H - 0.01f; }));
+  EXPECT_TRUE(rayHits(*s, L, {0, -1, 0}, [](const glm::vec3& p) { return p.y > 0.01f; }));
+}
+
+TEST(Scene, SpotYardConeReachesThreeCubeFaces) {
+  auto s = loadBuiltin("spot-yard");
+  ASSERT_TRUE(s && s->light);
+  EXPECT_TRUE(s->warnings.empty());
+  ASSERT_EQ(s->light->type, LightType::Spot);
+  EXPECT_FALSE(s->light->validate());
+  EXPECT_TRUE(s->light->illuminates({0.5f, 1.0f, 0.0f}));  // the first crate's top
+  const std::uint32_t faces = omni::cubeFacesInCone(glm::dvec3(s->light->spotAxis()),
+                                                    glm::radians(double(s->light->outerConeDeg)));
+  EXPECT_EQ(faces, (1u << 0) | (1u << 3) | (1u << 4));  // +x, -y, +z
 }
 
 TEST(Scene, PlaneBoxAnalyticShadowMatchesRayCastGeometry) {

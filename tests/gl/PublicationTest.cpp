@@ -111,7 +111,9 @@ TEST(Publication, ReadsBackOnlyTheRequestedKeys) {
 TEST(Publication, EveryPublishedKeyIsDeclaredAndEveryPassIsTimed) {
   for (const TechniqueInfo& info : Renderer::techniques()) {
     SCOPED_TRACE(info.id);
-    auto r = test::makeRenderer("diagonal", info.id);
+    // A technique without directional lights (cube) on a point-lit scene.
+    const bool directional = !checkLightSupport(info, LightType::Directional);
+    auto r = test::makeRenderer(directional ? "diagonal" : "omni-room", info.id);
     ASSERT_TRUE(r);
     ASSERT_FALSE(r->params().set("resolution", 256));
     r->requestPublications({"*"});

@@ -2,6 +2,7 @@
 #include "panels/PanelRegistry.h"
 
 #include "panels/analysis/AnalysisPanels.h"
+#include "panels/omni/OmniPanels.h"
 #include "panels/perspective/PerspectivePanels.h"
 #include "panels/partition/PartitionPanels.h"
 #include "panels/rtw/RtwPanels.h"
@@ -16,6 +17,7 @@ const std::vector<PanelEntry>& publicationPanels() {
              analysisPanels(),
              perspectivePanels(),
              partitionPanels(),
+             omniPanels(),
          })
       all.insert(all.end(), family.begin(), family.end());
     return all;

@@ -1,0 +1,168 @@
+// Cube shadow map (CubeShadowMap.h): fit the faces, render them (layered or six passes),
+// bind the six per-face views of the shared lookup.
+#include "CubeShadowMap.h"
+
+#include <stdexcept>
+
+#include "common/shared_constants.h"
+#include "core/Publish.h"
+#include "core/SceneGpu.h"
+
+namespace sl {
+
+namespace {
+
+gl::ProgramDesc layeredProgramDesc() {
+  return {"cube/depth_layered",
+          {{GL_VERTEX_SHADER, "cube/depth_layered.vert"},
+           {GL_GEOMETRY_SHADER, "cube/depth_layered.geom"},
+           {GL_FRAGMENT_SHADER, "common/depth.frag"}},
+          {},
+          {}};
+}
+
+/// The largest face array (2 GiB): 6 x resolution^2 x 4 B beyond it is refused.
+constexpr std::uint64_t kMaxArrayBytes = 2ull << 30;
+
+}  // namespace
+
+TechniqueInfo CubeShadowMap::info() {
+  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
+  for (ParamDecl& d : p)
+    if (d.key == "resolution")
+      d.help = "Width and height of EACH cube face in texels (a point light has six faces).";
+  p.push_back({.key = "cube.layered",
+               .label = "One layered pass",
+               .group = "Cube",
+               .type = ParamType::Bool,
+               .defaultValue = 1,
+               .minValue = 0,
+               .maxValue = 1,
+               .help = "Render every face in one pass (a geometry shader sends each triangle "
+                       "to the layers whose frustum it touches) instead of six passes over "
+                       "the scene. The maps are identical; only the time differs."});
+  TechniqueInfo info{"cube", "Cube shadow map",
+                     "Omni-directional shadows (seed 001): six 90° perspective depth maps "
+                     "around a point light, one per cube face; a spot renders only the faces "
+                     "its cone reaches. The lookup picks the face by the major axis of the "
+                     "direction from the light.",
+                     std::move(p)};
+  info.passes = {{"cube faces", "Cube faces",
+                  "Render the scene's depth six times from the light, once per 90° face "
+                  "(+x, -x, +y, -y, +z, -z), in one layered pass or six: one frustum cannot "
+                  "hold a light that shines every way. Texels are densest at the face "
+                  "corners (3√3 times the centre's per steradian).",
+                  "omni"}};
+  info.publications = {
+      {"face.*.map", PublicationKind::ImageSet,
+       "Every rendered face's depth map (window depth 0..1 of its 90° perspective), i = "
+       "face 0..5 (+x, -x, +y, -y, +z, -z).",
+       "4 B x resolution^2 x faces (6 for a point light)",
+       [](const ParamSet& ps) {
+         const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
+         return 4 * r * r * 6;
+       }},
+      {"cube.faces",
+       PublicationKind::Number,
+       "How many faces were rendered (6, fewer for a spot).",
+       "",
+       {}},
+      {"cube.near_m", PublicationKind::Number, "The faces' near plane (m).", "", {}},
+      {"cube.far_m", PublicationKind::Number, "The faces' far plane (m).", "", {}},
+  };
+  info.lights = {LightType::Point, LightType::Spot};
+  return info;
+}
+
+CubeShadowMap::CubeShadowMap(const gl::ShaderLibrary& lib)
+    : depthProgram_(lib, depthProgramDesc()), layeredProgram_(lib, layeredProgramDesc()) {}
+
+void CubeShadowMap::allocate(int res, int layers) {
+  if (faces_ && faces_.width() == res && faces_.layers() == layers) return;
+  const std::uint64_t bytes =
+      4ull * std::uint64_t(res) * std::uint64_t(res) * std::uint64_t(layers);
+  if (bytes > kMaxArrayBytes)
+    throw std::runtime_error("cube: " + std::to_string(layers) + " faces of " +
+                             std::to_string(res) + "^2 need " + std::to_string(bytes >> 20) +
+                             " MiB, more than the " + std::to_string(kMaxArrayBytes >> 20) +
+                             " MiB allowed; lower resolution");
+  faces_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, layers);
+  layerFbos_.clear();
+  for (int i = 0; i < layers; ++i) {
+    gl::Framebuffer f = gl::Framebuffer::create();
+    f.attachLayer(GL_DEPTH_ATTACHMENT, faces_, i);
+    f.setDrawBuffers(0);
+    f.checkComplete("cube face layer " + std::to_string(i));
+    layerFbos_.push_back(std::move(f));
+  }
+  layeredFbo_ = gl::Framebuffer::create();
+  layeredFbo_.attach(GL_DEPTH_ATTACHMENT, faces_);
+  layeredFbo_.setDrawBuffers(0);
+  layeredFbo_.checkComplete("cube faces (layered)");
+}
+
+void CubeShadowMap::renderShadows(FrameContext& ctx) {
+  const int res = ctx.params.getInt("resolution");
+  {
+    auto pass = ctx.timer.scope("cube faces");
+    omni::CubeFit fit;
+    if (auto err = omni::fitCube(ctx.light, ctx.scene.bounds, fit)) throw std::runtime_error(*err);
+    fit_ = fit;
+    allocate(res, fit_.layers);
+    views_.clear();
+    for (int f = 0; f < omni::kCubeFaces; ++f) {
+      DepthMapView v;
+      v.lightViewProj = fit_.viewProj[size_t(f)];
+      v.extentM = glm::vec2(2.0f);  // 2 tan(45°): metres per uv at 1 m along the face axis
+      v.perspective = true;
+      v.nearM = fit_.nearM;
+      v.farM = fit_.farM;
+      views_.push_back(v);
+    }
+    if (ctx.params.getBool("cube.layered")) {
+      beginDepthPass(layeredFbo_.id(), res, res);
+      layeredProgram_.use();
+      layeredProgram_.set("u_layerCount", fit_.layers);
+      for (int f = 0; f < omni::kCubeFaces; ++f)
+        if (int l = fit_.layer[size_t(f)]; l >= 0)
+          layeredProgram_.set(("u_layerViewProj[" + std::to_string(l) + "]").c_str(),
+                              fit_.viewProj[size_t(f)]);
+      ctx.sceneGpu.draw(layeredProgram_, SL_UNIT_MATERIAL);
+    } else {
+      for (int f = 0; f < omni::kCubeFaces; ++f)
+        if (int l = fit_.layer[size_t(f)]; l >= 0)
+          renderDepth(ctx, depthProgram_, layerFbos_[size_t(l)].id(), res, res,
+                      fit_.viewProj[size_t(f)]);
+    }
+  }
+  publishNumber(ctx, "cube.faces", fit_.layers);
+  publishNumber(ctx, "cube.near_m", fit_.nearM);
+  publishNumber(ctx, "cube.far_m", fit_.farM);
+  for (int f = 0; f < omni::kCubeFaces; ++f)
+    if (int l = fit_.layer[size_t(f)]; l >= 0)
+      publishDepthLayer(ctx, "face." + std::to_string(f) + ".map", faces_, l);
+}
+
+void CubeShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
+  bindDepthLookup(resolve, views_);
+  glBindTextureUnit(GLuint(firstUnit), faces_.id());
+  resolve.set("u_cubeFaces", firstUnit);
+  resolve.set("u_cubeLightPos", fit_.lightPosM);
+  for (int f = 0; f < omni::kCubeFaces; ++f)
+    resolve.set(("u_cubeFaceLayer[" + std::to_string(f) + "]").c_str(), fit_.layer[size_t(f)]);
+}
+
+MemoryStats CubeShadowMap::memory() const {
+  MemoryStats m;
+  if (faces_)
+    m.add("cube faces (array)", gl::formatName(faces_.format()), faces_.width(), faces_.height(),
+          faces_.layers(), gl::bytesPerTexel(faces_.format()));
+  return m;
+}
+
+std::optional<std::string> CubeShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  if (auto e = depthProgram_.rebuild(lib)) return e;
+  return layeredProgram_.rebuild(lib);
+}
+
+}  // namespace sl

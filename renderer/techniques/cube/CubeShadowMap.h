@@ -1,0 +1,40 @@
+// Cube shadow map (seed 001; docs/techniques.md §7): six 90° perspective depth maps around a
+// point light (a spot: only the faces its cone reaches, algo/omni/CubeFit), in one texture
+// array, rendered in one layered pass (a geometry shader) or six, looked up through the
+// shared per-map bias model with the face chosen by the direction's major axis.
+#pragma once
+
+#include <vector>
+
+#include "algo/omni/CubeFit.h"
+#include "core/ShadowPass.h"
+#include "core/Technique.h"
+
+namespace sl {
+
+class CubeShadowMap : public Technique {
+ public:
+  static TechniqueInfo info();
+  explicit CubeShadowMap(const gl::ShaderLibrary& lib);
+
+  void renderShadows(FrameContext& ctx) override;
+  std::string lookupShader() const override { return "cube/lookup.glsl"; }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override {
+    return {&depthProgram_, &layeredProgram_};
+  }
+  MemoryStats memory() const override;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+
+ private:
+  void allocate(int resolution, int layers);
+
+  gl::Program depthProgram_, layeredProgram_;
+  gl::Texture faces_;                       ///< DEPTH_COMPONENT32F array, one layer per face
+  std::vector<gl::Framebuffer> layerFbos_;  ///< one per layer (six-pass mode)
+  gl::Framebuffer layeredFbo_;              ///< the whole array (layered mode)
+  omni::CubeFit fit_;
+  std::vector<DepthMapView> views_;  ///< per FACE (map index = face), all six
+};
+
+}  // namespace sl

@@ -1,0 +1,40 @@
+// The Omni map panel: a cube shadow map unfolded as a cross (+y above, -y below the row
+// +x, +z, -x, -z, so neighbouring texels touch across every drawn edge) or the dual
+// paraboloid's two discs; the value under the cursor; and a texel-density view (log2 texels
+// per steradian from algo/omni, ONE fixed colour scale for both, so a class can compare).
+#pragma once
+
+#include <memory>
+
+#include "panels/common/PanelKit.h"
+
+class QCheckBox;
+class QLabel;
+
+namespace sl::ui {
+
+class OmniMapPanel : public PublicationPanel {
+  Q_OBJECT
+
+ public:
+  explicit OmniMapPanel(QWidget* parent = nullptr);
+
+  std::set<std::string> observedKeys() const override;
+  void showPublication(const sl::Publication& publication) override;
+  void highlightPass(const QString& passId) override;
+  QJsonObject drawnValues() const override;
+
+ private:
+  void redraw();
+
+  ImageView* view_ = nullptr;
+  QCheckBox* density_ = nullptr;
+  QLabel* info_ = nullptr;
+  /// The layout as drawn: depth (1 = empty) and density (log2 texels/sr, NaN = no texel).
+  std::shared_ptr<sl::FloatImage> depth_, density_log2_;
+  QString kind_;  ///< "cube", "paraboloid" or empty
+  int resolution_ = 0;
+  QJsonObject drawn_;
+};
+
+}  // namespace sl::ui

@@ -295,6 +295,8 @@ void MainWindow::setTechnique(const QString& id) {
     docks_.resetHistory();
     if (rendererBound_) rebuildParamPanel();
     passes_->stop();
+    if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id.toStdString()))
+      docks_.raiseFor(*info);
   }
   syncTechniqueCombo();
   updateTitle();
@@ -340,6 +342,8 @@ void MainWindow::onRendererReady() {
   grab_->resetFrameCount();
   rebuildParamPanel();
   syncTechniqueCombo();
+  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(renderer->techniqueId()))
+    docks_.raiseFor(*info);
   teaching_->syncOverlayCombo();
   updatePublishing();
   teaching_->restoreSplit();

@@ -44,6 +44,29 @@ void PublicationDocks::resetHistory() const {
   for (const Dock& d : docks_) d.panel->resetHistory();
 }
 
+namespace {
+/// The panel draws something the technique itself declares (not only the renderer's keys).
+bool showsTechnique(const PublicationPanel& panel, const sl::TechniqueInfo& info) {
+  for (const std::string& key : panel.observedKeys()) {
+    if (info.findPublication(key)) return true;
+    for (const sl::PublicationDecl& d : info.publications)  // a pattern against a pattern
+      if (sl::publicationKeyMatches(key, d.key)) return true;
+  }
+  return false;
+}
+}  // namespace
+
+void PublicationDocks::raiseFor(const sl::TechniqueInfo& info) const {
+  const Dock *front = nullptr, *first = nullptr;
+  for (const Dock& d : docks_) {
+    if (d.entry.area != Qt::BottomDockWidgetArea || d.dock->isFloating() || d.dock->isHidden())
+      continue;
+    if (!d.dock->visibleRegion().isEmpty()) front = &d;  // the tab in front of its group
+    if (!first && showsTechnique(*d.panel, info)) first = &d;
+  }
+  if (first && (!front || !showsTechnique(*front->panel, info))) first->dock->raise();
+}
+
 void PublicationDocks::highlightPass(const QString& passId) const {
   for (const Dock& d : docks_) d.panel->highlightPass(passId);
 }

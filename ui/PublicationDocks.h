@@ -12,6 +12,9 @@
 #include "panels/PanelRegistry.h"
 
 class QDockWidget;
+namespace sl {
+struct TechniqueInfo;
+}
 
 namespace sl::ui {
 
@@ -35,6 +38,9 @@ class PublicationDocks {
   /// Hands the last publication to the visible panels (`all`: to every panel).
   void feed(const sl::Renderer& renderer, bool all) const;
 
+  /// After a technique switch: when the front bottom tab shows nothing `info` publishes (an
+  /// RTW warp panel for `cube`), the first bottom tab that does comes to the front.
+  void raiseFor(const sl::TechniqueInfo& info) const;
   void resetHistory() const;
   void highlightPass(const QString& passId) const;
   /// What each panel drew, by dock name (for --grab's published.json).

@@ -97,10 +97,15 @@ const std::vector<PublicationDecl>& rendererPublicationDecls() {
        "forward.{x,y,z}, "
        "up.{x,y,z}.",
        "", nullptr},
-      {"light.azimuth_deg", PublicationKind::Number, "The frame's light: azimuth (degrees).", "",
+      {"light.type", PublicationKind::Number,
+       "The frame's light: its kind (sl::LightType: 0 directional, 1 spot, 2 point).", "", nullptr},
+      {"light.azimuth_deg", PublicationKind::Number,
+       "The frame's directional light: azimuth (degrees); absent for spot and point lights.", "",
        nullptr},
       {"light.elevation_deg", PublicationKind::Number,
-       "The frame's light: elevation above the horizon (degrees).", "", nullptr},
+       "The frame's directional light: elevation above the horizon (degrees); absent for spot "
+       "and point lights.",
+       "", nullptr},
       {"param.*", PublicationKind::Number,
        "The technique's parameter values of this frame, by key (enums as their index).", "",
        nullptr},

@@ -482,8 +482,11 @@ void publishFrameNumbers(RendererState& s, int height, float aspect) {
     number(std::string("camera.forward.") + axes[i], f[i]);
     number(std::string("camera.up.") + axes[i], up[i]);
   }
-  number("light.azimuth_deg", s.light.azimuthDeg);
-  number("light.elevation_deg", s.light.elevationDeg);
+  number("light.type", double(int(s.light.type)));
+  if (s.light.type == LightType::Directional) {  // a spot or point light has no direction
+    number("light.azimuth_deg", s.light.azimuthDeg);
+    number("light.elevation_deg", s.light.elevationDeg);
+  }
   const ParamSet& params = paramsFor(s, s.techniqueId);
   for (const ParamDecl& d : params.decls()) number("param." + d.key, params.get(d.key));
 }

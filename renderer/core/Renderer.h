@@ -92,8 +92,9 @@ std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique);
 /// Publications of the renderer itself, whatever the technique, declared once (next to
 /// rendererPassDecls): the measured aliasing statistics "aliasing.*" (a GPU reduction of the
 /// resolve pass's m, run only while requested), the frame's camera "camera.*" and light
-/// "light.azimuth_deg" / "light.elevation_deg", and the technique's parameter values
-/// "param.<key>" (enums as their index), so that panels read what the frame used.
+/// "light.type" (and, directional only, "light.azimuth_deg" / "light.elevation_deg"), and the
+/// technique's parameter values "param.<key>" (enums as their index), so that panels read what the
+/// frame used.
 const std::vector<PublicationDecl>& rendererPublicationDecls();
 /// The declaration matching `key` among the renderer's and then `technique`'s publications.
 const PublicationDecl* findFramePublication(const TechniqueInfo& technique, std::string_view key);
@@ -122,7 +123,8 @@ struct FloatImage {
 ///           percentiles from a GPU histogram of log2 m, within half a bin of the exact ones),
 ///           "camera.near_m", "camera.far_m", "camera.fov_deg" (full vertical angle),
 ///           "camera.aspect", "camera.height_px", "camera.forward.{x,y,z}", "camera.up.{x,y,z}"
-///           (unit, orthogonal), "light.azimuth_deg", "light.elevation_deg", "param.<key>" (the
+///           (unit, orthogonal), "light.type", "light.azimuth_deg", "light.elevation_deg"
+///           (directional lights only), "param.<key>" (the
 ///           technique's values)
 ///  every shadow-map technique:  "shadow map" (image: the map as rendered, depth 0..1)
 ///  RTW keys (listed between the markers; tests/source/ui_names_no_rtw_key.sh checks that no

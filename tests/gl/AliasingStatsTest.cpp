@@ -72,10 +72,23 @@ TEST(AliasingStats, GpuHistogramMatchesTheCpuOverTheReadback) {
   }
 }
 
+TEST(AliasingStats, APointLightPublishesItsKindAndNoDirection) {
+  // The storage panel analyses directional lights only: it reads light.type to say so.
+  auto r = test::makeRenderer("omni-room", "cube");
+  ASSERT_TRUE(r);
+  r->requestPublications({"light.type", "light.azimuth_deg", "light.elevation_deg"});
+  ASSERT_FALSE(r->renderFrame(160, 90, 0));
+  const Publication& pub = r->publication();
+  ASSERT_EQ(r->light().type, LightType::Point);
+  EXPECT_EQ(pub.numbers.at("light.type"), double(int(LightType::Point)));
+  EXPECT_FALSE(pub.numbers.count("light.azimuth_deg"));
+  EXPECT_FALSE(pub.numbers.count("light.elevation_deg"));
+}
+
 TEST(AliasingStats, NothingIsComputedOrReadWhenNotRequested) {
   auto r = test::makeRenderer("plane-box", "uniform");
   ASSERT_TRUE(r);
-  r->requestPublications({"camera.*", "light.azimuth_deg", "param.*"});
+  r->requestPublications({"camera.*", "light.type", "light.azimuth_deg", "param.*"});
   ASSERT_FALSE(r->renderFrame(160, 90, 0));
   EXPECT_EQ(r->stats().publicationBytes, 0u);
   const Publication& pub = r->publication();
@@ -86,6 +99,7 @@ TEST(AliasingStats, NothingIsComputedOrReadWhenNotRequested) {
   EXPECT_NEAR(pub.numbers.at("camera.aspect"), 160.0 / 90.0, 1e-6);
   EXPECT_EQ(pub.numbers.at("light.azimuth_deg"), double(r->light().azimuthDeg));
   EXPECT_FALSE(pub.numbers.count("light.elevation_deg"));
+  EXPECT_EQ(pub.numbers.at("light.type"), double(int(LightType::Directional)));
   EXPECT_EQ(pub.numbers.at("param.resolution"), r->params().get("resolution"));
   const glm::vec3 f(pub.numbers.at("camera.forward.x"), pub.numbers.at("camera.forward.y"),
                     pub.numbers.at("camera.forward.z"));

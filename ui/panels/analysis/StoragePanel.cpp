@@ -271,6 +271,15 @@ void StoragePanel::showPublication(const sl::Publication& pub) {
   const auto fx = num("camera.forward.x"), fy = num("camera.forward.y"),
              fz = num("camera.forward.z"), ux = num("camera.up.x"), uy = num("camera.up.y"),
              uz = num("camera.up.z");
+  if (const auto type = num("light.type");
+      type && *type != double(int(sl::LightType::Directional))) {
+    showContent(false, tr("The storage factor (Lloyd et al. 2006) measures a directional light's "
+                          "maps over the view frustum; the frame's light is a %1 light, whose maps "
+                          "(cube faces, paraboloids, a spot's frustum) it does not analyse.")
+                           .arg(QString::fromUtf8(
+                               sl::lightTypeName(static_cast<sl::LightType>(int(*type))).data())));
+    return;
+  }
   if (!nearM || !farM || !fov || !aspect || !az || !el || !fx || !fy || !fz || !ux || !uy || !uz) {
     showContent(false, tr("The Storage factor panel needs the frame's camera and light "
                           "(renderer publications camera.*, light.*): none this frame."));

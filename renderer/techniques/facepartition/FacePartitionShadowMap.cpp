@@ -118,7 +118,15 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
       throw std::runtime_error(*err);
     fit_ = std::move(fit);
     views_.assign(kSlots, DepthMapView{});
-    for (const partition::FacePart& p : fit_.parts) views_[std::size_t(p.slot)] = partView(p.fit);
+    for (const partition::FacePart& p : fit_.parts) {
+      views_[std::size_t(p.slot)] = partView(p.fit);
+      // The outside view: a warped face's light box and warping frustum, a uniform one's
+      // orthographic light frustum; coloured by slot like the partition overlay.
+      if (p.fit.warped() && ctx.outlines)
+        addWarpOutlines(p.fit, *ctx.outlines, p.slot);
+      else if (!p.fit.warped())
+        ctx.addOutline(views_[std::size_t(p.slot)].lightViewProj, OutlineRole::LightMap, p.slot);
+    }
   }
   {
     auto pass = ctx.timer.scope("face maps");

@@ -2,6 +2,7 @@
 // dueling scene (camera into a low sun) and `default`, with the light behind the viewer, the
 // per-pixel selection against its CPU mirror (algo/partition/FacePartitionFit), exact memory,
 // declared passes == timed passes.
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -9,6 +10,7 @@
 
 #include "GlTestEnv.h"
 #include "algo/partition/FacePartitionFit.h"
+#include "common/shared_constants.h"
 #include "gl/Gl.h"
 #include "panels/partition/PartitionPanelKeys.h"
 
@@ -167,7 +169,8 @@ TEST(FacePartition, MemoryIsExact) {
   test::expectNoGlErrors(*r);
 }
 
-// Every declared pass is timed, in order; the Partitions panel's keys cost what is declared.
+// Every declared pass is timed, in order; the Partitions panel's keys cost what is declared,
+// and its m per slot is the readback's.
 TEST(FacePartition, DeclaredPassesAndPanelKeys) {
   auto r = test::makeRenderer("dueling", "face-partition");
   ASSERT_TRUE(r);
@@ -193,6 +196,16 @@ TEST(FacePartition, DeclaredPassesAndPanelKeys) {
     EXPECT_GE(pub.numbers.at(k + ".far"), pub.numbers.at(k + ".near"));
   }
   EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(*info, r->params(), keys));
+  EXPECT_EQ(r->stats().publicationBytes, 5ull * 256 * 256 * 4 + 5ull * (SL_CASCADE_M_BINS + 2) * 4);
+  // m per slot (core/PartitionMStats, as cascades): of the previous frame's resolve, which a
+  // still camera repeats exactly: the pixels that selected each slot, their largest m, a p95
+  // within one 1/8-octave bin above the exact one; every pixel counted once.
+  const FrameReadback fr = r->readback();
+  double covered = 0.0;
+  for (float m : fr.aliasing) covered += m > 0.0f ? 1.0 : 0.0;
+  const double counted = test::expectPartitionMMatches(pub, fr, 5);
+  EXPECT_GT(covered, 0.0);
+  EXPECT_EQ(counted, covered);
   // 5 maps of 16384^2 would be 5 GiB: refused with the sizes named, the renderer keeps working.
   ASSERT_FALSE(r->params().set("resolution", 16384));
   auto err = r->renderFrame(64, 36, 0);

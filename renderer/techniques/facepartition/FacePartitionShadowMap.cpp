@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "algo/partition/StorageFactor.h"
+#include "core/PartitionMStats.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
@@ -62,6 +63,7 @@ TechniqueInfo FacePartitionShadowMap::info() {
        "Render the scene's depth into each face partition's layer through its warp: texels "
        "dense where the face is close to the camera.",
        "partitions"},
+      PartitionMStats::passDecl(),
   };
   auto number = [](std::string key, std::string what) {
     return PublicationDecl{std::move(key), PublicationKind::Number, std::move(what), "", {}};
@@ -75,6 +77,7 @@ TechniqueInfo FacePartitionShadowMap::info() {
          const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
          return 4 * r * r * kSlots;
        }},
+      PartitionMStats::publicationDecl([](const ParamSet&) { return kSlots; }),
       number("partition.count", "Number of face slots (5)."),
       number("partition.active",
              "Number of faces used this frame (1 to 5: those towards the light, or away)."),
@@ -105,7 +108,7 @@ TechniqueInfo FacePartitionShadowMap::info() {
 }
 
 FacePartitionShadowMap::FacePartitionShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthProgramDesc()) {}
+    : depthProgram_(lib, depthProgramDesc()), mStats_(lib) {}
 
 void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
   const int res = ctx.params.getInt("resolution");
@@ -159,6 +162,8 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
       }
   }
 
+  mStats_.update(ctx, kSlots);  // the previous frame's m per selected slot, when requested
+
   publishNumber(ctx, "partition.count", kSlots);
   publishNumber(ctx, "partition.active", double(fit_.parts.size()));
   publishNumber(ctx, "faces.front", fit_.selection.frontFaces ? 1.0 : 0.0);
@@ -208,11 +213,13 @@ MemoryStats FacePartitionShadowMap::memory() const {
   if (maps_)
     m.add("face partition maps (array)", gl::formatName(maps_.format()), maps_.width(),
           maps_.height(), maps_.layers(), gl::bytesPerTexel(maps_.format()));
+  mStats_.addMemory(m);
   return m;
 }
 
 std::optional<std::string> FacePartitionShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
-  return depthProgram_.rebuild(lib);
+  if (auto e = depthProgram_.rebuild(lib)) return e;
+  return mStats_.reloadShaders(lib);
 }
 
 }  // namespace sl

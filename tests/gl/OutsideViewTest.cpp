@@ -1,7 +1,7 @@
 // The outside view (view.outside): its lines appear where the CPU projection of the published
 // frusta says (algo/OutsideView), one light frustum per cascade, the metrics and the hard
-// mask do not change with the toggle, face-partition's faces and warps, and a golden image of
-// lispsm on corridor seen from outside.
+// mask do not change with the toggle, face-partition's faces and warps, the aliasing overlay
+// in the main view only, and a golden image of lispsm on corridor seen from outside.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -223,6 +223,29 @@ TEST(OutsideView, MetricsDoNotChangeWithTheToggle) {
     test::expectNoGlErrors(*plain);
     test::expectNoGlErrors(*outside);
   }
+}
+
+// m is a footprint in the main camera's pixels: the outside view is drawn without the aliasing
+// overlay (the main view keeps it), while the partition overlay, a property of the scene
+// point, shows from outside too.
+TEST(OutsideView, AliasingOverlayOnlyInTheMainView) {
+  auto r = test::makeRenderer("corridor", "cascades");
+  ASSERT_TRUE(r);
+  r->setCamera(*test::bookmark(*r->scene(), "start-level"));
+  ASSERT_FALSE(r->params().set("resolution", 512));
+  ASSERT_FALSE(r->rendererParams().setFromString("view.outside", "on"));
+  auto frameWith = [&](const char* overlay) {
+    EXPECT_FALSE(r->rendererParams().setFromString("view.overlay", overlay)) << overlay;
+    for (int f = 0; f < 2; ++f) EXPECT_FALSE(r->renderFrame(320, 180, 0));
+    return r->readback();
+  };
+  const FrameReadback none = frameWith("none"), aliasing = frameWith("aliasing"),
+                      partition = frameWith("partition");
+  EXPECT_NE(aliasing.color.pixels, none.color.pixels);      // the main view has the overlay
+  EXPECT_EQ(aliasing.outside.pixels, none.outside.pixels);  // the outside view has not
+  EXPECT_NE(partition.color.pixels, none.color.pixels);
+  EXPECT_NE(partition.outside.pixels, none.outside.pixels);
+  test::expectNoGlErrors(*r);
 }
 
 TEST(Golden, CorridorLispsmOutsideView) {

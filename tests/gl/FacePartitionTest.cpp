@@ -189,12 +189,20 @@ TEST(FacePartition, DeclaredPassesAndPanelKeys) {
   const Publication& pub = r->publication();
   EXPECT_EQ(pub.images.size(), 5u);
   EXPECT_EQ(pub.numbers.at("partition.count"), 5.0);
+  int warpedSlots = 0;
   for (int i = 0; i < 5; ++i) {
     const std::string k = "partition." + std::to_string(i);
     ASSERT_TRUE(pub.images.count(k + ".map")) << k;
     EXPECT_EQ(pub.images.at(k + ".map").width, 256);
     EXPECT_GE(pub.numbers.at(k + ".far"), pub.numbers.at(k + ".near"));
+    // The panel's warp column: warped with its n', or not (then n' 0).
+    const double warped = pub.numbers.at(k + ".warped"),
+                 nPrime = pub.numbers.at(k + ".warp.n_prime");
+    EXPECT_TRUE(warped == 0.0 || warped == 1.0) << k;
+    EXPECT_EQ(warped == 1.0, nPrime > 0.0) << k << " n' " << nPrime;
+    warpedSlots += warped == 1.0 ? 1 : 0;
   }
+  EXPECT_GE(warpedSlots, 3);  // the side faces warp (the near face falls back: square)
   EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(*info, r->params(), keys));
   EXPECT_EQ(r->stats().publicationBytes, 5ull * 256 * 256 * 4 + 5ull * (SL_CASCADE_M_BINS + 2) * 4);
   // m per slot (core/PartitionMStats, as cascades): of the previous frame's resolve, which a

@@ -98,6 +98,11 @@ TechniqueInfo FacePartitionShadowMap::info() {
              "1 when slot i asked for a warp but used the uniform map."),
       number("partition.*.warp.fallback_cause",
              "why: 0 none, 1 light behind, 2 light in front, 4 degenerate (warp::FallbackCause)."),
+      number("partition.*.warped",
+             "1 when slot i's map is warped (active, no fallback), else 0 (the Partitions "
+             "panel's warp column, as cascades)."),
+      number("partition.*.warp.n_prime",
+             "Slot i's n' (m): its warp's projection centre to its body; 0 = unwarped or unused."),
       number("faces.front",
              "1 when the front faces (towards the light, v . y < 0) are used, 0 for the back."),
       number("depth.near", "Near plane of the frustum clipped to the scene (m)."),
@@ -179,7 +184,7 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, key + ".active", active ? 1.0 : 0.0);
     if (!active) {
       for (const char* k : {".face", ".near", ".far", ".extent_m", ".texels_per_m", ".warp.eta",
-                            ".warp.fallback", ".warp.fallback_cause"})
+                            ".warp.fallback", ".warp.fallback_cause", ".warped", ".warp.n_prime"})
         publishNumber(ctx, key + k, 0.0);
       continue;
     }
@@ -193,6 +198,8 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, key + ".warp.eta", p.fit.eta);
     publishNumber(ctx, key + ".warp.fallback", p.fit.fallback ? 1.0 : 0.0);
     publishNumber(ctx, key + ".warp.fallback_cause", double(int(p.fit.fallbackCause)));
+    publishNumber(ctx, key + ".warped", p.fit.warped() ? 1.0 : 0.0);
+    publishNumber(ctx, key + ".warp.n_prime", p.fit.warped() ? p.fit.nPrime : 0.0);
   }
 }
 

@@ -429,6 +429,14 @@ void ViewportWidget::updateOverlayWidget() {
                                : tr("light frustum, map %1").arg(i)});
     if (warp)
       legend.append({colour(sl::OutlineRole::Warp, 0), tr("warped map's frustum, to its centre")});
+    // m and the error are the main camera's pixels' (Renderer: compositeInto): not drawn here.
+    if (overlay_->legend == ViewOverlay::Legend::Aliasing ||
+        overlay_->legend == ViewOverlay::Legend::Error) {
+      legend.append({QColor(0, 0, 0, 0), overlay_->legend == ViewOverlay::Legend::Aliasing
+                                             ? tr("aliasing overlay: main view only (V)")
+                                             : tr("error overlay: main view only (V)")});
+      overlay_->legend = ViewOverlay::Legend::None;
+    }
   }
   overlay_->errorStale = !errorIsCurrent();
   overlay_->pausedText =

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "PartitionColours.h"
 #include "common/shared_constants.h"
 
 namespace sl {
@@ -24,10 +25,6 @@ const char* outlineRoleName(OutlineRole role) {
 }
 
 glm::vec3 outlineColour(OutlineRole role, int map) {
-  static const float partition[SL_PARTITION_COLOURS][3] = {
-      {SL_PARTITION_COLOUR_0}, {SL_PARTITION_COLOUR_1}, {SL_PARTITION_COLOUR_2},
-      {SL_PARTITION_COLOUR_3}, {SL_PARTITION_COLOUR_4}, {SL_PARTITION_COLOUR_5},
-      {SL_PARTITION_COLOUR_6}, {SL_PARTITION_COLOUR_7}};
   switch (role) {
     case OutlineRole::Camera:
       return {SL_OUTLINE_CAMERA_COLOUR};
@@ -38,9 +35,7 @@ glm::vec3 outlineColour(OutlineRole role, int map) {
     case OutlineRole::LightMap:
       break;
   }
-  const float* c =
-      partition[((map % SL_PARTITION_COLOURS) + SL_PARTITION_COLOURS) % SL_PARTITION_COLOURS];
-  return {c[0], c[1], c[2]};
+  return partitionColour(map);
 }
 
 std::array<glm::vec3, 8> clipCubeCorners(const glm::mat4& worldToClip) {

@@ -59,7 +59,8 @@ std::vector<ParamDecl> rendererParamDecls() {
            "Drawn over the scene: shadow error against the exact reference (false-lit magenta, "
            "false-shadowed cyan; needs a computed reference for this view), perspective aliasing "
            "m as a heat map (blue: m<1 oversampled, white: m=1, red: m>1 undersampled; log2 scale "
-           "-4..4), or the shadow-map texel grid (every 1/" +
+           "-4..4; error and m in the main view only, not in the outside view), or the shadow-map "
+           "texel grid (every 1/" +
            std::to_string(SL_GRID_LINES_PER_MAP) +
            " of the selected map) projected onto the scene, or the partition: each pixel coloured "
            "by the index of the map it selected (cascade, face, layer; colours repeat every " +
@@ -578,8 +579,11 @@ void resolveInto(RendererState& s, Targets& t) {
 }
 
 /// Shading of `t` seen from `eye`, with the view.overlay; the error overlay only when
-/// `referenceMatches` (a reference of this exact view was computed).
-void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool referenceMatches) {
+/// `referenceMatches` (a reference of this exact view was computed); the aliasing overlay
+/// only when `mainCamera` (m is a footprint in the main camera's pixels: the outside view's
+/// own derivatives would show m for a camera that is not measured).
+void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool referenceMatches,
+                   bool mainCamera) {
   glBindFramebuffer(GL_FRAMEBUFFER, t.composite.id());
   glViewport(0, 0, t.width, t.height);
   const gl::Program& c = s.compositeProgram;
@@ -597,16 +601,21 @@ void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool refe
   bindLight(c, s.light);
   c.set("u_cameraPos", eye);
   bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
-  if (s.rendererParams.getInt("view.overlay") == SL_OVERLAY_ERROR && !referenceMatches)
+  const int overlay = s.rendererParams.getInt("view.overlay");
+  if (overlay == SL_OVERLAY_ERROR && !referenceMatches)
     c.set("u_overlay", SL_OVERLAY_NONE);  // no reference of this exact view
+  if (overlay == SL_OVERLAY_ALIASING && !mainCamera)
+    c.set("u_overlay", SL_OVERLAY_NONE);  // m of the main camera's pixels only
   glBindVertexArray(s.emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
 }
 
 /// The outside view (view.outside) into s.outsideTargets: G-buffer from the third camera,
-/// the technique's resolve with this frame's maps, shading, then the outline segments as
-/// lines two pixels wide, on top (no depth test: a frustum is never hidden by the scene).
+/// the technique's resolve with this frame's maps, shading (the warp-grid and partition
+/// overlays, not the error and aliasing ones: they measure the main camera's pixels), then
+/// the outline segments as lines two pixels wide, on top (no depth test: a frustum is never
+/// hidden by the scene).
 Camera renderOutsideView(RendererState& s, int width, int height, float aspect,
                          const FrameOutlines& outlines) {
   const ParamSet& p = s.rendererParams;
@@ -624,7 +633,7 @@ Camera renderOutsideView(RendererState& s, int width, int height, float aspect,
   Targets& o = s.outsideTargets;
   drawGBuffer(s, o, viewProj, cam.position);
   resolveInto(s, o);
-  compositeInto(s, o, cam.position, false);
+  compositeInto(s, o, cam.position, false, /*mainCamera=*/false);
 
   if (segments.empty()) return cam;
   struct Vertex {
@@ -762,7 +771,8 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
   {  // 4. Composite (shading).
     auto pass = s.timer->scope("composite");
-    compositeInto(s, t, s.camera.position, s.referenceSignature == s.frameSignature);
+    compositeInto(s, t, s.camera.position, s.referenceSignature == s.frameSignature,
+                  /*mainCamera=*/true);
   }
 
   // 4b. The outside view (view.outside): the same scene and shadows from a third camera, with

@@ -1,8 +1,8 @@
 // Per-partition statistics of the perspective aliasing m of the previous frame (C++:
-// CascadedShadowMap::measurePartitionM): for every covered pixel, its m (resolve target 2)
-// goes to the histogram of the map it selected (resolve target 4): SL_CASCADE_M_BINS bins
-// over log2 m in [SL_CASCADE_M_LOG2_MIN, SL_CASCADE_M_LOG2_MAX), then the pixel count and
-// the largest m (float bits; m > 0 orders like its bits as uint).
+// core/PartitionMStats, for cascades and face-partition): for every covered pixel, its m
+// (resolve target 2) goes to the histogram of the map it selected (resolve target 4):
+// SL_CASCADE_M_BINS bins over log2 m in [SL_CASCADE_M_LOG2_MIN, SL_CASCADE_M_LOG2_MAX), then
+// the pixel count and the largest m (float bits; m > 0 orders like its bits as uint).
 #include "common/shared_constants.h"
 layout(local_size_x = SL_CASCADE_GROUP, local_size_y = SL_CASCADE_GROUP) in;
 layout(binding = SL_UNIT_ALIASING) uniform sampler2D u_aliasing;

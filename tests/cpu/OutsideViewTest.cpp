@@ -1,11 +1,14 @@
 // algo/OutsideView: frustum corners from clip matrices (the camera's own projection gives its
 // frustumCorners), the centre of projection of a perspective matrix, the segments drawn for a
-// technique's outlines, and the third camera seeing every segment end.
+// technique's outlines, the third camera seeing every segment end, and the partition colours
+// (algo/PartitionColours) a light map's box is drawn in.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "algo/OutsideView.h"
+#include "algo/PartitionColours.h"
+#include "common/shared_constants.h"
 
 namespace sl {
 namespace {
@@ -135,6 +138,21 @@ TEST(OutsideView, ThirdCameraSeesEverySegmentEnd) {
   glm::vec3 f = c.forward();
   f.y = 0.0f;
   EXPECT_GT(glm::dot(glm::normalize(f), out.forward()), 0.999f);
+}
+
+// The one C++ copy of the overlay colours: the shader constants, wrapped mod 8 both ways,
+// eight distinct colours, and a light map's outline in its map's colour.
+TEST(PartitionColours, AreTheSharedConstantsWrappedModEight) {
+  const float first[3] = {SL_PARTITION_COLOUR_0}, last[3] = {SL_PARTITION_COLOUR_7};
+  expectNear(partitionColour(0), glm::vec3(first[0], first[1], first[2]), 0.0f);
+  expectNear(partitionColour(7), glm::vec3(last[0], last[1], last[2]), 0.0f);
+  EXPECT_EQ(SL_PARTITION_COLOURS, 8);
+  for (int i = 0; i < SL_PARTITION_COLOURS; ++i) {
+    EXPECT_EQ(partitionColour(i + SL_PARTITION_COLOURS), partitionColour(i)) << i;
+    EXPECT_EQ(partitionColour(i - SL_PARTITION_COLOURS), partitionColour(i)) << i;
+    EXPECT_EQ(outlineColour(OutlineRole::LightMap, i), partitionColour(i)) << i;
+    for (int j = 0; j < i; ++j) EXPECT_NE(partitionColour(i), partitionColour(j)) << i << " " << j;
+  }
 }
 
 }  // namespace

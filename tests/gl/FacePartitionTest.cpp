@@ -2,6 +2,7 @@
 // dueling scene (camera into a low sun) and `default`, with the light behind the viewer, the
 // per-pixel selection against its CPU mirror (algo/partition/FacePartitionFit), exact memory,
 // declared passes == timed passes.
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -9,6 +10,7 @@
 
 #include "GlTestEnv.h"
 #include "algo/partition/FacePartitionFit.h"
+#include "common/shared_constants.h"
 #include "gl/Gl.h"
 #include "panels/partition/PartitionPanelKeys.h"
 
@@ -167,7 +169,8 @@ TEST(FacePartition, MemoryIsExact) {
   test::expectNoGlErrors(*r);
 }
 
-// Every declared pass is timed, in order; the Partitions panel's keys cost what is declared.
+// Every declared pass is timed, in order; the Partitions panel's keys cost what is declared,
+// and its m per slot is the readback's.
 TEST(FacePartition, DeclaredPassesAndPanelKeys) {
   auto r = test::makeRenderer("dueling", "face-partition");
   ASSERT_TRUE(r);
@@ -186,13 +189,31 @@ TEST(FacePartition, DeclaredPassesAndPanelKeys) {
   const Publication& pub = r->publication();
   EXPECT_EQ(pub.images.size(), 5u);
   EXPECT_EQ(pub.numbers.at("partition.count"), 5.0);
+  int warpedSlots = 0;
   for (int i = 0; i < 5; ++i) {
     const std::string k = "partition." + std::to_string(i);
     ASSERT_TRUE(pub.images.count(k + ".map")) << k;
     EXPECT_EQ(pub.images.at(k + ".map").width, 256);
     EXPECT_GE(pub.numbers.at(k + ".far"), pub.numbers.at(k + ".near"));
+    // The panel's warp column: warped with its n', or not (then n' 0).
+    const double warped = pub.numbers.at(k + ".warped"),
+                 nPrime = pub.numbers.at(k + ".warp.n_prime");
+    EXPECT_TRUE(warped == 0.0 || warped == 1.0) << k;
+    EXPECT_EQ(warped == 1.0, nPrime > 0.0) << k << " n' " << nPrime;
+    warpedSlots += warped == 1.0 ? 1 : 0;
   }
+  EXPECT_GE(warpedSlots, 3);  // the side faces warp (the near face falls back: square)
   EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(*info, r->params(), keys));
+  EXPECT_EQ(r->stats().publicationBytes, 5ull * 256 * 256 * 4 + 5ull * (SL_CASCADE_M_BINS + 2) * 4);
+  // m per slot (core/PartitionMStats, as cascades): of the previous frame's resolve, which a
+  // still camera repeats exactly: the pixels that selected each slot, their largest m, a p95
+  // within one 1/8-octave bin above the exact one; every pixel counted once.
+  const FrameReadback fr = r->readback();
+  double covered = 0.0;
+  for (float m : fr.aliasing) covered += m > 0.0f ? 1.0 : 0.0;
+  const double counted = test::expectPartitionMMatches(pub, fr, 5);
+  EXPECT_GT(covered, 0.0);
+  EXPECT_EQ(counted, covered);
   // 5 maps of 16384^2 would be 5 GiB: refused with the sizes named, the renderer keeps working.
   ASSERT_FALSE(r->params().set("resolution", 16384));
   auto err = r->renderFrame(64, 36, 0);

@@ -1,12 +1,16 @@
 // Shared fixture for the headless GL tests: one surfaceless EGL 4.5 core context for the
-// whole test binary, and a helper that fails the test on any GL debug-output error.
+// whole test binary, a helper that fails the test on any GL debug-output error, and the check
+// of per-partition m against a readback (cascades, face-partition).
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/Renderer.h"
 #include "gl/EglContext.h"
@@ -53,6 +57,31 @@ inline const Camera* bookmark(const Scene& scene, const std::string& name) {
 
 inline void expectNoGlErrors(Renderer& r) {
   for (const std::string& e : r.takeGlErrors()) ADD_FAILURE() << "GL error: " << e;
+}
+
+/// partition.<i>.m.* (core/PartitionMStats) of maps 0..maps-1 against `frame` (the resolve
+/// those statistics came from): the pixels that selected each map, their largest m, a p95
+/// within one 1/8-octave bin above the exact one. Returns the pixels counted over all maps.
+inline double expectPartitionMMatches(const Publication& pub, const FrameReadback& frame,
+                                      int maps) {
+  double counted = 0.0;
+  for (int i = 0; i < maps; ++i) {
+    std::vector<float> ms;
+    for (std::size_t p = 0; p < frame.aliasing.size(); ++p)
+      if (frame.aliasing[p] > 0.0f && frame.mapIndex[p] == i) ms.push_back(frame.aliasing[p]);
+    const std::string k = "partition." + std::to_string(i) + ".m.";
+    EXPECT_EQ(pub.numbers.at(k + "pixels"), double(ms.size())) << i;
+    counted += pub.numbers.at(k + "pixels");
+    std::printf("map %d: %zu pixels, m p95 %.3f max %.3f\n", i, ms.size(),
+                pub.numbers.at(k + "p95"), pub.numbers.at(k + "max"));
+    if (ms.empty()) continue;
+    std::sort(ms.begin(), ms.end());
+    EXPECT_FLOAT_EQ(float(pub.numbers.at(k + "max")), ms.back()) << i;
+    const double p95 = ms[std::min(ms.size() - 1, std::size_t(0.95 * double(ms.size())))];
+    EXPECT_GE(pub.numbers.at(k + "p95"), p95 * 0.999) << i;
+    EXPECT_LE(pub.numbers.at(k + "p95"), p95 * 1.091 * 1.001) << i;
+  }
+  return counted;
 }
 
 }  // namespace sl::test

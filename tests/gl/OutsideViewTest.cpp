@@ -1,10 +1,12 @@
 // The outside view (view.outside): its lines appear where the CPU projection of the published
 // frusta says (algo/OutsideView), one light frustum per cascade, the metrics and the hard
-// mask do not change with the toggle, and a golden image of lispsm on corridor seen from outside.
+// mask do not change with the toggle, face-partition's faces and warps, the aliasing overlay
+// in the main view only, and a golden image of lispsm on corridor seen from outside.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "GlTestEnv.h"
 #include "algo/OutsideView.h"
@@ -126,6 +128,74 @@ TEST(OutsideView, CascadesDrawOneLightFrustumPerMapAndTheSplits) {
   test::expectNoGlErrors(*r);
 }
 
+// face-partition on dueling into the sun (the back faces, LiSPSM's square-frustum case): one
+// light frustum per active face, coloured by its slot (the overlay's map index), and a warping
+// frustum for each face that warps; both drawn where the CPU projection says.
+TEST(OutsideView, FacePartitionDrawsEveryActiveFaceAndItsWarp) {
+  auto r = test::makeRenderer("dueling", "face-partition");
+  ASSERT_TRUE(r);
+  r->setCamera(*test::bookmark(*r->scene(), "into-sun"));
+  ASSERT_FALSE(r->params().set("resolution", 512));
+  ASSERT_FALSE(r->rendererParams().setFromString("view.outside", "on"));
+  r->requestPublications({"partition.active", "partition.*.active", "partition.*.warp.eta"});
+  ASSERT_FALSE(r->renderFrame(kW, kH, 0));
+  const auto& numbers = r->publication().numbers;
+  const int active = int(numbers.at("partition.active"));
+  EXPECT_EQ(active, 5);  // test FacePartition.BeatsLispsmAndUniformOnDuelingFrusta: all 5
+  std::set<int> activeSlots, warpedSlots;
+  for (int i = 0; i < 5; ++i) {
+    const std::string key = "partition." + std::to_string(i);
+    if (numbers.at(key + ".active") != 1.0) continue;
+    activeSlots.insert(i);
+    if (numbers.at(key + ".warp.eta") > -1.0) warpedSlots.insert(i);
+  }
+  ASSERT_EQ(int(activeSlots.size()), active);
+  EXPECT_GE(warpedSlots.size(), 4u);  // the four side faces warp along their bisectors
+  std::set<int> boxes, warps;
+  for (const FrustumOutline& f : r->stats().outlines.frusta) {
+    std::set<int>& into = f.role == OutlineRole::Warp ? warps : boxes;
+    EXPECT_TRUE(into.insert(f.map).second) << "map " << f.map << " twice";
+    EXPECT_TRUE(f.role == OutlineRole::LightMap || f.role == OutlineRole::Warp);
+  }
+  EXPECT_EQ(boxes, activeSlots);
+  EXPECT_EQ(warps, warpedSlots);
+  EXPECT_TRUE(r->stats().outlines.splitDepthsM.empty());  // faces, not depth slices
+
+  const FrameReadback frame = r->readback();
+  const auto segs = segmentsOf(*r);
+  const Camera& outside = *r->stats().outsideCamera;
+  // Faces share edges (a later slot overdraws an earlier one's): half of the samples. The
+  // near face's light prism here is a tube 0.17 m across and 90 m long along the light (the
+  // near plane's width): its edges lie inside the side faces' bundle, sub-pixel apart, and
+  // are overdrawn (0 % found). A box thinner than 1 % of its length is not counted.
+  auto thin = [&](int slot) {
+    for (const FrustumOutline& f : r->stats().outlines.frusta) {
+      if (f.role != OutlineRole::LightMap || f.map != slot) continue;
+      const float e[3] = {glm::length(f.corners[1] - f.corners[0]),
+                          glm::length(f.corners[3] - f.corners[0]),
+                          glm::length(f.corners[4] - f.corners[0])};
+      return std::min({e[0], e[1], e[2]}) < 0.01f * std::max({e[0], e[1], e[2]});
+    }
+    return false;
+  };
+  int measured = 0;
+  for (int i : activeSlots) {
+    const double share = foundShare(frame.outside, outside, segs, OutlineRole::LightMap, i, 2);
+    std::printf("face slot %d: light frustum lines found at %.1f %% of samples%s\n", i, 100 * share,
+                thin(i) ? " (a thin tube inside the bundle: not counted)" : "");
+    if (share < 0.0 || thin(i)) continue;
+    ++measured;
+    EXPECT_GE(share, 0.5) << "slot " << i;
+  }
+  EXPECT_GE(measured, 4);
+  const double warp = foundShare(frame.outside, outside, segs, OutlineRole::Warp, 0, 2);
+  const double camera = foundShare(frame.outside, outside, segs, OutlineRole::Camera, 0, 2);
+  std::printf("warp frusta lines found at %.1f %%, camera %.1f %%\n", 100 * warp, 100 * camera);
+  EXPECT_GE(warp, 0.5);
+  EXPECT_GE(camera, 0.5);
+  test::expectNoGlErrors(*r);
+}
+
 // The metrics measure the main camera: two renderers, one with the outside view, give the
 // same hard mask, error and aliasing, frame for frame.
 TEST(OutsideView, MetricsDoNotChangeWithTheToggle) {
@@ -153,6 +223,29 @@ TEST(OutsideView, MetricsDoNotChangeWithTheToggle) {
     test::expectNoGlErrors(*plain);
     test::expectNoGlErrors(*outside);
   }
+}
+
+// m is a footprint in the main camera's pixels: the outside view is drawn without the aliasing
+// overlay (the main view keeps it), while the partition overlay, a property of the scene
+// point, shows from outside too.
+TEST(OutsideView, AliasingOverlayOnlyInTheMainView) {
+  auto r = test::makeRenderer("corridor", "cascades");
+  ASSERT_TRUE(r);
+  r->setCamera(*test::bookmark(*r->scene(), "start-level"));
+  ASSERT_FALSE(r->params().set("resolution", 512));
+  ASSERT_FALSE(r->rendererParams().setFromString("view.outside", "on"));
+  auto frameWith = [&](const char* overlay) {
+    EXPECT_FALSE(r->rendererParams().setFromString("view.overlay", overlay)) << overlay;
+    for (int f = 0; f < 2; ++f) EXPECT_FALSE(r->renderFrame(320, 180, 0));
+    return r->readback();
+  };
+  const FrameReadback none = frameWith("none"), aliasing = frameWith("aliasing"),
+                      partition = frameWith("partition");
+  EXPECT_NE(aliasing.color.pixels, none.color.pixels);      // the main view has the overlay
+  EXPECT_EQ(aliasing.outside.pixels, none.outside.pixels);  // the outside view has not
+  EXPECT_NE(partition.color.pixels, none.color.pixels);
+  EXPECT_NE(partition.outside.pixels, none.outside.pixels);
+  test::expectNoGlErrors(*r);
 }
 
 TEST(Golden, CorridorLispsmOutsideView) {

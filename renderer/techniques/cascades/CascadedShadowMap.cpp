@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/shared_constants.h"
+#include "core/PartitionMStats.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
@@ -22,11 +23,6 @@ constexpr std::uint64_t kMaxArrayBytes = 4ull << 30;
 gl::ProgramDesc rangeProgramDesc() {
   return {"cascades/depth_range", {{GL_COMPUTE_SHADER, "cascades/depth_range.comp"}}, {}, {}};
 }
-gl::ProgramDesc mProgramDesc() {
-  return {"cascades/partition_m", {{GL_COMPUTE_SHADER, "cascades/partition_m.comp"}}, {}, {}};
-}
-constexpr std::size_t kMStride = SL_CASCADE_M_BINS + 2;  ///< uints per map in mStats_
-const char* const kMKeys[] = {"m.p95", "m.max", "m.pixels"};
 
 }  // namespace
 
@@ -124,11 +120,7 @@ TechniqueInfo CascadedShadowMap::info() {
        "Min and max view depth over the G-buffer's covered pixels (a compute reduction), fenced "
        "and read back next frame to fit the split range to what the camera really sees.",
        "partitions"},
-      {"partition m", "Aliasing per partition",
-       "Only while the Partitions panel (or a partition.<i>.m.* key) is shown: the previous "
-       "frame's texels per pixel m, binned per selected map (1/8-octave histogram): p95 and "
-       "max of every partition.",
-       "partitions"},
+      PartitionMStats::passDecl(),
   };
   info.publications = {
       {"partition.*.map", PublicationKind::ImageSet,
@@ -138,13 +130,7 @@ TechniqueInfo CascadedShadowMap::info() {
          const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
          return 4 * r * r * std::uint64_t(ps.getInt("partitions"));
        }},
-      {"partition.*.m.*", PublicationKind::Number,
-       "Partition i's perspective aliasing m over the previous frame's pixels that selected it: "
-       "m.p95 (upper edge of its 1/8-octave histogram bin), m.max, m.pixels.",
-       "4 B x (" + std::to_string(SL_CASCADE_M_BINS) + " + 2) x partitions",
-       [](const ParamSet& ps) {
-         return std::uint64_t(4 * kMStride) * std::uint64_t(ps.getInt("partitions"));
-       }},
+      PartitionMStats::publicationDecl([](const ParamSet& ps) { return ps.getInt("partitions"); }),
       {"partition.count", PublicationKind::Number, "k, the number of partitions.", "", {}},
       {"partition.*.near",
        PublicationKind::Number,
@@ -208,7 +194,7 @@ TechniqueInfo CascadedShadowMap::info() {
 CascadedShadowMap::CascadedShadowMap(const gl::ShaderLibrary& lib)
     : depthProgram_(lib, depthProgramDesc()),
       rangeProgram_(lib, rangeProgramDesc()),
-      mProgram_(lib, mProgramDesc()) {}
+      mStats_(lib) {}
 
 void CascadedShadowMap::resetTemporalState() {
   rangeFence_.reset();
@@ -248,41 +234,6 @@ void CascadedShadowMap::reduceDepthRange(const FrameContext& ctx) {
                     GLuint((ctx.height + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP), 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   rangeFence_.place();
-}
-
-void CascadedShadowMap::measurePartitionM(FrameContext& ctx, int k) {
-  auto pass = ctx.timer.scope("partition m");
-  const GLsizeiptr bytes = GLsizeiptr(4 * kMStride * std::size_t(k));
-  if (!mStats_ || mStats_.size() != bytes) mStats_ = gl::Buffer::create(bytes, nullptr);
-  const std::uint32_t zero = 0;
-  glClearNamedBufferData(mStats_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  mProgram_.use();
-  mProgram_.set("u_size", glm::ivec2(ctx.width, ctx.height));
-  mProgram_.set("u_maps", k);
-  glBindTextureUnit(SL_UNIT_ALIASING, ctx.prevAliasing.id());
-  glBindTextureUnit(SL_UNIT_MAP_INDEX, ctx.prevMapIndex.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_CASCADE_BUFFER_M_STATS, mStats_.id());
-  glDispatchCompute(GLuint((ctx.width + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP),
-                    GLuint((ctx.height + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP), 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  // Read as floats by the counting helper; the words are uint counts and float bits.
-  const std::vector<float> words = readPublishedFloats(ctx, mStats_, 0, kMStride * std::size_t(k));
-  for (int i = 0; i < k; ++i) {
-    const float* w = words.data() + kMStride * std::size_t(i);
-    std::vector<std::uint32_t> bins(SL_CASCADE_M_BINS);
-    std::memcpy(bins.data(), w, bins.size() * 4);
-    std::uint32_t count = 0, maxBits = 0;
-    std::memcpy(&count, w + SL_CASCADE_M_BINS, 4);
-    std::memcpy(&maxBits, w + SL_CASCADE_M_BINS + 1, 4);
-    float maxM = 0.0f;
-    std::memcpy(&maxM, &maxBits, 4);
-    const std::string key = "partition." + std::to_string(i) + ".";
-    publishNumber(
-        ctx, key + "m.p95",
-        partition::histogramQuantileLog2(bins, 0.95, SL_CASCADE_M_LOG2_MIN, SL_CASCADE_M_LOG2_MAX));
-    publishNumber(ctx, key + "m.max", count > 0 ? double(maxM) : 0.0);
-    publishNumber(ctx, key + "m.pixels", double(count));
-  }
 }
 
 void CascadedShadowMap::renderShadows(FrameContext& ctx) {
@@ -357,14 +308,7 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     }
   }
   if (fitDepth) reduceDepthRange(ctx);
-  bool wantM = false;
-  for (int i = 0; i < k && !wantM; ++i)
-    for (const char* m : kMKeys)
-      wantM = wantM || ctx.wants("partition." + std::to_string(i) + "." + m);
-  if (wantM)
-    measurePartitionM(ctx, k);
-  else
-    mStats_ = {};  // held only while requested (memory())
+  mStats_.update(ctx, k);
 
   // Publications: the maps (only when asked), the splits and texel densities (numbers).
   publishNumber(ctx, "partition.count", k);
@@ -405,16 +349,14 @@ MemoryStats CascadedShadowMap::memory() const {
     m.add("partition maps (array)", gl::formatName(maps_.format()), maps_.width(), maps_.height(),
           maps_.layers(), gl::bytesPerTexel(maps_.format()));
   if (rangeBuffer_) m.add("depth range (min, max)", "R32UI", 2, 1, 1, 4);
-  if (mStats_)
-    m.add("m histograms (per partition, while requested)", "R32UI", int(mStats_.size() / 4), 1, 1,
-          4);
+  mStats_.addMemory(m);
   return m;
 }
 
 std::optional<std::string> CascadedShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
   if (auto e = depthProgram_.rebuild(lib)) return e;
   if (auto e = rangeProgram_.rebuild(lib)) return e;
-  return mProgram_.rebuild(lib);
+  return mStats_.reloadShaders(lib);
 }
 
 }  // namespace sl

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algo/partition/CascadeFit.h"
+#include "core/PartitionMStats.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 
@@ -22,7 +23,7 @@ class CascadedShadowMap : public Technique {
   std::string lookupShader() const override { return "cascades/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depthProgram_, &rangeProgram_, &mProgram_};
+    return {&depthProgram_, &rangeProgram_, &mStats_.program()};
   }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
@@ -32,15 +33,13 @@ class CascadedShadowMap : public Technique {
   /// Last frame's min/max view depth of the G-buffer, read behind its fence (no stall).
   std::optional<glm::dvec2> readDepthRange();
   void reduceDepthRange(const FrameContext& ctx);
-  /// Per-partition m (p95, max, pixels) of the previous frame's resolve, when requested.
-  void measurePartitionM(FrameContext& ctx, int k);
 
-  gl::Program depthProgram_, rangeProgram_, mProgram_;
-  gl::Texture maps_;  ///< DEPTH_COMPONENT32F array, one layer per partition
+  gl::Program depthProgram_, rangeProgram_;
+  PartitionMStats mStats_;  ///< partition.<i>.m.* (only while requested)
+  gl::Texture maps_;        ///< DEPTH_COMPONENT32F array, one layer per partition
   std::vector<gl::Framebuffer> fbos_;
   gl::Buffer rangeBuffer_;  ///< 2 uints: min and max view depth bits
   gl::Fence rangeFence_;
-  gl::Buffer mStats_;  ///< per map: SL_CASCADE_M_BINS bins, count, max (only while requested)
   std::optional<glm::dvec2> lastRange_;  ///< the last range read back (kept while unchanged)
   std::optional<glm::dvec2> heldRange_;  ///< stabilised: the range the splits cut (hysteresis)
   partition::CascadeFit fit_;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "algo/partition/StorageFactor.h"
+#include "core/PartitionMStats.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
@@ -62,6 +63,7 @@ TechniqueInfo FacePartitionShadowMap::info() {
        "Render the scene's depth into each face partition's layer through its warp: texels "
        "dense where the face is close to the camera.",
        "partitions"},
+      PartitionMStats::passDecl(),
   };
   auto number = [](std::string key, std::string what) {
     return PublicationDecl{std::move(key), PublicationKind::Number, std::move(what), "", {}};
@@ -75,6 +77,7 @@ TechniqueInfo FacePartitionShadowMap::info() {
          const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
          return 4 * r * r * kSlots;
        }},
+      PartitionMStats::publicationDecl([](const ParamSet&) { return kSlots; }),
       number("partition.count", "Number of face slots (5)."),
       number("partition.active",
              "Number of faces used this frame (1 to 5: those towards the light, or away)."),
@@ -95,6 +98,11 @@ TechniqueInfo FacePartitionShadowMap::info() {
              "1 when slot i asked for a warp but used the uniform map."),
       number("partition.*.warp.fallback_cause",
              "why: 0 none, 1 light behind, 2 light in front, 4 degenerate (warp::FallbackCause)."),
+      number("partition.*.warped",
+             "1 when slot i's map is warped (active, no fallback), else 0 (the Partitions "
+             "panel's warp column, as cascades)."),
+      number("partition.*.warp.n_prime",
+             "Slot i's n' (m): its warp's projection centre to its body; 0 = unwarped or unused."),
       number("faces.front",
              "1 when the front faces (towards the light, v . y < 0) are used, 0 for the back."),
       number("depth.near", "Near plane of the frustum clipped to the scene (m)."),
@@ -105,7 +113,7 @@ TechniqueInfo FacePartitionShadowMap::info() {
 }
 
 FacePartitionShadowMap::FacePartitionShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthProgramDesc()) {}
+    : depthProgram_(lib, depthProgramDesc()), mStats_(lib) {}
 
 void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
   const int res = ctx.params.getInt("resolution");
@@ -118,7 +126,15 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
       throw std::runtime_error(*err);
     fit_ = std::move(fit);
     views_.assign(kSlots, DepthMapView{});
-    for (const partition::FacePart& p : fit_.parts) views_[std::size_t(p.slot)] = partView(p.fit);
+    for (const partition::FacePart& p : fit_.parts) {
+      views_[std::size_t(p.slot)] = partView(p.fit);
+      // The outside view: a warped face's light box and warping frustum, a uniform one's
+      // orthographic light frustum; coloured by slot like the partition overlay.
+      if (p.fit.warped() && ctx.outlines)
+        addWarpOutlines(p.fit, *ctx.outlines, p.slot);
+      else if (!p.fit.warped())
+        ctx.addOutline(views_[std::size_t(p.slot)].lightViewProj, OutlineRole::LightMap, p.slot);
+    }
   }
   {
     auto pass = ctx.timer.scope("face maps");
@@ -151,6 +167,8 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
       }
   }
 
+  mStats_.update(ctx, kSlots);  // the previous frame's m per selected slot, when requested
+
   publishNumber(ctx, "partition.count", kSlots);
   publishNumber(ctx, "partition.active", double(fit_.parts.size()));
   publishNumber(ctx, "faces.front", fit_.selection.frontFaces ? 1.0 : 0.0);
@@ -166,7 +184,7 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, key + ".active", active ? 1.0 : 0.0);
     if (!active) {
       for (const char* k : {".face", ".near", ".far", ".extent_m", ".texels_per_m", ".warp.eta",
-                            ".warp.fallback", ".warp.fallback_cause"})
+                            ".warp.fallback", ".warp.fallback_cause", ".warped", ".warp.n_prime"})
         publishNumber(ctx, key + k, 0.0);
       continue;
     }
@@ -180,6 +198,8 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, key + ".warp.eta", p.fit.eta);
     publishNumber(ctx, key + ".warp.fallback", p.fit.fallback ? 1.0 : 0.0);
     publishNumber(ctx, key + ".warp.fallback_cause", double(int(p.fit.fallbackCause)));
+    publishNumber(ctx, key + ".warped", p.fit.warped() ? 1.0 : 0.0);
+    publishNumber(ctx, key + ".warp.n_prime", p.fit.warped() ? p.fit.nPrime : 0.0);
   }
 }
 
@@ -200,11 +220,13 @@ MemoryStats FacePartitionShadowMap::memory() const {
   if (maps_)
     m.add("face partition maps (array)", gl::formatName(maps_.format()), maps_.width(),
           maps_.height(), maps_.layers(), gl::bytesPerTexel(maps_.format()));
+  mStats_.addMemory(m);
   return m;
 }
 
 std::optional<std::string> FacePartitionShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
-  return depthProgram_.rebuild(lib);
+  if (auto e = depthProgram_.rebuild(lib)) return e;
+  return mStats_.reloadShaders(lib);
 }
 
 }  // namespace sl

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "algo/partition/FacePartitionFit.h"
+#include "core/PartitionMStats.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 
@@ -20,7 +21,9 @@ class FacePartitionShadowMap : public Technique {
   void renderShadows(FrameContext& ctx) override;
   std::string lookupShader() const override { return "facepartition/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
-  std::vector<const gl::Program*> programs() const override { return {&depthProgram_}; }
+  std::vector<const gl::Program*> programs() const override {
+    return {&depthProgram_, &mStats_.program()};
+  }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
@@ -29,7 +32,8 @@ class FacePartitionShadowMap : public Technique {
 
  private:
   gl::Program depthProgram_;
-  gl::Texture maps_;  ///< DEPTH_COMPONENT32F array, one layer per face partition
+  PartitionMStats mStats_;  ///< partition.<i>.m.* per slot (only while requested)
+  gl::Texture maps_;        ///< DEPTH_COMPONENT32F array, one layer per face partition
   std::vector<gl::Framebuffer> fbos_;
   partition::FacePartitionFit fit_;
   std::vector<DepthMapView> views_;

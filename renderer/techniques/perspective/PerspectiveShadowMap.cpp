@@ -103,26 +103,27 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
 PerspectiveShadowMap::PerspectiveShadowMap(const gl::ShaderLibrary& lib, Kind kind)
     : SingleDepthMapTechnique(lib, "perspective shadow map"), kind_(kind) {}
 
-void PerspectiveShadowMap::addWarpOutlines(FrameOutlines& out) const {
+void addWarpOutlines(const warp::WarpFit& fit, FrameOutlines& out, int map) {
   // Light space (algo/warp): x across, y along the light (depth), z the warp's axis. The box
   // the warp was fitted in is the light's (unwarped) frustum; the warping frustum is the
   // wedge |x - cx| <= tanHalfX z' for z' = z - lo.z + n' in [n', n' + L], its side edges
   // meeting at the apex line z' = 0 (paper's Fig. 3).
-  const glm::dvec3 X = fit_.space.x, Y = fit_.space.y, Z = fit_.space.z;
+  const glm::dvec3 X = fit.space.x, Y = fit.space.y, Z = fit.space.z;
   auto world = [&](double x, double y, double z) { return glm::vec3(x * X + y * Y + z * Z); };
   FrustumOutline box, warp;
   box.role = OutlineRole::LightMap;
   warp.role = OutlineRole::Warp;
+  box.map = warp.map = map;
   std::array<glm::vec3, 4> apex;
   for (int i = 0; i < 8; ++i) {
     const int face = i & 3;
     const double sx = (face == 1 || face == 2) ? 1.0 : -1.0;
-    const double y = face >= 2 ? fit_.hi.y : fit_.lo.y;
-    const double z = i < 4 ? fit_.lo.z : fit_.hi.z;
-    box.corners[size_t(i)] = world(sx > 0 ? fit_.hi.x : fit_.lo.x, y, z);
-    const double zPrime = z - fit_.lo.z + fit_.nPrime;
-    warp.corners[size_t(i)] = world(fit_.cx + sx * fit_.tanHalfX * zPrime, y, z);
-    if (i < 4) apex[size_t(i)] = world(fit_.cx, y, fit_.lo.z - fit_.nPrime);
+    const double y = face >= 2 ? fit.hi.y : fit.lo.y;
+    const double z = i < 4 ? fit.lo.z : fit.hi.z;
+    box.corners[size_t(i)] = world(sx > 0 ? fit.hi.x : fit.lo.x, y, z);
+    const double zPrime = z - fit.lo.z + fit.nPrime;
+    warp.corners[size_t(i)] = world(fit.cx + sx * fit.tanHalfX * zPrime, y, z);
+    if (i < 4) apex[size_t(i)] = world(fit.cx, y, fit.lo.z - fit.nPrime);
   }
   warp.apex = apex;
   out.frusta.push_back(box);
@@ -170,7 +171,7 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "warp.fallback", fit_.fallback ? 1.0 : 0.0);
   publishNumber(ctx, "warp.fallback_cause", double(int(fit_.fallbackCause)));
 
-  if (fit_.warped() && ctx.outlines) addWarpOutlines(*ctx.outlines);
+  if (fit_.warped() && ctx.outlines) addWarpOutlines(fit_, *ctx.outlines);
   auto pass = ctx.timer.scope("shadow map");
   map_.render(ctx, ctx.params.getInt("resolution"), mapView, /*outline=*/!fit_.warped());
 }

@@ -15,6 +15,11 @@ namespace sl {
 /// of `cascades` and face-partition declare this one.
 ParamDecl warpEtaDecl(double defaultEta);
 
+/// The outside view's outlines of a warped fit (`fit.warped()`): the light-space box it was
+/// fitted in (LightMap, coloured as map `map`) and its warping frustum (Warp). psm, lispsm,
+/// tsm and every warped face of face-partition publish them.
+void addWarpOutlines(const warp::WarpFit& fit, FrameOutlines& out, int map = 0);
+
 class PerspectiveShadowMap : public SingleDepthMapTechnique {
  public:
   enum class Kind { Psm, Lispsm, Tsm };
@@ -29,8 +34,6 @@ class PerspectiveShadowMap : public SingleDepthMapTechnique {
   const warp::WarpFit& lastFit() const { return fit_; }
 
  private:
-  /// The outside view's outlines of a warped fit: the light-space box and the warping frustum.
-  void addWarpOutlines(FrameOutlines& out) const;
   Kind kind_;
   warp::WarpFit fit_;
 };

@@ -1,6 +1,6 @@
 // The publication keys the Partitions panel observes (core/Renderer.h, Publication): plain
 // C++ so that tests/gl can request exactly what the panel draws. Any multi-map technique
-// that publishes "partition.<i>.*" (cascades today; face partitions later) fills it.
+// that publishes "partition.<i>.*" (cascades, face-partition) fills it.
 #pragma once
 
 #include <set>

@@ -10,22 +10,18 @@
 #include <QPainter>
 #include <QVBoxLayout>
 
+#include "algo/PartitionColours.h"
 #include "algo/warp/PerspectiveWarp.h"
-#include "common/shared_constants.h"
 
 namespace sl::ui {
 
 namespace {
 constexpr int kMaxDisplayTexels = 512;  ///< larger maps are point-sampled for display
 
-/// The partition overlay's colour of map `i` (shared_constants.h, composite.frag).
-QColor partitionColour(int i) {
-  static const float c[SL_PARTITION_COLOURS][3] = {
-      {SL_PARTITION_COLOUR_0}, {SL_PARTITION_COLOUR_1}, {SL_PARTITION_COLOUR_2},
-      {SL_PARTITION_COLOUR_3}, {SL_PARTITION_COLOUR_4}, {SL_PARTITION_COLOUR_5},
-      {SL_PARTITION_COLOUR_6}, {SL_PARTITION_COLOUR_7}};
-  const float* rgb = c[i % SL_PARTITION_COLOURS];
-  return QColor::fromRgbF(rgb[0], rgb[1], rgb[2]);
+/// The partition overlay's colour of map `i` (algo/PartitionColours).
+QColor partitionQColor(int i) {
+  const glm::vec3 c = partitionColour(i);
+  return QColor::fromRgbF(c.r, c.g, c.b);
 }
 
 double number(const sl::Publication& pub, const std::string& key, double fallback = -1.0) {
@@ -94,7 +90,7 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
       v->clearImage(tr("map not published"));
     }
     v->setCaption(caption);
-    const QColor colour = partitionColour(i);
+    const QColor colour = partitionQColor(i);
     // The partition's slice of the view frustum in its map's uv (u right, v up): where the
     // map's texels go; the scene's depth inside it is what the slice sees.
     std::vector<float> slice;

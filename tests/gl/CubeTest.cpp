@@ -23,11 +23,7 @@ TEST(Cube, GpuLookupMatchesCpuFaceMappingOnTheSphere) {
   ASSERT_TRUE(r);
   ASSERT_FALSE(r->params().set("bias.normal", 0.0));
   const glm::vec3 L = r->light().positionM;
-  std::vector<glm::vec3> looks = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                  {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-  for (float sx : {-1.0f, 1.0f})
-    for (float sy : {-1.0f, 1.0f})
-      for (float sz : {-1.0f, 1.0f}) looks.push_back(glm::normalize(glm::vec3(sx, sy, sz)));
+  const std::vector<glm::vec3> looks = test::sphereLookDirections();
   std::size_t compared = 0, ties = 0;
   int facesSeen = 0;
   for (const glm::vec3& look : looks) {

@@ -22,11 +22,7 @@ TEST(DualParaboloid, GpuLookupMatchesCpuMappingOnTheSphere) {
   ASSERT_FALSE(r->params().set("bias.normal", 0.0));
   ASSERT_FALSE(r->params().set("resolution", 256));
   const glm::vec3 L = r->light().positionM;
-  std::vector<glm::vec3> looks = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                  {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-  for (float sx : {-1.0f, 1.0f})
-    for (float sy : {-1.0f, 1.0f})
-      for (float sz : {-1.0f, 1.0f}) looks.push_back(glm::normalize(glm::vec3(sx, sy, sz)));
+  const std::vector<glm::vec3> looks = test::sphereLookDirections();
   for (auto [axisIndex, axis] : {std::pair{0, glm::dvec3(0, 1, 0)}, {1, glm::dvec3(1, 0, 0)}}) {
     SCOPED_TRACE(axisIndex);
     ASSERT_FALSE(r->params().set("dp.axis", axisIndex));

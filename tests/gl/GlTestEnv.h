@@ -18,6 +18,17 @@
 
 namespace sl::test {
 
+/// 14 directions over the sphere: the 6 axes and the 8 cube diagonals (unit), for a camera
+/// at an omni light looking every way (cube and dual-paraboloid lookup parity).
+inline std::vector<glm::vec3> sphereLookDirections() {
+  std::vector<glm::vec3> looks = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                  {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  for (float sx : {-1.0f, 1.0f})
+    for (float sy : {-1.0f, 1.0f})
+      for (float sz : {-1.0f, 1.0f}) looks.push_back(glm::normalize(glm::vec3(sx, sy, sz)));
+  return looks;
+}
+
 inline gl::EglContext& eglContext() {
   static gl::EglContext ctx;
   return ctx;

@@ -82,6 +82,10 @@ vec4 mapUvzw(int map, vec3 P) {
   return vec4(c.xyz / w * 0.5 + 0.5, w);
 }
 
+// World point P's texture uv in `map` (resolve.frag's derivatives across seams): no
+// selection, no normal offset; outside [0, 1] beyond the map's edge.
+vec2 shadowMapUvOf(int map, vec3 P) { return lightToMapUv(map, mapUvzw(map, P).xy); }
+
 // Largest local texel of the map at P's light uv, in metres at P (extent x clip w^p).
 float localTexelM(int map, vec2 t, float w) {
   vec2 scale = u_mapExtentM[map] * pow(vec2(w), u_mapExtentWPower[map]);
@@ -119,12 +123,29 @@ ShadowCoord shadowLookupCoord(vec3 P, vec3 N) {
   return ShadowCoord(map, vec3(lightToMapUv(map, uvz.xy), uvz.z));
 }
 
+// A PCF tap beyond the selected map's edge is clamped to the edge texel, unless the lookup
+// defines SL_DEPTH_MAP_ACROSS_EDGES and (declared before, defined after including this file)
+//   float shadowMapDepthAcross(int map, ivec2 t, out vec2 centreLightUv)
+// which reads the neighbouring map's texel in the direction of t and returns the point it
+// stores as a depth in `map` and the light uv where the receiver's plane meets that point's
+// ray (the cube's faces: PCF continues across face edges).
 float depthMapTexelTest(ShadowCoord c, ivec2 offset) {
   ivec2 size = shadowMapTexels(c.map);
-  ivec2 t = clamp(ivec2(floor(c.uvz.xy * vec2(size))) + offset, ivec2(0), size - 1);
-  vec2 centre = texelCentreLightUv(c.map, t);
+  ivec2 t = clamp(ivec2(floor(c.uvz.xy * vec2(size))), ivec2(0), size - 1) + offset;
+  vec2 centre;
+  float stored;
+#ifdef SL_DEPTH_MAP_ACROSS_EDGES
+  if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) {
+    stored = shadowMapDepthAcross(c.map, t, centre);
+  } else
+#endif
+  {
+    t = clamp(t, ivec2(0), size - 1);
+    centre = texelCentreLightUv(c.map, t);
+    stored = shadowMapDepth(c.map, t);
+  }
   float z = g_receiverZ + dot(g_receiverDz, centre - g_receiverUv) - g_receiverBias;
-  return z <= shadowMapDepth(c.map, t) ? 1.0 : 0.0;
+  return z <= stored ? 1.0 : 0.0;
 }
 
 float shadowHardAt(ShadowCoord c) {

@@ -9,6 +9,8 @@
 //   ShadowCoord shadowLookupCoord(vec3 P, vec3 N)  selects a map (common/shadow_coord.glsl),
 //                                                  its uv (through any warp) and depth
 //   vec2 shadowMapSize(int map)                    texels of that map
+//   vec2 shadowMapUvOf(int map, vec3 P)            world point P's uv in THAT map (no
+//                                                  selection, no offset; may leave [0, 1])
 //   float shadowHardAt(ShadowCoord c), float shadowFilteredAt(ShadowCoord c)   1 = lit
 // so the (possibly warped) coordinate is computed once per pixel. Depth-map techniques
 // get all four from common/depth_map_test.glsl; the light (common/light.glsl, bound by
@@ -35,7 +37,27 @@ void main() {
   // A = |dX x dY| texels of the SELECTED map per pixel, m = 1 / sqrt(A).
   ShadowCoord c = P.w > 0.0 ? shadowLookupCoord(P.xyz, N) : ShadowCoord(0, vec3(0.0));
   vec2 texel = c.uvz.xy * shadowMapSize(c.map);
-  vec2 dX = dFdx(texel), dY = dFdy(texel);
+  vec2 dX = dFdxFine(texel), dY = dFdyFine(texel);
+  // At a seam (a cube face edge, the paraboloid rim, a cascade split) the pixel's quad
+  // partner selected ANOTHER map: the difference of two maps' texel coordinates says nothing
+  // (a jump of up to a whole map: m falsely near 0). There the partner's surface point is
+  // mapped into THIS pixel's map instead (maps extend beyond their edges: a plane, a
+  // paraboloid): one finite difference in one map, as everywhere else. Fine derivatives
+  // (own row / column of the quad) so the partner is known; not across a silhouette to the
+  // background (no partner point). Tested: OmniAliasing (tests/gl).
+  bvec2 otherMap = bvec2(dFdxFine(float(c.map)) != 0.0, dFdyFine(float(c.map)) != 0.0);
+  bvec2 partnerCovered = bvec2(dFdxFine(P.w) == 0.0, dFdyFine(P.w) == 0.0);
+  vec3 dPdx = dFdxFine(P.xyz), dPdy = dFdyFine(P.xyz);
+  if (P.w > 0.0 && any(otherMap)) {
+    // dFdxFine = value(x | 1) - value(x & ~1): the partner is P + d on even, P - d on odd.
+    vec2 odd = vec2(ivec2(gl_FragCoord.xy) & 1);
+    vec2 size = shadowMapSize(c.map);
+    vec2 here = shadowMapUvOf(c.map, P.xyz);
+    if (otherMap.x && partnerCovered.x)
+      dX = (shadowMapUvOf(c.map, P.xyz + (1.0 - 2.0 * odd.x) * dPdx) - here) * size;
+    if (otherMap.y && partnerCovered.y)
+      dY = (shadowMapUvOf(c.map, P.xyz + (1.0 - 2.0 * odd.y) * dPdy) - here) * size;
+  }
   float area = abs(dX.x * dY.y - dX.y * dY.x);
   o_texel = c.uvz.xy;
   o_map = uint(clamp(c.map, 0, 255));

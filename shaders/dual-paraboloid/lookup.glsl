@@ -22,6 +22,10 @@ float g_receiverBiasM;  // slope + constant, metres along the texel's direction
 
 vec2 shadowMapSize(int map) { return vec2(textureSize(u_dpMaps, 0).xy); }
 
+// P's uv in hemisphere `map` (resolve.frag, across the rim): the mapping continues a
+// little beyond the split plane (z + 1 > 0 for all but the opposite pole).
+vec2 shadowMapUvOf(int map, vec3 P) { return dpUv(map, P - u_dpLight); }
+
 int dpSelect(vec3 P) { return u_dpHalves == 1 ? 0 : dpHalf(P - u_dpLight); }
 
 // Local texel at P in metres: its angular width times the distance.
@@ -50,14 +54,26 @@ ShadowCoord shadowLookupCoord(vec3 P, vec3 N) {
   return ShadowCoord(hemi, vec3(dpUv(hemi, d), dpWindowDepth(length(d))));
 }
 
+// A PCF tap whose texel centre lies beyond the rim (outside the disc, nothing rendered there)
+// continues into the other hemisphere: the mapping goes on past the split plane, so the
+// tap's direction is found there and that hemisphere's texel read (a spot: one hemisphere,
+// the tap is clamped). Tested: OmniPcf (tests/gl).
 float dpTexelTest(ShadowCoord c, ivec2 offset) {
   ivec2 size = ivec2(shadowMapSize(c.map));
-  ivec2 t = clamp(ivec2(floor(c.uvz.xy * vec2(size))) + offset, ivec2(0), size - 1);
-  vec3 dir = dpDirection(c.map, (vec2(t) + 0.5) / vec2(size));
+  ivec2 t = clamp(ivec2(floor(c.uvz.xy * vec2(size))), ivec2(0), size - 1) + offset;
+  int hemi = c.map;
+  vec2 p = 2.0 * (vec2(t) + 0.5) / vec2(size) - 1.0;
+  if (dot(p, p) > 1.0 && u_dpHalves == 2) {
+    vec3 across = dpDirection(hemi, (vec2(t) + 0.5) / vec2(size));
+    hemi = 1 - hemi;
+    t = ivec2(floor(dpUv(hemi, across) * vec2(size)));
+  }
+  t = clamp(t, ivec2(0), size - 1);
+  vec3 dir = dpDirection(hemi, (vec2(t) + 0.5) / vec2(size));
   float L = dpPlaneDistance(dir, g_receiverP, g_receiverN);
   if (L < 0.0) L = length(g_receiverP - u_dpLight);  // edge-on: its own distance
   float z = dpWindowDepth(L - g_receiverBiasM);
-  return z <= texelFetch(u_dpMaps, ivec3(t, c.map), 0).r ? 1.0 : 0.0;
+  return z <= texelFetch(u_dpMaps, ivec3(t, hemi), 0).r ? 1.0 : 0.0;
 }
 
 float shadowHardAt(ShadowCoord c) { return dpTexelTest(c, ivec2(0)); }

@@ -148,8 +148,11 @@ void CubeShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const 
   glBindTextureUnit(GLuint(firstUnit), faces_.id());
   resolve.set("u_cubeFaces", firstUnit);
   resolve.set("u_cubeLightPos", fit_.lightPosM);
-  for (int f = 0; f < omni::kCubeFaces; ++f)
-    resolve.set(("u_cubeFaceLayer[" + std::to_string(f) + "]").c_str(), fit_.layer[size_t(f)]);
+  for (int f = 0; f < omni::kCubeFaces; ++f) {
+    const std::string i = "[" + std::to_string(f) + "]";
+    resolve.set(("u_cubeFaceLayer" + i).c_str(), fit_.layer[size_t(f)]);
+    resolve.set(("u_cubeClipToWorld" + i).c_str(), glm::inverse(fit_.viewProj[size_t(f)]));
+  }
 }
 
 MemoryStats CubeShadowMap::memory() const {

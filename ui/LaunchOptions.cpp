@@ -40,7 +40,7 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       QStringLiteral("self-test"),
       QStringLiteral(
           "Run a GUI self-test (params, bad-gltf=FILE[,FILE...], teaching[=DIR], charts[=DIR], "
-          "split-resize[=TECHNIQUE])."),
+          "split-resize[=TECHNIQUE], omni-probe[=DIR])."),
       QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
   parser.addOptions({scene, technique, set, lesson, grab, grabAfter, selfTest});
@@ -78,12 +78,13 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   o.selfTestArgument = parser.value(selfTest).section(QLatin1Char('='), 1);
   if (parser.isSet(selfTest) && o.selfTest != QLatin1String("params") &&
       o.selfTest != QLatin1String("bad-gltf") && o.selfTest != QLatin1String("teaching") &&
-      o.selfTest != QLatin1String("charts") && o.selfTest != QLatin1String("split-resize")) {
+      o.selfTest != QLatin1String("charts") && o.selfTest != QLatin1String("split-resize") &&
+      o.selfTest != QLatin1String("omni-probe")) {
     out.exitCode = 2;
     out.messageIsError = true;
     out.message = QStringLiteral(
                       "unknown --self-test '%1' (known: params, bad-gltf=FILE[,FILE...], "
-                      "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE])")
+                      "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE], omni-probe[=DIR])")
                       .arg(parser.value(selfTest));
     return out;
   }

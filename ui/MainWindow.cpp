@@ -97,6 +97,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   connect(viewport_, &ViewportWidget::initializationFailed, this,
           &MainWindow::onInitializationFailed);
   connect(viewport_, &ViewportWidget::errorComputed, this, &MainWindow::onErrorComputed);
+  connect(viewport_, &ViewportWidget::pixelProbed, this,
+          [this](const std::optional<sl::PixelProbe>& probe) { docks_.showProbe(probe); });
   connect(viewport_, &ViewportWidget::viewChanged, this, [this] {
     if (!viewport_->errorIsCurrent()) errorLabel_->setText(tr("error —"));
   });

@@ -67,6 +67,10 @@ void PublicationDocks::raiseFor(const sl::TechniqueInfo& info) const {
   if (first && (!front || !showsTechnique(*front->panel, info))) first->dock->raise();
 }
 
+void PublicationDocks::showProbe(const std::optional<sl::PixelProbe>& probe) const {
+  for (const Dock& d : docks_) d.panel->showProbe(probe);
+}
+
 void PublicationDocks::highlightPass(const QString& passId) const {
   for (const Dock& d : docks_) d.panel->highlightPass(passId);
 }

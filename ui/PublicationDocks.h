@@ -3,6 +3,7 @@
 // handing the Publication to them.
 #pragma once
 
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -43,6 +44,8 @@ class PublicationDocks {
   void raiseFor(const sl::TechniqueInfo& info) const;
   void resetHistory() const;
   void highlightPass(const QString& passId) const;
+  /// The view's pixel under the mouse, to every panel (visible or not: cheap, no readback).
+  void showProbe(const std::optional<sl::PixelProbe>& probe) const;
   /// What each panel drew, by dock name (for --grab's published.json).
   QJsonObject drawnValues() const;
 

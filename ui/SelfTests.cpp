@@ -2,6 +2,7 @@
 // act as a user would — typing into the generated parameter editors, going through
 // File > Open with Qt's own file dialog, reading the message box — and check what the
 // renderer and the window did. Each check prints "ok   ..." or "FAIL ..."; exit 0 = pass.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -35,6 +36,7 @@
 #include "PassStepper.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
+#include "algo/omni/OmniMapping.h"
 #include "panels/common/ChartsPanel.h"
 #include "panels/common/ParamPanel.h"
 
@@ -117,6 +119,8 @@ void SelfTests::run() {
     ran = charts(argument_);
   else if (name_ == QLatin1String("split-resize"))
     ran = splitResize(argument_);
+  else if (name_ == QLatin1String("omni-probe"))
+    ran = omniProbe(argument_);
   else
     ran = badGltf(argument_);
   const bool pass = ran && failures_ == 0;
@@ -188,6 +192,82 @@ bool SelfTests::splitResize(const QString& splitTechnique) {
   }
   w_.viewport_->setMinimumSize(0, 0);
   w_.viewport_->setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+  return true;
+}
+
+bool SelfTests::omniProbe(const QString& dir) {
+  const QString omniId = QStringLiteral("omni");
+  PublicationPanel* panel = nullptr;
+  for (const PublicationDocks::Dock& d : w_.docks_.docks())
+    if (d.entry.id == omniId) panel = d.panel;
+  QDockWidget* dock = w_.docks_.dock(omniId.toStdString());
+  check(panel && dock, tr("the Omni map dock exists"));
+  if (!panel || !dock) return false;
+  dock->show();
+  dock->raise();
+  QCoreApplication::processEvents();
+  w_.waitForFrames(3);
+  ViewportWidget* view = w_.viewport_;
+  sl::Renderer* renderer = view->renderer();
+  const bool cube = view->techniqueId() == "cube";
+  const glm::dvec3 light(view->light().positionM);
+  // dp.axis: 0 y, 1 x, 2 z (DualParaboloidShadowMap's declaration).
+  const glm::dvec3 axes[] = {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
+  const omni::ParaboloidFrame frame = omni::paraboloidFrame(
+      cube ? axes[0] : axes[std::clamp(renderer->params().getInt("dp.axis"), 0, 2)]);
+  const QSize size = view->size();
+  int probed = 0;
+  for (const QPointF f :
+       {QPointF(0.5, 0.5), QPointF(0.2, 0.3), QPointF(0.8, 0.75), QPointF(0.3, 0.85)}) {
+    const QPointF at(f.x() * size.width(), f.y() * size.height());
+    QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::NoButton,
+                     Qt::NoModifier);
+    QCoreApplication::sendEvent(view, &move);
+    QCoreApplication::processEvents();
+    const QJsonObject drawn = panel->drawnValues();
+    view->makeCurrent();
+    const qreal dpr = view->devicePixelRatioF();
+    const std::optional<sl::PixelProbe> p =
+        renderer->probePixel(int(std::floor(at.x() * dpr)), int(std::floor(at.y() * dpr)));
+    view->doneCurrent();
+    if (!p || !p->covered) continue;
+    ++probed;
+    const glm::dvec3 d = glm::dvec3(p->worldM) - light;
+    int map = 0;
+    glm::dvec2 uv;
+    if (cube) {
+      const omni::CubeCoord c = omni::cubeFaceUv(d);
+      map = c.face;
+      uv = c.uv;
+    } else {
+      const omni::ParaboloidCoord c = omni::paraboloidUv(frame, d);
+      map = c.half;
+      uv = c.uv;
+    }
+    // Without the normal offset (the script sets bias.normal=0) the lookup's uv is the
+    // mapping's own: float32 (1e-3 of the map).
+    const bool same = drawn.value(QStringLiteral("probe_map")).toInt(-1) == map &&
+                      std::abs(drawn.value(QStringLiteral("probe_u")).toDouble(-9) - uv.x) < 1e-3 &&
+                      std::abs(drawn.value(QStringLiteral("probe_v")).toDouble(-9) - uv.y) < 1e-3;
+    check(same, tr("pixel (%1, %2): the marker is on map %3 at uv (%4, %5); algo/omni: map %6 at "
+                   "(%7, %8)")
+                    .arg(p->x)
+                    .arg(p->y)
+                    .arg(drawn.value(QStringLiteral("probe_map")).toInt(-1))
+                    .arg(drawn.value(QStringLiteral("probe_u")).toDouble(-9), 0, 'f', 4)
+                    .arg(drawn.value(QStringLiteral("probe_v")).toDouble(-9), 0, 'f', 4)
+                    .arg(map)
+                    .arg(uv.x, 0, 'f', 4)
+                    .arg(uv.y, 0, 'f', 4));
+    if (!dir.isEmpty() && QDir().mkpath(dir) && probed == 1)
+      w_.grab().toImage().save(QDir(dir).filePath(QStringLiteral("omni-probe.png")));
+  }
+  check(probed >= 3, tr("%1 of 4 hover points over a surface").arg(probed));
+  QEvent leave(QEvent::Leave);
+  QCoreApplication::sendEvent(view, &leave);
+  QCoreApplication::processEvents();
+  check(!panel->drawnValues().contains(QStringLiteral("probe_map")),
+        tr("leaving the view removes the marker"));
   return true;
 }
 

@@ -1,5 +1,6 @@
 // GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
-// params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE]. They act as a
+// params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE],
+// omni-probe[=DIR]. They act as a
 // user would and check what the renderer and the window did; each check prints "ok   ..." or "FAIL
 // ...".
 #pragma once
@@ -38,6 +39,10 @@ class SelfTests : public QObject {
   /// split-resize[=TECHNIQUE]: the split view measures the same errors after the window
   /// was shrunk to 3x3 and restored.
   bool splitResize(const QString& splitTechnique);
+  /// omni-probe[=DIR]: the mouse over the view (no button) puts the Omni map's marker on the
+  /// face or hemisphere and uv algo/omni computes for that pixel's direction from the light;
+  /// leaving the view removes it. PNG of the window into `dir`.
+  bool omniProbe(const QString& dir);
   void check(bool ok, const QString& what);
 
   MainWindow& w_;

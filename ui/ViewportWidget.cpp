@@ -237,6 +237,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   overlay_ = new ViewOverlay(this);
   overlay_->hide();
   setFocusPolicy(Qt::StrongFocus);
+  setMouseTracking(true);  // hover: the pixel under the mouse (pixelProbed)
   setMinimumSize(160, 120);
   errorTimer_.setSingleShot(true);
   connect(&errorTimer_, &QTimer::timeout, this, &ViewportWidget::computeErrorIfStill);
@@ -327,6 +328,7 @@ void ViewportWidget::paintGL() {
   // No right half narrower than the smallest drawn view: the left half takes it all.
   const bool split = !splitTechniqueId_.empty() && w / 2 >= kMinDrawnPx;
   const int mainWidth = split ? w / 2 : w;
+  lastMainWidth_ = mainWidth;
   if (split) renderSplitHalf(w - mainWidth, h, problem);
 
   std::optional<std::string> error;
@@ -345,6 +347,7 @@ void ViewportWidget::paintGL() {
 
   updateOverlayWidget();
   Q_EMIT frameRendered();
+  probeHover();                                             // the frame changed under a still mouse
   if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);  // restarts: waits for stillness
   if (continuous_ && !paused_) update();
 }
@@ -750,8 +753,14 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
 }
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
-  if (dragButton_ == Qt::NoButton) return;
   const QPoint pos = event->position().toPoint();
+  if (dragButton_ == Qt::NoButton) {
+    hover_ = event->position();
+    makeCurrent();
+    probeHover();
+    doneCurrent();
+    return;
+  }
   const QPoint d = pos - lastMouse_;
   lastMouse_ = pos;
   if (d.isNull()) return;
@@ -778,6 +787,22 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     cam.pan(-d.x() * mPerPixel, d.y() * mPerPixel);
   }
   if (!cam.validate()) setCamera(cam);
+}
+
+void ViewportWidget::leaveEvent(QEvent* event) {
+  hover_ = QPointF(-1.0, -1.0);
+  Q_EMIT pixelProbed(std::nullopt);
+  QOpenGLWidget::leaveEvent(event);
+}
+
+// GL current (paintGL, or made current by the caller).
+void ViewportWidget::probeHover() {
+  if (hover_.x() < 0 || !renderer_) return;
+  std::optional<sl::PixelProbe> probe;
+  const qreal dpr = devicePixelRatioF();
+  const int x = int(std::floor(hover_.x() * dpr)), y = int(std::floor(hover_.y() * dpr));
+  if (!outsideView() && x < lastMainWidth_) probe = renderer_->probePixel(x, y);
+  Q_EMIT pixelProbed(probe);
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {

@@ -14,6 +14,8 @@
 #include <QImage>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QPointF>
+#include <QPointF>
 #include <QTimer>
 
 #include "core/Renderer.h"
@@ -118,6 +120,10 @@ class ViewportWidget : public QOpenGLWidget {
   void viewChanged();
   /// A fresh error for the current view, in percent of covered pixels.
   void errorComputed(double errorPct);
+  /// The main camera's pixel under the mouse (the left half in split view), read from the
+  /// last frame on every mouse move and every new frame; nothing when the mouse left the
+  /// view, is over the right half or the outside view is shown.
+  void pixelProbed(const std::optional<sl::PixelProbe>& probe);
 
  protected:
   void initializeGL() override;
@@ -130,6 +136,7 @@ class ViewportWidget : public QOpenGLWidget {
   void mouseReleaseEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
+  void leaveEvent(QEvent* event) override;
   void keyReleaseEvent(QKeyEvent* event) override;
   void focusOutEvent(QFocusEvent* event) override;
 
@@ -163,6 +170,9 @@ class ViewportWidget : public QOpenGLWidget {
   bool pausedBadge_ = true;
   int pendingSteps_ = 0;
   QSize lastFrameSize_;
+  int lastMainWidth_ = 0;      ///< device pixels of the main renderer's part of the view
+  QPointF hover_{-1.0, -1.0};  ///< the mouse over the view (widget pixels), -1: not over it
+  void probeHover();           ///< reads the pixel under hover_ and emits pixelProbed
   std::shared_ptr<const sl::Scene> scene_;
   std::string techniqueId_;
   sl::Camera camera_;

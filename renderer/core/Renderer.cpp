@@ -813,6 +813,31 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   return std::nullopt;
 }
 
+std::optional<PixelProbe> Renderer::probePixel(int x, int y) const {
+  const Targets& t = s_->targets;
+  if (t.width == 0 || x < 0 || y < 0 || x >= t.width || y >= t.height) return std::nullopt;
+  const int row = t.height - 1 - y;  // GL textures: bottom row first
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  auto read = [&](const gl::Texture& tex, GLenum format, GLenum type, GLsizei bytes, void* out) {
+    glGetTextureSubImage(tex.id(), 0, x, row, 0, 1, 1, 1, format, type, bytes, out);
+  };
+  PixelProbe p;
+  p.x = x;
+  p.y = y;
+  glm::vec4 position(0.0f);
+  read(t.position, GL_RGBA, GL_FLOAT, sizeof(position), &position);
+  p.covered = position.w > 0.0f;
+  if (!p.covered) return p;
+  p.worldM = glm::vec3(position);
+  read(t.hard, GL_RED_INTEGER, GL_UNSIGNED_BYTE, 1, &p.hard);
+  read(t.aliasing, GL_RED, GL_FLOAT, sizeof(float), &p.aliasing);
+  std::uint8_t map = 0;
+  read(t.mapIndex, GL_RED_INTEGER, GL_UNSIGNED_BYTE, 1, &map);
+  p.map = map;
+  read(t.texel, GL_RG, GL_FLOAT, sizeof(glm::vec2), &p.mapUv);
+  return p;
+}
+
 FrameReadback Renderer::readback() const {
   const Targets& t = s_->targets;
   FrameReadback r;

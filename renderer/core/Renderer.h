@@ -182,6 +182,18 @@ struct FrameReadback {
   ImageRGBA8 outside;
 };
 
+/// What the last frame's main camera saw at one pixel (Renderer::probePixel): the view's
+/// hover readout, e.g. the Omni map panel's marker of the map texel a pixel looks up.
+struct PixelProbe {
+  int x = 0, y = 0;         ///< the pixel, row 0 = top
+  bool covered = false;     ///< a surface is there (else the rest is zero)
+  glm::vec3 worldM{0.0f};   ///< its world position (metres)
+  std::uint8_t hard = 255;  ///< the technique's hard test (SL_MASK_*)
+  float aliasing = 0.0f;    ///< m there
+  int map = 0;              ///< the map the lookup selected (face, hemisphere, cascade...)
+  glm::vec2 mapUv{0.0f};    ///< the uv it looked up in that map
+};
+
 /// One entry of a technique list: what it is, and how to make one (GL current; throws
 /// std::runtime_error or gl::ShaderError when it cannot).
 struct TechniqueEntry {
@@ -263,6 +275,9 @@ class Renderer {
 
   /// Reads the last frame back (positions, normals, hard mask, colour).
   FrameReadback readback() const;
+  /// Reads one pixel of the last frame (x right, y down from the top row; GL current):
+  /// nothing before a frame or outside it. A few bytes: cheap enough for every mouse move.
+  std::optional<PixelProbe> probePixel(int x, int y) const;
   /// Exact reference for the last frame (Embree, cached per scene) and the error.
   struct ErrorResult {
     ShadowErrorStats stats;

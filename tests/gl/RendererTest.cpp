@@ -98,5 +98,38 @@ TEST(Renderer, TimerQueriesAreReadAFrameLateWithoutWaiting) {
   test::expectNoGlErrors(*r);
 }
 
+TEST(Renderer, ProbePixelReadsWhatTheLastFrameReadsBack) {
+  // The view's hover readout: one pixel of each target, the same values readback() holds
+  // (row 0 = top), covered or not; nothing outside the frame or before one.
+  auto r = test::makeRenderer("omni-room", "cube");
+  ASSERT_TRUE(r);
+  EXPECT_FALSE(r->probePixel(0, 0));  // no frame yet
+  ASSERT_FALSE(r->renderFrame(64, 48, 0));
+  const FrameReadback f = r->readback();
+  int covered = 0, faces = 0;
+  for (const auto& [x, y] : {std::pair{0, 0}, {63, 0}, {0, 47}, {63, 47}, {31, 23}, {10, 40}}) {
+    const std::optional<PixelProbe> p = r->probePixel(x, y);
+    ASSERT_TRUE(p);
+    const std::size_t i = std::size_t(y) * 64 + std::size_t(x);
+    EXPECT_EQ(p->x, x);
+    EXPECT_EQ(p->y, y);
+    ASSERT_EQ(p->covered, f.positions[i].w > 0.0f);
+    if (!p->covered) continue;
+    ++covered;
+    faces |= 1 << p->map;
+    EXPECT_EQ(p->worldM, glm::vec3(f.positions[i]));
+    EXPECT_EQ(p->hard, f.hardMask[i]);
+    EXPECT_EQ(p->aliasing, f.aliasing[i]);
+    EXPECT_EQ(p->map, int(f.mapIndex[i]));
+    EXPECT_EQ(p->mapUv, f.texel[i]);
+  }
+  EXPECT_GE(covered, 5);
+  EXPECT_GT(faces & (faces - 1), 0);  // more than one cube face among the pixels
+  EXPECT_FALSE(r->probePixel(64, 0));
+  EXPECT_FALSE(r->probePixel(0, 48));
+  EXPECT_FALSE(r->probePixel(-1, 3));
+  test::expectNoGlErrors(*r);
+}
+
 }  // namespace
 }  // namespace sl

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The GUI on omni-room: the Omni map panel draws the cube as an unfolded cross (six faces)
 # and the dual paraboloid as two discs (published.json: what the panel drew); both PNGs are
-# real pictures.
+# real pictures. Then its marker (self-test omni-probe): the mouse over the view puts it on
+# the face (cube) or hemisphere and uv that algo/omni computes for the pixel's direction from
+# the light; leaving the view removes it.
 # usage: grab_omni.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1
@@ -32,3 +34,19 @@ dp = json.load(open(f"{out}/dual-paraboloid/published.json"))["panels"]["omni"]
 assert dp["kind"] == "paraboloid" and dp["maps"] == 2 and dp["density_ratio_analytic"] == 4, dp
 print("ok: omni panel: cube cross of 6 faces, paraboloid 2 discs")
 PY
+
+for t in cube dual-paraboloid; do
+  rc=0
+  timeout 240 "$app" --scene omni-room --technique $t --set resolution=256 --set bias.normal=0 \
+    --self-test "omni-probe=$out/probe-$t" >"$out/probe-$t.stdout" 2>"$out/probe-$t.stderr" || rc=$?
+  echo "[marker: $t]"
+  cat "$out/probe-$t.stdout"
+  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/probe-$t.stdout"; then
+    echo "FAIL: self-test omni-probe ($t) exited with $rc; stderr:"
+    cat "$out/probe-$t.stderr"
+    exit 1
+  fi
+  [[ $(grep -c "^ok   pixel" "$out/probe-$t.stdout") -ge 3 ]] || { echo "FAIL: under 3 pixels checked"; exit 1; }
+  python3 "$here/pngstats.py" --min-colors 16 --min-stddev 8 "$out/probe-$t/omni-probe.png"
+done
+echo "PASS"

@@ -217,6 +217,8 @@ class PublicationPanel : public QWidget {
   virtual QJsonObject drawnValues() const { return {}; }
   /// Forgets accumulated history (new scene or technique).
   virtual void resetHistory() {}
+  /// The view's pixel under the mouse (ViewportWidget::pixelProbed), or nothing.
+  virtual void showProbe(const std::optional<sl::PixelProbe>& probe) { (void)probe; }
 
  Q_SIGNALS:
   /// The panel asks the window to move the light (degrees; e.g. a click on the Storage

@@ -1,15 +1,18 @@
 // The Omni map panel (see OmniMapPanel.h).
 #include "OmniMapPanel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include <QCheckBox>
 #include <QLabel>
 #include <QPainter>
+#include <QPen>
 #include <QVBoxLayout>
 
 #include "algo/omni/OmniMapping.h"
+#include "common/shared_constants.h"
 
 namespace sl::ui {
 
@@ -47,6 +50,10 @@ OmniMapPanel::OmniMapPanel(QWidget* parent) : PublicationPanel(parent) {
   info_->setObjectName(QStringLiteral("omniInfo"));
   info_->setWordWrap(true);
   layout->addWidget(info_);
+  probeInfo_ = new QLabel(tr("Hover over the view: a marker shows the texel its pixel looks up."));
+  probeInfo_->setObjectName(QStringLiteral("omniProbe"));
+  probeInfo_->setWordWrap(true);
+  layout->addWidget(probeInfo_);
   setContent(content);
   connect(density_, &QCheckBox::toggled, this, [this] { redraw(); });
 }
@@ -158,6 +165,65 @@ void OmniMapPanel::redraw() {
         .arg(d >= 1.0f ? QObject::tr("1 (empty)") : formatValue(d), formatValue(std::exp2(l)));
   });
   view_->setCaption(kind_ == QLatin1String("cube") ? tr("cube faces") : tr("paraboloid discs"));
+  view_->setOverlay([this](QPainter& p, const QRectF& r) { drawProbe(p, r); });
+}
+
+std::optional<QPointF> OmniMapPanel::probeInLayout() const {
+  if (!depth_ || !probe_ || !probe_->covered) return std::nullopt;
+  const bool cube = kind_ == QLatin1String("cube");
+  const int maps = cube ? omni::kCubeFaces : 2;
+  if (probe_->map < 0 || probe_->map >= maps) return std::nullopt;
+  const int cell = depth_->height / (cube ? 3 : 1);
+  const Cell c = cube ? kCross[probe_->map] : Cell{probe_->map, 0, false};
+  const double u = std::clamp(double(probe_->mapUv.x), 0.0, 1.0);
+  const double v = std::clamp(double(probe_->mapUv.y), 0.0, 1.0);
+  return QPointF((c.col + (c.rotate ? 1.0 - u : u)) * cell,
+                 (c.row + (c.rotate ? 1.0 - v : v)) * cell);
+}
+
+void OmniMapPanel::drawProbe(QPainter& painter, const QRectF& imageRect) const {
+  const std::optional<QPointF> at = probeInLayout();
+  if (!at) return;
+  const QPointF p(imageRect.left() + at->x() / depth_->width * imageRect.width(),
+                  imageRect.bottom() - at->y() / depth_->height * imageRect.height());
+  painter.setRenderHint(QPainter::Antialiasing);
+  for (const auto& [colour, width] :
+       {std::pair{QColor(0, 0, 0), 4.0}, {QColor(255, 64, 200), 2.0}}) {
+    painter.setPen(QPen(colour, width));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawEllipse(p, 7.0, 7.0);
+    painter.drawLine(p - QPointF(13, 0), p - QPointF(8, 0));
+    painter.drawLine(p + QPointF(8, 0), p + QPointF(13, 0));
+    painter.drawLine(p - QPointF(0, 13), p - QPointF(0, 8));
+    painter.drawLine(p + QPointF(0, 8), p + QPointF(0, 13));
+  }
+}
+
+void OmniMapPanel::showProbe(const std::optional<sl::PixelProbe>& probe) {
+  probe_ = probe;
+  if (!probe) {
+    probeInfo_->setText(tr("Hover over the view: a marker shows the texel its pixel looks up."));
+  } else if (!probe->covered) {
+    probeInfo_->setText(tr("Pixel (%1, %2): no surface.").arg(probe->x).arg(probe->y));
+  } else if (!probeInLayout()) {
+    probeInfo_->setText(
+        tr("Pixel (%1, %2): not looked up in an omni map.").arg(probe->x).arg(probe->y));
+  } else {
+    const bool cube = kind_ == QLatin1String("cube");
+    const QString map = cube ? tr("face %1").arg(QString::fromUtf8(omni::cubeFaceName(probe->map)))
+                             : tr("hemisphere %1").arg(probe->map);
+    probeInfo_->setText(tr("Pixel (%1, %2) looks up %3 at uv (%4, %5), texel (%6, %7): %8, m = %9.")
+                            .arg(probe->x)
+                            .arg(probe->y)
+                            .arg(map)
+                            .arg(probe->mapUv.x, 0, 'f', 3)
+                            .arg(probe->mapUv.y, 0, 'f', 3)
+                            .arg(int(probe->mapUv.x * resolution_))
+                            .arg(int(probe->mapUv.y * resolution_))
+                            .arg(probe->hard == SL_MASK_LIT ? tr("lit") : tr("shadowed"))
+                            .arg(formatValue(probe->aliasing)));
+  }
+  view_->update();
 }
 
 void OmniMapPanel::highlightPass(const QString& passId) {
@@ -166,7 +232,15 @@ void OmniMapPanel::highlightPass(const QString& passId) {
 }
 
 QJsonObject OmniMapPanel::drawnValues() const {
-  return drawn_;
+  QJsonObject drawn = drawn_;
+  if (const std::optional<QPointF> at = probeInLayout()) {
+    drawn[QStringLiteral("probe_map")] = probe_->map;
+    drawn[QStringLiteral("probe_u")] = probe_->mapUv.x;
+    drawn[QStringLiteral("probe_v")] = probe_->mapUv.y;
+    drawn[QStringLiteral("probe_layout_x")] = at->x();  // texels of the drawn layout, v up
+    drawn[QStringLiteral("probe_layout_y")] = at->y();
+  }
+  return drawn;
 }
 
 }  // namespace sl::ui

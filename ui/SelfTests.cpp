@@ -313,6 +313,31 @@ bool SelfTests::charts(const QString& dir) {
   }
   check(measured, QStringLiteral("3 configurations x 2 frames measured"));
   if (!measured) return false;
+  // The default sweep compares with a baseline that renders the view's light: uniform
+  // refuses a point light, so there the other omni map (cube <-> dual-paraboloid).
+  const sl::Light sun = w_.viewport_->light();
+  for (const auto& [shown, light, expected] :
+       {std::tuple{"cube", sl::Light::point({0, 2, 0}),
+                   "cube:resolution=512,1024,2048 "
+                   "dual-paraboloid:resolution=512,1024,2048"},
+        {"dual-paraboloid", sl::Light::point({0, 2, 0}),
+         "dual-paraboloid:resolution=512,1024,2048 cube:resolution=512,1024,2048"},
+        {"uniform", sl::Light::point({0, 2, 0}), "cube:resolution=512,1024,2048"},
+        {"cube", sl::Light::spot({0, 2, 0}, {0, -1, 0}, 40.0f),
+         "cube:resolution=512,1024,2048 uniform:resolution=512,1024,2048"}}) {
+    w_.viewport_->setLight(light);
+    const QString previous = QString::fromStdString(w_.viewport_->techniqueId());
+    w_.viewport_->setTechnique(shown);
+    const QString sweep = w_.chartsPanel_->defaultSweepText();
+    check(sweep == QLatin1String(expected),
+          tr("default sweep with %1 and a %2 light: \"%3\"")
+              .arg(QLatin1String(shown),
+                   light.type == sl::LightType::Point ? QStringLiteral("point")
+                                                      : QStringLiteral("spot"),
+                   sweep));
+    w_.viewport_->setTechnique(previous.toStdString());
+  }
+  w_.viewport_->setLight(sun);
   QCoreApplication::processEvents();
   if (!dir.isEmpty()) {
     QDir().mkpath(dir);

@@ -47,11 +47,14 @@ ChartsPanel::ChartsPanel(ViewportWidget* viewport, QWidget* parent)
   auto* row = new QHBoxLayout;
   sweepEdit_ = new QLineEdit;
   sweepEdit_->setObjectName(QStringLiteral("chartsSweep"));
-  sweepEdit_->setPlaceholderText(tr("current technique and uniform at 3 resolutions"));
+  sweepEdit_->setPlaceholderText(
+      tr("current technique and a baseline (uniform; for a point light the other omni map) at 3 "
+         "resolutions"));
   sweepEdit_->setToolTip(
       tr("Configurations, as in shadowlab-cli bench --technique: ID[:KEY=V1,V2,...], several "
          "separated by spaces (e.g. \"uniform:resolution=512,1024 rtw-backward\"). Empty: the "
-         "technique shown and uniform at 3 resolutions each."));
+         "technique shown and a baseline that renders the view's light (uniform; for a point "
+         "light the other omni map), at 3 resolutions each."));
   row->addWidget(sweepEdit_, 1);
   framesSpin_ = new QSpinBox;
   framesSpin_->setRange(1, 100);
@@ -146,17 +149,35 @@ double ChartsPanel::chartXOf(const Config& c) const {
 }
 
 QString ChartsPanel::defaultSweepText() const {
+  // The technique shown and a baseline that renders the view's light: uniform for a sun or
+  // a spot, the other omni map (cube / dual-paraboloid) for a point light, which uniform
+  // refuses.
   const QString current = QString::fromStdString(viewport_->techniqueId());
+  const sl::LightType light = viewport_->light().type;
+  auto renders = [&](const sl::TechniqueInfo& info) {
+    return std::find(info.lights.begin(), info.lights.end(), light) != info.lights.end();
+  };
   QStringList parts;
-  auto add = [&](const QString& id) {
-    const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id.toStdString());
-    if (!info) return;
-    const bool hasRes = std::any_of(info->params.begin(), info->params.end(),
+  auto add = [&](const sl::TechniqueInfo& info) {
+    const QString id = QString::fromStdString(info.id);
+    const bool hasRes = std::any_of(info.params.begin(), info.params.end(),
                                     [](const sl::ParamDecl& d) { return d.key == "resolution"; });
     parts << (hasRes ? id + QStringLiteral(":resolution=512,1024,2048") : id);
   };
-  if (!current.isEmpty() && current != QLatin1String("uniform")) add(current);
-  add(QStringLiteral("uniform"));
+  const sl::TechniqueInfo* shown = sl::Renderer::findTechnique(current.toStdString());
+  if (shown && renders(*shown)) add(*shown);
+  const sl::TechniqueInfo* uniform = sl::Renderer::findTechnique("uniform");
+  if (uniform && renders(*uniform)) {
+    if (uniform != shown) add(*uniform);
+    return parts.join(QLatin1Char(' '));
+  }
+  for (const sl::TechniqueInfo& info : sl::Renderer::techniques())
+    if (&info != shown && renders(info) &&
+        std::find(info.lights.begin(), info.lights.end(), sl::LightType::Directional) ==
+            info.lights.end()) {
+      add(info);  // the first omni technique that is not the one shown
+      break;
+    }
   return parts.join(QLatin1Char(' '));
 }
 

@@ -71,6 +71,9 @@ class ChartsPanel : public QWidget {
   /// Drops the sweep renderer (call with nothing else using the context; the viewport's
   /// renderer is about to go).
   void releaseRenderer();
+  /// The sweep an empty text runs: the technique shown and a baseline that renders the
+  /// view's light, each at 3 resolutions.
+  QString defaultSweepText() const;
 
   QSize sizeHint() const override { return {520, 420}; }
 
@@ -85,7 +88,6 @@ class ChartsPanel : public QWidget {
   void redrawChart();
   /// Where configuration c sits on the x axis now (ms, or bytes in the axis' unit).
   double chartXOf(const Config& c) const;
-  QString defaultSweepText() const;
   /// Parses the sweep text into configs_; the error, or empty.
   QString parseSweep(const QString& text);
 

@@ -35,7 +35,49 @@ glm::dvec2 texelInMap(const SeamCase& sc, int map, const glm::dvec3& d) {
   return uv * double(sc.resolution);
 }
 
-class OmniAliasing : public ::testing::TestWithParam<SeamCase> {};
+/// The 2x2 quad of a pixel in a frame read back (row 0 = top; the quads of an even-sized
+/// frame pair the same rows either way): the pixel, its x and y partners.
+struct Quad {
+  std::size_t i, ix, iy;
+  Quad(int x, int y, int w) {
+    i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+    ix = std::size_t(y) * std::size_t(w) + std::size_t(x ^ 1);
+    iy = std::size_t(y ^ 1) * std::size_t(w) + std::size_t(x);
+  }
+  bool covered(const FrameReadback& f) const {
+    return f.positions[i].w > 0.0f && f.positions[ix].w > 0.0f && f.positions[iy].w > 0.0f;
+  }
+  bool seam(const FrameReadback& f) const {
+    return f.mapIndex[ix] != f.mapIndex[i] || f.mapIndex[iy] != f.mapIndex[i];
+  }
+};
+
+/// m of the pixel as one finite difference in ITS map: the partners' directions from the
+/// light `L` mapped into the pixel's map.
+double finiteDifferenceM(const SeamCase& sc, const FrameReadback& f, const Quad& q,
+                         const glm::dvec3& L) {
+  auto dir = [&](std::size_t j) { return glm::dvec3(glm::vec3(f.positions[j])) - L; };
+  const int map = f.mapIndex[q.i];
+  const glm::dvec2 t = texelInMap(sc, map, dir(q.i));
+  const glm::dvec2 dX = texelInMap(sc, map, dir(q.ix)) - t;
+  const glm::dvec2 dY = texelInMap(sc, map, dir(q.iy)) - t;
+  return 1.0 / std::sqrt(std::abs(dX.x * dY.y - dX.y * dY.x));
+}
+
+class OmniAliasing : public ::testing::TestWithParam<SeamCase> {
+ protected:
+  /// omni-room with the case's technique and resolution, without the normal offset (the
+  /// texel looked up is the surface point's own).
+  void SetUp() override {
+    r = test::makeRenderer("omni-room", GetParam().technique);
+    ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().set("bias.normal", 0.0));
+    ASSERT_FALSE(r->params().set("resolution", GetParam().resolution));
+    L = glm::dvec3(r->light().positionM);
+  }
+  std::unique_ptr<Renderer> r;
+  glm::dvec3 L{0.0};
+};
 
 TEST_P(OmniAliasing, MeasuredMIsTheMappingsDensityEverywhereIncludingSeams) {
   // The camera stands at the light and looks along the 14 sphere directions, rolled 30° so
@@ -48,11 +90,6 @@ TEST_P(OmniAliasing, MeasuredMIsTheMappingsDensityEverywhereIncludingSeams) {
   //    difference where m changes by up to 3 % per pixel near a cube corner).
   // Measured across two maps, a seam pixel's m is off by orders of magnitude.
   const SeamCase sc = GetParam();
-  auto r = test::makeRenderer("omni-room", sc.technique);
-  ASSERT_TRUE(r);
-  ASSERT_FALSE(r->params().set("bias.normal", 0.0));
-  ASSERT_FALSE(r->params().set("resolution", sc.resolution));
-  const glm::dvec3 L(r->light().positionM);
   const omni::ParaboloidFrame frame = omni::paraboloidFrame({0, 1, 0});
   const int size = 96;
   const double fovYDeg = 100.0, roll = glm::radians(30.0);
@@ -74,21 +111,15 @@ TEST_P(OmniAliasing, MeasuredMIsTheMappingsDensityEverywhereIncludingSeams) {
     r->setCamera(c);
     ASSERT_FALSE(r->renderFrame(size, size, 0));
     const FrameReadback fr = r->readback();
-    auto dir = [&](std::size_t i) { return glm::dvec3(glm::vec3(fr.positions[i])) - L; };
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x) {
-        const std::size_t i = std::size_t(y) * size + std::size_t(x);
-        const std::size_t ix = std::size_t(y) * size + std::size_t(x ^ 1);
-        const std::size_t iy = std::size_t(y ^ 1) * size + std::size_t(x);
-        if (fr.positions[i].w <= 0.0f || fr.positions[ix].w <= 0.0f || fr.positions[iy].w <= 0.0f)
-          continue;
+        const Quad q(x, y, size);
+        if (!q.covered(fr)) continue;
+        const std::size_t i = q.i;
         const int map = fr.mapIndex[i];
-        const bool seam = fr.mapIndex[ix] != map || fr.mapIndex[iy] != map;
-        const glm::dvec2 t = texelInMap(sc, map, dir(i));
-        const glm::dvec2 dX = texelInMap(sc, map, dir(ix)) - t;
-        const glm::dvec2 dY = texelInMap(sc, map, dir(iy)) - t;
-        const double finiteDifference = 1.0 / std::sqrt(std::abs(dX.x * dY.y - dX.y * dY.x));
-        const glm::dvec3 d = glm::normalize(dir(i));
+        const bool seam = q.seam(fr);
+        const double finiteDifference = finiteDifferenceM(sc, fr, q, L);
+        const glm::dvec3 d = glm::normalize(glm::dvec3(glm::vec3(fr.positions[i])) - L);
         const double cosA = glm::dot(d, forward);
         const double density = std::string(sc.technique) == "cube"
                                    ? omni::cubeTexelsPerSteradian(d, sc.resolution)
@@ -115,6 +146,51 @@ TEST_P(OmniAliasing, MeasuredMIsTheMappingsDensityEverywhereIncludingSeams) {
       sc.technique, sc.resolution, compared, seamPixels, worstFd, worstDensity);
   EXPECT_GT(compared, 100000u);
   EXPECT_GT(seamPixels, 1000u);  // the seams are in the test
+  test::expectNoGlErrors(*r);
+}
+
+TEST_P(OmniAliasing, MeasuredMIsOneMapsFiniteDifferenceFromEveryBookmark) {
+  // From the scene's own cameras (not at the light): per covered pixel whose quad partners
+  // are covered, m = 1/sqrt(|dX x dY|) with dX, dY the partners' texels minus the pixel's,
+  // all in the pixel's own map (the partners' surface points mapped into it), within 1 %
+  // (float32 differences on grazing surfaces); seam pixels included, silhouettes not.
+  // Without the normal offset, so the texel is the point's own.
+  const SeamCase sc = GetParam();
+  const int w = 320, h = 180;
+  std::size_t seamPixels = 0, compared = 0;
+  for (const CameraBookmark& b : r->scene()->cameras) {
+    SCOPED_TRACE(b.name);
+    r->setCamera(b.camera);
+    ASSERT_FALSE(r->renderFrame(w, h, 0));
+    const FrameReadback fr = r->readback();
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const Quad q(x, y, w);
+        if (!q.covered(fr)) continue;
+        const std::size_t i = q.i;
+        // On one plane only: across a silhouette the partner may look the light up in any
+        // direction and a finite difference means nothing (and float32 cancels).
+        const glm::vec3 N(fr.normals[i]);
+        auto onPlane = [&](std::size_t j) {
+          return glm::dot(N, glm::vec3(fr.normals[j])) > 0.999f &&
+                 std::abs(glm::dot(N, glm::vec3(fr.positions[j] - fr.positions[i]))) < 1e-3f;
+        };
+        if (!onPlane(q.ix) || !onPlane(q.iy)) continue;
+        const int map = fr.mapIndex[i];
+        const double expected = finiteDifferenceM(sc, fr, q, L);
+        ++compared;
+        const bool seam = q.seam(fr);
+        seamPixels += seam;
+        if (std::abs(fr.aliasing[i] / expected - 1.0) >= 1e-2) {
+          ADD_FAILURE() << "pixel (" << x << ", " << y << ") of map " << map
+                        << (seam ? " at a seam" : "") << ": m " << fr.aliasing[i]
+                        << ", finite difference " << expected;
+          return;
+        }
+      }
+  }
+  std::printf("%s: %zu pixels, %zu at seams\n", sc.technique, compared, seamPixels);
+  EXPECT_GT(seamPixels, 100u);
   test::expectNoGlErrors(*r);
 }
 

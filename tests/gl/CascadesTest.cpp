@@ -94,7 +94,8 @@ TEST(Cascades, WarpedCascadesBeatPlainOnCorridor) {
     r->setCamera(*test::bookmark(*r->scene(), "start"));
     for (const auto& [k, v] : sets) EXPECT_FALSE(r->params().set(k, v)) << k;
     std::set<std::string> keys = {"aliasing.p95", "partition.*.warped",
-                                  "partition.*.warp.fallback_cause", "partition.*.slice_uv"};
+                                  "partition.*.warp.fallback_cause", "partition.*.slice_uv",
+                                  "partition.*.warp.eta"};
     r->requestPublications(keys);
     for (int f = 0; f < 3; ++f) EXPECT_FALSE(r->renderFrame(320, 180, 0));
     const Publication& pub = r->publication();
@@ -105,6 +106,8 @@ TEST(Cascades, WarpedCascadesBeatPlainOnCorridor) {
         const std::string k = "partition." + std::to_string(i);
         EXPECT_EQ(pub.numbers.at(k + ".warped"), warp ? 1.0 : 0.0) << k;
         EXPECT_EQ(pub.numbers.at(k + ".warp.fallback_cause"), 0.0) << k;
+        // The eta the Partitions panel names the warp by: the warp.eta used, -1 unwarped.
+        EXPECT_EQ(pub.numbers.at(k + ".warp.eta"), warp ? r->params().get("warp.eta") : -1.0) << k;
         // The slice outline: whole segments (4 values each), some of it on the map.
         const std::vector<float>& uv = pub.curves.at(k + ".slice_uv");
         EXPECT_EQ(uv.size() % 4, 0u);

@@ -170,6 +170,12 @@ TechniqueInfo CascadedShadowMap::info() {
        "suites count non-finite numbers).",
        "",
        {}},
+      {"partition.*.warp.eta",
+       PublicationKind::Number,
+       "The eta of partition i's warp (Lloyd et al.'s eq. 11: 0 LiSPSM, 1 PSM, towards -1 "
+       "uniform); -1 when unwarped.",
+       "",
+       {}},
       {"partition.*.slice_uv",
        PublicationKind::Curve,
        "Partition i's slice of the view frustum in its map's uv (0..1 = the map): the 12 edges "
@@ -328,6 +334,7 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, key + ".warp.fallback_cause",
                   p.warpFit ? double(int(p.warpFit->fallbackCause)) : 0.0);
     publishNumber(ctx, key + ".warp.n_prime", p.warped() ? p.warpFit->nPrime : 0.0);
+    publishNumber(ctx, key + ".warp.eta", p.warped() ? p.warpFit->eta : -1.0);
     publishValues(ctx, key + ".slice_uv", p.sliceUv);
   }
 }

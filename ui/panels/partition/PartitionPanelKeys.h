@@ -19,6 +19,7 @@ inline std::set<std::string> partitionsPanelKeys() {
           "partition.*.warped",
           "partition.*.warp.fallback_cause",
           "partition.*.warp.n_prime",
+          "partition.*.warp.eta",
           "partition.*.slice_uv",
           "depth.near",
           "depth.far",

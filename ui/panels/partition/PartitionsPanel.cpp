@@ -118,7 +118,11 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
     const int cause = int(number(pub, key + ".warp.fallback_cause", 0.0));
     QString warpText = QStringLiteral("–");
     if (warped > 0.5) {
-      warpText = tr("LiSPSM, n' %1 m").arg(formatValue(number(pub, key + ".warp.n_prime", 0.0)));
+      // Lloyd et al.'s eta: 0 is LiSPSM's n'; any other eta is the generalised warp.
+      const double eta = number(pub, key + ".warp.eta", 0.0);
+      const QString kind =
+          std::abs(eta) < 1e-9 ? tr("LiSPSM") : tr("warp η = %1").arg(formatValue(eta));
+      warpText = tr("%1, n' %2 m").arg(kind, formatValue(number(pub, key + ".warp.n_prime", 0.0)));
       anyWarp = true;
     } else if (cause > 0) {
       const auto c =

@@ -136,6 +136,31 @@ TEST(Pages, ExhaustedPoolCoarsensTheFinestLevelAndCountsIt) {
   EXPECT_EQ(t1.resolve(PageId{0, 7, 7}).slot, 0);
 }
 
+TEST(Pages, CappedQuadtreeKeepsItsWholeTopLevel) {
+  // 4096² in 128² pages would be 6 levels (32 .. 1 a side); cut at 3: 32, 16, 8 a side.
+  const VirtualLayout capped{.virtualResolution = 4096, .pageSize = 128, .maxLevels = 3};
+  EXPECT_EQ(capped.levels(), 3);
+  EXPECT_EQ(capped.topPages(), 64);
+  EXPECT_EQ((VirtualLayout{4096, 128, 0}).validate(),
+            "the page quadtree needs 1..14 levels, got at most 0");
+  PageTable table(capped);
+  PagePool small(63);
+  EXPECT_THROW(allocatePages({}, small, table), std::invalid_argument);
+  // 64 top pages + 3 requests = 67 > 66: level 0 moves up, (1,0,0) twice, (1,15,15).
+  PagePool pool(66);
+  const std::vector<PageKey> requests = {key(0, 0, 0), key(0, 1, 0), key(0, 31, 31)};
+  const Allocation a = allocatePages(requests, pool, table);
+  EXPECT_EQ(a.coarsened, 3);
+  EXPECT_EQ(a.coarseningSteps, 1);
+  ASSERT_EQ(a.pages.size(), 66u);
+  EXPECT_EQ(a.pages[0], (PageId{2, 0, 0}));
+  EXPECT_EQ(a.pages[9], (PageId{2, 1, 1}));  // row by row
+  EXPECT_EQ(a.pages[64], (PageId{1, 0, 0}));
+  EXPECT_EQ(a.pages[65], (PageId{1, 15, 15}));
+  EXPECT_EQ(table.resolve(PageId{0, 20, 4}).page, (PageId{2, 5, 1}));
+  EXPECT_EQ(table.resolve(PageId{0, 1, 1}).page, (PageId{1, 0, 0}));
+}
+
 TEST(Pages, RequestLevelIsTheFloorOfLog2SqrtArea) {
   const float t = 1.0f / 1024.0f;                              // one virtual texel of kSmall
   EXPECT_EQ(requestLevel({t, 0}, {0, t}, kSmall), 0);          // A = 1
@@ -147,6 +172,9 @@ TEST(Pages, RequestLevelIsTheFloorOfLog2SqrtArea) {
   EXPECT_EQ(requestLevel({0.5f, 0}, {0, 0.5f}, kSmall), 3);             // clamped to the top
   EXPECT_EQ(requestLevel({t, 0}, {2 * t, 0}, kSmall), 0);               // A = 0: finest
   EXPECT_EQ(requestLevel({0.5f * t, 0}, {0, 0.5f * t}, kSmall), 0);     // finer than a texel
+  EXPECT_EQ(requestLevel({4 * t, 0}, {0, 4 * t}, kSmall, 1), 1);        // lod.bias 1: finer
+  EXPECT_EQ(requestLevel({4 * t, 0}, {0, 4 * t}, kSmall, 3), 0);        // clamped at 0
+  EXPECT_EQ(requestLevel({0.5f, 0}, {0, 0.5f}, kSmall, 1), 3);          // log2 512 - 1 = 8: top
 }
 
 TEST(Pages, RequestPageIsThePageContainingTheUv) {

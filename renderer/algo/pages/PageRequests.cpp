@@ -9,14 +9,14 @@
 
 namespace sl::pages {
 
-int requestLevel(glm::vec2 dUvDx, glm::vec2 dUvDy, const VirtualLayout& layout) {
+int requestLevel(glm::vec2 dUvDx, glm::vec2 dUvDy, const VirtualLayout& layout, int lodBias) {
   const float v = static_cast<float>(layout.virtualResolution);
   const glm::vec2 dX = dUvDx * v;
   const glm::vec2 dY = dUvDy * v;
   const float area = std::abs(dX.x * dY.y - dX.y * dY.x);
   if (!(area > 0.0f)) return 0;
   const float lod = 0.5f * std::log2(area);  // log2(sqrt(A))
-  const int level = static_cast<int>(std::floor(lod));
+  const int level = static_cast<int>(std::floor(lod)) - lodBias;
   return std::clamp(level, 0, layout.topLevel());
 }
 
@@ -45,7 +45,7 @@ glm::vec2 screenStep(const PixelUv& here, const PixelUv* next, const PixelUv* pr
 }  // namespace
 
 std::vector<PageKey> pixelRequests(std::span<const PixelUv> pixels, int width, int height,
-                                   const VirtualLayout& layout) {
+                                   const VirtualLayout& layout, int lodBias) {
   checkSize(pixels.size(), width, height);
   std::vector<PageKey> out(pixels.size(), kNoPage);
   auto at = [&](int x, int y) -> const PixelUv* {
@@ -59,7 +59,7 @@ std::vector<PageKey> pixelRequests(std::span<const PixelUv> pixels, int width, i
       const glm::vec2 dX = screenStep(p, at(x + 1, y), at(x - 1, y));
       const glm::vec2 dY = screenStep(p, at(x, y + 1), at(x, y - 1));
       out[static_cast<std::size_t>(y) * width + x] =
-          requestPage(p.st, requestLevel(dX, dY, layout), layout);
+          requestPage(p.st, requestLevel(dX, dY, layout, lodBias), layout);
     }
   return out;
 }

@@ -14,10 +14,11 @@
 
 namespace sl::pages {
 
-/// floor(log2(sqrt(|dX × dY|))) with dX, dY the pixel's steps in light uv scaled to virtual
-/// texels, clamped to [0, topLevel]; a degenerate footprint (A = 0) asks for level 0. Float
-/// arithmetic in the shader's order.
-int requestLevel(glm::vec2 dUvDx, glm::vec2 dUvDy, const VirtualLayout& layout);
+/// floor(log2(sqrt(|dX × dY|))) - lodBias with dX, dY the pixel's steps in light uv scaled
+/// to virtual texels, clamped to [0, topLevel]; a degenerate footprint (A = 0) asks for level
+/// 0. lodBias > 0 asks for pages that many levels finer than the footprint (2^bias texels per
+/// pixel side). Float arithmetic in the shader's order.
+int requestLevel(glm::vec2 dUvDx, glm::vec2 dUvDy, const VirtualLayout& layout, int lodBias = 0);
 /// The page at `level` containing light uv `st`; kNoPage outside [0, 1]².
 PageKey requestPage(glm::vec2 st, int level, const VirtualLayout& layout);
 
@@ -32,7 +33,7 @@ struct PixelUv {
 /// derivatives are forward differences to the right / upper neighbour, backward ones at the
 /// last column / row or where that neighbour is not covered, zero when neither is.
 std::vector<PageKey> pixelRequests(std::span<const PixelUv> pixels, int width, int height,
-                                   const VirtualLayout& layout);
+                                   const VirtualLayout& layout, int lodBias = 0);
 /// The dedup step: a pixel keeps its key only when the left (x-1) and lower (y-1)
 /// neighbours ask for a different page (a missing neighbour counts as different).
 std::vector<PageKey> dedupRequests(std::span<const PageKey> requests, int width, int height);

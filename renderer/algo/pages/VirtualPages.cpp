@@ -39,6 +39,9 @@ std::string VirtualLayout::validate() const {
   if (!isPowerOfTwo(virtualResolution) || virtualResolution < pageSize)
     return "virtual.resolution must be a power of two of at least page.size (" +
            std::to_string(pageSize) + "), got " + std::to_string(virtualResolution);
+  if (maxLevels < 1 || maxLevels > SL_PAGE_MAX_LEVELS)
+    return "the page quadtree needs 1.." + std::to_string(SL_PAGE_MAX_LEVELS) +
+           " levels, got at most " + std::to_string(maxLevels);
   if (virtualResolution / pageSize > SL_PAGE_MAX_PER_SIDE)
     return "virtual.resolution / page.size must be at most " +
            std::to_string(SL_PAGE_MAX_PER_SIDE) + " pages per side, got " +
@@ -47,7 +50,7 @@ std::string VirtualLayout::validate() const {
 }
 
 int VirtualLayout::levels() const {
-  return std::countr_zero(static_cast<unsigned>(finestPagesPerSide())) + 1;
+  return std::min(std::countr_zero(static_cast<unsigned>(finestPagesPerSide())) + 1, maxLevels);
 }
 
 PagePool::PagePool(int capacity) : capacity_(capacity) {
@@ -152,16 +155,21 @@ Allocation allocatePages(std::span<const PageKey> uniqueRequests, PagePool& pool
                                   " outside the virtual map");
   table.clear();
 
+  const int top = layout.topLevel();
+  if (pool.capacity() < layout.topPages())
+    throw std::invalid_argument("a pool of " + std::to_string(pool.capacity()) +
+                                " pages cannot hold the " + std::to_string(layout.topPages()) +
+                                " pages of the coarsest level");
+
   Allocation a;
   a.requested = static_cast<int>(wanted.size());
-  const PageId root{layout.topLevel(), 0, 0};
-  const PageKey rootKey = packPage(root);
-  // Coarsen while the requests and the root do not fit: the finest level present moves to
-  // its parents. Each request is counted once, at its first coarsening (`original`).
+  // Coarsen while the requests and the top level do not fit: the finest level present moves
+  // to its parents. Each request is counted once, at its first coarsening (`original`).
   std::vector<char> original(wanted.size(), 1);
   auto pagesNeeded = [&] {
-    const bool hasRoot = std::find(wanted.begin(), wanted.end(), rootKey) != wanted.end();
-    return static_cast<int>(wanted.size()) + (hasRoot ? 0 : 1);
+    int below = 0;
+    for (PageKey k : wanted) below += unpackPage(k).level < top ? 1 : 0;
+    return below + layout.topPages();
   };
   while (pagesNeeded() > pool.capacity()) {
     int finest = layout.topLevel();
@@ -193,15 +201,20 @@ Allocation allocatePages(std::span<const PageKey> uniqueRequests, PagePool& pool
     ++a.coarseningSteps;
   }
 
-  // Coarsest level first (root first), then by row and column.
+  // The whole top level first, then the requests below it: coarsest level first, then by
+  // row and column.
   std::vector<PageId> order;
-  order.push_back(root);
+  const int topSide = layout.pagesPerSide(top);
+  for (int y = 0; y < topSide; ++y)
+    for (int x = 0; x < topSide; ++x) order.push_back(PageId{top, x, y});
+  std::vector<PageId> below;
   for (PageKey k : wanted)
-    if (k != rootKey) order.push_back(unpackPage(k));
-  std::stable_sort(order.begin() + 1, order.end(), [](const PageId& l, const PageId& r) {
+    if (unpackPage(k).level < top) below.push_back(unpackPage(k));
+  std::sort(below.begin(), below.end(), [](const PageId& l, const PageId& r) {
     if (l.level != r.level) return l.level > r.level;
     return packPage(l) < packPage(r);
   });
+  order.insert(order.end(), below.begin(), below.end());
   for (const PageId& p : order) {
     const std::optional<int> s = pool.allocate();
     if (!s) throw std::logic_error("allocatePages: the pool ran out after coarsening");

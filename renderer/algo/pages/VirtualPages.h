@@ -1,11 +1,11 @@
 // The virtual shadow map of resolution-matched shadow maps (Lefohn, Sengupta, Owens 2007;
 // techniques.md §5): a square virtual map cut into pages of `pageSize`² texels, a quadtree
 // whose page table is a mip chain (level 0 = the finest pages, the top level one page over
-// the whole map; an entry = the page's slot in one physical pool), the pool's free-list
-// allocator, allocation of a frame's unique page requests (the pool running out coarsens the
-// finest requested level and counts it, never fails) and the binning of pages into
-// superpages. Plain C++: the `rmsm` technique (renderer/techniques/rmsm) renders what this
-// allocates; the keys are the GPU's (shaders/common/shared_constants.h SL_PAGE_*).
+// the whole map unless the tree is cut at maxLevels; an entry = the page's slot in one physical
+// pool), the pool's free-list allocator, allocation of a frame's unique page requests (the pool
+// running out coarsens the finest requested level and counts it, never fails) and the binning of
+// pages into superpages. Plain C++: the `rmsm` technique (renderer/techniques/rmsm) renders what
+// this allocates; the keys are the GPU's (shaders/common/shared_constants.h SL_PAGE_*).
 #pragma once
 
 #include <cstdint>
@@ -38,11 +38,16 @@ PageId parentPage(PageId p);
 struct VirtualLayout {
   int virtualResolution = 16384;  ///< texels per side of the virtual map (power of two)
   int pageSize = 128;             ///< texels per side of a page (power of two)
+  /// At most this many levels: the quadtree is cut below its root when deeper (the lookup
+  /// holds SL_MAX_DEPTH_MAPS maps, one per level), and its top level has several pages.
+  int maxLevels = SL_PAGE_MAX_LEVELS;
   /// Empty when valid, else a message naming the bad value.
   std::string validate() const;
   int finestPagesPerSide() const { return virtualResolution / pageSize; }
-  int levels() const;  ///< log2(finestPagesPerSide) + 1: level levels()-1 is one page
+  /// min(log2(finestPagesPerSide) + 1, maxLevels): level 0 the finest pages.
+  int levels() const;
   int topLevel() const { return levels() - 1; }
+  int topPages() const { return pagesPerSide(topLevel()) * pagesPerSide(topLevel()); }
   int pagesPerSide(int level) const { return finestPagesPerSide() >> level; }
   /// Virtual texels per page texel at `level` (2^level).
   int texelScale(int level) const { return 1 << level; }
@@ -106,11 +111,12 @@ struct Allocation {
   std::vector<int> slots;     ///< the slot of pages[i]
 };
 
-/// Allocates the root page (the fallback of every lookup) and then `uniqueRequests` (sorted,
-/// unique keys) into an empty pool and table, coarsest level first. When they do not fit,
-/// the requests of the finest level present are replaced by their parents (unique again)
-/// until they do; the root alone always fits a pool of one page. Throws std::invalid_argument
-/// when the pool or the table is not empty or a key lies outside the layout.
+/// Allocates every page of the top level (the fallback of every lookup: one root page
+/// unless maxLevels cut the tree) and then `uniqueRequests` (sorted, unique keys) into an
+/// empty pool and table, coarsest level first. When they do not fit, the requests of the
+/// finest level present are replaced by their parents (unique again) until they do; the top
+/// level alone fits a pool of topPages(). Throws std::invalid_argument when the pool is in
+/// use or smaller than topPages(), or a key lies outside the layout.
 Allocation allocatePages(std::span<const PageKey> uniqueRequests, PagePool& pool, PageTable& table);
 
 /// Pages binned into superpages: square blocks of `superpageSize`² virtual-level texels of

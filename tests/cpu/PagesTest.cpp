@@ -161,6 +161,32 @@ TEST(Pages, CappedQuadtreeKeepsItsWholeTopLevel) {
   EXPECT_EQ(table.resolve(PageId{0, 1, 1}).page, (PageId{1, 0, 0}));
 }
 
+TEST(Pages, FinalisedTableIsResolveOfEveryEntry) {
+  const VirtualLayout capped{.virtualResolution = 4096, .pageSize = 128, .maxLevels = 4};
+  std::mt19937 rng(3);
+  std::vector<PageKey> requests;
+  for (int i = 0; i < 40; ++i) {
+    const int level = int(rng() % 3);
+    const int n = capped.pagesPerSide(level);
+    requests.push_back(key(level, int(rng() % n), int(rng() % n)));
+  }
+  requests = sortUnique(requests);
+  PagePool pool(30);
+  PageTable table(capped);
+  const Allocation a = allocatePages(requests, pool, table);
+  EXPECT_GT(a.coarsened, 0);
+  const std::vector<std::uint32_t> f = table.finalised();
+  std::size_t i = 0;
+  for (int l = 0; l < capped.levels(); ++l)
+    for (int y = 0; y < capped.pagesPerSide(l); ++y)
+      for (int x = 0; x < capped.pagesPerSide(l); ++x, ++i) {
+        const ResolvedPage r = table.resolve(PageId{l, x, y});
+        ASSERT_GE(r.slot, 0);
+        EXPECT_EQ(f[i], (std::uint32_t(r.slot) << 5) | std::uint32_t(r.page.level));
+      }
+  EXPECT_EQ(i, f.size());
+}
+
 TEST(Pages, RequestLevelIsTheFloorOfLog2SqrtArea) {
   const float t = 1.0f / 1024.0f;                              // one virtual texel of kSmall
   EXPECT_EQ(requestLevel({t, 0}, {0, t}, kSmall), 0);          // A = 1

@@ -128,15 +128,22 @@ ResolvedPage PageTable::resolve(PageId p) const {
 }
 
 std::vector<std::uint32_t> PageTable::finalised() const {
-  std::vector<std::uint32_t> out;
-  for (int l = 0; l < layout_.levels(); ++l) {
+  // Top level first: an entry is its own page when allocated, else its parent's entry
+  // (resolve() for every entry, in one pass over the table).
+  std::vector<std::size_t> offset(layout_.levels() + 1, 0);
+  for (int l = 0; l < layout_.levels(); ++l) offset[l + 1] = offset[l] + levels_[l].size();
+  std::vector<std::uint32_t> out(offset.back(), SL_PAGE_NONE);
+  for (int l = layout_.topLevel(); l >= 0; --l) {
     const int n = layout_.pagesPerSide(l);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
-        const ResolvedPage r = resolve(PageId{l, x, y});
-        out.push_back(r.slot < 0 ? SL_PAGE_NONE
-                                 : (static_cast<std::uint32_t>(r.slot) << 5) |
-                                       static_cast<std::uint32_t>(r.page.level));
+        const std::size_t i = static_cast<std::size_t>(y) * n + x;
+        const int s = levels_[l][i];
+        if (s >= 0)
+          out[offset[l] + i] = (static_cast<std::uint32_t>(s) << 5) | static_cast<std::uint32_t>(l);
+        else if (l < layout_.topLevel())
+          out[offset[l] + i] =
+              out[offset[l + 1] + static_cast<std::size_t>(y / 2) * (n / 2) + x / 2];
       }
   }
   return out;

@@ -4,10 +4,12 @@
 // Exact expectations throughout.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <stdexcept>
 
 #include "algo/pages/PageRequests.h"
+#include "algo/pages/PageViews.h"
 #include "algo/pages/VirtualPages.h"
 
 namespace sl::pages {
@@ -272,6 +274,48 @@ TEST(Pages, SuperpagesBinPagesByLevelAndBlock) {
   EXPECT_EQ((PageId{s[3].level, s[3].x, s[3].y}), (PageId{1, 0, 0}));
   EXPECT_EQ(s[3].pagesPerSide, 8);
   EXPECT_THROW(binSuperpages(pages, layout, 100), std::invalid_argument);
+}
+
+TEST(Pages, PanelViewsOfOneFrame) {
+  // The exhaustion case above: 5 requests, a pool of 3 -> root, (2,0,0), (2,1,1).
+  PagePool pool(3);
+  PageTable table(kSmall);
+  const std::vector<PageKey> requests = {key(0, 0, 0), key(0, 1, 0), key(0, 2, 0), key(0, 3, 0),
+                                         key(1, 3, 3)};
+  const Allocation a = allocatePages(requests, pool, table);
+  const std::vector<float> level0 = levelStates(table, requests, 0);
+  ASSERT_EQ(level0.size(), 64u);
+  EXPECT_EQ(level0[0], float(PageState::Coarsened));
+  EXPECT_EQ(level0[3], float(PageState::Coarsened));
+  EXPECT_EQ(level0[4], float(PageState::Empty));
+  EXPECT_EQ(levelStates(table, requests, 1)[3 * 4 + 3], float(PageState::Coarsened));
+  EXPECT_EQ(levelStates(table, requests, 2)[0], float(PageState::Fallback));  // not asked for
+  EXPECT_EQ(levelStates(table, requests, 3)[0], float(PageState::Fallback));
+  // Asked for and given: the level-2 page in a roomy pool.
+  PagePool roomy(8);
+  PageTable t2(kSmall);
+  const std::vector<PageKey> one = {key(2, 1, 0)};
+  allocatePages(one, roomy, t2);
+  EXPECT_EQ(levelStates(t2, one, 2)[1], float(PageState::Requested));
+
+  const std::vector<float> served = servedLevels(table);
+  EXPECT_EQ(served[0], 2.0f);          // (0,0,0) -> (2,0,0)
+  EXPECT_EQ(served[7 * 8 + 7], 2.0f);  // (0,7,7) -> (2,1,1)
+  EXPECT_EQ(served[0 * 8 + 7], 3.0f);  // (0,7,0) -> the root
+
+  // Heat: (0,1,0) twice and (1,0,0) once; (0,1,0) lies in (1,0,0).
+  const std::vector<float> heat =
+      requestHeat(kSmall, std::vector<PageKey>{key(0, 1, 0), key(0, 1, 0), key(1, 0, 0)});
+  EXPECT_EQ(heat[1], 3.0f);
+  EXPECT_EQ(heat[0], 1.0f);
+  EXPECT_EQ(heat[8 + 1], 1.0f);
+  EXPECT_EQ(heat[2], 0.0f);
+
+  const std::vector<float> slots = poolLevels(a, 4);
+  EXPECT_EQ(slots[0], 3.0f);
+  EXPECT_EQ(slots[1], 2.0f);
+  EXPECT_EQ(slots[2], 2.0f);
+  EXPECT_TRUE(std::isnan(slots[3]));
 }
 
 }  // namespace

@@ -162,6 +162,29 @@ TEST(Rmsm, ExhaustedPoolCoarsensAndCounts) {
   EXPECT_LE(pub.numbers.at("pages.allocated"), 4.0);
   EXPECT_GT(pub.numbers.at("pages.coarsened"), 0.0);
   EXPECT_EQ(pub.numbers.at("pages.pool"), 4.0);
+  // The Pages panel's views: every allocated page is one Requested / Fallback cell of its
+  // level and one used pool slot; some request is marked coarsened; the pool depth is read.
+  int allocatedCells = 0, coarsenedCells = 0;
+  for (int l = 0; l < 8; ++l) {
+    const FloatImage& t = pub.images.at("pages.table." + std::to_string(l));
+    EXPECT_EQ(t.width, 128 >> l);
+    for (float v : t.values) {
+      allocatedCells += v == 1.0f || v == 2.0f;
+      coarsenedCells += v == 3.0f;
+    }
+  }
+  EXPECT_EQ(allocatedCells, int(pub.numbers.at("pages.allocated")));
+  EXPECT_GT(coarsenedCells, 0);
+  const std::vector<float>& slots = pub.curves.at("pages.pool.levels");
+  ASSERT_EQ(slots.size(), 4u);
+  EXPECT_EQ(std::count_if(slots.begin(), slots.end(), [](float v) { return v == v; }),
+            std::ptrdiff_t(pub.numbers.at("pages.allocated")));
+  EXPECT_EQ(pub.images.at("pages.pool.depth").width, 2 * 128);
+  EXPECT_EQ(pub.images.at("pages.served").width, 128);
+  EXPECT_GT(pub.images.at("pages.requests.heat").values[0] +
+                *std::max_element(pub.images.at("pages.requests.heat").values.begin(),
+                                  pub.images.at("pages.requests.heat").values.end()),
+            0.0f);
   const double e = r->computeError().stats.errorPct;
   EXPECT_GE(e, 0.0);
   EXPECT_LT(e, 50.0);

@@ -7,6 +7,7 @@
 
 #include "algo/Focus.h"
 #include "algo/pages/PageRequests.h"
+#include "algo/pages/PageViews.h"
 #include "common/shared_constants.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
@@ -110,19 +111,52 @@ TechniqueInfo RmsmShadowMap::info() {
        "Per camera pixel (compute): light uv (s, t) and LOD l = floor(log2(sqrt(|dX x dY|))) in "
        "virtual texels, the key of the page serving it; a request stays only when its left and "
        "lower neighbours ask for a different page; the survivors are appended to one list.",
-       ""},
+       "pages"},
       {"rmsm allocate", "Read back, sort, unique, allocate",
        "The compacted list is read back, sorted and made unique; the root page and then the "
        "requests, coarse to fine, take pool slots from the free list (the finest level is "
        "coarsened while they do not fit); the page table's mip chain is finalised (each entry: "
        "its finest allocated ancestor) and uploaded.",
-       ""},
+       "pages"},
       {"rmsm pages", "Render pages",
        "Every allocated page: the scene's exact depth through the map's matrix cropped to the "
        "page, into its slot of the pool (a viewport of page.size² texels).",
-       ""},
+       "pages"},
   };
   info.publications = {
+      {"pages.table.*",
+       PublicationKind::ImageSet,
+       "Page table level i (0 = finest), one cell per entry: 0 empty, 1 requested and "
+       "allocated, 2 allocated unasked (top level, ancestor of coarsened requests), 3 requested "
+       "but coarsened (pool ran out). CPU data, no readback.",
+       "",
+       {}},
+      {"pages.served",
+       PublicationKind::Image,
+       "Per finest page: the level of the page serving it (its finest allocated ancestor).",
+       "",
+       {}},
+      {"pages.requests.heat",
+       PublicationKind::Image,
+       "Per finest page: how many of this frame's compacted requests ask for a page holding it.",
+       "",
+       {}},
+      {"pages.pool.levels",
+       PublicationKind::Curve,
+       "Per pool slot: the level of the page it holds (NaN: free).",
+       "",
+       {}},
+      {"pages.pool.depth", PublicationKind::Image,
+       "The physical pool's depth texture as rendered (0..1), pages side by side.",
+       "4 B x pool texels (ceil(sqrt(pool.pages)) columns of page.size^2)",
+       [](const ParamSet& ps) {
+         const std::uint64_t pages = std::uint64_t(ps.getInt("pool.pages"));
+         const std::uint64_t cols = std::uint64_t(poolColumnsFor(int(pages)));
+         const std::uint64_t rows = (pages + cols - 1) / cols;
+         const std::uint64_t side = std::uint64_t(ps.getInt("page.size"));
+         return 4 * cols * rows * side * side;
+       }},
+      {"pages.pool.columns", PublicationKind::Number, "Pages per row of the pool.", "", {}},
       {"pages.requests.compacted",
        PublicationKind::Number,
        "Requests left after dedup and compaction (the GPU list's length).",
@@ -215,6 +249,22 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "pages.coarsened", last_.allocation.coarsened);
   publishNumber(ctx, "pages.pool", poolPages);
   publishNumber(ctx, "pages.superpages", last_.superpages);
+  publishNumber(ctx, "pages.pool.columns", poolColumns_);
+  for (int l = 0; l < layout_.levels(); ++l) {
+    const std::string key = "pages.table." + std::to_string(l);
+    if (ctx.wants(key))
+      publishImage(ctx, key, layout_.pagesPerSide(l), layout_.pagesPerSide(l),
+                   pages::levelStates(*table_, last_.unique, l));
+  }
+  const int finest = layout_.finestPagesPerSide();
+  if (ctx.wants("pages.served"))
+    publishImage(ctx, "pages.served", finest, finest, pages::servedLevels(*table_));
+  if (ctx.wants("pages.requests.heat"))
+    publishImage(ctx, "pages.requests.heat", finest, finest,
+                 pages::requestHeat(layout_, last_.compacted));
+  if (ctx.wants("pages.pool.levels"))
+    publishValues(ctx, "pages.pool.levels", pages::poolLevels(last_.allocation, poolPages));
+  publishDepth(ctx, "pages.pool.depth", poolMap_);
 }
 
 void RmsmShadowMap::requestPages(FrameContext& ctx) {

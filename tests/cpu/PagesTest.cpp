@@ -22,6 +22,12 @@ PageKey key(int level, int x, int y) {
   return packPage(PageId{level, x, y});
 }
 
+// Four level-0 pages in a row and one level-1 page: too many for a pool of 3 (the
+// exhaustion tests).
+std::vector<PageKey> fiveRequests() {
+  return {key(0, 0, 0), key(0, 1, 0), key(0, 2, 0), key(0, 3, 0), key(1, 3, 3)};
+}
+
 TEST(Pages, KeysPackLevelRowColumnAndSortThatWay) {
   EXPECT_EQ(key(2, 3, 1), (2u << 26) | (1u << 13) | 3u);
   EXPECT_EQ(unpackPage(key(5, 8191, 17)), (PageId{5, 8191, 17}));
@@ -116,8 +122,7 @@ TEST(Pages, ExhaustedPoolCoarsensTheFinestLevelAndCountsIt) {
   PageTable table(kSmall);
   // 5 pages + the root = 6 > 3. Step 1: level 0 -> (1,0,0), (1,1,0), with (1,3,3): 3 + root
   // = 4 > 3, 4 coarsened. Step 2: level 1 -> (2,0,0), (2,1,1): 2 + root = 3, 1 more coarsened.
-  const std::vector<PageKey> requests = {key(0, 0, 0), key(0, 1, 0), key(0, 2, 0), key(0, 3, 0),
-                                         key(1, 3, 3)};
+  const std::vector<PageKey> requests = fiveRequests();
   const Allocation a = allocatePages(requests, pool, table);
   EXPECT_EQ(a.requested, 5);
   EXPECT_EQ(a.coarsened, 5);
@@ -280,8 +285,7 @@ TEST(Pages, PanelViewsOfOneFrame) {
   // The exhaustion case above: 5 requests, a pool of 3 -> root, (2,0,0), (2,1,1).
   PagePool pool(3);
   PageTable table(kSmall);
-  const std::vector<PageKey> requests = {key(0, 0, 0), key(0, 1, 0), key(0, 2, 0), key(0, 3, 0),
-                                         key(1, 3, 3)};
+  const std::vector<PageKey> requests = fiveRequests();
   const Allocation a = allocatePages(requests, pool, table);
   const std::vector<float> level0 = levelStates(table, requests, 0);
   ASSERT_EQ(level0.size(), 64u);

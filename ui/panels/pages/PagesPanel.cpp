@@ -16,6 +16,7 @@ namespace sl::ui {
 
 namespace {
 enum View { Table = 0, Served, Heat, PoolLevels, PoolDepth };
+constexpr std::size_t kHistory = 300;  ///< frames of pool use kept
 
 /// The page-table state colours (PageState 0..3) and their legend.
 QRgb stateColour(float v) {
@@ -52,6 +53,12 @@ PagesPanel::PagesPanel(QWidget* parent) : PublicationPanel(parent) {
   view_ = new ImageView;
   view_->setObjectName(QStringLiteral("pagesImage"));
   layout->addWidget(view_, 1);
+  use_ = new PlotWidget;
+  use_->setObjectName(QStringLiteral("pagesUse"));
+  use_->setTitle(tr("Pool use over time"));
+  use_->setAxisLabels(tr("frame"), tr("pages"));
+  use_->setPlaceholder(tr("no frames yet"));
+  layout->addWidget(use_);
   info_ = new QLabel;
   info_->setObjectName(QStringLiteral("pagesInfo"));
   info_->setWordWrap(true);
@@ -107,7 +114,19 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
           .arg(pool)
           .arg(number("pages.superpages"))
           .arg(coarsened));
-  drawn_ = {{QStringLiteral("levels"), levels_},
+  if (!history_.empty() && double(pub.frameIndex) <= history_.back().frame) history_.clear();
+  history_.push_back({double(pub.frameIndex), allocated, requested, pool});
+  while (history_.size() > kHistory) history_.pop_front();
+  PlotWidget::Series used{tr("allocated"), {}, QColor(60, 190, 90)};
+  PlotWidget::Series asked{tr("unique pages requested"), {}, QColor(230, 60, 50)};
+  for (const FrameUse& f : history_) {
+    used.points.emplace_back(f.frame, f.allocated);
+    asked.points.emplace_back(f.frame, f.requested);
+  }
+  use_->setSeries({used, asked});
+  use_->setLines({{pool, QColor(200, 200, 200), tr("pool.pages")}});
+  drawn_ = {{QStringLiteral("frames"), int(history_.size())},
+            {QStringLiteral("levels"), levels_},
             {QStringLiteral("requested"), requested},
             {QStringLiteral("allocated"), allocated},
             {QStringLiteral("pool"), pool},

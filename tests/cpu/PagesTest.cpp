@@ -120,18 +120,20 @@ TEST(Pages, AllocationPutsTheRootFirstThenCoarseToFine) {
 TEST(Pages, ExhaustedPoolCoarsensTheFinestLevelAndCountsIt) {
   PagePool pool(3);
   PageTable table(kSmall);
-  // 5 pages + the root = 6 > 3. Step 1: level 0 -> (1,0,0), (1,1,0), with (1,3,3): 3 + root
-  // = 4 > 3, 4 coarsened. Step 2: level 1 -> (2,0,0), (2,1,1): 2 + root = 3, 1 more coarsened.
+  // 5 pages + the root = 6 > 3. Step 1: level 0's two pairs -> (1,0,0), (1,1,0), each
+  // freeing one page: 3 + root = 4 > 3, 4 coarsened. Step 2: (1,0,0), (1,1,0) -> (2,0,0)
+  // frees one; the lone (1,3,3) would free none and stays: (2,0,0), (1,3,3) + root = 3.
   const std::vector<PageKey> requests = fiveRequests();
   const Allocation a = allocatePages(requests, pool, table);
   EXPECT_EQ(a.requested, 5);
-  EXPECT_EQ(a.coarsened, 5);
+  EXPECT_EQ(a.coarsened, 4);
   EXPECT_EQ(a.coarseningSteps, 2);
-  const std::vector<PageId> pages = {{3, 0, 0}, {2, 0, 0}, {2, 1, 1}};
+  const std::vector<PageId> pages = {{3, 0, 0}, {2, 0, 0}, {1, 3, 3}};
   EXPECT_EQ(a.pages, pages);
   EXPECT_EQ(pool.freeCount(), 0);
   EXPECT_EQ(table.resolve(PageId{0, 2, 0}).page, (PageId{2, 0, 0}));
-  EXPECT_EQ(table.resolve(PageId{1, 3, 3}).page, (PageId{2, 1, 1}));
+  EXPECT_EQ(table.resolve(PageId{1, 3, 3}).page, (PageId{1, 3, 3}));
+  EXPECT_EQ(table.resolve(PageId{0, 7, 7}).page, (PageId{1, 3, 3}));
 
   // A pool of one page holds the root alone: every lookup finds it.
   PagePool one(1);
@@ -139,7 +141,7 @@ TEST(Pages, ExhaustedPoolCoarsensTheFinestLevelAndCountsIt) {
   const Allocation b = allocatePages(requests, one, t1);
   EXPECT_EQ(b.pages, (std::vector<PageId>{{3, 0, 0}}));
   EXPECT_EQ(b.coarsened, 5);
-  EXPECT_EQ(b.coarseningSteps, 3);
+  EXPECT_EQ(b.coarseningSteps, 4);  // the lone (1,3,3) moves up alone in step 3
   EXPECT_EQ(t1.resolve(PageId{0, 7, 7}).slot, 0);
 }
 
@@ -153,17 +155,18 @@ TEST(Pages, CappedQuadtreeKeepsItsWholeTopLevel) {
   PageTable table(capped);
   PagePool small(63);
   EXPECT_THROW(allocatePages({}, small, table), std::invalid_argument);
-  // 64 top pages + 3 requests = 67 > 66: level 0 moves up, (1,0,0) twice, (1,15,15).
+  // 64 top pages + 3 requests = 67 > 66: the pair under (1,0,0) moves up (frees one); the
+  // lone (0,31,31) would free nothing and stays.
   PagePool pool(66);
   const std::vector<PageKey> requests = {key(0, 0, 0), key(0, 1, 0), key(0, 31, 31)};
   const Allocation a = allocatePages(requests, pool, table);
-  EXPECT_EQ(a.coarsened, 3);
+  EXPECT_EQ(a.coarsened, 2);
   EXPECT_EQ(a.coarseningSteps, 1);
   ASSERT_EQ(a.pages.size(), 66u);
   EXPECT_EQ(a.pages[0], (PageId{2, 0, 0}));
   EXPECT_EQ(a.pages[9], (PageId{2, 1, 1}));  // row by row
   EXPECT_EQ(a.pages[64], (PageId{1, 0, 0}));
-  EXPECT_EQ(a.pages[65], (PageId{1, 15, 15}));
+  EXPECT_EQ(a.pages[65], (PageId{0, 31, 31}));
   EXPECT_EQ(table.resolve(PageId{0, 20, 4}).page, (PageId{2, 5, 1}));
   EXPECT_EQ(table.resolve(PageId{0, 1, 1}).page, (PageId{1, 0, 0}));
 }
@@ -282,7 +285,7 @@ TEST(Pages, SuperpagesBinPagesByLevelAndBlock) {
 }
 
 TEST(Pages, PanelViewsOfOneFrame) {
-  // The exhaustion case above: 5 requests, a pool of 3 -> root, (2,0,0), (2,1,1).
+  // The exhaustion case above: 5 requests, a pool of 3 -> root, (2,0,0), (1,3,3).
   PagePool pool(3);
   PageTable table(kSmall);
   const std::vector<PageKey> requests = fiveRequests();
@@ -292,7 +295,7 @@ TEST(Pages, PanelViewsOfOneFrame) {
   EXPECT_EQ(level0[0], float(PageState::Coarsened));
   EXPECT_EQ(level0[3], float(PageState::Coarsened));
   EXPECT_EQ(level0[4], float(PageState::Empty));
-  EXPECT_EQ(levelStates(table, requests, 1)[3 * 4 + 3], float(PageState::Coarsened));
+  EXPECT_EQ(levelStates(table, requests, 1)[3 * 4 + 3], float(PageState::Requested));
   EXPECT_EQ(levelStates(table, requests, 2)[0], float(PageState::Fallback));  // not asked for
   EXPECT_EQ(levelStates(table, requests, 3)[0], float(PageState::Fallback));
   // Asked for and given: the level-2 page in a roomy pool.
@@ -304,7 +307,7 @@ TEST(Pages, PanelViewsOfOneFrame) {
 
   const std::vector<float> served = servedLevels(table);
   EXPECT_EQ(served[0], 2.0f);          // (0,0,0) -> (2,0,0)
-  EXPECT_EQ(served[7 * 8 + 7], 2.0f);  // (0,7,7) -> (2,1,1)
+  EXPECT_EQ(served[7 * 8 + 7], 1.0f);  // (0,7,7) -> (1,3,3)
   EXPECT_EQ(served[0 * 8 + 7], 3.0f);  // (0,7,0) -> the root
 
   // Heat: (0,1,0) twice and (1,0,0) once; (0,1,0) lies in (1,0,0).
@@ -318,7 +321,7 @@ TEST(Pages, PanelViewsOfOneFrame) {
   const std::vector<float> slots = poolLevels(a, 4);
   EXPECT_EQ(slots[0], 3.0f);
   EXPECT_EQ(slots[1], 2.0f);
-  EXPECT_EQ(slots[2], 2.0f);
+  EXPECT_EQ(slots[2], 1.0f);
   EXPECT_TRUE(std::isnan(slots[3]));
 }
 

@@ -181,15 +181,50 @@ Allocation allocatePages(std::span<const PageKey> uniqueRequests, PagePool& pool
   while (pagesNeeded() > pool.capacity()) {
     int finest = layout.topLevel();
     for (PageKey k : wanted) finest = std::min(finest, unpackPage(k).level);
+    // The finest level's pages grouped by parent. Moving a group to its parent frees
+    // `saving` pages (its children, less one unless the parent is wanted or on the top
+    // level) and makes `children` pages coarser: groups go in order of the fewest pages
+    // made coarser per page freed, until the excess is freed. When no group frees a page
+    // (lone children of unwanted parents), the whole level moves up.
+    struct Group {
+      PageKey parent;
+      int children, saving;
+    };
+    std::map<PageKey, int> children;  // parent -> wanted children at `finest`
+    for (PageKey k : wanted)
+      if (unpackPage(k).level == finest) ++children[packPage(parentPage(unpackPage(k)))];
+    std::vector<Group> groups;
+    for (const auto& [parent, n] : children) groups.push_back({parent, n, 0});
+    for (Group& g : groups) {
+      const bool parentHeld = unpackPage(g.parent).level == top ||
+                              std::binary_search(wanted.begin(), wanted.end(), g.parent);
+      g.saving = g.children - (parentHeld ? 0 : 1);
+    }
+    std::stable_sort(groups.begin(), groups.end(), [](const Group& l, const Group& r) {
+      if ((l.saving > 0) != (r.saving > 0)) return l.saving > 0;
+      return l.children * r.saving < r.children * l.saving;  // children / saving, ascending
+    });
+    std::vector<PageKey> moved;  // parents of the groups that move up
+    int freed = 0;
+    const int excess = pagesNeeded() - pool.capacity();
+    for (const Group& g : groups) {
+      if (g.saving <= 0 || freed >= excess) break;
+      moved.push_back(g.parent);
+      freed += g.saving;
+    }
+    if (moved.empty())
+      for (const Group& g : groups) moved.push_back(g.parent);
+    std::sort(moved.begin(), moved.end());
     std::vector<std::pair<PageKey, char>> next;
     for (std::size_t i = 0; i < wanted.size(); ++i) {
       const PageId p = unpackPage(wanted[i]);
-      if (p.level != finest) {
+      const PageKey parent = packPage(parentPage(p));
+      if (p.level != finest || !std::binary_search(moved.begin(), moved.end(), parent)) {
         next.emplace_back(wanted[i], original[i]);
         continue;
       }
       if (original[i]) ++a.coarsened;
-      next.emplace_back(packPage(parentPage(p)), 0);
+      next.emplace_back(parent, 0);
     }
     std::sort(next.begin(), next.end());
     // Unique by key; a key that some request asked for as such stays "original" (it sorts last).

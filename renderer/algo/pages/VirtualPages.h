@@ -3,9 +3,10 @@
 // whose page table is a mip chain (level 0 = the finest pages, the top level one page over
 // the whole map unless the tree is cut at maxLevels; an entry = the page's slot in one physical
 // pool), the pool's free-list allocator, allocation of a frame's unique page requests (the pool
-// running out coarsens the finest requested level and counts it, never fails) and the binning of
-// pages into superpages. Plain C++: the `rmsm` technique (renderer/techniques/rmsm) renders what
-// this allocates; the keys are the GPU's (shaders/common/shared_constants.h SL_PAGE_*).
+// running out coarsens the finest requested pages, group by group, and counts them, never fails)
+// and the binning of pages into superpages. Plain C++: the `rmsm` technique
+// (renderer/techniques/rmsm) renders what this allocates; the keys are the GPU's
+// (shaders/common/shared_constants.h SL_PAGE_*).
 #pragma once
 
 #include <cstdint>
@@ -106,17 +107,19 @@ struct Allocation {
   /// Requests that got a coarser page than they asked for because the pool ran out (each
   /// counted once, at its first coarsening).
   int coarsened = 0;
-  int coarseningSteps = 0;    ///< how many times the finest level present was coarsened
+  int coarseningSteps = 0;    ///< how many times pages of the finest level present moved up
   std::vector<PageId> pages;  ///< allocated, in slot order of allocation (root first)
   std::vector<int> slots;     ///< the slot of pages[i]
 };
 
 /// Allocates every page of the top level (the fallback of every lookup: one root page
 /// unless maxLevels cut the tree) and then `uniqueRequests` (sorted, unique keys) into an
-/// empty pool and table, coarsest level first. When they do not fit, the requests of the
-/// finest level present are replaced by their parents (unique again) until they do; the top
-/// level alone fits a pool of topPages(). Throws std::invalid_argument when the pool is in
-/// use or smaller than topPages(), or a key lies outside the layout.
+/// empty pool and table, coarsest level first. When they do not fit, pages of the finest
+/// level present move to their parents, sibling group by sibling group, the groups that make
+/// the fewest pages coarser per page freed first, until they fit (a level whose groups free
+/// nothing moves up whole); the top level alone fits a pool of topPages(). Throws
+/// std::invalid_argument when the pool is in use or smaller than topPages(), or a key lies outside
+/// the layout.
 Allocation allocatePages(std::span<const PageKey> uniqueRequests, PagePool& pool, PageTable& table);
 
 /// Pages binned into superpages: square blocks of `superpageSize`² virtual-level texels of

@@ -96,9 +96,11 @@ TechniqueInfo RmsmShadowMap::info() {
        .minValue = 1,
        .maxValue = 4096,
        .step = 1,
-       .help = "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform 2048² "
-               "map). When a frame asks for more, the finest requested level is coarsened until "
-               "they fit (counted in pages.coarsened)."});
+       .help =
+           "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform 2048² "
+           "map). When a frame asks for more, pages of the finest requested level move to their "
+           "parents, sibling group by sibling group, until they fit (counted in "
+           "pages.coarsened)."});
 
   TechniqueInfo info{"rmsm", "Resolution-matched shadow map",
                      "Lefohn, Sengupta, Owens 2007: every camera pixel asks for the page of a "
@@ -113,10 +115,11 @@ TechniqueInfo RmsmShadowMap::info() {
        "lower neighbours ask for a different page; the survivors are appended to one list.",
        "pages"},
       {"rmsm allocate", "Read back, sort, unique, allocate",
-       "The compacted list is read back, sorted and made unique; the root page and then the "
-       "requests, coarse to fine, take pool slots from the free list (the finest level is "
-       "coarsened while they do not fit); the page table's mip chain is finalised (each entry: "
-       "its finest allocated ancestor) and uploaded.",
+       "The compacted list is read back, sorted and made unique; the top level (one root page "
+       "unless the tree is cut) and then the requests, coarse to fine, take pool slots from the "
+       "free list (while they do not fit, pages of the finest level move to their parents, "
+       "sibling group by group); the page table's mip chain is finalised (each entry: its "
+       "finest allocated ancestor) and uploaded.",
        "pages"},
       {"rmsm pages", "Render pages",
        "Every allocated page: the scene's exact depth through the map's matrix cropped to the "

@@ -68,6 +68,17 @@ bool publishValues(FrameContext& ctx, const std::string& key, std::vector<float>
   return true;
 }
 
+bool publishImage(FrameContext& ctx, const std::string& key, int width, int height,
+                  std::vector<float> values) {
+  if (!ctx.wants(key)) return false;
+  FloatImage& image = ctx.publication->images[key];
+  image.width = width;
+  image.height = height;
+  image.channels = 1;
+  image.values = std::move(values);
+  return true;
+}
+
 bool publishNumber(FrameContext& ctx, const std::string& key, double value) {
   if (!ctx.wants(key)) return false;
   ctx.publication->numbers[key] = value;

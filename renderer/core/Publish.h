@@ -27,6 +27,10 @@ std::vector<float> readPublishedFloats(FrameContext& ctx, const gl::Buffer& buff
                                        std::size_t offset, std::size_t count);
 /// Values computed on the CPU as a curve (no readback); false when not requested.
 bool publishValues(FrameContext& ctx, const std::string& key, std::vector<float> values);
+/// An image computed on the CPU (no readback; row 0 = the bottom row, as a GL texture's);
+/// false when not requested.
+bool publishImage(FrameContext& ctx, const std::string& key, int width, int height,
+                  std::vector<float> values);
 /// A number (no readback); false when not requested.
 bool publishNumber(FrameContext& ctx, const std::string& key, double value);
 

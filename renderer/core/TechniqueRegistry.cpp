@@ -6,6 +6,7 @@
 #include "techniques/cube/CubeShadowMap.h"
 #include "techniques/dual-paraboloid/DualParaboloidShadowMap.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
+#include "techniques/rmsm/RmsmShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
 
@@ -49,6 +50,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       entry<FacePartitionShadowMap>(),
       entry<CubeShadowMap>(),
       entry<DualParaboloidShadowMap>(),
+      entry<RmsmShadowMap>(),
   };
   return list;
 }

@@ -98,4 +98,16 @@
 // 64, 0.73 % at cap 16). SceneGpu splits long triangles so that 16 suffices.
 #define SL_MAX_TESSELLATION_LEVEL 16
 
+// --- Resolution-matched shadow maps (renderer/algo/pages, techniques/rmsm): a page request
+// is one 32-bit key, level << 26 | y << 13 | x (level 0 = the finest pages; x, y the page's
+// place in its level's grid, at most 8192 per side). SL_PAGE_NONE: no request / no page.
+#define SL_PAGE_KEY_LEVEL_SHIFT 26
+#define SL_PAGE_KEY_COORD_BITS 13
+#define SL_PAGE_MAX_PER_SIDE 8192
+#define SL_PAGE_MAX_LEVELS 14
+#define SL_PAGE_NONE 0xFFFFFFFFu
+#define SL_RMSM_GROUP 8  // local_size_x/y of the request and compaction passes
+#define SL_RMSM_IMAGE_REQUESTS 0  // r32ui: the page key each pixel asks for (SL_PAGE_NONE: none)
+#define SL_RMSM_BUFFER_REQUESTS 0  // SSBO: count, then the compacted keys
+
 #endif  // SL_SHARED_CONSTANTS_H

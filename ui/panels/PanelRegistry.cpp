@@ -3,6 +3,7 @@
 
 #include "panels/analysis/AnalysisPanels.h"
 #include "panels/omni/OmniPanels.h"
+#include "panels/pages/PagesPanels.h"
 #include "panels/perspective/PerspectivePanels.h"
 #include "panels/partition/PartitionPanels.h"
 #include "panels/rtw/RtwPanels.h"
@@ -18,6 +19,7 @@ const std::vector<PanelEntry>& publicationPanels() {
              perspectivePanels(),
              partitionPanels(),
              omniPanels(),
+             pagesPanels(),
          })
       all.insert(all.end(), family.begin(), family.end());
     return all;

@@ -1,0 +1,377 @@
+// Resolution-matched shadow maps (RmsmShadowMap.h): requests and compaction in compute, the
+// CPU reference allocator (algo/pages), one depth pass per allocated page into the pool.
+#include "RmsmShadowMap.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "algo/Focus.h"
+#include "algo/pages/PageRequests.h"
+#include "algo/pages/PageViews.h"
+#include "common/shared_constants.h"
+#include "core/Publish.h"
+#include "core/SceneGpu.h"
+
+namespace sl {
+
+namespace {
+
+gl::ProgramDesc requestProgramDesc() {
+  return {"rmsm/requests", {{GL_COMPUTE_SHADER, "rmsm/requests.comp"}}, {}, {}};
+}
+gl::ProgramDesc compactProgramDesc() {
+  return {"rmsm/compact", {{GL_COMPUTE_SHADER, "rmsm/compact.comp"}}, {}, {}};
+}
+
+/// The largest pool texture side ShadowLab asks for (GL 4.5 guarantees 16384 on llvmpipe).
+constexpr int kMaxPoolSide = 16384;
+
+/// Columns of the pool's page grid: the smallest square holding `pages`.
+int poolColumnsFor(int pages) {
+  int c = 1;
+  while (c * c < pages) ++c;
+  return c;
+}
+
+/// World -> clip of one page: the map's matrix followed by the crop of the page's square of
+/// light uv onto the whole clip square (depth unchanged: the page stores the map's depth).
+glm::mat4 pageViewProj(const glm::mat4& viewProj, const pages::PageId& p,
+                       const pages::VirtualLayout& layout) {
+  const float n = float(layout.pagesPerSide(p.level));
+  glm::mat4 crop(1.0f);
+  crop[0][0] = n;
+  crop[1][1] = n;
+  crop[3][0] = -(2.0f * float(p.x) + 1.0f - n);
+  crop[3][1] = -(2.0f * float(p.y) + 1.0f - n);
+  return crop * viewProj;
+}
+
+}  // namespace
+
+TechniqueInfo RmsmShadowMap::info() {
+  std::vector<ParamDecl> p;
+  for (ParamDecl& d : shadowMapParamDecls(2048))
+    if (d.key != "resolution") p.push_back(std::move(d));
+  auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
+  add({.key = "virtual.resolution",
+       .label = "Virtual resolution",
+       .group = "Pages",
+       .type = ParamType::Int,
+       .defaultValue = 65536,
+       .minValue = 256,
+       .maxValue = 262144,
+       .step = 256,
+       .help = "Texels per side of the virtual shadow map (level 0, the finest pages); a power of "
+               "two. Its quadtree has log2(virtual.resolution / page.size) + 1 levels, cut at 8 "
+               "(the lookup's maps): deeper, the coarsest level has several pages, all allocated "
+               "every frame as the fallback of every lookup."});
+  add({.key = "page.size",
+       .label = "Page size",
+       .group = "Pages",
+       .type = ParamType::Int,
+       .defaultValue = 128,
+       .minValue = 16,
+       .maxValue = 1024,
+       .step = 16,
+       .help = "Texels per side of one page (a power of two): the unit of allocation and "
+               "rendering."});
+  add({.key = "lod.bias",
+       .label = "LOD bias",
+       .group = "Pages",
+       .type = ParamType::Int,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 6,
+       .step = 1,
+       .help = "Each pixel asks for the page this many levels finer than its footprint needs "
+               "(0: resolution-matched, one texel per pixel; 1: 2 x 2 texels per pixel...), "
+               "filling a pool that matching alone leaves mostly empty (the default pool holds "
+               "4.5 texels per pixel of a 1280 x 720 view).",
+       .uniform = "u_rmsmLodBias"});
+  add({.key = "pool.pages",
+       .label = "Pool pages",
+       .group = "Pages",
+       .type = ParamType::Int,
+       .defaultValue = 256,
+       .minValue = 1,
+       .maxValue = 4096,
+       .step = 1,
+       .help =
+           "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform 2048² "
+           "map). When a frame asks for more, pages of the finest requested level move to their "
+           "parents, sibling group by sibling group, until they fit (counted in "
+           "pages.coarsened)."});
+
+  TechniqueInfo info{"rmsm", "Resolution-matched shadow map",
+                     "Lefohn, Sengupta, Owens 2007: every camera pixel asks for the page of a "
+                     "virtual quadtree of shadow-map pages at the resolution its footprint needs; "
+                     "only those pages are rendered, into one physical pool behind a page table. "
+                     "Directional light only.",
+                     std::move(p)};
+  info.passes = {
+      {"rmsm requests", "Page requests, dedup, compaction",
+       "Per camera pixel (compute): light uv (s, t) and LOD l = floor(log2(sqrt(|dX x dY|))) in "
+       "virtual texels, the key of the page serving it; a request stays only when its left and "
+       "lower neighbours ask for a different page; the survivors are appended to one list.",
+       "pages"},
+      {"rmsm allocate", "Read back, sort, unique, allocate",
+       "The compacted list is read back, sorted and made unique; the top level (one root page "
+       "unless the tree is cut) and then the requests, coarse to fine, take pool slots from the "
+       "free list (while they do not fit, pages of the finest level move to their parents, "
+       "sibling group by group); the page table's mip chain is finalised (each entry: its "
+       "finest allocated ancestor) and uploaded.",
+       "pages"},
+      {"rmsm pages", "Render pages",
+       "Every allocated page: the scene's exact depth through the map's matrix cropped to the "
+       "page, into its slot of the pool (a viewport of page.size² texels).",
+       "pages"},
+  };
+  info.publications = {
+      {"pages.table.*",
+       PublicationKind::ImageSet,
+       "Page table level i (0 = finest), one cell per entry: 0 empty, 1 requested and "
+       "allocated, 2 allocated unasked (top level, ancestor of coarsened requests), 3 requested "
+       "but coarsened (pool ran out). CPU data, no readback.",
+       "",
+       {}},
+      {"pages.served",
+       PublicationKind::Image,
+       "Per finest page: the level of the page serving it (its finest allocated ancestor).",
+       "",
+       {}},
+      {"pages.requests.heat",
+       PublicationKind::Image,
+       "Per finest page: how many of this frame's compacted requests ask for a page holding it.",
+       "",
+       {}},
+      {"pages.pool.levels",
+       PublicationKind::Curve,
+       "Per pool slot: the level of the page it holds (NaN: free).",
+       "",
+       {}},
+      {"pages.pool.depth", PublicationKind::Image,
+       "The physical pool's depth texture as rendered (0..1), pages side by side.",
+       "4 B x pool texels (ceil(sqrt(pool.pages)) columns of page.size^2)",
+       [](const ParamSet& ps) {
+         const std::uint64_t pages = std::uint64_t(ps.getInt("pool.pages"));
+         const std::uint64_t cols = std::uint64_t(poolColumnsFor(int(pages)));
+         const std::uint64_t rows = (pages + cols - 1) / cols;
+         const std::uint64_t side = std::uint64_t(ps.getInt("page.size"));
+         return 4 * cols * rows * side * side;
+       }},
+      {"pages.pool.columns", PublicationKind::Number, "Pages per row of the pool.", "", {}},
+      {"pages.requests.compacted",
+       PublicationKind::Number,
+       "Requests left after dedup and compaction (the GPU list's length).",
+       "",
+       {}},
+      {"pages.requested", PublicationKind::Number, "Unique pages requested.", "", {}},
+      {"pages.allocated", PublicationKind::Number, "Pages allocated (root included).", "", {}},
+      {"pages.coarsened",
+       PublicationKind::Number,
+       "Requests that got a coarser page because the pool ran out.",
+       "",
+       {}},
+      {"pages.pool", PublicationKind::Number, "Pages the pool holds (pool.pages).", "", {}},
+      {"pages.superpages",
+       PublicationKind::Number,
+       "1024² superpages the allocated pages fall into (Lefohn et al.'s render unit).",
+       "",
+       {}},
+  };
+  return info;
+}
+
+RmsmShadowMap::RmsmShadowMap(const gl::ShaderLibrary& lib)
+    : depthProgram_(lib, depthProgramDesc()),
+      requestProgram_(lib, requestProgramDesc()),
+      compactProgram_(lib, compactProgramDesc()) {}
+
+void RmsmShadowMap::setRequestUniforms(const gl::Program& p) const {
+  p.set("u_rmsmViewProj", view_.lightViewProj);
+  p.set("u_rmsmVirtualResolution", layout_.virtualResolution);
+  p.set("u_rmsmPageSize", layout_.pageSize);
+  p.set("u_rmsmLevels", layout_.levels());
+}
+
+void RmsmShadowMap::renderShadows(FrameContext& ctx) {
+  // One lookup "map" per level (rmsm/lookup.glsl): a deeper tree is cut below its root.
+  const pages::VirtualLayout layout{ctx.params.getInt("virtual.resolution"),
+                                    ctx.params.getInt("page.size"), SL_MAX_DEPTH_MAPS};
+  if (const std::string e = layout.validate(); !e.empty()) throw std::runtime_error("rmsm: " + e);
+  const int poolPages = ctx.params.getInt("pool.pages");
+  const int columns = poolColumnsFor(poolPages);
+  const int rows = (poolPages + columns - 1) / columns;
+  if (poolPages < layout.topPages())
+    throw std::runtime_error("rmsm: pool.pages = " + std::to_string(poolPages) +
+                             " cannot hold the " + std::to_string(layout.topPages()) +
+                             " pages of the coarsest level (the quadtree is cut at " +
+                             std::to_string(SL_MAX_DEPTH_MAPS) +
+                             " levels); raise pool.pages or page.size");
+  if (columns * layout.pageSize > kMaxPoolSide)
+    throw std::runtime_error("rmsm: a pool of " + std::to_string(poolPages) + " pages of " +
+                             std::to_string(layout.pageSize) + "² is " +
+                             std::to_string(columns * layout.pageSize) +
+                             " texels wide, more than " + std::to_string(kMaxPoolSide) +
+                             "; lower pool.pages or page.size");
+
+  LightFit fit;
+  if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                     ctx.light.directionalTowards(), FocusSettings{}, fit))
+    throw std::runtime_error(*err);
+  view_ = depthMapView(fit);
+  ctx.addOutline(view_.lightViewProj, OutlineRole::LightMap);
+
+  if (!(layout_.virtualResolution == layout.virtualResolution &&
+        layout_.pageSize == layout.pageSize) ||
+      !table_) {
+    layout_ = layout;
+    table_ = std::make_unique<pages::PageTable>(layout_);
+    const int n = layout_.finestPagesPerSide();
+    pageTable_ = gl::Texture::create2D(GL_R32UI, n, n, layout_.levels());
+  }
+  if (!pool_ || pool_->capacity() != poolPages || poolColumns_ != columns ||
+      poolMap_.width() != columns * layout_.pageSize) {
+    pool_ = std::make_unique<pages::PagePool>(poolPages);
+    poolColumns_ = columns;
+    poolMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, columns * layout_.pageSize,
+                                     rows * layout_.pageSize);
+    poolFbo_ = gl::Framebuffer::create();
+    poolFbo_.attach(GL_DEPTH_ATTACHMENT, poolMap_);
+    poolFbo_.setDrawBuffers(0);
+    poolFbo_.checkComplete("rmsm page pool");
+  }
+
+  requestPages(ctx);
+  allocate(ctx);
+  renderPages(ctx);
+
+  publishNumber(ctx, "pages.requests.compacted", double(last_.compacted.size()));
+  publishNumber(ctx, "pages.requested", last_.allocation.requested);
+  publishNumber(ctx, "pages.allocated", double(last_.allocation.pages.size()));
+  publishNumber(ctx, "pages.coarsened", last_.allocation.coarsened);
+  publishNumber(ctx, "pages.pool", poolPages);
+  publishNumber(ctx, "pages.superpages", last_.superpages);
+  publishNumber(ctx, "pages.pool.columns", poolColumns_);
+  for (int l = 0; l < layout_.levels(); ++l) {
+    const std::string key = "pages.table." + std::to_string(l);
+    if (ctx.wants(key))
+      publishImage(ctx, key, layout_.pagesPerSide(l), layout_.pagesPerSide(l),
+                   pages::levelStates(*table_, last_.unique, l));
+  }
+  const int finest = layout_.finestPagesPerSide();
+  if (ctx.wants("pages.served"))
+    publishImage(ctx, "pages.served", finest, finest, pages::servedLevels(*table_));
+  if (ctx.wants("pages.requests.heat"))
+    publishImage(ctx, "pages.requests.heat", finest, finest,
+                 pages::requestHeat(layout_, last_.compacted));
+  if (ctx.wants("pages.pool.levels"))
+    publishValues(ctx, "pages.pool.levels", pages::poolLevels(last_.allocation, poolPages));
+  publishDepth(ctx, "pages.pool.depth", poolMap_);
+}
+
+void RmsmShadowMap::requestPages(FrameContext& ctx) {
+  auto pass = ctx.timer.scope("rmsm requests");
+  const int w = ctx.width, h = ctx.height;
+  if (!requests_ || requests_.width() != w || requests_.height() != h) {
+    requests_ = gl::Texture::create2D(GL_R32UI, w, h);
+    requestList_ = gl::Buffer::create(GLsizeiptr(4) * (1 + GLsizeiptr(w) * h), nullptr);
+  }
+  const GLuint gx = GLuint((w + SL_RMSM_GROUP - 1) / SL_RMSM_GROUP);
+  const GLuint gy = GLuint((h + SL_RMSM_GROUP - 1) / SL_RMSM_GROUP);
+  requestProgram_.use();
+  setRequestUniforms(requestProgram_);
+  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+  glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     GL_R32UI);
+  glDispatchCompute(gx, gy, 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+
+  const std::uint32_t zero = 0;
+  glNamedBufferSubData(requestList_.id(), 0, 4, &zero);
+  compactProgram_.use();
+  glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
+                     GL_R32UI);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RMSM_BUFFER_REQUESTS, requestList_.id());
+  glDispatchCompute(gx, gy, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+void RmsmShadowMap::allocate(FrameContext& ctx) {
+  auto pass = ctx.timer.scope("rmsm allocate");
+  std::uint32_t count = 0;
+  glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
+  const std::size_t capacity = std::size_t(requestList_.size() / 4 - 1);
+  last_.compacted.assign(std::min<std::size_t>(count, capacity), 0u);
+  if (!last_.compacted.empty())
+    glGetNamedBufferSubData(requestList_.id(), 4, GLsizeiptr(4 * last_.compacted.size()),
+                            last_.compacted.data());
+  last_.unique = pages::sortUnique(last_.compacted);
+  pool_->releaseAll();
+  last_.allocation = pages::allocatePages(last_.unique, *pool_, *table_);
+  last_.superpages = int(pages::binSuperpages(last_.allocation.pages, layout_).size());
+
+  const std::vector<std::uint32_t> entries = table_->finalised();
+  std::size_t at = 0;
+  for (int l = 0; l < layout_.levels(); ++l) {
+    const int n = layout_.pagesPerSide(l);
+    glTextureSubImage2D(pageTable_.id(), l, 0, 0, n, n, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                        entries.data() + at);
+    at += std::size_t(n) * n;
+  }
+}
+
+void RmsmShadowMap::renderPages(FrameContext& ctx) {
+  auto pass = ctx.timer.scope("rmsm pages");
+  beginDepthPass(poolFbo_.id(), poolMap_.width(), poolMap_.height());
+  depthProgram_.use();
+  const int ps = layout_.pageSize;
+  glEnable(GL_SCISSOR_TEST);
+  for (std::size_t i = 0; i < last_.allocation.pages.size(); ++i) {
+    const int slot = last_.allocation.slots[i];
+    const int x = (slot % poolColumns_) * ps, y = (slot / poolColumns_) * ps;
+    glViewport(x, y, ps, ps);
+    glScissor(x, y, ps, ps);
+    depthProgram_.set("u_lightViewProj",
+                      pageViewProj(view_.lightViewProj, last_.allocation.pages[i], layout_));
+    ctx.sceneGpu.draw(depthProgram_, SL_UNIT_MATERIAL);
+  }
+  glDisable(GL_SCISSOR_TEST);
+}
+
+void RmsmShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
+  // Every level is one "map" of the shared bias model with the same light matrix; they
+  // differ in texel size only (shadowMapTexels in rmsm/lookup.glsl).
+  const std::vector<DepthMapView> views(std::size_t(layout_.levels()), view_);
+  bindDepthLookup(resolve, views);
+  setRequestUniforms(resolve);
+  glBindTextureUnit(GLuint(firstUnit), poolMap_.id());
+  resolve.set("u_rmsmPool", firstUnit);
+  glBindTextureUnit(GLuint(firstUnit + 1), pageTable_.id());
+  resolve.set("u_rmsmPageTable", firstUnit + 1);
+  resolve.set("u_rmsmPoolColumns", poolColumns_);
+}
+
+MemoryStats RmsmShadowMap::memory() const {
+  MemoryStats m;
+  if (poolMap_)
+    m.add("page pool", gl::formatName(poolMap_.format()), poolMap_.width(), poolMap_.height(), 1,
+          gl::bytesPerTexel(poolMap_.format()));
+  if (pageTable_)
+    for (int l = 0; l < layout_.levels(); ++l)
+      m.add("page table level " + std::to_string(l), "R32UI", layout_.pagesPerSide(l),
+            layout_.pagesPerSide(l), 1, 4);
+  if (requests_)
+    m.add("page requests (per pixel)", "R32UI", requests_.width(), requests_.height(), 1, 4);
+  if (requestList_)
+    m.add("compacted requests (count + keys)", "R32UI", int(requestList_.size() / 4), 1, 1, 4);
+  return m;
+}
+
+std::optional<std::string> RmsmShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  if (auto e = depthProgram_.rebuild(lib)) return e;
+  if (auto e = requestProgram_.rebuild(lib)) return e;
+  return compactProgram_.rebuild(lib);
+}
+
+}  // namespace sl

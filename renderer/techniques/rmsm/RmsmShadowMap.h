@@ -1,0 +1,67 @@
+// Resolution-matched shadow maps (Lefohn, Sengupta, Owens 2007; techniques.md §5): a virtual
+// orthographic map of virtual.resolution² texels in pages of page.size², of which only the
+// pages camera pixels ask for are rendered, at the LOD each pixel needs, into one physical
+// pool behind a page table (a mip chain). Per frame: requests (compute) → dedup + compaction
+// (compute) → read back → sort + unique + allocate (CPU, renderer/algo/pages) → page table →
+// render each allocated page into its pool slot (a viewport into the pool). Directional only.
+#pragma once
+
+#include <vector>
+
+#include "algo/pages/VirtualPages.h"
+#include "core/ShadowPass.h"
+#include "core/Technique.h"
+
+namespace sl {
+
+class RmsmShadowMap : public Technique {
+ public:
+  static TechniqueInfo info();
+  explicit RmsmShadowMap(const gl::ShaderLibrary& lib);
+
+  void renderShadows(FrameContext& ctx) override;
+  std::string lookupShader() const override { return "rmsm/lookup.glsl"; }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override {
+    return {&depthProgram_, &requestProgram_, &compactProgram_};
+  }
+  MemoryStats memory() const override;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+
+  /// What the last frame did (tests, publications).
+  struct FrameResult {
+    std::vector<pages::PageKey> compacted;  ///< the GPU's list after dedup + compaction
+    std::vector<pages::PageKey> unique;     ///< sorted, unique (CPU)
+    pages::Allocation allocation;
+    int superpages = 0;  ///< 1024² superpages the allocated pages fall into
+  };
+  const FrameResult& lastFrame() const { return last_; }
+  /// The per-pixel request keys of the last frame (r32ui, camera size) and the page table.
+  const gl::Texture& requestImage() const { return requests_; }
+  const gl::Texture& pageTableTexture() const { return pageTable_; }
+  const pages::PageTable* pageTable() const { return table_.get(); }
+  const pages::VirtualLayout& layout() const { return layout_; }
+  int poolColumns() const { return poolColumns_; }
+  const glm::mat4& lightViewProj() const { return view_.lightViewProj; }  ///< the virtual map's
+
+ private:
+  void requestPages(FrameContext& ctx);
+  void allocate(FrameContext& ctx);
+  void renderPages(FrameContext& ctx);
+  void setRequestUniforms(const gl::Program& p) const;
+
+  gl::Program depthProgram_, requestProgram_, compactProgram_;
+  pages::VirtualLayout layout_;
+  std::unique_ptr<pages::PageTable> table_;
+  std::unique_ptr<pages::PagePool> pool_;
+  int poolColumns_ = 1;
+  gl::Texture poolMap_;  ///< DEPTH_COMPONENT32F, poolColumns x rows pages
+  gl::Framebuffer poolFbo_;
+  gl::Texture pageTable_;   ///< R32UI, finest pages per side, one mip level per quadtree level
+  gl::Texture requests_;    ///< R32UI per camera pixel
+  gl::Buffer requestList_;  ///< count + one key per pixel
+  DepthMapView view_;
+  FrameResult last_;
+};
+
+}  // namespace sl

@@ -1,0 +1,214 @@
+// The Pages panel (see PagesPanel.h).
+#include "PagesPanel.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include "algo/pages/PageViews.h"
+
+namespace sl::ui {
+
+namespace {
+enum View { Table = 0, Served, Heat, PoolLevels, PoolDepth };
+constexpr std::size_t kHistory = 300;  ///< frames of pool use kept
+
+/// The page-table state colours (PageState 0..3) and their legend.
+QRgb stateColour(float v) {
+  switch (int(v)) {
+    case int(pages::PageState::Requested):
+      return qRgb(60, 190, 90);
+    case int(pages::PageState::Fallback):
+      return qRgb(70, 110, 230);
+    case int(pages::PageState::Coarsened):
+      return qRgb(230, 60, 50);
+    default:
+      return qRgb(40, 40, 44);
+  }
+}
+}  // namespace
+
+PagesPanel::PagesPanel(QWidget* parent) : PublicationPanel(parent) {
+  auto* content = new QWidget;
+  auto* layout = new QVBoxLayout(content);
+  layout->setContentsMargins(4, 4, 4, 4);
+  auto* row = new QHBoxLayout;
+  viewChoice_ = new QComboBox;
+  viewChoice_->setObjectName(QStringLiteral("pagesView"));
+  viewChoice_->addItems({tr("Page table at level"), tr("Level serving each page"),
+                         tr("Requests (heat map)"), tr("Pool: each slot's level"),
+                         tr("Pool: depth")});
+  row->addWidget(viewChoice_, 1);
+  level_ = new QSpinBox;
+  level_->setObjectName(QStringLiteral("pagesLevel"));
+  level_->setRange(0, 0);
+  level_->setToolTip(tr("Quadtree level (0 = the finest pages)"));
+  row->addWidget(level_);
+  layout->addLayout(row);
+  view_ = new ImageView;
+  view_->setObjectName(QStringLiteral("pagesImage"));
+  layout->addWidget(view_, 1);
+  use_ = new PlotWidget;
+  use_->setObjectName(QStringLiteral("pagesUse"));
+  use_->setTitle(tr("Pool use over time"));
+  use_->setAxisLabels(tr("frame"), tr("pages"));
+  use_->setPlaceholder(tr("no frames yet"));
+  layout->addWidget(use_);
+  info_ = new QLabel;
+  info_->setObjectName(QStringLiteral("pagesInfo"));
+  info_->setWordWrap(true);
+  info_->setTextFormat(Qt::RichText);
+  layout->addWidget(info_);
+  setContent(content);
+  connect(viewChoice_, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
+  connect(level_, &QSpinBox::valueChanged, this, [this] { redraw(); });
+}
+
+std::set<std::string> PagesPanel::observedKeys() const {
+  return {"pages.table.*",     "pages.served",     "pages.requests.heat",
+          "pages.pool.levels", "pages.pool.depth", "pages.pool.columns",
+          "pages.requested",   "pages.allocated",  "pages.coarsened",
+          "pages.pool",        "pages.superpages", "pages.requests.compacted"};
+}
+
+void PagesPanel::showPublication(const sl::Publication& pub) {
+  auto number = [&](const char* key) {
+    auto it = pub.numbers.find(key);
+    return it == pub.numbers.end() ? -1.0 : it->second;
+  };
+  images_.clear();
+  levels_ = 0;
+  for (const auto& [key, image] : pub.images)
+    if (key.rfind("pages.", 0) == 0) {
+      images_[key] = image;
+      if (key.rfind("pages.table.", 0) == 0) ++levels_;
+    }
+  auto curve = pub.curves.find("pages.pool.levels");
+  poolLevels_ = curve == pub.curves.end() ? std::vector<float>{} : curve->second;
+  poolColumns_ = std::max(1, int(number("pages.pool.columns")));
+  if (images_.empty() && poolLevels_.empty()) {
+    drawn_ = {};
+    showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("shadow-map pages"),
+                                  observedKeys()));
+    return;
+  }
+  showContent(true);
+  level_->setRange(0, std::max(levels_ - 1, 0));
+  const double requested = number("pages.requested"), allocated = number("pages.allocated"),
+               pool = number("pages.pool"), coarsened = number("pages.coarsened");
+  info_->setText(
+      tr("%1 requests after dedup, %2 unique pages; <b>%3 of %4</b> pool pages used, %5 "
+         "superpages; <b>%6</b> requests coarsened (pool ran out).<br>Page table: "
+         "<span style='color:#3cbe5a'>■</span> requested, "
+         "<span style='color:#466ee6'>■</span> allocated unasked (top level, ancestor of "
+         "coarsened), <span style='color:#e63c32'>■</span> requested, coarsened, "
+         "<span style='color:#28282c'>■</span> empty.")
+          .arg(number("pages.requests.compacted"))
+          .arg(requested)
+          .arg(allocated)
+          .arg(pool)
+          .arg(number("pages.superpages"))
+          .arg(coarsened));
+  if (!history_.empty() && double(pub.frameIndex) <= history_.back().frame) history_.clear();
+  history_.push_back({double(pub.frameIndex), allocated, requested, pool});
+  while (history_.size() > kHistory) history_.pop_front();
+  PlotWidget::Series used{tr("allocated"), {}, QColor(60, 190, 90)};
+  PlotWidget::Series asked{tr("unique pages requested"), {}, QColor(230, 60, 50)};
+  for (const FrameUse& f : history_) {
+    used.points.emplace_back(f.frame, f.allocated);
+    asked.points.emplace_back(f.frame, f.requested);
+  }
+  use_->setSeries({used, asked});
+  use_->setLines({{pool, QColor(200, 200, 200), tr("pool.pages")}});
+  drawn_ = {{QStringLiteral("frames"), int(history_.size())},
+            {QStringLiteral("levels"), levels_},
+            {QStringLiteral("requested"), requested},
+            {QStringLiteral("allocated"), allocated},
+            {QStringLiteral("pool"), pool},
+            {QStringLiteral("coarsened"), coarsened}};
+  redraw();
+}
+
+void PagesPanel::redraw() {
+  const int v = viewChoice_->currentIndex();
+  level_->setEnabled(v == Table);
+  auto find = [&](const std::string& key) -> const sl::FloatImage* {
+    auto it = images_.find(key);
+    return it == images_.end() || it->second.width <= 0 ? nullptr : &it->second;
+  };
+  if (v == Table) {
+    const sl::FloatImage* t = find("pages.table." + std::to_string(level_->value()));
+    if (!t) return view_->clearImage(tr("no page table published"));
+    QImage img(t->width, t->height, QImage::Format_RGB32);
+    for (int y = 0; y < t->height; ++y)
+      for (int x = 0; x < t->width; ++x)
+        img.setPixel(x, t->height - 1 - y, stateColour(t->values[size_t(y) * t->width + x]));
+    view_->setImage(img, t->width, t->height);
+    view_->setLegend({}, ColorMap::Grey, QString(), false);
+    auto copy = std::make_shared<sl::FloatImage>(*t);
+    view_->setValueReader([copy](int x, int y) {
+      static const char* names[] = {"empty", "requested", "allocated unasked", "coarsened"};
+      const int s = int(copy->values[size_t(y) * copy->width + x]);
+      return QObject::tr("page (%1, %2): %3").arg(x).arg(y).arg(names[std::clamp(s, 0, 3)]);
+    });
+    view_->setCaption(
+        tr("page table, level %1 (%2 x %2 pages)").arg(level_->value()).arg(t->width));
+    return;
+  }
+  sl::FloatImage shown;
+  ColorMap map = ColorMap::Viridis;
+  QString caption, unit;
+  ValueRange range;
+  if (v == PoolLevels) {
+    if (poolLevels_.empty()) return view_->clearImage(tr("no pool published"));
+    shown.width = poolColumns_;
+    shown.height = int((poolLevels_.size() + size_t(poolColumns_) - 1) / size_t(poolColumns_));
+    shown.values.assign(size_t(shown.width) * size_t(shown.height), std::nanf(""));
+    std::copy(poolLevels_.begin(), poolLevels_.end(), shown.values.begin());
+    range = {0.0f, float(std::max(levels_ - 1, 1))};
+    caption = tr("pool slots (row 0 at the bottom): level held, black = free");
+    unit = tr("level");
+  } else {
+    const char* key = v == Served ? "pages.served"
+                      : v == Heat ? "pages.requests.heat"
+                                  : "pages.pool.depth";
+    const sl::FloatImage* img = find(key);
+    if (!img) return view_->clearImage(tr("not published"));
+    shown = displayCopy(*img, 1024);
+    if (v == Served) {
+      range = {0.0f, float(std::max(levels_ - 1, 1))};
+      caption = tr("level serving each finest page");
+      unit = tr("level");
+    } else if (v == Heat) {
+      range = finiteRange(shown.values);
+      caption = tr("requests per finest page (after dedup, all levels)");
+      unit = tr("requests");
+    } else {
+      range = finiteRange(shown.values, 1, 0, 1.0f);
+      map = ColorMap::Grey;
+      caption = tr("pool depth (pages side by side)");
+    }
+  }
+  view_->setImage(colorize(shown, 0, range, map), shown.width, shown.height);
+  view_->setLegend(range, map, unit, true);
+  auto copy = std::make_shared<sl::FloatImage>(shown);
+  view_->setValueReader([copy](int x, int y) {
+    return formatValue(copy->values[size_t(y) * size_t(copy->width) + size_t(x)]);
+  });
+  view_->setCaption(caption);
+}
+
+void PagesPanel::highlightPass(const QString& passId) {
+  view_->setHighlighted(passId.startsWith(QLatin1String("rmsm")));
+}
+
+QJsonObject PagesPanel::drawnValues() const {
+  return drawn_;
+}
+
+}  // namespace sl::ui

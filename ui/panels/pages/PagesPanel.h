@@ -1,0 +1,51 @@
+// The Pages panel (rmsm): the page table per level (requested / allocated unasked /
+// coarsened because the pool ran out, colours with a legend), the level serving each finest
+// page, this frame's requests as a heat map, the pool with each slot's level, the pool's
+// depth, the frame's counts, and the pool's use over the last frames. Reads the pages.*
+// publications (algo/pages/PageViews.h).
+#pragma once
+
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "panels/common/PanelKit.h"
+
+class QComboBox;
+class QLabel;
+class QSpinBox;
+
+namespace sl::ui {
+
+class PagesPanel : public PublicationPanel {
+  Q_OBJECT
+
+ public:
+  explicit PagesPanel(QWidget* parent = nullptr);
+
+  std::set<std::string> observedKeys() const override;
+  void showPublication(const sl::Publication& publication) override;
+  void highlightPass(const QString& passId) override;
+  QJsonObject drawnValues() const override;
+
+ private:
+  void redraw();
+
+  QComboBox* viewChoice_ = nullptr;
+  QSpinBox* level_ = nullptr;
+  ImageView* view_ = nullptr;
+  PlotWidget* use_ = nullptr;  ///< pool pages used and requested per frame
+  QLabel* info_ = nullptr;
+  struct FrameUse {
+    double frame, allocated, requested, pool;
+  };
+  std::deque<FrameUse> history_;                  ///< the last kHistory frames published
+  std::map<std::string, sl::FloatImage> images_;  ///< the last frame's pages.* images
+  std::vector<float> poolLevels_;
+  int poolColumns_ = 1;
+  int levels_ = 0;
+  QJsonObject drawn_;
+};
+
+}  // namespace sl::ui

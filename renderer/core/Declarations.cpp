@@ -98,7 +98,7 @@ const std::vector<PublicationDecl>& rendererPublicationDecls() {
        "up.{x,y,z}.",
        "", nullptr},
       {"light.type", PublicationKind::Number,
-       "The frame's light: its kind (sl::LightType: 0 directional, 1 spot, 2 point).", "", nullptr},
+       "The frame's light: its kind (0 directional, 1 spot, 2 point).", "", nullptr},
       {"light.azimuth_deg", PublicationKind::Number,
        "The frame's directional light: azimuth (degrees); absent for spot and point lights.", "",
        nullptr},

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Lesson texts are read by students: they cite papers by author and year, never by the
-# project's seed numbers ("seed 004") or C++ symbols ("sl::rtw::momentsFromTop").
+# What students and lecturers read cites papers by author and year, never by the project's
+# seed numbers ("seed 004") or C++ symbols ("sl::rtw::momentsFromTop"): the lesson texts, and
+# every string literal of the techniques, the renderer's declarations and the UI (parameter
+# help, technique descriptions, pass explanations, tooltips). Comments are not scanned, nor
+# the translation contexts of QCoreApplication::translate ("sl::ui::MainWindow").
 # usage: lesson_texts_cite_authors.sh <repository root>
 set -euo pipefail
 root=$1
@@ -15,4 +18,33 @@ for f in "${lessons[@]}"; do
   fi
 done
 (( fail == 0 )) && echo "PASS: ${#lessons[@]} lessons cite authors, no seed numbers or C++ symbols"
+python3 - "$root" <<'PY' || fail=1
+import pathlib, re, sys
+root = pathlib.Path(sys.argv[1])
+bad = re.compile(r"seed [0-9]{3}|\b[A-Za-z_]+::[A-Za-z_]+")
+literal = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
+context = re.compile(r'translate\(\s*"[^"]*"')
+files = 0
+hits = []
+for folder in ("renderer/techniques", "renderer/core", "ui"):
+    for f in sorted((root / folder).rglob("*")):
+        if f.suffix not in (".cpp", ".h"):
+            continue
+        files += 1
+        for n, line in enumerate(f.read_text(errors="replace").splitlines(), 1):
+            if line.lstrip().startswith("//"):
+                continue
+            line = context.sub("translate(", line)
+            for m in literal.finditer(line):
+                if bad.search(m.group(1)):
+                    hits.append(f"{f.relative_to(root)}:{n}: \"{m.group(1)[:90]}\"")
+if files < 50:
+    print(f"FAIL: only {files} source files scanned")
+    sys.exit(1)
+for h in hits:
+    print("FAIL:", h)
+if hits:
+    sys.exit(1)
+print(f"PASS: {files} source files: no seed numbers or C++ symbols in user-facing strings")
+PY
 exit $fail

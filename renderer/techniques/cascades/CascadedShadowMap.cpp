@@ -161,7 +161,7 @@ TechniqueInfo CascadedShadowMap::info() {
       {"partition.*.warp.fallback_cause",
        PublicationKind::Number,
        "Why partition i asked for a warp and got the uniform map: 0 none (or not asked), 1 "
-       "light behind the viewer, 2 in front, 4 degenerate (warp::FallbackCause).",
+       "light behind the viewer, 2 in front, 4 degenerate (the warp's fallback cause).",
        "",
        {}},
       {"partition.*.warp.n_prime",

@@ -42,7 +42,7 @@ TechniqueInfo CubeShadowMap::info() {
                        "to the layers whose frustum it touches) instead of six passes over "
                        "the scene. The maps are identical; only the time differs."});
   TechniqueInfo info{"cube", "Cube shadow map",
-                     "Omni-directional shadows (seed 001): six 90° perspective depth maps "
+                     "Omni-directional shadows: six 90° perspective depth maps "
                      "around a point light, one per cube face; a spot renders only the faces "
                      "its cone reaches. The lookup picks the face by the major axis of the "
                      "direction from the light.",

@@ -97,7 +97,8 @@ TechniqueInfo FacePartitionShadowMap::info() {
       number("partition.*.warp.fallback",
              "1 when slot i asked for a warp but used the uniform map."),
       number("partition.*.warp.fallback_cause",
-             "why: 0 none, 1 light behind, 2 light in front, 4 degenerate (warp::FallbackCause)."),
+             "why: 0 none, 1 light behind, 2 light in front, 4 degenerate (the warp's fallback "
+             "cause)."),
       number("partition.*.warped",
              "1 when slot i's map is warped (active, no fallback), else 0 (the Partitions "
              "panel's warp column, as cascades)."),

@@ -94,7 +94,7 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
        "", nullptr},
       {"warp.fallback_cause", PublicationKind::Number,
        "why: 0 none, 1 light behind the viewer, 2 light in front, 3 TSM focus beyond its line, "
-       "4 degenerate (warp::FallbackCause)",
+       "4 degenerate",
        "", nullptr}};
   info.lights = {LightType::Directional};
   return info;

@@ -60,7 +60,7 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
        .minValue = 0,
        .maxValue = 1,
        .step = 1,
-       .help = "Perspective aliasing: importance near/eye depth (seed 002's only term).",
+       .help = "Perspective aliasing: importance near/eye depth (Rosen 2012's only term).",
        .uniform = "u_eyeOn"});
   add({.key = "importance.eye.weight",
        .label = "Eye weight",
@@ -187,12 +187,13 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
          .minValue = 0.9,
          .maxValue = 1.0,
          .step = 0.0001,
-         .help = "Keep the rotation while e_x > threshold (seed 000: 0.9999); 1.0 never holds."});
+         .help = "Keep the rotation while e_x > threshold (Tokuyoshi et al. 2014 use 0.9999); 1.0 "
+                 "never holds."});
   std::string name, desc;
   if (id == "rtw-forward") {
     name = "RTW (forward analysis)";
     desc =
-        "Rectilinear texture warping (Rosen 2012, seed 002): importance from the light's "
+        "Rectilinear texture warping (Rosen 2012): importance from the light's "
         "view projected into the camera, 1D warp maps, warped shadow map.";
   } else if (id == "rtw-backward") {
     name = "RTW (backward analysis)";
@@ -208,7 +209,7 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
     name = "Directionality-aware RTW";
     desc =
         "Backward RTW with the light frustum rotated by PCA of the importance map "
-        "(Tokuyoshi et al. 2014, seed 000), with a vibration threshold.";
+        "(Tokuyoshi et al. 2014), with a vibration threshold.";
   }
   // Directional only: the warp is built over one orthographic light image; a spot's
   // perspective map (or a point light's cube) would need the importance and warp defined in

@@ -275,7 +275,9 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
     p.drawEllipse(toWidget(mx, my), 3.5, 3.5);
   });
   view_->setCaption(tr("1σ, 2σ and the principal axis (orange)"));
-  view_->setToolTip(tr("Computed from the %1 with sl::rtw::momentsFromTop").arg(source));
+  view_->setToolTip(
+      tr("Computed from the %1: the moments' mean and covariance (Tokuyoshi et al. 2014)")
+          .arg(source));
 
   // State, gauge and numbers.
   QString stateText;

@@ -3,11 +3,13 @@
 #include "core/Technique.h"
 #include "techniques/cascades/CascadedShadowMap.h"
 #include "techniques/facepartition/FacePartitionShadowMap.h"
+#include "techniques/fvsm/FittedVirtualShadowMap.h"
 #include "techniques/cube/CubeShadowMap.h"
 #include "techniques/dual-paraboloid/DualParaboloidShadowMap.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
+#include "techniques/virtual-tiled/VirtualTiledShadowMap.h"
 
 namespace sl {
 
@@ -49,6 +51,8 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       entry<FacePartitionShadowMap>(),
       entry<CubeShadowMap>(),
       entry<DualParaboloidShadowMap>(),
+      entry<VirtualTiledShadowMap>(),
+      entry<FittedVirtualShadowMap>(),
   };
   return list;
 }

@@ -15,7 +15,6 @@ namespace sl {
 
 namespace {
 
-constexpr double kBeyond = 1e30;
 constexpr int kMinTextureLog2 = 4;  ///< the smallest tile side: 16 texels
 
 bool isPowerOfTwo(int v) {
@@ -149,8 +148,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .help = "Pixels no tile reached (the SMTMM samples one pixel per block) are shadowed "
                "with one map of this size over the whole fit."},
   };
-  for (ParamDecl& d : shadowMapParamDecls(4096))
-    if (d.key != "resolution") params.push_back(std::move(d));
+  appendTileBiasParams(params);
   TechniqueInfo info{
       "fvsm", "Fitted virtual shadow maps",
       "Giegl & Wimmer 2007: a low-resolution SMTMM says where in the light's map each pixel "
@@ -294,15 +292,9 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
   }
 }
 
-FittedVirtualShadowMap::DepthTarget& FittedVirtualShadowMap::depthTarget(glm::ivec2 size) {
-  DepthTarget& d = targets_[{size.x, size.y}];
-  if (!d.texture) {
-    d.texture = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
-    d.fbo = gl::Framebuffer::create();
-    d.fbo.attach(GL_DEPTH_ATTACHMENT, d.texture);
-    d.fbo.setDrawBuffers(0);
-    d.fbo.checkComplete("fvsm tile " + std::to_string(size.x) + "x" + std::to_string(size.y));
-  }
+TileDepthTarget& FittedVirtualShadowMap::depthTarget(glm::ivec2 size) {
+  TileDepthTarget& d = targets_[{size.x, size.y}];
+  d.ensure(size, "fvsm tile " + std::to_string(size.x) + "x" + std::to_string(size.y));
   return d;
 }
 
@@ -317,7 +309,7 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
   for (std::size_t k = 0; k < tiles_.size(); ++k) {
     const fvsm::Tile& tile = tiles_[k];
     const fvsm::TileTexture tex = fvsm::tileTexture(mode, tile.textureLog2, maxLog2);
-    DepthTarget& target = depthTarget(tex.size);
+    TileDepthTarget& target = depthTarget(tex.size);
     glm::dvec2 lo, hi;
     fvsm::tileUvRectWithOverlap(tile, overlap, lo, hi);
     const DepthMapView view = subRectView(full_, lo, hi);
@@ -328,12 +320,8 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
                 view.lightViewProj);
     glDisable(GL_SCISSOR_TEST);
     if (t.timer) t.timer->begin("tile apply");
-    // The kd cell itself (the border cells also serve what lies beyond the fit).
-    const glm::dvec2 cellLo = tile.uvMin(), cellHi = tile.uvMax();
-    const glm::dvec2 applyLo(cellLo.x <= 0.0 ? -kBeyond : cellLo.x,
-                             cellLo.y <= 0.0 ? -kBeyond : cellLo.y);
-    const glm::dvec2 applyHi(cellHi.x >= 1.0 ? kBeyond : cellHi.x,
-                             cellHi.y >= 1.0 ? kBeyond : cellHi.y);
+    glm::dvec2 applyLo, applyHi;  // the kd cell itself (the overlap only feeds the lookup)
+    tileApplyRange(tile.uvMin(), tile.uvMax(), applyLo, applyHi);
     glm::ivec2 rectMin(0), rectMax(t.width, t.height);
     if (rects) fvsm::tileScreenRectPixels(tile.screen, smtmmSize_, frameSize_, 1, rectMin, rectMax);
     applyTile(
@@ -343,18 +331,17 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
   }
   {  // Pixels no leaf reached: one map over the whole fit.
     if (t.timer) t.timer->begin("fallback");
-    DepthTarget& target = depthTarget(glm::ivec2(fallbackResolution_));
+    TileDepthTarget& target = depthTarget(glm::ivec2(fallbackResolution_));
     renderDepth(*t.sceneGpu, depth_, target.fbo.id(), fallbackResolution_, fallbackResolution_,
                 full_.lightViewProj);
+    glm::dvec2 everywhereLo, everywhereHi;  // the whole map is a border tile
+    tileApplyRange(glm::dvec2(0.0), glm::dvec2(1.0), everywhereLo, everywhereHi);
     applyTile(apply_, t,
-              {full_, full_, target.texture, glm::ivec2(fallbackResolution_), glm::dvec2(-kBeyond),
-               glm::dvec2(kBeyond), glm::vec2(float(fallbackResolution_)), glm::ivec2(0),
+              {full_, full_, target.texture, glm::ivec2(fallbackResolution_), everywhereLo,
+               everywhereHi, glm::vec2(float(fallbackResolution_)), glm::ivec2(0),
                glm::ivec2(t.width, t.height), 255u, /*onlyEmpty=*/true});
   }
-  if (t.timer) t.timer->begin("resolve");  // the renderer's scope, closed by the tiles'
-  glDisable(GL_DEPTH_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
-  glViewport(0, 0, t.width, t.height);
+  endTiles(t);
 }
 
 MemoryStats FittedVirtualShadowMap::memory() const {
@@ -362,10 +349,7 @@ MemoryStats FittedVirtualShadowMap::memory() const {
   if (smtmmTexture_)
     m.add("SMTMM", gl::formatName(smtmmTexture_.format()), smtmmTexture_.width(),
           smtmmTexture_.height(), 1, gl::bytesPerTexel(smtmmTexture_.format()));
-  for (const auto& [size, target] : targets_) {
-    m.add("tile texture", gl::formatName(target.texture.format()), size.first, size.second, 1,
-          gl::bytesPerTexel(target.texture.format()));
-  }
+  for (const auto& [size, target] : targets_) target.addMemory(m, "tile texture");
   return m;
 }
 

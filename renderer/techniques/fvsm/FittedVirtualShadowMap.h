@@ -12,6 +12,7 @@
 #include "algo/fvsm/Fvsm.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
+#include "techniques/virtual-tiled/VirtualTiledShadowMap.h"
 
 namespace sl {
 
@@ -32,17 +33,13 @@ class FittedVirtualShadowMap : public Technique {
   const std::vector<fvsm::Tile>& tiles() const { return tiles_; }
 
  private:
-  struct DepthTarget {
-    gl::Texture texture;
-    gl::Framebuffer fbo;
-  };
-  DepthTarget& depthTarget(glm::ivec2 size);
+  TileDepthTarget& depthTarget(glm::ivec2 size);
 
   gl::Program depth_;
   gl::Program apply_;
   gl::Program smtmm_;
   gl::Texture smtmmTexture_;
-  std::map<std::pair<int, int>, DepthTarget> targets_;  ///< tile textures by (width, height)
+  std::map<std::pair<int, int>, TileDepthTarget> targets_;  ///< tile textures by (width, height)
   DepthMapView full_;
   glm::ivec2 smtmmSize_{0}, frameSize_{0};
   std::vector<fvsm::Tile> tiles_;

@@ -13,11 +13,6 @@
 
 namespace sl {
 
-namespace {
-/// The border tiles also serve what lies beyond the fit (their texture clamps there).
-constexpr double kBeyond = 1e30;
-}  // namespace
-
 TechniqueInfo VirtualTiledShadowMap::info() {
   std::vector<ParamDecl> params = {
       {.key = "tiles",
@@ -41,8 +36,7 @@ TechniqueInfo VirtualTiledShadowMap::info() {
        .help = "Width and height of every tile's depth texture in texels (one texture, reused "
                "by every tile)."},
   };
-  for (ParamDecl& d : shadowMapParamDecls(4096))
-    if (d.key != "resolution") params.push_back(std::move(d));
+  appendTileBiasParams(params);
   TechniqueInfo info{"virtual-tiled", "Virtual tiled shadow map (brute force)",
                      "The brute-force baseline of fitted virtual shadow maps (Giegl & Wimmer "
                      "2007): n x n tiles of the focused light frustum, every tile rendered at "
@@ -83,20 +77,45 @@ void VirtualTiledShadowMap::renderShadows(FrameContext& ctx) {
   ctx.addOutline(full_.lightViewProj, OutlineRole::LightMap);
 }
 
-void VirtualTiledShadowMap::ensureTile(int resolution) {
-  if (tile_ && tile_.width() == resolution) return;
-  tile_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, resolution, resolution);
-  fbo_ = gl::Framebuffer::create();
-  fbo_.attach(GL_DEPTH_ATTACHMENT, tile_);
-  fbo_.setDrawBuffers(0);
-  fbo_.checkComplete("virtual-tiled tile");
+void appendTileBiasParams(std::vector<ParamDecl>& params) {
+  for (ParamDecl& d : shadowMapParamDecls(4096))
+    if (d.key != "resolution") params.push_back(std::move(d));
+}
+
+void TileDepthTarget::ensure(glm::ivec2 size, const std::string& label) {
+  if (texture && texture.width() == size.x && texture.height() == size.y) return;
+  texture = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
+  fbo = gl::Framebuffer::create();
+  fbo.attach(GL_DEPTH_ATTACHMENT, texture);
+  fbo.setDrawBuffers(0);
+  fbo.checkComplete(label);
+}
+
+void TileDepthTarget::addMemory(MemoryStats& m, const std::string& name) const {
+  if (texture)
+    m.add(name, gl::formatName(texture.format()), texture.width(), texture.height(), 1,
+          gl::bytesPerTexel(texture.format()));
+}
+
+void tileApplyRange(glm::dvec2 uvMin, glm::dvec2 uvMax, glm::dvec2& applyMin,
+                    glm::dvec2& applyMax) {
+  constexpr double beyond = 1e30;
+  applyMin = {uvMin.x <= 0.0 ? -beyond : uvMin.x, uvMin.y <= 0.0 ? -beyond : uvMin.y};
+  applyMax = {uvMax.x >= 1.0 ? beyond : uvMax.x, uvMax.y >= 1.0 ? beyond : uvMax.y};
+}
+
+void endTiles(const ResolveTargets& t) {
+  if (t.timer) t.timer->begin("resolve");
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
+  glViewport(0, 0, t.width, t.height);
 }
 
 void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const ParamSet& params) {
   if (!t.sceneGpu) throw std::logic_error("virtual-tiled: the resolve has no scene");
   const int n = params.getInt("tiles");
   const int res = params.getInt("tile.resolution");
-  ensureTile(res);
+  tile_.ensure(glm::ivec2(res), "virtual-tiled tile");
   clearResolveTargets(t);
   const glm::vec2 texelsPerUv(float(n) * float(res));
   for (int j = 0; j < n; ++j) {
@@ -105,26 +124,21 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
       const glm::dvec2 hi(double(i + 1) / n, double(j + 1) / n);
       const DepthMapView view = subRectView(full_, lo, hi);
       if (t.timer) t.timer->begin("tile depth");
-      renderDepth(*t.sceneGpu, depth_, fbo_.id(), res, res, view.lightViewProj);
+      renderDepth(*t.sceneGpu, depth_, tile_.fbo.id(), res, res, view.lightViewProj);
       if (t.timer) t.timer->begin("tile apply");
-      const glm::dvec2 applyLo(i == 0 ? -kBeyond : lo.x, j == 0 ? -kBeyond : lo.y);
-      const glm::dvec2 applyHi(i == n - 1 ? kBeyond : hi.x, j == n - 1 ? kBeyond : hi.y);
+      glm::dvec2 applyLo, applyHi;
+      tileApplyRange(lo, hi, applyLo, applyHi);
       applyTile(apply_, t,
-                {full_, view, tile_, glm::ivec2(res), applyLo, applyHi, texelsPerUv, glm::ivec2(0),
-                 glm::ivec2(t.width, t.height), unsigned(j * n + i) & 255u});
+                {full_, view, tile_.texture, glm::ivec2(res), applyLo, applyHi, texelsPerUv,
+                 glm::ivec2(0), glm::ivec2(t.width, t.height), unsigned(j * n + i) & 255u});
     }
   }
-  if (t.timer) t.timer->begin("resolve");  // the renderer's scope, closed by the tiles'
-  glDisable(GL_DEPTH_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
-  glViewport(0, 0, t.width, t.height);
+  endTiles(t);
 }
 
 MemoryStats VirtualTiledShadowMap::memory() const {
   MemoryStats m;
-  if (tile_)
-    m.add("tile", gl::formatName(tile_.format()), tile_.width(), tile_.height(), 1,
-          gl::bytesPerTexel(tile_.format()));
+  tile_.addMemory(m, "tile");
   return m;
 }
 

@@ -11,6 +11,29 @@
 
 namespace sl {
 
+/// A tile's depth texture and its framebuffer (DEPTH_COMPONENT32F).
+struct TileDepthTarget {
+  gl::Texture texture;
+  gl::Framebuffer fbo;
+  /// (Re)allocates when the size differs; `label` names it in framebuffer errors.
+  void ensure(glm::ivec2 size, const std::string& label);
+  /// Its line of Technique::memory() (nothing when not allocated).
+  void addMemory(MemoryStats& m, const std::string& name) const;
+};
+
+/// The shared bias and PCF parameters of the tiled maps: shadowMapParamDecls without its one
+/// `resolution` (the tiles have their own), appended to `params`.
+void appendTileBiasParams(std::vector<ParamDecl>& params);
+
+/// The light uv range a tile applies to: its rectangle [uvMin, uvMax), with the sides on the
+/// full map's border (0 or 1) pushed out to infinity — the border tiles also serve what lies
+/// beyond the fit (their texture clamps there).
+void tileApplyRange(glm::dvec2 uvMin, glm::dvec2 uvMax, glm::dvec2& applyMin, glm::dvec2& applyMax);
+
+/// After the tiles of a deferred resolve: reopens the renderer's "resolve" scope (closed by the
+/// tiles' own) and restores the resolve's framebuffer, viewport and depth state.
+void endTiles(const ResolveTargets& targets);
+
 class VirtualTiledShadowMap : public Technique {
  public:
   static TechniqueInfo info();
@@ -24,13 +47,10 @@ class VirtualTiledShadowMap : public Technique {
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
  private:
-  void ensureTile(int resolution);
-
   gl::Program depth_;
   gl::Program apply_;
-  gl::Texture tile_;  ///< the one tile texture every tile is rendered into in turn
-  gl::Framebuffer fbo_;
-  DepthMapView full_;  ///< the whole virtual map (this frame's fit)
+  TileDepthTarget tile_;  ///< the one tile texture every tile is rendered into in turn
+  DepthMapView full_;     ///< the whole virtual map (this frame's fit)
 };
 
 /// The deferred application of one tile (shaders/virtual-tiled/apply_tile.comp), shared by

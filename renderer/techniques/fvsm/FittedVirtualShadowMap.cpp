@@ -327,7 +327,8 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
     applyTile(
         apply_, t,
         {full_, view, target.texture, tex.viewport, applyLo, applyHi,
-         glm::vec2(glm::dvec2(tex.viewport) / (hi - lo)), rectMin, rectMax, unsigned(k) & 255u});
+         glm::vec2(glm::dvec2(tex.viewport) / (hi - lo)), rectMin, rectMax, unsigned(k) & 255u,
+         /*onlyEmpty=*/false, /*clampToTile=*/false});
   }
   {  // Pixels no leaf reached: one map over the whole fit.
     if (t.timer) t.timer->begin("fallback");

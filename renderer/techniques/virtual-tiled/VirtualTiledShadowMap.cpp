@@ -169,6 +169,7 @@ void applyTile(const gl::Program& apply, const ResolveTargets& t, const TileAppl
   apply.set("u_texelsPerFullUv", tile.texelsPerFullUv);
   apply.set("u_mapIndex", tile.mapIndex);
   apply.set("u_onlyEmpty", tile.onlyEmpty ? 1 : 0);
+  apply.set("u_clampToTile", tile.clampToTile ? 1 : 0);
   apply.set("u_tileTexels", tile.texels);
   if (tile.onlyEmpty) glBindTextureUnit(SL_UNIT_HARD, t.hard.id());
   bindDepthLookup(apply, std::span(&tile.tile, 1));

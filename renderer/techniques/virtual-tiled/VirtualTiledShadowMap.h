@@ -67,6 +67,9 @@ struct TileApply {
   glm::ivec2 rectMin, rectMax;  ///< screen pixels the pass covers
   unsigned mapIndex = 0;        ///< written to the map-index target
   bool onlyEmpty = false;       ///< only pixels no tile has written yet (hard still empty)
+  /// A receiver whose normal offset leaves the tile compares with its edge texel; false: it
+  /// is lit (tile_lookup.glsl), the seams an overlap removes.
+  bool clampToTile = true;
 };
 void applyTile(const gl::Program& apply, const ResolveTargets& targets, const TileApply& tile);
 /// Before the tiles: every pixel empty (hard SL_MASK_EMPTY, visibility 1, m 0, uv 0).

@@ -2,6 +2,7 @@
 #include "panels/PanelRegistry.h"
 
 #include "panels/analysis/AnalysisPanels.h"
+#include "panels/fvsm/FvsmPanels.h"
 #include "panels/omni/OmniPanels.h"
 #include "panels/perspective/PerspectivePanels.h"
 #include "panels/partition/PartitionPanels.h"
@@ -18,6 +19,7 @@ const std::vector<PanelEntry>& publicationPanels() {
              perspectivePanels(),
              partitionPanels(),
              omniPanels(),
+             fvsmPanels(),
          })
       all.insert(all.end(), family.begin(), family.end());
     return all;

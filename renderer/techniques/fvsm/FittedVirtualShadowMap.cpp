@@ -162,12 +162,12 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        "One entry per block of pixels: where the pixel looks in the light's map, and the log2 "
        "resolution the whole map needs there along each axis (from its footprint built from "
        "neighbour depths); read back.",
-       ""},
+       "fvsm"},
       {"fvsm grid", "Tile grid, pyramid, kd-tree (CPU)",
        "The SMTMM accumulated into an n x n grid (max need per axis, screen rectangle, need "
        "histogram, outliers dropped), a max pyramid over it, and the top-down traversal that "
        "splits a node while its need exceeds the max texture size.",
-       ""},
+       "fvsm"},
       {"tile depth", "Tile depth (all tiles)",
        "Each kd leaf's part of the light frustum rendered at the resolution it needs (with the "
        "overlap) into its texture. The time is the sum over the tiles.",

@@ -77,8 +77,12 @@ std::vector<PassDecl> rendererPassDecls() {
 std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique) {
   std::vector<PassDecl> renderer = rendererPassDecls();
   std::vector<PassDecl> out{renderer.front()};
-  out.insert(out.end(), technique.passes.begin(), technique.passes.end());
-  out.insert(out.end(), renderer.begin() + 1, renderer.end());
+  for (const PassDecl& p : technique.passes)
+    if (!p.duringResolve) out.push_back(p);
+  out.push_back(renderer[1]);  // resolve
+  for (const PassDecl& p : technique.passes)
+    if (p.duringResolve) out.push_back(p);
+  out.insert(out.end(), renderer.begin() + 2, renderer.end());
   return out;
 }
 

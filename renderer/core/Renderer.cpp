@@ -550,7 +550,7 @@ void drawGBuffer(RendererState& s, Targets& t, const glm::mat4& viewProj, const 
 
 /// The resolve of `t`'s G-buffer into its targets with the technique's maps (lookup or
 /// deferred), as they were built this frame.
-void resolveInto(RendererState& s, Targets& t) {
+void resolveInto(RendererState& s, Targets& t, bool mainCamera) {
   const ParamSet& params = paramsFor(s, s.techniqueId);
   glBindFramebuffer(GL_FRAMEBUFFER, t.resolve.id());
   glViewport(0, 0, t.width, t.height);
@@ -569,9 +569,20 @@ void resolveInto(RendererState& s, Targets& t) {
     // Map 0 for every pixel unless the technique writes its selection.
     const GLuint zero = 0;
     glClearTexImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    const ResolveTargets targets{t.width,    t.height,       t.position, t.normal,
-                                 t.hard,     t.filtered,     t.aliasing, t.texel,
-                                 t.mapIndex, t.resolve.id(), s.light};
+    const ResolveTargets targets{t.width,
+                                 t.height,
+                                 t.position,
+                                 t.normal,
+                                 t.hard,
+                                 t.filtered,
+                                 t.aliasing,
+                                 t.texel,
+                                 t.mapIndex,
+                                 t.resolve.id(),
+                                 s.light,
+                                 s.sceneGpu.get(),
+                                 mainCamera ? s.timer.get() : nullptr,
+                                 mainCamera};
     s.technique->resolveDeferred(targets, params);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -632,7 +643,7 @@ Camera renderOutsideView(RendererState& s, int width, int height, float aspect,
   s.ensureOutsideTargets(width, height);
   Targets& o = s.outsideTargets;
   drawGBuffer(s, o, viewProj, cam.position);
-  resolveInto(s, o);
+  resolveInto(s, o, /*mainCamera=*/false);
   compositeInto(s, o, cam.position, false, /*mainCamera=*/false);
 
   if (segments.empty()) return cam;
@@ -761,7 +772,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
     // 3. Resolve: hard mask, filtered visibility, aliasing m, selected map's uv per pixel.
     auto pass = s.timer->scope("resolve");
-    resolveInto(s, t);
+    resolveInto(s, t, /*mainCamera=*/true);
     // Measured aliasing statistics, only while requested (timed with the resolve).
     if (publishing && wantsAliasingStats(s.publication)) publishAliasingStats(s);
   } catch (const std::exception& e) {

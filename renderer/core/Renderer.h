@@ -39,6 +39,9 @@ struct PassDecl {
   /// The panel showing its output: a panel id of the UI's registry ("importance", "warp",
   /// "shadowmap", ...); empty = the view itself.
   std::string panel;
+  /// Timed inside the renderer's resolve (a deferred technique's per-tile passes:
+  /// Technique::resolveDeferred): listed after "resolve" in framePassDecls.
+  bool duringResolve = false;
 };
 
 /// What a publication is: a float image, a set of images under one pattern, a curve

@@ -29,10 +29,30 @@ void beginDepthPass(GLuint framebuffer, int width, int height) {
 
 void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
                  int height, const glm::mat4& lightViewProj) {
+  renderDepth(ctx.sceneGpu, program, framebuffer, width, height, lightViewProj);
+}
+
+void renderDepth(const SceneGpu& scene, const gl::Program& program, GLuint framebuffer, int width,
+                 int height, const glm::mat4& lightViewProj) {
   beginDepthPass(framebuffer, width, height);
   program.use();
   program.set("u_lightViewProj", lightViewProj);
-  ctx.sceneGpu.draw(program, SL_UNIT_MATERIAL);
+  scene.draw(program, SL_UNIT_MATERIAL);
+}
+
+DepthMapView subRectView(const DepthMapView& full, glm::dvec2 uvMin, glm::dvec2 uvMax) {
+  // uv' = (uv − uvMin) / size with uv = (clip + 1) / 2: clip' = clip / size + (1 − 2 uvMin) /
+  // size − 1 (times w for the shift).
+  const glm::dvec2 size = uvMax - uvMin;
+  glm::mat4 s(1.0f);
+  s[0][0] = float(1.0 / size.x);
+  s[1][1] = float(1.0 / size.y);
+  s[3][0] = float((1.0 - 2.0 * uvMin.x) / size.x - 1.0);
+  s[3][1] = float((1.0 - 2.0 * uvMin.y) / size.y - 1.0);
+  DepthMapView v = full;
+  v.lightViewProj = s * full.lightViewProj;
+  v.extentM = full.extentM * glm::vec2(size);
+  return v;
 }
 
 float DepthMapView::depthPerMAtUnitW() const {

@@ -25,6 +25,9 @@ void beginDepthPass(GLuint framebuffer, int width, int height);
 /// map holds the exact depth at each texel centre; the lookup applies the bias model.
 void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
                  int height, const glm::mat4& lightViewProj);
+/// The same for a technique that renders maps outside renderShadows (ResolveTargets::sceneGpu).
+void renderDepth(const SceneGpu& scene, const gl::Program& program, GLuint framebuffer, int width,
+                 int height, const glm::mat4& lightViewProj);
 
 /// One depth map of a lookup (common/depth_map_test.glsl): its own light matrix and
 /// extent. A technique with several maps (an array, an atlas, cascades, faces) has one view
@@ -48,6 +51,11 @@ struct DepthMapView {
 };
 /// The view of one map covering this frame's fit.
 DepthMapView depthMapView(const LightFit& fit);
+/// The map covering only light uv [uvMin, uvMax] of `full` (a tile of a virtual map; uv
+/// may leave [0, 1] for an overlap): clip' = s clip with s scaling and shifting x and y, so
+/// it holds for orthographic and perspective matrices (the shift is times w); the same
+/// depth, extentM times the rectangle's size.
+DepthMapView subRectView(const DepthMapView& full, glm::dvec2 uvMin, glm::dvec2 uvMax);
 /// The view of a map rendered through a light-space warp (sl::DepthMapFrame: PSM, LiSPSM,
 /// TSM, warped cascades): perspective, its own w powers and depth per metre.
 DepthMapView depthMapView(const DepthMapFrame& frame);

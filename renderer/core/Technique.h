@@ -87,6 +87,16 @@ struct ResolveTargets {
   const gl::Texture& mapIndex;
   GLuint framebuffer = 0;  ///< the five as colour attachments 0..4, for a fragment pass
   const Light& light;      ///< the frame's light (sl::bindLight: common/light.glsl)
+  /// The scene on the GPU, for a technique that renders its maps during the resolve (tile
+  /// by tile: virtual-tiled, fvsm).
+  const SceneGpu* sceneGpu = nullptr;
+  /// Times the passes of a deferred resolve (per tile); null where the resolve is not timed
+  /// (the outside view). A scope opened here closes the renderer's "resolve" scope (scopes do
+  /// not nest): a technique that opens one reopens "resolve" before it returns.
+  gl::GpuTimer* timer = nullptr;
+  /// False for the outside view's resolve: its pixels are not the main camera's, which a
+  /// screen-space analysis (fvsm's tile rectangles) was made for.
+  bool mainCamera = true;
   /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the five
   /// targets to image units SL_IMAGE_RESOLVE_* (write-only), for a compute pass.
   void bindForCompute() const;

@@ -3,12 +3,14 @@
 #include "core/Technique.h"
 #include "techniques/cascades/CascadedShadowMap.h"
 #include "techniques/facepartition/FacePartitionShadowMap.h"
+#include "techniques/fvsm/FittedVirtualShadowMap.h"
 #include "techniques/cube/CubeShadowMap.h"
 #include "techniques/dual-paraboloid/DualParaboloidShadowMap.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
 #include "techniques/rmsm/RmsmShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
+#include "techniques/virtual-tiled/VirtualTiledShadowMap.h"
 
 namespace sl {
 
@@ -51,6 +53,8 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       entry<CubeShadowMap>(),
       entry<DualParaboloidShadowMap>(),
       entry<RmsmShadowMap>(),
+      entry<VirtualTiledShadowMap>(),
+      entry<FittedVirtualShadowMap>(),
   };
   return list;
 }

@@ -110,4 +110,10 @@
 #define SL_RMSM_IMAGE_REQUESTS 0  // r32ui: the page key each pixel asks for (SL_PAGE_NONE: none)
 #define SL_RMSM_BUFFER_REQUESTS 0  // SSBO: count, then the compacted keys
 
+// --- Fitted virtual shadow maps (techniques/fvsm, shaders/fvsm; algo/fvsm).
+// Cap of a quantised SMTMM need (log2 texels of the whole virtual map along one axis): a
+// footprint collapsed to a line along an SM axis needs "infinite" resolution.
+#define SL_FVSM_MAX_NEED_LOG2 24
+#define SL_IMAGE_FVSM_SMTMM 0  // rgba32f: (sm u, sm v, need log2 u, need log2 v); need -1: empty
+
 #endif  // SL_SHARED_CONSTANTS_H

@@ -2,6 +2,7 @@
 #include "panels/PanelRegistry.h"
 
 #include "panels/analysis/AnalysisPanels.h"
+#include "panels/fvsm/FvsmPanels.h"
 #include "panels/omni/OmniPanels.h"
 #include "panels/pages/PagesPanels.h"
 #include "panels/perspective/PerspectivePanels.h"
@@ -20,6 +21,7 @@ const std::vector<PanelEntry>& publicationPanels() {
              partitionPanels(),
              omniPanels(),
              pagesPanels(),
+             fvsmPanels(),
          })
       all.insert(all.end(), family.begin(), family.end());
     return all;

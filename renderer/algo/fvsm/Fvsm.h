@@ -1,0 +1,236 @@
+// Fitted virtual shadow maps (Giegl & Wimmer, GI 2007; seed 003, docs/techniques.md §6): the
+// CPU reference of every step after the eye-space depth buffer — the SMTMM entry of one pixel
+// from its depth neighbourhood (§4.3), the tile grid with its η histogram and outlier
+// rejection (§4.4), the max pyramid (§4.5), the top-down kd-tree traversal (§4.6) with ξ
+// (§4.9), and the three tile texture modes (§4.10). Plain C++: the `fvsm` technique runs
+// steps 3-5 with these very functions on its read-back SMTMM.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/shared_constants.h"
+
+namespace sl::fvsm {
+
+/// Cap of a quantised need (log2 of texels along one axis of the whole virtual map): a
+/// pixel whose footprint collapses to a line along an SM axis needs "infinite" resolution
+/// and is stored as this.
+inline constexpr int kMaxNeedLog2 = SL_FVSM_MAX_NEED_LOG2;
+
+// ---------------------------------------------------------------------------------------
+// Step 2: SMTMM entries.
+
+/// What the SMTMM pass knows about the camera: a perspective camera looking along its −z
+/// with the given half-angle tangents, and the linear eye-space depth buffer (metres along
+/// −z, 0 = no surface). Eq. (1) of the paper: a pixel's eye-space position from its screen
+/// position and its linear depth.
+struct EyeDepthView {
+  int width = 0, height = 0;
+  double tanHalfFovX = 1.0, tanHalfFovY = 1.0;
+  std::span<const float> eyeDepthM;  ///< width * height, row-major, row 0 at the bottom
+  float depthAt(int x, int y) const { return eyeDepthM[std::size_t(y) * width + x]; }
+};
+
+/// Eye-space position of screen position `pixel` (pixel units, (0, 0) = the bottom-left
+/// corner of the frame; a pixel's centre is at +0.5) at linear depth `eyeDepthM` (eq. 1).
+glm::dvec3 eyePosition(const EyeDepthView& view, glm::dvec2 pixel, double eyeDepthM);
+
+/// One SMTMM entry. `smUv`: where in the virtual shadow map ([0, 1]²) the pixel looks;
+/// `needLog2`: the log2 of the resolution the WHOLE virtual map needs along each SM axis
+/// there, so that one texel is no larger than half the pixel's footprint (Δ, the half
+/// extent of the footprint's SM-axis-aligned box: need = ceil(−log2 Δ), clamped to
+/// [0, kMaxNeedLog2]). Not `covered`: no surface, or the point leaves the map's [0, 1]².
+struct SmtmmEntry {
+  bool covered = false;
+  glm::dvec2 smUv{0.0};
+  glm::ivec2 needLog2{0};
+  bool operator==(const SmtmmEntry&) const = default;
+};
+
+/// The quantisation of one half extent Δ (SM uv units): ceil(−log2 Δ) in [0, kMaxNeedLog2];
+/// Δ <= 0 gives kMaxNeedLog2.
+int quantiseNeedLog2(double halfExtentUv);
+
+/// The entry of the pixel whose centre is at `pixel` (integer coordinates) — §4.3: the
+/// smaller |Δz| towards the left/right and towards the lower/upper neighbour (neighbours
+/// without a surface or outside the frame are ignored; none: Δz = 0), the pixel's footprint
+/// as the parallelogram P ± a ± b with a = (P(x + ½, z + Δz_x / 2) − P(x − ½, z − Δz_x / 2)) / 2
+/// and b likewise along y, its four corners through `eyeToSmUv` (eye space → SM uv in
+/// x, y; w divided), and the half extents of their SM-axis-aligned box.
+SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dmat4& eyeToSmUv);
+
+/// The SMTMM of `n` x `m` entries (row-major, row 0 at the bottom): entry (i, j) is the
+/// entry of the pixel at the centre of its block, (floor((i + ½) W / n), floor((j + ½) H / m)).
+glm::ivec2 smtmmSamplePixel(glm::ivec2 entry, glm::ivec2 smtmmSize, glm::ivec2 frameSize);
+std::vector<SmtmmEntry> buildSmtmm(const EyeDepthView& view, glm::ivec2 smtmmSize,
+                                   const glm::dmat4& eyeToSmUv);
+
+// ---------------------------------------------------------------------------------------
+// Step 3: the tile grid.
+
+/// The histogram's end buckets (§4.4; the paper found η0 = 17, η1 = 22 to work): bucket 0
+/// counts needs <= η0, bucket k (1 .. η1 − η0 − 1) the need η0 + k, the last bucket needs
+/// >= η1. `outlierEntries`: at most this many entries of a cell needing more than η0 are
+/// discarded (the highest needs first, whole buckets only); 0 keeps every entry (plain max).
+struct HistogramSettings {
+  int eta0 = 17;
+  int eta1 = 22;
+  int outlierEntries = 0;
+  /// Throws std::invalid_argument naming the problem (η0 < η1 within [0, kMaxNeedLog2],
+  /// outlierEntries >= 0).
+  void validate() const;
+  int bucketCount() const { return eta1 - eta0 + 1; }
+  int bucketOf(int needLog2) const;
+};
+
+/// Screen rectangle in SMTMM entries, inclusive; empty while min > max.
+struct EntryRect {
+  glm::ivec2 min{1 << 30}, max{-(1 << 30)};
+  bool empty() const { return min.x > max.x || min.y > max.y; }
+  void include(glm::ivec2 p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  void include(const EntryRect& r) {
+    if (r.empty()) return;
+    include(r.min);
+    include(r.max);
+  }
+  bool operator==(const EntryRect&) const = default;
+};
+
+/// Maximum number of histogram buckets (η1 − η0 + 1 <= kMaxNeedLog2 + 1).
+inline constexpr int kMaxBuckets = kMaxNeedLog2 + 1;
+
+struct GridCell {
+  int entries = 0;                                          ///< SMTMM entries landing here
+  glm::ivec2 maxNeedLog2{-1};                               ///< plain max per axis, −1 empty
+  glm::ivec2 maxNeedAtMostEta0{-1};                         ///< max of needs <= η0, per axis
+  std::array<std::array<int, kMaxBuckets>, 2> histogram{};  ///< [axis][bucket]
+  EntryRect screen;
+  /// The need after outlier rejection (HistogramSettings), −1 for an empty cell.
+  glm::ivec2 needLog2{-1};
+};
+
+/// n x n cells (n a power of two, 1 .. 256), row-major, cell (0, 0) at SM uv (0, 0).
+struct TileGrid {
+  int n = 0;
+  std::vector<GridCell> cells;
+  GridCell& at(int x, int y) { return cells[std::size_t(y) * n + x]; }
+  const GridCell& at(int x, int y) const { return cells[std::size_t(y) * n + x]; }
+};
+
+/// The cell of SM uv `uv` in an n x n grid (uv = 1 falls in the last cell).
+glm::ivec2 gridCellOf(glm::dvec2 uv, int n);
+/// The need of one axis of a cell after discarding outliers (see HistogramSettings).
+int rejectOutliers(const GridCell& cell, int axis, const HistogramSettings& h);
+/// §4.4: every covered entry updates its cell's max, histogram and screen rectangle; then
+/// each cell's `needLog2` is its need after outlier rejection. Throws std::invalid_argument
+/// for n not a power of two in 1 .. 256 or a size mismatch.
+TileGrid accumulateGrid(std::span<const SmtmmEntry> smtmm, glm::ivec2 smtmmSize, int n,
+                        const HistogramSettings& histogram);
+
+// ---------------------------------------------------------------------------------------
+// Step 4: the max pyramid.
+
+struct PyramidCell {
+  glm::ivec2 needLog2{-1};  ///< max of the children's, −1 when all are empty
+  EntryRect screen;         ///< union of the children's
+  bool operator==(const PyramidCell&) const = default;
+};
+/// levels[p] holds 2^p x 2^p cells; levels.back() is the grid's own (its `needLog2`).
+struct Pyramid {
+  std::vector<std::vector<PyramidCell>> levels;
+  int finestLevel() const { return int(levels.size()) - 1; }
+  const PyramidCell& at(int level, int x, int y) const {
+    return levels[std::size_t(level)][std::size_t(y) * (std::size_t(1) << level) + x];
+  }
+};
+Pyramid buildPyramid(const TileGrid& grid);
+
+// ---------------------------------------------------------------------------------------
+// Step 5: the kd-tree traversal.
+
+struct TraversalSettings {
+  int maxTextureLog2 = 12;  ///< t_max = 2^12 = 4096 texels per axis
+  int minTextureLog2 = 4;   ///< the smallest tile texture side (16 texels)
+  int xi = 0;               ///< ξ: subtracted from every need (§4.9), >= 0
+  /// Throws std::invalid_argument naming the problem.
+  void validate() const;
+};
+
+/// One rendered SM tile: a kd-tree leaf. It covers SM uv [ix, ix + 1) / 2^levelX along u
+/// (likewise v) and is rendered at `textureLog2` texels per axis (its need minus its level
+/// and ξ, clamped to [minTextureLog2, maxTextureLog2]); `screen` is the union of the screen
+/// rectangles of the grid cells below it. `unmet`: the finest grid level was reached with
+/// a need still above t_max (rendered at t_max).
+struct Tile {
+  int levelX = 0, levelY = 0;
+  int ix = 0, iy = 0;
+  glm::ivec2 needLog2{0};  ///< max need (after ξ) of the grid cells below it
+  glm::ivec2 textureLog2{0};
+  EntryRect screen;
+  bool unmet = false;
+  glm::dvec2 uvMin() const {
+    return {double(ix) / double(1 << levelX), double(iy) / double(1 << levelY)};
+  }
+  glm::dvec2 uvMax() const {
+    return {double(ix + 1) / double(1 << levelX), double(iy + 1) / double(1 << levelY)};
+  }
+  bool operator==(const Tile&) const = default;
+};
+
+/// The max need and screen rectangle over the grid cells below kd node (levelX, levelY,
+/// ix, iy), read from pyramid level max(levelX, levelY) (the paper's MaxSmResInRect).
+PyramidCell nodeSummary(const Pyramid& pyramid, int levelX, int levelY, int ix, int iy);
+
+/// §4.6, breadth first from the root: a node without entries is dropped; a node whose need
+/// (minus ξ, minus its level) along an axis exceeds maxTextureLog2 is split in two along
+/// that axis (in four when both do) unless the grid's finest level is reached along it;
+/// otherwise it is a leaf. The leaves in the order they are found.
+std::vector<Tile> traverse(const Pyramid& pyramid, const TraversalSettings& settings);
+
+// ---------------------------------------------------------------------------------------
+// §4.10: tile textures.
+
+enum class TextureMode : int {
+  SubRect = 0,     ///< every tile draws into a sub-rectangle of one t_max² texture
+  PowerOfTwo = 1,  ///< the smallest square of the series t_max², (t_max/2)², … that holds it
+  ExactSize = 2,   ///< a texture of exactly the tile's w x h
+};
+inline constexpr int kTextureModes = 3;
+const char* textureModeName(TextureMode mode);
+
+/// Where a tile of 2^textureLog2 texels is drawn: texture `size`, viewport `viewport`
+/// at its origin.
+struct TileTexture {
+  glm::ivec2 size{0};
+  glm::ivec2 viewport{0};
+  bool operator==(const TileTexture&) const = default;
+};
+TileTexture tileTexture(TextureMode mode, glm::ivec2 textureLog2, int maxTextureLog2);
+
+/// Texels of every texture a mode can need, the paper's bounds: SubRect t_max²;
+/// PowerOfTwo the series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max²); ExactSize
+/// every w x h with both sides powers of two in [2^min, t_max] ((2 t_max − 2^min)², the
+/// bound of allocating every shape; a frame allocates only the shapes it uses).
+std::uint64_t textureModeBoundTexels(TextureMode mode, int maxTextureLog2, int minTextureLog2);
+
+/// Tile overlap against seams (§5): the tile's SM uv rectangle grown by `overlapTexels` of
+/// its own texels on every side (0 = the exact kd cell).
+void tileUvRectWithOverlap(const Tile& tile, double overlapTexels, glm::dvec2& uvMin,
+                           glm::dvec2& uvMax);
+
+/// A tile's screen rectangle in pixels [min, max) for a frame of `frameSize` pixels and an
+/// SMTMM of `smtmmSize` entries: the entries' pixel blocks grown by `marginEntries` blocks on
+/// every side (a pixel between two sampled pixels may look into the tile), clamped.
+void tileScreenRectPixels(const EntryRect& rect, glm::ivec2 smtmmSize, glm::ivec2 frameSize,
+                          int marginEntries, glm::ivec2& minPixel, glm::ivec2& maxPixel);
+
+}  // namespace sl::fvsm

@@ -1,0 +1,363 @@
+// Fitted virtual shadow maps (FittedVirtualShadowMap.h).
+#include "FittedVirtualShadowMap.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "algo/Focus.h"
+#include "common/shared_constants.h"
+#include "core/Publish.h"
+#include "techniques/virtual-tiled/VirtualTiledShadowMap.h"
+
+namespace sl {
+
+namespace {
+
+constexpr int kMinTextureLog2 = 4;  ///< the smallest tile side: 16 texels
+
+bool isPowerOfTwo(int v) {
+  return v > 0 && (v & (v - 1)) == 0;
+}
+int log2Of(int v) {
+  int l = 0;
+  while ((1 << l) < v) ++l;
+  return l;
+}
+
+fvsm::TextureMode textureMode(const ParamSet& p) {
+  return fvsm::TextureMode(p.getInt("fvsm.texture.mode"));
+}
+
+}  // namespace
+
+TechniqueInfo FittedVirtualShadowMap::info() {
+  std::vector<ParamDecl> params = {
+      {.key = "fvsm.xi",
+       .label = "Quality ξ",
+       .group = "FVSM",
+       .type = ParamType::Int,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 12,
+       .step = 1,
+       .help = "ξ: subtracted from every log2 resolution need before the traversal (Giegl & "
+               "Wimmer §4.9): each step halves the texels per axis everywhere. Large ξ: one "
+               "ordinary shadow map."},
+      {.key = "fvsm.texture.mode",
+       .label = "Tile textures",
+       .group = "FVSM",
+       .type = ParamType::Enum,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 2,
+       .step = 1,
+       .enumNames = {"sub-rectangle", "power-of-two", "exact"},
+       .help = "Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture, of "
+               "the smallest square of a power-of-two series (≤ 4/3 t_max², the paper's "
+               "recommendation), or a texture of exactly its size."},
+      {.key = "fvsm.overlap",
+       .label = "Tile overlap",
+       .group = "FVSM",
+       .type = ParamType::Float,
+       .defaultValue = 1.0,
+       .minValue = 0.0,
+       .maxValue = 4.0,
+       .step = 0.5,
+       .help = "Each tile's texture covers its kd cell grown by this many of its own texels on "
+               "every side, so receivers near a tile edge find the neighbour's depth (0 shows "
+               "the seams)."},
+      {.key = "fvsm.grid",
+       .label = "Tile grid n",
+       .group = "FVSM",
+       .type = ParamType::Int,
+       .defaultValue = 16,
+       .minValue = 1,
+       .maxValue = 64,
+       .step = 1,
+       .help = "n x n tile grid the SMTMM is accumulated into (a power of two; the paper: 16 or "
+               "32): the finest kd-tree level."},
+      {.key = "fvsm.max_texture",
+       .label = "Max tile texture",
+       .group = "FVSM",
+       .type = ParamType::Int,
+       .defaultValue = 4096,
+       .minValue = 16,
+       .maxValue = 8192,
+       .step = 16,
+       .help = "t_max (a power of two): a kd node needing more texels along an axis is split "
+               "along it."},
+      {.key = "fvsm.smtmm.divisor",
+       .label = "SMTMM divisor",
+       .group = "FVSM",
+       .type = ParamType::Int,
+       .defaultValue = 4,
+       .minValue = 1,
+       .maxValue = 16,
+       .step = 1,
+       .help = "The SMTMM has frame / divisor entries per axis (the paper: 256² for a 1024² "
+               "frame), each sampling the pixel at the centre of its block."},
+      {.key = "fvsm.eta0",
+       .label = "Histogram η0",
+       .group = "FVSM",
+       .type = ParamType::Int,
+       .defaultValue = 17,
+       .minValue = 0,
+       .maxValue = SL_FVSM_MAX_NEED_LOG2 - 1,
+       .step = 1,
+       .help = "Lower end bucket of each tile's need histogram (log2): needs up to η0 are "
+               "never discarded as outliers."},
+      {.key = "fvsm.eta1",
+       .label = "Histogram η1",
+       .group = "FVSM",
+       .type = ParamType::Int,
+       .defaultValue = 22,
+       .minValue = 1,
+       .maxValue = SL_FVSM_MAX_NEED_LOG2,
+       .step = 1,
+       .help = "Upper end bucket (log2): needs from η1 up are counted together."},
+      {.key = "fvsm.outliers",
+       .label = "Outlier entries",
+       .group = "FVSM",
+       .type = ParamType::Int,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 4096,
+       .step = 1,
+       .help = "Per tile, at most this many SMTMM entries needing more than η0 are discarded "
+               "(highest needs first, whole buckets); 0 keeps the plain maximum."},
+      {.key = "fvsm.screen_rect",
+       .label = "Apply in screen rectangles",
+       .group = "FVSM",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Apply each tile only inside the screen rectangle of its SMTMM entries (one "
+               "entry block of margin); off: over the whole screen."},
+      {.key = "fvsm.fallback.resolution",
+       .label = "Fallback map",
+       .group = "FVSM",
+       .type = ParamType::Int,
+       .defaultValue = 1024,
+       .minValue = 16,
+       .maxValue = 8192,
+       .step = 16,
+       .help = "Pixels no tile reached (the SMTMM samples one pixel per block) are shadowed "
+               "with one map of this size over the whole fit."},
+  };
+  appendTileBiasParams(params);
+  TechniqueInfo info{
+      "fvsm", "Fitted virtual shadow maps",
+      "Giegl & Wimmer 2007: a low-resolution SMTMM says where in the light's map each pixel "
+      "looks and how many texels it needs per axis; on the CPU, a tile grid with outlier "
+      "rejection, its max pyramid and a kd-tree traversal choose tiles that each fit the "
+      "max texture size; each is rendered at its need and applied only inside its screen "
+      "rectangle.",
+      std::move(params)};
+  info.passes = {
+      {"smtmm", "SMTMM",
+       "One entry per block of pixels: where the pixel looks in the light's map, and the log2 "
+       "resolution the whole map needs there along each axis (from its footprint built from "
+       "neighbour depths); read back.",
+       "fvsm"},
+      {"fvsm grid", "Tile grid, pyramid, kd-tree (CPU)",
+       "The SMTMM accumulated into an n x n grid (max need per axis, screen rectangle, need "
+       "histogram, outliers dropped), a max pyramid over it, and the top-down traversal that "
+       "splits a node while its need exceeds the max texture size.",
+       "fvsm"},
+      {"tile depth", "Tile depth (all tiles)",
+       "Each kd leaf's part of the light frustum rendered at the resolution it needs (with the "
+       "overlap) into its texture. The time is the sum over the tiles.",
+       "", true},
+      {"tile apply", "Deferred shadowing (all tiles)",
+       "Each leaf applied to the pixels of its screen rectangle whose light uv falls in it. "
+       "The time is the sum over the tiles.",
+       "", true},
+      {"fallback", "Fallback map", "Pixels no leaf reached: one map over the whole fit.", "", true},
+  };
+  const auto number = [](const char* key, const char* what) {
+    return PublicationDecl{key, PublicationKind::Number, what, "", nullptr};
+  };
+  info.publications = {
+      {"fvsm.smtmm", PublicationKind::Image,
+       "the SMTMM, 4 channels per entry: SM u, SM v, log2 need along u, along v (−1: no "
+       "surface); row 0 at the bottom",
+       "0 B (read back for the grid anyway)", [](const ParamSet&) { return std::uint64_t(0); }},
+      number("fvsm.tiles", "kd-tree leaves rendered this frame"),
+      number("fvsm.tiles.unmet", "leaves whose need exceeded the max texture at the finest level"),
+      number("fvsm.need_log2.u", "log2 texels the whole map needs along u (after ξ, outliers)"),
+      number("fvsm.need_log2.v", "log2 texels the whole map needs along v (after ξ, outliers)"),
+      number("fvsm.texels", "texels of all tiles rendered this frame"),
+  };
+  info.lights = {LightType::Directional};
+  return info;
+}
+
+FittedVirtualShadowMap::FittedVirtualShadowMap(const gl::ShaderLibrary& lib)
+    : depth_(lib, depthProgramDesc()),
+      apply_(lib, applyTileProgramDesc()),
+      smtmm_(lib, {"fvsm/smtmm", {{GL_COMPUTE_SHADER, "fvsm/smtmm.comp"}}, {}, {}}) {}
+
+void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
+  const ParamSet& p = ctx.params;
+  const int n = p.getInt("fvsm.grid"), tmax = p.getInt("fvsm.max_texture");
+  if (!isPowerOfTwo(n))
+    throw std::runtime_error("fvsm.grid must be a power of two (got " + std::to_string(n) + ")");
+  if (!isPowerOfTwo(tmax))
+    throw std::runtime_error("fvsm.max_texture must be a power of two (got " +
+                             std::to_string(tmax) + ")");
+  fvsm::HistogramSettings histogram{p.getInt("fvsm.eta0"), p.getInt("fvsm.eta1"),
+                                    p.getInt("fvsm.outliers")};
+  fvsm::TraversalSettings traversal{log2Of(tmax), std::min(kMinTextureLog2, log2Of(tmax)),
+                                    p.getInt("fvsm.xi")};
+  try {
+    histogram.validate();
+    traversal.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(e.what());
+  }
+
+  std::vector<glm::vec4> raw;
+  {
+    auto pass = ctx.timer.scope("smtmm");
+    LightFit fit;
+    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                       ctx.light.directionalTowards(), FocusSettings{}, fit)) {
+      throw std::runtime_error(*err);
+    }
+    full_ = depthMapView(fit);
+    ctx.addOutline(full_.lightViewProj, OutlineRole::LightMap);
+    const int divisor = p.getInt("fvsm.smtmm.divisor");
+    frameSize_ = {ctx.width, ctx.height};
+    smtmmSize_ = (frameSize_ + divisor - 1) / divisor;
+    if (!smtmmTexture_ || smtmmTexture_.width() != smtmmSize_.x ||
+        smtmmTexture_.height() != smtmmSize_.y) {
+      smtmmTexture_ = gl::Texture::create2D(GL_RGBA32F, smtmmSize_.x, smtmmSize_.y);
+    }
+    glm::mat4 uvFromClip(1.0f);
+    uvFromClip[0][0] = uvFromClip[1][1] = 0.5f;
+    uvFromClip[3][0] = uvFromClip[3][1] = 0.5f;
+    const float tanY = std::tan(glm::radians(ctx.camera.fovYDeg) * 0.5f);
+    smtmm_.use();
+    smtmm_.set("u_frameSize", frameSize_);
+    smtmm_.set("u_smtmmSize", smtmmSize_);
+    smtmm_.set("u_view", ctx.cameraView);
+    smtmm_.set("u_tanHalfFov", glm::vec2(tanY * ctx.aspect, tanY));
+    smtmm_.set("u_eyeToSmUv", uvFromClip * full_.lightViewProj * glm::inverse(ctx.cameraView));
+    glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+    glBindImageTexture(SL_IMAGE_FVSM_SMTMM, smtmmTexture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RGBA32F);
+    glDispatchCompute(GLuint((smtmmSize_.x + 7) / 8), GLuint((smtmmSize_.y + 7) / 8), 1);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    raw.resize(std::size_t(smtmmSize_.x) * std::size_t(smtmmSize_.y));
+    glGetTextureImage(smtmmTexture_.id(), 0, GL_RGBA, GL_FLOAT,
+                      GLsizei(raw.size() * sizeof(glm::vec4)), raw.data());
+  }
+  if (ctx.wants("fvsm.smtmm")) {  // read back anyway: publishing it costs no readback
+    FloatImage img{smtmmSize_.x, smtmmSize_.y, 4, {}};
+    img.values.reserve(raw.size() * 4);
+    for (const glm::vec4& e : raw) img.values.insert(img.values.end(), {e.x, e.y, e.z, e.w});
+    ctx.publication->images["fvsm.smtmm"] = std::move(img);
+  }
+  {
+    auto pass = ctx.timer.scope("fvsm grid");
+    std::vector<fvsm::SmtmmEntry> entries(raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (raw[i].z < 0.0f) continue;
+      entries[i] = {true, glm::dvec2(raw[i].x, raw[i].y), glm::ivec2(raw[i].z, raw[i].w)};
+    }
+    const fvsm::Pyramid pyramid =
+        fvsm::buildPyramid(fvsm::accumulateGrid(entries, smtmmSize_, n, histogram));
+    tiles_ = fvsm::traverse(pyramid, traversal);
+    fallbackResolution_ = p.getInt("fvsm.fallback.resolution");
+    // Allocate every texture this frame's tiles use now, so memory() holds them all.
+    const fvsm::TextureMode mode = textureMode(p);
+    std::uint64_t texels = 0;
+    int unmet = 0;
+    for (const fvsm::Tile& t : tiles_) {
+      depthTarget(fvsm::tileTexture(mode, t.textureLog2, traversal.maxTextureLog2).size);
+      texels += std::uint64_t(1) << (t.textureLog2.x + t.textureLog2.y);
+      unmet += t.unmet ? 1 : 0;
+    }
+    depthTarget(glm::ivec2(fallbackResolution_));
+    const glm::ivec2 root = pyramid.at(0, 0, 0).needLog2;
+    publishNumber(ctx, "fvsm.tiles", double(tiles_.size()));
+    publishNumber(ctx, "fvsm.tiles.unmet", double(unmet));
+    publishNumber(ctx, "fvsm.need_log2.u", double(std::max(root.x - traversal.xi, -1)));
+    publishNumber(ctx, "fvsm.need_log2.v", double(std::max(root.y - traversal.xi, -1)));
+    publishNumber(ctx, "fvsm.texels", double(texels));
+  }
+}
+
+TileDepthTarget& FittedVirtualShadowMap::depthTarget(glm::ivec2 size) {
+  TileDepthTarget& d = targets_[{size.x, size.y}];
+  d.ensure(size, "fvsm tile " + std::to_string(size.x) + "x" + std::to_string(size.y));
+  return d;
+}
+
+void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const ParamSet& params) {
+  if (!t.sceneGpu) throw std::logic_error("fvsm: the resolve has no scene");
+  const fvsm::TextureMode mode = textureMode(params);
+  const int maxLog2 = log2Of(params.getInt("fvsm.max_texture"));
+  const double overlap = params.get("fvsm.overlap");
+  const bool rects = params.getBool("fvsm.screen_rect") && t.mainCamera &&
+                     frameSize_ == glm::ivec2(t.width, t.height);
+  clearResolveTargets(t);
+  for (std::size_t k = 0; k < tiles_.size(); ++k) {
+    const fvsm::Tile& tile = tiles_[k];
+    const fvsm::TileTexture tex = fvsm::tileTexture(mode, tile.textureLog2, maxLog2);
+    TileDepthTarget& target = depthTarget(tex.size);
+    glm::dvec2 lo, hi;
+    fvsm::tileUvRectWithOverlap(tile, overlap, lo, hi);
+    const DepthMapView view = subRectView(full_, lo, hi);
+    if (t.timer) t.timer->begin("tile depth");
+    glEnable(GL_SCISSOR_TEST);  // only the tile's sub-rectangle is cleared and drawn
+    glScissor(0, 0, tex.viewport.x, tex.viewport.y);
+    renderDepth(*t.sceneGpu, depth_, target.fbo.id(), tex.viewport.x, tex.viewport.y,
+                view.lightViewProj);
+    glDisable(GL_SCISSOR_TEST);
+    if (t.timer) t.timer->begin("tile apply");
+    glm::dvec2 applyLo, applyHi;  // the kd cell itself (the overlap only feeds the lookup)
+    tileApplyRange(tile.uvMin(), tile.uvMax(), applyLo, applyHi);
+    glm::ivec2 rectMin(0), rectMax(t.width, t.height);
+    if (rects) fvsm::tileScreenRectPixels(tile.screen, smtmmSize_, frameSize_, 1, rectMin, rectMax);
+    applyTile(
+        apply_, t,
+        {full_, view, target.texture, tex.viewport, applyLo, applyHi,
+         glm::vec2(glm::dvec2(tex.viewport) / (hi - lo)), rectMin, rectMax, unsigned(k) & 255u,
+         /*onlyEmpty=*/false, /*clampToTile=*/false});
+  }
+  {  // Pixels no leaf reached: one map over the whole fit.
+    if (t.timer) t.timer->begin("fallback");
+    TileDepthTarget& target = depthTarget(glm::ivec2(fallbackResolution_));
+    renderDepth(*t.sceneGpu, depth_, target.fbo.id(), fallbackResolution_, fallbackResolution_,
+                full_.lightViewProj);
+    glm::dvec2 everywhereLo, everywhereHi;  // the whole map is a border tile
+    tileApplyRange(glm::dvec2(0.0), glm::dvec2(1.0), everywhereLo, everywhereHi);
+    applyTile(apply_, t,
+              {full_, full_, target.texture, glm::ivec2(fallbackResolution_), everywhereLo,
+               everywhereHi, glm::vec2(float(fallbackResolution_)), glm::ivec2(0),
+               glm::ivec2(t.width, t.height), 255u, /*onlyEmpty=*/true});
+  }
+  endTiles(t);
+}
+
+MemoryStats FittedVirtualShadowMap::memory() const {
+  MemoryStats m;
+  if (smtmmTexture_)
+    m.add("SMTMM", gl::formatName(smtmmTexture_.format()), smtmmTexture_.width(),
+          smtmmTexture_.height(), 1, gl::bytesPerTexel(smtmmTexture_.format()));
+  for (const auto& [size, target] : targets_) target.addMemory(m, "tile texture");
+  return m;
+}
+
+std::optional<std::string> FittedVirtualShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  if (auto e = depth_.rebuild(lib)) return e;
+  if (auto e = apply_.rebuild(lib)) return e;
+  return smtmm_.rebuild(lib);
+}
+
+}  // namespace sl

@@ -1,0 +1,49 @@
+// Fitted virtual shadow maps (Giegl & Wimmer, GI 2007; docs/techniques.md §6): the SMTMM pass
+// on the GPU (shaders/fvsm/smtmm.comp), read back; the tile grid, its max pyramid and the
+// kd-tree traversal on the CPU with the reference itself (algo/fvsm); then every kd leaf is
+// rendered at the resolution it needs and applied by deferred shadowing inside its screen
+// rectangle (shaders/virtual-tiled/apply_tile.comp, shared with `virtual-tiled`). Pixels no
+// leaf reached (the SMTMM samples one pixel per block) get a fallback map over the whole fit.
+#pragma once
+
+#include <map>
+#include <utility>
+
+#include "algo/fvsm/Fvsm.h"
+#include "core/ShadowPass.h"
+#include "core/Technique.h"
+#include "techniques/virtual-tiled/VirtualTiledShadowMap.h"
+
+namespace sl {
+
+class FittedVirtualShadowMap : public Technique {
+ public:
+  static TechniqueInfo info();
+  explicit FittedVirtualShadowMap(const gl::ShaderLibrary& lib);
+
+  void renderShadows(FrameContext& ctx) override;
+  ResolveMode resolveMode() const override { return ResolveMode::Deferred; }
+  void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override;
+  std::vector<const gl::Program*> programs() const override { return {&depth_, &apply_, &smtmm_}; }
+  MemoryStats memory() const override;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+
+  /// This frame's kd-tree leaves (for tests: the CPU reference's output on the read-back
+  /// SMTMM).
+  const std::vector<fvsm::Tile>& tiles() const { return tiles_; }
+
+ private:
+  TileDepthTarget& depthTarget(glm::ivec2 size);
+
+  gl::Program depth_;
+  gl::Program apply_;
+  gl::Program smtmm_;
+  gl::Texture smtmmTexture_;
+  std::map<std::pair<int, int>, TileDepthTarget> targets_;  ///< tile textures by (width, height)
+  DepthMapView full_;
+  glm::ivec2 smtmmSize_{0}, frameSize_{0};
+  std::vector<fvsm::Tile> tiles_;
+  int fallbackResolution_ = 0;
+};
+
+}  // namespace sl

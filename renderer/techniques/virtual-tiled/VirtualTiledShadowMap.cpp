@@ -1,0 +1,184 @@
+// Brute-force virtual tiled shadow map (VirtualTiledShadowMap.h): n x n tiles of one
+// focused orthographic frustum, each rendered into one reused texture and applied by a
+// deferred compute pass before the next.
+#include "VirtualTiledShadowMap.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "algo/Focus.h"
+#include "common/shared_constants.h"
+#include "core/LightBinding.h"
+
+namespace sl {
+
+TechniqueInfo VirtualTiledShadowMap::info() {
+  std::vector<ParamDecl> params = {
+      {.key = "tiles",
+       .label = "Tiles per axis",
+       .group = "Virtual map",
+       .type = ParamType::Int,
+       .defaultValue = 16,
+       .minValue = 1,
+       .maxValue = 64,
+       .step = 1,
+       .help = "n: the light's focused frustum is cut into n x n tiles, each rendered and applied "
+               "in turn (16 x 16 of 4096² = a 65536² virtual map)."},
+      {.key = "tile.resolution",
+       .label = "Tile resolution",
+       .group = "Virtual map",
+       .type = ParamType::Int,
+       .defaultValue = 4096,
+       .minValue = 16,
+       .maxValue = 8192,
+       .step = 16,
+       .help = "Width and height of every tile's depth texture in texels (one texture, reused "
+               "by every tile)."},
+  };
+  appendTileBiasParams(params);
+  TechniqueInfo info{"virtual-tiled", "Virtual tiled shadow map (brute force)",
+                     "The brute-force baseline of fitted virtual shadow maps (Giegl & Wimmer "
+                     "2007): n x n tiles of the focused light frustum, every tile rendered at "
+                     "the full tile resolution and applied by deferred shadowing over the "
+                     "whole screen. Quality of an (n x resolution)² map, at n² times the cost.",
+                     std::move(params)};
+  info.passes = {
+      {"tile depth", "Tile depth (all tiles)",
+       "For each of the n x n tiles in turn: render the scene's depth over that tile's part of "
+       "the light frustum into the one tile texture. The time is the sum over the tiles.",
+       "", true},
+      {"tile apply", "Deferred shadowing (all tiles)",
+       "After each tile's depth: a compute pass over the screen shadows the pixels whose light "
+       "uv falls in that tile (world position from the G-buffer) and writes the hard mask, "
+       "visibility, aliasing m, the tile's uv and its index. The time is the sum over the "
+       "tiles.",
+       "", true},
+  };
+  info.lights = {LightType::Directional};
+  return info;
+}
+
+gl::ProgramDesc applyTileProgramDesc() {
+  return {
+      "virtual-tiled/apply_tile", {{GL_COMPUTE_SHADER, "virtual-tiled/apply_tile.comp"}}, {}, {}};
+}
+
+VirtualTiledShadowMap::VirtualTiledShadowMap(const gl::ShaderLibrary& lib)
+    : depth_(lib, depthProgramDesc()), apply_(lib, applyTileProgramDesc()) {}
+
+void VirtualTiledShadowMap::renderShadows(FrameContext& ctx) {
+  LightFit fit;
+  if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                     ctx.light.directionalTowards(), FocusSettings{}, fit)) {
+    throw std::runtime_error(*err);
+  }
+  full_ = depthMapView(fit);
+  ctx.addOutline(full_.lightViewProj, OutlineRole::LightMap);
+}
+
+void appendTileBiasParams(std::vector<ParamDecl>& params) {
+  for (ParamDecl& d : shadowMapParamDecls(4096))
+    if (d.key != "resolution") params.push_back(std::move(d));
+}
+
+void TileDepthTarget::ensure(glm::ivec2 size, const std::string& label) {
+  if (texture && texture.width() == size.x && texture.height() == size.y) return;
+  texture = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
+  fbo = gl::Framebuffer::create();
+  fbo.attach(GL_DEPTH_ATTACHMENT, texture);
+  fbo.setDrawBuffers(0);
+  fbo.checkComplete(label);
+}
+
+void TileDepthTarget::addMemory(MemoryStats& m, const std::string& name) const {
+  if (texture)
+    m.add(name, gl::formatName(texture.format()), texture.width(), texture.height(), 1,
+          gl::bytesPerTexel(texture.format()));
+}
+
+void tileApplyRange(glm::dvec2 uvMin, glm::dvec2 uvMax, glm::dvec2& applyMin,
+                    glm::dvec2& applyMax) {
+  constexpr double beyond = 1e30;
+  applyMin = {uvMin.x <= 0.0 ? -beyond : uvMin.x, uvMin.y <= 0.0 ? -beyond : uvMin.y};
+  applyMax = {uvMax.x >= 1.0 ? beyond : uvMax.x, uvMax.y >= 1.0 ? beyond : uvMax.y};
+}
+
+void endTiles(const ResolveTargets& t) {
+  if (t.timer) t.timer->begin("resolve");
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
+  glViewport(0, 0, t.width, t.height);
+}
+
+void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const ParamSet& params) {
+  if (!t.sceneGpu) throw std::logic_error("virtual-tiled: the resolve has no scene");
+  const int n = params.getInt("tiles");
+  const int res = params.getInt("tile.resolution");
+  tile_.ensure(glm::ivec2(res), "virtual-tiled tile");
+  clearResolveTargets(t);
+  const glm::vec2 texelsPerUv(float(n) * float(res));
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const glm::dvec2 lo(double(i) / n, double(j) / n);
+      const glm::dvec2 hi(double(i + 1) / n, double(j + 1) / n);
+      const DepthMapView view = subRectView(full_, lo, hi);
+      if (t.timer) t.timer->begin("tile depth");
+      renderDepth(*t.sceneGpu, depth_, tile_.fbo.id(), res, res, view.lightViewProj);
+      if (t.timer) t.timer->begin("tile apply");
+      glm::dvec2 applyLo, applyHi;
+      tileApplyRange(lo, hi, applyLo, applyHi);
+      applyTile(apply_, t,
+                {full_, view, tile_.texture, glm::ivec2(res), applyLo, applyHi, texelsPerUv,
+                 glm::ivec2(0), glm::ivec2(t.width, t.height), unsigned(j * n + i) & 255u});
+    }
+  }
+  endTiles(t);
+}
+
+MemoryStats VirtualTiledShadowMap::memory() const {
+  MemoryStats m;
+  tile_.addMemory(m, "tile");
+  return m;
+}
+
+std::optional<std::string> VirtualTiledShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
+  if (auto e = depth_.rebuild(lib)) return e;
+  return apply_.rebuild(lib);
+}
+
+void clearResolveTargets(const ResolveTargets& t) {
+  const GLuint empty = SL_MASK_EMPTY;
+  const float one = 1.0f, zero[2] = {0.0f, 0.0f};
+  glClearTexImage(t.hard.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+  glClearTexImage(t.filtered.id(), 0, GL_RED, GL_FLOAT, &one);
+  glClearTexImage(t.aliasing.id(), 0, GL_RED, GL_FLOAT, zero);
+  glClearTexImage(t.texel.id(), 0, GL_RG, GL_FLOAT, zero);
+}
+
+void applyTile(const gl::Program& apply, const ResolveTargets& t, const TileApply& tile) {
+  t.bindForCompute();
+  apply.use();
+  bindLight(apply, t.light);
+  apply.set("u_size", glm::ivec2(t.width, t.height));
+  apply.set("u_rectMin", tile.rectMin);
+  apply.set("u_rectMax", tile.rectMax);
+  apply.set("u_fullViewProj", tile.full.lightViewProj);
+  apply.set("u_tileUvMin", glm::vec2(tile.uvMin));
+  apply.set("u_tileUvMax", glm::vec2(tile.uvMax));
+  apply.set("u_texelsPerFullUv", tile.texelsPerFullUv);
+  apply.set("u_mapIndex", tile.mapIndex);
+  apply.set("u_onlyEmpty", tile.onlyEmpty ? 1 : 0);
+  apply.set("u_clampToTile", tile.clampToTile ? 1 : 0);
+  apply.set("u_tileTexels", tile.texels);
+  if (tile.onlyEmpty) glBindTextureUnit(SL_UNIT_HARD, t.hard.id());
+  bindDepthLookup(apply, std::span(&tile.tile, 1));
+  glBindTextureUnit(SL_UNIT_LOOKUP_FIRST, tile.texture.id());
+  apply.set("u_shadowMap", SL_UNIT_LOOKUP_FIRST);
+  const glm::ivec2 size = glm::max(tile.rectMax - tile.rectMin, glm::ivec2(0));
+  if (size.x == 0 || size.y == 0) return;
+  glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+}  // namespace sl

@@ -1,0 +1,88 @@
+// The shadow-map tile mapping map (SMTMM) of fitted virtual shadow maps (Giegl & Wimmer 2007,
+// §4.3; CPU reference: sl::fvsm::smtmmEntry / buildSmtmm, algo/fvsm/Fvsm.cpp, which this
+// mirrors line by line in float): one invocation per entry, sampling the pixel at the centre
+// of the entry's block. Linear eye depth comes from the G-buffer's world position (the
+// camera's view matrix); the pixel's footprint is the parallelogram P ± a ± b built from the
+// smaller depth step towards its neighbours (eq. 1), projected into the virtual map's uv.
+#include "common/shared_constants.h"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;
+layout(rgba32f, binding = SL_IMAGE_FVSM_SMTMM) writeonly uniform image2D o_smtmm;
+uniform ivec2 u_frameSize;
+uniform ivec2 u_smtmmSize;
+uniform mat4 u_view;         // world -> eye
+uniform vec2 u_tanHalfFov;   // x, y
+uniform mat4 u_eyeToSmUv;    // eye -> the virtual map's uv (x, y; w divided)
+
+float eyeDepthAt(ivec2 p) {
+  vec4 P = texelFetch(u_gPosition, p, 0);
+  return P.w > 0.0 ? -(u_view * vec4(P.xyz, 1.0)).z : 0.0;
+}
+
+// sl::fvsm::eyePosition (eq. 1).
+vec3 eyePosition(vec2 pixel, float z) {
+  vec2 ndc = 2.0 * pixel / vec2(u_frameSize) - 1.0;
+  return vec3(ndc * u_tanHalfFov * z, -z);
+}
+
+vec2 toSmUv(vec3 e) {
+  vec4 c = u_eyeToSmUv * vec4(e, 1.0);
+  return c.xy / c.w;
+}
+
+// The smaller |dz| towards the two neighbours along `step`; 0 when neither has a surface.
+float smallerDepthStep(ivec2 p, ivec2 step, float z) {
+  float best = -1.0;
+  for (int s = -1; s <= 1; s += 2) {
+    ivec2 q = p + s * step;
+    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_frameSize))) continue;
+    float zn = eyeDepthAt(q);
+    if (zn <= 0.0) continue;
+    float d = abs(zn - z);
+    if (best < 0.0 || d < best) best = d;
+  }
+  return best < 0.0 ? 0.0 : best;
+}
+
+// sl::fvsm::quantiseNeedLog2.
+float quantise(float halfExtent) {
+  if (!(halfExtent > 0.0)) return float(SL_FVSM_MAX_NEED_LOG2);
+  return clamp(ceil(-log2(halfExtent)), 0.0, float(SL_FVSM_MAX_NEED_LOG2));
+}
+
+void main() {
+  ivec2 entry = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(entry, u_smtmmSize))) return;
+  // sl::fvsm::smtmmSamplePixel
+  ivec2 pixel = min(ivec2(floor((vec2(entry) + 0.5) * vec2(u_frameSize) / vec2(u_smtmmSize))),
+                    u_frameSize - 1);
+  vec4 empty = vec4(0.0, 0.0, -1.0, -1.0);
+  float z = eyeDepthAt(pixel);
+  if (!(z > 0.0)) {
+    imageStore(o_smtmm, entry, empty);
+    return;
+  }
+  vec2 centre = vec2(pixel) + 0.5;
+  vec3 p = eyePosition(centre, z);
+  vec2 uv = toSmUv(p);
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+    imageStore(o_smtmm, entry, empty);
+    return;
+  }
+  float dzX = smallerDepthStep(pixel, ivec2(1, 0), z);
+  float dzY = smallerDepthStep(pixel, ivec2(0, 1), z);
+  vec3 a = 0.5 * (eyePosition(centre + vec2(0.5, 0.0), z + 0.5 * dzX) -
+                  eyePosition(centre - vec2(0.5, 0.0), z - 0.5 * dzX));
+  vec3 b = 0.5 * (eyePosition(centre + vec2(0.0, 0.5), z + 0.5 * dzY) -
+                  eyePosition(centre - vec2(0.0, 0.5), z - 0.5 * dzY));
+  vec2 lo = vec2(1e30), hi = vec2(-1e30);
+  for (int sa = -1; sa <= 1; sa += 2) {
+    for (int sb = -1; sb <= 1; sb += 2) {
+      vec2 c = toSmUv(p + float(sa) * a + float(sb) * b);
+      lo = min(lo, c);
+      hi = max(hi, c);
+    }
+  }
+  vec2 halfExtent = 0.5 * (hi - lo);
+  imageStore(o_smtmm, entry, vec4(uv, quantise(halfExtent.x), quantise(halfExtent.y)));
+}

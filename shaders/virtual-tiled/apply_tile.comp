@@ -1,0 +1,74 @@
+// Deferred shadowing with ONE tile of a virtual shadow map (Giegl & Wimmer 2007, §3.2; C++:
+// sl::applyTile in techniques/virtual-tiled): every pixel of the dispatched screen rectangle
+// whose light uv in the full (virtual) map lies in the tile's [u_tileUvMin, u_tileUvMax)
+// is shadowed with the tile — map 0 of the shared bias model (tile_lookup.glsl) — and
+// written to the resolve targets; the others are left as they are (a later tile, or
+// the clear). The G-buffer holds world positions, so eq. 1's reconstruction from linear
+// eye depth is the G-buffer's own. Aliasing m: finite differences over the pixel's 2x2 quad
+// of the tile's texel coordinate (full-map uv times the tile's texels per uv).
+#include "common/shared_constants.h"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;
+layout(binding = SL_UNIT_G_NORMAL) uniform sampler2D u_gNormal;
+layout(r8ui, binding = SL_IMAGE_RESOLVE_HARD) writeonly uniform uimage2D o_hard;
+layout(r8, binding = SL_IMAGE_RESOLVE_FILTERED) writeonly uniform image2D o_filtered;
+layout(r32f, binding = SL_IMAGE_RESOLVE_ALIASING) writeonly uniform image2D o_aliasing;
+layout(rg32f, binding = SL_IMAGE_RESOLVE_TEXEL) writeonly uniform image2D o_texel;
+layout(r8ui, binding = SL_IMAGE_RESOLVE_MAP) writeonly uniform uimage2D o_map;
+#include "common/light.glsl"
+uniform ivec2 u_size;            // frame size in pixels
+uniform ivec2 u_rectMin;         // the dispatch's screen rectangle starts here
+uniform ivec2 u_rectMax;         // ... and ends here (exclusive)
+uniform mat4 u_fullViewProj;     // world -> the full virtual map's clip space
+uniform vec2 u_tileUvMin;        // the tile's part of the full map's light uv
+uniform vec2 u_tileUvMax;
+uniform vec2 u_texelsPerFullUv;  // the tile's texels per unit of full-map uv
+uniform uint u_mapIndex;
+// Only pixels still empty after the tiles (fvsm's fallback map): the hard target so far.
+uniform bool u_onlyEmpty;
+layout(binding = SL_UNIT_HARD) uniform usampler2D u_hardSoFar;
+
+#include "virtual-tiled/tile_lookup.glsl"
+
+vec2 fullUv(vec3 P) {
+  vec4 c = u_fullViewProj * vec4(P, 1.0);
+  return c.xy / c.w * 0.5 + 0.5;
+}
+
+// The tile's texel coordinate at pixel p (clamped into the frame); 0 without a surface.
+vec2 texelAt(ivec2 p) {
+  p = clamp(p, ivec2(0), u_size - 1);
+  vec4 P = texelFetch(u_gPosition, p, 0);
+  return P.w > 0.0 ? fullUv(P.xyz) * u_texelsPerFullUv : vec2(0.0);
+}
+
+void main() {
+  ivec2 px = u_rectMin + ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(px, min(u_rectMax, u_size)))) return;
+  vec4 P = texelFetch(u_gPosition, px, 0);
+  if (P.w <= 0.0) return;
+  if (u_onlyEmpty && texelFetch(u_hardSoFar, px, 0).r != SL_MASK_EMPTY) return;
+  vec2 uv = fullUv(P.xyz);
+  if (any(lessThan(uv, u_tileUvMin)) || any(greaterThanEqual(uv, u_tileUvMax))) return;
+
+  ivec2 q = px & ~1;  // the quad: dX along the pixel's row, dY along its column
+  vec2 dX = texelAt(ivec2(q.x + 1, px.y)) - texelAt(ivec2(q.x, px.y));
+  vec2 dY = texelAt(ivec2(px.x, q.y + 1)) - texelAt(ivec2(px.x, q.y));
+  float area = abs(dX.x * dY.y - dX.y * dY.x);
+  vec3 N = texelFetch(u_gNormal, px, 0).xyz;
+  ShadowCoord c = shadowLookupCoord(P.xyz, N);
+  imageStore(o_texel, px, vec4(c.uvz.xy, 0.0, 0.0));
+  imageStore(o_aliasing, px, vec4(area > 0.0 ? inversesqrt(area) : 0.0));
+  imageStore(o_map, px, uvec4(u_mapIndex));
+  uint hard;
+  float filtered;
+  if (dot(N, towardsLight(P.xyz)) <= 0.0 || lightIlluminates(P.xyz) < 0.5) {
+    hard = SL_MASK_SHADOWED;
+    filtered = 0.0;
+  } else {
+    hard = shadowHardAt(c) >= 0.5 ? SL_MASK_LIT : SL_MASK_SHADOWED;
+    filtered = shadowFilteredAt(c);
+  }
+  imageStore(o_hard, px, uvec4(hard));
+  imageStore(o_filtered, px, vec4(filtered));
+}

@@ -1,0 +1,318 @@
+// algo/fvsm (Giegl & Wimmer 2007): SMTMM entries from hand-made depth neighbourhoods, the tile
+// grid's max / histogram / outlier rejection, the max pyramid, the kd-tree traversal with ξ
+// and the max texture size, the three texture modes' sizes, overlap and screen rectangles —
+// all exact, on grids small enough to work out by hand (the numbers are in the comments).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "algo/fvsm/Fvsm.h"
+
+namespace sl::fvsm {
+namespace {
+
+/// An 8 x 8 frame with tan(half fov) = 1: a pixel at eye depth z is 2z / 8 = z / 4 m wide.
+EyeDepthView frame8(const std::vector<float>& depth) {
+  EyeDepthView v;
+  v.width = v.height = 8;
+  v.tanHalfFovX = v.tanHalfFovY = 1.0;
+  v.eyeDepthM = depth;
+  return v;
+}
+
+/// SM uv = (x_e, y_e) / 64 m + 0.5: a light looking along the camera's view axis.
+glm::dmat4 lightAlongView() {
+  glm::dmat4 m(1.0);
+  m[0][0] = m[1][1] = 1.0 / 64.0;
+  m[3][0] = m[3][1] = 0.5;
+  return m;
+}
+
+/// SM uv = (−z_e / 64 m, y_e / 64 m + 0.5): a light looking along the camera's x axis,
+/// so u measures eye depth.
+glm::dmat4 lightAcrossView() {
+  glm::dmat4 m(0.0);
+  m[2][0] = -1.0 / 64.0;  // u from z_e
+  m[1][1] = 1.0 / 64.0;   // v from y_e
+  m[3][1] = 0.5;
+  m[3][3] = 1.0;
+  return m;
+}
+
+TEST(FvsmSmtmm, EyePositionIsEquationOne) {
+  std::vector<float> d(64, 4.0f);
+  const EyeDepthView v = frame8(d);
+  EXPECT_EQ(eyePosition(v, {4.0, 4.0}, 2.0), glm::dvec3(0.0, 0.0, -2.0));
+  EXPECT_EQ(eyePosition(v, {8.0, 6.0}, 2.0), glm::dvec3(2.0, 1.0, -2.0));
+  EXPECT_EQ(eyePosition(v, {0.0, 0.0}, 3.0), glm::dvec3(-3.0, -3.0, -3.0));
+}
+
+TEST(FvsmSmtmm, QuantisationIsCeilOfMinusLog2) {
+  EXPECT_EQ(quantiseNeedLog2(1.0 / 128.0), 7);
+  EXPECT_EQ(quantiseNeedLog2(0.01), 7);  // -log2 0.01 = 6.64
+  EXPECT_EQ(quantiseNeedLog2(1.0 / 129.0), 8);
+  EXPECT_EQ(quantiseNeedLog2(0.5), 1);
+  EXPECT_EQ(quantiseNeedLog2(1.0), 0);
+  EXPECT_EQ(quantiseNeedLog2(4.0), 0);  // clamped
+  EXPECT_EQ(quantiseNeedLog2(0.0), kMaxNeedLog2);
+  EXPECT_EQ(quantiseNeedLog2(1e-30), kMaxNeedLog2);
+}
+
+TEST(FvsmSmtmm, FlatWallFacingTheLight) {
+  // Depth 4 everywhere: pixels are 1 m squares, the footprint's half extent 0.5 m = 1/128 uv.
+  std::vector<float> d(64, 4.0f);
+  const SmtmmEntry e = smtmmEntry(frame8(d), {3, 3}, lightAlongView());
+  ASSERT_TRUE(e.covered);
+  // Centre (3.5, 3.5): ndc −0.125, x_e = −0.5 m, u = 0.5 − 0.5 / 64.
+  EXPECT_EQ(e.smUv, glm::dvec2(0.5 - 0.5 / 64.0));
+  EXPECT_EQ(e.needLog2, glm::ivec2(7, 7));
+}
+
+TEST(FvsmSmtmm, DepthSlopeSeenFromTheSide) {
+  // z = 4 + column: pixel (3, 3) at z = 7, its x neighbours at 6 and 8 (Δz_x = 1), its y
+  // neighbours at 7 (Δz_y = 0). u = z / 64: a.z = −0.5 → Δu = 0.5 / 64 → need 7.
+  // v: a.y = ½ (−0.125 · 7.5 + 0.125 · 6.5) = −0.0625, b.y = ½ (0 − (−0.25 · 7)) = 0.875,
+  // Δv = 0.9375 / 64 → −log2 = 6.09 → need 7.
+  std::vector<float> d(64);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) d[std::size_t(y) * 8 + x] = float(4 + x);
+  const SmtmmEntry e = smtmmEntry(frame8(d), {3, 3}, lightAcrossView());
+  ASSERT_TRUE(e.covered);
+  EXPECT_EQ(e.smUv, glm::dvec2(7.0 / 64.0, 0.5 - 0.125 * 7.0 / 64.0));
+  EXPECT_EQ(e.needLog2, glm::ivec2(7, 7));
+}
+
+TEST(FvsmSmtmm, TheSmallerNeighbourStepIsTaken) {
+  // Flat at 4 with the light across the view: Δz = 0 collapses the footprint along u (a
+  // line seen edge-on): the need is the cap. A depth discontinuity on the right (100 m)
+  // does not count while the left neighbour is flat.
+  std::vector<float> d(64, 4.0f);
+  d[3 * 8 + 4] = 100.0f;
+  EXPECT_EQ(smtmmEntry(frame8(d), {3, 3}, lightAcrossView()).needLog2.x, kMaxNeedLog2);
+  // Left neighbour at 5: min(|5 − 4|, |100 − 4|) = 1, as on the slope: a.z = −0.5 → 7.
+  d[3 * 8 + 2] = 5.0f;
+  EXPECT_EQ(smtmmEntry(frame8(d), {3, 3}, lightAcrossView()).needLog2.x, 7);
+  // Neighbours without a surface are ignored: only the right one (at 4 + 2 = 6) is left.
+  d[3 * 8 + 2] = 0.0f;
+  d[3 * 8 + 4] = 6.0f;
+  EXPECT_EQ(smtmmEntry(frame8(d), {3, 3}, lightAcrossView()).needLog2.x, 6);  // a.z = −1
+}
+
+TEST(FvsmSmtmm, EmptyPixelsAndPointsOutsideTheMapAreNotCovered) {
+  std::vector<float> d(64, 4.0f);
+  d[0] = 0.0f;
+  EXPECT_FALSE(smtmmEntry(frame8(d), {0, 0}, lightAlongView()).covered);
+  glm::dmat4 shifted = lightAlongView();
+  shifted[3][0] = 0.5 + 3.6 / 64.0;  // x_e = 3.5 m at pixel 7 → u = 0.5 + 7.1 / 64 ≤ 1
+  EXPECT_TRUE(smtmmEntry(frame8(d), {7, 3}, shifted).covered);
+  shifted[3][0] = 1.0 - 3.4 / 64.0;  // u = 1 + 0.1 / 64 > 1
+  EXPECT_FALSE(smtmmEntry(frame8(d), {7, 3}, shifted).covered);
+}
+
+TEST(FvsmSmtmm, BuildSamplesTheCentreOfEachBlock) {
+  EXPECT_EQ(smtmmSamplePixel({0, 0}, {4, 4}, {8, 8}), glm::ivec2(1, 1));
+  EXPECT_EQ(smtmmSamplePixel({3, 2}, {4, 4}, {8, 8}), glm::ivec2(7, 5));
+  EXPECT_EQ(smtmmSamplePixel({1, 0}, {3, 1}, {10, 5}), glm::ivec2(5, 2));  // 1.5 · 10 / 3
+  std::vector<float> d(64, 4.0f);
+  const auto smtmm = buildSmtmm(frame8(d), {4, 4}, lightAlongView());
+  ASSERT_EQ(smtmm.size(), 16u);
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) {
+      const SmtmmEntry& e = smtmm[std::size_t(j) * 4 + i];
+      EXPECT_EQ(e, smtmmEntry(frame8(d), {2 * i + 1, 2 * j + 1}, lightAlongView()));
+      EXPECT_EQ(e.needLog2, glm::ivec2(7, 7));
+    }
+  }
+  EXPECT_THROW(buildSmtmm(frame8(std::vector<float>(63, 1.0f)), {4, 4}, lightAlongView()),
+               std::invalid_argument);
+}
+
+SmtmmEntry entry(double u, double v, int needX, int needY) {
+  return {true, {u, v}, {needX, needY}};
+}
+
+/// 4 x 2 entries into a 2 x 2 grid (η0 = 17, η1 = 22: buckets ≤17, 18, 19, 20, 21, ≥22).
+std::vector<SmtmmEntry> handGrid() {
+  return {entry(0.1, 0.1, 5, 6), entry(0.2, 0.3, 18, 3), entry(0.7, 0.2, 4, 4),
+          SmtmmEntry{},          entry(0.1, 0.9, 23, 2), entry(0.4, 0.1, 20, 1),
+          entry(1.0, 1.0, 2, 2), entry(0.45, 0.45, 7, 7)};
+}
+
+TEST(FvsmGrid, MaxHistogramAndScreenRectangle) {
+  const TileGrid g = accumulateGrid(handGrid(), {4, 2}, 2, HistogramSettings{});
+  const GridCell& c00 = g.at(0, 0);  // entries (0,0) (1,0) (1,1) (3,1)
+  EXPECT_EQ(c00.entries, 4);
+  EXPECT_EQ(c00.maxNeedLog2, glm::ivec2(20, 7));
+  EXPECT_EQ(c00.maxNeedAtMostEta0, glm::ivec2(7, 7));
+  EXPECT_EQ(c00.histogram[0][0], 2);  // x needs 5, 7
+  EXPECT_EQ(c00.histogram[0][1], 1);  // 18
+  EXPECT_EQ(c00.histogram[0][3], 1);  // 20
+  EXPECT_EQ(c00.histogram[1][0], 4);
+  EXPECT_EQ(c00.screen.min, glm::ivec2(0, 0));
+  EXPECT_EQ(c00.screen.max, glm::ivec2(3, 1));
+  EXPECT_EQ(c00.needLog2, glm::ivec2(20, 7));  // no rejection: the plain max
+  EXPECT_EQ(g.at(1, 0).needLog2, glm::ivec2(4, 4));
+  EXPECT_EQ(g.at(1, 0).screen, (EntryRect{{2, 0}, {2, 0}}));
+  EXPECT_EQ(g.at(0, 1).needLog2, glm::ivec2(23, 2));
+  EXPECT_EQ(g.at(0, 1).histogram[0][5], 1);          // ≥ η1
+  EXPECT_EQ(g.at(1, 1).needLog2, glm::ivec2(2, 2));  // uv = 1 falls in the last cell
+  EXPECT_EQ(g.at(1, 1).screen, (EntryRect{{2, 1}, {2, 1}}));
+}
+
+TEST(FvsmGrid, OutlierRejectionDropsWholeBucketsFromTheTop) {
+  HistogramSettings h;
+  h.outlierEntries = 1;  // cell (0,0): 20 dropped, then 18 is one entry too many → 18
+  TileGrid g = accumulateGrid(handGrid(), {4, 2}, 2, h);
+  EXPECT_EQ(g.at(0, 0).needLog2, glm::ivec2(18, 7));
+  // Cell (0,1): its only entry (23) is an outlier; with no need ≤ η0 left it gets η0.
+  EXPECT_EQ(g.at(0, 1).needLog2, glm::ivec2(17, 2));
+  h.outlierEntries = 2;  // 20 and 18 dropped: the largest need ≤ η0, 7
+  g = accumulateGrid(handGrid(), {4, 2}, 2, h);
+  EXPECT_EQ(g.at(0, 0).needLog2, glm::ivec2(7, 7));
+  // Moving the buckets: η0 = 4, η1 = 6. Cell (0,0) x: 5 | 18, 20, 7 (≥ η1: 3 entries), no
+  // need ≤ 4; y: 3, 1 (≤ η0) | 6, 7 (≥ η1: 2 entries).
+  h = {4, 6, 2};
+  g = accumulateGrid(handGrid(), {4, 2}, 2, h);
+  EXPECT_EQ(g.at(0, 0).needLog2, glm::ivec2(20, 3));  // x: 3 entries ≥ η1 cannot go
+  h.outlierEntries = 3;  // x: they go, then 5 is one too many → η0 + 1
+  g = accumulateGrid(handGrid(), {4, 2}, 2, h);
+  EXPECT_EQ(g.at(0, 0).needLog2, glm::ivec2(5, 3));
+}
+
+TEST(FvsmGrid, BadSettingsAreRefused) {
+  EXPECT_THROW(accumulateGrid(handGrid(), {4, 2}, 3, {}), std::invalid_argument);
+  EXPECT_THROW(accumulateGrid(handGrid(), {4, 2}, 512, {}), std::invalid_argument);
+  EXPECT_THROW(accumulateGrid(handGrid(), {4, 3}, 2, {}), std::invalid_argument);
+  EXPECT_THROW(accumulateGrid(handGrid(), {4, 2}, 2, HistogramSettings{22, 17, 0}),
+               std::invalid_argument);
+  EXPECT_THROW(accumulateGrid(handGrid(), {4, 2}, 2, HistogramSettings{17, 22, -1}),
+               std::invalid_argument);
+  try {
+    HistogramSettings{5, 5, 0}.validate();
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("eta0 = 5, eta1 = 5"), std::string::npos);
+  }
+}
+
+TEST(FvsmPyramid, MaxAndUnionPerLevel) {
+  const Pyramid p = buildPyramid(accumulateGrid(handGrid(), {4, 2}, 2, HistogramSettings{}));
+  ASSERT_EQ(p.levels.size(), 2u);
+  EXPECT_EQ(p.at(1, 0, 1).needLog2, glm::ivec2(23, 2));
+  EXPECT_EQ(p.at(0, 0, 0).needLog2, glm::ivec2(23, 7));
+  EXPECT_EQ(p.at(0, 0, 0).screen, (EntryRect{{0, 0}, {3, 1}}));
+}
+
+/// A 4 x 4 grid by hand: cell (0,0) needs (4, 2), (1,0) needs (3, 3), (3,3) needs (2, 2).
+TileGrid handTileGrid(glm::ivec2 need00 = {4, 2}) {
+  TileGrid g;
+  g.n = 4;
+  g.cells.assign(16, GridCell{});
+  g.at(0, 0).needLog2 = need00;
+  g.at(0, 0).screen = {{0, 0}, {1, 1}};
+  g.at(1, 0).needLog2 = {3, 3};
+  g.at(1, 0).screen = {{2, 0}, {3, 2}};
+  g.at(3, 3).needLog2 = {2, 2};
+  g.at(3, 3).screen = {{5, 5}, {6, 7}};
+  return g;
+}
+
+Tile tile(int lx, int ly, int ix, int iy, glm::ivec2 need, glm::ivec2 tex, EntryRect screen,
+          bool unmet = false) {
+  return {lx, ly, ix, iy, need, tex, screen, unmet};
+}
+
+TEST(FvsmTraversal, SplitsWhileTheNeedExceedsTheMaxTexture) {
+  // t_max = 2^2. Root needs (4, 3): both > 2 → four children at level (1, 1). Two are empty;
+  // (1,1 | 1,1) needs (2, 2) − 1 = (1, 1): a leaf. (1,1 | 0,0) needs (4, 3) − 1 = (3, 2):
+  // split along u only → (2,1 | 0,0) needs (4, 2) − (2, 1) = (2, 1) and (2,1 | 1,0) needs
+  // (3, 3) − (2, 1) = (1, 2): leaves.
+  const Pyramid p = buildPyramid(handTileGrid());
+  TraversalSettings s;
+  s.maxTextureLog2 = 2;
+  s.minTextureLog2 = 0;
+  const std::vector<Tile> expected = {
+      tile(1, 1, 1, 1, {2, 2}, {1, 1}, {{5, 5}, {6, 7}}),
+      tile(2, 1, 0, 0, {4, 2}, {2, 1}, {{0, 0}, {1, 1}}),
+      tile(2, 1, 1, 0, {3, 3}, {1, 2}, {{2, 0}, {3, 2}}),
+  };
+  EXPECT_EQ(traverse(p, s), expected);
+  EXPECT_EQ(expected[1].uvMin(), glm::dvec2(0.0, 0.0));
+  EXPECT_EQ(expected[2].uvMax(), glm::dvec2(0.5, 0.5));
+}
+
+TEST(FvsmTraversal, XiLowersEveryNeed) {
+  const Pyramid p = buildPyramid(handTileGrid());
+  TraversalSettings s;
+  s.maxTextureLog2 = 2;
+  s.minTextureLog2 = 0;
+  s.xi = 1;  // root (3, 2): split along u; (1,0 | 0,0) (3, 2) − (1, 0) = (2, 2);
+             // (1,0 | 1,0): cell (3,3) only, (1, 1) − (1, 0) = (0, 1).
+  EXPECT_EQ(traverse(p, s), (std::vector<Tile>{
+                                tile(1, 0, 0, 0, {3, 2}, {2, 2}, {{0, 0}, {3, 2}}),
+                                tile(1, 0, 1, 0, {1, 1}, {0, 1}, {{5, 5}, {6, 7}}),
+                            }));
+  s.xi = 3;  // one tile: an ordinary shadow map at the need (1, 0) of the whole view
+  s.minTextureLog2 = 1;
+  EXPECT_EQ(traverse(p, s),
+            (std::vector<Tile>{tile(0, 0, 0, 0, {1, 0}, {1, 1}, {{0, 0}, {6, 7}})}));
+  s.xi = 30;
+  EXPECT_THROW(traverse(p, s), std::invalid_argument);
+}
+
+TEST(FvsmTraversal, TheFinestLevelStopsTheSplitAndMarksItUnmet) {
+  const Pyramid p = buildPyramid(handTileGrid({6, 0}));
+  TraversalSettings s;
+  s.maxTextureLog2 = 2;
+  s.minTextureLog2 = 0;
+  const std::vector<Tile> tiles = traverse(p, s);
+  // Root (6, 3) → (1,1): (0,0) (6, 3) − 1 = (5, 2) → (2,1 | 0,0) (6, 0) − (2, 1) = (4, −1):
+  // finest along u, unmet, t_max along u, the minimum along v.
+  ASSERT_EQ(tiles.size(), 3u);
+  EXPECT_EQ(tiles[1], tile(2, 1, 0, 0, {6, 0}, {2, 0}, {{0, 0}, {1, 1}}, true));
+  EXPECT_FALSE(tiles[0].unmet);
+  EXPECT_FALSE(tiles[2].unmet);
+}
+
+TEST(FvsmTraversal, EmptyGridRendersNothing) {
+  TileGrid g;
+  g.n = 2;
+  g.cells.assign(4, GridCell{});
+  EXPECT_TRUE(traverse(buildPyramid(g), TraversalSettings{}).empty());
+}
+
+TEST(FvsmTextures, ThreeModes) {
+  EXPECT_EQ(tileTexture(TextureMode::SubRect, {3, 5}, 12), (TileTexture{{4096, 4096}, {8, 32}}));
+  EXPECT_EQ(tileTexture(TextureMode::PowerOfTwo, {3, 5}, 12), (TileTexture{{32, 32}, {8, 32}}));
+  EXPECT_EQ(tileTexture(TextureMode::ExactSize, {3, 5}, 12), (TileTexture{{8, 32}, {8, 32}}));
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::SubRect, 12, 4), 16777216u);
+  // 4^4 + … + 4^12 = (4^13 − 4^4) / 3 = 22369536 ≤ 4/3 · 4096² = 22369621.3
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::PowerOfTwo, 12, 4), 22369536u);
+  EXPECT_LE(3 * textureModeBoundTexels(TextureMode::PowerOfTwo, 12, 0), 4u * 16777216u);
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::ExactSize, 12, 4), 8176u * 8176u);
+  EXPECT_STREQ(textureModeName(TextureMode::PowerOfTwo), "power-of-two");
+}
+
+TEST(FvsmTiles, OverlapAndScreenRectangle) {
+  const Tile t = tile(2, 1, 1, 0, {3, 3}, {2, 1}, {{1, 0}, {2, 1}});
+  glm::dvec2 lo, hi;
+  tileUvRectWithOverlap(t, 0.0, lo, hi);
+  EXPECT_EQ(lo, glm::dvec2(0.25, 0.0));
+  EXPECT_EQ(hi, glm::dvec2(0.5, 0.5));
+  tileUvRectWithOverlap(t, 0.5, lo, hi);  // texel (1/16, 1/4)
+  EXPECT_EQ(lo, glm::dvec2(0.21875, -0.125));
+  EXPECT_EQ(hi, glm::dvec2(0.53125, 0.625));
+  glm::ivec2 pmin, pmax;
+  tileScreenRectPixels(t.screen, {4, 2}, {10, 5}, 0, pmin, pmax);
+  EXPECT_EQ(pmin, glm::ivec2(2, 0));  // 1 · 10 / 4
+  EXPECT_EQ(pmax, glm::ivec2(7, 5));  // 3 · 10 / 4, 2 · 5 / 2
+  tileScreenRectPixels(t.screen, {4, 2}, {10, 5}, 1, pmin, pmax);
+  EXPECT_EQ(pmin, glm::ivec2(0, 0));
+  EXPECT_EQ(pmax, glm::ivec2(10, 5));
+  tileScreenRectPixels(EntryRect{}, {4, 2}, {10, 5}, 1, pmin, pmax);
+  EXPECT_EQ(pmin, pmax);
+}
+
+}  // namespace
+}  // namespace sl::fvsm

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The GUI on plane-box with fvsm: the FVSM panel draws the SMTMM's needs along both SM axes as
+# heat maps (a real picture) and the frame's kd-tree numbers (published.json: what it drew).
+# usage: grab_fvsm.sh <shadowlab> <tests/data dir> <out dir>
+set -euo pipefail
+app=$1
+out=$3/grab_fvsm
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/xvfb.bash"
+rm -rf "$out" && mkdir -p "$out"
+start_xvfb
+
+rc=0
+timeout 300 "$app" --scene plane-box --technique fvsm --set fvsm.max_texture=256 \
+  --set fvsm.fallback.resolution=256 --grab "$out/fvsm" --grab-after 3 \
+  >"$out/fvsm.stdout" 2>"$out/fvsm.stderr" || rc=$?
+if [[ $rc -ne 0 ]]; then
+  echo "FAIL: shadowlab (fvsm) exited with $rc; stderr:"
+  cat "$out/fvsm.stderr"
+  exit 1
+fi
+python3 "$here/pngstats.py" --min-colors 16 --min-stddev 8 "$out/fvsm/panel-fvsm.png"
+python3 - "$out" <<'PY'
+import json, sys
+p = json.load(open(f"{sys.argv[1]}/fvsm/published.json"))["panels"]["fvsm"]
+assert p["tiles"] >= 1 and p["max_entry_need"] >= 1, p
+assert p["need_u"] >= 0 and p["need_v"] >= 0, p
+print(f"ok: fvsm panel: {p['tiles']:.0f} kd leaves, needs up to 2^{p['max_entry_need']:.0f}")
+PY

@@ -101,6 +101,39 @@ void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> m
   }
 }
 
+void DepthMapArray::ensure(int resolution, int layers, const std::string& what,
+                           const std::string& lower, std::uint64_t maxBytes) {
+  if (maps_ && maps_.width() == resolution && maps_.layers() == layers) return;
+  const std::uint64_t bytes =
+      4ull * std::uint64_t(resolution) * std::uint64_t(resolution) * std::uint64_t(layers);
+  if (bytes > maxBytes)
+    throw std::runtime_error(what + " of " + std::to_string(resolution) + "^2 need " +
+                             std::to_string(bytes >> 20) + " MiB of depth maps, more than the " +
+                             std::to_string(maxBytes >> 20) + " MiB one array may take; lower " +
+                             lower);
+  maps_ = {};  // the old array goes before the new one comes
+  layerFbos_.clear();
+  layeredFbo_ = {};
+  maps_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, resolution, resolution, layers);
+  for (int i = 0; i < layers; ++i) {
+    gl::Framebuffer f = gl::Framebuffer::create();
+    f.attachLayer(GL_DEPTH_ATTACHMENT, maps_, i);
+    f.setDrawBuffers(0);
+    f.checkComplete(what + ", layer " + std::to_string(i));
+    layerFbos_.push_back(std::move(f));
+  }
+  layeredFbo_ = gl::Framebuffer::create();
+  layeredFbo_.attach(GL_DEPTH_ATTACHMENT, maps_);
+  layeredFbo_.setDrawBuffers(0);
+  layeredFbo_.checkComplete(what + " (layered)");
+}
+
+void DepthMapArray::addMemory(MemoryStats& m, const std::string& label) const {
+  if (maps_)
+    m.add(label, gl::formatName(maps_.format()), maps_.width(), maps_.height(), maps_.layers(),
+          gl::bytesPerTexel(maps_.format()));
+}
+
 SingleDepthMap::SingleDepthMap(const gl::ShaderLibrary& lib, std::string label)
     : label_(std::move(label)), program_(lib, depthProgramDesc()) {}
 

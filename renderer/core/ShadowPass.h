@@ -3,8 +3,10 @@
 // lookup (shaders/common/depth_map_test.glsl). Publishing: core/Publish.h.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -63,6 +65,34 @@ DepthMapView depthMapView(const DepthMapFrame& frame);
 /// maps' textures and the shared parameters (bias.*, pcf: bindParams) are bound elsewhere.
 /// Throws std::logic_error for more than SL_MAX_DEPTH_MAPS maps.
 void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> maps);
+
+/// An array of square depth maps (DEPTH_COMPONENT32F, one layer per map: cascades, faces,
+/// cube faces, paraboloid halves) with a framebuffer per layer and one over every layer (for
+/// layered rendering), reallocated only when the resolution or the layer count changes.
+class DepthMapArray {
+ public:
+  /// The largest array allocated: beyond it ensure() refuses (a message, nothing allocated).
+  static constexpr std::uint64_t kDefaultMaxBytes = 4ull << 30;
+
+  /// (Re)allocates `layers` maps of `resolution`^2. `what` names them in messages and
+  /// framebuffer labels ("cascades: 4 partitions"); `lower` says what to lower when the
+  /// array would exceed `maxBytes` ("resolution or partitions"): std::runtime_error
+  /// "<what> of <res>^2 need <N> MiB of depth maps, more than the <M> MiB one array may take;
+  /// lower <lower>".
+  void ensure(int resolution, int layers, const std::string& what, const std::string& lower,
+              std::uint64_t maxBytes = kDefaultMaxBytes);
+  explicit operator bool() const { return bool(maps_); }
+  const gl::Texture& texture() const { return maps_; }
+  GLuint layerFramebuffer(int layer) const { return layerFbos_.at(std::size_t(layer)).id(); }
+  GLuint layeredFramebuffer() const { return layeredFbo_.id(); }
+  /// Adds the array to `m` as `label` (every byte: resolution^2 x layers x 4 B).
+  void addMemory(MemoryStats& m, const std::string& label) const;
+
+ private:
+  gl::Texture maps_;
+  std::vector<gl::Framebuffer> layerFbos_;
+  gl::Framebuffer layeredFbo_;
+};
 
 /// One square depth map with its framebuffer and depth program, looked up by
 /// shaders/common/single_depth_map.glsl: what `uniform` and the perspective warps share.

@@ -17,8 +17,6 @@ namespace sl {
 namespace {
 
 constexpr std::uint32_t kFloatMaxBits = 0x7f7fffffu;
-/// The largest partition array (4 GiB): k x resolution^2 x 4 B beyond it is refused.
-constexpr std::uint64_t kMaxArrayBytes = 4ull << 30;
 
 gl::ProgramDesc rangeProgramDesc() {
   return {"cascades/depth_range", {{GL_COMPUTE_SHADER, "cascades/depth_range.comp"}}, {}, {}};
@@ -281,24 +279,8 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     eye_ = ctx.camera.position;
     forward_ = ctx.camera.forward();
 
-    if (!maps_ || maps_.width() != res || maps_.layers() != k) {
-      const std::uint64_t bytes = 4ull * std::uint64_t(res) * std::uint64_t(res) * std::uint64_t(k);
-      if (bytes > kMaxArrayBytes)
-        throw std::runtime_error("cascades: " + std::to_string(k) + " partitions of " +
-                                 std::to_string(res) + "^2 need " + std::to_string(bytes >> 20) +
-                                 " MiB of depth maps, more than the " +
-                                 std::to_string(kMaxArrayBytes >> 20) +
-                                 " MiB one array may take; lower resolution or partitions");
-      maps_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, k);
-      fbos_.clear();
-      for (int i = 0; i < k; ++i) {
-        gl::Framebuffer f = gl::Framebuffer::create();
-        f.attachLayer(GL_DEPTH_ATTACHMENT, maps_, i);
-        f.setDrawBuffers(0);
-        f.checkComplete("cascade partition " + std::to_string(i));
-        fbos_.push_back(std::move(f));
-      }
-    }
+    maps_.ensure(res, k, "cascades: " + std::to_string(k) + " partitions",
+                 "resolution or partitions");
     views_.clear();
     for (int i = 0; i < k; ++i) {
       const partition::CascadePart& p = fit_.parts[size_t(i)];
@@ -308,7 +290,7 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
                                  : DepthMapView{p.viewProj, glm::vec2(p.extentM),
                                                 p.depthRangeM > 0.0 ? float(p.depthRangeM) : 1.0f};
       views_.push_back(v);
-      renderDepth(ctx, depthProgram_, fbos_[size_t(i)].id(), res, res, p.viewProj);
+      renderDepth(ctx, depthProgram_, maps_.layerFramebuffer(i), res, res, p.viewProj);
       ctx.addOutline(p.viewProj, OutlineRole::LightMap, i);
       if (ctx.outlines && i + 1 < k) ctx.outlines->splitDepthsM.push_back(float(p.farM));
     }
@@ -324,7 +306,7 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
   for (int i = 0; i < k; ++i) {
     const partition::CascadePart& p = fit_.parts[size_t(i)];
     const std::string key = "partition." + std::to_string(i);
-    publishDepthLayer(ctx, key + ".map", maps_, i);
+    publishDepthLayer(ctx, key + ".map", maps_.texture(), i);
     publishNumber(ctx, key + ".near", p.nearM);
     publishNumber(ctx, key + ".far", p.farM);
     publishNumber(ctx, key + ".extent_m", std::max(p.extentM.x, p.extentM.y));
@@ -341,7 +323,7 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
 
 void CascadedShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
   bindDepthLookup(resolve, views_);
-  glBindTextureUnit(GLuint(firstUnit), maps_.id());
+  glBindTextureUnit(GLuint(firstUnit), maps_.texture().id());
   resolve.set("u_cascadeMaps", firstUnit);
   resolve.set("u_cascadeCount", int(fit_.parts.size()));
   resolve.set("u_cascadeEye", eye_);
@@ -352,9 +334,7 @@ void CascadedShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) co
 
 MemoryStats CascadedShadowMap::memory() const {
   MemoryStats m;
-  if (maps_)
-    m.add("partition maps (array)", gl::formatName(maps_.format()), maps_.width(), maps_.height(),
-          maps_.layers(), gl::bytesPerTexel(maps_.format()));
+  maps_.addMemory(m, "partition maps (array)");
   if (rangeBuffer_) m.add("depth range (min, max)", "R32UI", 2, 1, 1, 4);
   mStats_.addMemory(m);
   return m;

@@ -36,8 +36,7 @@ class CascadedShadowMap : public Technique {
 
   gl::Program depthProgram_, rangeProgram_;
   PartitionMStats mStats_;  ///< partition.<i>.m.* (only while requested)
-  gl::Texture maps_;        ///< DEPTH_COMPONENT32F array, one layer per partition
-  std::vector<gl::Framebuffer> fbos_;
+  DepthMapArray maps_;      ///< one layer per partition
   gl::Buffer rangeBuffer_;  ///< 2 uints: min and max view depth bits
   gl::Fence rangeFence_;
   std::optional<glm::dvec2> lastRange_;  ///< the last range read back (kept while unchanged)

@@ -21,9 +21,6 @@ gl::ProgramDesc layeredProgramDesc() {
           {}};
 }
 
-/// The largest face array (2 GiB): 6 x resolution^2 x 4 B beyond it is refused.
-constexpr std::uint64_t kMaxArrayBytes = 2ull << 30;
-
 }  // namespace
 
 TechniqueInfo CubeShadowMap::info() {
@@ -77,30 +74,6 @@ TechniqueInfo CubeShadowMap::info() {
 CubeShadowMap::CubeShadowMap(const gl::ShaderLibrary& lib)
     : depthProgram_(lib, depthProgramDesc()), layeredProgram_(lib, layeredProgramDesc()) {}
 
-void CubeShadowMap::allocate(int res, int layers) {
-  if (faces_ && faces_.width() == res && faces_.layers() == layers) return;
-  const std::uint64_t bytes =
-      4ull * std::uint64_t(res) * std::uint64_t(res) * std::uint64_t(layers);
-  if (bytes > kMaxArrayBytes)
-    throw std::runtime_error("cube: " + std::to_string(layers) + " faces of " +
-                             std::to_string(res) + "^2 need " + std::to_string(bytes >> 20) +
-                             " MiB, more than the " + std::to_string(kMaxArrayBytes >> 20) +
-                             " MiB allowed; lower resolution");
-  faces_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, layers);
-  layerFbos_.clear();
-  for (int i = 0; i < layers; ++i) {
-    gl::Framebuffer f = gl::Framebuffer::create();
-    f.attachLayer(GL_DEPTH_ATTACHMENT, faces_, i);
-    f.setDrawBuffers(0);
-    f.checkComplete("cube face layer " + std::to_string(i));
-    layerFbos_.push_back(std::move(f));
-  }
-  layeredFbo_ = gl::Framebuffer::create();
-  layeredFbo_.attach(GL_DEPTH_ATTACHMENT, faces_);
-  layeredFbo_.setDrawBuffers(0);
-  layeredFbo_.checkComplete("cube faces (layered)");
-}
-
 void CubeShadowMap::renderShadows(FrameContext& ctx) {
   const int res = ctx.params.getInt("resolution");
   {
@@ -108,7 +81,8 @@ void CubeShadowMap::renderShadows(FrameContext& ctx) {
     omni::CubeFit fit;
     if (auto err = omni::fitCube(ctx.light, ctx.scene.bounds, fit)) throw std::runtime_error(*err);
     fit_ = fit;
-    allocate(res, fit_.layers);
+    faces_.ensure(res, fit_.layers, "cube: " + std::to_string(fit_.layers) + " faces", "resolution",
+                  2ull << 30);
     views_.clear();
     for (int f = 0; f < omni::kCubeFaces; ++f) {
       DepthMapView v;
@@ -120,7 +94,7 @@ void CubeShadowMap::renderShadows(FrameContext& ctx) {
       views_.push_back(v);
     }
     if (ctx.params.getBool("cube.layered")) {
-      beginDepthPass(layeredFbo_.id(), res, res);
+      beginDepthPass(faces_.layeredFramebuffer(), res, res);
       layeredProgram_.use();
       layeredProgram_.set("u_layerCount", fit_.layers);
       for (int f = 0; f < omni::kCubeFaces; ++f)
@@ -131,7 +105,7 @@ void CubeShadowMap::renderShadows(FrameContext& ctx) {
     } else {
       for (int f = 0; f < omni::kCubeFaces; ++f)
         if (int l = fit_.layer[size_t(f)]; l >= 0)
-          renderDepth(ctx, depthProgram_, layerFbos_[size_t(l)].id(), res, res,
+          renderDepth(ctx, depthProgram_, faces_.layerFramebuffer(l), res, res,
                       fit_.viewProj[size_t(f)]);
     }
   }
@@ -140,12 +114,12 @@ void CubeShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "cube.far_m", fit_.farM);
   for (int f = 0; f < omni::kCubeFaces; ++f)
     if (int l = fit_.layer[size_t(f)]; l >= 0)
-      publishDepthLayer(ctx, "face." + std::to_string(f) + ".map", faces_, l);
+      publishDepthLayer(ctx, "face." + std::to_string(f) + ".map", faces_.texture(), l);
 }
 
 void CubeShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
   bindDepthLookup(resolve, views_);
-  glBindTextureUnit(GLuint(firstUnit), faces_.id());
+  glBindTextureUnit(GLuint(firstUnit), faces_.texture().id());
   resolve.set("u_cubeFaces", firstUnit);
   resolve.set("u_cubeLightPos", fit_.lightPosM);
   for (int f = 0; f < omni::kCubeFaces; ++f) {
@@ -157,9 +131,7 @@ void CubeShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const 
 
 MemoryStats CubeShadowMap::memory() const {
   MemoryStats m;
-  if (faces_)
-    m.add("cube faces (array)", gl::formatName(faces_.format()), faces_.width(), faces_.height(),
-          faces_.layers(), gl::bytesPerTexel(faces_.format()));
+  faces_.addMemory(m, "cube faces (array)");
   return m;
 }
 

@@ -27,12 +27,8 @@ class CubeShadowMap : public Technique {
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
  private:
-  void allocate(int resolution, int layers);
-
   gl::Program depthProgram_, layeredProgram_;
-  gl::Texture faces_;                       ///< DEPTH_COMPONENT32F array, one layer per face
-  std::vector<gl::Framebuffer> layerFbos_;  ///< one per layer (six-pass mode)
-  gl::Framebuffer layeredFbo_;              ///< the whole array (layered mode)
+  DepthMapArray faces_;  ///< one layer per rendered face (six-pass or layered mode)
   omni::CubeFit fit_;
   std::vector<DepthMapView> views_;  ///< per FACE (map index = face), all six
 };

@@ -116,23 +116,11 @@ void DualParaboloidShadowMap::renderShadows(FrameContext& ctx) {
   farM_ = 1.01f * std::max(far, 1e-3f);
 
   auto pass = ctx.timer.scope("paraboloid halves");
-  if (!maps_ || maps_.width() != res || maps_.layers() != halves_) {
-    if (4ull * std::uint64_t(res) * std::uint64_t(res) * 2 > (2ull << 30))
-      throw std::runtime_error("dual-paraboloid: 2 maps of " + std::to_string(res) +
-                               "^2 exceed 2 GiB; lower resolution");
-    maps_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, halves_);
-    fbos_.clear();
-    for (int i = 0; i < halves_; ++i) {
-      gl::Framebuffer f = gl::Framebuffer::create();
-      f.attachLayer(GL_DEPTH_ATTACHMENT, maps_, i);
-      f.setDrawBuffers(0);
-      f.checkComplete("paraboloid hemisphere " + std::to_string(i));
-      fbos_.push_back(std::move(f));
-    }
-  }
+  maps_.ensure(res, halves_, "dual-paraboloid: " + std::to_string(halves_) + " maps", "resolution",
+               2ull << 30);
   glEnable(GL_CLIP_DISTANCE0);
   for (int i = 0; i < halves_; ++i) {
-    beginDepthPass(fbos_[size_t(i)].id(), res, res);
+    beginDepthPass(maps_.layerFramebuffer(i), res, res);
     depthProgram_.use();
     setMapping(depthProgram_);
     depthProgram_.set("u_dpHalfIndex", i);
@@ -145,11 +133,11 @@ void DualParaboloidShadowMap::renderShadows(FrameContext& ctx) {
   glDisable(GL_CLIP_DISTANCE0);
   publishNumber(ctx, "dp.far_m", farM_);
   for (int i = 0; i < halves_; ++i)
-    publishDepthLayer(ctx, "half." + std::to_string(i) + ".map", maps_, i);
+    publishDepthLayer(ctx, "half." + std::to_string(i) + ".map", maps_.texture(), i);
 }
 
 void DualParaboloidShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  glBindTextureUnit(GLuint(firstUnit), maps_.id());
+  glBindTextureUnit(GLuint(firstUnit), maps_.texture().id());
   resolve.set("u_dpMaps", firstUnit);
   resolve.set("u_dpHalves", halves_);
   setMapping(resolve);
@@ -157,9 +145,7 @@ void DualParaboloidShadowMap::bindLookup(const gl::Program& resolve, int firstUn
 
 MemoryStats DualParaboloidShadowMap::memory() const {
   MemoryStats m;
-  if (maps_)
-    m.add("paraboloid maps (array)", gl::formatName(maps_.format()), maps_.width(), maps_.height(),
-          maps_.layers(), gl::bytesPerTexel(maps_.format()));
+  maps_.addMemory(m, "paraboloid maps (array)");
   return m;
 }
 

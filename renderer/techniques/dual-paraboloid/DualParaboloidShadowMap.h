@@ -5,6 +5,7 @@
 #pragma once
 
 #include "algo/omni/OmniMapping.h"
+#include "core/ShadowPass.h"
 #include "core/Technique.h"
 
 namespace sl {
@@ -26,8 +27,7 @@ class DualParaboloidShadowMap : public Technique {
   void setMapping(const gl::Program& program) const;
 
   gl::Program depthProgram_;
-  gl::Texture maps_;  ///< DEPTH_COMPONENT32F array, one layer per hemisphere
-  std::vector<gl::Framebuffer> fbos_;
+  DepthMapArray maps_;  ///< one layer per hemisphere
   omni::ParaboloidFrame frame_;
   glm::vec3 lightPosM_{0.0f};
   float nearM_ = 0.0f, farM_ = 1.0f;

@@ -18,8 +18,6 @@ namespace {
 
 constexpr int kSlots = partition::kFaceSlots;
 static_assert(kSlots <= SL_MAX_DEPTH_MAPS);
-/// The largest map array (4 GiB): 5 x resolution^2 x 4 B beyond it is refused.
-constexpr std::uint64_t kMaxArrayBytes = 4ull << 30;
 
 /// The lookup's view of one partition's map: its warp's perspective frame, or the
 /// orthographic fit when the warp fell back to uniform.
@@ -139,32 +137,16 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
   }
   {
     auto pass = ctx.timer.scope("face maps");
-    if (!maps_ || maps_.width() != res) {
-      const std::uint64_t bytes = 4ull * std::uint64_t(res) * std::uint64_t(res) * kSlots;
-      if (bytes > kMaxArrayBytes)
-        throw std::runtime_error("face-partition: 5 maps of " + std::to_string(res) + "^2 need " +
-                                 std::to_string(bytes >> 20) + " MiB, more than the " +
-                                 std::to_string(kMaxArrayBytes >> 20) +
-                                 " MiB one array may take; lower resolution");
-      maps_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, kSlots);
-      fbos_.clear();
-      for (int i = 0; i < kSlots; ++i) {
-        gl::Framebuffer f = gl::Framebuffer::create();
-        f.attachLayer(GL_DEPTH_ATTACHMENT, maps_, i);
-        f.setDrawBuffers(0);
-        f.checkComplete("face partition " + std::to_string(i));
-        fbos_.push_back(std::move(f));
-      }
-    }
+    maps_.ensure(res, kSlots, "face-partition: 5 maps", "resolution");
     std::array<bool, kSlots> used{};
     for (const partition::FacePart& p : fit_.parts) {
       used[std::size_t(p.slot)] = true;
-      renderDepth(ctx, depthProgram_, fbos_[std::size_t(p.slot)].id(), res, res,
+      renderDepth(ctx, depthProgram_, maps_.layerFramebuffer(p.slot), res, res,
                   views_[std::size_t(p.slot)].lightViewProj);
     }
     for (int i = 0; i < kSlots; ++i)
       if (!used[std::size_t(i)]) {
-        beginDepthPass(fbos_[std::size_t(i)].id(), res, res);  // cleared to 1: empty
+        beginDepthPass(maps_.layerFramebuffer(i), res, res);  // cleared to 1: empty
       }
   }
 
@@ -177,7 +159,7 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "depth.far", fit_.view.farM);
   for (int i = 0; i < kSlots; ++i) {
     const std::string key = "partition." + std::to_string(i);
-    publishDepthLayer(ctx, key + ".map", maps_, i);
+    publishDepthLayer(ctx, key + ".map", maps_.texture(), i);
     publishNumber(ctx, key + ".texels", double(res) * double(res));
     const auto part = std::find_if(fit_.parts.begin(), fit_.parts.end(),
                                    [&](const partition::FacePart& p) { return p.slot == i; });
@@ -206,7 +188,7 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
 
 void FacePartitionShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
   bindDepthLookup(resolve, views_);
-  glBindTextureUnit(GLuint(firstUnit), maps_.id());
+  glBindTextureUnit(GLuint(firstUnit), maps_.texture().id());
   resolve.set("u_faceMaps", firstUnit);
   resolve.set("u_faceRayDir", glm::vec3(fit_.selection.rayDir));
   for (std::size_t f = 0; f < 6; ++f) {
@@ -218,9 +200,7 @@ void FacePartitionShadowMap::bindLookup(const gl::Program& resolve, int firstUni
 
 MemoryStats FacePartitionShadowMap::memory() const {
   MemoryStats m;
-  if (maps_)
-    m.add("face partition maps (array)", gl::formatName(maps_.format()), maps_.width(),
-          maps_.height(), maps_.layers(), gl::bytesPerTexel(maps_.format()));
+  maps_.addMemory(m, "face partition maps (array)");
   mStats_.addMemory(m);
   return m;
 }

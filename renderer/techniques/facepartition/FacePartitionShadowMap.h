@@ -33,8 +33,7 @@ class FacePartitionShadowMap : public Technique {
  private:
   gl::Program depthProgram_;
   PartitionMStats mStats_;  ///< partition.<i>.m.* per slot (only while requested)
-  gl::Texture maps_;        ///< DEPTH_COMPONENT32F array, one layer per face partition
-  std::vector<gl::Framebuffer> fbos_;
+  DepthMapArray maps_;      ///< one layer per face slot
   partition::FacePartitionFit fit_;
   std::vector<DepthMapView> views_;
 };

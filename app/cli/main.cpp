@@ -23,6 +23,8 @@
 
 #include "CliCommon.h"
 #include "Commands.h"
+#include "Measure.h"
+#include "Montage.h"
 #include "algo/metrics/BenchStats.h"
 #include "core/Preset.h"
 #include "core/Renderer.h"
@@ -43,7 +45,11 @@ const char* kUsage =
     "                            [--size WxH] [--frames N] [--camera NAME|INDEX]\n"
     "                            [--light LIGHT] [--preset FILE.json]\n"
     "                            --out FILE.png [--metrics FILE.json] [--error-image FILE.png]\n"
-    "       shadowlab-cli compare [--scene NAME|FILE] [--size WxH] --out-dir DIR\n"
+    "       shadowlab-cli compare [--scene NAME|FILE] [--technique ID[:KEY=V1,V2...]]...\n"
+    "                            [--set KEY=VALUE]... [--size WxH] [--camera NAME|INDEX]\n"
+    "                            [--light LIGHT] --out-dir DIR [--montage FILE.png]\n"
+    "                            [--dilate PX (1)] [--columns N]\n"
+    "         (no --technique: every technique at its defaults)\n"
     "  LIGHT: AZ,EL or dir:AZ,EL (degrees) | point:X,Y,Z[,RANGE] |\n"
     "         spot:X,Y,Z,DX,DY,DZ,OUTER_DEG[,INNER_DEG[,RANGE]] (metres; range 0 = infinite)\n";
 
@@ -297,53 +303,122 @@ int cmdRender(Args& a) {
 }
 
 int cmdCompare(Args& a) {
-  RenderConfig base = parseRender(a, 1, false);
+  // Options of compare's own; the rest are render's (scene, size, frames, camera, light,
+  // --set for every configuration, preset).
+  std::vector<std::string> techniqueSpecs;
+  std::string montage;
+  int dilate = 1, columns = 0;
+  Args rest;
+  rest.rest.push_back(a.rest[0]);
+  for (size_t i = 1; i < a.rest.size(); ++i) {
+    const std::string& o = a.rest[i];
+    if (o == "--technique")
+      techniqueSpecs.push_back(a.take(i, o));
+    else if (o == "--montage")
+      montage = a.take(i, o);
+    else if (o == "--dilate")
+      dilate = parseInt(o, a.take(i, o), 0, 16);
+    else if (o == "--columns")
+      columns = parseInt(o, a.take(i, o), 0, 64);
+    else
+      rest.rest.push_back(o);
+  }
+  RenderConfig base = parseRender(rest, 1, false);
   if (base.out.empty()) base.out = "shadowlab-out";
   checkOutputFolder("--out-dir", base.out);
+  if (!montage.empty()) checkOutputs({{"--montage", montage}}, {{"--scene", base.scene}});
+  // The configurations: each --technique ID[:KEY=V1,V2...] expanded (as bench does), or every
+  // technique at its defaults.
+  std::vector<sl::cli::ConfigSpec> specs;
+  for (const std::string& t : techniqueSpecs)
+    for (sl::cli::ConfigSpec& c : sl::cli::expandTechniqueSweep(t)) specs.push_back(std::move(c));
+  const bool all = specs.empty();
+  if (all)
+    for (const auto& t : sl::Renderer::techniques()) specs.push_back({t.id, {}, t.id});
   sl::gl::EglContext ctx;
   checkFrameSize(base.width, base.height);
   sl::Renderer r;
   const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
   json summary = json::array();
-  std::printf("%-14s %10s %12s %10s %10s %10s\n", "technique", "total ms", "texels", "error %",
+  std::vector<sl::cli::MontageCell> cells;
+  std::printf("%-28s %10s %12s %10s %10s %10s\n", "configuration", "total ms", "texels", "error %",
               "false lit", "false shd");
   r.setScene(scene);  // the scene's light, or --light's
   if (base.light) r.setLight(*base.light);
   const sl::LightType lightType = r.light().type;
-  for (const auto& t : sl::Renderer::techniques()) {
+  if (!all)  // every asked-for configuration must render this light: refused before any work
+    for (const sl::cli::ConfigSpec& spec : specs)
+      if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(spec.techniqueId))
+        if (auto e = sl::checkLightSupport(*info, lightType))
+          throw UsageError("--technique " + spec.techniqueId + ": " + *e);
+  for (const sl::cli::ConfigSpec& spec : specs) {
     // A technique that cannot render this light (cube: no directional) gets a row saying
     // so, not a wrong picture; the others go on.
-    if (auto e = sl::checkLightSupport(t, lightType)) {
-      std::printf("%-14s skipped: %s\n", t.id.c_str(), e->c_str());
+    const sl::TechniqueInfo* info = sl::Renderer::findTechnique(spec.techniqueId);
+    if (auto e = info ? sl::checkLightSupport(*info, lightType) : std::nullopt) {
+      std::printf("%-28s skipped: %s\n", spec.label.c_str(), e->c_str());
       continue;
     }
     RenderConfig cfg = base;
-    cfg.technique = t.id;
+    cfg.technique = spec.techniqueId;
+    for (const auto& [k, v] : spec.sets) cfg.sets.push_back(k + "=" + v);
     cfg.frames = std::max(cfg.frames, 3);
     configure(r, cfg, scene);
     sl::Renderer::ErrorResult err;
     json j = renderAndMeasure(r, cfg, err);
-    std::string stem = (fs::path(base.out) / t.id).string();
+    j["configuration"] = spec.label;
+    std::string file = spec.label;
+    for (char& ch : file)
+      if (ch == ' ' || ch == '/' || ch == ':') ch = '_';
+    const std::string stem = (fs::path(base.out) / file).string();
     writePng(stem + ".png", err.frame.color);
     writePng(stem + ".error.png",
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
     writeText(stem + ".json", j.dump(2));
     summary.push_back(j);
+    const double ms = j["total_ms"].get<double>();
+    const auto texels = j["texels"].get<std::uint64_t>();
     if (err.stats.covered == 0)
-      std::printf("%-14s %10.2f %12llu n/a (no covered pixel)\n", t.id.c_str(),
-                  j["total_ms"].get<double>(), (unsigned long long)j["texels"].get<uint64_t>());
+      std::printf("%-28s %10.2f %12llu n/a (no covered pixel)\n", spec.label.c_str(), ms,
+                  (unsigned long long)texels);
     else
-      std::printf("%-14s %10.2f %12llu %10.3f %10.3f %10.3f\n", t.id.c_str(),
-                  j["total_ms"].get<double>(), (unsigned long long)j["texels"].get<uint64_t>(),
-                  err.stats.errorPct, err.stats.falseLitPct, err.stats.falseShadowPct);
+      std::printf("%-28s %10.2f %12llu %10.3f %10.3f %10.3f\n", spec.label.c_str(), ms,
+                  (unsigned long long)texels, err.stats.errorPct, err.stats.falseLitPct,
+                  err.stats.falseShadowPct);
     if (std::string w = describeWarmup(j); !w.empty() && w.rfind("note:", 0) == 0)
       std::fprintf(stderr, "%s\n", w.c_str());
+    if (!montage.empty()) {
+      char facts[160];
+      const double mib = double(j["bytes"].get<std::uint64_t>()) / double(1 << 20);
+      if (err.stats.covered == 0)
+        std::snprintf(facts, sizeof facts, "%.3g M texels (%.3g MiB), error n/a, %.1f ms",
+                      double(texels) / 1e6, mib, ms);
+      else
+        std::snprintf(facts, sizeof facts, "%.3g M texels (%.3g MiB), error %.3f %%, %.1f ms",
+                      double(texels) / 1e6, mib, err.stats.errorPct, ms);
+      cells.push_back(
+          {spec.label, facts, err.frame.color,
+           sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask, dilate)});
+    }
   }
   writeText((fs::path(base.out) / "summary.json").string(), summary.dump(2));
   std::printf(
-      "wrote images (<technique>.png, <technique>.error.png) and metrics (*.json, "
+      "wrote images (<configuration>.png, <configuration>.error.png) and metrics (*.json, "
       "summary.json) to %s\n",
       fs::absolute(base.out).string().c_str());
+  if (!montage.empty()) {
+    char title[256];
+    std::snprintf(title, sizeof title,
+                  "%s, %dx%d, %s light; below each image its errors against the exact reference "
+                  "(magenta: wrongly lit, cyan: wrongly shadowed; drawn %d px wider)",
+                  scene->name.c_str(), base.width, base.height,
+                  lightType == sl::LightType::Directional ? "directional"
+                  : lightType == sl::LightType::Spot      ? "spot"
+                                                          : "point",
+                  dilate);
+    if (auto e = sl::cli::writeMontage(cells, title, columns, montage)) throw UsageError(*e);
+    std::printf("wrote the montage %s\n", montage.c_str());
+  }
   return 0;
 }
 

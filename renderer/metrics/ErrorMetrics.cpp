@@ -36,7 +36,7 @@ ShadowErrorStats compareShadowMasks(std::span<const std::uint8_t> technique,
 }
 
 ImageRGBA8 makeErrorImage(const ImageRGBA8& shaded, std::span<const std::uint8_t> technique,
-                          std::span<const std::uint8_t> reference) {
+                          std::span<const std::uint8_t> reference, int dilatePx) {
   if (!shaded.valid()) throw std::invalid_argument("makeErrorImage: invalid shaded image");
   const std::size_t n = shaded.pixelCount();
   if (technique.size() != n || reference.size() != n)
@@ -61,6 +61,25 @@ ImageRGBA8 makeErrorImage(const ImageRGBA8& shaded, std::span<const std::uint8_t
     }
     std::copy(c.begin(), c.end(), p);
   }
+  if (dilatePx <= 0) return out;
+  // Dilate: false shadow first, false lit over it (the rarer, usually the worse, error).
+  const ImageRGBA8 thin = out;
+  const int w = shaded.width, h = shaded.height;
+  for (const Rgba8& colour : {kFalseShadowColor, kFalseLitColor})
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+        if (!std::equal(colour.begin(), colour.end(), thin.pixels.data() + 4 * i)) continue;
+        if (technique[i] == kMaskUncovered || reference[i] == kMaskUncovered) continue;
+        for (int dy = -dilatePx; dy <= dilatePx; ++dy)
+          for (int dx = -dilatePx; dx <= dilatePx; ++dx) {
+            const int xx = x + dx, yy = y + dy;
+            if (xx < 0 || yy < 0 || xx >= w || yy >= h) continue;
+            const std::size_t j = std::size_t(yy) * std::size_t(w) + std::size_t(xx);
+            if (technique[j] == kMaskUncovered || reference[j] == kMaskUncovered) continue;
+            std::copy(colour.begin(), colour.end(), out.pixels.data() + 4 * j);
+          }
+      }
   return out;
 }
 

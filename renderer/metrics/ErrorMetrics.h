@@ -46,7 +46,10 @@ inline constexpr Rgba8 kFalseShadowColor = {0, 255, 255, 255};  ///< cyan: wrong
 /// The masks are in the same row order as `shaded` (row 0 = top: flip GL readbacks first).
 /// Throws std::invalid_argument when `shaded` is not valid or a mask's size is not
 /// shaded.width * shaded.height.
+/// `dilatePx` > 0 (for print, where single-pixel lines vanish): every wrong pixel is drawn
+/// as a (2 dilatePx + 1)^2 square, over covered pixels only; false lit drawn over false
+/// shadow where squares meet.
 ImageRGBA8 makeErrorImage(const ImageRGBA8& shaded, std::span<const std::uint8_t> technique,
-                          std::span<const std::uint8_t> reference);
+                          std::span<const std::uint8_t> reference, int dilatePx = 0);
 
 }  // namespace sl

@@ -90,6 +90,43 @@ TEST(ErrorMetrics, ErrorImageColours) {
   }
 }
 
+TEST(ErrorMetrics, ErrorImageDilatedForPrint) {
+  // 7x5, all lit and covered but one uncovered pixel; one false-lit pixel at (1, 1), one
+  // false-shadow pixel at (4, 2). Dilated by 1: each a 3x3 square; every other pixel as in
+  // the undilated image (the uncovered one as shaded).
+  const int w = 7, h = 5;
+  const ImageRGBA8 shaded = makeImage(w, h, {200, 100, 50, 255});
+  std::vector<std::uint8_t> technique(w * h, L), reference(w * h, L);
+  technique[1 * w + 1] = L, reference[1 * w + 1] = S;  // false lit
+  technique[2 * w + 4] = S;                            // false shadow
+  technique[0 * w + 5] = U;                            // uncovered: stays as shaded
+  const ImageRGBA8 thin = makeErrorImage(shaded, technique, reference, 0);
+  const ImageRGBA8 same = makeErrorImage(shaded, technique, reference);
+  EXPECT_EQ(thin.pixels, same.pixels);
+  const ImageRGBA8 e = makeErrorImage(shaded, technique, reference, 1);
+  auto is = [&](int x, int y, const Rgba8& c) {
+    return std::equal(c.begin(), c.end(), e.pixel(x, y));
+  };
+  int lit = 0, shadow = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool inLit = x <= 2 && y <= 2;
+      const bool inShadow = x >= 3 && x <= 5 && y >= 1 && y <= 3;
+      lit += is(x, y, kFalseLitColor);
+      shadow += is(x, y, kFalseShadowColor);
+      if (inLit)
+        EXPECT_TRUE(is(x, y, kFalseLitColor)) << x << ", " << y;
+      else if (inShadow)
+        EXPECT_TRUE(is(x, y, kFalseShadowColor)) << x << ", " << y;
+      else
+        EXPECT_TRUE(std::equal(thin.pixel(x, y), thin.pixel(x, y) + 4, e.pixel(x, y)))
+            << x << ", " << y;
+    }
+  EXPECT_EQ(lit, 9);
+  EXPECT_EQ(shadow, 9);
+  EXPECT_EQ(e.pixel(5, 0)[0], shaded.pixel(5, 0)[0]);  // uncovered: unchanged
+}
+
 TEST(ErrorMetrics, ErrorImageSizeMismatchThrows) {
   const ImageRGBA8 shaded = makeImage(2, 2);
   const std::vector<std::uint8_t> four(4, L), three(3, L);

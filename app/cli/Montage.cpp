@@ -10,12 +10,14 @@
 #include <QFontMetrics>
 #include <QImage>
 #include <QPainter>
+#include <QPen>
 #endif
 
 namespace sl::cli {
 
 std::optional<std::string> writeMontage(const std::vector<MontageCell>& cells,
                                         const std::string& title, int columns,
+                                        const std::optional<MontageInset>& inset,
                                         const std::string& pngPath) {
 #if SHADOWLAB_CLI_CHARTS
   if (cells.empty()) return "--montage: no configurations to show";
@@ -54,12 +56,34 @@ std::optional<std::string> writeMontage(const std::vector<MontageCell>& cells,
     return QImage(img.pixels.data(), img.width, img.height, 4 * img.width, QImage::Format_RGBA8888)
         .copy();
   };
+  // The inset: the region magnified (nearest texel: pixels stay pixels) into the corner,
+  // framed, and the region itself outlined.
+  auto drawImage = [&](const ImageRGBA8& img, QPoint at) {
+    const QImage q = toQImage(img);
+    p.drawImage(at, q);
+    if (!inset) return;
+    const QRect region(int(inset->x * q.width()), int(inset->y * q.height()),
+                       std::max(1, int(inset->w * q.width())),
+                       std::max(1, int(inset->h * q.height())));
+    const QImage zoomed = q.copy(region).scaled(region.size() * inset->zoom, Qt::IgnoreAspectRatio,
+                                                Qt::FastTransformation);
+    const QRect target(at.x() + q.width() - zoomed.width() - 2,
+                       at.y() + q.height() - zoomed.height() - 2, zoomed.width(), zoomed.height());
+    p.drawImage(target.topLeft(), zoomed);
+    p.setBrush(Qt::NoBrush);
+    for (const auto& [colour, width] : {std::pair{QColor(0, 0, 0), 3}, {QColor(255, 200, 0), 1}}) {
+      p.setPen(QPen(colour, width));
+      p.drawRect(target);
+      p.drawRect(region.translated(at));
+    }
+    p.setPen(Qt::black);
+  };
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const MontageCell& c = cells[i];
     const int x = int(i % std::size_t(cols)) * cellW + pad;
     const int y = titleH + int(i / std::size_t(cols)) * cellH;
-    if (c.shaded.valid()) p.drawImage(QPoint(x, y), toQImage(c.shaded));
-    if (c.error.valid()) p.drawImage(QPoint(x, y + imageH + pad), toQImage(c.error));
+    if (c.shaded.valid()) drawImage(c.shaded, QPoint(x, y));
+    if (c.error.valid()) drawImage(c.error, QPoint(x, y + imageH + pad));
     const int textY = y + 2 * imageH + 2 * pad;
     p.setFont(bold);
     p.drawText(QRect(x, textY, imageW, line), Qt::AlignLeft | Qt::AlignVCenter,
@@ -73,7 +97,7 @@ std::optional<std::string> writeMontage(const std::vector<MontageCell>& cells,
     return "--montage: cannot write '" + pngPath + "'";
   return std::nullopt;
 #else
-  (void)cells, (void)title, (void)columns, (void)pngPath;
+  (void)cells, (void)title, (void)columns, (void)inset, (void)pngPath;
   return "--montage: this shadowlab-cli was built without Qt (the montage draws its labels "
          "with Qt); install Qt 6 and rebuild";
 #endif

@@ -17,10 +17,19 @@ struct MontageCell {
   ImageRGBA8 shaded, error;
 };
 
-/// Writes the montage PNG (`columns` cells per row; 0 = all in one row). An error when it
-/// cannot (no Qt in this build, no cells, the file cannot be written).
+/// A zoom inset: the region (fractions of the image, x right, y down) magnified `zoom`
+/// times into the image's lower right corner, the region outlined where it is.
+struct MontageInset {
+  double x = 0.0, y = 0.0, w = 0.0, h = 0.0;
+  int zoom = 3;
+};
+
+/// Writes the montage PNG (`columns` cells per row; 0 = all in one row), with `inset` drawn
+/// into every image and error image when given. An error when it cannot (no Qt in this
+/// build, no cells, the file cannot be written).
 std::optional<std::string> writeMontage(const std::vector<MontageCell>& cells,
                                         const std::string& title, int columns,
+                                        const std::optional<MontageInset>& inset,
                                         const std::string& pngPath);
 
 }  // namespace sl::cli

@@ -48,7 +48,7 @@ const char* kUsage =
     "       shadowlab-cli compare [--scene NAME|FILE] [--technique ID[:KEY=V1,V2...]]...\n"
     "                            [--set KEY=VALUE]... [--size WxH] [--camera NAME|INDEX]\n"
     "                            [--light LIGHT] --out-dir DIR [--montage FILE.png]\n"
-    "                            [--dilate PX (1)] [--columns N]\n"
+    "                            [--dilate PX (1)] [--columns N] [--inset X,Y,W,H[,ZOOM]]\n"
     "         (no --technique: every technique at its defaults)\n"
     "  LIGHT: AZ,EL or dir:AZ,EL (degrees) | point:X,Y,Z[,RANGE] |\n"
     "         spot:X,Y,Z,DX,DY,DZ,OUTER_DEG[,INNER_DEG[,RANGE]] (metres; range 0 = infinite)\n";
@@ -308,6 +308,7 @@ int cmdCompare(Args& a) {
   std::vector<std::string> techniqueSpecs;
   std::string montage;
   int dilate = 1, columns = 0;
+  std::optional<sl::cli::MontageInset> inset;
   Args rest;
   rest.rest.push_back(a.rest[0]);
   for (size_t i = 1; i < a.rest.size(); ++i) {
@@ -320,7 +321,26 @@ int cmdCompare(Args& a) {
       dilate = parseInt(o, a.take(i, o), 0, 16);
     else if (o == "--columns")
       columns = parseInt(o, a.take(i, o), 0, 64);
-    else
+    else if (o == "--inset") {
+      // X,Y,W,H as fractions of the image (x right, y down), optionally ,ZOOM
+      const std::string text = a.take(i, o);
+      std::vector<double> v;
+      std::stringstream ss(text);
+      for (std::string part; std::getline(ss, part, ',');)
+        v.push_back(parseDouble(o, part, 0.0, 16.0));
+      if (v.size() != 4 && v.size() != 5)
+        throw UsageError("--inset: expected X,Y,W,H[,ZOOM] (fractions of the image), got '" + text +
+                         "'");
+      if (v[2] <= 0.0 || v[3] <= 0.0 || v[0] + v[2] > 1.0 || v[1] + v[3] > 1.0)
+        throw UsageError("--inset: the region " + text +
+                         " must lie inside the image (X + W <= 1, Y + H <= 1, W, H > 0)");
+      const int zoom = v.size() == 5 ? int(v[4]) : 3;
+      if (zoom < 2 || zoom > 8 || v[2] * zoom > 0.9 || v[3] * zoom > 0.9)
+        throw UsageError(
+            "--inset: zoom " + std::to_string(zoom) +
+            " must be 2..8 and the zoomed region fit the image (W x ZOOM, H x ZOOM <= 0.9)");
+      inset = sl::cli::MontageInset{v[0], v[1], v[2], v[3], zoom};
+    } else
       rest.rest.push_back(o);
   }
   RenderConfig base = parseRender(rest, 1, false);
@@ -416,7 +436,7 @@ int cmdCompare(Args& a) {
                   : lightType == sl::LightType::Spot      ? "spot"
                                                           : "point",
                   dilate);
-    if (auto e = sl::cli::writeMontage(cells, title, columns, montage)) throw UsageError(*e);
+    if (auto e = sl::cli::writeMontage(cells, title, columns, inset, montage)) throw UsageError(*e);
     std::printf("wrote the montage %s\n", montage.c_str());
   }
   return 0;

@@ -2,7 +2,7 @@
 # compare for handouts (issue 15 item 5): the configurations given by --technique (bench's
 # ID:KEY=V syntax) with --set, --camera and --light for all; --montage writes one labelled PNG
 # (each configuration's image above its error image, error pixels dilated for print,
-# configuration / texels / error / time under each). A technique that cannot render the
+# configuration / texels / error / time under each, an optional zoom inset). A technique that cannot render the
 # light, or an unknown one, is refused naming it; nothing is written.
 set -uo pipefail
 cli=$1 out=$3/compare_montage
@@ -15,7 +15,7 @@ bad() { echo "FAIL $*"; fail=1; }
 
 "$cli" compare --scene corridor --camera start --technique uniform:resolution=1024 \
   --technique rtw-backward:resolution=512 --set pcf=0 --size 320x180 --out-dir "$out/cmp" \
-  --montage "$out/montage.png" >"$out/stdout" 2>"$out/stderr" || bad "compare exited with $?: $(cat "$out/stderr")"
+  --montage "$out/montage.png" --inset 0.45,0.42,0.12,0.12,3 >"$out/stdout" 2>"$out/stderr" || bad "compare exited with $?: $(cat "$out/stderr")"
 cat "$out/stdout"
 [ "$(grep -c '^uniform resolution=1024 \|^rtw-backward resolution=512 ' "$out/stdout")" = 2 ] &&
   ok "two rows, one per configuration" || bad "rows: $(cat "$out/stdout")"
@@ -43,6 +43,9 @@ err=$("$cli" compare --scene corridor --technique uniform --technique cube --siz
 [ $rc = 2 ] && grep -q "cube" <<<"$err" && ok "cube under a sun: exit 2: $err" || bad "cube: exit $rc: $err"
 err=$("$cli" compare --scene corridor --technique nonesuch --size 64x36 --out-dir "$out/refused" 2>&1 >/dev/null); rc=$?
 [ $rc = 2 ] && grep -q "nonesuch" <<<"$err" && ok "unknown technique: exit 2: $err" || bad "nonesuch: exit $rc: $err"
+err=$("$cli" compare --scene corridor --technique uniform --size 64x36 --out-dir "$out/refused" \
+  --montage "$out/refused.png" --inset 0.9,0.1,0.2,0.2 2>&1 >/dev/null); rc=$?
+[ $rc = 2 ] && grep -q "inside the image" <<<"$err" && ok "inset outside the image: exit 2: $err" || bad "inset: exit $rc: $err"
 [ ! -e "$out/refused.png" ] && [ -z "$(ls -A "$out/refused" 2>/dev/null)" ] && ok "nothing written by a refused run" || bad "a refused run wrote $(ls "$out/refused")"
 [ $fail = 0 ] && echo PASS
 exit $fail

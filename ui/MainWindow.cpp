@@ -429,6 +429,38 @@ void MainWindow::saveScreenshot() {
     report(tr("cannot write %1").arg(path), tr("Save viewport image"));
 }
 
+void MainWindow::exportFigureDialog() {
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export figure"), QDir::home().filePath(QStringLiteral("shadowlab-figure.png")),
+      tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  if (auto e = exportFigure(path))
+    report(*e, tr("Export figure"));
+  else
+    showStatus(tr("Saved %1").arg(path));
+}
+
+std::optional<QString> MainWindow::exportFigure(const QString& path) {
+  constexpr int kDilatePx = 1;  // single-pixel error lines survive printing
+  const std::vector<FigureCell> cells = viewport_->figureCells(kDilatePx);
+  if (cells.empty()) return tr("export figure: no frame to export yet");
+  const sl::Light& light = viewport_->light();
+  const QString kind = light.type == sl::LightType::Directional ? tr("directional")
+                       : light.type == sl::LightType::Spot      ? tr("spot")
+                                                                : tr("point");
+  const QString title =
+      tr("%1, %2x%3, %4 light; below each image its errors against the exact reference "
+         "(magenta: wrongly lit, cyan: wrongly shadowed; drawn %5 px wider)")
+          .arg(sceneSpec_)
+          .arg(cells.front().shaded.width)
+          .arg(cells.front().shaded.height)
+          .arg(kind)
+          .arg(kDilatePx);
+  if (!drawFigure(cells, title.toStdString(), 0, std::nullopt).save(path, "PNG"))
+    return tr("cannot write %1").arg(path);
+  return std::nullopt;
+}
+
 void MainWindow::info(const QString& message) {
   if (lastProblemClock_.isValid() && lastProblemClock_.elapsed() < kStatusMessageMs) return;
   showStatus(message);

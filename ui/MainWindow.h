@@ -124,6 +124,10 @@ class MainWindow : public QMainWindow {
   void updateTitle();
   void showShortcuts();
   void saveScreenshot();
+  void exportFigureDialog();
+  /// File > Export figure to `path` (ViewportWidget::figureCells, ui/FigureKit.h); the
+  /// problem, or nothing.
+  std::optional<QString> exportFigure(const QString& path);
   void savePanelImage(QDockWidget* dock);
   void saveAllImages();
 

@@ -53,6 +53,12 @@ void MainWindow::createActions() {
   reload->setShortcut(Qt::Key_F5);
   QAction* screenshot =
       file->addAction(tr("Save &viewport image…"), this, &MainWindow::saveScreenshot);
+  QAction* figure = file->addAction(tr("Export &figure… (view and split view, with errors)"), this,
+                                    &MainWindow::exportFigureDialog);
+  figure->setToolTip(
+      tr("A labelled PNG for handouts: each half of the view above its error "
+         "image (wrong pixels drawn wider for print), with technique, texels, "
+         "error and time, as shadowlab-cli compare --montage writes"));
   screenshot->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
   saveImageMenu_ = file->addMenu(tr("Save &panel image"));
   QAction* saveAll =

@@ -12,11 +12,13 @@
 #include <QComboBox>
 #include <QDragEnterEvent>
 #include <QDir>
+#include <QFile>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QImage>
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QMouseEvent>
@@ -190,6 +192,22 @@ bool SelfTests::splitResize(const QString& splitTechnique) {
             .arg(problems.isEmpty() ? QString()
                                     : QStringLiteral(": ") + problems.join(QStringLiteral("; "))));
   }
+  // File > Export figure with the split view on: two labelled cells (each half above its
+  // error image), as wide as the two halves, twice as high plus the text.
+  const QString figure = QDir::temp().filePath(QStringLiteral("shadowlab-self-test-figure.png"));
+  QFile::remove(figure);
+  const auto exportError = w_.exportFigure(figure);
+  const QImage fig(figure);
+  const int halfW = w_.viewport_->width() / 2, viewH = w_.viewport_->height();
+  check(!exportError && !fig.isNull() && fig.width() >= 2 * halfW &&
+            fig.width() <= 2 * halfW + 200 && fig.height() >= 2 * viewH,
+        tr("File > Export figure: %1 (%2x%3 for halves of %4x%5)")
+            .arg(exportError.value_or(figure))
+            .arg(fig.width())
+            .arg(fig.height())
+            .arg(halfW)
+            .arg(viewH));
+  QFile::remove(figure);
   w_.viewport_->setMinimumSize(0, 0);
   w_.viewport_->setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
   return true;

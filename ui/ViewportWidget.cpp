@@ -15,6 +15,7 @@
 
 #include "GlSupport.h"
 #include "MessageText.h"
+#include "metrics/ErrorMetrics.h"
 
 namespace sl::ui {
 
@@ -728,6 +729,43 @@ void ViewportWidget::computeErrorIfStill() {
     return;
   }
   computeErrorNow();
+}
+
+std::vector<FigureCell> ViewportWidget::figureCells(int dilatePx) {
+  std::vector<FigureCell> cells;
+  if (!renderer_ || framesRendered_ == 0) return cells;
+  makeCurrent();
+  try {
+    for (sl::Renderer* r :
+         {renderer_.get(), splitTechniqueId_.empty() ? nullptr : splitRenderer_.get()}) {
+      if (!r) continue;
+      const sl::Renderer::ErrorResult e = r->computeError();
+      FigureCell c;
+      c.label = r->techniqueId();
+      const sl::ParamSet& ps = r->params();
+      for (const sl::ParamDecl& d : ps.decls())
+        if (ps.get(d.key) != d.defaultValue) c.label += " " + d.key + "=" + ps.format(d.key);
+      const sl::FrameStats& st = r->stats();
+      char facts[160];
+      const double mib = double(st.memory.bytes()) / double(1 << 20);
+      if (e.stats.covered == 0)
+        std::snprintf(facts, sizeof facts, "%.3g M texels (%.3g MiB), error n/a, %.1f ms",
+                      double(st.memory.texels()) / 1e6, mib, st.totalMs);
+      else
+        std::snprintf(facts, sizeof facts, "%.3g M texels (%.3g MiB), error %.3f %%, %.1f ms",
+                      double(st.memory.texels()) / 1e6, mib, e.stats.errorPct, st.totalMs);
+      c.facts = facts;
+      c.shaded = e.frame.color;
+      c.error = sl::makeErrorImage(e.frame.color, e.frame.hardMask, e.referenceMask, dilatePx);
+      cells.push_back(std::move(c));
+    }
+  } catch (const std::exception& ex) {
+    cells.clear();
+    Q_EMIT renderProblem(
+        QStringLiteral("export figure: %1").arg(QString::fromStdString(ex.what())));
+  }
+  doneCurrent();
+  return cells;
 }
 
 void ViewportWidget::markViewChanged() {

@@ -18,6 +18,7 @@
 #include <QPointF>
 #include <QTimer>
 
+#include "FigureKit.h"
 #include "core/Renderer.h"
 
 namespace sl::ui {
@@ -95,6 +96,13 @@ class ViewportWidget : public QOpenGLWidget {
 
   /// The view as shown, with the split half, captions, banner and legends (for PNGs).
   QImage grabView();
+
+  /// File > Export figure: each half of the view (the main technique, the split view's) as
+  /// rendered in the last frame with its error image (wrong pixels dilated by `dilatePx`),
+  /// labelled with the technique and the parameters that differ from their defaults, and
+  /// its texels, bytes, error and frame time. Computes the error now (a fraction of a
+  /// second); empty before the first frame or when it fails (renderProblem says why).
+  std::vector<FigureCell> figureCells(int dilatePx);
 
   /// The error of the (left half of the) view, once computed for it.
   std::optional<double> errorPct() const { return errorIsCurrent() ? mainErrorPct_ : std::nullopt; }

@@ -89,6 +89,14 @@ bool LessonController::startFile(const QString& path, const QString& dialogTitle
     w_.report(QString::fromStdString(message), dialogTitle);
     return false;
   }
+  // The scene first: a session whose scene cannot be loaded changes nothing (loadScene keeps
+  // the current scene and reports, naming the file); apply() then finds it loaded.
+  const QString scene = QString::fromStdString(preset->scene);
+  if (!scene.isEmpty() && scene != w_.sceneSpec_ && !w_.loadScene(scene)) {
+    w_.report(tr("%1: its scene '%2' could not be loaded; nothing was changed").arg(path, scene),
+              dialogTitle);
+    return false;
+  }
   auto same = std::find_if(lessons_.begin(), lessons_.end(),
                            [&path](const Lesson& l) { return l.path == path; });
   if (same == lessons_.end()) {

@@ -135,15 +135,23 @@ bool SelfTests::sessionSave(const QString& path) {
       {R"({"compare": {"technique": "uniform", "params": {"resolutoin": 512}}})",
        "compare.params.resolutoin"},
       {R"({"layout": {"state": "<script>"}})", "layout.state"},
-      {R"({"scene": "corridor", "technique": )", "not valid JSON"}};
+      {R"({"scene": "corridor", "technique": )", "not valid JSON"},
+      // Valid JSON whose scene is a broken glTF: refused before anything else is applied.
+      {R"({"scene": "BROKEN", "technique": "uniform", "params": {"resolution": 512}})",
+       "could not be loaded"}};
+  const QString brokenScene = path + QStringLiteral(".broken.gltf");
+  std::ofstream(brokenScene.toStdString(), std::ios::binary | std::ios::trunc)
+      << R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {"POSITION": 7}}]}]})";
   for (const auto& [text, what] : cases) {
-    std::ofstream(bad.toStdString(), std::ios::binary | std::ios::trunc) << text;
+    std::ofstream(bad.toStdString(), std::ios::binary | std::ios::trunc)
+        << QString::fromUtf8(text).replace(QStringLiteral("BROKEN"), brokenScene).toStdString();
     badSessionOpen(bad);
     check(w_.statusBar()->currentMessage().contains(QLatin1String(what)),
           tr("the message names the problem (%1): \"%2\"")
               .arg(QLatin1String(what), w_.statusBar()->currentMessage()));
   }
   QFile::remove(bad);
+  QFile::remove(brokenScene);
   return true;
 }
 

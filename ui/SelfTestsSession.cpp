@@ -7,7 +7,10 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QFile>
+#include <QFileDialog>
 #include <QFileInfo>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTimer>
@@ -103,7 +106,26 @@ bool SelfTests::sessionSave(const QString& path) {
   w_.timingDock_->hide();
   printSessionMetrics();
 
-  check(w_.sessions_->save(path), tr("File > Save session wrote %1").arg(path));
+  // File > Save session…, the path typed into Qt's own file dialog as a user would.
+  QFile::remove(path);
+  bool sawDialog = false;
+  QTimer driver;
+  driver.setInterval(50);
+  connect(&driver, &QTimer::timeout, this, [&sawDialog, &path] {
+    if (auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())) {
+      sawDialog = true;
+      if (auto* edit = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"))) {
+        edit->setText(QFileInfo(path).absoluteFilePath());
+        QKeyEvent enter(QEvent::KeyPress, Qt::Key_Return, Qt::NoModifier);
+        QApplication::sendEvent(edit, &enter);
+      }
+    }
+  });
+  driver.start();
+  w_.sessions_->saveAction()->trigger();  // returns once the dialog is closed
+  driver.stop();
+  check(sawDialog && QFileInfo(path).isFile(),
+        tr("File > Save session… showed the file dialog and wrote %1").arg(path));
   const QString absolute = QFileInfo(path).absoluteFilePath();
   check(!w_.sessions_->recent().isEmpty() && w_.sessions_->recent().first() == absolute,
         tr("Recent sessions starts with it"));

@@ -53,6 +53,8 @@ void SessionFiles::createMenu(QMenu* file) {
   connect(recentMenu_, &QMenu::aboutToShow, this, &SessionFiles::fillRecentMenu);
   fillRecentMenu();
   w_.commandActions_ << open << save;
+  openAction_ = open;
+  saveAction_ = save;
 }
 
 sl::Preset SessionFiles::current(const QString& path) const {

@@ -11,6 +11,7 @@
 
 #include "core/Preset.h"
 
+class QAction;
 class QMenu;
 
 namespace sl::ui {
@@ -42,6 +43,8 @@ class SessionFiles : public QObject {
   /// Most recent first; files that no longer exist are dropped (and reported).
   QStringList recent();
   QMenu* recentMenu() const { return recentMenu_; }
+  QAction* saveAction() const { return saveAction_; }  ///< File > Save session…
+  QAction* openAction() const { return openAction_; }  ///< File > Open session…
 
  private:
   QFileDialog::Options dialogOptions() const;
@@ -52,6 +55,8 @@ class SessionFiles : public QObject {
   MainWindow& w_;
   QStringList recent_;
   QMenu* recentMenu_ = nullptr;
+  QAction* saveAction_ = nullptr;
+  QAction* openAction_ = nullptr;
 };
 
 }  // namespace sl::ui

@@ -36,14 +36,19 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
                      "04-diagonal-pca) or a preset file. Its scene, technique and parameters "
                      "come first; --scene, --technique and --set then override them."),
       QStringLiteral("N|NAME|FILE"));
+  const QCommandLineOption session(
+      QStringLiteral("open-session"),
+      QStringLiteral("Open a session saved with File > Save session… (the same as --lesson "
+                     "FILE: a session is a lesson)."),
+      QStringLiteral("FILE"));
   QCommandLineOption selfTest(
       QStringLiteral("self-test"),
       QStringLiteral(
           "Run a GUI self-test (params, bad-gltf=FILE[,FILE...], teaching[=DIR], charts[=DIR], "
-          "split-resize[=TECHNIQUE], omni-probe[=DIR])."),
+          "split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check)."),
       QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
-  parser.addOptions({scene, technique, set, lesson, grab, grabAfter, selfTest});
+  parser.addOptions({scene, technique, set, lesson, session, grab, grabAfter, selfTest});
 
   ParsedLaunch out;
   if (!parser.parse(arguments)) {
@@ -74,17 +79,28 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   o.assignments = parser.values(set);
   o.grabDir = parser.value(grab);
   o.lesson = parser.value(lesson);
+  if (parser.isSet(session)) {
+    if (parser.isSet(lesson)) {
+      out.exitCode = 2;
+      out.messageIsError = true;
+      out.message = QStringLiteral("--open-session and --lesson: give one of them");
+      return out;
+    }
+    o.lesson = parser.value(session);
+  }
   o.selfTest = parser.value(selfTest).section(QLatin1Char('='), 0, 0);
   o.selfTestArgument = parser.value(selfTest).section(QLatin1Char('='), 1);
   if (parser.isSet(selfTest) && o.selfTest != QLatin1String("params") &&
       o.selfTest != QLatin1String("bad-gltf") && o.selfTest != QLatin1String("teaching") &&
       o.selfTest != QLatin1String("charts") && o.selfTest != QLatin1String("split-resize") &&
-      o.selfTest != QLatin1String("omni-probe")) {
+      o.selfTest != QLatin1String("omni-probe") && o.selfTest != QLatin1String("session-save") &&
+      o.selfTest != QLatin1String("session-check")) {
     out.exitCode = 2;
     out.messageIsError = true;
     out.message = QStringLiteral(
                       "unknown --self-test '%1' (known: params, bad-gltf=FILE[,FILE...], "
-                      "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE], omni-probe[=DIR])")
+                      "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE], omni-probe[=DIR], "
+                      "session-save=FILE, session-check)")
                       .arg(parser.value(selfTest));
     return out;
   }

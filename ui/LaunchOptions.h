@@ -1,5 +1,6 @@
 // The GUI's command line: `shadowlab [--scene NAME|FILE] [--technique ID]
-// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--grab DIR --grab-after N]` (and the hidden
+// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--open-session FILE] [--grab DIR --grab-after N]`
+// (and the hidden
 // `--self-test NAME[=ARG]` used by tests/gui), and the GL-free checks of the
 // technique and parameter values against their declarations (before any window opens).
 #pragma once
@@ -20,7 +21,8 @@ struct LaunchOptions {
   QStringList assignments;  ///< KEY=VALUE, applied in order
   QString grabDir;          ///< non-empty: render, save the window and panels there, quit
   int grabAfterFrames = 5;
-  QString lesson;            ///< non-empty: start this lesson (number, file base name or path)
+  QString
+      lesson;  ///< non-empty: start this lesson (number, file base name or path; --open-session)
   QString selfTest;          ///< hidden: run this GUI self-test and exit with its result
   QString selfTestArgument;  ///< the part after '=' in --self-test NAME=ARG
   bool grab() const { return !grabDir.isEmpty(); }

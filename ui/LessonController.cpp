@@ -11,6 +11,7 @@
 #include "LaunchOptions.h"
 #include "MainWindow.h"
 #include "PassStepper.h"
+#include "SessionFiles.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
 #include "panels/common/ParamPanel.h"
@@ -81,6 +82,33 @@ bool LessonController::start(const QString& lesson) {
   return true;
 }
 
+bool LessonController::startFile(const QString& path, const QString& dialogTitle) {
+  std::string message;
+  std::optional<sl::Preset> preset = sl::loadPreset(path.toStdString(), &message);
+  if (!preset) {
+    w_.report(QString::fromStdString(message), dialogTitle);
+    return false;
+  }
+  // The scene first: a session whose scene cannot be loaded changes nothing (loadScene keeps
+  // the current scene and reports, naming the file); apply() then finds it loaded.
+  const QString scene = QString::fromStdString(preset->scene);
+  if (!scene.isEmpty() && scene != w_.sceneSpec_ && !w_.loadScene(scene)) {
+    w_.report(tr("%1: its scene '%2' could not be loaded; nothing was changed").arg(path, scene),
+              dialogTitle);
+    return false;
+  }
+  auto same = std::find_if(lessons_.begin(), lessons_.end(),
+                           [&path](const Lesson& l) { return l.path == path; });
+  if (same == lessons_.end()) {
+    lessons_.push_back(Lesson{path, std::move(*preset)});
+    same = lessons_.end() - 1;
+  } else {
+    same->preset = std::move(*preset);
+  }
+  apply(static_cast<int>(same - lessons_.begin()));
+  return true;
+}
+
 void LessonController::apply(int index) {
   if (index < 0 || index >= static_cast<int>(lessons_.size())) return;
   MainWindow& w = w_;
@@ -124,14 +152,24 @@ void LessonController::apply(int index) {
     w.viewport_->setLight(*p.light);
     w.syncLightControls();
   }
+  if (p.compare) {  // a session: the split view as saved ("" = off)
+    if (auto e = w.viewport_->setSplitTechnique(p.compare->technique, p.compare->params))
+      problems << QString::fromStdString(*e);
+    else
+      w.teaching_->setSplitTechnique(QString::fromStdString(p.compare->technique),
+                                     p.compare->params);
+  }
+  if (p.layout) w.sessions_->applyLayout(*p.layout, &problems);  // a session: its docks
   w.docks_.resetHistory();
 
   w.lessonPanel_->showLesson(&lessons_[static_cast<std::size_t>(index)], index,
                              static_cast<int>(lessons_.size()));
   w.lessonPanel_->setNote(problems.join(QLatin1Char('\n')));
   for (const QString& problem : problems) w.report(tr("lesson: %1").arg(problem));
-  w.lessonDock_->show();
-  w.lessonDock_->raise();
+  if (!p.layout) {
+    w.lessonDock_->show();
+    w.lessonDock_->raise();
+  }
   w.updateBanner();
   if (w.viewport_->paused()) w.viewport_->stepFrame();
   w.viewport_->update();

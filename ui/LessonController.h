@@ -28,6 +28,10 @@ class LessonController : public QObject {
   void connectPanel(LessonPanel* panel);
   /// A lesson by number, base name or preset path; false (reported) when none.
   bool start(const QString& lesson);
+  /// A preset file (a saved session), read again even when it was opened before; false
+  /// (reported under `dialogTitle`, nothing changed) when it cannot be read or its scene
+  /// cannot be loaded.
+  bool startFile(const QString& path, const QString& dialogTitle);
   void apply(int index);
 
   const std::vector<Lesson>& lessons() const { return lessons_; }

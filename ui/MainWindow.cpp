@@ -34,6 +34,7 @@
 #include "MessageText.h"
 #include "PassStepper.h"
 #include "SelfTests.h"
+#include "SessionFiles.h"
 #include "ShortcutsDialog.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
@@ -108,6 +109,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   teaching_ = std::make_unique<TeachingBar>(*this);
   grab_ = std::make_unique<GrabRun>(*this);
   selfTests_ = std::make_unique<SelfTests>(*this);
+  sessions_ = std::make_unique<SessionFiles>(*this);
   createActions();
   createToolBar();
   addToolBarBreak();

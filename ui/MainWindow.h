@@ -37,6 +37,7 @@ class LightPanel;
 class ParamPanel;
 class PassStepper;
 class SelfTests;
+class SessionFiles;
 class ShortcutsDialog;
 class TeachingBar;
 class TimingPanel;
@@ -90,6 +91,7 @@ class MainWindow : public QMainWindow {
   friend class LessonController;
   friend class PassStepper;
   friend class SelfTests;
+  friend class SessionFiles;
   friend class TeachingBar;
 
   void createActions();
@@ -195,6 +197,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<TeachingBar> teaching_;
   std::unique_ptr<GrabRun> grab_;
   std::unique_ptr<SelfTests> selfTests_;
+  std::unique_ptr<SessionFiles> sessions_;
 };
 
 }  // namespace sl::ui

@@ -18,6 +18,7 @@
 #include "LessonController.h"
 #include "MainWindow.h"
 #include "PassStepper.h"
+#include "SessionFiles.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
 #include "panels/common/ChartsPanel.h"
@@ -43,6 +44,9 @@ void MainWindow::createActions() {
   QAction* open = file->addAction(tr("&Open glTF…"), this, &MainWindow::openSceneDialog);
   open->setShortcut(QKeySequence::Open);
   openAction_ = open;
+  file->addSeparator();
+  sessions_->createMenu(file);
+  file->addSeparator();
   QAction* reload = file->addAction(tr("&Reload shaders"), this, [this] {
     if (auto error = viewport_->reloadShaders())
       report(tr("shader reload failed (the last good shaders stay in use): %1")

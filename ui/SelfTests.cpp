@@ -123,6 +123,10 @@ void SelfTests::run() {
     ran = splitResize(argument_);
   else if (name_ == QLatin1String("omni-probe"))
     ran = omniProbe(argument_);
+  else if (name_ == QLatin1String("session-save"))
+    ran = sessionSave(argument_);
+  else if (name_ == QLatin1String("session-check"))
+    ran = sessionCheck();
   else
     ran = badGltf(argument_);
   const bool pass = ran && failures_ == 0;

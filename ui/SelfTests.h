@@ -1,6 +1,6 @@
 // GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
 // params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE],
-// omni-probe[=DIR]. They act as a
+// omni-probe[=DIR], session-save=FILE, session-check (SelfTestsSession.cpp). They act as a
 // user would and check what the renderer and the window did; each check prints "ok   ..." or "FAIL
 // ...".
 #pragma once
@@ -43,6 +43,18 @@ class SelfTests : public QObject {
   /// face or hemisphere and uv algo/omni computes for that pixel's direction from the light;
   /// leaving the view removes it. PNG of the window into `dir`.
   bool omniProbe(const QString& dir);
+  /// session-save=FILE: a state far from the defaults (scene, technique, parameters, overlay,
+  /// camera, light, a split technique with its own parameters, a hidden dock), its metrics
+  /// printed ("metric ..." lines), saved to FILE through SessionFiles; Recent sessions lists
+  /// it and drops a deleted one; a malformed session is refused and changes nothing.
+  bool sessionSave(const QString& path);
+  /// session-check: the same "metric ..." lines for the state the window started in
+  /// (tests/gui/session_roundtrip.sh starts it with --open-session FILE and compares).
+  bool sessionCheck();
+  /// The view pinned to 640x400, a few frames, the error computed; prints the metrics.
+  void printSessionMetrics();
+  /// A malformed session opened through SessionFiles: refused, named, nothing changed.
+  void badSessionOpen(const QString& path);
   void check(bool ok, const QString& what);
 
   MainWindow& w_;

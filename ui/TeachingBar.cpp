@@ -122,9 +122,10 @@ void TeachingBar::cycleOverlay() {
   w_.info(tr("Overlay: %1").arg(overlayCombo_->currentText()));
 }
 
-void TeachingBar::setSplitTechnique(const QString& id) {
+void TeachingBar::setSplitTechnique(const QString& id,
+                                    const std::map<std::string, std::string>& params) {
   ViewportWidget* viewport = w_.viewport_;
-  if (auto error = viewport->setSplitTechnique(id.toStdString())) {
+  if (auto error = viewport->setSplitTechnique(id.toStdString(), params)) {
     w_.report(QString::fromStdString(*error));
     return;
   }
@@ -138,7 +139,7 @@ void TeachingBar::setSplitTechnique(const QString& id) {
 
 void TeachingBar::restoreSplit() {
   if (!lastSplitTechnique_.isEmpty() && splitCombo_->currentIndex() > 0)
-    setSplitTechnique(lastSplitTechnique_);
+    setSplitTechnique(lastSplitTechnique_, w_.viewport_->splitParams());
 }
 
 void TeachingBar::toggleSplit() {

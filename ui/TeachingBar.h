@@ -3,6 +3,9 @@
 // pause, step frame and step passes.
 #pragma once
 
+#include <map>
+#include <string>
+
 #include <QObject>
 #include <QString>
 
@@ -24,7 +27,8 @@ class TeachingBar : public QObject {
   void syncOverlayCombo();
   void setOverlay(int value);
   void cycleOverlay();
-  void setSplitTechnique(const QString& id);
+  /// `params`: the right technique's own parameters (ViewportWidget::setSplitTechnique).
+  void setSplitTechnique(const QString& id, const std::map<std::string, std::string>& params = {});
   void toggleSplit();
   /// After a new renderer: restores the split view chosen before.
   void restoreSplit();

@@ -366,6 +366,14 @@ void ViewportWidget::renderSplitHalf(int width, int height, std::string& problem
         problem = "split view: " + *e;
         return;
       }
+    if (splitParamsPending_) {  // checked by setSplitTechnique: cannot fail here
+      splitRenderer_->params().resetToDefaults();
+      for (const auto& [key, value] : splitParams_)
+        if (auto e = splitRenderer_->params().setFromString(key, value))
+          problem = "split view: " + *e;
+      splitRenderer_->resetTemporalState();
+      splitParamsPending_ = false;
+    }
     // Same camera, light and shared (view/shading) parameters as the left half.
     sl::ParamSet& mine = splitRenderer_->rendererParams();
     for (const sl::ParamDecl& d : renderer_->rendererParams().decls())
@@ -472,20 +480,43 @@ void ViewportWidget::stepFrame() {
   update();
 }
 
-std::optional<std::string> ViewportWidget::setSplitTechnique(const std::string& techniqueId) {
-  if (!techniqueId.empty() && !sl::Renderer::findTechnique(techniqueId)) {
+std::optional<std::string> ViewportWidget::setSplitTechnique(
+    const std::string& techniqueId, const std::map<std::string, std::string>& params) {
+  const sl::TechniqueInfo* info =
+      techniqueId.empty() ? nullptr : sl::Renderer::findTechnique(techniqueId);
+  if (!techniqueId.empty() && !info) {
     std::string known;
     for (const sl::TechniqueInfo& t : sl::Renderer::techniques())
       known += (known.empty() ? "" : ", ") + t.id;
     return "unknown technique '" + techniqueId + "' (known: " + known + ")";
   }
+  if (info) {
+    sl::ParamSet check(info->params);
+    for (const auto& [key, value] : params) {
+      if (!check.has(key))
+        return "split view: technique '" + techniqueId + "' has no parameter '" + key + "'";
+      if (auto e = check.setFromString(key, value)) return "split view: " + *e;
+    }
+  }
   splitTechniqueId_ = techniqueId;
+  splitParams_ = info ? params : std::map<std::string, std::string>{};
+  splitParamsPending_ = true;
   splitErrorPct_.reset();
   markViewChanged();
   if (paused_) ++pendingSteps_;
   update();
   if (techniqueId.empty()) updateOverlayWidget();
   return std::nullopt;
+}
+
+std::map<std::string, std::string> ViewportWidget::splitParams() const {
+  if (splitTechniqueId_.empty()) return {};
+  if (splitParamsPending_ || !splitRenderer_ || splitRenderer_->techniqueId() != splitTechniqueId_)
+    return splitParams_;
+  std::map<std::string, std::string> out;
+  const sl::ParamSet& set = splitRenderer_->params();
+  for (const sl::ParamDecl& d : set.decls()) out[d.key] = set.format(d.key);
+  return out;
 }
 
 void ViewportWidget::setBanner(const QString& title, const QString& text) {

@@ -5,6 +5,7 @@
 // the renderer's overlays, and a split view with a second technique on the right half.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -88,8 +89,14 @@ class ViewportWidget : public QOpenGLWidget {
 
   /// Split view: `techniqueId` on the right half (a second renderer, same camera, light and
   /// shared parameters), the main technique on the left. Empty: off. Unknown id: error.
-  std::optional<std::string> setSplitTechnique(const std::string& techniqueId);
+  /// `params`: the right technique's own parameters (KEY -> text, the rest at their
+  /// defaults); a key it does not declare or a value out of range: error, no change.
+  std::optional<std::string> setSplitTechnique(
+      const std::string& techniqueId, const std::map<std::string, std::string>& params = {});
   const std::string& splitTechnique() const { return splitTechniqueId_; }
+  /// The right technique's own parameter values (every one it declares, as text) once its
+  /// renderer has it, else those given to setSplitTechnique. Empty when the split is off.
+  std::map<std::string, std::string> splitParams() const;
 
   /// A banner over the top of the view (lesson title, pass being stepped); empty: none.
   void setBanner(const QString& title, const QString& text);
@@ -170,6 +177,8 @@ class ViewportWidget : public QOpenGLWidget {
   /// objects; created lazily, kept until the context goes).
   std::unique_ptr<sl::Renderer> splitRenderer_;
   std::string splitTechniqueId_;
+  std::map<std::string, std::string> splitParams_;  ///< given to setSplitTechnique
+  bool splitParamsPending_ = false;                 ///< not yet applied to splitRenderer_
   std::optional<double> splitErrorPct_;
   std::optional<double> mainErrorPct_;
   QImage splitImage_;

@@ -25,47 +25,116 @@ std::string paramText(const json& v) {
   return v.dump();
 }
 
+const TechniqueInfo* findTechniqueOrFail(const JsonReader& r, const std::string& id,
+                                         const std::string& path) {
+  if (const TechniqueInfo* info = Renderer::findTechnique(id)) return info;
+  std::string known;
+  for (const TechniqueInfo& t : Renderer::techniques()) known += (known.empty() ? "" : ", ") + t.id;
+  r.fail(path, "unknown technique '" + quoteText(id, 60) + "' (known: " + known + ")");
+}
+
+/// Reads {"key": value, ...} at `path` into text values. With `sets` (nullptr entries
+/// skipped), every key must be declared by one of them and its value in range.
+std::map<std::string, std::string> readParams(const JsonReader& r, const json& params,
+                                              const std::string& path, const std::string& technique,
+                                              std::initializer_list<ParamSet*> sets) {
+  r.requireObject(params, path);
+  std::map<std::string, std::string> out;
+  for (const auto& [k, v] : params.items()) {
+    const std::string at = jsonPath(path, k);
+    if (!v.is_number() && !v.is_boolean() && !v.is_string())
+      r.expected(v, at, "a number, true/false or a name");
+    const std::string text = paramText(v);
+    if (!technique.empty()) {
+      ParamSet* set = nullptr;
+      for (ParamSet* s : sets)
+        if (!set && s && s->has(k)) set = s;
+      if (!set)
+        r.fail(at, "technique '" + technique + "' has no parameter '" + quoteText(k, 60) + "'");
+      if (auto e = set->setFromString(k, text))
+        r.fail(at,
+               quoteText(*e) + (e->find(text) == std::string::npos ? " (got " + quoteJson(v) + ")"
+                                                                   : std::string()));
+    }
+    out[k] = text;
+  }
+  return out;
+}
+
+bool isBase64(const std::string& s) {
+  std::size_t pad = 0;
+  for (char c : s) {
+    const bool digit = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                       c == '+' || c == '/';
+    if (c == '=')
+      ++pad;
+    else if (!digit || pad > 0)
+      return false;
+  }
+  return pad <= 2 && s.size() % 4 == 0;
+}
+
+PresetCompare parseCompare(const JsonReader& r, const json& c) {
+  r.onlyKeys(c, "compare", {"technique", "params"});
+  PresetCompare out;
+  out.technique = r.string(c, "compare", "technique", "");
+  const json* params = JsonReader::member(c, "params");
+  if (out.technique.empty()) {
+    if (params && !params->empty())
+      r.fail("compare.params", "parameters for the split view need \"compare.technique\"");
+    return out;
+  }
+  const TechniqueInfo* info = findTechniqueOrFail(r, out.technique, "compare.technique");
+  // Only the compare technique's own parameters: the shared ones are the main side's.
+  ParamSet own(info->params);
+  if (params) out.params = readParams(r, *params, "compare.params", out.technique, {&own});
+  return out;
+}
+
+PresetLayout parseLayout(const JsonReader& r, const json& l) {
+  r.onlyKeys(l, "layout", {"docks", "state"});
+  PresetLayout out;
+  if (const json* docks = JsonReader::member(l, "docks")) {
+    r.requireArray(*docks, "layout.docks");
+    if (docks->size() > kMaxPresetLayoutDocks)
+      r.fail("layout.docks", "more than " + std::to_string(kMaxPresetLayoutDocks) +
+                                 " docks: refused (kMaxPresetLayoutDocks)");
+    for (std::size_t i = 0; i < docks->size(); ++i) {
+      const std::string name = r.string((*docks)[i], jsonPath("layout.docks", i));
+      if (name.empty() || name.size() > 60)
+        r.fail(jsonPath("layout.docks", i),
+               "expected a dock name of 1..60 bytes, got " + quoteJson((*docks)[i]));
+      out.docks.push_back(name);
+    }
+  }
+  out.state = r.string(l, "layout", "state", "");
+  if (out.state.size() > kMaxPresetLayoutStateBytes)
+    r.fail("layout.state", "is " + std::to_string(out.state.size()) + " bytes, over the limit of " +
+                               std::to_string(kMaxPresetLayoutStateBytes) +
+                               " (kMaxPresetLayoutStateBytes)");
+  if (!isBase64(out.state))
+    r.fail("layout.state", "expected the window state as base64, got " + quoteText(out.state, 60));
+  return out;
+}
+
 Preset parsePreset(const JsonReader& r, const json& j) {
-  r.onlyKeys(j, "", {"title", "explanation", "scene", "technique", "params", "camera", "light"});
+  r.onlyKeys(j, "",
+             {"title", "explanation", "scene", "technique", "params", "camera", "light", "compare",
+              "layout"});
   Preset p;
   p.title = r.string(j, "", "title", "");
   p.explanation = r.string(j, "", "explanation", "");
   p.scene = r.string(j, "", "scene", "");
   p.technique = r.string(j, "", "technique", "");
-  const TechniqueInfo* info = nullptr;
-  if (!p.technique.empty()) {
-    info = Renderer::findTechnique(p.technique);
-    if (!info) {
-      std::string known;
-      for (const TechniqueInfo& t : Renderer::techniques())
-        known += (known.empty() ? "" : ", ") + t.id;
-      r.fail("technique",
-             "unknown technique '" + quoteText(p.technique, 60) + "' (known: " + known + ")");
-    }
-  }
+  const TechniqueInfo* info =
+      p.technique.empty() ? nullptr : findTechniqueOrFail(r, p.technique, "technique");
   if (const json* params = JsonReader::member(j, "params")) {
-    r.requireObject(*params, "params");
     // With a technique, every key is its parameter (or a shared one) and every value in
     // range; without one the keys apply to the current technique and are checked there.
     std::optional<ParamSet> own, shared;
     if (info) own.emplace(info->params), shared.emplace(rendererParamDecls());
-    for (const auto& [k, v] : params->items()) {
-      const std::string path = jsonPath("params", k);
-      if (!v.is_number() && !v.is_boolean() && !v.is_string())
-        r.expected(v, path, "a number, true/false or a name");
-      const std::string text = paramText(v);
-      if (info) {
-        ParamSet* set = own->has(k) ? &*own : shared->has(k) ? &*shared : nullptr;
-        if (!set)
-          r.fail(path,
-                 "technique '" + p.technique + "' has no parameter '" + quoteText(k, 60) + "'");
-        if (auto e = set->setFromString(k, text))
-          r.fail(path,
-                 quoteText(*e) + (e->find(text) == std::string::npos ? " (got " + quoteJson(v) + ")"
-                                                                     : std::string()));
-      }
-      p.params[k] = text;
-    }
+    p.params = readParams(r, *params, "params", p.technique,
+                          {own ? &*own : nullptr, shared ? &*shared : nullptr});
   }
   if (const json* c = JsonReader::member(j, "camera")) {
     r.onlyKeys(*c, "camera", {"position", "target", "up", "fovYDeg", "nearM", "farM"});
@@ -85,6 +154,8 @@ Preset parsePreset(const JsonReader& r, const json& j) {
   if (const json* l = JsonReader::member(j, "light")) {
     p.light = readLightJson(r, *l, "light", JsonKeyStyle::CamelCase, false);
   }
+  if (const json* c = JsonReader::member(j, "compare")) p.compare = parseCompare(r, *c);
+  if (const json* l = JsonReader::member(j, "layout")) p.layout = parseLayout(r, *l);
   return p;
 }
 
@@ -111,11 +182,15 @@ std::string presetToJson(const Preset& p) {
     const Camera& c = *p.camera;
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},
                    {"target", {c.target.x, c.target.y, c.target.z}},
+                   {"up", {c.up.x, c.up.y, c.up.z}},
                    {"fovYDeg", c.fovYDeg},
                    {"nearM", c.nearM},
                    {"farM", c.farM}};
   }
   if (p.light) j["light"] = lightToJson(*p.light, JsonKeyStyle::CamelCase);
+  if (p.compare)
+    j["compare"] = {{"technique", p.compare->technique}, {"params", p.compare->params}};
+  if (p.layout) j["layout"] = {{"docks", p.layout->docks}, {"state", p.layout->state}};
   return j.dump(2);
 }
 

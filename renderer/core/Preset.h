@@ -1,16 +1,39 @@
-// JSON presets (and lessons): scene, technique, parameters, camera and light in one file.
-// The same parameter declarations validate them as the UI and the command line.
+// JSON presets (and lessons, and the GUI's saved sessions): scene, technique, parameters,
+// camera and light in one file; a session adds the split view's compare technique and the
+// window layout (optional: older lessons stay valid). The same parameter declarations
+// validate them as the UI and the command line.
 #pragma once
 
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "algo/Camera.h"
 #include "algo/Light.h"
 
 namespace sl {
+
+/// Limits on a session's layout (the window has ~20 docks; Qt's saved state is ~2 KiB).
+inline constexpr std::size_t kMaxPresetLayoutDocks = 64;
+inline constexpr std::size_t kMaxPresetLayoutStateBytes = 64 * 1024;  ///< base64 text
+
+/// The split view's right half: its technique ("": the split view is off) and that
+/// technique's own parameter values (the shared view/shading ones are the main side's).
+struct PresetCompare {
+  std::string technique;
+  std::map<std::string, std::string> params;
+  bool operator==(const PresetCompare&) const = default;
+};
+
+/// The window's layout: the object names of the visible docks, and QMainWindow::saveState
+/// as base64 (either may be empty). Dock names are checked by the window, not here.
+struct PresetLayout {
+  std::vector<std::string> docks;
+  std::string state;
+  bool operator==(const PresetLayout&) const = default;
+};
 
 struct Preset {
   std::string title;
@@ -19,7 +42,9 @@ struct Preset {
   std::string technique;
   std::map<std::string, std::string> params;  ///< key -> value text (validated on apply)
   std::optional<Camera> camera;
-  std::optional<Light> light;  ///< core/LightJson: {"type", ...}
+  std::optional<Light> light;            ///< core/LightJson: {"type", ...}
+  std::optional<PresetCompare> compare;  ///< "compare": {"technique", "params"} (sessions)
+  std::optional<PresetLayout> layout;    ///< "layout": {"docks", "state"} (sessions)
 };
 
 /// Reads a preset; the error names the file and the problem.

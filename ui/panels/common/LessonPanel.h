@@ -1,6 +1,7 @@
 // Lessons: presets in scenes/lessons/*.json (sl::loadPreset: title, explanation, scene,
-// technique, params, camera, light), listed in the Lessons menu in file-name order, and the
-// Lesson dock that shows the current one's explanation with previous / next / restart.
+// technique, params, camera, light; a saved session adds compare and layout), listed in the Lessons
+// menu in file-name order, and the Lesson dock that shows the current one's explanation with
+// previous / next / restart.
 #pragma once
 
 #include <optional>

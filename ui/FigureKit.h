@@ -18,22 +18,9 @@
 #include <QPen>
 #include <QString>
 
-#include "metrics/Image.h"
+#include "FigureTypes.h"
 
 namespace sl::ui {
-
-struct FigureCell {
-  std::string label;         ///< the configuration: "uniform resolution=1024"
-  std::string facts;         ///< "1.05 M texels (4 MiB), error 0.42 %, 31.2 ms"
-  ImageRGBA8 shaded, error;  ///< row 0 = top; the error image may be empty
-};
-
-/// A zoom inset: the region (fractions of the image, x right, y down) magnified `zoom`
-/// times into the image's lower right corner, the region outlined where it is.
-struct FigureInset {
-  double x = 0.0, y = 0.0, w = 0.0, h = 0.0;
-  int zoom = 3;
-};
 
 /// The figure (`columns` cells per row; 0 = all in one row); a null image without cells.
 inline QImage drawFigure(const std::vector<FigureCell>& cells, const std::string& title,

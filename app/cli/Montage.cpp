@@ -9,18 +9,15 @@
 
 namespace sl::cli {
 
-std::optional<std::string> writeMontage(const std::vector<MontageCell>& cells,
+std::optional<std::string> writeMontage(const std::vector<sl::ui::FigureCell>& cells,
                                         const std::string& title, int columns,
-                                        const std::optional<MontageInset>& inset,
+                                        const std::optional<sl::ui::FigureInset>& inset,
                                         const std::string& pngPath) {
 #if SHADOWLAB_CLI_CHARTS
   if (cells.empty()) return "--montage: no configurations to show";
   ensureOffscreenApplication();
-  std::vector<sl::ui::FigureCell> figure;
-  for (const MontageCell& c : cells) figure.push_back({c.label, c.facts, c.shaded, c.error});
-  std::optional<sl::ui::FigureInset> in;
-  if (inset) in = sl::ui::FigureInset{inset->x, inset->y, inset->w, inset->h, inset->zoom};
-  if (!sl::ui::drawFigure(figure, title, columns, in).save(QString::fromStdString(pngPath), "PNG"))
+  if (!sl::ui::drawFigure(cells, title, columns, inset)
+           .save(QString::fromStdString(pngPath), "PNG"))
     return "--montage: cannot write '" + pngPath + "'";
   return std::nullopt;
 #else

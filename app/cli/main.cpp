@@ -308,7 +308,7 @@ int cmdCompare(Args& a) {
   std::vector<std::string> techniqueSpecs;
   std::string montage;
   int dilate = 1, columns = 0;
-  std::optional<sl::cli::MontageInset> inset;
+  std::optional<sl::ui::FigureInset> inset;
   Args rest;
   rest.rest.push_back(a.rest[0]);
   for (size_t i = 1; i < a.rest.size(); ++i) {
@@ -339,7 +339,7 @@ int cmdCompare(Args& a) {
         throw UsageError(
             "--inset: zoom " + std::to_string(zoom) +
             " must be 2..8 and the zoomed region fit the image (W x ZOOM, H x ZOOM <= 0.9)");
-      inset = sl::cli::MontageInset{v[0], v[1], v[2], v[3], zoom};
+      inset = sl::ui::FigureInset{v[0], v[1], v[2], v[3], zoom};
     } else
       rest.rest.push_back(o);
   }
@@ -360,7 +360,7 @@ int cmdCompare(Args& a) {
   sl::Renderer r;
   const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
   json summary = json::array();
-  std::vector<sl::cli::MontageCell> cells;
+  std::vector<sl::ui::FigureCell> cells;
   std::printf("%-28s %10s %12s %10s %10s %10s\n", "configuration", "total ms", "texels", "error %",
               "false lit", "false shd");
   r.setScene(scene);  // the scene's light, or --light's

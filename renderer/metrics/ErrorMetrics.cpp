@@ -63,21 +63,21 @@ ImageRGBA8 makeErrorImage(const ImageRGBA8& shaded, std::span<const std::uint8_t
   }
   if (dilatePx <= 0) return out;
   // Dilate: false shadow first, false lit over it (the rarer, usually the worse, error).
-  const ImageRGBA8 thin = out;
   const int w = shaded.width, h = shaded.height;
-  for (const Rgba8& colour : {kFalseShadowColor, kFalseLitColor})
+  auto covered = [&](std::size_t i) {
+    return technique[i] != kMaskUncovered && reference[i] != kMaskUncovered;
+  };
+  for (const bool falseLit : {false, true})
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-        if (!std::equal(colour.begin(), colour.end(), thin.pixels.data() + 4 * i)) continue;
-        if (technique[i] == kMaskUncovered || reference[i] == kMaskUncovered) continue;
-        for (int dy = -dilatePx; dy <= dilatePx; ++dy)
-          for (int dx = -dilatePx; dx <= dilatePx; ++dx) {
-            const int xx = x + dx, yy = y + dy;
-            if (xx < 0 || yy < 0 || xx >= w || yy >= h) continue;
+        const bool techLit = technique[i] != kMaskShadowed, refLit = reference[i] != kMaskShadowed;
+        if (!covered(i) || techLit == refLit || techLit != falseLit) continue;
+        const Rgba8& colour = falseLit ? kFalseLitColor : kFalseShadowColor;
+        for (int yy = std::max(y - dilatePx, 0); yy <= std::min(y + dilatePx, h - 1); ++yy)
+          for (int xx = std::max(x - dilatePx, 0); xx <= std::min(x + dilatePx, w - 1); ++xx) {
             const std::size_t j = std::size_t(yy) * std::size_t(w) + std::size_t(xx);
-            if (technique[j] == kMaskUncovered || reference[j] == kMaskUncovered) continue;
-            std::copy(colour.begin(), colour.end(), out.pixels.data() + 4 * j);
+            if (covered(j)) std::copy(colour.begin(), colour.end(), out.pixels.data() + 4 * j);
           }
       }
   return out;

@@ -90,29 +90,22 @@ glm::mat4 imagePlaneRotation(const glm::mat2& r) {
   return m;
 }
 
-std::optional<std::string> fitDirectionalLight(const Camera& camera, float aspect,
-                                               const Aabb& sceneBounds,
-                                               const glm::vec3& towardsLight,
-                                               const FocusSettings& settings, LightFit& out) {
-  if (auto err = camera.validate()) return err;
-  if (!(aspect > 0.0f) || !std::isfinite(aspect)) return "camera: aspect ratio must be > 0";
-  float len = glm::length(towardsLight);
-  if (!(len > 1e-6f) || !std::isfinite(len)) return "light: direction is zero or not finite";
-  if (!sceneBounds.valid()) return "scene: empty bounds (no geometry)";
+namespace {
 
-  // Grow flat boxes a little so that the clipping stays well conditioned.
+/// Flat boxes grown a little so that the clipping stays well conditioned.
+Aabb paddedBounds(const Aabb& sceneBounds) {
   Aabb box = sceneBounds;
   glm::vec3 pad = glm::max(box.size() * 0.001f, glm::vec3(1e-3f));
   box.min -= pad;
   box.max += pad;
+  return box;
+}
 
-  std::vector<glm::vec3> focus =
-      intersectFrustumWithBox(camera.frustumCorners(aspect, camera.nearM, camera.farM), box);
-  if (focus.empty()) {
-    auto c = box.corners();
-    focus.assign(c.begin(), c.end());
-  }
-
+/// The orthographic light frustum around `focus` (x, y) whose depth range reaches every
+/// caster of `box` towards the light.
+void fitOrthoAroundFocus(std::vector<glm::vec3> focus, const Aabb& box,
+                         const glm::vec3& towardsLight, const FocusSettings& settings,
+                         LightFit& out) {
   glm::mat4 view = imagePlaneRotation(settings.rotation) * lightBaseView(towardsLight);
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const glm::vec3& p : focus) {
@@ -136,6 +129,42 @@ std::optional<std::string> fitDirectionalLight(const Camera& camera, float aspec
   out.extentM = glm::vec2(hi.x - lo.x, hi.y - lo.y);
   out.depthRangeM = (hi.z - lo.z) + 2 * zPad;
   out.focusPoints = std::move(focus);
+}
+
+}  // namespace
+
+std::optional<std::string> fitDirectionalLight(const Camera& camera, float aspect,
+                                               const Aabb& sceneBounds,
+                                               const glm::vec3& towardsLight,
+                                               const FocusSettings& settings, LightFit& out) {
+  if (auto err = camera.validate()) return err;
+  if (!(aspect > 0.0f) || !std::isfinite(aspect)) return "camera: aspect ratio must be > 0";
+  float len = glm::length(towardsLight);
+  if (!(len > 1e-6f) || !std::isfinite(len)) return "light: direction is zero or not finite";
+  if (!sceneBounds.valid()) return "scene: empty bounds (no geometry)";
+
+  const Aabb box = paddedBounds(sceneBounds);
+
+  std::vector<glm::vec3> focus =
+      intersectFrustumWithBox(camera.frustumCorners(aspect, camera.nearM, camera.farM), box);
+  if (focus.empty()) {
+    auto c = box.corners();
+    focus.assign(c.begin(), c.end());
+  }
+  fitOrthoAroundFocus(std::move(focus), box, towardsLight, settings, out);
+  return std::nullopt;
+}
+
+std::optional<std::string> fitDirectionalLightToScene(const Aabb& sceneBounds,
+                                                      const glm::vec3& towardsLight,
+                                                      LightFit& out) {
+  float len = glm::length(towardsLight);
+  if (!(len > 1e-6f) || !std::isfinite(len)) return "light: direction is zero or not finite";
+  if (!sceneBounds.valid()) return "scene: empty bounds (no geometry)";
+  const Aabb box = paddedBounds(sceneBounds);
+  auto c = box.corners();
+  fitOrthoAroundFocus(std::vector<glm::vec3>(c.begin(), c.end()), box, towardsLight,
+                      FocusSettings{}, out);
   return std::nullopt;
 }
 

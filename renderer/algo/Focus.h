@@ -55,6 +55,12 @@ std::optional<std::string> fitDirectionalLight(const Camera& camera, float aspec
                                                const glm::vec3& towardsLight,
                                                const FocusSettings& settings, LightFit& out);
 
+/// A directional light's orthographic frustum around the whole scene, independent of any
+/// camera (adaptive shadow maps keep pages between frames: they stay valid while the light
+/// and the geometry stay). Error for a degenerate direction or empty bounds.
+std::optional<std::string> fitDirectionalLightToScene(const Aabb& sceneBounds,
+                                                      const glm::vec3& towardsLight, LightFit& out);
+
 /// A spot light's one perspective frustum: from its position along its axis, a square
 /// field of view of twice the outer cone angle (the cone's bounding square), near and far
 /// fitted to the scene bounds within the light's range. Every point of the scene inside

@@ -16,13 +16,14 @@ gl::ProgramDesc depthProgramDesc() {
           {}};
 }
 
-void beginDepthPass(GLuint framebuffer, int width, int height) {
+void beginDepthPass(GLuint framebuffer, int width, int height, bool clear) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
+  if (!clear) return;
   const float one = 1.0f;
   glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &one);
 }

@@ -20,8 +20,9 @@ namespace sl {
 gl::ProgramDesc depthProgramDesc();
 
 /// Binds `framebuffer`, sets the viewport and the depth-only state (less, write, no
-/// culling) and clears depth to 1: the start of every depth pass.
-void beginDepthPass(GLuint framebuffer, int width, int height);
+/// culling) and clears depth to 1 (unless `clear` is false: a page pool keeping its cache):
+/// the start of every depth pass.
+void beginDepthPass(GLuint framebuffer, int width, int height, bool clear = true);
 
 /// Clears and renders the scene's depth into `framebuffer` (width x height). No bias: the
 /// map holds the exact depth at each texel centre; the lookup applies the bias model.

@@ -1,6 +1,7 @@
 // The list of techniques. Adding a technique: its folder under techniques/ and shaders/,
 // and one line here.
 #include "core/Technique.h"
+#include "techniques/asm/AsmShadowMap.h"
 #include "techniques/cascades/CascadedShadowMap.h"
 #include "techniques/facepartition/FacePartitionShadowMap.h"
 #include "techniques/fvsm/FittedVirtualShadowMap.h"
@@ -53,6 +54,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       entry<CubeShadowMap>(),
       entry<DualParaboloidShadowMap>(),
       entry<RmsmShadowMap>(),
+      entry<AsmShadowMap>(),
       entry<VirtualTiledShadowMap>(),
       entry<FittedVirtualShadowMap>(),
   };

@@ -185,6 +185,7 @@ int bytesPerTexel(GLenum f) {
     case GL_RGBA16F:
       return 8;
     case GL_RGBA32F:
+    case GL_RGBA32UI:
       return 16;
     default:
       return 4;
@@ -209,6 +210,8 @@ std::string formatName(GLenum f) {
       return "RGBA16F";
     case GL_RGBA32F:
       return "RGBA32F";
+    case GL_RGBA32UI:
+      return "RGBA32UI";
     case GL_DEPTH_COMPONENT16:
       return "DEPTH_COMPONENT16";
     case GL_DEPTH_COMPONENT24:

@@ -109,6 +109,12 @@
 #define SL_RMSM_GROUP 8  // local_size_x/y of the request and compaction passes
 #define SL_RMSM_IMAGE_REQUESTS 0  // r32ui: the page key each pixel asks for (SL_PAGE_NONE: none)
 #define SL_RMSM_BUFFER_REQUESTS 0  // SSBO: count, then the compacted keys
+// Adaptive shadow maps (asm): the shadow-test pass writes per pixel (mask, served page key,
+// refine key) into an rgba32ui image; the edge pass turns it into one key per pixel in the
+// RMSM request image (SL_RMSM_IMAGE_REQUESTS), compacted by rmsm/compact.comp. A key with
+// SL_ASM_TOUCH_BIT is no request: the pixel used that page (the cache's LRU).
+#define SL_ASM_IMAGE_TESTED 1
+#define SL_ASM_TOUCH_BIT 0x80000000u
 
 // --- Fitted virtual shadow maps (techniques/fvsm, shaders/fvsm; algo/fvsm).
 // Cap of a quantised SMTMM need (log2 texels of the whole virtual map along one axis): a

@@ -23,29 +23,6 @@ gl::ProgramDesc compactProgramDesc() {
   return {"rmsm/compact", {{GL_COMPUTE_SHADER, "rmsm/compact.comp"}}, {}, {}};
 }
 
-/// The largest pool texture side ShadowLab asks for (GL 4.5 guarantees 16384 on llvmpipe).
-constexpr int kMaxPoolSide = 16384;
-
-/// Columns of the pool's page grid: the smallest square holding `pages`.
-int poolColumnsFor(int pages) {
-  int c = 1;
-  while (c * c < pages) ++c;
-  return c;
-}
-
-/// World -> clip of one page: the map's matrix followed by the crop of the page's square of
-/// light uv onto the whole clip square (depth unchanged: the page stores the map's depth).
-glm::mat4 pageViewProj(const glm::mat4& viewProj, const pages::PageId& p,
-                       const pages::VirtualLayout& layout) {
-  const float n = float(layout.pagesPerSide(p.level));
-  glm::mat4 crop(1.0f);
-  crop[0][0] = n;
-  crop[1][1] = n;
-  crop[3][0] = -(2.0f * float(p.x) + 1.0f - n);
-  crop[3][1] = -(2.0f * float(p.y) + 1.0f - n);
-  return crop * viewProj;
-}
-
 }  // namespace
 
 TechniqueInfo RmsmShadowMap::info() {
@@ -187,33 +164,18 @@ RmsmShadowMap::RmsmShadowMap(const gl::ShaderLibrary& lib)
       requestProgram_(lib, requestProgramDesc()),
       compactProgram_(lib, compactProgramDesc()) {}
 
-void RmsmShadowMap::setRequestUniforms(const gl::Program& p) const {
-  p.set("u_rmsmViewProj", view_.lightViewProj);
-  p.set("u_rmsmVirtualResolution", layout_.virtualResolution);
-  p.set("u_rmsmPageSize", layout_.pageSize);
-  p.set("u_rmsmLevels", layout_.levels());
-}
-
 void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   // One lookup "map" per level (rmsm/lookup.glsl): a deeper tree is cut below its root.
   const pages::VirtualLayout layout{ctx.params.getInt("virtual.resolution"),
                                     ctx.params.getInt("page.size"), SL_MAX_DEPTH_MAPS};
   if (const std::string e = layout.validate(); !e.empty()) throw std::runtime_error("rmsm: " + e);
   const int poolPages = ctx.params.getInt("pool.pages");
-  const int columns = poolColumnsFor(poolPages);
-  const int rows = (poolPages + columns - 1) / columns;
-  if (poolPages < layout.topPages())
-    throw std::runtime_error("rmsm: pool.pages = " + std::to_string(poolPages) +
-                             " cannot hold the " + std::to_string(layout.topPages()) +
-                             " pages of the coarsest level (the quadtree is cut at " +
-                             std::to_string(SL_MAX_DEPTH_MAPS) +
-                             " levels); raise pool.pages or page.size");
-  if (columns * layout.pageSize > kMaxPoolSide)
-    throw std::runtime_error("rmsm: a pool of " + std::to_string(poolPages) + " pages of " +
-                             std::to_string(layout.pageSize) + "² is " +
-                             std::to_string(columns * layout.pageSize) +
-                             " texels wide, more than " + std::to_string(kMaxPoolSide) +
-                             "; lower pool.pages or page.size");
+  if (map_.ensure(layout, poolPages, layout.topPages(), "rmsm") || !table_ ||
+      pool_->capacity() != poolPages) {
+    layout_ = layout;
+    table_ = std::make_unique<pages::PageTable>(layout_);
+    pool_ = std::make_unique<pages::PagePool>(poolPages);
+  }
 
   LightFit fit;
   if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
@@ -221,26 +183,6 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
     throw std::runtime_error(*err);
   view_ = depthMapView(fit);
   ctx.addOutline(view_.lightViewProj, OutlineRole::LightMap);
-
-  if (!(layout_.virtualResolution == layout.virtualResolution &&
-        layout_.pageSize == layout.pageSize) ||
-      !table_) {
-    layout_ = layout;
-    table_ = std::make_unique<pages::PageTable>(layout_);
-    const int n = layout_.finestPagesPerSide();
-    pageTable_ = gl::Texture::create2D(GL_R32UI, n, n, layout_.levels());
-  }
-  if (!pool_ || pool_->capacity() != poolPages || poolColumns_ != columns ||
-      poolMap_.width() != columns * layout_.pageSize) {
-    pool_ = std::make_unique<pages::PagePool>(poolPages);
-    poolColumns_ = columns;
-    poolMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, columns * layout_.pageSize,
-                                     rows * layout_.pageSize);
-    poolFbo_ = gl::Framebuffer::create();
-    poolFbo_.attach(GL_DEPTH_ATTACHMENT, poolMap_);
-    poolFbo_.setDrawBuffers(0);
-    poolFbo_.checkComplete("rmsm page pool");
-  }
 
   requestPages(ctx);
   allocate(ctx);
@@ -252,7 +194,7 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "pages.coarsened", last_.allocation.coarsened);
   publishNumber(ctx, "pages.pool", poolPages);
   publishNumber(ctx, "pages.superpages", last_.superpages);
-  publishNumber(ctx, "pages.pool.columns", poolColumns_);
+  publishNumber(ctx, "pages.pool.columns", map_.poolColumns());
   for (int l = 0; l < layout_.levels(); ++l) {
     const std::string key = "pages.table." + std::to_string(l);
     if (ctx.wants(key))
@@ -267,7 +209,7 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
                  pages::requestHeat(layout_, last_.compacted));
   if (ctx.wants("pages.pool.levels"))
     publishValues(ctx, "pages.pool.levels", pages::poolLevels(last_.allocation, poolPages));
-  publishDepth(ctx, "pages.pool.depth", poolMap_);
+  publishDepth(ctx, "pages.pool.depth", map_.poolTexture());
 }
 
 void RmsmShadowMap::requestPages(FrameContext& ctx) {
@@ -280,7 +222,7 @@ void RmsmShadowMap::requestPages(FrameContext& ctx) {
   const GLuint gx = GLuint((w + SL_RMSM_GROUP - 1) / SL_RMSM_GROUP);
   const GLuint gy = GLuint((h + SL_RMSM_GROUP - 1) / SL_RMSM_GROUP);
   requestProgram_.use();
-  setRequestUniforms(requestProgram_);
+  map_.setLayoutUniforms(requestProgram_, view_.lightViewProj);
   glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
   glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      GL_R32UI);
@@ -311,56 +253,22 @@ void RmsmShadowMap::allocate(FrameContext& ctx) {
   last_.allocation = pages::allocatePages(last_.unique, *pool_, *table_);
   last_.superpages = int(pages::binSuperpages(last_.allocation.pages, layout_).size());
 
-  const std::vector<std::uint32_t> entries = table_->finalised();
-  std::size_t at = 0;
-  for (int l = 0; l < layout_.levels(); ++l) {
-    const int n = layout_.pagesPerSide(l);
-    glTextureSubImage2D(pageTable_.id(), l, 0, 0, n, n, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                        entries.data() + at);
-    at += std::size_t(n) * n;
-  }
+  map_.uploadTable(*table_);
 }
 
 void RmsmShadowMap::renderPages(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rmsm pages");
-  beginDepthPass(poolFbo_.id(), poolMap_.width(), poolMap_.height());
-  depthProgram_.use();
-  const int ps = layout_.pageSize;
-  glEnable(GL_SCISSOR_TEST);
-  for (std::size_t i = 0; i < last_.allocation.pages.size(); ++i) {
-    const int slot = last_.allocation.slots[i];
-    const int x = (slot % poolColumns_) * ps, y = (slot / poolColumns_) * ps;
-    glViewport(x, y, ps, ps);
-    glScissor(x, y, ps, ps);
-    depthProgram_.set("u_lightViewProj",
-                      pageViewProj(view_.lightViewProj, last_.allocation.pages[i], layout_));
-    ctx.sceneGpu.draw(depthProgram_, SL_UNIT_MATERIAL);
-  }
-  glDisable(GL_SCISSOR_TEST);
+  map_.renderPages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, last_.allocation.pages,
+                   last_.allocation.slots, true);
 }
 
 void RmsmShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  // Every level is one "map" of the shared bias model with the same light matrix; they
-  // differ in texel size only (shadowMapTexels in rmsm/lookup.glsl).
-  const std::vector<DepthMapView> views(std::size_t(layout_.levels()), view_);
-  bindDepthLookup(resolve, views);
-  setRequestUniforms(resolve);
-  glBindTextureUnit(GLuint(firstUnit), poolMap_.id());
-  resolve.set("u_rmsmPool", firstUnit);
-  glBindTextureUnit(GLuint(firstUnit + 1), pageTable_.id());
-  resolve.set("u_rmsmPageTable", firstUnit + 1);
-  resolve.set("u_rmsmPoolColumns", poolColumns_);
+  map_.bindLookup(resolve, firstUnit, view_);
 }
 
 MemoryStats RmsmShadowMap::memory() const {
   MemoryStats m;
-  if (poolMap_)
-    m.add("page pool", gl::formatName(poolMap_.format()), poolMap_.width(), poolMap_.height(), 1,
-          gl::bytesPerTexel(poolMap_.format()));
-  if (pageTable_)
-    for (int l = 0; l < layout_.levels(); ++l)
-      m.add("page table level " + std::to_string(l), "R32UI", layout_.pagesPerSide(l),
-            layout_.pagesPerSide(l), 1, 4);
+  map_.addMemory(m);
   if (requests_)
     m.add("page requests (per pixel)", "R32UI", requests_.width(), requests_.height(), 1, 4);
   if (requestList_)

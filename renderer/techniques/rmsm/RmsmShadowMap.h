@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "algo/pages/VirtualPages.h"
+#include "PagedMap.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 
@@ -38,26 +39,22 @@ class RmsmShadowMap : public Technique {
   const FrameResult& lastFrame() const { return last_; }
   /// The per-pixel request keys of the last frame (r32ui, camera size) and the page table.
   const gl::Texture& requestImage() const { return requests_; }
-  const gl::Texture& pageTableTexture() const { return pageTable_; }
+  const gl::Texture& pageTableTexture() const { return map_.pageTableTexture(); }
   const pages::PageTable* pageTable() const { return table_.get(); }
   const pages::VirtualLayout& layout() const { return layout_; }
-  int poolColumns() const { return poolColumns_; }
+  int poolColumns() const { return map_.poolColumns(); }
   const glm::mat4& lightViewProj() const { return view_.lightViewProj; }  ///< the virtual map's
 
  private:
   void requestPages(FrameContext& ctx);
   void allocate(FrameContext& ctx);
   void renderPages(FrameContext& ctx);
-  void setRequestUniforms(const gl::Program& p) const;
 
   gl::Program depthProgram_, requestProgram_, compactProgram_;
   pages::VirtualLayout layout_;
   std::unique_ptr<pages::PageTable> table_;
   std::unique_ptr<pages::PagePool> pool_;
-  int poolColumns_ = 1;
-  gl::Texture poolMap_;  ///< DEPTH_COMPONENT32F, poolColumns x rows pages
-  gl::Framebuffer poolFbo_;
-  gl::Texture pageTable_;   ///< R32UI, finest pages per side, one mip level per quadtree level
+  PagedMap map_;            ///< the pool and the page table's textures
   gl::Texture requests_;    ///< R32UI per camera pixel
   gl::Buffer requestList_;  ///< count + one key per pixel
   DepthMapView view_;

@@ -1,0 +1,79 @@
+// Adaptive shadow maps (Fernando, Fernandez, Bala, Greenberg 2001; techniques.md §5, the
+// lecture's construction loop): RMSM's virtual map, page table and pool (PagedMap,
+// algo/pages), fitted to the whole scene so that pages stay valid while the camera moves.
+// A coarse map first (every page of the level asm.coarse.resolution asks for), then up to
+// asm.iterations times: shadow test + edge finding (compute: a pixel on a shadow edge whose
+// page is coarser than its LOD asks for the page at its LOD) → dedup + compaction (RMSM's
+// pass) → read back, sort, unique, allocate in the page cache (algo/asm: LRU eviction) → render
+// the new pages, until no request is left or asm.pages.per.frame new pages were rendered.
+// Pages are kept between frames; a change of the light or the geometry drops them all.
+// Directional only.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "algo/asm/AdaptivePages.h"
+#include "core/ShadowPass.h"
+#include "core/Technique.h"
+#include "techniques/rmsm/PagedMap.h"
+
+namespace sl {
+
+class AsmShadowMap : public Technique {
+ public:
+  static TechniqueInfo info();
+  explicit AsmShadowMap(const gl::ShaderLibrary& lib);
+
+  void renderShadows(FrameContext& ctx) override;
+  std::string lookupShader() const override { return "asm/lookup.glsl"; }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override;
+  std::vector<const gl::Program*> programs() const override {
+    return {&depthProgram_, &testProgram_, &edgesProgram_, &compactProgram_};
+  }
+  MemoryStats memory() const override;
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+
+  /// What the last frame did (tests, publications).
+  struct FrameResult {
+    bool invalidated = false;  ///< the cache was dropped (light, geometry, layout changed)
+    int coarsePages = 0;  ///< pages of the coarse map rendered this frame (0 unless invalidated)
+    std::vector<adaptive::Refinement> iterations;  ///< one per iteration run
+    std::vector<pages::PageKey> compacted;         ///< the last iteration's GPU list
+    std::vector<pages::PageKey> unique;            ///< ... sorted, unique
+    int newPages = 0;                              ///< rendered this frame (coarse map aside)
+  };
+  const FrameResult& lastFrame() const { return last_; }
+  const adaptive::PageCache* cache() const { return cache_.get(); }
+  /// The last iteration's shadow test (rgba32ui: mask, served key, refine key) and its
+  /// per-pixel keys (r32ui), the page table.
+  const gl::Texture& testedImage() const { return tested_; }
+  const gl::Texture& requestImage() const { return requests_; }
+  const gl::Texture& pageTableTexture() const { return map_.pageTableTexture(); }
+  const glm::mat4& lightViewProj() const { return view_.lightViewProj; }
+
+ private:
+  /// One iteration; false when it allocated nothing (the loop stops).
+  bool iterate(FrameContext& ctx, int iteration, int& budget);
+  void findEdges(FrameContext& ctx);
+
+  gl::Program depthProgram_, testProgram_, edgesProgram_, compactProgram_;
+  PagedMap map_;
+  std::unique_ptr<adaptive::PageCache> cache_;
+  /// What the cached pages were rendered for: any change drops them.
+  struct CacheKey {
+    glm::mat4 lightViewProj{0.0f};
+    const Scene* scene = nullptr;
+    std::size_t primitives = 0;
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
+    int virtualResolution = 0, pageSize = 0, poolPages = 0, coarseLevel = 0;
+    bool operator==(const CacheKey&) const = default;
+  } cacheKey_;
+  gl::Texture tested_;      ///< RGBA32UI per camera pixel
+  gl::Texture requests_;    ///< R32UI per camera pixel
+  gl::Buffer requestList_;  ///< count + one key per pixel
+  DepthMapView view_;
+  FrameResult last_;
+};
+
+}  // namespace sl

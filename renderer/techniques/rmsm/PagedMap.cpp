@@ -1,0 +1,135 @@
+// The GL side of a paged virtual shadow map (PagedMap.h).
+#include "PagedMap.h"
+
+#include <stdexcept>
+#include <vector>
+
+#include "common/shared_constants.h"
+#include "core/SceneGpu.h"
+
+namespace sl {
+
+namespace {
+/// The largest pool texture side ShadowLab asks for (GL 4.5 guarantees 16384 on llvmpipe).
+constexpr int kMaxPoolSide = 16384;
+}  // namespace
+
+int poolColumnsFor(int pages) {
+  int c = 1;
+  while (c * c < pages) ++c;
+  return c;
+}
+
+glm::mat4 pageViewProj(const glm::mat4& viewProj, const pages::PageId& p,
+                       const pages::VirtualLayout& layout) {
+  const float n = float(layout.pagesPerSide(p.level));
+  glm::mat4 crop(1.0f);
+  crop[0][0] = n;
+  crop[1][1] = n;
+  crop[3][0] = -(2.0f * float(p.x) + 1.0f - n);
+  crop[3][1] = -(2.0f * float(p.y) + 1.0f - n);
+  return crop * viewProj;
+}
+
+bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int minPages,
+                      const std::string& technique) {
+  const int columns = poolColumnsFor(poolPages);
+  const int rows = (poolPages + columns - 1) / columns;
+  if (poolPages < minPages)
+    throw std::runtime_error(
+        technique + ": pool.pages = " + std::to_string(poolPages) + " cannot hold the " +
+        std::to_string(minPages) + " pages of the coarsest level (the quadtree is cut at " +
+        std::to_string(SL_MAX_DEPTH_MAPS) + " levels); raise pool.pages or page.size");
+  if (columns * layout.pageSize > kMaxPoolSide)
+    throw std::runtime_error(technique + ": a pool of " + std::to_string(poolPages) + " pages of " +
+                             std::to_string(layout.pageSize) + "² is " +
+                             std::to_string(columns * layout.pageSize) +
+                             " texels wide, more than " + std::to_string(kMaxPoolSide) +
+                             "; lower pool.pages or page.size");
+  bool changed = false;
+  if (!pageTable_ || layout_.virtualResolution != layout.virtualResolution ||
+      layout_.pageSize != layout.pageSize) {
+    layout_ = layout;
+    const int n = layout_.finestPagesPerSide();
+    pageTable_ = gl::Texture::create2D(GL_R32UI, n, n, layout_.levels());
+    changed = true;
+  }
+  if (!poolMap_ || poolPages_ != poolPages || poolMap_.width() != columns * layout_.pageSize) {
+    poolPages_ = poolPages;
+    poolColumns_ = columns;
+    poolMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, columns * layout_.pageSize,
+                                     rows * layout_.pageSize);
+    poolFbo_ = gl::Framebuffer::create();
+    poolFbo_.attach(GL_DEPTH_ATTACHMENT, poolMap_);
+    poolFbo_.setDrawBuffers(0);
+    poolFbo_.checkComplete(technique + " page pool");
+    changed = true;
+  }
+  return changed;
+}
+
+void PagedMap::uploadTable(const pages::PageTable& table) {
+  const std::vector<std::uint32_t> entries = table.finalised();
+  std::size_t at = 0;
+  for (int l = 0; l < layout_.levels(); ++l) {
+    const int n = layout_.pagesPerSide(l);
+    glTextureSubImage2D(pageTable_.id(), l, 0, 0, n, n, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                        entries.data() + at);
+    at += std::size_t(n) * n;
+  }
+}
+
+void PagedMap::renderPages(const gl::Program& depth, const SceneGpu& scene,
+                           const glm::mat4& viewProj, std::span<const pages::PageId> pageIds,
+                           std::span<const int> slots, bool clearPool) {
+  // The whole pool cleared (rmsm renders every page every frame) or only the pages rendered
+  // (asm keeps the others: they are its cache).
+  beginDepthPass(poolFbo_.id(), poolMap_.width(), poolMap_.height(), clearPool);
+  depth.use();
+  const int ps = layout_.pageSize;
+  glEnable(GL_SCISSOR_TEST);
+  for (std::size_t i = 0; i < pageIds.size(); ++i) {
+    const int x = (slots[i] % poolColumns_) * ps, y = (slots[i] / poolColumns_) * ps;
+    glViewport(x, y, ps, ps);
+    glScissor(x, y, ps, ps);
+    if (!clearPool) {
+      const float one = 1.0f;  // a reused slot must not keep its old page's depth
+      glClearNamedFramebufferfv(poolFbo_.id(), GL_DEPTH, 0, &one);
+    }
+    depth.set("u_lightViewProj", pageViewProj(viewProj, pageIds[i], layout_));
+    scene.draw(depth, SL_UNIT_MATERIAL);
+  }
+  glDisable(GL_SCISSOR_TEST);
+}
+
+void PagedMap::setLayoutUniforms(const gl::Program& p, const glm::mat4& viewProj) const {
+  p.set("u_rmsmViewProj", viewProj);
+  p.set("u_rmsmVirtualResolution", layout_.virtualResolution);
+  p.set("u_rmsmPageSize", layout_.pageSize);
+  p.set("u_rmsmLevels", layout_.levels());
+}
+
+void PagedMap::bindLookup(const gl::Program& p, int firstUnit, const DepthMapView& view) const {
+  // Every level is one "map" of the shared bias model with the same light matrix; they
+  // differ in texel size only (shadowMapTexels in rmsm/page_fetch.glsl).
+  const std::vector<DepthMapView> views(std::size_t(layout_.levels()), view);
+  bindDepthLookup(p, views);
+  setLayoutUniforms(p, view.lightViewProj);
+  glBindTextureUnit(GLuint(firstUnit), poolMap_.id());
+  p.set("u_rmsmPool", firstUnit);
+  glBindTextureUnit(GLuint(firstUnit + 1), pageTable_.id());
+  p.set("u_rmsmPageTable", firstUnit + 1);
+  p.set("u_rmsmPoolColumns", poolColumns_);
+}
+
+void PagedMap::addMemory(MemoryStats& m) const {
+  if (poolMap_)
+    m.add("page pool", gl::formatName(poolMap_.format()), poolMap_.width(), poolMap_.height(), 1,
+          gl::bytesPerTexel(poolMap_.format()));
+  if (pageTable_)
+    for (int l = 0; l < layout_.levels(); ++l)
+      m.add("page table level " + std::to_string(l), "R32UI", layout_.pagesPerSide(l),
+            layout_.pagesPerSide(l), 1, 4);
+}
+
+}  // namespace sl

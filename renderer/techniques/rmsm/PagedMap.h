@@ -1,0 +1,65 @@
+// The GL side of a paged virtual shadow map, shared by `rmsm` (Lefohn et al. 2007) and `asm`
+// (Fernando et al. 2001): the physical pool (one depth texture, pages side by side) with its
+// framebuffer, the page table's mip chain (R32UI, one level per quadtree level), rendering
+// pages into their pool slots and binding both for the paged lookup (rmsm/page_fetch.glsl).
+// The CPU side (layout, page table, pool allocator) is algo/pages.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "algo/pages/VirtualPages.h"
+#include "core/ShadowPass.h"
+#include "core/Technique.h"
+
+namespace sl {
+
+class SceneGpu;
+
+/// Columns of a pool's page grid: the smallest square holding `pages`.
+int poolColumnsFor(int pages);
+
+class PagedMap {
+ public:
+  /// (Re)creates the textures for `layout` and a pool of `poolPages` when either changed;
+  /// true when it did (the CPU side starts over too). Throws std::runtime_error, prefixed with
+  /// `technique`, for a pool smaller than `minPages` (what the technique must always hold) or
+  /// wider than the largest texture ShadowLab asks for.
+  bool ensure(const pages::VirtualLayout& layout, int poolPages, int minPages,
+              const std::string& technique);
+  const pages::VirtualLayout& layout() const { return layout_; }
+  int poolColumns() const { return poolColumns_; }
+  const gl::Texture& poolTexture() const { return poolMap_; }
+  const gl::Texture& pageTableTexture() const { return pageTable_; }
+
+  /// Uploads the CPU page table's finalised mip chain.
+  void uploadTable(const pages::PageTable& table);
+  /// One depth pass per page into its slot: `viewProj` cropped to the page (pageViewProj);
+  /// the whole pool cleared first, or (clearPool false: the other slots are a cache) each
+  /// rendered slot only.
+  void renderPages(const gl::Program& depth, const SceneGpu& scene, const glm::mat4& viewProj,
+                   std::span<const pages::PageId> pageIds, std::span<const int> slots,
+                   bool clearPool);
+  /// The layout's uniforms of rmsm/request.glsl.
+  void setLayoutUniforms(const gl::Program& p, const glm::mat4& viewProj) const;
+  /// The paged lookup's bindings: every level a map of the shared bias model with `view`'s
+  /// matrix, the pool at unit firstUnit, the page table at firstUnit + 1.
+  void bindLookup(const gl::Program& p, int firstUnit, const DepthMapView& view) const;
+  /// The pool's and the page table's bytes.
+  void addMemory(MemoryStats& m) const;
+
+ private:
+  pages::VirtualLayout layout_;
+  int poolPages_ = 0;
+  int poolColumns_ = 1;
+  gl::Texture poolMap_;  ///< DEPTH_COMPONENT32F, poolColumns x rows pages
+  gl::Framebuffer poolFbo_;
+  gl::Texture pageTable_;  ///< R32UI, finest pages per side, one mip level per quadtree level
+};
+
+/// World -> clip of one page: the map's matrix followed by the crop of the page's square of
+/// light uv onto the whole clip square (depth unchanged: the page stores the map's depth).
+glm::mat4 pageViewProj(const glm::mat4& viewProj, const pages::PageId& p,
+                       const pages::VirtualLayout& layout);
+
+}  // namespace sl

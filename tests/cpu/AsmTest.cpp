@@ -1,0 +1,173 @@
+// algo/asm (adaptive shadow maps, Fernando et al. 2001): the refine key, edge finding on a
+// hand-made shadow image, the page cache's coarse map, refinement iterations that stop,
+// budget, cache hits, least-recently-used eviction and invalidation. Exact expectations.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "algo/asm/AdaptivePages.h"
+#include "algo/pages/PageRequests.h"
+
+namespace sl::adaptive {
+namespace {
+
+using pages::kNoPage;
+using pages::packPage;
+
+// 1024² virtual texels in 128² pages: 8, 4, 2, 1 pages per side on levels 0..3.
+const pages::VirtualLayout kSmall{.virtualResolution = 1024, .pageSize = 128};
+
+TEST(AsmRefineKey, OnlyWhenTheServingPageIsCoarserThanTheLod) {
+  // st (0.3, 0.6) at level 1 (4 pages a side): page (1, 2).
+  EXPECT_EQ(refineKey({0.3f, 0.6f}, 1, 3, kSmall), packPage({1, 1, 2}));
+  EXPECT_EQ(refineKey({0.3f, 0.6f}, 0, 1, kSmall), packPage({0, 2, 4}));
+  EXPECT_EQ(refineKey({0.3f, 0.6f}, 1, 1, kSmall), kNoPage);  // fine enough already
+  EXPECT_EQ(refineKey({0.3f, 0.6f}, 2, 1, kSmall), kNoPage);
+  EXPECT_EQ(refineKey({1.5f, 0.6f}, 0, 3, kSmall), kNoPage);  // outside the map
+}
+
+// A 4 x 3 image (row 0 at the bottom): lit on the left, shadowed on the right, one empty
+// pixel. Edge pixels are those with a covered 4-neighbour of the other mask.
+TEST(AsmEdges, HandMadeShadowImage) {
+  constexpr std::uint32_t L = SL_MASK_LIT, S = SL_MASK_SHADOWED, E = SL_MASK_EMPTY;
+  const std::uint32_t masks[12] = {L, L, S, S,   // y = 0
+                                   L, L, S, E,   // y = 1
+                                   L, L, L, S};  // y = 2
+  std::vector<TestedPixel> px(12);
+  for (int i = 0; i < 12; ++i) {
+    px[std::size_t(i)].mask = masks[i];
+    if (masks[i] != E) {
+      px[std::size_t(i)].served = packPage({3, 0, 0});
+      px[std::size_t(i)].refine = packPage({0, i % 4, i / 4});
+    }
+  }
+  px[1].refine = kNoPage;  // an edge pixel whose page is fine enough: touches instead
+  const std::vector<PageKey> k = findEdges(px, 4, 3);
+  const PageKey touch = packPage({3, 0, 0}) | kTouchBit;
+  const std::vector<PageKey> want = {touch,
+                                     touch,
+                                     packPage({0, 2, 0}),
+                                     touch,  // y = 0
+                                     touch,
+                                     packPage({0, 1, 1}),
+                                     packPage({0, 2, 1}),
+                                     kNoPage,  // y = 1
+                                     touch,
+                                     touch,
+                                     packPage({0, 2, 2}),
+                                     packPage({0, 3, 2})};  // y = 2
+  EXPECT_EQ(k, want);
+  // (1, 0): lit with a shadowed right neighbour, but no refine key -> touch. (3, 0): shadowed,
+  // neighbours (2, 0) shadowed, (3, 1) empty -> no edge. (2, 2) lit above shadowed (2, 1).
+  EXPECT_THROW(findEdges(px, 4, 4), std::invalid_argument);
+}
+
+// A uniform image has no edge: only touches.
+TEST(AsmEdges, NoEdgeNoRequest) {
+  std::vector<TestedPixel> px(
+      6, TestedPixel{SL_MASK_SHADOWED, packPage({2, 1, 1}), packPage({0, 0, 0})});
+  for (PageKey k : findEdges(px, 3, 2)) EXPECT_EQ(k, packPage({2, 1, 1}) | kTouchBit);
+}
+
+TEST(AsmCache, CoarseMapFirstAndBadArguments) {
+  EXPECT_THROW(PageCache(kSmall, 3, 2), std::invalid_argument);  // 4 coarse pages
+  EXPECT_THROW(PageCache(kSmall, 8, 4), std::invalid_argument);  // no level 4
+  try {
+    PageCache(kSmall, 3, 2);
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "asm: pool.pages = 3 cannot hold the 4 pages of the coarse map; raise "
+                 "pool.pages or lower asm.coarse.resolution");
+  }
+  PageCache c(kSmall, 8, 2);
+  std::vector<int> slots;
+  const std::vector<PageId> coarse = c.invalidate(slots);
+  EXPECT_EQ(coarse, (std::vector<PageId>{{2, 0, 0}, {2, 1, 0}, {2, 0, 1}, {2, 1, 1}}));
+  EXPECT_EQ(slots, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(c.pool().usedCount(), 4);
+  EXPECT_EQ(c.table().resolve({0, 5, 6}).page, (PageId{2, 1, 1}));
+  EXPECT_EQ(c.invalidations(), 1);
+}
+
+// Iterations: requests allocate, coarsest first; the same keys again allocate nothing (the loop
+// stops); touches count hits in a later frame; the budget defers the rest.
+TEST(AsmCache, RefineStopsAndCountsHits) {
+  PageCache c(kSmall, 8, 2);
+  std::vector<int> slots;
+  c.invalidate(slots);
+  c.beginFrame();
+  const std::vector<PageKey> keys = pages::sortUnique(std::vector<PageKey>{
+      packPage({0, 1, 1}), packPage({1, 3, 3}), packPage({2, 0, 0}) | kTouchBit});
+  Refinement r = c.refine(keys, 10);
+  EXPECT_EQ(r.requests, 2);
+  EXPECT_EQ(r.allocated, (std::vector<PageId>{{1, 3, 3}, {0, 1, 1}}));  // coarsest first
+  EXPECT_EQ(r.slots, (std::vector<int>{4, 5}));
+  EXPECT_EQ(r.hits, 1);  // the coarse page (2, 0, 0) was allocated in frame 0
+  EXPECT_EQ(c.table().resolve({0, 1, 1}).slot, 5);
+  // Iteration 2 of the same frame: the pages are there, nothing new -> the loop stops.
+  r = c.refine(keys, 10);
+  EXPECT_TRUE(r.allocated.empty());
+  EXPECT_EQ(r.alreadyCached, 2);
+  EXPECT_EQ(r.hits, 0);  // allocated or touched in this frame already
+  // Next frame: the cached pages are hits.
+  c.beginFrame();
+  r = c.refine(
+      std::vector<PageKey>{packPage({0, 1, 1}) | kTouchBit, packPage({1, 3, 3}) | kTouchBit}, 10);
+  EXPECT_EQ(r.hits, 2);
+  EXPECT_EQ(c.lastUsed(5), 2);
+  EXPECT_EQ(c.allocatedIn(5), 1);
+  // Budget: 3 requests, 1 allowed.
+  r = c.refine(pages::sortUnique(std::vector<PageKey>{packPage({0, 4, 4}), packPage({0, 5, 4}),
+                                                      packPage({0, 6, 4})}),
+               1);
+  EXPECT_EQ(r.allocated, (std::vector<PageId>{{0, 4, 4}}));
+  EXPECT_EQ(r.deferred, 2);
+}
+
+// A full pool evicts the least recently used page not used this frame (never the coarse map),
+// lowest slot among equals; when every page was used this frame the request is refused.
+TEST(AsmCache, EvictsLeastRecentlyUsedAndRefusesWhenAllInUse) {
+  PageCache c(kSmall, 6, 2);  // 4 coarse + 2 pages
+  std::vector<int> slots;
+  c.invalidate(slots);
+  c.beginFrame();                                          // frame 1
+  c.refine(std::vector<PageKey>{packPage({0, 0, 0})}, 8);  // slot 4
+  c.beginFrame();                                          // frame 2
+  c.refine(std::vector<PageKey>{packPage({0, 7, 7})}, 8);  // slot 5
+  c.beginFrame();                                          // frame 3
+  Refinement r = c.refine(std::vector<PageKey>{packPage({1, 2, 2})}, 8);
+  EXPECT_EQ(r.evicted, 1);
+  EXPECT_EQ(c.evictedThisFrame(), (std::vector<PageId>{{0, 0, 0}}));  // used in frame 1
+  EXPECT_EQ(r.slots, (std::vector<int>{4}));
+  EXPECT_EQ(c.table().slot({0, 0, 0}), -1);
+  EXPECT_EQ(c.table().resolve({0, 0, 0}).page, (PageId{2, 0, 0}));  // falls back to coarse
+  // Slot 5 touched this frame: a new request finds nothing to evict.
+  r = c.refine(
+      pages::sortUnique(std::vector<PageKey>{packPage({0, 7, 7}) | kTouchBit, packPage({0, 3, 3})}),
+      8);
+  EXPECT_EQ(r.refused, 1);
+  EXPECT_TRUE(r.allocated.empty());
+  EXPECT_EQ(c.pool().usedCount(), 6);
+  EXPECT_THROW(c.refine(std::vector<PageKey>{packPage({0, 8, 0})}, 8), std::invalid_argument);
+}
+
+// Invalidation (the light or the geometry moved): every page dropped, the coarse map again.
+TEST(AsmCache, InvalidateDropsEveryPage) {
+  PageCache c(kSmall, 8, 2);
+  std::vector<int> slots;
+  c.invalidate(slots);
+  c.beginFrame();
+  c.refine(std::vector<PageKey>{packPage({0, 2, 2}), packPage({1, 0, 1})}, 8);
+  EXPECT_EQ(c.pool().usedCount(), 6);
+  c.beginFrame();
+  const std::vector<PageId> again = c.invalidate(slots);
+  EXPECT_EQ(again.size(), 4u);
+  EXPECT_EQ(c.pool().usedCount(), 4);
+  EXPECT_EQ(c.table().slot({0, 2, 2}), -1);
+  EXPECT_EQ(c.table().resolve({0, 2, 2}).page, (PageId{2, 0, 0}));
+  EXPECT_EQ(c.invalidations(), 2);
+  EXPECT_EQ(c.lastUsed(5), -1);
+}
+
+}  // namespace
+}  // namespace sl::adaptive

@@ -1,0 +1,224 @@
+// The `asm` technique (adaptive shadow maps, Fernando et al. 2001): GPU-vs-CPU parity of the
+// edge-finding pass and its dedup + compaction (algo/asm and algo/pages are the reference),
+// the shadow test pass agreeing with the resolve once the quadtree converged, the page cache
+// (camera moves keep pages, a light change drops them and no stale page is used), exact
+// memory, declared passes == timed passes, bad parameters.
+#include <algorithm>
+#include <cstdio>
+
+#include "GlTestEnv.h"
+#include "algo/asm/AdaptivePages.h"
+#include "algo/pages/PageRequests.h"
+#include "common/shared_constants.h"
+#include "core/Technique.h"
+#include "gl/Gl.h"
+#include "techniques/asm/AsmShadowMap.h"
+
+namespace sl {
+namespace {
+
+AsmShadowMap* g_probe = nullptr;
+
+std::unique_ptr<Renderer> makeProbe(const std::string& scene) {
+  test::eglContext().makeCurrent();
+  RendererOptions o;
+  TechniqueEntry e{AsmShadowMap::info(), [](const gl::ShaderLibrary& lib) {
+                     auto t = std::make_unique<AsmShadowMap>(lib);
+                     g_probe = t.get();
+                     return std::unique_ptr<Technique>(std::move(t));
+                   }};
+  e.info.id = "asm-probe";
+  o.extraTechniques.push_back(std::move(e));
+  auto r = std::make_unique<Renderer>(o);
+  auto s = test::loadBuiltin(scene);
+  if (!s) return nullptr;
+  r->setScene(s);
+  r->setCamera(s->cameras.empty() ? s->defaultCamera() : s->cameras.front().camera);
+  EXPECT_FALSE(r->setTechnique("asm-probe"));
+  return r;
+}
+
+std::vector<std::uint32_t> readUint(const gl::Texture& t, GLenum format, int channels) {
+  std::vector<std::uint32_t> out(std::size_t(t.width()) * t.height() * channels);
+  glGetTextureImage(t.id(), 0, format, GL_UNSIGNED_INT, GLsizei(out.size() * 4), out.data());
+  return out;
+}
+
+std::vector<adaptive::TestedPixel> readTested(const AsmShadowMap& t) {
+  const std::vector<std::uint32_t> raw = readUint(t.testedImage(), GL_RGBA_INTEGER, 4);
+  std::vector<adaptive::TestedPixel> px(raw.size() / 4);
+  for (std::size_t i = 0; i < px.size(); ++i) px[i] = {raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]};
+  return px;
+}
+
+// One iteration from the coarse map: the GPU's per-pixel keys are findEdges of the GPU's own
+// shadow test (exact), its compacted list is dedup + compaction of those keys (exact, order
+// aside), every served page is allocated and every refine key lies below its served page.
+TEST(Asm, EdgeFindingMatchesTheCpuReference) {
+  auto r = makeProbe("plane-box");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("virtual.resolution", 16384));
+  ASSERT_FALSE(r->params().set("asm.iterations", 1));
+  const int w = 160, h = 90;
+  ASSERT_FALSE(r->renderFrame(w, h, 0));
+  ASSERT_TRUE(g_probe);
+  const AsmShadowMap& t = *g_probe;
+  const std::vector<adaptive::TestedPixel> tested = readTested(t);
+  const std::vector<pages::PageKey> cpu = adaptive::findEdges(tested, w, h);
+  const std::vector<std::uint32_t> gpu = readUint(t.requestImage(), GL_RED_INTEGER, 1);
+  EXPECT_EQ(gpu, cpu);
+  int covered = 0, lit = 0, edgeRequests = 0;
+  for (std::size_t i = 0; i < tested.size(); ++i) {
+    const adaptive::TestedPixel& p = tested[i];
+    if (p.mask == SL_MASK_EMPTY) continue;
+    ++covered;
+    lit += p.mask == SL_MASK_LIT;
+    ASSERT_NE(p.served, pages::kNoPage);
+    const pages::PageId served = pages::unpackPage(p.served);
+    EXPECT_GE(t.cache()->table().slot(served), 0) << "served page not allocated";
+    if (p.refine != pages::kNoPage) {
+      EXPECT_LT(pages::unpackPage(p.refine).level, served.level);
+    }
+    edgeRequests += cpu[i] != pages::kNoPage && (cpu[i] & adaptive::kTouchBit) == 0;
+  }
+  std::printf("%d covered, %d lit, %d edge requests from the coarse map\n", covered, lit,
+              edgeRequests);
+  EXPECT_GT(lit, covered / 4);
+  EXPECT_LT(lit, covered);
+  EXPECT_GT(edgeRequests, 10);
+
+  std::vector<pages::PageKey> cpuCompact = pages::compactRequests(pages::dedupRequests(gpu, w, h));
+  std::vector<pages::PageKey> gpuCompact = t.lastFrame().compacted;
+  std::sort(cpuCompact.begin(), cpuCompact.end());
+  std::sort(gpuCompact.begin(), gpuCompact.end());
+  EXPECT_EQ(gpuCompact, cpuCompact);
+  ASSERT_EQ(t.lastFrame().iterations.size(), 1u);
+  EXPECT_GT(t.lastFrame().iterations[0].allocated.size(), 0u);
+  test::expectNoGlErrors(*r);
+}
+
+// Frames until the cache stops growing: then the last iteration's shadow test saw the final
+// quadtree, and its mask is the resolve's hard mask (the same lookup in compute).
+TEST(Asm, ConvergesAndTheShadowTestIsTheResolves) {
+  auto r = makeProbe("plane-box");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("virtual.resolution", 16384));
+  ASSERT_FALSE(r->params().set("asm.pages.per.frame", 32));
+  const int w = 160, h = 90;
+  r->requestPublications({"asm.*"});
+  int frames = 0;
+  for (; frames < 12; ++frames) {
+    ASSERT_FALSE(r->renderFrame(w, h, 0));
+    if (r->publication().numbers.at("asm.new") == 0.0) break;
+  }
+  std::printf("converged after %d frames, %.0f pages held\n", frames + 1,
+              r->publication().numbers.at("asm.cached"));
+  ASSERT_LT(frames, 12);
+  EXPECT_GT(frames, 0) << "the per-frame budget spreads refinement over frames";
+  EXPECT_EQ(r->publication().numbers.at("asm.invalidations"), 1.0);
+  const std::vector<adaptive::TestedPixel> tested = readTested(*g_probe);
+  const FrameReadback fr = r->readback();
+  int differ = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      differ += tested[std::size_t(y) * w + x].mask != fr.hardMask[std::size_t(h - 1 - y) * w + x];
+  EXPECT_EQ(differ, 0);
+  test::expectNoGlErrors(*r);
+}
+
+// A camera move keeps every page (cache hits, no invalidation); a light move drops them, and
+// the frame after it is pixel for pixel a fresh renderer's under that light (no stale page).
+TEST(Asm, CacheSurvivesTheCameraNotTheLight) {
+  auto r = test::makeRenderer("plane-box", "asm");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("virtual.resolution", 16384));
+  r->requestPublications({"asm.*"});
+  const int w = 128, h = 72;
+  for (int f = 0; f < 3; ++f) ASSERT_FALSE(r->renderFrame(w, h, 0));
+  Camera cam = r->camera();
+  cam.position += glm::vec3(0.3f, 0.0f, 0.2f);
+  r->setCamera(cam);
+  ASSERT_FALSE(r->renderFrame(w, h, 0));
+  const Publication& pub = r->publication();
+  EXPECT_EQ(pub.numbers.at("asm.invalidations"), 1.0);
+  EXPECT_GT(pub.numbers.at("asm.hits"), 0.0);
+
+  Light light = r->light();
+  light.azimuthDeg += 20.0f;
+  r->setLight(light);
+  ASSERT_FALSE(r->renderFrame(w, h, 0));
+  EXPECT_EQ(r->publication().numbers.at("asm.invalidations"), 2.0);
+  EXPECT_EQ(r->publication().numbers.at("asm.hits"), 0.0);
+  const std::vector<std::uint8_t> after = r->readback().hardMask;
+
+  auto fresh = test::makeRenderer("plane-box", "asm");
+  ASSERT_TRUE(fresh);
+  ASSERT_FALSE(fresh->params().set("virtual.resolution", 16384));
+  fresh->setCamera(cam);
+  fresh->setLight(light);
+  ASSERT_FALSE(fresh->renderFrame(w, h, 0));
+  EXPECT_EQ(after, fresh->readback().hardMask);
+  test::expectNoGlErrors(*r);
+}
+
+// memory() lists every byte: the pool, the page table's levels, the shadow test, the request
+// image and list.
+TEST(Asm, MemoryIsExact) {
+  auto r = test::makeRenderer("diagonal", "uniform");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->renderFrame(160, 90, 0));
+  const std::uint64_t before = gl::allocatedBytes() - r->stats().memory.bytes();
+  ASSERT_FALSE(r->setTechnique("asm"));
+  for (auto [pool, page, virt, coarse] :
+       {std::tuple{256, 128, 16384, 128}, {10, 64, 2048, 128}, {4, 256, 4096, 512}}) {
+    SCOPED_TRACE(pool);
+    ASSERT_FALSE(r->params().set("pool.pages", pool));
+    ASSERT_FALSE(r->params().set("page.size", page));
+    ASSERT_FALSE(r->params().set("virtual.resolution", virt));
+    ASSERT_FALSE(r->params().set("asm.coarse.resolution", coarse));
+    ASSERT_FALSE(r->renderFrame(160, 90, 0));
+    const MemoryStats& m = r->stats().memory;
+    EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
+    int columns = 1;
+    while (columns * columns < pool) ++columns;
+    const std::uint64_t rows = std::uint64_t((pool + columns - 1) / columns);
+    std::uint64_t table = 0;
+    for (int n = virt / page; n >= 1; n /= 2) table += 4ull * std::uint64_t(n) * std::uint64_t(n);
+    EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(columns * page) * rows * std::uint64_t(page) + table +
+                             16ull * 160 * 90 + 4ull * 160 * 90 + 4ull * (1 + 160 * 90));
+  }
+  test::expectNoGlErrors(*r);
+}
+
+// Every declared pass is timed, in declaration order (iterations not run are empty passes);
+// bad parameters name themselves.
+TEST(Asm, DeclaredPassesAndBadParameters) {
+  auto r = test::makeRenderer("plane-box", "asm");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("asm.iterations", 2));
+  ASSERT_FALSE(r->renderFrame(96, 64, 0));
+  std::vector<std::string> timed, declared;
+  for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
+  for (const PassDecl& d : framePassDecls(AsmShadowMap::info())) declared.push_back(d.id);
+  if (r->stats().timingFramesLate == 0) {
+    EXPECT_EQ(timed, declared);
+  }
+  ASSERT_FALSE(r->params().set("asm.coarse.resolution", 1000));
+  auto err = r->renderFrame(96, 64, 0);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("asm.coarse.resolution = 1000 must be a power of two from 512"),
+            std::string::npos)
+      << *err;
+  ASSERT_FALSE(r->params().set("asm.coarse.resolution", 4096));  // 32 x 32 pages
+  ASSERT_FALSE(r->params().set("pool.pages", 1000));
+  err = r->renderFrame(96, 64, 0);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("pool.pages = 1000 cannot hold the 1024 pages of the coarse map"),
+            std::string::npos)
+      << *err;
+  ASSERT_FALSE(r->params().set("pool.pages", 1100));
+  EXPECT_FALSE(r->renderFrame(96, 64, 0));
+}
+
+}  // namespace
+}  // namespace sl

@@ -222,6 +222,46 @@ SceneBuilder makeDiagonal() {
 }
 
 // ----------------------------------------------------------------------------------------
+// thin-pole: a 6 mm pole on a 6 x 6 m ground. Seen from the light it is a line narrower than a
+// texel of adaptive shadow maps' coarse map over the scene (asm.coarse.resolution 512: 1.6 cm;
+// the pole spans texels 255.75 to 256.25 across, between two texel centres): the coarse map
+// does not hold it, has no shadow edge there, and ASM never refines it (Fernando et al. 2001's
+// missed fine shadow); at 2048 it covers two centres. RMSM asks for pages by footprint.
+constexpr float kThinPoleSunAzimuthDeg = 30.0f, kThinPoleSunElevationDeg = 55.0f;
+constexpr float kThinPoleHalfWidthM = 0.003f, kThinPoleHeightM = 1.5f;
+constexpr float kThinPoleXM = 0.0f;
+
+SceneBuilder makeThinPole() {
+  SceneBuilder b("thin-pole");
+  int ground = b.addMaterial("ground", {0.80f, 0.80f, 0.78f, 1.0f});
+  int pole = b.addMaterial("pole", {0.30f, 0.32f, 0.36f, 1.0f});
+  b.addNode("ground", b.addMesh("ground", groundQuad(-3.0f, 3.0f, -3.0f, 3.0f), ground));
+  MeshData m;
+  m.addBox({kThinPoleXM, 0.5f * kThinPoleHeightM, 0.0f},
+           {kThinPoleHalfWidthM, 0.5f * kThinPoleHeightM, kThinPoleHalfWidthM});
+  b.addNode("pole", b.addMesh("pole", m, pole));
+  b.addSun(kThinPoleSunAzimuthDeg, kThinPoleSunElevationDeg);
+  // The cameras look along the shadow, away from the sun, with the pole behind them: only the
+  // shadow is in view (the pole's own lit and unlit sides would be shadow edges ASM refines,
+  // and in the light's view they lie exactly over the shadow).
+  const glm::vec3 l = towardsLightFromAngles(kThinPoleSunAzimuthDeg, kThinPoleSunElevationDeg);
+  const float length = kThinPoleHeightM * std::sqrt(l.x * l.x + l.z * l.z) / l.y;
+  const glm::vec3 along = -glm::normalize(glm::vec3(l.x, 0.0f, l.z));
+  const glm::vec3 foot(kThinPoleXM, 0.0f, 0.0f);
+  const glm::vec3 tip = foot + length * along;
+  b.addCamera("shadow", foot + 0.2f * along + glm::vec3(0.0f, 0.6f, 0.0f), tip, 45.0f, 0.05f,
+              30.0f);
+  std::vector<CameraKeyframe> keys;
+  for (int k = 0; k <= 10; ++k) {
+    const float u = float(k) / 10.0f;  // from above the foot back to 0.5 m along, rising
+    keys.push_back(
+        {float(k), foot + (0.2f + 0.3f * u) * along + glm::vec3(0.0f, 0.6f + 0.3f * u, 0.0f), tip});
+  }
+  addPath(b, "orbit", 45.0f, 0.05f, 30.0f, keys);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
 // corridor: occluders log-spaced from 0.1 m to 1 km along a 1 km receiver.
 constexpr float kCorridorSunAzimuthDeg = 30.0f, kCorridorSunElevationDeg = 50.0f;
 
@@ -480,7 +520,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr,
                    "usage: %s [--scenes DIR] [--fixtures DIR] [--preview DIR]\n"
                    "  --scenes DIR    write the built-in scenes (plane-box, diagonal, corridor, "
-                   "default, dueling, spot-box, point-box, omni-room, spot-yard) as "
+                   "default, dueling, spot-box, point-box, omni-room, spot-yard, thin-pole) as "
                    "DIR/<name>.gltf\n"
                    "  --fixtures DIR  write the loader's test fixtures into DIR\n"
                    "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n",
@@ -507,6 +547,7 @@ int main(int argc, char** argv) {
                               previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeOmniRoom(), "omni-room", scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeSpotYard(), "spot-yard", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeThinPole(), "thin-pole", scenesDir, previewDir);
   }
   if (!fixturesDir.empty()) {
     fs::create_directories(fixturesDir);

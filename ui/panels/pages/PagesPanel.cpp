@@ -204,7 +204,9 @@ void PagesPanel::redraw() {
 }
 
 void PagesPanel::highlightPass(const QString& passId) {
-  view_->setHighlighted(passId.startsWith(QLatin1String("rmsm")));
+  // RMSM's passes and ASM's (its coarse map and iterations render into the same pool).
+  view_->setHighlighted(passId.startsWith(QLatin1String("rmsm")) ||
+                        passId.startsWith(QLatin1String("asm ")));
 }
 
 QJsonObject PagesPanel::drawnValues() const {

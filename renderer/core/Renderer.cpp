@@ -829,6 +829,9 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     if (countChange && hadFrame) {
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
       maskChange = countMaskChange(s, t);
+      if (publishing && (s.publication.wants("mask.changed_pixels") ||
+                         s.publication.wants("mask.compared_pixels")))
+        s.publication.readbackBytes += 2 * sizeof(std::uint32_t);  // the two counters
       if (publishing) {
         if (s.publication.wants("mask.changed_pixels"))
           s.publication.numbers["mask.changed_pixels"] = double(maskChange->changed);

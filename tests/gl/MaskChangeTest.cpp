@@ -89,6 +89,7 @@ TEST(MaskChange, NotCountedWithoutTheOverlayOrARequest) {
   ASSERT_TRUE(r->stats().maskChange);
   EXPECT_EQ(r->publication().numbers.at("mask.changed_pixels"), 0.0);
   EXPECT_GT(r->publication().numbers.at("mask.compared_pixels"), 1000.0);
+  EXPECT_EQ(r->stats().publicationBytes, 8u);  // the two counters, never a mask
   EXPECT_EQ(declaredPublicationBytes(*Renderer::findTechnique("uniform"), r->params(),
                                      {"mask.changed_pixels"}),
             8u);

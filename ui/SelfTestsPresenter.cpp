@@ -248,8 +248,9 @@ bool SelfTests::splitParams(const QString& dir) {
   ViewportWidget* v = w_.viewport_;
   sl::Renderer* main = v->renderer();
   const std::string other = "rtw-backward";
-  if (auto e = v->setSplitTechnique(other)) {
-    check(false, QString::fromStdString(*e));
+  w_.teaching_->setSplitTechnique(QString::fromStdString(other));  // as "Compare with" does
+  if (v->splitTechnique() != other) {
+    check(false, tr("the split view shows %1").arg(QString::fromStdString(other)));
     return false;
   }
   w_.paramDock_->show();

@@ -41,14 +41,19 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       QStringLiteral("Open a session saved with File > Save session… (the same as --lesson "
                      "FILE: a session is a lesson)."),
       QStringLiteral("FILE"));
+  const QCommandLineOption presenter(
+      QStringLiteral("presenter"),
+      QStringLiteral("Start in presenter mode (F11): fonts scaled to the screen, high contrast, "
+                     "the window filling the screen, one big panel beside the view."));
   QCommandLineOption selfTest(
       QStringLiteral("self-test"),
       QStringLiteral(
           "Run a GUI self-test (params, bad-gltf=FILE[,FILE...], teaching[=DIR], charts[=DIR], "
-          "split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check)."),
+          "split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check, "
+          "presenter[=DIR], split-params[=DIR])."),
       QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
-  parser.addOptions({scene, technique, set, lesson, session, grab, grabAfter, selfTest});
+  parser.addOptions({scene, technique, set, lesson, session, presenter, grab, grabAfter, selfTest});
 
   ParsedLaunch out;
   if (!parser.parse(arguments)) {
@@ -79,6 +84,7 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   o.assignments = parser.values(set);
   o.grabDir = parser.value(grab);
   o.lesson = parser.value(lesson);
+  o.presenter = parser.isSet(presenter);
   if (parser.isSet(session)) {
     if (parser.isSet(lesson)) {
       out.exitCode = 2;
@@ -94,13 +100,14 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       o.selfTest != QLatin1String("bad-gltf") && o.selfTest != QLatin1String("teaching") &&
       o.selfTest != QLatin1String("charts") && o.selfTest != QLatin1String("split-resize") &&
       o.selfTest != QLatin1String("omni-probe") && o.selfTest != QLatin1String("session-save") &&
-      o.selfTest != QLatin1String("session-check")) {
+      o.selfTest != QLatin1String("session-check") && o.selfTest != QLatin1String("presenter") &&
+      o.selfTest != QLatin1String("split-params")) {
     out.exitCode = 2;
     out.messageIsError = true;
     out.message = QStringLiteral(
                       "unknown --self-test '%1' (known: params, bad-gltf=FILE[,FILE...], "
                       "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE], omni-probe[=DIR], "
-                      "session-save=FILE, session-check)")
+                      "session-save=FILE, session-check, presenter[=DIR], split-params[=DIR])")
                       .arg(parser.value(selfTest));
     return out;
   }

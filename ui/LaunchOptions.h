@@ -1,5 +1,6 @@
 // The GUI's command line: `shadowlab [--scene NAME|FILE] [--technique ID]
-// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--open-session FILE] [--grab DIR --grab-after N]`
+// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--open-session FILE] [--presenter]
+// [--grab DIR --grab-after N]`
 // (and the hidden
 // `--self-test NAME[=ARG]` used by tests/gui), and the GL-free checks of the
 // technique and parameter values against their declarations (before any window opens).
@@ -25,6 +26,7 @@ struct LaunchOptions {
       lesson;  ///< non-empty: start this lesson (number, file base name or path; --open-session)
   QString selfTest;          ///< hidden: run this GUI self-test and exit with its result
   QString selfTestArgument;  ///< the part after '=' in --self-test NAME=ARG
+  bool presenter = false;    ///< start in presenter mode (PresenterMode.h)
   bool grab() const { return !grabDir.isEmpty(); }
 };
 

@@ -33,6 +33,8 @@
 #include "LessonController.h"
 #include "MessageText.h"
 #include "PassStepper.h"
+#include "PresenterMode.h"
+#include "SplitSideParams.h"
 #include "SelfTests.h"
 #include "SessionFiles.h"
 #include "ShortcutsDialog.h"
@@ -110,6 +112,9 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   grab_ = std::make_unique<GrabRun>(*this);
   selfTests_ = std::make_unique<SelfTests>(*this);
   sessions_ = std::make_unique<SessionFiles>(*this);
+  presenter_ = new PresenterMode(*this);
+  splitSide_ = new SplitSideParams(*this);
+  connect(viewport_, &ViewportWidget::splitChanged, splitSide_, &SplitSideParams::rebuild);
   createActions();
   createToolBar();
   addToolBarBreak();
@@ -143,6 +148,10 @@ bool MainWindow::startLesson(const QString& lesson) {
 
 void MainWindow::startSelfTest(const QString& name, const QString& argument) {
   selfTests_->start(name, argument);
+}
+
+void MainWindow::setPresenterMode(bool on) {
+  presenter_->setActive(on);
 }
 
 void MainWindow::restoreSettings() {
@@ -345,6 +354,7 @@ void MainWindow::onRendererReady() {
   rendererBound_ = true;
   grab_->resetFrameCount();
   rebuildParamPanel();
+  splitSide_->rebuild();  // a split technique set before the renderer existed
   syncTechniqueCombo();
   if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(renderer->techniqueId()))
     docks_.raiseFor(*info);
@@ -362,12 +372,14 @@ void MainWindow::onRendererReady() {
 void MainWindow::onRendererAboutToBeDestroyed() {
   rendererBound_ = false;
   paramPanel_->clear();
+  splitSide_->clear();
   if (teaching_) teaching_->setRendererAvailable(false);
 }
 
 void MainWindow::onFrameRendered() {
   const sl::Renderer* renderer = viewport_->renderer();
   if (!renderer) return;
+  splitSide_->onFrameRendered();
   const sl::FrameStats& stats = renderer->stats();
   frameLabel_->setText(tr("frame %1 ms (%2)")
                            .arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1)

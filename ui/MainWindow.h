@@ -36,9 +36,11 @@ class LessonPanel;
 class LightPanel;
 class ParamPanel;
 class PassStepper;
+class PresenterMode;
 class SelfTests;
 class SessionFiles;
 class ShortcutsDialog;
+class SplitSideParams;
 class TeachingBar;
 class TimingPanel;
 class ViewportWidget;
@@ -80,6 +82,9 @@ class MainWindow : public QMainWindow {
   /// the renderer has drawn a frame: prints "ok"/"FAIL" lines, exits 0 (pass) or 1.
   void startSelfTest(const QString& name, const QString& argument);
 
+  /// Presenter mode on or off (F11, View > Presenter mode, --presenter; PresenterMode.h).
+  void setPresenterMode(bool on);
+
  protected:
   void closeEvent(QCloseEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
@@ -90,8 +95,10 @@ class MainWindow : public QMainWindow {
   friend class GrabRun;
   friend class LessonController;
   friend class PassStepper;
+  friend class PresenterMode;
   friend class SelfTests;
   friend class SessionFiles;
+  friend class SplitSideParams;
   friend class TeachingBar;
 
   void createActions();
@@ -198,6 +205,8 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<GrabRun> grab_;
   std::unique_ptr<SelfTests> selfTests_;
   std::unique_ptr<SessionFiles> sessions_;
+  PresenterMode* presenter_ = nullptr;    ///< a child QObject of the window
+  SplitSideParams* splitSide_ = nullptr;  ///< the split view's parameters (a child QObject)
 };
 
 }  // namespace sl::ui

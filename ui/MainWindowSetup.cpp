@@ -18,6 +18,8 @@
 #include "LessonController.h"
 #include "MainWindow.h"
 #include "PassStepper.h"
+#include "PresenterMode.h"
+#include "SplitSideParams.h"
 #include "SessionFiles.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
@@ -112,6 +114,7 @@ void MainWindow::createActions() {
   connect(view, &QMenu::aboutToShow, this,
           [this, outside] { outside->setChecked(viewport_->outsideView()); });
   view->addSeparator();
+  presenter_->createActions(view);
   QMenu* panels = view->addMenu(tr("&Panels"));
   panels->setObjectName(QStringLiteral("panelsMenu"));
   QAction* defaultLayout =
@@ -158,7 +161,7 @@ void MainWindow::createActions() {
 
   commandActions_ = {open,      reload,  screenshot,        saveAll,       quit,
                      resetView, error,   continuousAction_, resetTemporal, cycleOverlay,
-                     split,     outside, defaultLayout,     shortcuts};
+                     split,     outside, defaultLayout,     shortcuts,     presenter_->action()};
   // Shortcuts work wherever the focus is (also while the viewport has it).
   for (QAction* a : commandActions_) a->setShortcutContext(Qt::ApplicationShortcut);
   // Frame stepping keys: plain keys, so only while the main window has the focus (typing
@@ -245,7 +248,7 @@ void MainWindow::createDocks() {
           [this](const QString& message) { report(message); });
   paramDock_ = new QDockWidget(tr("Parameters"), this);
   paramDock_->setObjectName(QStringLiteral("parameters"));
-  paramDock_->setWidget(paramPanel_);
+  paramDock_->setWidget(splitSide_->createDockWidget(paramPanel_));
   paramDock_->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
   addDockWidget(Qt::RightDockWidgetArea, paramDock_);
 

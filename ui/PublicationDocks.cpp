@@ -67,6 +67,16 @@ void PublicationDocks::raiseFor(const sl::TechniqueInfo& info) const {
   if (first && (!front || !showsTechnique(*front->panel, info))) first->dock->raise();
 }
 
+QDockWidget* PublicationDocks::firstShowing(const sl::TechniqueInfo& info) const {
+  QDockWidget* hiddenOne = nullptr;
+  for (const Dock& d : docks_) {
+    if (!showsTechnique(*d.panel, info)) continue;
+    if (!d.dock->isHidden()) return d.dock;
+    if (!hiddenOne) hiddenOne = d.dock;
+  }
+  return hiddenOne;
+}
+
 void PublicationDocks::showProbe(const std::optional<sl::PixelProbe>& probe) const {
   for (const Dock& d : docks_) d.panel->showProbe(probe);
 }

@@ -42,6 +42,9 @@ class PublicationDocks {
   /// After a technique switch: when the front bottom tab shows nothing `info` publishes (an
   /// RTW warp panel for `cube`), the first bottom tab that does comes to the front.
   void raiseFor(const sl::TechniqueInfo& info) const;
+  /// The first dock (visible ones first, in registry order) whose panel draws something
+  /// `info` publishes; null when none does (presenter mode's big panel).
+  QDockWidget* firstShowing(const sl::TechniqueInfo& info) const;
   void resetHistory() const;
   void highlightPass(const QString& passId) const;
   /// The view's pixel under the mouse, to every panel (visible or not: cheap, no readback).

@@ -127,6 +127,10 @@ void SelfTests::run() {
     ran = sessionSave(argument_);
   else if (name_ == QLatin1String("session-check"))
     ran = sessionCheck();
+  else if (name_ == QLatin1String("presenter"))
+    ran = presenter(argument_);
+  else if (name_ == QLatin1String("split-params"))
+    ran = splitParams(argument_);
   else
     ran = badGltf(argument_);
   const bool pass = ran && failures_ == 0;

@@ -1,6 +1,7 @@
 // GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
 // params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE],
-// omni-probe[=DIR], session-save=FILE, session-check (SelfTestsSession.cpp). They act as a
+// omni-probe[=DIR], session-save=FILE, session-check (SelfTestsSession.cpp), presenter[=DIR],
+// split-params[=DIR] (SelfTestsPresenter.cpp). They act as a
 // user would and check what the renderer and the window did; each check prints "ok   ..." or "FAIL
 // ...".
 #pragma once
@@ -51,6 +52,14 @@ class SelfTests : public QObject {
   /// session-check: the same "metric ..." lines for the state the window started in
   /// (tests/gui/session_roundtrip.sh starts it with --open-session FILE and compares).
   bool sessionCheck();
+  /// presenter[=DIR] (SelfTestsPresenter.cpp): presenter mode at the screen's size: the
+  /// window fits, body text >= 22 px x min(w / 1920, h / 1080), one panel with an image >=
+  /// 35 % of the screen's height, the changed overlay's vivid pixels = the renderer's count,
+  /// pointer ring, zoom inset (nearest neighbour), ticks; PNGs into DIR.
+  bool presenter(const QString& dir);
+  /// split-params[=DIR] (SelfTestsPresenter.cpp): the compare side's own parameter panel
+  /// (a resolution edit changes its memory, not the main side's) and "equal memory".
+  bool splitParams(const QString& dir);
   /// The view pinned to 640x400, a few frames, the error computed; prints the metrics.
   void printSessionMetrics();
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.

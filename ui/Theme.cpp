@@ -1,7 +1,12 @@
-// Fusion + dark palette (see Theme.h).
+// Fusion + dark palette, and presenter mode's high-contrast one (see Theme.h).
 #include "Theme.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <QApplication>
+#include <QFont>
+#include <QSize>
 #include <QPalette>
 #include <QStyleFactory>
 
@@ -35,6 +40,46 @@ void applyTheme(QApplication& app) {
     p.setColor(QPalette::Disabled, role, disabledText);
   p.setColor(QPalette::Disabled, QPalette::Highlight, QColor(80, 84, 90));
   app.setPalette(p);
+}
+
+int presenterBodyPixelSize(const QSize& screenLogicalSize, double logicalDpi) {
+  constexpr double kPxAt1080p = 24.0;  // >= 22 px readable from the back of a lecture room
+  const double scale =
+      std::min(screenLogicalSize.width() / 1920.0, screenLogicalSize.height() / 1080.0);
+  const double floorPx = 11.0 * std::max(logicalDpi, 72.0) / 72.0;  // 11 pt
+  return int(std::lround(std::max(kPxAt1080p * scale, floorPx)));
+}
+
+void applyPresenterTheme(QApplication& app, int bodyPixelSize, double logicalDpi) {
+  app.setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+  const QColor black(0, 0, 0), panel(12, 12, 12), text(255, 255, 255), yellow(255, 221, 0),
+      frame(200, 200, 200);
+  QPalette p;
+  p.setColor(QPalette::Window, panel);
+  p.setColor(QPalette::WindowText, text);
+  p.setColor(QPalette::Base, black);
+  p.setColor(QPalette::AlternateBase, QColor(30, 30, 30));
+  p.setColor(QPalette::ToolTipBase, QColor(255, 255, 210));
+  p.setColor(QPalette::ToolTipText, black);
+  p.setColor(QPalette::PlaceholderText, QColor(235, 235, 235));
+  p.setColor(QPalette::Text, text);
+  p.setColor(QPalette::Button, QColor(25, 25, 25));
+  p.setColor(QPalette::ButtonText, text);
+  p.setColor(QPalette::BrightText, yellow);
+  p.setColor(QPalette::Link, QColor(120, 200, 255));
+  p.setColor(QPalette::Highlight, yellow);
+  p.setColor(QPalette::HighlightedText, black);
+  p.setColor(QPalette::Light, frame);
+  p.setColor(QPalette::Midlight, QColor(150, 150, 150));
+  p.setColor(QPalette::Mid, frame);
+  p.setColor(QPalette::Dark, QColor(90, 90, 90));
+  p.setColor(QPalette::Shadow, black);
+  for (auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
+    p.setColor(QPalette::Disabled, role, QColor(170, 170, 170));
+  app.setPalette(p);
+  QFont font = app.font();
+  font.setPointSizeF(bodyPixelSize * 72.0 / std::max(logicalDpi, 1.0));
+  app.setFont(font);
 }
 
 }  // namespace sl::ui

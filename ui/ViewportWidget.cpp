@@ -15,6 +15,7 @@
 
 #include "GlSupport.h"
 #include "MessageText.h"
+#include "common/shared_constants.h"
 #include "metrics/ErrorMetrics.h"
 
 namespace sl::ui {
@@ -76,17 +77,43 @@ class ViewOverlay : public QWidget {
 
   QImage split;  ///< right half (device pixels), null when the split view is off
   QString leftCaption, rightCaption, bannerTitle, bannerText, pausedText;
-  enum class Legend { None, Error, Aliasing, WarpGrid } legend = Legend::None;
+  enum class Legend { None, Error, Aliasing, WarpGrid, Changed } legend = Legend::None;
   /// The outside view's line colours and what they stand for (empty: not in outside view).
   QVector<QPair<QColor, QString>> outsideLegend;
   /// The light gizmo (widget pixels): lines, and the light's own point when on screen.
   QVector<QLineF> gizmoLines;
   std::optional<QPointF> gizmoPoint;
   bool errorStale = false;
+  /// The changed overlay's count (pixels whose hard test flipped since the last frame, of
+  /// those covered in both), or nothing yet.
+  std::optional<std::pair<std::uint64_t, std::uint64_t>> changedCount;
+  std::optional<QPointF> pointerRing;  ///< presenter mode's pointer highlight (widget px)
+  QImage zoomSource;                   ///< the zoom area's pixels, device pixels
+  QRect zoomArea;                      ///< widget pixels (empty: no inset)
+  QRect zoomDrag;                      ///< the rectangle being dragged (empty: none)
+  QRect insetRect;                     ///< where paintEvent drew the inset (widget px)
+  int insetFactor = 0;
+
+  /// The inset's place: the largest whole magnification of `zoomArea` that fits in 45 % of
+  /// the view's width and height, in the bottom-right corner.
+  void placeInset() {
+    insetRect = QRect();
+    insetFactor = 0;
+    if (zoomArea.isEmpty() || zoomSource.isNull()) return;
+    const int f = std::min(width() * 45 / 100 / zoomArea.width(),
+                           (height() - fontMetrics().height() - 34) * 45 / 100 / zoomArea.height());
+    if (f < 2) return;
+    insetFactor = f;
+    const QSize size(zoomArea.width() * f, zoomArea.height() * f);
+    // Above the bottom row of legends and captions (one line of text and their margins).
+    const int bottom = fontMetrics().height() + 34;
+    insetRect = QRect(QPoint(width() - size.width() - 14, height() - size.height() - bottom), size);
+  }
 
   bool hasContent() const {
-    return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() ||
-           !pausedText.isEmpty() || legend != Legend::None || !gizmoLines.isEmpty() || gizmoPoint ||
+    return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() || pointerRing ||
+           !zoomArea.isEmpty() || !zoomDrag.isEmpty() || changedCount || !pausedText.isEmpty() ||
+           legend != Legend::None || !gizmoLines.isEmpty() || gizmoPoint ||
            !outsideLegend.isEmpty();
   }
 
@@ -221,6 +248,21 @@ class ViewOverlay : public QWidget {
       if (!note.isEmpty())
         p.drawText(QRectF(r.left() + 10, r.top() + 6 + 2 * line, tw - 16, line),
                    Qt::AlignLeft | Qt::AlignVCenter, note);
+    } else if (legend == Legend::Changed) {
+      const QString t = changedCount ? tr("%L1 pixels changed since the last frame (of %L2)")
+                                           .arg(changedCount->first)
+                                           .arg(changedCount->second)
+                                     : tr("pixels changed since the last frame: needs two frames");
+      const int swatch = line - 6;
+      const QRectF r(12, height() - bottomInset - line - 12, fm.horizontalAdvance(t) + swatch + 30,
+                     line + 10);
+      box(r);
+      const float c[3] = {SL_CHANGED_COLOUR};
+      p.fillRect(QRectF(r.left() + 10, r.top() + 8, swatch, swatch),
+                 QColor::fromRgbF(c[0], c[1], c[2]));
+      p.setPen(Qt::white);
+      p.drawText(QRectF(r.left() + swatch + 18, r.top(), r.width() - swatch - 22, r.height()),
+                 Qt::AlignLeft | Qt::AlignVCenter, t);
     } else if (legend == Legend::WarpGrid) {
       const QString t = tr("shadow-map grid: every 1/16 of the map");
       const QRectF r(12, height() - bottomInset - line - 12, fm.horizontalAdvance(t) + 20,
@@ -228,6 +270,37 @@ class ViewOverlay : public QWidget {
       box(r);
       p.setPen(QColor(255, 217, 26));
       p.drawText(r, Qt::AlignCenter, t);
+    }
+    placeInset();
+    if (insetFactor > 0) {  // the zoom inset: nearest neighbour, whole texels per pixel
+      const QRectF source(zoomArea.topLeft() * zoomSource.devicePixelRatio(),
+                          zoomArea.size() * zoomSource.devicePixelRatio());
+      p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+      p.drawImage(QRectF(insetRect), zoomSource, source);
+      p.setBrush(Qt::NoBrush);
+      p.setPen(QPen(QColor(255, 230, 0), 3));
+      p.drawRect(QRectF(insetRect).adjusted(-1.5, -1.5, 1.5, 1.5));
+      p.setPen(QPen(QColor(255, 230, 0), 2, Qt::DashLine));
+      p.drawRect(QRectF(zoomArea).adjusted(-1, -1, 1, 1));
+      const QString label = QStringLiteral("\u00d7%1").arg(insetFactor);
+      const QRectF lr(insetRect.left(), insetRect.top() - line - 8,
+                      fm.horizontalAdvance(label) + 16, line + 6);
+      box(lr);
+      p.setPen(QColor(255, 230, 0));
+      p.drawText(lr, Qt::AlignCenter, label);
+    }
+    if (!zoomDrag.isEmpty()) {
+      p.setBrush(Qt::NoBrush);
+      p.setPen(QPen(QColor(255, 230, 0), 2, Qt::DashLine));
+      p.drawRect(zoomDrag);
+    }
+    if (pointerRing) {  // presenter mode: a ring around the pointer, dark halo for contrast
+      const double radius = std::max(18.0, line * 1.1);
+      p.setBrush(Qt::NoBrush);
+      p.setPen(QPen(QColor(0, 0, 0, 170), 7));
+      p.drawEllipse(*pointerRing, radius, radius);
+      p.setPen(QPen(QColor(255, 40, 200), 4));
+      p.drawEllipse(*pointerRing, radius, radius);
     }
   }
 };
@@ -313,6 +386,12 @@ void ViewportWidget::paintGL() {
     lastRendererParamRevision_ = renderer_->rendererParams().revision();
     markViewChanged();
   }
+  if (splitRenderer_ && !splitParamsPending_ &&
+      splitRenderer_->params().revision() != lastSplitParamRevision_) {
+    lastSplitParamRevision_ = splitRenderer_->params().revision();  // edited in its panel
+    splitErrorPct_.reset();
+    markViewChanged();
+  }
   renderer_->setCamera(camera_);
   renderer_->setLight(light_);
 
@@ -346,6 +425,7 @@ void ViewportWidget::paintGL() {
     Q_EMIT renderProblem(QString::fromStdString(problem));
   lastProblem_ = problem;
 
+  updateZoomInset();
   updateOverlayWidget();
   Q_EMIT frameRendered();
   probeHover();                                             // the frame changed under a still mouse
@@ -353,26 +433,151 @@ void ViewportWidget::paintGL() {
   if (continuous_ && !paused_) update();
 }
 
+// GL current. Creates the split renderer and applies the technique and parameters
+// setSplitTechnique gave; the problem, or nothing.
+std::optional<std::string> ViewportWidget::prepareSplitRenderer() {
+  if (!splitRenderer_) {
+    sl::RendererOptions options;
+    options.debugOutput = false;  // the main renderer keeps the context's debug callback
+    splitRenderer_ = std::make_unique<sl::Renderer>(options);
+    if (scene_) splitRenderer_->setScene(scene_);
+  }
+  if (splitRenderer_->techniqueId() != splitTechniqueId_)
+    if (auto e = splitRenderer_->setTechnique(splitTechniqueId_)) return "split view: " + *e;
+  std::optional<std::string> problem;
+  if (splitParamsPending_) {  // checked by setSplitTechnique: cannot fail here
+    splitRenderer_->params().resetToDefaults();
+    for (const auto& [key, value] : splitParams_)
+      if (auto e = splitRenderer_->params().setFromString(key, value))
+        problem = "split view: " + *e;
+    splitRenderer_->resetTemporalState();
+    splitParamsPending_ = false;
+    lastSplitParamRevision_ = splitRenderer_->params().revision();
+  }
+  return problem;
+}
+
+sl::Renderer* ViewportWidget::splitRenderer() {
+  if (!renderer_ || splitTechniqueId_.empty()) return nullptr;
+  makeCurrent();
+  std::optional<std::string> problem;
+  try {
+    problem = prepareSplitRenderer();
+  } catch (const std::exception& e) {
+    problem = std::string("split view: ") + e.what();
+  }
+  doneCurrent();
+  if (problem) {
+    Q_EMIT renderProblem(QString::fromStdString(*problem));
+    return splitRenderer_ && splitRenderer_->techniqueId() == splitTechniqueId_
+               ? splitRenderer_.get()
+               : nullptr;
+  }
+  return splitRenderer_.get();
+}
+
+std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std::string* error) {
+  auto fail = [&](const std::string& why) -> std::optional<MemoryMatch> {
+    if (error) *error = why;
+    return std::nullopt;
+  };
+  sl::Renderer* split = splitRenderer();
+  if (!split) return fail("the split view is off");
+  if (framesRendered_ == 0 || renderer_->stats().frameIndex == 0)
+    return fail("no frame of the main technique yet");
+  sl::ParamSet& params = split->params();
+  const sl::ParamDecl* decl = nullptr;
+  for (const sl::ParamDecl& d : params.decls())
+    if (d.key == "resolution") decl = &d;
+  if (!decl) {
+    for (const sl::ParamDecl& d : params.decls())
+      if (d.type == sl::ParamType::Int && d.key.size() >= 10 &&
+          d.key.compare(d.key.size() - 10, 10, "resolution") == 0) {
+        if (decl) return fail("technique '" + splitTechniqueId_ + "' has several resolutions");
+        decl = &d;
+      }
+  }
+  if (!decl)
+    return fail("technique '" + splitTechniqueId_ + "' has no resolution parameter to match");
+  MemoryMatch match;
+  match.key = decl->key;
+  match.mainBytes = renderer_->stats().memory.bytes();
+  const qreal dpr = devicePixelRatioF();
+  const int w = static_cast<int>(std::lround(width() * dpr));
+  const int h = static_cast<int>(std::lround(height() * dpr));
+  const int halfW = w - w / 2;
+  if (halfW < kMinDrawnPx || h < kMinDrawnPx) return fail("the view is too small to measure");
+  const long long step = std::max<long long>(1, std::llround(decl->step));
+  const long long lo = std::llround(decl->minValue), hi = std::llround(decl->maxValue);
+  std::string problem;
+  makeCurrent();
+  split->setCamera(camera_);
+  split->setLight(light_);
+  // The bytes at `value`: one frame of the right half (its size, this camera and light).
+  auto bytesAt = [&](long long value) -> std::optional<std::uint64_t> {
+    if (auto e = params.set(decl->key, double(value))) {
+      problem = *e;
+      return std::nullopt;
+    }
+    ++match.framesMeasured;
+    if (auto e = split->renderFrame(halfW, h, defaultFramebufferObject())) {
+      problem = *e;
+      return std::nullopt;
+    }
+    return split->stats().memory.bytes();
+  };
+  // Over the value grid lo, lo + step, ...: the largest value within the budget. Grid
+  // indices doubled until over it (never a map far larger than the budget), then bisected.
+  const long long last = (hi - lo) / step;
+  long long a = 0;  // within the budget (once lo is)
+  std::optional<std::uint64_t> bytesA = bytesAt(lo);
+  if (bytesA && *bytesA > match.mainBytes) {
+    match.belowMinimum = true;
+  } else if (bytesA) {
+    long long b = last + 1;  // first index known over the budget (last + 1: none known)
+    for (long long k = 1; k <= last; k *= 2) {
+      const auto bytes = bytesAt(lo + k * step);
+      if (!bytes) break;
+      if (*bytes > match.mainBytes) {
+        b = k;
+        break;
+      }
+      a = k;
+    }
+    if (b == last + 1 && a < last && problem.empty()) {  // beyond the last power of two
+      const auto bytes = bytesAt(lo + last * step);
+      if (bytes && *bytes <= match.mainBytes)
+        a = last;
+      else
+        b = last;
+    }
+    while (problem.empty() && b - a > 1) {
+      const long long mid = a + (b - a) / 2;
+      const auto bytes = bytesAt(lo + mid * step);
+      if (!bytes) break;
+      if (*bytes <= match.mainBytes)
+        a = mid;
+      else
+        b = mid;
+    }
+  }
+  match.value = lo + a * step;
+  const auto finalBytes = problem.empty() ? bytesAt(match.value) : std::nullopt;
+  split->resetTemporalState();
+  doneCurrent();
+  if (!finalBytes) return fail("split view: " + problem);
+  match.splitBytes = *finalBytes;
+  splitParams_[decl->key] = params.format(decl->key);
+  lastSplitParamRevision_ = ~0u;  // the next frame notices the change
+  update();
+  return match;
+}
+
 void ViewportWidget::renderSplitHalf(int width, int height, std::string& problem) {
   try {
-    if (!splitRenderer_) {
-      sl::RendererOptions options;
-      options.debugOutput = false;  // the main renderer keeps the context's debug callback
-      splitRenderer_ = std::make_unique<sl::Renderer>(options);
-      if (scene_) splitRenderer_->setScene(scene_);
-    }
-    if (splitRenderer_->techniqueId() != splitTechniqueId_)
-      if (auto e = splitRenderer_->setTechnique(splitTechniqueId_)) {
-        problem = "split view: " + *e;
-        return;
-      }
-    if (splitParamsPending_) {  // checked by setSplitTechnique: cannot fail here
-      splitRenderer_->params().resetToDefaults();
-      for (const auto& [key, value] : splitParams_)
-        if (auto e = splitRenderer_->params().setFromString(key, value))
-          problem = "split view: " + *e;
-      splitRenderer_->resetTemporalState();
-      splitParamsPending_ = false;
+    if (auto e = prepareSplitRenderer()) {
+      problem = *e;
+      if (!splitRenderer_ || splitRenderer_->techniqueId() != splitTechniqueId_) return;
     }
     // Same camera, light and shared (view/shading) parameters as the left half.
     sl::ParamSet& mine = splitRenderer_->rendererParams();
@@ -387,10 +592,9 @@ void ViewportWidget::renderSplitHalf(int width, int height, std::string& problem
       problem = "split view: " + *e;
       return;
     }
-    const sl::FrameReadback frame = splitRenderer_->readback();
-    splitImage_ = QImage(frame.color.pixels.data(), frame.color.width, frame.color.height,
-                         QImage::Format_RGBA8888)
-                      .copy();
+    const sl::ImageRGBA8 color = splitRenderer_->readColor();  // the colour only
+    splitImage_ =
+        QImage(color.pixels.data(), color.width, color.height, QImage::Format_RGBA8888).copy();
   } catch (const std::exception& e) {
     problem = std::string("split view: ") + e.what();
   }
@@ -416,7 +620,17 @@ void ViewportWidget::updateOverlayWidget() {
       overlay_->legend = ViewOverlay::Legend::Aliasing;
     else if (v == enumIndexOf(p, "view.overlay", "warp-grid"))
       overlay_->legend = ViewOverlay::Legend::WarpGrid;
+    else if (v == enumIndexOf(p, "view.overlay", "changed"))
+      overlay_->legend = ViewOverlay::Legend::Changed;
   }
+  overlay_->changedCount.reset();
+  if (overlay_->legend == ViewOverlay::Legend::Changed && renderer_->stats().maskChange)
+    overlay_->changedCount = std::make_pair(renderer_->stats().maskChange->changed,
+                                            renderer_->stats().maskChange->compared);
+  overlay_->pointerRing.reset();
+  if (pointerHighlight_ && hover_.x() >= 0) overlay_->pointerRing = hover_;
+  overlay_->zoomArea = zoomArea_.value_or(QRect());
+  overlay_->zoomDrag = zoomDragging_.value_or(QRect());
   overlay_->outsideLegend.clear();
   if (renderer_ && outsideView() && renderer_->stats().outsideCamera) {
     auto colour = [](sl::OutlineRole role, int map) {
@@ -506,6 +720,7 @@ std::optional<std::string> ViewportWidget::setSplitTechnique(
   if (paused_) ++pendingSteps_;
   update();
   if (techniqueId.empty()) updateOverlayWidget();
+  Q_EMIT splitChanged();
   return std::nullopt;
 }
 
@@ -525,6 +740,61 @@ void ViewportWidget::setBanner(const QString& title, const QString& text) {
   overlay_->setVisible(overlay_->hasContent());
   overlay_->raise();
   overlay_->update();
+}
+
+void ViewportWidget::setPointerHighlight(bool on) {
+  pointerHighlight_ = on;
+  setMouseTracking(true);
+  updateOverlayWidget();
+}
+
+void ViewportWidget::setZoomArea(const std::optional<QRect>& area) {
+  zoomArea_ = area ? std::optional<QRect>(area->intersected(rect())) : std::nullopt;
+  if (zoomArea_ && zoomArea_->isEmpty()) zoomArea_.reset();
+  if (renderer_) {
+    makeCurrent();
+    updateZoomInset();
+    doneCurrent();
+  }
+  updateOverlayWidget();
+}
+
+QRect ViewportWidget::zoomInsetRect() const {
+  overlay_->placeInset();
+  return overlay_->insetRect;
+}
+
+int ViewportWidget::zoomFactor() const {
+  overlay_->placeInset();
+  return overlay_->insetFactor;
+}
+
+QImage ViewportWidget::renderedImage() {
+  if (!renderer_ || framesRendered_ == 0) return {};
+  const sl::ImageRGBA8 main = renderer_->readColor();
+  if (main.width == 0) return {};
+  const QImage left =
+      QImage(main.pixels.data(), main.width, main.height, QImage::Format_RGBA8888).copy();
+  const bool split = !splitTechniqueId_.empty() && splitRenderer_ && !splitImage_.isNull();
+  if (!split) return left;
+  QImage both(left.width() + splitImage_.width(), std::max(left.height(), splitImage_.height()),
+              QImage::Format_RGBA8888);
+  both.fill(Qt::black);
+  QPainter p(&both);
+  p.drawImage(0, 0, left);
+  p.drawImage(left.width(), 0, splitImage_);
+  return both;
+}
+
+// GL current (paintGL, or made current by the caller).
+void ViewportWidget::updateZoomInset() {
+  if (!zoomArea_) {
+    overlay_->zoomSource = QImage();
+    return;
+  }
+  QImage image = renderedImage();
+  image.setDevicePixelRatio(devicePixelRatioF());
+  overlay_->zoomSource = image;
 }
 
 QImage ViewportWidget::grabView() {
@@ -813,6 +1083,14 @@ float ViewportWidget::sceneScaleM() const {
 // moves the light, wheel dolly.
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
+  constexpr Qt::KeyboardModifiers kZoomMods = Qt::ControlModifier | Qt::ShiftModifier;
+  if (event->button() == Qt::LeftButton && (event->modifiers() & kZoomMods) == kZoomMods &&
+      dragButton_ == Qt::NoButton) {  // the zoom inset's area
+    zoomDragStart_ = event->position().toPoint();
+    zoomDragging_ = QRect(zoomDragStart_, QSize(1, 1));
+    event->accept();
+    return;
+  }
   if (dragButton_ == Qt::NoButton) {
     dragButton_ = event->button();
     lastMouse_ = event->position().toPoint();
@@ -823,6 +1101,15 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   const QPoint pos = event->position().toPoint();
+  if (zoomDragging_) {
+    zoomDragging_ = QRect(zoomDragStart_, pos).normalized().intersected(rect());
+    updateOverlayWidget();
+    return;
+  }
+  if (pointerHighlight_ && dragButton_ == Qt::NoButton) {
+    hover_ = event->position();
+    updateOverlayWidget();
+  }
   if (dragButton_ == Qt::NoButton) {
     hover_ = event->position();
     makeCurrent();
@@ -861,6 +1148,7 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
 void ViewportWidget::leaveEvent(QEvent* event) {
   hover_ = QPointF(-1.0, -1.0);
   Q_EMIT pixelProbed(std::nullopt);
+  if (pointerHighlight_) updateOverlayWidget();
   QOpenGLWidget::leaveEvent(event);
 }
 
@@ -875,6 +1163,14 @@ void ViewportWidget::probeHover() {
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
+  if (zoomDragging_ && event->button() == Qt::LeftButton) {
+    const QRect area = *zoomDragging_;
+    zoomDragging_.reset();
+    // A click (no real rectangle) clears the inset.
+    setZoomArea(area.width() >= 4 && area.height() >= 4 ? std::optional<QRect>(area)
+                                                        : std::nullopt);
+    return;
+  }
   if (event->button() == dragButton_) dragButton_ = Qt::NoButton;
   if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);
 }

@@ -98,6 +98,49 @@ class ViewportWidget : public QOpenGLWidget {
   /// renderer has it, else those given to setSplitTechnique. Empty when the split is off.
   std::map<std::string, std::string> splitParams() const;
 
+  /// Presenter mode: a ring follows the mouse over the view (the pointer highlight).
+  void setPointerHighlight(bool on);
+  bool pointerHighlight() const { return pointerHighlight_; }
+
+  /// The zoom inset: `area` of the view (widget pixels) magnified by a whole factor,
+  /// nearest neighbour, into the bottom-right corner; nothing: off. Ctrl+Shift+drag over the
+  /// view sets it, Ctrl+Shift+click clears it.
+  void setZoomArea(const std::optional<QRect>& area);
+  const std::optional<QRect>& zoomArea() const { return zoomArea_; }
+  /// Where the inset was last drawn (widget pixels) and its magnification; empty/0 when off.
+  QRect zoomInsetRect() const;
+  int zoomFactor() const;
+  /// The view as the renderer drew it (both halves in split view, no overlay), device
+  /// pixels; null before a frame. GL read of the colour target only.
+  QImage renderedImage();
+
+  /// The split view's renderer, created now (GL) with its technique and parameters applied,
+  /// so that a panel may edit its ParamSet; null when the split view is off or there is no
+  /// renderer yet.
+  sl::Renderer* splitRenderer();
+  /// The split renderer as it is (no GL): null while off or not yet made for the technique.
+  const sl::Renderer* currentSplitRenderer() const {
+    return splitRenderer_ && !splitTechniqueId_.empty() &&
+                   splitRenderer_->techniqueId() == splitTechniqueId_
+               ? splitRenderer_.get()
+               : nullptr;
+  }
+
+  /// "Equal memory": the split technique's resolution parameter (`resolution`, else the
+  /// one Int parameter whose key ends in "resolution") searched for the largest value whose
+  /// memory() is at most the main technique's, each candidate measured by rendering the
+  /// right half (memory need not be a function of resolution alone). Assumes memory grows
+  /// with resolution (doubling, then bisection: about 2 log2(range) frames).
+  struct MemoryMatch {
+    std::string key;               ///< the parameter set
+    long long value = 0;           ///< its value now
+    std::uint64_t mainBytes = 0;   ///< the main technique's memory()
+    std::uint64_t splitBytes = 0;  ///< the split technique's at `value`
+    bool belowMinimum = false;     ///< even the smallest value spends more than main
+    int framesMeasured = 0;
+  };
+  std::optional<MemoryMatch> matchSplitMemory(std::string* error);
+
   /// A banner over the top of the view (lesson title, pass being stepped); empty: none.
   void setBanner(const QString& title, const QString& text);
 
@@ -127,6 +170,8 @@ class ViewportWidget : public QOpenGLWidget {
   void frameRendered();
   /// renderFrame or the GL debug output reported a problem (the view keeps working).
   void renderProblem(const QString& message);
+  /// The split view's technique or parameter set was replaced (setSplitTechnique).
+  void splitChanged();
   /// The camera moved (mouse, keys, bookmark, reset).
   void cameraChanged();
   /// The light changed (setLight, a new scene, Alt+drag in the view).
@@ -161,6 +206,8 @@ class ViewportWidget : public QOpenGLWidget {
   void destroyRenderer();
   void applyStateToRenderer();
   void renderSplitHalf(int width, int height, std::string& problem);
+  /// GL current: the split renderer created, its technique and pending parameters applied.
+  std::optional<std::string> prepareSplitRenderer();
   void updateOverlayWidget();
   /// The light gizmo in widget pixels (sun arrow, bulb, or spot cone) for the overlay.
   void updateLightGizmo();
@@ -189,7 +236,12 @@ class ViewportWidget : public QOpenGLWidget {
   QSize lastFrameSize_;
   int lastMainWidth_ = 0;      ///< device pixels of the main renderer's part of the view
   QPointF hover_{-1.0, -1.0};  ///< the mouse over the view (widget pixels), -1: not over it
-  void probeHover();           ///< reads the pixel under hover_ and emits pixelProbed
+  bool pointerHighlight_ = false;
+  std::optional<QRect> zoomArea_;      ///< widget pixels
+  std::optional<QRect> zoomDragging_;  ///< the rectangle while Ctrl+Shift+drag draws it
+  QPoint zoomDragStart_;
+  void updateZoomInset();  ///< GL current: crops the rendered image into the overlay
+  void probeHover();       ///< reads the pixel under hover_ and emits pixelProbed
   std::shared_ptr<const sl::Scene> scene_;
   std::string techniqueId_;
   sl::Camera camera_;
@@ -199,6 +251,7 @@ class ViewportWidget : public QOpenGLWidget {
   // What the renderer saw last frame; any difference means "view changed".
   unsigned lastParamRevision_ = ~0u;
   unsigned lastRendererParamRevision_ = ~0u;
+  unsigned lastSplitParamRevision_ = ~0u;
   std::string lastTechniqueId_;
   std::uint64_t viewRevision_ = 1;
   std::uint64_t errorRevision_ = 0;

@@ -114,6 +114,7 @@ int main(int argc, char** argv) {
         !window.loadScene(options.scene.isEmpty() ? window.initialSceneName() : options.scene))
       return 1;
     window.show();
+    if (options.presenter) window.setPresenterMode(true);
     if (selfTest)
       window.startSelfTest(options.selfTest, options.selfTestArgument);
     else
@@ -134,5 +135,6 @@ int main(int argc, char** argv) {
     window.loadScene(sl::ui::MainWindow::defaultSceneName());
   if (!options.lesson.isEmpty()) window.startLesson(options.lesson);
   window.show();
+  if (options.presenter) window.setPresenterMode(true);
   return QApplication::exec();
 }

@@ -96,6 +96,11 @@ const std::vector<PublicationDecl>& rendererPublicationDecls() {
            "in octaves.",
        "4 B x (4 + " + std::to_string(SL_ALIASING_BINS) + " bins)",
        [](const ParamSet&) { return std::uint64_t(4 * (4 + SL_ALIASING_BINS)); }},
+      {"mask.*", PublicationKind::Number,
+       "The hard mask's change since the previous frame (GPU count, CPU mirror "
+       "compareConsecutiveMasks): changed_pixels (lit in one frame, shadowed in the other), "
+       "compared_pixels (covered in both); absent on the first frame of a size.",
+       "4 B x 2", [](const ParamSet&) { return std::uint64_t(8); }},
       {"camera.*", PublicationKind::Number,
        "The frame's camera: near_m, far_m, fov_deg (full vertical), aspect, height_px, "
        "forward.{x,y,z}, "

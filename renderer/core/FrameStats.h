@@ -54,6 +54,14 @@ struct FrameStats {
   FrameOutlines outlines;
   /// The third camera of this frame when view.outside is on (algo/OutsideView).
   std::optional<Camera> outsideCamera;
+  /// Pixels of the hard mask that changed since the previous frame (common/mask_change.comp,
+  /// CPU mirror sl::compareConsecutiveMasks): counted while view.overlay is "changed" or a
+  /// "mask.*" key is requested, else absent (and absent on the first frame of a size).
+  struct MaskChangeCount {
+    std::uint64_t compared = 0;  ///< pixels covered in both frames
+    std::uint64_t changed = 0;   ///< of which lit in one and shadowed in the other
+  };
+  std::optional<MaskChangeCount> maskChange;
   double passMs(const std::string& name) const;
 };
 

@@ -24,12 +24,13 @@ namespace sl {
 namespace {
 /// view.overlay's names, value i at index i (SL_OVERLAY_*, composite.frag).
 std::vector<std::string> overlayNames() {
-  std::vector<std::string> names(SL_OVERLAY_PARTITION + 1);
+  std::vector<std::string> names(SL_OVERLAY_CHANGED + 1);
   names[SL_OVERLAY_NONE] = "none";
   names[SL_OVERLAY_ERROR] = "error";
   names[SL_OVERLAY_ALIASING] = "aliasing";
   names[SL_OVERLAY_GRID] = "warp-grid";
   names[SL_OVERLAY_PARTITION] = "partition";
+  names[SL_OVERLAY_CHANGED] = "changed";
   return names;
 }
 }  // namespace
@@ -52,7 +53,7 @@ std::vector<ParamDecl> rendererParamDecls() {
        .type = ParamType::Enum,
        .defaultValue = SL_OVERLAY_NONE,
        .minValue = SL_OVERLAY_NONE,
-       .maxValue = SL_OVERLAY_PARTITION,
+       .maxValue = SL_OVERLAY_CHANGED,
        .step = 1,
        .enumNames = overlayNames(),
        .help =
@@ -65,7 +66,9 @@ std::vector<ParamDecl> rendererParamDecls() {
            " of the selected map) projected onto the scene, or the partition: each pixel coloured "
            "by the index of the map it selected (cascade, face, layer; colours repeat every " +
            std::to_string(SL_PARTITION_COLOURS) +
-           "): 0 red, 1 green, 2 blue, 3 yellow, 4 magenta, 5 cyan, 6 orange, 7 violet.",
+           "): 0 red, 1 green, 2 blue, 3 yellow, 4 magenta, 5 cyan, 6 orange, 7 violet; or "
+           "changed: the pixels whose hard shadow test flipped (lit <-> shadowed) since the "
+           "previous frame in vivid yellow (flicker, vibration; main view only).",
        .uniform = "u_overlay"},
       {.key = "view.outside",
        .label = "Outside view",
@@ -123,6 +126,10 @@ struct Targets {
   int width = 0, height = 0;
   gl::Texture position, normal, albedo, depth, hard, filtered, aliasing, texel, mapIndex, color;
   gl::Texture reference;  // R8UI reference mask of the last computeError() (error overlay)
+  /// R8UI: the previous frame's hard mask, copied before the resolve while the mask change
+  /// is counted (changed overlay, "mask.*"); `resolved`: a resolve wrote `hard` at this size.
+  gl::Texture prevHard;
+  bool resolved = false;
   gl::Framebuffer gbuffer, resolve, composite;
 };
 
@@ -148,6 +155,8 @@ struct RendererState {
   gl::Program gbufferProgram, compositeProgram;
   gl::Program aliasingStatsProgram;  ///< common/aliasing_stats.comp ("aliasing.*")
   gl::Buffer aliasingStats;          ///< its counters and histogram (SL_ALIASING_BINS)
+  gl::Program maskChangeProgram;     ///< common/mask_change.comp (changed overlay, "mask.*")
+  gl::Buffer maskChange;             ///< its two counters: compared, changed
   std::map<std::string, gl::Program> resolvePrograms;  // per lookup shader
   gl::VertexArray emptyVao;
   Targets targets;
@@ -196,6 +205,7 @@ struct RendererState {
     t.texel = gl::Texture::create2D(GL_RG32F, w, h);
     t.mapIndex = gl::Texture::create2D(GL_R8UI, w, h);
     t.reference = gl::Texture::create2D(GL_R8UI, w, h);
+    t.prevHard = gl::Texture::create2D(GL_R8UI, w, h);
     t.color = gl::Texture::create2D(GL_RGBA8, w, h);
     t.gbuffer = gl::Framebuffer::create();
     t.gbuffer.attach(GL_COLOR_ATTACHMENT0, t.position);
@@ -322,6 +332,11 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
   // 4 KiB the renderer owns from the start (not a technique's memory()).
   s_->aliasingStats = gl::Buffer::create(GLsizeiptr(sizeof(std::uint32_t) * (4 + SL_ALIASING_BINS)),
                                          nullptr, GL_DYNAMIC_STORAGE_BIT);
+  s_->maskChangeProgram =
+      gl::Program(s_->shaders,
+                  {"common/mask_change", {{GL_COMPUTE_SHADER, "common/mask_change.comp"}}, {}, {}});
+  s_->maskChange =
+      gl::Buffer::create(GLsizeiptr(2 * sizeof(std::uint32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
   {
     const gl::Program* own[] = {&s_->compositeProgram};
     const std::vector<ParamDecl> decls = rendererParamDecls();
@@ -530,6 +545,31 @@ void publishAliasingStats(RendererState& s) {
   number("aliasing.bin_octaves", h.binOctaves());
 }
 
+bool wantsMaskChange(RendererState& s, bool publishing) {
+  return s.rendererParams.getInt("view.overlay") == SL_OVERLAY_CHANGED ||
+         (publishing && (s.publication.wants("mask.changed_pixels") ||
+                         s.publication.wants("mask.compared_pixels")));
+}
+
+/// The pixels of `t`'s hard mask that differ from its copy of the previous frame's
+/// (common/mask_change.comp; CPU mirror compareConsecutiveMasks): two counters read back.
+FrameStats::MaskChangeCount countMaskChange(RendererState& s, const Targets& t) {
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(s.maskChange.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  s.maskChangeProgram.use();
+  glBindTextureUnit(SL_UNIT_HARD, t.hard.id());
+  glBindTextureUnit(SL_UNIT_PREV_HARD, t.prevHard.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_BUFFER_MASK_CHANGE, s.maskChange.id());
+  const auto groups = [](int n) {
+    return GLuint((n + SL_MASK_CHANGE_GROUP - 1) / SL_MASK_CHANGE_GROUP);
+  };
+  glDispatchCompute(groups(t.width), groups(t.height), 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::uint32_t counts[2] = {0, 0};
+  glGetNamedBufferSubData(s.maskChange.id(), 0, sizeof counts, counts);
+  return {counts[0], counts[1]};
+}
+
 /// The G-buffer pass into `t` from a camera (the main one, or the outside view's).
 void drawGBuffer(RendererState& s, Targets& t, const glm::mat4& viewProj, const glm::vec3& eye) {
   glBindFramebuffer(GL_FRAMEBUFFER, t.gbuffer.id());
@@ -609,14 +649,15 @@ void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool refe
   glBindTextureUnit(SL_UNIT_ALIASING, t.aliasing.id());
   glBindTextureUnit(SL_UNIT_TEXEL, t.texel.id());
   glBindTextureUnit(SL_UNIT_MAP_INDEX, t.mapIndex.id());
+  glBindTextureUnit(SL_UNIT_PREV_HARD, t.prevHard.id());
   bindLight(c, s.light);
   c.set("u_cameraPos", eye);
   bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
   const int overlay = s.rendererParams.getInt("view.overlay");
   if (overlay == SL_OVERLAY_ERROR && !referenceMatches)
     c.set("u_overlay", SL_OVERLAY_NONE);  // no reference of this exact view
-  if (overlay == SL_OVERLAY_ALIASING && !mainCamera)
-    c.set("u_overlay", SL_OVERLAY_NONE);  // m of the main camera's pixels only
+  if ((overlay == SL_OVERLAY_ALIASING || overlay == SL_OVERLAY_CHANGED) && !mainCamera)
+    c.set("u_overlay", SL_OVERLAY_NONE);  // m and the mask change of the main camera only
   glBindVertexArray(s.emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
@@ -745,6 +786,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
   // 2. The technique's shadow passes.
   FrameOutlines outlines;  // what the outside view draws (the technique adds its frusta)
+  std::optional<FrameStats::MaskChangeCount> maskChange;
   FrameContext ctx{*s.scene,
                    *s.sceneGpu,
                    s.camera,
@@ -772,7 +814,31 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
     // 3. Resolve: hard mask, filtered visibility, aliasing m, selected map's uv per pixel.
     auto pass = s.timer->scope("resolve");
+    // The mask change: `hard` still holds the previous frame's mask here (or nothing yet at
+    // this size: then the copy after the resolve makes the overlay empty).
+    const bool countChange = wantsMaskChange(s, publishing);
+    const bool hadFrame = t.resolved;
+    const auto copyHard = [&] {
+      glCopyImageSubData(t.hard.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.prevHard.id(), GL_TEXTURE_2D, 0,
+                         0, 0, 0, t.width, t.height, 1);
+    };
+    if (countChange && hadFrame) copyHard();
     resolveInto(s, t, /*mainCamera=*/true);
+    t.resolved = true;
+    if (countChange && !hadFrame) copyHard();
+    if (countChange && hadFrame) {
+      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      maskChange = countMaskChange(s, t);
+      if (publishing && (s.publication.wants("mask.changed_pixels") ||
+                         s.publication.wants("mask.compared_pixels")))
+        s.publication.readbackBytes += 2 * sizeof(std::uint32_t);  // the two counters
+      if (publishing) {
+        if (s.publication.wants("mask.changed_pixels"))
+          s.publication.numbers["mask.changed_pixels"] = double(maskChange->changed);
+        if (s.publication.wants("mask.compared_pixels"))
+          s.publication.numbers["mask.compared_pixels"] = double(maskChange->compared);
+      }
+    }
     // Measured aliasing statistics, only while requested (timed with the resolve).
     if (publishing && wantsAliasingStats(s.publication)) publishAliasingStats(s);
   } catch (const std::exception& e) {
@@ -820,6 +886,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   for (const PassTiming& p : s.stats.passes) s.stats.totalMs += p.ms;
   s.stats.outlines = std::move(outlines);
   s.stats.outsideCamera = outsideCamera;
+  s.stats.maskChange = maskChange;
   (void)frameStart;
   return std::nullopt;
 }
@@ -847,6 +914,22 @@ std::optional<PixelProbe> Renderer::probePixel(int x, int y) const {
   p.map = map;
   read(t.texel, GL_RG, GL_FLOAT, sizeof(glm::vec2), &p.mapUv);
   return p;
+}
+
+ImageRGBA8 Renderer::readColor() const {
+  const Targets& t = s_->targets;
+  const bool outside = s_->lastFrameOutside && s_->outsideTargets.width == t.width &&
+                       s_->outsideTargets.height == t.height;
+  ImageRGBA8 image;
+  image.width = t.width;
+  image.height = t.height;
+  if (t.width == 0) return image;
+  image.pixels.resize(size_t(t.width) * size_t(t.height) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage((outside ? s_->outsideTargets : t).color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    GLsizei(image.pixels.size()), image.pixels.data());
+  flipVertically(image);
+  return image;
 }
 
 FrameReadback Renderer::readback() const {
@@ -936,6 +1019,7 @@ std::optional<std::string> Renderer::reloadShaders() {
   note(s_->gbufferProgram.rebuild(s_->shaders));
   note(s_->compositeProgram.rebuild(s_->shaders));
   note(s_->aliasingStatsProgram.rebuild(s_->shaders));
+  note(s_->maskChangeProgram.rebuild(s_->shaders));
   note(s_->outlineProgram.rebuild(s_->shaders));
   for (auto& [name, prog] : s_->resolvePrograms) note(prog.rebuild(s_->shaders));
   if (s_->technique) note(s_->technique->reloadShaders(s_->shaders));

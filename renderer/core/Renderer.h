@@ -278,6 +278,9 @@ class Renderer {
 
   /// Reads the last frame back (positions, normals, hard mask, colour).
   FrameReadback readback() const;
+  /// Reads only the last frame's shown colour image (the main camera's, or the outside
+  /// view's while on), row 0 = top: the GUI's zoom inset.
+  ImageRGBA8 readColor() const;
   /// Reads one pixel of the last frame (x right, y down from the top row; GL current):
   /// nothing before a frame or outside it. A few bytes: cheap enough for every mouse move.
   std::optional<PixelProbe> probePixel(int x, int y) const;

@@ -14,6 +14,7 @@ layout(binding = SL_UNIT_REFERENCE) uniform usampler2D u_reference;  // Embree m
 layout(binding = SL_UNIT_ALIASING) uniform sampler2D u_aliasing;  // m per pixel
 layout(binding = SL_UNIT_TEXEL) uniform sampler2D u_texel;  // selected map's uv (through any warp)
 layout(binding = SL_UNIT_MAP_INDEX) uniform usampler2D u_mapIndex;  // selected map per pixel
+layout(binding = SL_UNIT_PREV_HARD) uniform usampler2D u_prevHard;  // last frame's hard mask
 uniform int u_overlay;  // view.overlay: SL_OVERLAY_*
 in vec2 v_uv;
 
@@ -68,6 +69,13 @@ void main() {
     c = mix(c, vec3(1.0, 0.85, 0.1), line * 0.85);
   } else if (u_overlay == SL_OVERLAY_PARTITION) {
     c = mix(c, partitionColor(texelFetch(u_mapIndex, px, 0).r), 0.55);
+  } else if (u_overlay == SL_OVERLAY_CHANGED) {
+    // The pixels common/mask_change.comp counts (CPU: compareConsecutiveMasks), in one vivid
+    // colour over the scene dimmed to grey, so that a few changed pixels stand out.
+    uint now = texelFetch(u_hard, px, 0).r, before = texelFetch(u_prevHard, px, 0).r;
+    c = vec3(dot(c, vec3(0.299, 0.587, 0.114)) * 0.6);
+    if (now != SL_MASK_EMPTY && before != SL_MASK_EMPTY && (now == SL_MASK_LIT) != (before == SL_MASK_LIT))
+      c = vec3(SL_CHANGED_COLOUR);
   }
   o_color = vec4(c, 1.0);
 }

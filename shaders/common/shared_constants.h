@@ -41,6 +41,8 @@
 #define SL_OVERLAY_ALIASING 2
 #define SL_OVERLAY_GRID 3
 #define SL_OVERLAY_PARTITION 4  // each pixel coloured by the index of the map it selected
+#define SL_OVERLAY_CHANGED 5    // pixels lit in one frame and shadowed in the next (flicker)
+#define SL_CHANGED_COLOUR 1.00, 0.95, 0.00  // the changed overlay's vivid yellow (RGB 0..1)
 #define SL_PARTITION_COLOURS 8  // distinct overlay colours (composite.frag); index mod 8
 // Their RGB (0..1): composite.frag and the Partitions panel (ui/panels/partition).
 #define SL_PARTITION_COLOUR_0 0.90, 0.20, 0.20  // red
@@ -67,6 +69,14 @@
 #define SL_ALIASING_LOG2_MIN (-16)
 #define SL_ALIASING_GROUP 16     // local_size_x/y
 #define SL_BUFFER_ALIASING_STATS 7  // SSBO binding (the renderer's, after the technique's)
+
+// --- Mask change (common/mask_change.comp, the changed overlay, the renderer's "mask.*"
+// publication; CPU mirror sl::compareConsecutiveMasks): the previous frame's hard mask is
+// copied before the resolve; pixels covered in both frames are counted, and those whose
+// lit/shadowed state differs. Buffer: compared, changed (uint).
+#define SL_UNIT_PREV_HARD 10          // last frame's hard mask (composite, mask_change.comp)
+#define SL_MASK_CHANGE_GROUP 16       // local_size_x/y
+#define SL_BUFFER_MASK_CHANGE 8       // SSBO binding
 
 // --- Cascades (techniques/cascades, shaders/cascades).
 #define SL_CASCADE_BUFFER_DEPTH_RANGE 0  // min, max view depth (float bits as uint)

@@ -24,6 +24,9 @@ std::set<std::string> allPanelKeys() {
 /// the renderer's measured aliasing statistics: their 4 KiB histogram).
 std::uint64_t heldBytes(const Publication& pub) {
   std::uint64_t bytes = pub.numbers.count("aliasing.max") ? 4u * (4u + SL_ALIASING_BINS) : 0u;
+  // The mask change's two counters (mask.*), read back whenever one of its keys is published.
+  if (pub.numbers.count("mask.changed_pixels") || pub.numbers.count("mask.compared_pixels"))
+    bytes += 8u;
   for (const auto& [key, image] : pub.images) bytes += 4ull * image.values.size();
   for (const auto& [key, curve] : pub.curves) bytes += 4ull * curve.size();
   return bytes;

@@ -151,6 +151,29 @@ QString formatValue(double v) {
   return QString::number(v, 'g', 4);
 }
 
+QString formatTick(double v, double span) {
+  if (!std::isfinite(v)) return QStringLiteral("%1").arg(v);
+  span = std::abs(span);
+  if (span > 0.0 && std::abs(v) < span * 1e-3) return QStringLiteral("0");
+  QString text;
+  const double a = std::abs(v);
+  if (a >= 1e5 || (a < 1e-3 && a > 0.0)) {
+    text = QString::number(v, 'e', 2);
+  } else {
+    // Enough decimals to tell neighbouring ticks (span / 4 apart) by two digits.
+    const double step = span > 0.0 ? span / 4.0 : a;
+    const int decimals = step > 0.0 ? std::clamp(1 - int(std::floor(std::log10(step))), 0, 6) : 3;
+    text = QString::number(v, 'f', decimals);
+    if (text.contains(QLatin1Char('.'))) {  // no trailing zeros: "0.5", not "0.500"
+      while (text.endsWith(QLatin1Char('0'))) text.chop(1);
+      if (text.endsWith(QLatin1Char('.'))) text.chop(1);
+    }
+    if (text == QLatin1String("-0")) text = QStringLiteral("0");
+  }
+  text.replace(QLatin1Char('-'), QChar(0x2212));
+  return text;
+}
+
 sl::FloatImage displayCopy(const sl::FloatImage& image, int maxTexels) {
   const int step =
       std::max(1, (std::max(image.width, image.height) + maxTexels - 1) / std::max(1, maxTexels));
@@ -245,12 +268,20 @@ void ImageView::resetZoom() {
   update();
 }
 
+QString ImageView::legendTick(float t) const {
+  // A log scale's ticks are rounded by their own size (span 0), a linear one's by the span.
+  const double span = legendRange_.log
+                          ? 0.0
+                          : double(legendRange_.denormalize(1.0f) - legendRange_.denormalize(0.0f));
+  return formatTick(legendRange_.denormalize(t), span);
+}
+
 int ImageView::legendWidth() const {
   if (!legend_) return 0;
   const QFontMetrics fm = fontMetrics();
   int w = fm.horizontalAdvance(legendTitle_);
   for (int i = 0; i < 5; ++i)  // bar (26 px) + tick label
-    w = std::max(w, 26 + fm.horizontalAdvance(formatValue(legendRange_.denormalize(i / 4.0f))));
+    w = std::max(w, 26 + fm.horizontalAdvance(legendTick(i / 4.0f)));
   return std::min(w + 6, kMaxLegendWidth);
 }
 
@@ -321,7 +352,7 @@ void ImageView::paintEvent(QPaintEvent*) {
         const double y = bar.bottom() - t * bar.height();
         p.drawLine(QPointF(bar.right(), y), QPointF(bar.right() + 3, y));
         p.drawText(QRectF(bar.right() + 5, y - line / 2.0, legendW - 26, line),
-                   Qt::AlignLeft | Qt::AlignVCenter, formatValue(legendRange_.denormalize(t)));
+                   Qt::AlignLeft | Qt::AlignVCenter, legendTick(t));
       }
       p.drawText(QRectF(area.right() + 4, area.top(), legendW - 4, line),
                  Qt::AlignLeft | Qt::AlignVCenter,
@@ -532,13 +563,14 @@ void PlotWidget::paintEvent(QPaintEvent*) {
     p.drawLine(QPointF(toX(x), a.top()), QPointF(toX(x), a.bottom()));
     p.setPen(pal.color(QPalette::PlaceholderText));
     p.drawText(QRectF(toX(x) - 40, a.bottom() + 2, 80, line), Qt::AlignHCenter | Qt::AlignTop,
-               formatValue(std::abs(x) < xs * 1e-6 ? 0.0 : x));
+               formatTick(x, 4.0 * xs));
   }
   std::vector<double> yTicks;
+  double ys = 0.0;  ///< linear y: the tick step
   if (logY_) {
     for (double y = r.y0; y <= r.y1 * 1.0001; y *= 10) yTicks.push_back(y);
   } else {
-    const double ys = niceStep(r.y1 - r.y0, std::max(2, int(a.height() / 40)));
+    ys = niceStep(r.y1 - r.y0, std::max(2, int(a.height() / 40)));
     for (double y = std::ceil(r.y0 / ys) * ys; y <= r.y1 + ys * 1e-6; y += ys)
       yTicks.push_back(std::abs(y) < ys * 1e-6 ? 0.0 : y);
   }
@@ -546,8 +578,10 @@ void PlotWidget::paintEvent(QPaintEvent*) {
     p.setPen(grid);
     p.drawLine(QPointF(a.left(), toY(y)), QPointF(a.right(), toY(y)));
     p.setPen(pal.color(QPalette::PlaceholderText));
-    const QString label =
-        logY_ ? QStringLiteral("1e%1").arg(std::lround(std::log10(y))) : formatValue(y);
+    const QString label = logY_ ? QStringLiteral("1e%1")
+                                      .arg(std::lround(std::log10(y)))
+                                      .replace(QLatin1Char('-'), QChar(0x2212))
+                                : formatTick(y, 4.0 * ys);
     p.drawText(QRectF(0, toY(y) - line / 2.0, a.left() - 4, line),
                Qt::AlignRight | Qt::AlignVCenter, label);
   }

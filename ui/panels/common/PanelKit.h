@@ -61,6 +61,10 @@ sl::FloatImage displayCopy(const sl::FloatImage& image, int maxTexels);
 
 /// "0.0123", "1.23e+05": four significant digits.
 QString formatValue(double v);
+/// A colour-bar or axis tick of a scale spanning `span`: rounded to the digits that step
+/// (span / 4) needs, a value within span / 1000 of zero as "0", and a minus that reads as
+/// one (U+2212, not a hyphen): "−0.02", not "-0.0218".
+QString formatTick(double v, double span);
 
 /// Text for a panel whose data (`keys`) the current technique does not publish, naming
 /// the techniques that declare them.
@@ -98,6 +102,9 @@ class ImageView : public QWidget {
   /// Back to "fit to view".
   void resetZoom();
 
+  /// Where the image was drawn last (widget pixels, zoom and pan applied); empty without one.
+  QRectF shownImageRect() const { return image_.isNull() ? QRectF() : imageRect(); }
+
   QSize sizeHint() const override { return {320, 300}; }
   QSize minimumSizeHint() const override { return {120, 110}; }
 
@@ -111,9 +118,10 @@ class ImageView : public QWidget {
   void leaveEvent(QEvent* event) override;
 
  private:
-  int legendWidth() const;   ///< 0 without a legend
-  QRectF viewArea() const;   ///< the part of the widget available to the image
-  QRectF imageRect() const;  ///< where the image lies, zoom and pan applied
+  int legendWidth() const;            ///< 0 without a legend
+  QString legendTick(float t) const;  ///< the colour bar's label at t in [0, 1]
+  QRectF viewArea() const;            ///< the part of the widget available to the image
+  QRectF imageRect() const;           ///< where the image lies, zoom and pan applied
 
   QImage image_;
   int texelsW_ = 0, texelsH_ = 0;

@@ -98,6 +98,9 @@ void ShadowMapPanel::showPublication(const sl::Publication& pub) {
                          .arg(sm->second.height)
                    : tr("Shadow map %1×%2").arg(sm->second.width).arg(sm->second.height));
   auto uni = pub.images.find("shadow map.uniform");
+  // A map that does not warp takes the whole panel (a projector's big panel): no empty
+  // "unwarped" half beside it.
+  uniform_->setVisible(warped || (uni != pub.images.end() && uni->second.width > 0));
   if (uni != pub.images.end() && uni->second.width > 0) {
     showDepth(uniform_, uni->second,
               tr("Unwarped (uniform) map %1×%2, warped texel grid pulled back")
@@ -114,7 +117,9 @@ void ShadowMapPanel::showPublication(const sl::Publication& pub) {
                              "cells = many texels spent there. Right: the warped map's texel "
                              "columns and rows, crowding where importance is high.")
                               .arg(kGridLines)
-                        : tr("A uniform map spends its texels evenly over the light frustum."));
+                        : tr("A uniform map spends its texels evenly over the light frustum "
+                             "(it does not warp: RTW techniques show their unwarped map beside "
+                             "the warped one)."));
   drawn_ = {{QStringLiteral("width"), sm->second.width},
             {QStringLiteral("height"), sm->second.height},
             {QStringLiteral("warped"), warped},

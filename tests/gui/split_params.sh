@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The split view's own parameters (issue 15): the right half's resolution edited in its own
+# panel changes its memory and error and not the left half's; "equal memory" picks the
+# largest right resolution within the left half's bytes (one step more spends more), and
+# matches again when the left side's memory changes. PNG in <out>/split_params.
+# usage: split_params.sh <shadowlab> <tests/data dir> <out dir>
+set -euo pipefail
+app=$1
+out=$3/split_params
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/xvfb.bash"
+rm -rf "$out" && mkdir -p "$out"
+start_xvfb
+
+rc=0
+timeout 240 "$app" --scene default --technique uniform --set resolution=1024 \
+  --self-test "split-params=$out" >"$out/stdout" 2>"$out/stderr" || rc=$?
+cat "$out/stdout"
+if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/stdout"; then
+  echo "FAIL: self-test split-params exited with $rc; stderr:"
+  cat "$out/stderr"
+  exit 1
+fi
+echo "PASS"

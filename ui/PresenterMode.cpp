@@ -1,0 +1,141 @@
+// Presenter mode (see PresenterMode.h).
+#include "PresenterMode.h"
+
+#include <algorithm>
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDockWidget>
+#include <QLayout>
+#include <QMenu>
+#include <QScreen>
+
+#include "MainWindow.h"
+#include "Theme.h"
+#include "ViewportWidget.h"
+#include "core/Renderer.h"
+
+namespace sl::ui {
+
+namespace {
+constexpr int kStateVersion = 0x5e55;  ///< saveState/restoreState tag of the saved layout
+}
+
+PresenterMode::PresenterMode(MainWindow& window) : QObject(&window), w_(window) {}
+
+void PresenterMode::createActions(QMenu* view) {
+  action_ = view->addAction(tr("&Presenter mode (large fonts, high contrast, one big panel)"));
+  action_->setObjectName(QStringLiteral("presenterAction"));
+  action_->setCheckable(true);
+  action_->setShortcut(Qt::Key_F11);
+  action_->setShortcutContext(Qt::ApplicationShortcut);
+  action_->setToolTip(
+      tr("For a projector: fonts scaled to the screen, white on black, the window filling the "
+         "screen, one panel beside the view as large as it fits, a ring around the pointer "
+         "(F11)"));
+  connect(action_, &QAction::toggled, this, &PresenterMode::setActive);
+  panelMenu_ = view->addMenu(tr("Presenter &panel"));
+  panelMenu_->setObjectName(QStringLiteral("presenterPanelMenu"));
+  connect(panelMenu_, &QMenu::aboutToShow, this, [this] {
+    panelMenu_->clear();
+    auto* group = new QActionGroup(panelMenu_);
+    auto add = [&](const QString& title, const QString& name) {
+      QAction* a = panelMenu_->addAction(title, this, [this, name] { choosePanel(name); });
+      a->setCheckable(true);
+      a->setChecked(chosen_ == name);
+      group->addAction(a);
+    };
+    add(tr("Automatic (the lesson's, else the first showing this technique)"), QString());
+    for (const PublicationDocks::Dock& d : w_.docks_.docks())
+      add(d.dock->windowTitle(), d.dock->objectName());
+  });
+}
+
+QDockWidget* PresenterMode::bigDock() const {
+  return active_ ? big_.data() : nullptr;
+}
+
+void PresenterMode::choosePanel(const QString& dockName) {
+  chosen_ = dockName;
+  if (active_) arrangeDocks();
+}
+
+QDockWidget* PresenterMode::pickBigDock() const {
+  for (const PublicationDocks::Dock& d : w_.docks_.docks())
+    if (!chosen_.isEmpty() && d.dock->objectName() == chosen_) return d.dock;
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(w_.viewport_->techniqueId());
+  if (info)
+    if (QDockWidget* dock = w_.docks_.firstShowing(*info)) return dock;
+  return w_.lessonDock_;
+}
+
+void PresenterMode::setActive(bool on) {
+  if (on == active_) return;
+  auto* app = qobject_cast<QApplication*>(QCoreApplication::instance());
+  if (on) {
+    savedState_ = w_.saveState(kStateVersion);
+    savedGeometry_ = w_.saveGeometry();
+    savedMaximized_ = w_.isMaximized();
+    savedFont_ = QApplication::font();
+    const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+    const double dpi = screen ? screen->logicalDotsPerInch() : 96.0;
+    const int px = presenterBodyPixelSize(screen ? screen->size() : QSize(1920, 1080), dpi);
+    if (app) applyPresenterTheme(*app, px, dpi);
+    active_ = true;
+    w_.rebuildParamPanel();  // its titles scale the font they were built with
+    // The docks first: with every dock shown at the large font the window's minimum may be
+    // larger than the screen. Then the screen's geometry (a window manager-less X server,
+    // e.g. Xvfb, ignores the full-screen request), full screen, the big panel's width.
+    arrangeDocks();
+    if (screen) w_.setGeometry(screen->geometry());
+    w_.showFullScreen();
+    sizeBigDock();
+    w_.viewport_->setPointerHighlight(true);
+  } else {
+    active_ = false;
+    w_.viewport_->setPointerHighlight(false);
+    if (app) {
+      applyTheme(*app);
+      QApplication::setFont(savedFont_);
+    }
+    w_.showNormal();
+    w_.restoreGeometry(savedGeometry_);
+    w_.restoreState(savedState_, kStateVersion);
+    w_.rebuildParamPanel();
+    if (savedMaximized_) w_.showMaximized();
+    big_.clear();
+  }
+  if (action_ && action_->isChecked() != on) action_->setChecked(on);
+  w_.updatePublishing();
+  w_.viewport_->update();
+}
+
+void PresenterMode::arrangeDocks() {
+  big_ = pickBigDock();
+  // Everything but the big panel hidden; the Lesson and Parameters tabbed behind it (a
+  // lecturer's notes and knobs, one click away).
+  for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) {
+    dock->setFloating(false);
+    if (dock != big_) dock->hide();
+  }
+  if (!big_) return;
+  w_.addDockWidget(Qt::RightDockWidgetArea, big_);
+  big_->show();
+  for (QDockWidget* behind : {w_.lessonDock_, w_.paramDock_}) {
+    if (!behind || behind == big_) continue;
+    w_.addDockWidget(Qt::RightDockWidgetArea, behind);
+    w_.tabifyDockWidget(big_, behind);
+    behind->show();
+  }
+  big_->raise();
+  w_.layout()->invalidate();
+  w_.layout()->activate();
+  sizeBigDock();
+}
+
+void PresenterMode::sizeBigDock() {
+  if (big_) w_.resizeDocks({big_}, {int(w_.width() * kPanelShare)}, Qt::Horizontal);
+}
+
+}  // namespace sl::ui

@@ -1,0 +1,59 @@
+// Presenter mode (F11, View > Presenter mode, --presenter): the window for a projector.
+// Fonts scaled to the screen (Theme: presenterBodyPixelSize), the high-contrast theme, the
+// window filling the screen, ONE big publication panel beside the view (the one the user
+// picked in View > Presenter panel, else the first visible panel that shows the technique's
+// data; the Lesson and Parameters tabbed behind it, every other dock hidden), a ring
+// following the pointer over the view. Leaving it restores font, theme, docks and geometry.
+#pragma once
+
+#include <QByteArray>
+#include <QFont>
+#include <QObject>
+#include <QPointer>
+#include <QString>
+
+class QAction;
+class QDockWidget;
+class QMenu;
+
+namespace sl::ui {
+
+class MainWindow;
+
+class PresenterMode : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit PresenterMode(MainWindow& window);
+
+  /// Adds "Presenter mode" (F11) and the "Presenter panel" choice to `view`.
+  void createActions(QMenu* view);
+  QAction* action() const { return action_; }
+
+  bool active() const { return active_; }
+  void setActive(bool on);
+
+  /// The big panel's dock while active (null otherwise or when no panel applies).
+  QDockWidget* bigDock() const;
+  /// The user's choice of big panel (by dock object name; empty: automatic).
+  void choosePanel(const QString& dockName);
+  /// Share of the window's width the big panel takes.
+  static constexpr double kPanelShare = 0.42;
+
+ private:
+  void arrangeDocks();
+  void sizeBigDock();
+  QDockWidget* pickBigDock() const;
+
+  MainWindow& w_;
+  QAction* action_ = nullptr;
+  QMenu* panelMenu_ = nullptr;
+  bool active_ = false;
+  QString chosen_;  ///< View > Presenter panel (dock object name), empty: automatic
+  QPointer<QDockWidget> big_;
+  QByteArray savedState_, savedGeometry_;
+  QFont savedFont_;
+  bool savedMaximized_ = false;
+};
+
+}  // namespace sl::ui

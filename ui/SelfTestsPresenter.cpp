@@ -1,0 +1,371 @@
+// The presenter-mode and split-parameter self-tests (see SelfTests.h). presenter[=DIR] turns
+// presenter mode on
+// through its action (F11) when --presenter did not, and checks what a lecturer relies on at
+// the screen's size: the window fits, body text is large, one panel's image is large, the
+// changed (flicker) overlay draws exactly the pixels the renderer counted, the pointer ring
+// and the zoom inset are drawn; colour-bar ticks read as numbers. split-params[=DIR] edits the
+// split view's own resolution in its panel and checks "equal memory". PNGs into DIR.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFontInfo>
+#include <QLabel>
+#include <QLocale>
+#include <QMouseEvent>
+#include <QScreen>
+#include <QSpinBox>
+
+#include "MainWindow.h"
+#include "PresenterMode.h"
+#include "SelfTests.h"
+#include "SplitSideParams.h"
+#include "TeachingBar.h"
+#include "Theme.h"
+#include "ViewportWidget.h"
+#include "common/shared_constants.h"
+#include "panels/common/PanelKit.h"
+#include "panels/common/ParamPanel.h"
+
+namespace sl::ui {
+
+namespace {
+
+bool isChangedColour(QRgb c) {
+  const float k[3] = {SL_CHANGED_COLOUR};
+  return qRed(c) == std::lround(k[0] * 255.0f) && qGreen(c) == std::lround(k[1] * 255.0f) &&
+         qBlue(c) == std::lround(k[2] * 255.0f);
+}
+
+/// A mouse event sent straight to `target` (widget pixels).
+void sendMouse(QWidget* target, QEvent::Type type, const QPoint& at, Qt::MouseButton button,
+               Qt::MouseButtons buttons, Qt::KeyboardModifiers mods) {
+  QMouseEvent e(type, QPointF(at), target->mapToGlobal(QPointF(at)), button, buttons, mods);
+  QCoreApplication::sendEvent(target, &e);
+}
+
+}  // namespace
+
+bool SelfTests::presenter(const QString& dir) {
+  if (!dir.isEmpty()) QDir().mkpath(dir);
+  ViewportWidget* v = w_.viewport_;
+  const bool fromCommandLine = w_.presenter_->active();
+  if (!fromCommandLine) w_.presenter_->action()->trigger();  // what F11 does
+  check(w_.presenter_->active(),
+        tr("presenter mode is on (%1)")
+            .arg(fromCommandLine ? QStringLiteral("--presenter")
+                                 : QStringLiteral("View > Presenter mode")));
+  for (int i = 0; i < 10; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+  w_.waitForFrames(3);
+
+  // 1. The window fits the screen.
+  const QScreen* screen = w_.screen();
+  if (!screen) {
+    check(false, tr("the window has a screen"));
+    return false;
+  }
+  const QRect sr = screen->geometry();
+  const QRect frame = w_.frameGeometry();
+  check(sr.contains(frame) && frame.width() <= sr.width() && frame.height() <= sr.height(),
+        tr("the window (%1x%2 at %3,%4, minimum %7x%8) fits the %5x%6 screen")
+            .arg(frame.width())
+            .arg(frame.height())
+            .arg(frame.x())
+            .arg(frame.y())
+            .arg(sr.width())
+            .arg(sr.height())
+            .arg(w_.minimumSizeHint().width())
+            .arg(w_.minimumSizeHint().height()));
+  check(frame.width() >= sr.width() * 9 / 10 && frame.height() >= sr.height() * 9 / 10,
+        tr("the window fills the screen (%1x%2)").arg(frame.width()).arg(frame.height()));
+
+  // 2. Body text: at least 22 px at 1920x1080, in proportion on smaller screens.
+  const double scale = std::min(sr.width() / 1920.0, sr.height() / 1080.0);
+  const int wantedPx = int(std::ceil(22.0 * scale));
+  const int appPx = QFontInfo(QApplication::font()).pixelSize();
+  const int statusPx = QFontInfo(w_.errorLabel_->font()).pixelSize();
+  check(appPx >= wantedPx && statusPx >= wantedPx,
+        tr("body text %1 px (status line %2 px) >= %3 px (22 px x %4)")
+            .arg(appPx)
+            .arg(statusPx)
+            .arg(wantedPx)
+            .arg(scale, 0, 'f', 3));
+  check(QApplication::palette().color(QPalette::Window).lightness() < 30 &&
+            QApplication::palette().color(QPalette::WindowText).lightness() > 240,
+        tr("high contrast: text lightness %1 on %2")
+            .arg(QApplication::palette().color(QPalette::WindowText).lightness())
+            .arg(QApplication::palette().color(QPalette::Window).lightness()));
+
+  // 3. One big panel beside the view, its image as large as the space allows.
+  QDockWidget* big = w_.presenter_->bigDock();
+  int visibleDocks = 0;
+  for (QDockWidget* d : w_.findChildren<QDockWidget*>())
+    if (d->isVisible() && !d->visibleRegion().isEmpty()) ++visibleDocks;
+  check(big && big->isVisible() && visibleDocks == 1,
+        tr("one panel shown: %1 (%2 dock(s) in view)")
+            .arg(big ? big->windowTitle() : QStringLiteral("none"))
+            .arg(visibleDocks));
+  double imageSide = 0.0;
+  if (big)
+    for (ImageView* iv : big->findChildren<ImageView*>())
+      if (iv->isVisible() && iv->hasImage()) {
+        const QRectF r = iv->shownImageRect();
+        imageSide = std::max(imageSide, std::min(r.width(), r.height()));
+      }
+  const double wantedSide = 0.35 * sr.height();
+  check(imageSide >= wantedSide, tr("the big panel's image is %1 px square (>= 35 % of the "
+                                    "screen's height, %2 px)")
+                                     .arg(imageSide, 0, 'f', 0)
+                                     .arg(wantedSide, 0, 'f', 0));
+
+  // 4. The changed (flicker) overlay: the light turns a little, one frame is rendered;
+  // the vivid pixels of the view are exactly the renderer's count.
+  sl::Renderer* r = v->renderer();
+  if (auto e = r->rendererParams().setFromString("view.overlay", "changed")) {
+    check(false, QString::fromStdString(*e));
+    return false;
+  }
+  w_.teaching_->syncOverlayCombo();
+  w_.setPaused(true);
+  w_.stepFrame();
+  w_.waitForFrames(1);
+  sl::Light light = v->light();
+  light.azimuthDeg += 0.5f;
+  v->setLight(light);
+  w_.stepFrame();
+  w_.waitForFrames(1);
+  v->makeCurrent();
+  const QImage rendered = v->renderedImage();
+  v->doneCurrent();
+  const auto counted = r->stats().maskChange;
+  std::uint64_t vivid = 0;
+  for (int y = 0; y < rendered.height(); ++y)
+    for (int x = 0; x < rendered.width(); ++x) vivid += isChangedColour(rendered.pixel(x, y));
+  if (!dir.isEmpty())  // the view with the changed pixels, for a look
+    v->grabView().save(QDir(dir).filePath(
+        QStringLiteral("presenter-%1x%2-changed.png").arg(sr.width()).arg(sr.height())));
+  check(counted && counted->changed > 0 && vivid == counted->changed,
+        tr("changed overlay: %1 vivid pixels drawn, the renderer counted %2 (of %3)")
+            .arg(vivid)
+            .arg(counted ? qlonglong(counted->changed) : -1)
+            .arg(counted ? qlonglong(counted->compared) : -1));
+
+  // 5. The pointer ring follows the mouse over the view.
+  const QPoint at(v->width() / 3, v->height() / 3);
+  sendMouse(v, QEvent::MouseMove, at, Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+  QImage shown = v->grabView();
+  const double dpr = shown.devicePixelRatio();
+  int ringPixels = 0;
+  const QColor ring(255, 40, 200);
+  for (int y = 0; y < shown.height(); ++y)
+    for (int x = 0; x < shown.width(); ++x) {
+      const QColor c = shown.pixelColor(x, y);
+      if (std::abs(c.red() - ring.red()) < 30 && std::abs(c.green() - ring.green()) < 30 &&
+          std::abs(c.blue() - ring.blue()) < 30 &&
+          std::hypot(x / dpr - at.x(), y / dpr - at.y()) < 80)
+        ++ringPixels;
+    }
+  check(
+      v->pointerHighlight() && ringPixels > 40,
+      tr("pointer ring drawn around (%1, %2): %3 pixels").arg(at.x()).arg(at.y()).arg(ringPixels));
+
+  // 6. The zoom inset: Ctrl+Shift+drag over an area, drawn magnified (nearest neighbour)
+  // in the corner.
+  const Qt::KeyboardModifiers zoomMods = Qt::ControlModifier | Qt::ShiftModifier;
+  const QPoint a(v->width() / 5, v->height() / 4), b(a + QPoint(48, 30));
+  sendMouse(v, QEvent::MouseButtonPress, a, Qt::LeftButton, Qt::LeftButton, zoomMods);
+  sendMouse(v, QEvent::MouseMove, b, Qt::NoButton, Qt::LeftButton, zoomMods);
+  sendMouse(v, QEvent::MouseButtonRelease, b, Qt::LeftButton, Qt::NoButton, zoomMods);
+  w_.stepFrame();
+  w_.waitForFrames(1);
+  const QRect area = v->zoomArea().value_or(QRect());
+  const QRect inset = v->zoomInsetRect();
+  const int factor = v->zoomFactor();
+  check(area == QRect(a, b).normalized() && factor >= 2 && !inset.isEmpty(),
+        tr("zoom inset of %1x%2 at %3,%4: x%5 at %6,%7")
+            .arg(area.width())
+            .arg(area.height())
+            .arg(area.x())
+            .arg(area.y())
+            .arg(factor)
+            .arg(inset.x())
+            .arg(inset.y()));
+  if (factor >= 2 && !inset.isEmpty()) {
+    v->makeCurrent();
+    const QImage source = v->renderedImage();
+    v->doneCurrent();
+    shown = v->grabView();
+    // Each source pixel's block centre in the inset has that pixel's colour (device pixels
+    // equal widget pixels under Xvfb; the test samples where both agree).
+    int sampled = 0, same = 0;
+    for (int sy = 0; sy < area.height(); sy += 3)
+      for (int sx = 0; sx < area.width(); sx += 3) {
+        const QPoint src(area.x() + sx, area.y() + sy);
+        const QPoint dst(inset.x() + sx * factor + factor / 2,
+                         inset.y() + sy * factor + factor / 2);
+        if (!source.rect().contains(src * dpr) || !shown.rect().contains(dst * dpr)) continue;
+        ++sampled;
+        same += source.pixel(src * dpr) == shown.pixel(dst * dpr);
+      }
+    check(sampled > 50 && same == sampled,
+          tr("the inset repeats the area's pixels: %1 of %2 samples equal").arg(same).arg(sampled));
+  }
+
+  // 7. Colour-bar and axis ticks read as numbers: a true minus, no noise digits.
+  const QChar minus(0x2212);
+  check(formatTick(-0.0218, 1.0) == QString(minus) + QStringLiteral("0.02") &&
+            formatTick(1e-7, 2.0) == QStringLiteral("0") &&
+            formatTick(-2.5, 10.0) == QString(minus) + QStringLiteral("2.5") &&
+            formatTick(0.5, 1.0) == QStringLiteral("0.5") &&
+            !formatTick(-0.001, 0.0).contains(QLatin1Char('-')),
+        tr("ticks: %1, %2, %3, %4, %5")
+            .arg(formatTick(-0.0218, 1.0), formatTick(1e-7, 2.0), formatTick(-2.5, 10.0),
+                 formatTick(0.5, 1.0), formatTick(-0.001, 0.0)));
+
+  if (!dir.isEmpty()) {
+    const QString name = QStringLiteral("presenter-%1x%2").arg(sr.width()).arg(sr.height());
+    const bool saved = w_.grab().save(QDir(dir).filePath(name + QStringLiteral(".png"))) &&
+                       shown.save(QDir(dir).filePath(name + QStringLiteral("-view.png")));
+    check(saved, tr("saved %1.png and %1-view.png into %2").arg(name, dir));
+  }
+
+  // 8. Off again: the normal font and theme come back.
+  w_.presenter_->action()->trigger();
+  QCoreApplication::processEvents();
+  check(!w_.presenter_->active() && QFontInfo(QApplication::font()).pixelSize() < appPx,
+        tr("presenter mode off: body text back to %1 px")
+            .arg(QFontInfo(QApplication::font()).pixelSize()));
+  return true;
+}
+
+bool SelfTests::splitParams(const QString& dir) {
+  if (!dir.isEmpty()) QDir().mkpath(dir);
+  ViewportWidget* v = w_.viewport_;
+  sl::Renderer* main = v->renderer();
+  const std::string other = "rtw-backward";
+  w_.teaching_->setSplitTechnique(QString::fromStdString(other));  // as "Compare with" does
+  if (v->splitTechnique() != other) {
+    check(false, tr("the split view shows %1").arg(QString::fromStdString(other)));
+    return false;
+  }
+  w_.paramDock_->show();
+  w_.paramDock_->raise();
+  v->setFixedSize(640, 400);  // the same frame size for every measurement
+  QCoreApplication::processEvents();
+  w_.waitForFrames(3);
+  SplitSideParams& side = *w_.splitSide_;
+  auto* spin = side.panel()->findChild<QSpinBox*>(QStringLiteral("param:resolution"));
+  check(side.panel()->isVisible() && spin,
+        tr("the Parameters dock shows the right half's parameters (%1)")
+            .arg(QString::fromStdString(other)));
+  if (!spin) return false;
+  sl::Renderer* split = v->splitRenderer();
+  if (!split) {
+    check(false, tr("the split renderer exists"));
+    return false;
+  }
+
+  // 1. The right half's resolution edited in its own panel: its memory and error change,
+  // the left half's do not.
+  const auto mainErrBefore = v->computeErrorNow();
+  const auto splitErrBefore = v->splitErrorPct();
+  const std::uint64_t mainBytesBefore = main->stats().memory.bytes();
+  const std::uint64_t splitBytesBefore = split->stats().memory.bytes();
+  const int before = spin->value();
+  const int edited = before / 2;
+  spin->setValue(edited);
+  QCoreApplication::processEvents();
+  w_.waitForFrames(2);
+  const auto mainErrAfter = v->computeErrorNow();
+  const auto splitErrAfter = v->splitErrorPct();
+  const std::uint64_t mainBytesAfter = main->stats().memory.bytes();
+  const std::uint64_t splitBytesAfter = split->stats().memory.bytes();
+  check(split->params().get("resolution") == edited && main->params().get("resolution") != edited,
+        tr("right resolution %1 -> %2 (left stays %3)")
+            .arg(before)
+            .arg(split->params().get("resolution"))
+            .arg(main->params().get("resolution")));
+  check(splitBytesAfter < splitBytesBefore && mainBytesAfter == mainBytesBefore,
+        tr("memory: right %1 -> %2 B, left %3 -> %4 B")
+            .arg(splitBytesBefore)
+            .arg(splitBytesAfter)
+            .arg(mainBytesBefore)
+            .arg(mainBytesAfter));
+  check(mainErrBefore && mainErrAfter && std::abs(*mainErrBefore - *mainErrAfter) <= 1e-9 &&
+            splitErrBefore && splitErrAfter && *splitErrBefore != *splitErrAfter,
+        tr("error: right %1 % -> %2 %, left %3 % -> %4 %")
+            .arg(splitErrBefore.value_or(-1), 0, 'f', 4)
+            .arg(splitErrAfter.value_or(-1), 0, 'f', 4)
+            .arg(mainErrBefore.value_or(-1), 0, 'f', 4)
+            .arg(mainErrAfter.value_or(-1), 0, 'f', 4));
+  check(v->splitParams().at("resolution") == std::to_string(edited),
+        tr("the session's split parameters follow the panel (resolution=%1)")
+            .arg(QString::fromStdString(v->splitParams().at("resolution"))));
+
+  // 2. Equal memory: the largest right resolution within the left half's bytes; one step
+  // more spends more.
+  auto checkEqualMemory = [&](const QString& when) {
+    w_.waitForFrames(2);
+    const std::uint64_t mainBytes = main->stats().memory.bytes();
+    const std::uint64_t splitBytes = split->stats().memory.bytes();
+    const int value = int(split->params().get("resolution"));
+    const sl::ParamDecl* decl = nullptr;
+    for (const sl::ParamDecl& d : split->params().decls())
+      if (d.key == "resolution") decl = &d;
+    check(splitBytes <= mainBytes &&
+              side.bytesText().contains(QLocale().toString(qulonglong(mainBytes))) &&
+              side.bytesText().contains(QLocale().toString(qulonglong(splitBytes))),
+          tr("%1: right %2 B at resolution %3 <= left %4 B (%5 %), both shown")
+              .arg(when)
+              .arg(splitBytes)
+              .arg(value)
+              .arg(mainBytes)
+              .arg(100.0 * double(splitBytes) / double(mainBytes), 0, 'f', 1));
+    if (!decl || value + decl->step > decl->maxValue) return;
+    // One step more (measured with a frame, then back): over the budget.
+    spin->setValue(value + int(decl->step));
+    QCoreApplication::processEvents();
+    w_.waitForFrames(1);
+    const std::uint64_t over = split->stats().memory.bytes();
+    check(over > mainBytes, tr("%1: one step more (%2) spends %3 B > %4 B")
+                                .arg(when)
+                                .arg(value + int(decl->step))
+                                .arg(over)
+                                .arg(mainBytes));
+  };
+  side.equalMemoryBox()->setChecked(true);
+  checkEqualMemory(tr("equal memory"));
+  // The left side's memory changes: matched again (the toggle stays on).
+  side.equalMemoryBox()->setChecked(false);
+  if (auto e = main->params().set("resolution", main->params().get("resolution") / 2)) {
+    check(false, QString::fromStdString(*e));
+    return false;
+  }
+  w_.paramPanel_->refreshValues();
+  w_.waitForFrames(2);
+  side.equalMemoryBox()->setChecked(true);
+  if (auto e = main->params().set("resolution", main->params().get("resolution") * 2)) {
+    check(false, QString::fromStdString(*e));
+    return false;
+  }
+  for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+  w_.waitForFrames(3);
+  for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+  check(side.matchedMainBytes() && *side.matchedMainBytes() == main->stats().memory.bytes(),
+        tr("after the left resolution changed to %1, matched again for %2 B")
+            .arg(main->params().get("resolution"))
+            .arg(main->stats().memory.bytes()));
+  // The pending match is what the check measures (the one-step-more edit is undone by it).
+  checkEqualMemory(tr("re-matched"));
+  if (!dir.isEmpty())
+    check(w_.grab().save(QDir(dir).filePath(QStringLiteral("split-params.png"))),
+          tr("saved split-params.png into %1").arg(dir));
+  return true;
+}
+
+}  // namespace sl::ui

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -121,6 +122,12 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   std::map<std::string, std::vector<double>> passMs;
   std::vector<std::string> passOrder;
   std::vector<double> totals;
+  // The technique's published numbers (no image or curve: nothing read back for them).
+  std::set<std::string> numberKeys;
+  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r.techniqueId()))
+    for (const sl::PublicationDecl& d : info->publications)
+      if (d.kind == sl::PublicationKind::Number) numberKeys.insert(d.key);
+  r.requestPublications(numberKeys);
   for (int f = 0; f < cfg.frames; ++f) {
     if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) throw std::runtime_error(*e);
     for (const auto& p : r.stats().passes) {
@@ -154,6 +161,10 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   j["passes"] = passes;
   j["texels"] = st.memory.texels();
   j["bytes"] = st.memory.bytes();
+  json published = json::object();  // the last frame's
+  for (const auto& [k, v] : r.publication().numbers) published[k] = v;
+  j["published"] = published;
+  r.requestPublications({});
   json res = json::array();
   for (const auto& m : st.memory.resources)
     res.push_back({{"name", m.name},

@@ -130,6 +130,9 @@
 // Cap of a quantised SMTMM need (log2 texels of the whole virtual map along one axis): a
 // footprint collapsed to a line along an SM axis needs "infinite" resolution.
 #define SL_FVSM_MAX_NEED_LOG2 24
+// fvsm.need.footprint: a footprint's half extent per SM axis (sl::fvsm::FootprintMeasure)
+#define SL_FVSM_FOOTPRINT_BOX 0
+#define SL_FVSM_FOOTPRINT_CHORD 1
 #define SL_IMAGE_FVSM_SMTMM 0  // rgba32f: (sm u, sm v, need log2 u, need log2 v); need -1: empty
 
 #endif  // SL_SHARED_CONSTANTS_H

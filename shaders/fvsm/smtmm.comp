@@ -13,6 +13,7 @@ uniform ivec2 u_smtmmSize;
 uniform mat4 u_view;         // world -> eye
 uniform vec2 u_tanHalfFov;   // x, y
 uniform mat4 u_eyeToSmUv;    // eye -> the virtual map's uv (x, y; w divided)
+uniform int u_footprint;     // SL_FVSM_FOOTPRINT_BOX or _CHORD (fvsm.need.footprint)
 
 float eyeDepthAt(ivec2 p) {
   vec4 P = texelFetch(u_gPosition, p, 0);
@@ -75,14 +76,22 @@ void main() {
                   eyePosition(centre - vec2(0.5, 0.0), z - 0.5 * dzX));
   vec3 b = 0.5 * (eyePosition(centre + vec2(0.0, 0.5), z + 0.5 * dzY) -
                   eyePosition(centre - vec2(0.0, 0.5), z - 0.5 * dzY));
-  vec2 lo = vec2(1e30), hi = vec2(-1e30);
+  vec2 lo = vec2(1e30), hi = vec2(-1e30), smA = vec2(0.0), smB = vec2(0.0);
   for (int sa = -1; sa <= 1; sa += 2) {
     for (int sb = -1; sb <= 1; sb += 2) {
       vec2 c = toSmUv(p + float(sa) * a + float(sb) * b);
       lo = min(lo, c);
       hi = max(hi, c);
+      smA += 0.25 * float(sa) * c;
+      smB += 0.25 * float(sb) * c;
     }
   }
   vec2 halfExtent = 0.5 * (hi - lo);
+  if (u_footprint == SL_FVSM_FOOTPRINT_CHORD) {  // sl::fvsm::footprintHalfExtent
+    vec2 box = abs(smA) + abs(smB);
+    float det = abs(smA.x * smB.y - smA.y * smB.x);
+    float acrossU = max(abs(smA.y), abs(smB.y)), acrossV = max(abs(smA.x), abs(smB.x));
+    halfExtent = vec2(acrossU > 0.0 ? det / acrossU : box.x, acrossV > 0.0 ? det / acrossV : box.y);
+  }
   imageStore(o_smtmm, entry, vec4(uv, quantise(halfExtent.x), quantise(halfExtent.y)));
 }

@@ -17,6 +17,7 @@ assert not missing, f"missing keys {missing}"
 assert m["technique"] == "uniform" and m["params"]["resolution"] == "4096"
 assert m["size"] == [640, 360]
 assert m["texels"] == 4096 * 4096, m["texels"]
+assert isinstance(m["published"], dict), m["published"]  # the technique's numbers
 assert all("ms" in p and "method" in p for p in m["passes"]), m["passes"]
 assert m["error_pct"] < 0.5, f"error_pct {m['error_pct']}"
 assert abs(m["error_pct"] - m["false_lit_pct"] - m["false_shadow_pct"]) < 1e-9

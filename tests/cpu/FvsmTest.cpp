@@ -83,6 +83,56 @@ TEST(FvsmSmtmm, DepthSlopeSeenFromTheSide) {
   EXPECT_EQ(e.needLog2, glm::ivec2(7, 7));
 }
 
+TEST(FvsmSmtmm, FootprintBoxAndChordAlongAnAxisAreEqual) {
+  // Half edges (1/4, 0) and (0, 1/2): box = chord = (1/4, 1/2) (det 1/8 over 1/2 and 1/4).
+  const glm::dvec2 a(0.25, 0.0), b(0.0, 0.5);
+  EXPECT_EQ(footprintHalfExtent(a, b, FootprintMeasure::Box), glm::dvec2(0.25, 0.5));
+  EXPECT_EQ(footprintHalfExtent(a, b, FootprintMeasure::Chord), glm::dvec2(0.25, 0.5));
+}
+
+TEST(FvsmSmtmm, FootprintChordOfAThinDiagonalFootprint) {
+  // Long along the diagonal a = (1, 1) / 4, narrow b = (1, −1) / 64: its box is 1/4 + 1/64
+  // along both axes (need 2), its chord through the centre along u: s/4 − t/64 = 0 → s =
+  // t/16, u = t/64 + t/64, half length 1/32 (det 1/128 over 1/4) along both axes (need 5).
+  const glm::dvec2 a(0.25, 0.25), b(1.0 / 64.0, -1.0 / 64.0);
+  EXPECT_EQ(footprintHalfExtent(a, b, FootprintMeasure::Box), glm::dvec2(0.265625));
+  EXPECT_EQ(footprintHalfExtent(a, b, FootprintMeasure::Chord), glm::dvec2(1.0 / 32.0));
+  EXPECT_EQ(quantiseNeedLog2(0.265625), 2);
+  EXPECT_EQ(quantiseNeedLog2(1.0 / 32.0), 5);
+}
+
+TEST(FvsmSmtmm, FootprintChordOfAFlatFootprint) {
+  // Both edges along u (v components 0): no chord across v, u keeps the box (3/8); along v
+  // the footprint has no extent at all (det 0): the cap.
+  const glm::dvec2 a(0.25, 0.0), b(0.125, 0.0);
+  EXPECT_EQ(footprintHalfExtent(a, b, FootprintMeasure::Chord), glm::dvec2(0.375, 0.0));
+  EXPECT_EQ(quantiseNeedLog2(0.0), kMaxNeedLog2);
+}
+
+TEST(FvsmSmtmm, ChordEntryOfADiagonalLight) {
+  // The slope of DepthSlopeSeenFromTheSide seen through SM axes turned by 45°: u = (y − z) /
+  // 96 + 1/2, v = (−y − z) / 96 + 1/2. Eye half edges a = (·, −1/16, −1/2), b = (·, 7/8, 0):
+  // SM a' = (7/16, 9/16) / 96, b' = (7/8, −7/8) / 96. Box (21/16, 23/16) / 96: −log2 6.19,
+  // 6.06: needs 7, 7; chord: det (7/8) / 96² over (7/8) / 96 = 1/96 along both: −log2 6.58:
+  // needs 7, 7 (the entry's a', b' are its corners' differences: the wiring of the measure).
+  std::vector<float> d(64);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) d[std::size_t(y) * 8 + x] = float(4 + x);
+  glm::dmat4 m(0.0);
+  m[1][0] = 1.0 / 96.0;
+  m[2][0] = -1.0 / 96.0;
+  m[1][1] = -1.0 / 96.0;
+  m[2][1] = -1.0 / 96.0;
+  m[3][0] = m[3][1] = 0.5;
+  m[3][3] = 1.0;
+  const SmtmmEntry box = smtmmEntry(frame8(d), {3, 3}, m, FootprintMeasure::Box);
+  const SmtmmEntry chord = smtmmEntry(frame8(d), {3, 3}, m, FootprintMeasure::Chord);
+  ASSERT_TRUE(box.covered && chord.covered);
+  EXPECT_EQ(box.smUv, chord.smUv);
+  EXPECT_EQ(box.needLog2, glm::ivec2(7, 7));
+  EXPECT_EQ(chord.needLog2, glm::ivec2(7, 7));
+}
+
 TEST(FvsmSmtmm, TheSmallerNeighbourStepIsTaken) {
   // Flat at 4 with the light across the view: Δz = 0 collapses the footprint along u (a
   // line seen edge-on): the need is the cap. A depth discontinuity on the right (100 m)
@@ -261,6 +311,22 @@ TEST(FvsmTraversal, XiLowersEveryNeed) {
   EXPECT_THROW(traverse(p, s), std::invalid_argument);
 }
 
+TEST(FvsmTraversal, NegativeXiRaisesEveryNeed) {
+  // Root need (4, 3) (SplitsWhileTheNeedExceedsTheMaxTexture) under t_max 2^10: one leaf at
+  // the need; ξ = −2 asks for 4 times the texels per axis; below kMinXi is refused.
+  const Pyramid p = buildPyramid(handTileGrid());
+  TraversalSettings s;
+  s.maxTextureLog2 = 10;
+  s.minTextureLog2 = 0;
+  EXPECT_EQ(traverse(p, s),
+            (std::vector<Tile>{tile(0, 0, 0, 0, {4, 3}, {4, 3}, {{0, 0}, {6, 7}})}));
+  s.xi = -2;
+  EXPECT_EQ(traverse(p, s),
+            (std::vector<Tile>{tile(0, 0, 0, 0, {6, 5}, {6, 5}, {{0, 0}, {6, 7}})}));
+  s.xi = kMinXi - 1;
+  EXPECT_THROW(traverse(p, s), std::invalid_argument);
+}
+
 TEST(FvsmTraversal, TheFinestLevelStopsTheSplitAndMarksItUnmet) {
   const Pyramid p = buildPyramid(handTileGrid({6, 0}));
   TraversalSettings s;
@@ -312,6 +378,52 @@ TEST(FvsmTiles, OverlapAndScreenRectangle) {
   EXPECT_EQ(pmax, glm::ivec2(10, 5));
   tileScreenRectPixels(EntryRect{}, {4, 2}, {10, 5}, 1, pmin, pmax);
   EXPECT_EQ(pmin, pmax);
+}
+
+TEST(FvsmPublished, GridAndHistogramChannels) {
+  // handGrid's cells (FvsmGrid.MaxHistogramAndScreenRectangle), η0 = 17, η1 = 22: 6 buckets.
+  const HistogramSettings h;
+  const TileGrid g = accumulateGrid(handGrid(), {4, 2}, 2, h);
+  const std::vector<float> cells = gridChannels(g);
+  ASSERT_EQ(cells.size(), 4u * kGridChannels);
+  EXPECT_EQ(std::vector<float>(cells.begin(), cells.begin() + 5),
+            (std::vector<float>{20, 7, 4, 20, 7}));  // cell (0,0)
+  EXPECT_EQ(std::vector<float>(cells.begin() + 5, cells.begin() + 10),
+            (std::vector<float>{4, 4, 1, 4, 4}));  // cell (1,0)
+  EXPECT_EQ(std::vector<float>(cells.begin() + 10, cells.begin() + 15),
+            (std::vector<float>{23, 2, 1, 23, 2}));  // cell (0,1)
+  const std::vector<float> hist = gridHistogramChannels(g, h);
+  ASSERT_EQ(hist.size(), 4u * 12u);
+  // Cell (0,0) along u: 5, 7 (≤ 17), 18, 20; along v: four needs ≤ 17.
+  EXPECT_EQ(std::vector<float>(hist.begin(), hist.begin() + 12),
+            (std::vector<float>{2, 1, 0, 1, 0, 0, 4, 0, 0, 0, 0, 0}));
+  // Cell (0,1): u 23 (≥ η1, the last bucket), v 2.
+  EXPECT_EQ(std::vector<float>(hist.begin() + 24, hist.begin() + 36),
+            (std::vector<float>{0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 0}));
+}
+
+TEST(FvsmPublished, TileRecordsRoundTrip) {
+  const std::vector<Tile> tiles = {tile(2, 1, 1, 0, {14, 13}, {12, 12}, {{1, 0}, {2, 1}}),
+                                   tile(0, 0, 0, 0, {5, 3}, {5, 4}, EntryRect{}, true)};
+  const std::vector<float> packed = packTileRecords(tiles, TextureMode::PowerOfTwo, 12);
+  ASSERT_EQ(packed.size(), 2u * kTileRecordFloats);
+  EXPECT_EQ(
+      std::vector<float>(packed.begin(), packed.begin() + kTileRecordFloats),
+      (std::vector<float>{2, 1, 1, 0, 14, 13, 12, 12, 4096, 4096, 4096, 4096, 1, 0, 2, 1, 0}));
+  const std::vector<TileRecord> back = unpackTileRecords(packed);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[0].tile, tiles[0]);
+  EXPECT_EQ(back[0].texture, tileTexture(TextureMode::PowerOfTwo, {12, 12}, 12));
+  EXPECT_EQ(back[1].tile, tiles[1]);  // the empty rectangle survives
+  EXPECT_TRUE(back[1].tile.screen.empty());
+  EXPECT_EQ(back[1].texture.size, glm::ivec2(32, 32));  // power-of-two: the larger side
+  EXPECT_EQ(back[1].texture.viewport, glm::ivec2(32, 16));
+  EXPECT_EQ(unpackTileRecords(packTileRecords(tiles, TextureMode::ExactSize, 12))[1].texture.size,
+            glm::ivec2(32, 16));
+  EXPECT_THROW(unpackTileRecords(std::vector<float>(16, 0.0f)), std::invalid_argument);
+  std::vector<float> bad = packed;
+  bad[3] = 0.5f;
+  EXPECT_THROW(unpackTileRecords(bad), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The GUI on plane-box with fvsm: the FVSM panel draws the SMTMM's needs along both SM axes as
-# heat maps (a real picture) and the frame's kd-tree numbers (published.json: what it drew).
+# heat maps with the kd leaves' screen rectangles over them, the tile grid with the kd leaves
+# over the light's view, the neediest cell's histogram, the tiles' textures and the frame's
+# kd-tree numbers (a real picture; published.json: what it drew, checked for consistency).
 # usage: grab_fvsm.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1
@@ -25,5 +27,14 @@ import json, sys
 p = json.load(open(f"{sys.argv[1]}/fvsm/published.json"))["panels"]["fvsm"]
 assert p["tiles"] >= 1 and p["max_entry_need"] >= 1, p
 assert p["need_u"] >= 0 and p["need_v"] >= 0, p
-print(f"ok: fvsm panel: {p['tiles']:.0f} kd leaves, needs up to 2^{p['max_entry_need']:.0f}")
+# Every leaf the renderer counted is drawn over the grid, each with a screen rectangle.
+assert p["leaves_drawn"] == p["tiles"], p
+assert 1 <= p["rects_drawn"] <= p["leaves_drawn"], p
+assert p["grid_n"] == 16 and p["texture_kinds"] >= 1, p
+# The histogram drawn is a real cell's: its buckets count each of its entries once per axis.
+assert p["cell_entries"] >= 1, p
+assert p["hist_u_total"] == p["cell_entries"] == p["hist_v_total"], p
+print(f"ok: fvsm panel: {p['tiles']:.0f} kd leaves ({p['rects_drawn']:.0f} screen rectangles, "
+      f"{p['texture_kinds']:.0f} texture kinds), needs up to 2^{p['max_entry_need']:.0f}, "
+      f"cell ({p['cell_x']}, {p['cell_y']}) histogram of {p['cell_entries']:.0f} entries")
 PY

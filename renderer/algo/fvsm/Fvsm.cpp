@@ -53,7 +53,21 @@ int quantiseNeedLog2(double halfExtentUv) {
   return int(std::clamp(need, 0.0, double(kMaxNeedLog2)));
 }
 
-SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dmat4& eyeToSmUv) {
+const char* footprintMeasureName(FootprintMeasure measure) {
+  return measure == FootprintMeasure::Chord ? "chord" : "box";
+}
+
+glm::dvec2 footprintHalfExtent(glm::dvec2 a, glm::dvec2 b, FootprintMeasure measure) {
+  const glm::dvec2 box = glm::abs(a) + glm::abs(b);
+  if (measure == FootprintMeasure::Box) return box;
+  const double det = std::abs(a.x * b.y - a.y * b.x);
+  const double acrossU = std::max(std::abs(a.y), std::abs(b.y));  // the edges' extent along v
+  const double acrossV = std::max(std::abs(a.x), std::abs(b.x));
+  return {acrossU > 0.0 ? det / acrossU : box.x, acrossV > 0.0 ? det / acrossV : box.y};
+}
+
+SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dmat4& eyeToSmUv,
+                      FootprintMeasure measure) {
   SmtmmEntry e;
   const double z = view.depthAt(pixel.x, pixel.y);
   if (!(z > 0.0)) return e;
@@ -68,15 +82,19 @@ SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dma
                               eyePosition(view, centre - glm::dvec2(0.5, 0.0), z - 0.5 * dzX));
   const glm::dvec3 b = 0.5 * (eyePosition(view, centre + glm::dvec2(0.0, 0.5), z + 0.5 * dzY) -
                               eyePosition(view, centre - glm::dvec2(0.0, 0.5), z - 0.5 * dzY));
-  glm::dvec2 lo(1e300), hi(-1e300);
+  glm::dvec2 lo(1e300), hi(-1e300), smA(0.0), smB(0.0);
   for (double sa : {-1.0, 1.0}) {
     for (double sb : {-1.0, 1.0}) {
       const glm::dvec2 c = projectToSmUv(eyeToSmUv, p + sa * a + sb * b);
       lo = glm::min(lo, c);
       hi = glm::max(hi, c);
+      smA += 0.25 * sa * c;
+      smB += 0.25 * sb * c;
     }
   }
-  const glm::dvec2 half = 0.5 * (hi - lo);
+  // Box: the corners' own bounding box (exact under a projective map too).
+  const glm::dvec2 half =
+      measure == FootprintMeasure::Box ? 0.5 * (hi - lo) : footprintHalfExtent(smA, smB, measure);
   e.covered = true;
   e.smUv = uv;
   e.needLog2 = {quantiseNeedLog2(half.x), quantiseNeedLog2(half.y)};
@@ -89,7 +107,7 @@ glm::ivec2 smtmmSamplePixel(glm::ivec2 entry, glm::ivec2 smtmmSize, glm::ivec2 f
 }
 
 std::vector<SmtmmEntry> buildSmtmm(const EyeDepthView& view, glm::ivec2 smtmmSize,
-                                   const glm::dmat4& eyeToSmUv) {
+                                   const glm::dmat4& eyeToSmUv, FootprintMeasure measure) {
   if (smtmmSize.x <= 0 || smtmmSize.y <= 0 || view.width <= 0 || view.height <= 0 ||
       view.eyeDepthM.size() != std::size_t(view.width) * std::size_t(view.height)) {
     throw std::invalid_argument(
@@ -101,7 +119,7 @@ std::vector<SmtmmEntry> buildSmtmm(const EyeDepthView& view, glm::ivec2 smtmmSiz
   for (int j = 0; j < smtmmSize.y; ++j) {
     for (int i = 0; i < smtmmSize.x; ++i) {
       out[std::size_t(j) * smtmmSize.x + i] =
-          smtmmEntry(view, smtmmSamplePixel({i, j}, smtmmSize, frame), eyeToSmUv);
+          smtmmEntry(view, smtmmSamplePixel({i, j}, smtmmSize, frame), eyeToSmUv, measure);
     }
   }
   return out;
@@ -228,8 +246,8 @@ void TraversalSettings::validate() const {
         "fvsm traversal: need 0 <= min texture log2 <= max texture log2 <= 15 (got " +
         std::to_string(minTextureLog2) + ", " + std::to_string(maxTextureLog2) + ")");
   }
-  if (xi < 0 || xi > kMaxNeedLog2) {
-    throw std::invalid_argument("fvsm traversal: xi must be in 0 .. " +
+  if (xi < kMinXi || xi > kMaxNeedLog2) {
+    throw std::invalid_argument("fvsm traversal: xi must be in " + std::to_string(kMinXi) + " .. " +
                                 std::to_string(kMaxNeedLog2) + " (got " + std::to_string(xi) + ")");
   }
 }
@@ -352,6 +370,77 @@ void tileScreenRectPixels(const EntryRect& rect, glm::ivec2 smtmmSize, glm::ivec
   // Entry i covers pixels [floor(i W / n), floor((i + 1) W / n)).
   minPixel = lo * frameSize / smtmmSize;
   maxPixel = hi * frameSize / smtmmSize;
+}
+
+std::vector<float> gridChannels(const TileGrid& grid) {
+  std::vector<float> out;
+  out.reserve(grid.cells.size() * kGridChannels);
+  for (const GridCell& c : grid.cells) {
+    out.insert(out.end(), {float(c.needLog2.x), float(c.needLog2.y), float(c.entries),
+                           float(c.maxNeedLog2.x), float(c.maxNeedLog2.y)});
+  }
+  return out;
+}
+
+std::vector<float> gridHistogramChannels(const TileGrid& grid, const HistogramSettings& h) {
+  const int buckets = h.bucketCount();
+  std::vector<float> out;
+  out.reserve(grid.cells.size() * std::size_t(2 * buckets));
+  for (const GridCell& c : grid.cells) {
+    for (int axis = 0; axis < 2; ++axis) {
+      for (int b = 0; b < buckets; ++b)
+        out.push_back(float(c.histogram[std::size_t(axis)][std::size_t(b)]));
+    }
+  }
+  return out;
+}
+
+std::vector<float> packTileRecords(std::span<const Tile> tiles, TextureMode mode,
+                                   int maxTextureLog2) {
+  std::vector<float> out;
+  out.reserve(tiles.size() * kTileRecordFloats);
+  for (const Tile& t : tiles) {
+    const TileTexture tex = tileTexture(mode, t.textureLog2, maxTextureLog2);
+    const EntryRect r = t.screen.empty() ? EntryRect{} : t.screen;
+    out.insert(out.end(), {float(t.levelX), float(t.levelY), float(t.ix), float(t.iy),
+                           float(t.needLog2.x), float(t.needLog2.y), float(t.textureLog2.x),
+                           float(t.textureLog2.y), float(tex.size.x), float(tex.size.y),
+                           float(tex.viewport.x), float(tex.viewport.y), float(r.min.x),
+                           float(r.min.y), float(r.max.x), float(r.max.y), t.unmet ? 1.0f : 0.0f});
+  }
+  return out;
+}
+
+std::vector<TileRecord> unpackTileRecords(std::span<const float> values) {
+  if (values.size() % kTileRecordFloats != 0) {
+    throw std::invalid_argument("fvsm tile records: " + std::to_string(values.size()) +
+                                " floats is not a multiple of " +
+                                std::to_string(kTileRecordFloats));
+  }
+  const auto integer = [](float v) {
+    if (!(std::abs(v) <= float(1 << 30)) || v != std::floor(v))
+      throw std::invalid_argument("fvsm tile records: a value is not an integer");
+    return int(v);
+  };
+  std::vector<TileRecord> out;
+  for (std::size_t k = 0; k < values.size(); k += kTileRecordFloats) {
+    int f[kTileRecordFloats];
+    for (int i = 0; i < kTileRecordFloats; ++i) f[i] = integer(values[k + std::size_t(i)]);
+    TileRecord r;
+    r.tile.levelX = f[0];
+    r.tile.levelY = f[1];
+    r.tile.ix = f[2];
+    r.tile.iy = f[3];
+    r.tile.needLog2 = {f[4], f[5]};
+    r.tile.textureLog2 = {f[6], f[7]};
+    r.texture.size = {f[8], f[9]};
+    r.texture.viewport = {f[10], f[11]};
+    r.tile.screen.min = {f[12], f[13]};
+    r.tile.screen.max = {f[14], f[15]};
+    r.tile.unmet = f[16] != 0;
+    out.push_back(r);
+  }
+  return out;
 }
 
 }  // namespace sl::fvsm

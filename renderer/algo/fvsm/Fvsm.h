@@ -57,19 +57,34 @@ struct SmtmmEntry {
 /// Δ <= 0 gives kMaxNeedLog2.
 int quantiseNeedLog2(double halfExtentUv);
 
+/// How a footprint's SM parallelogram c ± a' ± b' becomes a half extent per SM axis.
+/// `Box`: the half sides of its SM-axis-aligned bounding box, |a'| + |b'| per axis (the
+/// paper's rectangle). `Chord`: the half length of its chord through c along that axis,
+/// |det(a', b')| / max(|a'_v|, |b'_v|) along u (likewise v) — for a footprint elongated along
+/// an SM diagonal the box is as long as the footprint along both axes, the chord only as
+/// long as its narrow width (x √2); for an axis-aligned one both are equal. A footprint
+/// flat along the other axis (both edges' components 0) keeps the box's value.
+enum class FootprintMeasure : int { Box = SL_FVSM_FOOTPRINT_BOX, Chord = SL_FVSM_FOOTPRINT_CHORD };
+const char* footprintMeasureName(FootprintMeasure measure);
+/// Half extents (SM uv) of the parallelogram with half edges `a`, `b` along both SM axes.
+glm::dvec2 footprintHalfExtent(glm::dvec2 a, glm::dvec2 b, FootprintMeasure measure);
+
 /// The entry of the pixel whose centre is at `pixel` (integer coordinates) — §4.3: the
 /// smaller |Δz| towards the left/right and towards the lower/upper neighbour (neighbours
 /// without a surface or outside the frame are ignored; none: Δz = 0), the pixel's footprint
 /// as the parallelogram P ± a ± b with a = (P(x + ½, z + Δz_x / 2) − P(x − ½, z − Δz_x / 2)) / 2
 /// and b likewise along y, its four corners through `eyeToSmUv` (eye space → SM uv in
-/// x, y; w divided), and the half extents of their SM-axis-aligned box.
-SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dmat4& eyeToSmUv);
+/// x, y; w divided), and their half extents per SM axis (`measure`; the SM half edges are
+/// a' = (c₊₊ + c₊₋ − c₋₊ − c₋₋) / 4, b' likewise).
+SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dmat4& eyeToSmUv,
+                      FootprintMeasure measure = FootprintMeasure::Box);
 
 /// The SMTMM of `n` x `m` entries (row-major, row 0 at the bottom): entry (i, j) is the
 /// entry of the pixel at the centre of its block, (floor((i + ½) W / n), floor((j + ½) H / m)).
 glm::ivec2 smtmmSamplePixel(glm::ivec2 entry, glm::ivec2 smtmmSize, glm::ivec2 frameSize);
 std::vector<SmtmmEntry> buildSmtmm(const EyeDepthView& view, glm::ivec2 smtmmSize,
-                                   const glm::dmat4& eyeToSmUv);
+                                   const glm::dmat4& eyeToSmUv,
+                                   FootprintMeasure measure = FootprintMeasure::Box);
 
 // ---------------------------------------------------------------------------------------
 // Step 3: the tile grid.
@@ -157,10 +172,15 @@ Pyramid buildPyramid(const TileGrid& grid);
 // ---------------------------------------------------------------------------------------
 // Step 5: the kd-tree traversal.
 
+/// The lowest ξ: 16 times the texels per axis the SMTMM asks for.
+inline constexpr int kMinXi = -4;
+
 struct TraversalSettings {
   int maxTextureLog2 = 12;  ///< t_max = 2^12 = 4096 texels per axis
   int minTextureLog2 = 4;   ///< the smallest tile texture side (16 texels)
-  int xi = 0;               ///< ξ: subtracted from every need (§4.9), >= 0
+  /// ξ: subtracted from every need (§4.9), in [kMinXi, kMaxNeedLog2]; below 0 it asks for
+  /// 2^−ξ times the texels per axis the SMTMM asks for (finer than sub-pixel accuracy).
+  int xi = 0;
   /// Throws std::invalid_argument naming the problem.
   void validate() const;
 };
@@ -232,5 +252,35 @@ void tileUvRectWithOverlap(const Tile& tile, double overlapTexels, glm::dvec2& u
 /// every side (a pixel between two sampled pixels may look into the tile), clamped.
 void tileScreenRectPixels(const EntryRect& rect, glm::ivec2 smtmmSize, glm::ivec2 frameSize,
                           int marginEntries, glm::ivec2& minPixel, glm::ivec2& maxPixel);
+
+// ---------------------------------------------------------------------------------------
+// What the renderer publishes for the FVSM panel (plain floats, so that the panel needs no
+// GL and the CPU tests can check the layout exactly).
+
+/// The grid as an n x n image (row 0 = grid row 0, v = 0), kGridChannels per cell: the need
+/// after outlier rejection along u, v (−1 empty), the SMTMM entries in the cell, the plain
+/// max need along u, v (−1 empty).
+inline constexpr int kGridChannels = 5;
+std::vector<float> gridChannels(const TileGrid& grid);
+/// The histograms as an n x n image of 2 · h.bucketCount() channels: the counts of bucket
+/// 0 .. B − 1 along u, then along v (bucket b counts the need η0 + b; 0: ≤ η0, B − 1: ≥ η1).
+std::vector<float> gridHistogramChannels(const TileGrid& grid, const HistogramSettings& h);
+
+/// One kd leaf as the panel draws it: the tile, its texture (the mode's size and the
+/// viewport it draws into) and its screen rectangle in SMTMM entries.
+struct TileRecord {
+  Tile tile;
+  TileTexture texture;
+  bool operator==(const TileRecord&) const = default;
+};
+/// kTileRecordFloats floats per leaf: levelX, levelY, ix, iy, need u, need v, texture log2 u,
+/// v, texture width, height, viewport width, height, screen min x, y, max x, y (entries,
+/// inclusive; min > max: empty), unmet (0 / 1).
+inline constexpr int kTileRecordFloats = 17;
+std::vector<float> packTileRecords(std::span<const Tile> tiles, TextureMode mode,
+                                   int maxTextureLog2);
+/// The inverse; throws std::invalid_argument when the size is not a multiple of
+/// kTileRecordFloats or a value is not an integer.
+std::vector<TileRecord> unpackTileRecords(std::span<const float> values);
 
 }  // namespace sl::fvsm

@@ -39,12 +39,12 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .group = "FVSM",
        .type = ParamType::Int,
        .defaultValue = 0,
-       .minValue = 0,
+       .minValue = fvsm::kMinXi,
        .maxValue = 12,
        .step = 1,
        .help = "ξ: subtracted from every log2 resolution need before the traversal (Giegl & "
                "Wimmer §4.9): each step halves the texels per axis everywhere. Large ξ: one "
-               "ordinary shadow map."},
+               "ordinary shadow map; below 0: finer than the SMTMM's sub-pixel need."},
       {.key = "fvsm.texture.mode",
        .label = "Tile textures",
        .group = "FVSM",
@@ -137,6 +137,21 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .step = 1,
        .help = "Apply each tile only inside the screen rectangle of its SMTMM entries (one "
                "entry block of margin); off: over the whole screen."},
+      {.key = "fvsm.need.footprint",
+       .label = "Need from footprint",
+       .group = "FVSM",
+       .type = ParamType::Enum,
+       .defaultValue = SL_FVSM_FOOTPRINT_CHORD,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"box", "chord"},
+       .help = "How a pixel's footprint in the light's map becomes a need per SM axis: the half "
+               "sides of its axis-aligned bounding box (box), or the half length of its chord "
+               "through the pixel along each axis (chord; equal for footprints along an axis, "
+               "much shorter for thin footprints along a diagonal of the map, which the box "
+               "undersamples).",
+       .uniform = "u_footprint"},
       {.key = "fvsm.fallback.resolution",
        .label = "Fallback map",
        .group = "FVSM",
@@ -191,6 +206,20 @@ TechniqueInfo FittedVirtualShadowMap::info() {
       number("fvsm.need_log2.u", "log2 texels the whole map needs along u (after ξ, outliers)"),
       number("fvsm.need_log2.v", "log2 texels the whole map needs along v (after ξ, outliers)"),
       number("fvsm.texels", "texels of all tiles rendered this frame"),
+      number("fvsm.histogram.eta0", "the histograms' lower end bucket η0 (log2)"),
+      number("fvsm.histogram.eta1", "the histograms' upper end bucket η1 (log2)"),
+      {"fvsm.grid", PublicationKind::Image,
+       "the tile grid, n x n cells of 5 channels: need u, v after outlier rejection (−1 "
+       "empty), SMTMM entries, plain max need u, v (algo/fvsm gridChannels); row 0 at v = 0",
+       "0 B (the CPU's grid)", [](const ParamSet&) { return std::uint64_t(0); }},
+      {"fvsm.grid.histogram", PublicationKind::Image,
+       "each grid cell's need histogram, 2 (η1 − η0 + 1) channels: the buckets along u, then "
+       "along v (algo/fvsm gridHistogramChannels)",
+       "0 B (the CPU's grid)", [](const ParamSet&) { return std::uint64_t(0); }},
+      {"fvsm.tiles.list", PublicationKind::Curve,
+       "the kd leaves, 17 floats each (algo/fvsm packTileRecords): level, index, need, texture "
+       "log2, texture and viewport size, screen rectangle in SMTMM entries, unmet",
+       "0 B (the CPU's kd-tree)", [](const ParamSet&) { return std::uint64_t(0); }},
   };
   info.lights = {LightType::Directional};
   return info;
@@ -269,9 +298,23 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
       if (raw[i].z < 0.0f) continue;
       entries[i] = {true, glm::dvec2(raw[i].x, raw[i].y), glm::ivec2(raw[i].z, raw[i].w)};
     }
-    const fvsm::Pyramid pyramid =
-        fvsm::buildPyramid(fvsm::accumulateGrid(entries, smtmmSize_, n, histogram));
+    const fvsm::TileGrid grid = fvsm::accumulateGrid(entries, smtmmSize_, n, histogram);
+    const fvsm::Pyramid pyramid = fvsm::buildPyramid(grid);
     tiles_ = fvsm::traverse(pyramid, traversal);
+    const auto publishCells = [&](const char* key, int channels, std::vector<float> values) {
+      if (ctx.wants(key))
+        ctx.publication->images[key] = FloatImage{n, n, channels, std::move(values)};
+    };
+    if (ctx.wants("fvsm.grid"))
+      publishCells("fvsm.grid", fvsm::kGridChannels, fvsm::gridChannels(grid));
+    if (ctx.wants("fvsm.grid.histogram"))
+      publishCells("fvsm.grid.histogram", 2 * histogram.bucketCount(),
+                   fvsm::gridHistogramChannels(grid, histogram));
+    if (ctx.wants("fvsm.tiles.list"))
+      publishValues(ctx, "fvsm.tiles.list",
+                    fvsm::packTileRecords(tiles_, textureMode(p), traversal.maxTextureLog2));
+    publishNumber(ctx, "fvsm.histogram.eta0", double(histogram.eta0));
+    publishNumber(ctx, "fvsm.histogram.eta1", double(histogram.eta1));
     fallbackResolution_ = p.getInt("fvsm.fallback.resolution");
     // Allocate every texture this frame's tiles use now, so memory() holds them all.
     const fvsm::TextureMode mode = textureMode(p);

@@ -2,15 +2,22 @@
 #include "FvsmPanel.h"
 
 #include <algorithm>
+#include <map>
 
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPainter>
 #include <QVBoxLayout>
 
 namespace sl::ui {
 
 namespace {
-constexpr int kChannelNeedU = 2, kChannelNeedV = 3;  // fvsm.smtmm: u, v, need u, need v
+constexpr int kChannelNeedU = 2, kChannelNeedV = 3;              // fvsm.smtmm: u, v, need u, need v
+constexpr int kGridNeedU = 0, kGridNeedV = 1, kGridEntries = 2;  // fvsm.grid (gridChannels)
+
+QColor leafColor(std::size_t k) {
+  return QColor::fromHsv(int((k * 67) % 360), 200, 255);
+}
 }  // namespace
 
 FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
@@ -20,27 +27,135 @@ FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
   auto* maps = new QHBoxLayout;
   needU_ = new ImageView;
   needV_ = new ImageView;
-  needU_->setCaption(tr("SMTMM: log2 texels needed along SM u"));
+  grid_ = new ImageView;
+  needU_->setCaption(
+      tr("SMTMM (camera view): log2 texels needed along SM u; kd leaves' screen "
+         "rectangles"));
   needV_->setCaption(tr("SMTMM: log2 texels needed along SM v"));
+  grid_->setCaption(tr("Tile grid over the light's view: need per cell; kd leaves (log2 texture)"));
   maps->addWidget(needU_);
   maps->addWidget(needV_);
+  maps->addWidget(grid_);
+  auto* lower = new QHBoxLayout;
+  histogram_ = new PlotWidget;
+  histogram_->setAxisLabels(tr("log2 need"), tr("SMTMM entries"));
+  textures_ = new QLabel;
+  textures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  textures_->setWordWrap(true);
+  textures_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  lower->addWidget(histogram_, 2);
+  lower->addWidget(textures_, 1);
   numbers_ = new QLabel;
   numbers_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   numbers_->setWordWrap(true);
-  layout->addLayout(maps, 1);
+  layout->addLayout(maps, 3);
+  layout->addLayout(lower, 2);
   layout->addWidget(numbers_);
   setContent(content);
+  // Screen rectangles over the SMTMM (entries; inclusive), the hovered cell's leaf brighter.
+  needU_->setOverlay([this](QPainter& p, const QRectF& r) {
+    const QSize t = needU_->texelSize();
+    if (t.isEmpty()) return;
+    for (std::size_t k = 0; k < tiles_.size(); ++k) {
+      const fvsm::EntryRect& s = tiles_[k].tile.screen;
+      if (s.empty()) continue;
+      const double x0 = r.left() + r.width() * s.min.x / t.width();
+      const double x1 = r.left() + r.width() * (s.max.x + 1) / t.width();
+      const double y0 = r.bottom() - r.height() * (s.max.y + 1) / t.height();
+      const double y1 = r.bottom() - r.height() * s.min.y / t.height();
+      p.setPen(QPen(leafColor(k), 1.2));
+      p.setBrush(Qt::NoBrush);
+      p.drawRect(QRectF(QPointF(x0, y0), QPointF(x1, y1)));
+    }
+  });
+  // kd leaves over the grid (SM uv), each with its texture's log2 size; the selected cell.
+  grid_->setOverlay([this](QPainter& p, const QRectF& r) {
+    QFont f = p.font();
+    f.setPointSizeF(std::max(6.0, f.pointSizeF() - 2.0));
+    p.setFont(f);
+    for (std::size_t k = 0; k < tiles_.size(); ++k) {
+      const fvsm::Tile& t = tiles_[k].tile;
+      const glm::dvec2 lo = t.uvMin(), hi = t.uvMax();
+      const QRectF cell(QPointF(r.left() + r.width() * lo.x, r.bottom() - r.height() * hi.y),
+                        QPointF(r.left() + r.width() * hi.x, r.bottom() - r.height() * lo.y));
+      p.setPen(QPen(leafColor(k), 1.4));
+      p.setBrush(Qt::NoBrush);
+      p.drawRect(cell);
+      if (cell.width() > 34 && cell.height() > 14) {
+        p.setPen(Qt::white);
+        p.drawText(cell.adjusted(2, 1, -1, -1), Qt::AlignLeft | Qt::AlignTop,
+                   QStringLiteral("%1x%2").arg(t.textureLog2.x).arg(t.textureLog2.y));
+      }
+    }
+    const QSize n = grid_->texelSize();
+    if (cellX_ >= 0 && !n.isEmpty()) {
+      const double w = r.width() / n.width(), h = r.height() / n.height();
+      p.setPen(QPen(Qt::white, 2.0, Qt::DashLine));
+      p.drawRect(QRectF(r.left() + cellX_ * w, r.bottom() - (cellY_ + 1) * h, w, h));
+    }
+  });
 }
 
 std::set<std::string> FvsmPanel::observedKeys() const {
-  return {"fvsm.smtmm",       "fvsm.tiles",       "fvsm.tiles.unmet",
-          "fvsm.need_log2.u", "fvsm.need_log2.v", "fvsm.texels"};
+  return {"fvsm.smtmm",       "fvsm.tiles",          "fvsm.tiles.unmet",   "fvsm.need_log2.u",
+          "fvsm.need_log2.v", "fvsm.texels",         "fvsm.grid",          "fvsm.grid.histogram",
+          "fvsm.tiles.list",  "fvsm.histogram.eta0", "fvsm.histogram.eta1"};
 }
 
 void FvsmPanel::highlightPass(const QString& passId) {
   const bool smtmm = passId == QLatin1String("smtmm");
+  const bool grid = passId == QLatin1String("fvsm grid");
   needU_->setHighlighted(smtmm);
   needV_->setHighlighted(smtmm);
+  grid_->setHighlighted(grid);
+  histogram_->setHighlighted(grid);
+}
+
+void FvsmPanel::selectCell(int x, int y) {
+  const int n = gridImage_.width;
+  if (n <= 0 || x < 0 || y < 0 || x >= n || y >= n) return;
+  cellX_ = x;
+  cellY_ = y;
+  drawHistogram();
+}
+
+void FvsmPanel::drawHistogram() {
+  const int buckets = eta1_ - eta0_ + 1;
+  const int n = histImage_.width;
+  if (cellX_ < 0 || n <= 0 || histImage_.channels != 2 * buckets) {
+    histogram_->setSeries({});
+    histogram_->setPlaceholder(tr("no histogram"));
+    return;
+  }
+  const float* h = &histImage_.values[(std::size_t(cellY_) * n + cellX_) * histImage_.channels];
+  const float* g = &gridImage_.values[(std::size_t(cellY_) * n + cellX_) * fvsm::kGridChannels];
+  std::vector<PlotWidget::Series> series = {{tr("along u"), {}, QColor(80, 170, 255)},
+                                            {tr("along v"), {}, QColor(255, 150, 60)}};
+  double total[2] = {0.0, 0.0};
+  for (int axis = 0; axis < 2; ++axis) {
+    for (int b = 0; b < buckets; ++b) {
+      const double c = h[axis * buckets + b];
+      total[axis] += c;
+      // A step per bucket: bucket b spans need η0 + b − ½ .. η0 + b + ½.
+      series[std::size_t(axis)].points.push_back({eta0_ + b - 0.5, c});
+      series[std::size_t(axis)].points.push_back({eta0_ + b + 0.5, c});
+    }
+  }
+  histogram_->setTitle(tr("cell (%1, %2): %3 entries, need 2^%4 x 2^%5 (end buckets ≤ %6, ≥ %7)")
+                           .arg(cellX_)
+                           .arg(cellY_)
+                           .arg(g[kGridEntries])
+                           .arg(g[kGridNeedU])
+                           .arg(g[kGridNeedV])
+                           .arg(eta0_)
+                           .arg(eta1_));
+  histogram_->setXRange(eta0_ - 0.5, eta1_ + 0.5);
+  histogram_->setSeries(std::move(series));
+  drawn_["cell_x"] = cellX_;
+  drawn_["cell_y"] = cellY_;
+  drawn_["cell_entries"] = double(g[kGridEntries]);
+  drawn_["hist_u_total"] = total[0];
+  drawn_["hist_v_total"] = total[1];
 }
 
 void FvsmPanel::showPublication(const sl::Publication& pub) {
@@ -53,6 +168,18 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
     return;
   }
   showContent(true);
+  drawn_ = {};
+  const auto number = [&](const char* key) { return n.count(key) ? n.at(key) : -1.0; };
+  eta0_ = int(number("fvsm.histogram.eta0"));
+  eta1_ = int(number("fvsm.histogram.eta1"));
+  tiles_.clear();
+  if (auto c = pub.curves.find("fvsm.tiles.list"); c != pub.curves.end()) {
+    try {
+      tiles_ = fvsm::unpackTileRecords(c->second);
+    } catch (const std::invalid_argument&) {
+      tiles_.clear();  // a malformed list draws nothing rather than garbage
+    }
+  }
   const sl::FloatImage& smtmm = img->second;
   float maxNeed = 0.0f;
   for (std::size_t i = 0; i + 3 < smtmm.values.size(); i += 4)
@@ -67,7 +194,85 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
       return v < 0.0f ? QStringLiteral("no surface") : QStringLiteral("2^%1").arg(int(v));
     });
   }
-  const auto number = [&](const char* key) { return n.count(key) ? n.at(key) : -1.0; };
+  int rects = 0;
+  for (const fvsm::TileRecord& t : tiles_) rects += t.tile.screen.empty() ? 0 : 1;
+
+  // The grid: the larger of the two needs per cell.
+  gridImage_ = {};
+  histImage_ = {};
+  const auto g = pub.images.find("fvsm.grid");
+  if (g != pub.images.end() && g->second.channels == fvsm::kGridChannels && g->second.width > 0) {
+    gridImage_ = g->second;
+    if (auto h = pub.images.find("fvsm.grid.histogram"); h != pub.images.end())
+      histImage_ = h->second;
+    const int cells = gridImage_.width * gridImage_.height;
+    sl::FloatImage need{gridImage_.width, gridImage_.height, 1, {}};
+    need.values.resize(std::size_t(cells));
+    float maxCell = 1.0f;
+    int neediest = 0;
+    for (int i = 0; i < cells; ++i) {
+      const float* c = &gridImage_.values[std::size_t(i) * fvsm::kGridChannels];
+      need.values[std::size_t(i)] = std::max(c[kGridNeedU], c[kGridNeedV]);
+      if (need.values[std::size_t(i)] > maxCell) maxCell = need.values[std::size_t(i)];
+      if (need.values[std::size_t(i)] > need.values[std::size_t(neediest)]) neediest = i;
+    }
+    const ValueRange gridRange{0.0f, maxCell, false};
+    grid_->setImage(colorize(need, 0, gridRange, ColorMap::Viridis), need.width, need.height);
+    grid_->setLegend(gridRange, ColorMap::Viridis, tr("log2 need"));
+    grid_->setValueReader([this, gi = gridImage_](int x, int y) {
+      // The readout of the cell under the cursor also selects it for the histogram (drawn
+      // in its own widget; the grid's selection outline follows on its next repaint).
+      if (x != cellX_ || y != cellY_) {
+        userCell_ = true;
+        selectCell(x, y);
+      }
+      const float* c = &gi.values[(std::size_t(y) * gi.width + x) * fvsm::kGridChannels];
+      if (c[kGridEntries] <= 0.0f) return tr("no entry");
+      QString s = tr("need 2^%1 x 2^%2 (max 2^%3 x 2^%4), %5 entries")
+                      .arg(c[kGridNeedU])
+                      .arg(c[kGridNeedV])
+                      .arg(c[3])
+                      .arg(c[4])
+                      .arg(c[kGridEntries]);
+      const glm::dvec2 uv((x + 0.5) / gi.width, (y + 0.5) / gi.height);
+      for (const fvsm::TileRecord& t : tiles_) {
+        const glm::dvec2 lo = t.tile.uvMin(), hi = t.tile.uvMax();
+        if (uv.x < lo.x || uv.y < lo.y || uv.x >= hi.x || uv.y >= hi.y) continue;
+        s += tr("; leaf texture %1x%2 in %3x%4%5")
+                 .arg(t.texture.viewport.x)
+                 .arg(t.texture.viewport.y)
+                 .arg(t.texture.size.x)
+                 .arg(t.texture.size.y)
+                 .arg(t.tile.unmet ? tr(" (unmet)") : QString());
+      }
+      return s;
+    });
+    if (!userCell_ || cellX_ >= gridImage_.width || cellY_ >= gridImage_.height) {
+      cellX_ = neediest % gridImage_.width;
+      cellY_ = neediest / gridImage_.width;
+    }
+    drawn_["grid_n"] = gridImage_.width;
+    drawHistogram();
+  } else {
+    grid_->clearImage(tr("no tile grid published"));
+    histogram_->setSeries({});
+    histogram_->setPlaceholder(tr("no tile grid published"));
+  }
+
+  // The textures the leaves used: viewport in texture, how many leaves each.
+  std::map<std::pair<std::pair<int, int>, std::pair<int, int>>, int> kinds;
+  for (const fvsm::TileRecord& t : tiles_)
+    ++kinds[{{t.texture.size.x, t.texture.size.y}, {t.texture.viewport.x, t.texture.viewport.y}}];
+  QString text = tr("Tile textures (viewport in texture: leaves):");
+  for (const auto& [k, count] : kinds) {
+    text += QStringLiteral("\n  %1x%2 in %3x%4: %5")
+                .arg(k.second.first)
+                .arg(k.second.second)
+                .arg(k.first.first)
+                .arg(k.first.second)
+                .arg(count);
+  }
+  textures_->setText(text);
   numbers_->setText(tr("kd leaves %1 (unmet at the finest level: %2)    whole map needs 2^%3 x "
                        "2^%4 texels    tile texels %5")
                         .arg(number("fvsm.tiles"))
@@ -75,11 +280,16 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
                         .arg(number("fvsm.need_log2.u"))
                         .arg(number("fvsm.need_log2.v"))
                         .arg(formatValue(number("fvsm.texels"))));
-  drawn_ = {{"tiles", number("fvsm.tiles")},
-            {"unmet", number("fvsm.tiles.unmet")},
-            {"need_u", number("fvsm.need_log2.u")},
-            {"need_v", number("fvsm.need_log2.v")},
-            {"max_entry_need", double(maxNeed)}};
+  drawn_["tiles"] = number("fvsm.tiles");
+  drawn_["unmet"] = number("fvsm.tiles.unmet");
+  drawn_["need_u"] = number("fvsm.need_log2.u");
+  drawn_["need_v"] = number("fvsm.need_log2.v");
+  drawn_["max_entry_need"] = double(maxNeed);
+  drawn_["leaves_drawn"] = double(tiles_.size());
+  drawn_["rects_drawn"] = rects;
+  drawn_["texture_kinds"] = double(kinds.size());
+  needU_->update();
+  grid_->update();
 }
 
 }  // namespace sl::ui

@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QDockWidget>
 #include <QMenu>
+#include <QTimer>
 
 #include "LaunchOptions.h"
 #include "MainWindow.h"
@@ -171,7 +174,70 @@ void LessonController::apply(int index) {
     w.lessonDock_->raise();
   }
   w.updateBanner();
-  if (w.viewport_->paused()) w.viewport_->stepFrame();
+  if (w.viewport_->renderer())
+    settle();
+  else
+    w.viewport_->update();  // settled when the renderer starts (MainWindow::onRendererReady)
+}
+
+void LessonController::queueSettle() {
+  if (index_ < 0 || settleQueued_) return;
+  settleQueued_ = true;
+  QTimer::singleShot(0, this, [this] {
+    settleQueued_ = false;
+    settle();
+  });
+}
+
+void LessonController::settle() {
+  MainWindow& w = w_;
+  sl::Renderer* r = w.viewport_->renderer();
+  if (!r || settling_) return;
+  // The layout's resizes first: the rotation depends on the view's aspect (the importance
+  // follows the view frustum), so it must start from the size the lesson is shown at.
+  QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId());
+  const bool temporal =
+      info && std::any_of(info->publications.begin(), info->publications.end(),
+                          [](const sl::PublicationDecl& d) { return d.key == "rotation.held"; });
+  settled_ = true;
+  settleFrames_ = 0;
+  if (!temporal || w.viewport_->paused()) {
+    if (w.viewport_->paused()) w.viewport_->stepFrame();
+    w.viewport_->update();
+    return;
+  }
+  settling_ = true;
+  settled_ = false;
+  w.updatePublishing();  // the rotation's numbers, while settling
+  r->resetTemporalState();
+  const QString note = w.lessonPanel_->note();
+  while (settleFrames_ < kMaxSettleFrames && !settled_) {
+    w.lessonPanel_->setNote(
+        tr("Settling: frame %1 of at most %2 — the rotation is estimated from the last frame's "
+           "importance; the lesson's state is complete once an estimate leaves it unchanged.")
+            .arg(settleFrames_ + 1)
+            .arg(kMaxSettleFrames));
+    if (!w.waitForFrames(1)) break;
+    ++settleFrames_;
+    const auto& n = r->publication().numbers;
+    auto number = [&n](const char* key) {
+      auto it = n.find(key);
+      return it == n.end() ? std::optional<double>() : std::optional<double>(it->second);
+    };
+    const std::optional<double> valid = number("pca.valid");
+    if (!valid) continue;  // no estimate yet (the first frame has no last frame)
+    settled_ = *valid == 0 || number("rotation.held").value_or(0) != 0 ||
+               number("rotation.step_deg").value_or(1) == 0;
+  }
+  settling_ = false;
+  w.updatePublishing();
+  w.lessonPanel_->setNote(
+      settled_ ? note
+               : (note.isEmpty() ? QString() : note + QLatin1Char('\n')) +
+                     tr("The rotation still turns after %1 frames: it never holds with these "
+                        "parameters.")
+                         .arg(settleFrames_));
   w.viewport_->update();
 }
 

@@ -351,6 +351,7 @@ void MainWindow::onRendererReady() {
   teaching_->syncOverlayCombo();
   updatePublishing();
   teaching_->restoreSplit();
+  lessons_->queueSettle();  // a lesson chosen before the renderer started
   updateTitle();
   const QString gl = QString::fromStdString(renderer->glDescription());
   glLabel_->setText(shortGlName(gl));
@@ -513,6 +514,8 @@ void MainWindow::updatePublishing() {
   sl::Renderer* r = viewport_ ? viewport_->renderer() : nullptr;
   if (!r) return;
   std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
+  if (lessons_ && lessons_->settling())  // what the lesson waits for
+    keys.insert({"pca.valid", "rotation.held", "rotation.step_deg", "rotation.deg"});
   // A grab's published.json holds every number the technique declares (they cost no readback).
   if (grab_->running())
     if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))

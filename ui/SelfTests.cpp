@@ -127,6 +127,8 @@ void SelfTests::run() {
     ran = sessionSave(argument_);
   else if (name_ == QLatin1String("session-check"))
     ran = sessionCheck();
+  else if (name_ == QLatin1String("lesson-claims"))
+    ran = lessonClaims(argument_);
   else
     ran = badGltf(argument_);
   const bool pass = ran && failures_ == 0;

@@ -1,12 +1,16 @@
 // GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
 // params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE],
-// omni-probe[=DIR], session-save=FILE, session-check (SelfTestsSession.cpp). They act as a
+// omni-probe[=DIR], session-save=FILE, session-check (SelfTestsSession.cpp), lesson-claims[=DIR]
+// (SelfTestsLessons.cpp). They act as a
 // user would and check what the renderer and the window did; each check prints "ok   ..." or "FAIL
 // ...".
 #pragma once
 
 #include <QObject>
 #include <QString>
+
+#include "core/Preset.h"
+#include "core/Renderer.h"
 
 namespace sl::ui {
 
@@ -55,6 +59,21 @@ class SelfTests : public QObject {
   void printSessionMetrics();
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
+  /// lesson-claims[=DIR]: every lesson opened fresh; its layout (listed docks only, the large
+  /// one large) and, for the lessons that state one, its claim measured with the numbers read
+  /// from its own text (perspective aliasing: m bands and thin error lines; projective
+  /// aliasing: grazed against facing m; RTW: below uniform in the split view; PCA: the
+  /// settled angle, twice; vibration: changed pixels per frame, none once held). A PNG of the
+  /// window per lesson into DIR.
+  bool lessonClaims(const QString& dir);
+  void lessonLayout(const sl::PresetLayout& layout);
+  void claimPerspective(const QString& text);
+  void claimProjective(const QString& text);
+  void claimRtw();
+  void claimPca(const QString& text);
+  void claimVibration(const QString& text);
+  /// The main view's error against the reference, with its per-pixel readback.
+  sl::Renderer::ErrorResult measureView();
   void check(bool ok, const QString& what);
 
   MainWindow& w_;

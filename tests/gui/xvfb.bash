@@ -1,6 +1,7 @@
 # Sourced by the GUI tests (not a test itself: only *.sh are): starts a private Xvfb on a
 # display the server picks itself (-displayfd, no race with other runs), waits until it
-# answers, exports DISPLAY and kills it on exit.
+# answers, exports DISPLAY and kills it on exit. XVFB_SCREEN (WxHxD) sets the screen, default
+# 1600x1000x24.
 XVFB_PID=""
 XVFB_TMP=""
 
@@ -17,7 +18,7 @@ stop_xvfb() {
 start_xvfb() {
   XVFB_TMP=$(mktemp -d "${TMPDIR:-/tmp}/shadowlab-xvfb.XXXXXX")
   trap stop_xvfb EXIT
-  Xvfb -displayfd 3 -screen 0 1600x1000x24 -nolisten tcp -nolisten unix-abstract \
+  Xvfb -displayfd 3 -screen 0 "${XVFB_SCREEN:-1600x1000x24}" -nolisten tcp -nolisten unix-abstract \
     3>"$XVFB_TMP/display" 2>"$XVFB_TMP/xvfb.log" &
   XVFB_PID=$!
   local display=""

@@ -185,6 +185,13 @@ void LessonController::queueSettle() {
   settleQueued_ = true;
   QTimer::singleShot(0, this, [this] {
     settleQueued_ = false;
+    // Started before the window and its renderer were up: the window's own start-up (its
+    // default layout, the technique's panels raised) came after the lesson's layout.
+    if (index_ >= 0)
+      if (const auto& layout = lessons_[static_cast<std::size_t>(index_)].preset.layout) {
+        QStringList problems;
+        w_.sessions_->applyLayout(*layout, &problems);
+      }
     settle();
   });
 }

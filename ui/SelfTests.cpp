@@ -91,7 +91,7 @@ void SelfTests::start(const QString& name, const QString& argument) {
       timer->stop();
       return;
     }
-    if (!w_.rendererBound_ || w_.viewport_->framesRendered() < 2) {
+    if (!w_.rendererBound_ || w_.viewport_->framesRendered() < 2 || w_.lessons_->settling()) {
       if (clock->elapsed() > kStartTimeoutMs) {
         timer->stop();
         w_.report(

@@ -59,12 +59,13 @@ class SelfTests : public QObject {
   void printSessionMetrics();
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
-  /// lesson-claims[=DIR]: every lesson opened fresh; its layout (listed docks only, the large
-  /// one large) and, for the lessons that state one, its claim measured with the numbers read
-  /// from its own text (perspective aliasing: m bands and thin error lines; projective
-  /// aliasing: grazed against facing m; RTW: below uniform in the split view; PCA: the
-  /// settled angle, twice; vibration: changed pixels per frame, none once held). A PNG of the
-  /// window per lesson into DIR.
+  /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;
+  /// its layout (listed docks only, the large one large) and, for the lessons that state one,
+  /// its claim measured with the numbers read from its own text (perspective aliasing: m bands
+  /// and thin error lines; projective aliasing: the floor's m at a low and a high sun;
+  /// RTW: below uniform in the split view; PCA:
+  /// the settled angle; vibration: changed pixels per frame, none once held). A PNG of the window
+  /// into DIR.
   bool lessonClaims(const QString& dir);
   void lessonLayout(const sl::PresetLayout& layout);
   void claimPerspective(const QString& text);

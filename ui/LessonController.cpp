@@ -184,7 +184,6 @@ void LessonController::queueSettle() {
   if (index_ < 0 || settleQueued_) return;
   settleQueued_ = true;
   QTimer::singleShot(0, this, [this] {
-    settleQueued_ = false;
     // Started before the window and its renderer were up: the window's own start-up (its
     // default layout, the technique's panels raised) came after the lesson's layout.
     if (index_ >= 0)
@@ -193,6 +192,7 @@ void LessonController::queueSettle() {
         w_.sessions_->applyLayout(*layout, &problems);
       }
     settle();
+    settleQueued_ = false;  // only now: a self-test or grab must not start inside settle()
   });
 }
 
@@ -200,9 +200,15 @@ void LessonController::settle() {
   MainWindow& w = w_;
   sl::Renderer* r = w.viewport_->renderer();
   if (!r || settling_) return;
+  settling_ = true;  // from here: what waits for the lesson waits, even in the events below
   // The layout's resizes first: the rotation depends on the view's aspect (the importance
   // follows the view frustum), so it must start from the size the lesson is shown at.
   QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+  r = w.viewport_->renderer();
+  if (!r) {
+    settling_ = false;
+    return;
+  }
   const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId());
   const bool temporal =
       info && std::any_of(info->publications.begin(), info->publications.end(),
@@ -210,11 +216,11 @@ void LessonController::settle() {
   settled_ = true;
   settleFrames_ = 0;
   if (!temporal || w.viewport_->paused()) {
+    settling_ = false;
     if (w.viewport_->paused()) w.viewport_->stepFrame();
     w.viewport_->update();
     return;
   }
-  settling_ = true;
   settled_ = false;
   w.updatePublishing();  // the rotation's numbers, while settling
   r->resetTemporalState();

@@ -63,13 +63,14 @@ class SelfTests : public QObject {
   /// its layout (listed docks only, the large one large) and, for the lessons that state one,
   /// its claim measured with the numbers read from its own text (perspective aliasing: m bands
   /// and thin error lines; projective aliasing: the floor's m at a low and a high sun;
-  /// RTW: below uniform in the split view; PCA:
+  /// tessellation: the error without it against with it; RTW: below uniform in the split view; PCA:
   /// the settled angle; vibration: changed pixels per frame, none once held). A PNG of the window
   /// into DIR.
   bool lessonClaims(const QString& dir);
   void lessonLayout(const sl::PresetLayout& layout);
   void claimPerspective(const QString& text);
   void claimProjective(const QString& text);
+  void claimTessellation(const QString& text);
   void claimRtw();
   void claimPca(const QString& text);
   void claimVibration(const QString& text);

@@ -79,6 +79,8 @@ bool SelfTests::lessonClaims(const QString& dir) {
     claimPerspective(text);
   else if (name.endsWith(QLatin1String("projective-aliasing")))
     claimProjective(text);
+  else if (name.endsWith(QLatin1String("tessellation")))
+    claimTessellation(text);
   else if (name.endsWith(QLatin1String("rtw-warping")))
     claimRtw();
   else if (name.endsWith(QLatin1String("diagonal-pca")))
@@ -225,6 +227,24 @@ void SelfTests::claimProjective(const QString& text) {
             .arg(highM, 0, 'f', 2)
             .arg(high)
             .arg(lowM / highM, 0, 'f', 2)
+            .arg(ratio));
+}
+
+void SelfTests::claimTessellation(const QString& text) {
+  const double ratio =
+      stated(text, QStringLiteral("without tessellation is at least (\\d+) times"));
+  check(std::isfinite(ratio), tr("the text states the ratio"));
+  sl::Renderer* r = w_.viewport_->renderer();
+  const auto off = w_.viewport_->computeErrorNow();
+  if (auto e = r->params().setFromString("tessellation", "on"))
+    check(false, QString::fromStdString(*e));
+  w_.waitForFrames(2);
+  const auto on = w_.viewport_->computeErrorNow();
+  check(off && on && *off >= ratio * *on,
+        tr("error %1 % without tessellation, %2 % with it: %3x (at least %4x)")
+            .arg(off.value_or(-1), 0, 'f', 2)
+            .arg(on.value_or(-1), 0, 'f', 2)
+            .arg(off && on && *on > 0 ? *off / *on : 0.0, 0, 'f', 1)
             .arg(ratio));
 }
 

@@ -18,6 +18,7 @@
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
 #include "panels/common/ParamPanel.h"
+#include "panels/rtw/RtwSettle.h"
 
 namespace sl::ui {
 
@@ -210,9 +211,7 @@ void LessonController::settle() {
     return;
   }
   const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId());
-  const bool temporal =
-      info && std::any_of(info->publications.begin(), info->publications.end(),
-                          [](const sl::PublicationDecl& d) { return d.key == "rotation.held"; });
+  const bool temporal = info && rtwsettle::hasTemporalState(*info);
   settled_ = true;
   settleFrames_ = 0;
   if (!temporal || w.viewport_->paused()) {
@@ -233,15 +232,9 @@ void LessonController::settle() {
             .arg(kMaxSettleFrames));
     if (!w.waitForFrames(1)) break;
     ++settleFrames_;
-    const auto& n = r->publication().numbers;
-    auto number = [&n](const char* key) {
-      auto it = n.find(key);
-      return it == n.end() ? std::optional<double>() : std::optional<double>(it->second);
-    };
-    const std::optional<double> valid = number("pca.valid");
-    if (!valid) continue;  // no estimate yet (the first frame has no last frame)
-    settled_ = *valid == 0 || number("rotation.held").value_or(0) != 0 ||
-               number("rotation.step_deg").value_or(1) == 0;
+    const std::optional<bool> done = rtwsettle::settled(r->publication());
+    if (!done) continue;  // no estimate yet (the first frame has no last frame)
+    settled_ = *done;
   }
   settling_ = false;
   w.updatePublishing();

@@ -41,6 +41,7 @@
 #include "panels/common/ChartsPanel.h"
 #include "panels/common/LessonPanel.h"
 #include "panels/common/ParamPanel.h"
+#include "panels/rtw/RtwSettle.h"
 #include "panels/common/TimingPanel.h"
 #include "panels/light/LightPanel.h"
 #include "scene/GltfLoader.h"
@@ -515,7 +516,7 @@ void MainWindow::updatePublishing() {
   if (!r) return;
   std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
   if (lessons_ && lessons_->settling())  // what the lesson waits for
-    keys.insert({"pca.valid", "rotation.held", "rotation.step_deg", "rotation.deg"});
+    for (const std::string& key : rtwsettle::keys()) keys.insert(key);
   // A grab's published.json holds every number the technique declares (they cost no readback).
   if (grab_->running())
     if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))

@@ -22,6 +22,7 @@
 #include "SelfTests.h"
 #include "ViewportWidget.h"
 #include "panels/common/PanelKit.h"
+#include "panels/rtw/RtwSettle.h"
 
 namespace sl::ui {
 
@@ -273,9 +274,8 @@ void SelfTests::claimPca(const QString& text) {
   for (const PublicationDocks::Dock& d : w_.docks_.docks())
     if (d.entry.id == QLatin1String("covariance")) covariance = d.panel;
   // Once per process: tests/gui/lesson_claims.sh starts the app twice for this lesson.
-  const auto& n = w_.viewport_->renderer()->publication().numbers;
-  const auto deg = n.find("rotation.deg");
-  const double got = deg == n.end() ? std::nan("") : deg->second;
+  const double got =
+      rtwsettle::angleDeg(w_.viewport_->renderer()->publication()).value_or(std::nan(""));
   check(w_.lessons_->settled() && std::abs(got - angle) <= 2.0,
         tr("R settles at %1° within %2 frames (stated %3° ± 2°)")
             .arg(got, 0, 'f', 2)
@@ -284,7 +284,7 @@ void SelfTests::claimPca(const QString& text) {
   std::printf("metric rotation_deg=%.3f\n", got);
   // Complete when it opens: the panel already shows the settled state (axis along x).
   const QJsonObject drawn = covariance ? covariance->drawnValues() : QJsonObject();
-  const double ex = drawn.value(QStringLiteral("e_x")).toDouble(0.0);
+  const double ex = drawn.value(QLatin1String(rtwsettle::kExKey)).toDouble(0.0);
   check(ex > 0.999, tr("Covariance shows e_x = %1 when the lesson opens").arg(ex));
 }
 
@@ -294,8 +294,10 @@ void SelfTests::claimVibration(const QString& text) {
   check(std::isfinite(pixels) && std::isfinite(threshold),
         tr("the text states the changed pixels and the threshold"));
   sl::Renderer* r = w_.viewport_->renderer();
-  check(std::abs(r->params().get("pca.threshold") - threshold) < 1e-9,
-        tr("pca.threshold is %1").arg(r->params().get("pca.threshold")));
+  check(std::abs(r->params().get(rtwsettle::kThresholdKey) - threshold) < 1e-9,
+        tr("%1 is %2")
+            .arg(QLatin1String(rtwsettle::kThresholdKey))
+            .arg(r->params().get(rtwsettle::kThresholdKey)));
   PublicationPanel* covariance = nullptr;
   for (const PublicationDocks::Dock& d : w_.docks_.docks())
     if (d.entry.id == QLatin1String("covariance")) covariance = d.panel;
@@ -337,7 +339,7 @@ void SelfTests::claimVibration(const QString& text) {
                                      .arg(total)
                                      .arg(pixels));
   // The fix the text suggests: 0.9999 holds R, and nothing changes.
-  if (auto e = r->params().setFromString("pca.threshold", "0.9999"))
+  if (auto e = r->params().setFromString(rtwsettle::kThresholdKey, "0.9999"))
     check(false, QString::fromStdString(*e));
   w_.waitForFrames(3);
   const std::vector<std::size_t> held = changedPerFrame(3);

@@ -11,6 +11,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 
+#include "LessonController.h"
 #include "MainWindow.h"
 #include "ViewportWidget.h"
 
@@ -55,7 +56,7 @@ void GrabRun::tick() {
     }
     return;
   }
-  if (framesRendered_ < frames_) {
+  if (framesRendered_ < frames_ || w_.lessons_->settling()) {
     w_.viewport_->update();
     return;
   }

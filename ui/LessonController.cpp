@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QDockWidget>
 #include <QMenu>
+#include <QTimer>
 
 #include "LaunchOptions.h"
 #include "MainWindow.h"
@@ -15,6 +18,7 @@
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
 #include "panels/common/ParamPanel.h"
+#include "panels/rtw/RtwSettle.h"
 
 namespace sl::ui {
 
@@ -171,7 +175,75 @@ void LessonController::apply(int index) {
     w.lessonDock_->raise();
   }
   w.updateBanner();
-  if (w.viewport_->paused()) w.viewport_->stepFrame();
+  if (w.viewport_->renderer())
+    settle();
+  else
+    w.viewport_->update();  // settled when the renderer starts (MainWindow::onRendererReady)
+}
+
+void LessonController::queueSettle() {
+  if (index_ < 0 || settleQueued_) return;
+  settleQueued_ = true;
+  QTimer::singleShot(0, this, [this] {
+    // Started before the window and its renderer were up: the window's own start-up (its
+    // default layout, the technique's panels raised) came after the lesson's layout.
+    if (index_ >= 0)
+      if (const auto& layout = lessons_[static_cast<std::size_t>(index_)].preset.layout) {
+        QStringList problems;
+        w_.sessions_->applyLayout(*layout, &problems);
+      }
+    settle();
+    settleQueued_ = false;  // only now: a self-test or grab must not start inside settle()
+  });
+}
+
+void LessonController::settle() {
+  MainWindow& w = w_;
+  sl::Renderer* r = w.viewport_->renderer();
+  if (!r || settling_) return;
+  settling_ = true;  // from here: what waits for the lesson waits, even in the events below
+  // The layout's resizes first: the rotation depends on the view's aspect (the importance
+  // follows the view frustum), so it must start from the size the lesson is shown at.
+  QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+  r = w.viewport_->renderer();
+  if (!r) {
+    settling_ = false;
+    return;
+  }
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId());
+  const bool temporal = info && rtwsettle::hasTemporalState(*info);
+  settled_ = true;
+  settleFrames_ = 0;
+  if (!temporal || w.viewport_->paused()) {
+    settling_ = false;
+    if (w.viewport_->paused()) w.viewport_->stepFrame();
+    w.viewport_->update();
+    return;
+  }
+  settled_ = false;
+  w.updatePublishing();  // the rotation's numbers, while settling
+  r->resetTemporalState();
+  const QString note = w.lessonPanel_->note();
+  while (settleFrames_ < kMaxSettleFrames && !settled_) {
+    w.lessonPanel_->setNote(
+        tr("Settling: frame %1 of at most %2 — the rotation is estimated from the last frame's "
+           "importance; the lesson's state is complete once an estimate leaves it unchanged.")
+            .arg(settleFrames_ + 1)
+            .arg(kMaxSettleFrames));
+    if (!w.waitForFrames(1)) break;
+    ++settleFrames_;
+    const std::optional<bool> done = rtwsettle::settled(r->publication());
+    if (!done) continue;  // no estimate yet (the first frame has no last frame)
+    settled_ = *done;
+  }
+  settling_ = false;
+  w.updatePublishing();
+  w.lessonPanel_->setNote(
+      settled_ ? note
+               : (note.isEmpty() ? QString() : note + QLatin1Char('\n')) +
+                     tr("The rotation still turns after %1 frames: it never holds with these "
+                        "parameters.")
+                         .arg(settleFrames_));
   w.viewport_->update();
 }
 

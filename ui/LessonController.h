@@ -34,6 +34,19 @@ class LessonController : public QObject {
   bool startFile(const QString& path, const QString& dialogTitle);
   void apply(int index);
 
+  /// Renders until the lesson's temporal state has settled (DA-RTW: a frame whose rotation
+  /// estimate leaves R unchanged, at most kMaxSettleFrames), from a fresh temporal state once
+  /// the layout has given the view its final size; the Lesson dock says what it waits for.
+  /// Called by apply(), and when the renderer starts with a lesson already chosen.
+  void settle();
+  /// settle() is running or queued (a grab waits for it).
+  bool settling() const { return settling_ || settleQueued_; }
+  void queueSettle();
+  /// Frames the last settle() rendered, and whether the state settled within them.
+  int settleFrames() const { return settleFrames_; }
+  bool settled() const { return settled_; }
+  static constexpr int kMaxSettleFrames = 12;
+
   const std::vector<Lesson>& lessons() const { return lessons_; }
   int index() const { return index_; }
   /// Banner title and text of the active lesson (empty: none, or the banner is off).
@@ -45,6 +58,8 @@ class LessonController : public QObject {
   std::vector<Lesson> lessons_;
   int index_ = -1;
   QAction* bannerAction_ = nullptr;
+  bool settling_ = false, settleQueued_ = false, settled_ = true;
+  int settleFrames_ = 0;
 };
 
 }  // namespace sl::ui

@@ -43,6 +43,7 @@
 #include "panels/common/ChartsPanel.h"
 #include "panels/common/LessonPanel.h"
 #include "panels/common/ParamPanel.h"
+#include "panels/rtw/RtwSettle.h"
 #include "panels/common/TimingPanel.h"
 #include "panels/light/LightPanel.h"
 #include "scene/GltfLoader.h"
@@ -361,6 +362,7 @@ void MainWindow::onRendererReady() {
   teaching_->syncOverlayCombo();
   updatePublishing();
   teaching_->restoreSplit();
+  lessons_->queueSettle();  // a lesson chosen before the renderer started
   updateTitle();
   const QString gl = QString::fromStdString(renderer->glDescription());
   glLabel_->setText(shortGlName(gl));
@@ -525,6 +527,8 @@ void MainWindow::updatePublishing() {
   sl::Renderer* r = viewport_ ? viewport_->renderer() : nullptr;
   if (!r) return;
   std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
+  if (lessons_ && lessons_->settling())  // what the lesson waits for
+    for (const std::string& key : rtwsettle::keys()) keys.insert(key);
   // A grab's published.json holds every number the technique declares (they cost no readback).
   if (grab_->running())
     if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))

@@ -1,13 +1,16 @@
 // GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
 // params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE],
 // omni-probe[=DIR], session-save=FILE, session-check (SelfTestsSession.cpp), presenter[=DIR],
-// split-params[=DIR] (SelfTestsPresenter.cpp). They act as a
+// split-params[=DIR] (SelfTestsPresenter.cpp), lesson-claims[=DIR] (SelfTestsLessons.cpp). They act as a
 // user would and check what the renderer and the window did; each check prints "ok   ..." or "FAIL
 // ...".
 #pragma once
 
 #include <QObject>
 #include <QString>
+
+#include "core/Preset.h"
+#include "core/Renderer.h"
 
 namespace sl::ui {
 
@@ -64,6 +67,23 @@ class SelfTests : public QObject {
   void printSessionMetrics();
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
+  /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;
+  /// its layout (listed docks only, the large one large) and, for the lessons that state one,
+  /// its claim measured with the numbers read from its own text (perspective aliasing: m bands
+  /// and thin error lines; projective aliasing: the floor's m at a low and a high sun;
+  /// tessellation: the error without it against with it; RTW: below uniform in the split view; PCA:
+  /// the settled angle; vibration: changed pixels per frame, none once held). A PNG of the window
+  /// into DIR.
+  bool lessonClaims(const QString& dir);
+  void lessonLayout(const sl::PresetLayout& layout);
+  void claimPerspective(const QString& text);
+  void claimProjective(const QString& text);
+  void claimTessellation(const QString& text);
+  void claimRtw();
+  void claimPca(const QString& text);
+  void claimVibration(const QString& text);
+  /// The main view's error against the reference, with its per-pixel readback.
+  sl::Renderer::ErrorResult measureView();
   void check(bool ok, const QString& what);
 
   MainWindow& w_;

@@ -22,6 +22,7 @@ namespace {
 const QString kRecentKey = QStringLiteral("sessions/recent");
 constexpr int kStateVersion = 1;  ///< QMainWindow::saveState's version in a session
 const QString kFilter = QStringLiteral("ShadowLab sessions and lessons (*.json)");
+constexpr int kLargeDockPercent = 45;  ///< a lesson's large dock: share of the window
 }  // namespace
 
 QFileDialog::Options SessionFiles::dialogOptions() const {
@@ -110,6 +111,8 @@ void SessionFiles::applyLayout(const sl::PresetLayout& layout, QStringList* prob
                        kStateVersion))
     *problems << tr("the window layout in the session could not be restored");
   if (layout.docks.empty() && !layout.state.empty()) return;  // the state alone decides
+  // A lesson names its docks without a state: they go where the default layout puts them.
+  if (layout.state.empty() && !layout.docks.empty()) w_.applyDefaultLayout();
   QStringList wanted;
   for (const std::string& name : layout.docks) wanted << QString::fromStdString(name);
   const QList<QDockWidget*> docks = w_.findChildren<QDockWidget*>();
@@ -123,6 +126,19 @@ void SessionFiles::applyLayout(const sl::PresetLayout& layout, QStringList* prob
     const bool on = wanted.contains(dock->objectName());
     if (dock->toggleViewAction()->isChecked() != on) dock->setVisible(on);
   }
+  // Listed docks sharing a tab group: the first listed is in front.
+  for (auto it = wanted.crbegin(); it != wanted.crend(); ++it)
+    if (QDockWidget* dock = w_.findChild<QDockWidget*>(*it)) dock->raise();
+  if (layout.large.empty()) return;
+  QDockWidget* large = w_.findChild<QDockWidget*>(QString::fromStdString(layout.large));
+  if (!large) return;  // reported above
+  // The telling panel: most of its side of the window (the view keeps the rest).
+  large->raise();
+  const Qt::DockWidgetArea area = w_.dockWidgetArea(large);
+  const bool vertical = area == Qt::TopDockWidgetArea || area == Qt::BottomDockWidgetArea;
+  const int share =
+      vertical ? w_.height() * kLargeDockPercent / 100 : w_.width() * kLargeDockPercent / 100;
+  w_.resizeDocks({large}, {share}, vertical ? Qt::Vertical : Qt::Horizontal);
 }
 
 QStringList SessionFiles::recent() {

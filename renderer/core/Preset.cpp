@@ -1,5 +1,7 @@
 #include "core/Preset.h"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "algo/Params.h"
@@ -92,7 +94,7 @@ PresetCompare parseCompare(const JsonReader& r, const json& c) {
 }
 
 PresetLayout parseLayout(const JsonReader& r, const json& l) {
-  r.onlyKeys(l, "layout", {"docks", "state"});
+  r.onlyKeys(l, "layout", {"docks", "state", "large"});
   PresetLayout out;
   if (const json* docks = JsonReader::member(l, "docks")) {
     r.requireArray(*docks, "layout.docks");
@@ -114,6 +116,11 @@ PresetLayout parseLayout(const JsonReader& r, const json& l) {
                                " (kMaxPresetLayoutStateBytes)");
   if (!isBase64(out.state))
     r.fail("layout.state", "expected the window state as base64, got " + quoteText(out.state, 60));
+  out.large = r.string(l, "layout", "large", "");
+  if (!out.large.empty() &&
+      std::find(out.docks.begin(), out.docks.end(), out.large) == out.docks.end())
+    r.fail("layout.large",
+           "names '" + quoteText(out.large, 60) + "', which \"docks\" does not list");
   return out;
 }
 
@@ -190,7 +197,10 @@ std::string presetToJson(const Preset& p) {
   if (p.light) j["light"] = lightToJson(*p.light, JsonKeyStyle::CamelCase);
   if (p.compare)
     j["compare"] = {{"technique", p.compare->technique}, {"params", p.compare->params}};
-  if (p.layout) j["layout"] = {{"docks", p.layout->docks}, {"state", p.layout->state}};
+  if (p.layout) {
+    j["layout"] = {{"docks", p.layout->docks}, {"state", p.layout->state}};
+    if (!p.layout->large.empty()) j["layout"]["large"] = p.layout->large;
+  }
   return j.dump(2);
 }
 

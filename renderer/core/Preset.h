@@ -28,10 +28,12 @@ struct PresetCompare {
 };
 
 /// The window's layout: the object names of the visible docks, and QMainWindow::saveState
-/// as base64 (either may be empty). Dock names are checked by the window, not here.
+/// as base64 (either may be empty), and the one dock a lesson shows large ("": none). Dock
+/// names are checked by the window, not here.
 struct PresetLayout {
   std::vector<std::string> docks;
   std::string state;
+  std::string large;  ///< a dock of `docks` given most of its side of the window
   bool operator==(const PresetLayout&) const = default;
 };
 
@@ -44,7 +46,7 @@ struct Preset {
   std::optional<Camera> camera;
   std::optional<Light> light;            ///< core/LightJson: {"type", ...}
   std::optional<PresetCompare> compare;  ///< "compare": {"technique", "params"} (sessions)
-  std::optional<PresetLayout> layout;    ///< "layout": {"docks", "state"} (sessions)
+  std::optional<PresetLayout> layout;    ///< "layout": {"docks", "state", "large"}
 };
 
 /// Reads a preset; the error names the file and the problem.

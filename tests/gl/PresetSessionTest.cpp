@@ -46,7 +46,7 @@ Preset fullSession() {
   p.camera = c;
   p.light = Light::spot({1.0f, 6.0f, 2.0f}, {0.1f, -1.0f, 0.2f}, 35.0f, 5.0f, 40.0f);
   p.compare = PresetCompare{"rtw-backward", {{"im.resolution", "256"}}};
-  p.layout = PresetLayout{{"parameters", "timing", "light"}, "AAAA/wAAAAD9AAAAAw=="};
+  p.layout = PresetLayout{{"parameters", "timing", "light"}, "AAAA/wAAAAD9AAAAAw==", "timing"};
   return p;
 }
 
@@ -175,7 +175,9 @@ TEST(PresetSession, BadLayoutIsRefusedNamingThePath) {
   EXPECT_EQ(loadError("l6.json", R"({"layout": {"state": ")" + big + "\"}}"),
             "layout.state: is 65540 bytes, over the limit of 65536 (kMaxPresetLayoutStateBytes)");
   EXPECT_EQ(loadError("l7.json", R"({"layout": {"docks": [], "size": 3}})"),
-            "layout.size: unknown key 'size' (known: docks, state)");
+            "layout.size: unknown key 'size' (known: docks, state, large)");
+  EXPECT_EQ(loadError("l8.json", R"({"layout": {"docks": ["lesson"], "large": "timing"}})"),
+            "layout.large: names 'timing', which \"docks\" does not list");
 }
 
 }  // namespace

@@ -12,7 +12,7 @@ lessons=("$root"/scenes/lessons/*.json)
 (( ${#lessons[@]} >= 10 )) || { echo "FAIL: only ${#lessons[@]} lessons found"; exit 1; }
 fail=0
 for f in "${lessons[@]}"; do
-  if hits=$(grep -oE '.{0,30}(seed [0-9]{3}|[A-Za-z_]+::[A-Za-z_]+).{0,20}' "$f"); then
+  if hits=$(grep -oE '.{0,30}([Ss]eed [0-9]{3}|[A-Za-z_]+::[A-Za-z_]+).{0,20}' "$f"); then
     echo "FAIL: $(basename "$f"): $hits"
     fail=1
   fi

@@ -171,6 +171,7 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count) {
 }
 
 void LessonPanel::setNote(const QString& note) {
+  noteText_ = note;
   note_->setText(shownMessage(note));
   note_->setToolTip(messageDetails(note));
   note_->setVisible(!note.isEmpty());

@@ -49,6 +49,8 @@ class LessonPanel : public QWidget {
   void setLessonTitles(const QStringList& titles);
   /// A line under the explanation (e.g. a parameter the lesson could not apply).
   void setNote(const QString& note);
+  /// The note as set (unelided).
+  QString note() const { return noteText_; }
 
  Q_SIGNALS:
   void previousRequested();
@@ -64,6 +66,7 @@ class LessonPanel : public QWidget {
   QPushButton* next_ = nullptr;
   QPushButton* restart_ = nullptr;
   QStringList titles_;
+  QString noteText_;
 };
 
 }  // namespace sl::ui

@@ -38,6 +38,13 @@ double axisDifferenceDeg(double a, double b) {
   if (d <= -90.0) d += 180.0;
   return d;
 }
+
+/// The hold threshold as the Parameters panel shows it (0.9999, 1.0), not as 1 − threshold.
+QString thresholdText(double threshold) {
+  QString t = QString::number(threshold, 'f', 7);
+  while (t.endsWith(QLatin1Char('0')) && !t.endsWith(QStringLiteral(".0"))) t.chop(1);
+  return t;
+}
 }  // namespace
 
 /// e_x on a log scale of 1 - e_x (0.9 .. 0.9999999), with the threshold marked: right of it
@@ -90,9 +97,9 @@ class ThresholdGauge : public QWidget {
     p.drawLine(QPointF(tx, track.top() - 3), QPointF(tx, track.bottom() + 3));
     p.setPen(pal.color(QPalette::Text));
     const QString head =
-        valid_ ? tr("1 − e_x = %1   (threshold: %2)")
-                     .arg(formatValue(std::max(1.0 - ex_, 0.0)), formatValue(1.0 - threshold_))
-               : tr("no principal axis   (threshold 1 − %1)").arg(formatValue(1.0 - threshold_));
+        valid_ ? tr("1 − e_x = %1   (hold when e_x > threshold %2)")
+                     .arg(formatValue(std::max(1.0 - ex_, 0.0)), thresholdText(threshold_))
+               : tr("no principal axis   (threshold %1)").arg(thresholdText(threshold_));
     p.drawText(QRectF(8, 0, width() - 16, line + 4), Qt::AlignLeft | Qt::AlignVCenter, head);
     if (valid_) {
       const double x = xOf(ex_);
@@ -210,11 +217,17 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   const double publishedDeg = std::atan2(pubEy, pubEx) * 180.0 / kPi;
   const bool held = numberOr(n, "rotation.held", 0.0) != 0.0;
   const bool pcaValid = n.count("pca.valid") ? n.at("pca.valid") != 0.0 : s.valid;
-  drawn_ = {{QStringLiteral("source"), source},     {QStringLiteral("valid"), s.valid},
-            {QStringLiteral("axis_deg"), axisDeg},  {QStringLiteral("axis_image_deg"), imageDeg},
-            {QStringLiteral("e_x"), s.ex},          {QStringLiteral("e_y"), s.ey},
-            {QStringLiteral("eigen.1"), s.lambda1}, {QStringLiteral("eigen.2"), s.lambda2},
-            {QStringLiteral("mean.x"), s.meanX},    {QStringLiteral("mean.y"), s.meanY}};
+  drawn_ = {{QStringLiteral("source"), source},
+            {QStringLiteral("valid"), s.valid},
+            {QStringLiteral("axis_deg"), axisDeg},
+            {QStringLiteral("axis_image_deg"), imageDeg},
+            {QStringLiteral("e_x"), s.ex},
+            {QStringLiteral("e_y"), s.ey},
+            {QStringLiteral("eigen.1"), s.lambda1},
+            {QStringLiteral("eigen.2"), s.lambda2},
+            {QStringLiteral("mean.x"), s.meanX},
+            {QStringLiteral("mean.y"), s.meanY},
+            {QStringLiteral("threshold_shown"), thresholdText(threshold_)}};
   if (havePublished)
     drawn_[QStringLiteral("axis_minus_published_deg")] = axisDifferenceDeg(axisDeg, publishedDeg);
 

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Each lesson's claim, in numbers (shadowlab --lesson NAME --self-test lesson-claims=DIR, see
+# ui/SelfTestsLessons.cpp): every lesson in scenes/lessons started fresh, as
+# scripts/grab_lessons.sh grabs it (the same screen, so the same window): its temporal state
+# settled, only its listed panels shown and its telling panel large; the claims read from the
+# lesson's own text and measured: perspective aliasing (m in three bands, the error thin lines
+# along the exact shadow's edges), projective aliasing (the floor's m at a low and a high sun),
+# RTW against uniform at the same texels in the split view, the PCA's settled angle (two fresh
+# starts, the same angle), the vibration (changed pixels per frame, none once held). The
+# window of each lesson is saved to DIR for a look.
+# usage: lesson_claims.sh <shadowlab> <tests/data dir> <out dir>
+set -euo pipefail
+app=$1
+out=$3/lesson_claims
+here=$(cd "$(dirname "$0")" && pwd)
+export XVFB_SCREEN=1920x1080x24
+source "$here/xvfb.bash"
+rm -rf "$out" && mkdir -p "$out"
+start_xvfb
+
+fail=0
+declare -A angle
+for json in "$here"/../../scenes/lessons/*.json; do
+  name=$(basename "$json" .json)
+  runs=1
+  [[ $name == *diagonal-pca ]] && runs=2  # from a fresh start, every run: the same angle
+  for run in $(seq $runs); do
+    log=$out/$name-$run
+    rc=0
+    timeout 300 "$app" --lesson "$name" --self-test "lesson-claims=$out" >"$log.out" 2>"$log.err" ||
+      rc=$?
+    cat "$log.out"
+    if [[ $rc -ne 0 ]] || ! grep -qx PASS "$log.out"; then
+      echo "FAIL: $name (run $run) exited with $rc; stderr:"
+      tail -n 20 "$log.err"
+      fail=1
+    fi
+    a=$(sed -n 's/^metric rotation_deg=//p' "$log.out")
+    [[ -n "$a" ]] && angle[$run]=$a
+  done
+done
+if [[ -n "${angle[1]:-}" && "${angle[1]}" != "${angle[2]:-}" ]]; then
+  echo "FAIL: the PCA lesson settled at ${angle[1]}° and then at ${angle[2]:-?}°"
+  fail=1
+fi
+python3 "$here/pngstats.py" --min-colors 64 --min-stddev 8 "$out"/[0-9]*.png || fail=1
+[[ $fail -eq 0 ]] && echo "PASS"
+exit $fail

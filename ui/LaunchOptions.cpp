@@ -45,7 +45,8 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       QStringLiteral("self-test"),
       QStringLiteral(
           "Run a GUI self-test (params, bad-gltf=FILE[,FILE...], teaching[=DIR], charts[=DIR], "
-          "split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check)."),
+          "split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check, "
+          "live-error[=DIR], adaptive-resolution[=DIR])."),
       QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
   parser.addOptions({scene, technique, set, lesson, session, grab, grabAfter, selfTest});
@@ -94,14 +95,16 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       o.selfTest != QLatin1String("bad-gltf") && o.selfTest != QLatin1String("teaching") &&
       o.selfTest != QLatin1String("charts") && o.selfTest != QLatin1String("split-resize") &&
       o.selfTest != QLatin1String("omni-probe") && o.selfTest != QLatin1String("session-save") &&
-      o.selfTest != QLatin1String("session-check")) {
+      o.selfTest != QLatin1String("session-check") && o.selfTest != QLatin1String("live-error") &&
+      o.selfTest != QLatin1String("adaptive-resolution")) {
     out.exitCode = 2;
     out.messageIsError = true;
-    out.message = QStringLiteral(
-                      "unknown --self-test '%1' (known: params, bad-gltf=FILE[,FILE...], "
-                      "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE], omni-probe[=DIR], "
-                      "session-save=FILE, session-check)")
-                      .arg(parser.value(selfTest));
+    out.message =
+        QStringLiteral(
+            "unknown --self-test '%1' (known: params, bad-gltf=FILE[,FILE...], "
+            "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE], omni-probe[=DIR], "
+            "session-save=FILE, session-check, live-error[=DIR], adaptive-resolution[=DIR])")
+            .arg(parser.value(selfTest));
     return out;
   }
   bool ok = false;

@@ -50,7 +50,8 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       QStringLiteral(
           "Run a GUI self-test (params, bad-gltf=FILE[,FILE...], teaching[=DIR], charts[=DIR], "
           "split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check, "
-          "presenter[=DIR], split-params[=DIR], lesson-claims[=DIR])."),
+          "presenter[=DIR], split-params[=DIR], lesson-claims[=DIR], live-error[=DIR], "
+          "adaptive-resolution[=DIR])."),
       QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
   parser.addOptions({scene, technique, set, lesson, session, presenter, grab, grabAfter, selfTest});
@@ -102,14 +103,15 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       o.selfTest != QLatin1String("omni-probe") && o.selfTest != QLatin1String("session-save") &&
       o.selfTest != QLatin1String("session-check") && o.selfTest != QLatin1String("presenter") &&
       o.selfTest != QLatin1String("split-params") &&
-      o.selfTest != QLatin1String("lesson-claims")) {
+      o.selfTest != QLatin1String("lesson-claims") && o.selfTest != QLatin1String("live-error") &&
+      o.selfTest != QLatin1String("adaptive-resolution")) {
     out.exitCode = 2;
     out.messageIsError = true;
     out.message = QStringLiteral(
                       "unknown --self-test '%1' (known: params, bad-gltf=FILE[,FILE...], "
                       "teaching[=DIR], charts[=DIR], split-resize[=TECHNIQUE], omni-probe[=DIR], "
                       "session-save=FILE, session-check, presenter[=DIR], split-params[=DIR], "
-                      "lesson-claims[=DIR])")
+                      "lesson-claims[=DIR], live-error[=DIR], adaptive-resolution[=DIR])")
                       .arg(parser.value(selfTest));
     return out;
   }

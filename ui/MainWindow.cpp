@@ -92,6 +92,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
 
   viewport_ = new ViewportWidget(this);
   viewport_->setObjectName(QStringLiteral("viewport"));
+  // Scripted runs (grabs, self-tests) measure full-size frames: no adaptive resolution.
+  viewport_->setAdaptiveAllowed(interactive_);
   setCentralWidget(viewport_);
   connect(viewport_, &ViewportWidget::rendererReady, this, &MainWindow::onRendererReady);
   connect(viewport_, &ViewportWidget::rendererAboutToBeDestroyed, this,
@@ -104,6 +106,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   connect(viewport_, &ViewportWidget::pixelProbed, this,
           [this](const std::optional<sl::PixelProbe>& probe) { docks_.showProbe(probe); });
   connect(viewport_, &ViewportWidget::viewChanged, this, [this] {
+    if (viewport_->continuous()) return updateLiveErrorLabel();
     if (!viewport_->errorIsCurrent()) errorLabel_->setText(tr("error —"));
   });
 
@@ -390,6 +393,7 @@ void MainWindow::onFrameRendered() {
                                     : QString::fromStdString(stats.timingMethod)));
   timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
   timingPanel_->showStats(stats);
+  if (viewport_->continuous()) updateLiveErrorLabel();
   if (rendererBound_) grab_->countFrame();
   if (docks_.isCurrent(*renderer, false)) docks_.feed(*renderer, false);
   passes_->onFrameRendered();
@@ -409,7 +413,17 @@ void MainWindow::onInitializationFailed(const QString& message) {
 }
 
 void MainWindow::onErrorComputed(double errorPct) {
+  errorLabel_->setEnabled(true);
+  if (viewport_->continuous()) return updateLiveErrorLabel();
   errorLabel_->setText(tr("error %1 %").arg(errorPct, 0, 'f', errorPct < 1 ? 3 : 2));
+}
+
+void MainWindow::updateLiveErrorLabel() {
+  if (!errorLabel_) return;  // (a lesson may turn continuous rendering on during setup)
+  // Greyed while the number is an earlier view's (or there is none yet).
+  const auto live = viewport_->liveError();
+  errorLabel_->setEnabled(live && !live->age.stale);
+  errorLabel_->setText(viewport_->liveErrorText());
 }
 
 // --- Light, camera, misc -------------------------------------------------------------------
@@ -526,6 +540,7 @@ void MainWindow::onChartsConfigurationChosen(const QString& id, const QStringLis
 void MainWindow::updatePublishing() {
   sl::Renderer* r = viewport_ ? viewport_->renderer() : nullptr;
   if (!r) return;
+  viewport_->setProbeWanted(docks_.probeWanted());
   std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
   if (lessons_ && lessons_->settling())  // what the lesson waits for
     for (const std::string& key : rtwsettle::keys()) keys.insert(key);

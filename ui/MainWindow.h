@@ -120,6 +120,8 @@ class MainWindow : public QMainWindow {
   void onRenderProblem(const QString& message);
   void onInitializationFailed(const QString& message);
   void onErrorComputed(double errorPct);
+  /// Continuous rendering: the live error with its reference's age (greyed when stale).
+  void updateLiveErrorLabel();
   void onSceneComboActivated(int index);
   void onTechniqueComboActivated(int index);
   void onChartsConfigurationChosen(const QString& id, const QStringList& assignments);

@@ -87,6 +87,13 @@ void MainWindow::createActions() {
   continuousAction_->setToolTip(
       tr("Redraw every frame (for techniques that converge over frames)"));
   connect(continuousAction_, &QAction::toggled, viewport_, &ViewportWidget::setContinuous);
+  connect(continuousAction_, &QAction::toggled, this, [this](bool on) {
+    if (on || !errorLabel_) return updateLiveErrorLabel();
+    errorLabel_->setEnabled(true);
+    errorLabel_->setText(viewport_->errorPct()
+                             ? tr("error %1 %").arg(*viewport_->errorPct(), 0, 'f', 3)
+                             : tr("error —"));
+  });
   QAction* resetTemporal = view->addAction(tr("Reset &temporal state"), this, [this] {
     if (auto* r = viewport_->renderer()) r->resetTemporalState();
     viewport_->update();

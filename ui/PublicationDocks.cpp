@@ -81,6 +81,11 @@ void PublicationDocks::showProbe(const std::optional<sl::PixelProbe>& probe) con
   for (const Dock& d : docks_) d.panel->showProbe(probe);
 }
 
+bool PublicationDocks::probeWanted() const {
+  return std::any_of(docks_.begin(), docks_.end(),
+                     [](const Dock& d) { return d.dock->isVisible() && d.panel->wantsProbe(); });
+}
+
 void PublicationDocks::highlightPass(const QString& passId) const {
   for (const Dock& d : docks_) d.panel->highlightPass(passId);
 }

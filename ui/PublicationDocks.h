@@ -49,6 +49,8 @@ class PublicationDocks {
   void highlightPass(const QString& passId) const;
   /// The view's pixel under the mouse, to every panel (visible or not: cheap, no readback).
   void showProbe(const std::optional<sl::PixelProbe>& probe) const;
+  /// A visible panel draws the probe (PublicationPanel::wantsProbe): the view reads it.
+  bool probeWanted() const;
   /// What each panel drew, by dock name (for --grab's published.json).
   QJsonObject drawnValues() const;
 

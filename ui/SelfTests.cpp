@@ -133,6 +133,10 @@ void SelfTests::run() {
     ran = splitParams(argument_);
   else if (name_ == QLatin1String("lesson-claims"))
     ran = lessonClaims(argument_);
+  else if (name_ == QLatin1String("live-error"))
+    ran = liveError(argument_);
+  else if (name_ == QLatin1String("adaptive-resolution"))
+    ran = adaptiveResolution(argument_);
   else
     ran = badGltf(argument_);
   const bool pass = ran && failures_ == 0;
@@ -296,6 +300,29 @@ bool SelfTests::omniProbe(const QString& dir) {
   QCoreApplication::processEvents();
   check(!panel->drawnValues().contains(QStringLiteral("probe_map")),
         tr("leaving the view removes the marker"));
+  // The probe is read back only while a panel that shows it is visible (issue 15 item 6).
+  check(view->probeWanted(), tr("with the Omni map shown the view reads the probe"));
+  auto hoverFrames = [&] {  // the mouse over the view, moved, and two frames under it
+    const std::uint64_t before = view->probesRead();
+    for (const QPointF at : {QPointF(40, 40), QPointF(60, 50)}) {
+      QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::NoButton,
+                       Qt::NoModifier);
+      QCoreApplication::sendEvent(view, &move);
+    }
+    w_.waitForFrames(2);
+    return view->probesRead() - before;
+  };
+  const std::uint64_t shownReads = hoverFrames();
+  check(shownReads >= 4,
+        tr("Omni map shown: %1 probe reads for 2 moves and 2 frames").arg(qulonglong(shownReads)));
+  dock->hide();
+  QCoreApplication::processEvents();
+  check(!view->probeWanted(), tr("with the Omni map hidden no panel wants the probe"));
+  const std::uint64_t hiddenReads = hoverFrames();
+  check(
+      hiddenReads == 0,
+      tr("Omni map hidden: %1 probe reads for 2 moves and 2 frames").arg(qulonglong(hiddenReads)));
+  QCoreApplication::sendEvent(view, &leave);
   return true;
 }
 

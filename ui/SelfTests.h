@@ -65,6 +65,16 @@ class SelfTests : public QObject {
   bool splitParams(const QString& dir);
   /// The view pinned to 640x400, a few frames, the error computed; prints the metrics.
   void printSessionMetrics();
+  /// live-error[=DIR]: continuous rendering (F6) keeps the error live: a number and the reference's
+  /// age within a time limit, equal to the error computed synchronously for the same frame;
+  /// a camera move makes it stale, then fresh again; a scene change mid-trace drops the
+  /// trace; the window then closes while a trace runs (SelfTestsLive.cpp).
+  bool liveError(const QString& dir);
+  /// adaptive-resolution[=DIR]: a slow technique's frame (over the 250 ms budget) drops the view's
+  /// internal resolution with a note in the view; frames then render at the lower size; a
+  /// large budget climbs back to full size; view.adaptive off renders at full size. PNGs of
+  /// the window (live error) and the reduced view into DIR when given.
+  bool adaptiveResolution(const QString& dir);
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
   /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;

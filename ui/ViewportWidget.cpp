@@ -83,7 +83,8 @@ class ViewOverlay : public QWidget {
   /// The light gizmo (widget pixels): lines, and the light's own point when on screen.
   QVector<QLineF> gizmoLines;
   std::optional<QPointF> gizmoPoint;
-  bool errorStale = false;
+  QString errorNote;       ///< under the error legend: the reference's state, empty when current
+  QString resolutionNote;  ///< adaptive resolution: the internal size and why (empty: full)
   /// The changed overlay's count (pixels whose hard test flipped since the last frame, of
   /// those covered in both), or nothing yet.
   std::optional<std::pair<std::uint64_t, std::uint64_t>> changedCount;
@@ -114,7 +115,7 @@ class ViewOverlay : public QWidget {
     return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() || pointerRing ||
            !zoomArea.isEmpty() || !zoomDrag.isEmpty() || changedCount || !pausedText.isEmpty() ||
            legend != Legend::None || !gizmoLines.isEmpty() || gizmoPoint ||
-           !outsideLegend.isEmpty();
+           !outsideLegend.isEmpty() || !resolutionNote.isEmpty();
   }
 
  protected:
@@ -205,6 +206,13 @@ class ViewOverlay : public QWidget {
                    outsideLegend[i].second);
       }
     }
+    if (!resolutionNote.isEmpty()) {  // bottom right: the view is not at full size
+      const int tw = std::min(width() - 24, fm.horizontalAdvance(resolutionNote) + 20);
+      const QRectF r(width() - tw - 12, height() - bottomInset - line - 10, tw, line + 10);
+      box(r);
+      p.setPen(QColor(255, 200, 60));
+      p.drawText(r, Qt::AlignCenter, fm.elidedText(resolutionNote, Qt::ElideRight, tw - 8));
+    }
     if (legend == Legend::Aliasing) {
       // Same colours as aliasingColor() in shaders/common/composite.frag (log2 m in -4..4,
       // blended at 70 % over the shaded scene there).
@@ -229,7 +237,7 @@ class ViewOverlay : public QWidget {
                  tr("texels per pixel m (red: undersampled)"));
     } else if (legend == Legend::Error) {
       const QString a = tr("false lit (light leak)"), b = tr("false shadowed");
-      const QString note = errorStale ? tr("(computing the reference\u2026)") : QString();
+      const QString& note = errorNote;
       const int tw =
           std::max({fm.horizontalAdvance(a), fm.horizontalAdvance(b), fm.horizontalAdvance(note)}) +
           44;
@@ -320,6 +328,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 ViewportWidget::~ViewportWidget() {
+  liveReference_.reset();  // cancels a running trace and joins the worker
   destroyRenderer();
 }
 
@@ -358,6 +367,8 @@ void ViewportWidget::applyStateToRenderer() {
 }
 
 void ViewportWidget::destroyRenderer() {
+  if (liveReference_) liveReference_->cancel();  // its result would be of a renderer gone
+  liveLatest_.reset();
   if (!renderer_) return;
   Q_EMIT rendererAboutToBeDestroyed();
   makeCurrent();
@@ -409,14 +420,35 @@ void ViewportWidget::paintGL() {
   const bool split = !splitTechniqueId_.empty() && w / 2 >= kMinDrawnPx;
   const int mainWidth = split ? w / 2 : w;
   lastMainWidth_ = mainWidth;
-  if (split) renderSplitHalf(w - mainWidth, h, problem);
+
+  // Adaptive resolution: render at 1/divisor of the size (never below the smallest drawn
+  // view), stretched over it by the renderer.
+  const sl::ParamSet& shared = renderer_->rendererParams();
+  const bool adaptive =
+      adaptiveAllowed_ && shared.has("view.adaptive") && shared.getBool("view.adaptive");
+  if (!adaptive && adaptive_.divisor() != 1) adaptive_.reset();
+  int divisor = adaptive_.divisor();
+  while (divisor > 1 && (mainWidth / divisor < kMinDrawnPx || h / divisor < kMinDrawnPx))
+    divisor /= 2;
+  if (divisor != frameDivisor_) markViewChanged();  // another image: the error is not its
+  frameDivisor_ = divisor;
+  const int frameW = sl::AdaptiveResolution::scaled(mainWidth, divisor);
+  const int frameH = sl::AdaptiveResolution::scaled(h, divisor);
+  internalSize_ = QSize(frameW, frameH);
+  QElapsedTimer frameClock;
+  frameClock.start();
+  if (split)
+    renderSplitHalf(sl::AdaptiveResolution::scaled(w - mainWidth, divisor), frameH, problem);
 
   std::optional<std::string> error;
   try {
-    error = renderer_->renderFrame(mainWidth, h, defaultFramebufferObject());
+    error = renderer_->renderFrame(frameW, frameH, defaultFramebufferObject(), mainWidth, h);
   } catch (const std::exception& e) {
     error = std::string("renderer: ") + e.what();
   }
+  lastFrameMs_ = std::max(double(frameClock.nsecsElapsed()) / 1e6, renderer_->stats().totalMs);
+  if (adaptive && !error)
+    adaptive_.onFrame(lastFrameMs_, double(shared.getInt("view.adaptive.budget_ms")));
   ++framesRendered_;
   if (error) problem += (problem.empty() ? "" : "; ") + *error;
   for (const std::string& glError : renderer_->takeGlErrors())
@@ -426,10 +458,13 @@ void ViewportWidget::paintGL() {
   lastProblem_ = problem;
 
   updateZoomInset();
+  if (continuous_ && !error) updateLiveReference();
   updateOverlayWidget();
   Q_EMIT frameRendered();
-  probeHover();                                             // the frame changed under a still mouse
-  if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);  // restarts: waits for stillness
+  probeHover();  // the frame changed under a still mouse
+  // On demand (or paused): the error is computed once the view is still (restarted by every
+  // frame). Continuous: the live reference above keeps it.
+  if (!errorIsCurrent() && (!continuous_ || paused_)) errorTimer_.start(kErrorDelayMs);
   if (continuous_ && !paused_) update();
 }
 
@@ -664,7 +699,16 @@ void ViewportWidget::updateOverlayWidget() {
       overlay_->legend = ViewOverlay::Legend::None;
     }
   }
-  overlay_->errorStale = !errorIsCurrent();
+  overlay_->resolutionNote = resolutionNote();
+  overlay_->errorNote.clear();
+  if (continuous_) {  // the live reference: how old, or being traced for this view
+    const auto live = liveError();
+    overlay_->errorNote = !live || live->age.stale
+                              ? tr("view changed: tracing its reference\u2026")
+                              : QString::fromStdString(sl::describeReferenceAge(live->age));
+  } else if (!errorIsCurrent()) {
+    overlay_->errorNote = tr("(computing the reference\u2026)");
+  }
   overlay_->pausedText =
       paused_ && pausedBadge_
           ? tr("PAUSED at frame %1  \u00b7  . step  \u00b7  Space resume")
@@ -685,6 +729,9 @@ void ViewportWidget::setPaused(bool paused, bool badge) {
   if (paused_ == paused) return updateOverlayWidget();
   paused_ = paused;
   pendingSteps_ = 0;
+  // Paused in continuous rendering: no more frames, so the still view's error is computed
+  // as on demand.
+  if (paused_ && !errorIsCurrent()) errorTimer_.start(kErrorDelayMs);
   updateOverlayWidget();
   update();
 }
@@ -814,6 +861,8 @@ void ViewportWidget::resizeGL(int, int) {
 
 void ViewportWidget::setScene(std::shared_ptr<const sl::Scene> scene) {
   scene_ = std::move(scene);
+  if (liveReference_) liveReference_->cancel();  // a trace of the old scene is never shown
+  liveLatest_.reset();
   if (scene_ && scene_->light) light_ = *scene_->light;
   Q_EMIT lightChanged();
   if (renderer_) {
@@ -983,7 +1032,111 @@ void ViewportWidget::dragLight(const QPoint& d) {
 
 void ViewportWidget::setContinuous(bool on) {
   continuous_ = on;
-  if (on) update();
+  if (on) {
+    errorTimer_.stop();
+    if (!liveReference_)
+      liveReference_ = std::make_unique<sl::AsyncReference>(kLiveReferenceMinIntervalS,
+                                                            kLiveReferenceDurationFactor);
+    update();
+  } else {
+    if (liveReference_) liveReference_->cancel();
+    liveLatest_.reset();
+    if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);
+  }
+  updateOverlayWidget();
+}
+
+// GL current (paintGL).
+void ViewportWidget::updateLiveReference() {
+  if (!liveReference_ || !renderer_) return;
+  if (auto failure = liveReference_->takeFailure())
+    Q_EMIT renderProblem(
+        QStringLiteral("reference trace failed: %1").arg(QString::fromStdString(*failure)));
+  if (auto done = liveReference_->takeFinished()) {
+    const bool current = done->viewRevision == viewRevision_;
+    // The error overlay draws the mask only while frames show what was traced (the
+    // renderer compares frame signatures); a mask of an earlier view is not drawn.
+    if (current)
+      renderer_->setReferenceMask(done->trace.frameSignature, done->trace.referenceMask,
+                                  done->trace.width, done->trace.height);
+    done->trace.referenceMask = {};
+    liveLatest_ = std::move(done);
+    if (current) {
+      mainErrorPct_ = liveLatest_->trace.stats.errorPct;
+      errorRevision_ = viewRevision_;
+      Q_EMIT errorComputed(*mainErrorPct_);
+    }
+  }
+  if (!liveReference_->wantsTrace(viewRevision_)) return;
+  // The snapshot is read here (GL); the worker traces CPU copies only.
+  auto snapshot =
+      std::make_shared<sl::Renderer::ReferenceSnapshot>(renderer_->snapshotForReference());
+  if (!snapshot->reference) return;
+  sl::ReferenceJob job;
+  job.viewRevision = viewRevision_;
+  job.frameNumber = framesRendered_;
+  job.trace = [snapshot](const std::atomic<bool>& cancelled) -> std::optional<sl::ReferenceTrace> {
+    const int width = snapshot->frame.width, height = snapshot->frame.height;
+    std::string signature = snapshot->frameSignature;
+    auto result = sl::Renderer::traceReference(std::move(*snapshot), &cancelled);
+    if (!result) return std::nullopt;
+    sl::ReferenceTrace t;
+    t.stats = result->stats;
+    t.referenceMask = std::move(result->referenceMask);
+    t.width = width;
+    t.height = height;
+    t.frameSignature = std::move(signature);
+    return t;
+  };
+  liveReference_->submit(std::move(job));
+}
+
+std::optional<ViewportWidget::LiveError> ViewportWidget::liveError() const {
+  if (!continuous_ || !liveLatest_) return std::nullopt;
+  LiveError e;
+  e.errorPct = liveLatest_->trace.stats.errorPct;
+  e.age = sl::referenceAge(*liveLatest_, viewRevision_, framesRendered_,
+                           sl::AsyncReference::steadySeconds());
+  return e;
+}
+
+QString ViewportWidget::errorOverlayNote() const {
+  return overlay_->errorNote;
+}
+
+QString ViewportWidget::liveErrorText() const {
+  if (!continuous_) return {};
+  const auto e = liveError();
+  if (!e) return tr("error \u2014  \u00b7  tracing the reference\u2026");
+  const QString pct = QString::number(e->errorPct, 'f', e->errorPct < 1 ? 3 : 2);
+  const QString age = QString::fromStdString(sl::describeReferenceAge(e->age));
+  if (e->age.stale) return tr("error %1 %  \u00b7  %2  \u00b7  re-tracing").arg(pct, age);
+  return tr("error %1 %  \u00b7  %2").arg(pct, age);
+}
+
+void ViewportWidget::setAdaptiveAllowed(bool allowed) {
+  adaptiveAllowed_ = allowed;
+  update();
+}
+
+QString ViewportWidget::resolutionNote() const {
+  if (frameDivisor_ <= 1) return {};
+  return tr("internal resolution %1\u00d7%2: frame took %3 ms")
+      .arg(internalSize_.width())
+      .arg(internalSize_.height())
+      .arg(adaptive_.dropFrameMs() > 0 ? adaptive_.dropFrameMs() : lastFrameMs_, 0, 'f', 0);
+}
+
+void ViewportWidget::setProbeWanted(bool wanted) {
+  if (probeWanted_ == wanted) return;
+  probeWanted_ = wanted;
+  if (!wanted) {
+    Q_EMIT pixelProbed(std::nullopt);
+  } else if (hover_.x() >= 0 && renderer_) {
+    makeCurrent();
+    probeHover();
+    doneCurrent();
+  }
 }
 
 std::optional<double> ViewportWidget::computeErrorNow() {
@@ -1112,6 +1265,7 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   }
   if (dragButton_ == Qt::NoButton) {
     hover_ = event->position();
+    if (!probeWanted_) return;  // no visible panel shows it: no readback
     makeCurrent();
     probeHover();
     doneCurrent();
@@ -1154,11 +1308,14 @@ void ViewportWidget::leaveEvent(QEvent* event) {
 
 // GL current (paintGL, or made current by the caller).
 void ViewportWidget::probeHover() {
-  if (hover_.x() < 0 || !renderer_) return;
+  if (hover_.x() < 0 || !renderer_ || !probeWanted_) return;
   std::optional<sl::PixelProbe> probe;
   const qreal dpr = devicePixelRatioF();
   const int x = int(std::floor(hover_.x() * dpr)), y = int(std::floor(hover_.y() * dpr));
-  if (!outsideView() && x < lastMainWidth_) probe = renderer_->probePixel(x, y);
+  if (!outsideView() && x < lastMainWidth_) {
+    probe = renderer_->probePixel(x / frameDivisor_, y / frameDivisor_);  // internal pixels
+    ++probesRead_;
+  }
   Q_EMIT pixelProbed(probe);
 }
 

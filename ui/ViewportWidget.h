@@ -20,7 +20,9 @@
 #include <QTimer>
 
 #include "FigureKit.h"
+#include "algo/AdaptiveResolution.h"
 #include "core/Renderer.h"
+#include "metrics/AsyncReference.h"
 
 namespace sl::ui {
 
@@ -60,7 +62,52 @@ class ViewportWidget : public QOpenGLWidget {
   const sl::Light& light() const { return light_; }
 
   /// Renders continuously (for techniques that converge over frames) instead of on demand.
+  /// The exact reference is then traced on a worker thread (metrics/AsyncReference) at a
+  /// lower rate, and liveError() says what the latest one measured and how old it is.
   void setContinuous(bool on);
+  bool continuous() const { return continuous_; }
+
+  /// Continuous rendering's error: the latest finished reference's error, its age, and
+  /// whether it was traced for another view than the one shown (`age.stale`: the number is
+  /// that earlier view's, and a trace of the current view is under way or due).
+  struct LiveError {
+    double errorPct = 0.0;
+    sl::ReferenceAge age;
+  };
+  std::optional<LiveError> liveError() const;
+  /// The readout of it: "error 0.420 % · reference 0.8 s old (3 frames ago)", or with
+  /// "of an earlier view … re-tracing" when stale; "error — · tracing the reference…"
+  /// before the first. Empty when not rendering continuously.
+  QString liveErrorText() const;
+  /// The line under the error overlay's legend (the reference's age, or that it is being
+  /// traced); empty when the reference is current in on-demand rendering.
+  QString errorOverlayNote() const;
+  /// The reference worker (null before continuous rendering was first turned on).
+  const sl::AsyncReference* liveReference() const { return liveReference_.get(); }
+  /// Lower rate of the live reference: at most one trace per this many seconds of a still
+  /// view, or per this factor times the last trace's duration when that is longer.
+  static constexpr double kLiveReferenceMinIntervalS = 0.75;
+  static constexpr double kLiveReferenceDurationFactor = 3.0;
+
+  /// Whether a visible panel shows the pixel under the mouse (PublicationDocks): only then
+  /// is it read back (a GPU sync) on mouse moves and frames.
+  void setProbeWanted(bool wanted);
+  bool probeWanted() const { return probeWanted_; }
+  /// Adaptive internal resolution (the shared parameters view.adaptive and
+  /// view.adaptive.budget_ms, algo/AdaptiveResolution): a frame slower than the budget makes
+  /// the view render at 1/2..1/8 of its size, stretched, with a note in the view. Scripted
+  /// runs (--grab, --self-test) keep it off so that what they measure is at full size; the
+  /// window allows it when interactive.
+  void setAdaptiveAllowed(bool allowed);
+  /// The divisor the last frame was rendered at (1: full size).
+  int internalDivisor() const { return frameDivisor_; }
+  /// Wall-clock milliseconds of the last frame (both halves; at least its timed passes).
+  double lastFrameMs() const { return lastFrameMs_; }
+  /// "internal resolution 240×150: frame took 610 ms" while reduced, else empty.
+  QString resolutionNote() const;
+
+  /// Pixels read back for the hover probe since the renderer was created.
+  std::uint64_t probesRead() const { return probesRead_; }
 
   /// Computes the error of the last frame now (blocks for a fraction of a second).
   /// Returns the error in percent, or nothing (and emits renderProblem) on failure.
@@ -217,6 +264,9 @@ class ViewportWidget : public QOpenGLWidget {
   void markViewChanged();
   void flyStep();
   void computeErrorIfStill();
+  /// Continuous rendering (GL current, after a frame): takes a finished reference (its mask
+  /// to the error overlay when it is of this view) and starts a trace when one is due.
+  void updateLiveReference();
   float sceneScaleM() const;  ///< size of the scene, for fly speed and pan scale
 
   std::unique_ptr<sl::Renderer> renderer_;
@@ -247,6 +297,15 @@ class ViewportWidget : public QOpenGLWidget {
   sl::Camera camera_;
   sl::Light light_;
   bool continuous_ = false;
+  std::unique_ptr<sl::AsyncReference> liveReference_;
+  std::optional<sl::FinishedReference> liveLatest_;  ///< its mask dropped once uploaded
+  bool probeWanted_ = false;
+  bool adaptiveAllowed_ = false;
+  sl::AdaptiveResolution adaptive_;
+  int frameDivisor_ = 1;  ///< of the last frame
+  QSize internalSize_;    ///< the main renderer's last frame (device pixels)
+  double lastFrameMs_ = 0.0;
+  std::uint64_t probesRead_ = 0;
 
   // What the renderer saw last frame; any difference means "view changed".
   unsigned lastParamRevision_ = ~0u;

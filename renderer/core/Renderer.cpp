@@ -3,6 +3,7 @@
 // blit to the host's framebuffer. Only this file and the techniques call OpenGL.
 #include "core/Renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -83,6 +84,27 @@ std::vector<ParamDecl> rendererParamDecls() {
                "frustum (its partition colour) and a warped map's frustum (cyan, its sides "
                "extended to the warp's centre of projection). The metrics still measure the "
                "main camera's image."},
+      {.key = "view.adaptive",
+       .label = "Adaptive resolution",
+       .group = "View",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .help = "GUI only: when a frame takes longer than the frame budget, the interactive view "
+               "renders at 1/2, 1/4 or 1/8 of its size (stretched to fit) and says so; it "
+               "climbs back when frames are fast. The command line and the metrics always "
+               "render at the requested size."},
+      {.key = "view.adaptive.budget_ms",
+       .label = "Frame budget (ms)",
+       .group = "View",
+       .type = ParamType::Int,
+       .defaultValue = 250,
+       .minValue = 20,
+       .maxValue = 10000,
+       .step = 10,
+       .help = "GUI only: a frame slower than this lowers the view's internal resolution "
+               "(view.adaptive)."},
       {.key = "view.outside.azimuth_deg",
        .label = "Outside azimuth",
        .group = "View",
@@ -737,9 +759,14 @@ void Renderer::clearFrame(int width, int height, unsigned target) {
 }
 
 std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned target) {
+  return renderFrame(width, height, target, width, height);
+}
+
+std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned target,
+                                                 int presentWidth, int presentHeight) {
   RendererState& s = *s_;
   auto neutral = [&](const std::string& why) -> std::optional<std::string> {
-    clearFrame(width, height, target);
+    clearFrame(std::max(width, presentWidth), std::max(height, presentHeight), target);
     return why;
   };
   if (width <= 0 || height <= 0 || width > s.maxFrame.width || height > s.maxFrame.height)
@@ -869,9 +896,12 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
   // 5. To the host's framebuffer (a surfaceless EGL context has none: the frame then
   // stays in the renderer's colour target, which readback() returns).
+  // A smaller internal size (the GUI's adaptive resolution) is stretched over the present size.
+  const bool scaled = presentWidth != width || presentHeight != height;
   if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE)
-    glBlitNamedFramebuffer(shown.composite.id(), target, 0, 0, width, height, 0, 0, width, height,
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(shown.composite.id(), target, 0, 0, width, height, 0, 0,
+                           scaled ? presentWidth : width, scaled ? presentHeight : height,
+                           GL_COLOR_BUFFER_BIT, scaled ? GL_LINEAR : GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, target);
 
   s.stats = FrameStats{};
@@ -988,26 +1018,77 @@ FrameReadback Renderer::readback() const {
   return r;
 }
 
-Renderer::ErrorResult Renderer::computeError() const {
-  ErrorResult res;
-  res.frame = readback();
-  if (!s_->scene || res.frame.width == 0) return res;
+Renderer::ReferenceSnapshot Renderer::snapshotForReference() const {
+  ReferenceSnapshot snap;
+  snap.frame = readback();
+  snap.light = s_->light;
+  snap.frameSignature = s_->frameSignature;
+  if (!s_->scene || snap.frame.width == 0) return snap;
   if (!s_->reference || s_->referenceScene != s_->scene.get()) {
     s_->reference = std::make_shared<ShadowReference>(*s_->scene);
     s_->referenceScene = s_->scene.get();
   }
-  s_->reference->evaluate(res.frame.positions, res.frame.normals, s_->light, res.referenceMask);
-  res.stats = compareShadowMasks(res.frame.hardMask, res.referenceMask);
-  // Keep it for the error overlay (GL order: bottom row first).
-  const Targets& t = s_->targets;
-  if (res.referenceMask.size() == size_t(t.width) * size_t(t.height)) {
-    std::vector<std::uint8_t> glOrder = res.referenceMask;
-    flipRowsVertically(glOrder, size_t(t.width), t.height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(t.reference.id(), 0, 0, 0, t.width, t.height, GL_RED_INTEGER,
-                        GL_UNSIGNED_BYTE, glOrder.data());
-    s_->referenceSignature = s_->frameSignature;
+  snap.reference = s_->reference;
+  return snap;
+}
+
+std::optional<Renderer::ErrorResult> Renderer::traceReference(ReferenceSnapshot snap,
+                                                              const std::atomic<bool>* cancelled) {
+  ErrorResult res;
+  res.frame = std::move(snap.frame);
+  if (!snap.reference) return res;
+  const FrameReadback& f = res.frame;
+  const std::size_t n = f.positions.size();
+  if (f.normals.size() != n || f.hardMask.size() != n)
+    throw std::invalid_argument("traceReference: positions, normals and mask differ in size");
+  // Bands of rows, so that a cancel (scene changed, window closed) is seen soon.
+  const std::size_t band = std::size_t(std::max(1, f.width)) * 64;
+  res.referenceMask.resize(n);
+  std::vector<std::uint8_t> part;
+  for (std::size_t begin = 0; begin < n; begin += band) {
+    if (cancelled && cancelled->load()) return std::nullopt;
+    const std::size_t count = std::min(band, n - begin);
+    snap.reference->evaluate(std::span(f.positions).subspan(begin, count),
+                             std::span(f.normals).subspan(begin, count), snap.light, part);
+    std::copy(part.begin(), part.end(), res.referenceMask.begin() + std::ptrdiff_t(begin));
   }
+  res.stats = compareShadowMasks(f.hardMask, res.referenceMask);
+  return res;
+}
+
+namespace {
+/// Keeps a traced reference mask (row 0 = top) for the error overlay of `frameSignature`.
+bool uploadReferenceMask(RendererState& s, const std::string& frameSignature,
+                         std::span<const std::uint8_t> mask, int width, int height) {
+  const Targets& t = s.targets;
+  if (width != t.width || height != t.height ||
+      mask.size() != std::size_t(t.width) * std::size_t(t.height) || mask.empty())
+    return false;
+  std::vector<std::uint8_t> glOrder(mask.begin(), mask.end());  // GL: bottom row first
+  flipRowsVertically(glOrder, size_t(t.width), t.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(t.reference.id(), 0, 0, 0, t.width, t.height, GL_RED_INTEGER,
+                      GL_UNSIGNED_BYTE, glOrder.data());
+  s.referenceSignature = frameSignature;
+  return true;
+}
+}  // namespace
+
+bool Renderer::setReferenceMask(const std::string& frameSignature,
+                                std::span<const std::uint8_t> mask, int width, int height) {
+  return uploadReferenceMask(*s_, frameSignature, mask, width, height);
+}
+
+const std::string& Renderer::frameSignature() const {
+  return s_->frameSignature;
+}
+
+Renderer::ErrorResult Renderer::computeError() const {
+  ReferenceSnapshot snap = snapshotForReference();
+  const std::string signature = snap.frameSignature;
+  ErrorResult res = *traceReference(std::move(snap));  // not cancellable: always a result
+  // Keep it for the error overlay of this frame.
+  uploadReferenceMask(*s_, signature, res.referenceMask, res.frame.width, res.frame.height);
   return res;
 }
 

@@ -4,11 +4,13 @@
 // This header is GL-free on purpose so that UI headers can include it.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +29,7 @@ class ShaderLibrary;
 
 namespace sl {
 
+class ShadowReference;
 class Technique;
 struct RendererState;
 
@@ -261,6 +264,10 @@ class Renderer {
   /// degenerate, or the technique does not support the light's kind (checkLightSupport);
   /// the renderer keeps working.
   std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer);
+  /// The same, the frame then stretched (linear) over presentWidth x presentHeight of the
+  /// target (the GUI's adaptive resolution); every target and readback stays width x height.
+  std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer,
+                                         int presentWidth, int presentHeight);
   /// Fills the target with the neutral background and renders nothing: no pass runs, no
   /// temporal state changes (a view too small to show anything).
   static void clearFrame(int width, int height, unsigned targetFramebuffer);
@@ -291,6 +298,28 @@ class Renderer {
     FrameReadback frame;
   };
   ErrorResult computeError() const;
+  /// computeError() in three steps, so that the trace runs on another thread (the GUI's
+  /// continuous rendering, metrics/AsyncReference): `snapshotForReference` reads the last
+  /// frame back (GL current) with the light, the scene's Embree scene (shared: it outlives
+  /// a scene change) and what the frame showed; `traceReference` traces and compares it
+  /// without GL on any thread, returning nothing once `cancelled` became true (checked
+  /// between bands of rows); `setReferenceMask` (GL current) keeps the mask for the error
+  /// overlay, which draws it only while frames show the same `frameSignature` — false when
+  /// the frame size changed since.
+  struct ReferenceSnapshot {
+    FrameReadback frame;
+    Light light;
+    std::shared_ptr<const ShadowReference> reference;  ///< null: no scene or no frame
+    std::string frameSignature;
+  };
+  ReferenceSnapshot snapshotForReference() const;
+  static std::optional<ErrorResult> traceReference(ReferenceSnapshot snapshot,
+                                                   const std::atomic<bool>* cancelled = nullptr);
+  bool setReferenceMask(const std::string& frameSignature, std::span<const std::uint8_t> mask,
+                        int width, int height);
+  /// What the last frame showed (scene, technique, parameters, size, camera, light): the
+  /// error overlay's reference must have been traced for the same.
+  const std::string& frameSignature() const;
 
   /// Shader hot reload: on failure the last good programs stay in use, error returned.
   std::optional<std::string> reloadShaders();

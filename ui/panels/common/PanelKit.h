@@ -227,6 +227,9 @@ class PublicationPanel : public QWidget {
   virtual void resetHistory() {}
   /// The view's pixel under the mouse (ViewportWidget::pixelProbed), or nothing.
   virtual void showProbe(const std::optional<sl::PixelProbe>& probe) { (void)probe; }
+  /// Whether showProbe draws anything: the view reads the pixel back (a GPU sync) only
+  /// while a visible panel says so.
+  virtual bool wantsProbe() const { return false; }
 
  Q_SIGNALS:
   /// The panel asks the window to move the light (degrees; e.g. a click on the Storage

@@ -28,6 +28,7 @@ class OmniMapPanel : public PublicationPanel {
   void highlightPass(const QString& passId) override;
   QJsonObject drawnValues() const override;
   void showProbe(const std::optional<sl::PixelProbe>& probe) override;
+  bool wantsProbe() const override { return true; }
 
  private:
   void redraw();

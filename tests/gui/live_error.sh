@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Continuous rendering keeps the error live (issue 15 item 6): F6 on, the readout shows a
+# number and the reference's age within a time limit (traced on a worker thread, equal to the
+# synchronous error of the same view); a camera move makes it stale and greyed, then fresh; a
+# scene change mid-trace drops the trace; the window closes while a trace runs, exit 0.
+# usage: live_error.sh <shadowlab> <tests/data dir> <out dir>
+set -euo pipefail
+app=$1
+out=$3/live_error
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/xvfb.bash"
+rm -rf "$out" && mkdir -p "$out"
+start_xvfb
+
+rc=0
+timeout 300 "$app" --scene default --technique uniform --self-test "live-error=$out" \
+  >"$out/live.stdout" 2>"$out/live.stderr" || rc=$?
+cat "$out/live.stdout"
+if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/live.stdout"; then
+  echo "FAIL: self-test live-error exited with $rc; stderr:"
+  cat "$out/live.stderr"
+  exit 1
+fi
+grep -q '^measure live_error_first_ms=' "$out/live.stdout" || { echo "FAIL: no measurement"; exit 1; }
+echo "PASS"

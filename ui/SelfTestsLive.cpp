@@ -1,0 +1,201 @@
+// The live-error self-test (see SelfTests.h): continuous rendering keeps the error readout and
+// the error overlay live with a reference traced on a worker thread (issue 15 item 6).
+#include <cstdio>
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QImage>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QRegularExpression>
+
+#include "MainWindow.h"
+#include "SelfTests.h"
+#include "ViewportWidget.h"
+
+namespace sl::ui {
+
+namespace {
+constexpr qint64 kFreshWithinMs = 60000;  ///< llvmpipe under Xvfb on a busy 2-core machine
+}
+
+bool SelfTests::liveError(const QString& dir) {
+  ViewportWidget* view = w_.viewport_;
+  view->setFixedSize(480, 300);  // small: llvmpipe renders it quickly, Embree traces it quickly
+  sl::ParamSet& shared = view->renderer()->rendererParams();
+  const sl::ParamDecl* overlay = shared.find("view.overlay");
+  int errorOverlay = -1;
+  for (std::size_t i = 0; overlay && i < overlay->enumNames.size(); ++i)
+    if (overlay->enumNames[i] == "error") errorOverlay = int(i);
+  check(errorOverlay >= 0 && !shared.set("view.overlay", double(errorOverlay)),
+        tr("the error overlay is on"));
+  QCoreApplication::processEvents();
+  w_.waitForFrames(2);
+
+  // Waits (rendering) until the live error is of the current view; ms taken, -1 on timeout.
+  auto waitFresh = [&]() -> qint64 {
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < kFreshWithinMs) {
+      QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+      const auto live = view->liveError();
+      if (live && !live->age.stale) return clock.elapsed();
+    }
+    return -1;
+  };
+
+  w_.continuousAction_->trigger();  // F6
+  check(view->continuous(), tr("F6: continuous rendering is on"));
+  const std::uint64_t framesAtStart = view->framesRendered();
+  const qint64 firstMs = waitFresh();
+  const std::uint64_t framesMeanwhile = view->framesRendered() - framesAtStart;
+  check(firstMs >= 0, tr("a live error within %1 s: after %2 ms, %3 frames rendered meanwhile")
+                          .arg(kFreshWithinMs / 1000)
+                          .arg(firstMs)
+                          .arg(qulonglong(framesMeanwhile)));
+  if (firstMs < 0) return false;
+  std::printf("measure live_error_first_ms=%lld frames=%llu\n", static_cast<long long>(firstMs),
+              static_cast<unsigned long long>(framesMeanwhile));
+  w_.waitForFrames(1);  // the readout and overlay follow the frame that took it
+  const QString label = w_.errorLabel_->text();
+  check(label.contains(QStringLiteral("error ")) && label.contains(QStringLiteral(" s old")) &&
+            label.contains(QStringLiteral("ago")) && w_.errorLabel_->isEnabled(),
+        tr("the readout shows a number and the reference's age: \"%1\"").arg(label));
+  if (!dir.isEmpty() && QDir().mkpath(dir))  // the window with the live readout
+    w_.grab().toImage().save(QDir(dir).filePath(QStringLiteral("live-error.png")));
+  const QString note = view->errorOverlayNote();
+  check(note.startsWith(QStringLiteral("reference ")) && note.contains(QStringLiteral(" s old")),
+        tr("the error overlay says how old its reference is: \"%1\"").arg(note));
+  const auto live = view->liveError();
+  check(live && view->errorPct() && *view->errorPct() == live->errorPct,
+        tr("the view's error is the live one: %1 %").arg(live ? live->errorPct : -1.0, 0, 'f', 4));
+  check(view->liveReference() && view->liveReference()->finished() >= 1 &&
+            view->liveReference()->submitted() >= view->liveReference()->finished(),
+        tr("traced on the worker: %1 submitted, %2 finished")
+            .arg(qulonglong(view->liveReference() ? view->liveReference()->submitted() : 0))
+            .arg(qulonglong(view->liveReference() ? view->liveReference()->finished() : 0)));
+
+  // The same still frame measured synchronously: the same number (uniform keeps no state).
+  const double asyncPct = live ? live->errorPct : -1.0;
+  w_.continuousAction_->trigger();  // off: the frame stays
+  w_.waitForFrames(1);
+  const auto syncPct = view->computeErrorNow();
+  check(syncPct && *syncPct == asyncPct,
+        tr("the synchronous error of the same view: %1 % (live %2 %)")
+            .arg(syncPct.value_or(-1), 0, 'f', 4)
+            .arg(asyncPct, 0, 'f', 4));
+  w_.continuousAction_->trigger();  // on again
+  check(waitFresh() >= 0, tr("live again after F6 off and on"));
+
+  // A camera move: the number shown is an earlier view's (greyed, said so), then fresh again.
+  sl::Camera cam = view->camera();
+  cam.orbit(25.0f, 5.0f);
+  view->setCamera(cam);
+  w_.waitForFrames(1);
+  const auto moved = view->liveError();
+  check(moved && moved->age.stale && !view->errorPct() && !w_.errorLabel_->isEnabled() &&
+            w_.errorLabel_->text().contains(QStringLiteral("earlier view")),
+        tr("after a camera move the readout is stale and greyed: \"%1\"")
+            .arg(w_.errorLabel_->text()));
+  check(view->errorOverlayNote().contains(QStringLiteral("tracing")),
+        tr("the error overlay says it traces the new view: \"%1\"").arg(view->errorOverlayNote()));
+  const qint64 againMs = waitFresh();
+  check(againMs >= 0, tr("fresh again %1 ms after the move").arg(againMs));
+  std::printf("measure live_error_after_move_ms=%lld\n", static_cast<long long>(againMs));
+  const auto fresh = view->liveError();
+  check(fresh && !fresh->age.stale && view->errorPct(),
+        tr("the moved view's error: %1 %, %2")
+            .arg(fresh ? fresh->errorPct : -1.0, 0, 'f', 4)
+            .arg(QString::fromStdString(fresh ? sl::describeReferenceAge(fresh->age) : "")));
+
+  // A scene change while a trace runs: the trace is dropped, nothing of the old scene shown.
+  QElapsedTimer clock;
+  clock.start();
+  while (!view->liveReference()->busy() && clock.elapsed() < kFreshWithinMs)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+  const bool wasBusy = view->liveReference()->busy();
+  check(w_.loadScene(QStringLiteral("corridor")),
+        tr("corridor loaded while a trace runs (%1)").arg(wasBusy ? "it did" : "it had ended"));
+  check(!view->liveError(), tr("no error of the old scene shown after the switch"));
+  const qint64 newSceneMs = waitFresh();
+  check(newSceneMs >= 0, tr("the new scene's live error after %1 ms: \"%2\"")
+                             .arg(newSceneMs)
+                             .arg(w_.errorLabel_->text()));
+
+  // Leave with a trace running: the window closes (worker cancelled and joined), exit 0.
+  cam = view->camera();
+  cam.orbit(-10.0f, 0.0f);
+  view->setCamera(cam);
+  clock.restart();
+  while (!view->liveReference()->busy() && clock.elapsed() < kFreshWithinMs)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+  std::printf("exiting with a trace %s\n", view->liveReference()->busy() ? "running" : "idle");
+  return true;
+}
+
+}  // namespace sl::ui
+
+namespace sl::ui {
+
+bool SelfTests::adaptiveResolution(const QString& dir) {
+  ViewportWidget* view = w_.viewport_;
+  const QSize size(480, 300);
+  view->setFixedSize(size);
+  QCoreApplication::processEvents();
+  w_.waitForFrames(1, 300000);
+  check(view->internalDivisor() == 1 && view->renderer()->stats().width == size.width(),
+        tr("scripted runs render at full size: %1 px wide").arg(view->renderer()->stats().width));
+  sl::ParamSet& shared = view->renderer()->rendererParams();
+  check(shared.getBool("view.adaptive") && shared.getInt("view.adaptive.budget_ms") == 250,
+        tr("declared: view.adaptive on, budget 250 ms"));
+  view->setAdaptiveAllowed(true);  // as in an interactive window
+  w_.waitForFrames(1, 300000);     // a full-size frame of the slow technique
+  const double slowMs = view->lastFrameMs();
+  std::printf("measure full_size_frame_ms=%.0f\n", slowMs);
+  check(slowMs > 250.0, tr("%1 at %2x%3: a frame takes %4 ms (over the budget)")
+                            .arg(QString::fromStdString(view->techniqueId()))
+                            .arg(size.width())
+                            .arg(size.height())
+                            .arg(slowMs, 0, 'f', 0));
+  w_.waitForFrames(1, 300000);  // the next frame at the lower size
+  const int divisor = view->internalDivisor();
+  const sl::FrameStats& st = view->renderer()->stats();
+  check(divisor > 1 && st.width == size.width() / divisor && st.height == size.height() / divisor,
+        tr("the view dropped to 1/%1: the renderer drew %2x%3")
+            .arg(divisor)
+            .arg(st.width)
+            .arg(st.height));
+  const QString note = view->resolutionNote();
+  const QRegularExpressionMatch m =
+      QRegularExpression(
+          QStringLiteral("^internal resolution (\\d+)\u00d7(\\d+): frame took (\\d+) ms$"))
+          .match(note);
+  check(m.hasMatch() && m.captured(1).toInt() == st.width && m.captured(2).toInt() == st.height &&
+            m.captured(3).toInt() > 250,
+        tr("the view says so: \"%1\"").arg(note));
+  std::printf("measure reduced_frame_ms=%.0f divisor=%d\n", view->lastFrameMs(), divisor);
+  const QImage shown = view->grabView();
+  if (!dir.isEmpty() && QDir().mkpath(dir))
+    shown.save(QDir(dir).filePath(QStringLiteral("adaptive-resolution.png")));
+  check(shown.size() == size * view->devicePixelRatioF(),
+        tr("the frame still fills the view: %1x%2").arg(shown.width()).arg(shown.height()));
+
+  // Fast frames climb back one step per frame to full size. virtual-tiled is not one: at 1/8
+  // its frame still takes most of its full-size time (its tiles' depth passes do not shrink
+  // with the view), so a fast technique takes over.
+  check(!view->setTechnique("uniform") && !shared.set("view.adaptive.budget_ms", 10000.0),
+        tr("uniform, budget 10 s: fast frames"));
+  for (int i = 0; i < 6 && view->internalDivisor() > 1; ++i) w_.waitForFrames(1, 300000);
+  check(view->internalDivisor() == 1 && view->resolutionNote().isEmpty(),
+        tr("climbed back to full size, no note: divisor %1").arg(view->internalDivisor()));
+  // Off: full size whatever the frame time.
+  check(!shared.set("view.adaptive.budget_ms", 20.0) && !shared.set("view.adaptive", 0.0),
+        tr("budget 20 ms, view.adaptive off"));
+  w_.waitForFrames(2, 300000);
+  check(view->internalDivisor() == 1 && view->renderer()->stats().width == size.width(),
+        tr("view.adaptive off: full size (%1 px wide)").arg(view->renderer()->stats().width));
+  return true;
+}
+
+}  // namespace sl::ui

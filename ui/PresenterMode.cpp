@@ -61,9 +61,17 @@ void PresenterMode::choosePanel(const QString& dockName) {
   if (active_) arrangeDocks();
 }
 
+void PresenterMode::setLessonPanel(const QString& dockName) {
+  lessonPanel_ = dockName;
+  if (!active_) return;
+  arrangeDocks();
+  fitScreen();
+}
+
 QDockWidget* PresenterMode::pickBigDock() const {
-  for (const PublicationDocks::Dock& d : w_.docks_.docks())
-    if (!chosen_.isEmpty() && d.dock->objectName() == chosen_) return d.dock;
+  for (const QString& name : {chosen_, lessonPanel_})
+    if (!name.isEmpty())
+      if (auto* dock = w_.findChild<QDockWidget*>(name)) return dock;
   const sl::TechniqueInfo* info = sl::Renderer::findTechnique(w_.viewport_->techniqueId());
   if (info)
     if (QDockWidget* dock = w_.docks_.firstShowing(*info)) return dock;
@@ -88,9 +96,7 @@ void PresenterMode::setActive(bool on) {
     // larger than the screen. Then the screen's geometry (a window manager-less X server,
     // e.g. Xvfb, ignores the full-screen request), full screen, the big panel's width.
     arrangeDocks();
-    if (screen) w_.setGeometry(screen->geometry());
-    w_.showFullScreen();
-    sizeBigDock();
+    fitScreen();
     w_.viewport_->setPointerHighlight(true);
   } else {
     active_ = false;
@@ -131,6 +137,14 @@ void PresenterMode::arrangeDocks() {
   big_->raise();
   w_.layout()->invalidate();
   w_.layout()->activate();
+  sizeBigDock();
+}
+
+void PresenterMode::fitScreen() {
+  // A window manager-less X server (Xvfb) ignores the full-screen request: the geometry too.
+  const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+  if (screen) w_.setGeometry(screen->geometry());
+  w_.showFullScreen();
   sizeBigDock();
 }
 

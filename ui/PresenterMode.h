@@ -37,19 +37,25 @@ class PresenterMode : public QObject {
   QDockWidget* bigDock() const;
   /// The user's choice of big panel (by dock object name; empty: automatic).
   void choosePanel(const QString& dockName);
+  /// A lesson's or session's layout was applied: its large panel (dock object name; empty:
+  /// none) is the big panel unless the user chose one, and, while active, the docks are
+  /// arranged again and the window fitted to the screen.
+  void setLessonPanel(const QString& dockName);
   /// Share of the window's width the big panel takes.
   static constexpr double kPanelShare = 0.42;
 
  private:
   void arrangeDocks();
   void sizeBigDock();
+  void fitScreen();
   QDockWidget* pickBigDock() const;
 
   MainWindow& w_;
   QAction* action_ = nullptr;
   QMenu* panelMenu_ = nullptr;
   bool active_ = false;
-  QString chosen_;  ///< View > Presenter panel (dock object name), empty: automatic
+  QString chosen_;       ///< View > Presenter panel (dock object name), empty: automatic
+  QString lessonPanel_;  ///< the applied layout's large panel (dock object name), or empty
   QPointer<QDockWidget> big_;
   QByteArray savedState_, savedGeometry_;
   QFont savedFont_;

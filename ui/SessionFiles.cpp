@@ -13,6 +13,7 @@
 
 #include "LessonController.h"
 #include "MainWindow.h"
+#include "PresenterMode.h"
 #include "SelfTests.h"
 #include "ViewportWidget.h"
 
@@ -106,6 +107,13 @@ bool SessionFiles::open(const QString& path) {
 }
 
 void SessionFiles::applyLayout(const sl::PresetLayout& layout, QStringList* problems) {
+  applyLayoutDocks(layout, problems);
+  // In presenter mode the layout's large panel becomes the one big panel, and the window
+  // stays on the screen (the docks just shown at the large font may want more).
+  if (w_.presenter_->active()) w_.presenter_->setLessonPanel(QString::fromStdString(layout.large));
+}
+
+void SessionFiles::applyLayoutDocks(const sl::PresetLayout& layout, QStringList* problems) {
   if (!layout.state.empty() &&
       !w_.restoreState(QByteArray::fromBase64(QByteArray::fromStdString(layout.state)),
                        kStateVersion))

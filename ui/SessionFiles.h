@@ -47,6 +47,8 @@ class SessionFiles : public QObject {
   QAction* openAction() const { return openAction_; }  ///< File > Open session…
 
  private:
+  /// applyLayout's docks: the state or the listed docks, the large one sized.
+  void applyLayoutDocks(const sl::PresetLayout& layout, QStringList* problems);
   QFileDialog::Options dialogOptions() const;
   void remember(const QString& path);
   void storeRecent();

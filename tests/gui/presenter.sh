@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Presenter mode on a 1920x1080 and a 1280x720 screen (issue 15): started with --presenter
 # (what the lesson grabs use) on the first, turned on through its action (F11) on the second;
+# and a lesson (its layout's large panel the big one) with --presenter at 1920x1080;
 # the self-test checks the window fits, body text >= 22 px x min(w/1920, h/1080), one big
 # panel image >= 35 % of the screen's height, the changed overlay's pixels = the renderer's
 # count, the pointer ring, the zoom inset, the ticks. PNGs in <out>/presenter.
@@ -12,21 +13,32 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 
-for screen in 1920x1080 1280x720; do
-  XVFB_SCREEN="${screen}x24" start_xvfb
+# The third run: a lesson whose layout names its large panel (lesson grabs start so): that
+# panel is the big one, and the window still fits the screen.
+for run in 1920x1080 1280x720 lesson; do
+  screen=$run
+  start=(--scene corridor --technique uniform --set resolution=1024)
   flag=()
-  [[ $screen == 1920x1080 ]] && flag=(--presenter)
+  [[ $run == 1920x1080 ]] && flag=(--presenter)
+  if [[ $run == lesson ]]; then
+    screen=1920x1080
+    start=(--lesson 01-perspective-aliasing)
+    flag=(--presenter)
+    out_lesson=$out/lesson && mkdir -p "$out_lesson"
+  fi
+  XVFB_SCREEN="${screen}x24" start_xvfb
   rc=0
-  timeout 240 "$app" --scene corridor --technique uniform --set resolution=1024 "${flag[@]}" \
-    --self-test "presenter=$out" >"$out/$screen.stdout" 2>"$out/$screen.stderr" || rc=$?
+  timeout 240 "$app" "${start[@]}" "${flag[@]}" \
+    --self-test "presenter=${out_lesson:-$out}" >"$out/$run.stdout" 2>"$out/$run.stderr" || rc=$?
   stop_xvfb
-  echo "[$screen ${flag[*]}]"
-  cat "$out/$screen.stdout"
-  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/$screen.stdout"; then
-    echo "FAIL: self-test presenter at $screen exited with $rc; stderr:"
-    cat "$out/$screen.stderr"
+  echo "[$run ${flag[*]}]"
+  cat "$out/$run.stdout"
+  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/$run.stdout"; then
+    echo "FAIL: self-test presenter ($run) exited with $rc; stderr:"
+    cat "$out/$run.stderr"
     exit 1
   fi
-  [[ -s "$out/presenter-$screen.png" ]] || { echo "FAIL: no presenter-$screen.png"; exit 1; }
+  png=${out_lesson:-$out}/presenter-$screen.png
+  [[ -s $png ]] || { echo "FAIL: no $png ($run)"; exit 1; }
 done
 echo "PASS"

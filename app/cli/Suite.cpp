@@ -190,13 +190,15 @@ SuiteTechnique techniqueOf(const JsonReader& r, const json& t, const std::string
       const std::string keyPath = jsonPath(setPath, k);
       ParamSet* params = own.has(k) ? &own : shared.has(k) ? &shared : nullptr;
       if (!params) {
-        std::vector<std::string> ownKeys, sharedKeys;
+        // One bounded line: the technique's own keys (cut, with their count), the shared
+        // ones counted (there are more of them with every view feature).
+        std::vector<std::string> ownKeys;
         for (const ParamDecl& d : own.decls()) ownKeys.push_back(d.key);
-        for (const ParamDecl& d : shared.decls()) sharedKeys.push_back(d.key);
         r.fail(keyPath, "technique '" + st.spec.techniqueId + "' has no parameter '" +
-                            quoteText(k, 60) +
-                            "' (its own: " + (ownKeys.empty() ? "none" : joined(ownKeys)) +
-                            "; shared: " + joined(sharedKeys) + ")");
+                            quoteText(k, 60) + "' (its own: " +
+                            (ownKeys.empty() ? "none" : joinedBounded(ownKeys, 80)) + "; and " +
+                            std::to_string(shared.decls().size()) +
+                            " shared view.* and shading.* ones: shadowlab-cli list)");
       }
       if (!v.is_number() && !v.is_boolean() && !v.is_string())
         r.expected(v, keyPath, "a number, true/false or a name");

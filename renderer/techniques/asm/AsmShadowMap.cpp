@@ -161,7 +161,7 @@ TechniqueInfo AsmShadowMap::info() {
   }
   for (const char* key :
        {"asm.iterations.run", "asm.requests", "asm.new", "asm.hits", "asm.evicted", "asm.refused",
-        "asm.deferred", "asm.cached", "asm.invalidations", "pages.pool"}) {
+        "asm.deferred", "asm.cached", "asm.invalidations", "asm.pool"}) {
     info.publications.push_back({key, PublicationKind::Number, "", "", {}});
   }
   info.publications[0].what =
@@ -271,7 +271,7 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "asm.deferred", lastRun.deferred);
   publishNumber(ctx, "asm.cached", cache_->pool().usedCount());
   publishNumber(ctx, "asm.invalidations", cache_->invalidations());
-  publishNumber(ctx, "pages.pool", poolPages);
+  publishNumber(ctx, "asm.pool", poolPages);
 }
 
 void AsmShadowMap::findEdges(FrameContext& ctx) {

@@ -204,9 +204,8 @@ void PagesPanel::redraw() {
 }
 
 void PagesPanel::highlightPass(const QString& passId) {
-  // RMSM's passes and ASM's (its coarse map and iterations render into the same pool).
-  view_->setHighlighted(passId.startsWith(QLatin1String("rmsm")) ||
-                        passId.startsWith(QLatin1String("asm ")));
+  // RMSM's passes (ASM publishes its numbers only, not its page table: not shown here).
+  view_->setHighlighted(passId.startsWith(QLatin1String("rmsm")));
 }
 
 QJsonObject PagesPanel::drawnValues() const {

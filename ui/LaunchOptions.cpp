@@ -102,8 +102,8 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       o.selfTest != QLatin1String("charts") && o.selfTest != QLatin1String("split-resize") &&
       o.selfTest != QLatin1String("omni-probe") && o.selfTest != QLatin1String("session-save") &&
       o.selfTest != QLatin1String("session-check") && o.selfTest != QLatin1String("presenter") &&
-      o.selfTest != QLatin1String("split-params") &&
-      o.selfTest != QLatin1String("lesson-claims") && o.selfTest != QLatin1String("live-error") &&
+      o.selfTest != QLatin1String("split-params") && o.selfTest != QLatin1String("lesson-claims") &&
+      o.selfTest != QLatin1String("live-error") &&
       o.selfTest != QLatin1String("adaptive-resolution")) {
     out.exitCode = 2;
     out.messageIsError = true;

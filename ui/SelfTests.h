@@ -1,8 +1,9 @@
 // GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
 // params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE],
 // omni-probe[=DIR], session-save=FILE, session-check (SelfTestsSession.cpp), presenter[=DIR],
-// split-params[=DIR] (SelfTestsPresenter.cpp), lesson-claims[=DIR] (SelfTestsLessons.cpp). They act as a
-// user would and check what the renderer and the window did; each check prints "ok   ..." or "FAIL
+// split-params[=DIR] (SelfTestsPresenter.cpp), lesson-claims[=DIR] (SelfTestsLessons.cpp). They act
+// as a user would and check what the renderer and the window did; each check prints "ok   ..." or
+// "FAIL
 // ...".
 #pragma once
 

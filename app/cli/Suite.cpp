@@ -194,11 +194,11 @@ SuiteTechnique techniqueOf(const JsonReader& r, const json& t, const std::string
         // ones counted (there are more of them with every view feature).
         std::vector<std::string> ownKeys;
         for (const ParamDecl& d : own.decls()) ownKeys.push_back(d.key);
-        r.fail(keyPath, "technique '" + st.spec.techniqueId + "' has no parameter '" +
-                            quoteText(k, 60) + "' (its own: " +
-                            (ownKeys.empty() ? "none" : joinedBounded(ownKeys, 80)) + "; and " +
-                            std::to_string(shared.decls().size()) +
-                            " shared view.* and shading.* ones: shadowlab-cli list)");
+        r.fail(keyPath,
+               "technique '" + st.spec.techniqueId + "' has no parameter '" + quoteText(k, 60) +
+                   "' (its own: " + (ownKeys.empty() ? "none" : joinedBounded(ownKeys, 80)) +
+                   "; and " + std::to_string(shared.decls().size()) +
+                   " shared view.* and shading.* ones: shadowlab-cli list)");
       }
       if (!v.is_number() && !v.is_boolean() && !v.is_string())
         r.expected(v, keyPath, "a number, true/false or a name");

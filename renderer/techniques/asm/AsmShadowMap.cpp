@@ -50,52 +50,21 @@ int coarseLevelOf(const pages::VirtualLayout& layout, int coarseResolution) {
 }  // namespace
 
 TechniqueInfo AsmShadowMap::info() {
-  std::vector<ParamDecl> p;
-  for (ParamDecl& d : shadowMapParamDecls(2048))
-    if (d.key != "resolution") p.push_back(std::move(d));
-  auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
-  add({.key = "virtual.resolution",
-       .label = "Virtual resolution",
-       .group = "Pages",
-       .type = ParamType::Int,
-       .defaultValue = 65536,
-       .minValue = 256,
-       .maxValue = 262144,
-       .step = 256,
-       .help = "Texels per side of the virtual shadow map over the whole scene (level 0, the "
-               "finest pages); a power of two. Its quadtree is cut at 8 levels, as RMSM's."});
-  add({.key = "page.size",
-       .label = "Page size",
-       .group = "Pages",
-       .type = ParamType::Int,
-       .defaultValue = 128,
-       .minValue = 16,
-       .maxValue = 1024,
-       .step = 16,
-       .help = "Texels per side of one page (a power of two): the unit of refinement, caching "
-               "and rendering."});
-  add({.key = "lod.bias",
-       .label = "LOD bias",
-       .group = "Pages",
-       .type = ParamType::Int,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 6,
-       .step = 1,
-       .help = "An edge pixel asks for the page this many levels finer than its footprint "
-               "needs (0: one texel per pixel), as in rmsm.",
-       .uniform = "u_rmsmLodBias"});
-  add({.key = "pool.pages",
-       .label = "Pool pages",
-       .group = "Pages",
-       .type = ParamType::Int,
-       .defaultValue = 256,
-       .minValue = 1,
-       .maxValue = 4096,
-       .step = 1,
-       .help = "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform "
+  std::vector<ParamDecl> p = pagedMapParamDecls();
+  setParamHelp(p, "virtual.resolution",
+               "Texels per side of the virtual shadow map over the whole scene (level 0, the "
+               "finest pages); a power of two. Its quadtree is cut at 8 levels, as RMSM's.");
+  setParamHelp(p, "page.size",
+               "Texels per side of one page (a power of two): the unit of refinement, caching "
+               "and rendering.");
+  setParamHelp(p, "lod.bias",
+               "An edge pixel asks for the page this many levels finer than its footprint "
+               "needs (0: one texel per pixel), as in rmsm.");
+  setParamHelp(p, "pool.pages",
+               "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform "
                "2048² map), the coarse map's included. When it is full, the least recently "
-               "used page no pixel of this frame used is evicted (asm.evicted)."});
+               "used page no pixel of this frame used is evicted (asm.evicted).");
+  auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
   add({.key = "asm.coarse.resolution",
        .label = "Coarse map",
        .group = "ASM",

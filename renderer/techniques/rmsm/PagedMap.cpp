@@ -14,6 +14,73 @@ namespace {
 constexpr int kMaxPoolSide = 16384;
 }  // namespace
 
+std::vector<ParamDecl> pagedMapParamDecls() {
+  std::vector<ParamDecl> p;
+  for (ParamDecl& d : shadowMapParamDecls(2048))
+    if (d.key != "resolution") p.push_back(std::move(d));
+  p.push_back(ParamDecl{
+      .key = "virtual.resolution",
+      .label = "Virtual resolution",
+      .group = "Pages",
+      .type = ParamType::Int,
+      .defaultValue = 65536,
+      .minValue = 256,
+      .maxValue = 262144,
+      .step = 256,
+      .help = "Texels per side of the virtual shadow map (level 0, the finest pages); a power of "
+              "two. Its quadtree has log2(virtual.resolution / page.size) + 1 levels, cut at 8 "
+              "(the lookup's maps): deeper, the coarsest level has several pages, all allocated "
+              "every frame as the fallback of every lookup."});
+  p.push_back(
+      ParamDecl{.key = "page.size",
+                .label = "Page size",
+                .group = "Pages",
+                .type = ParamType::Int,
+                .defaultValue = 128,
+                .minValue = 16,
+                .maxValue = 1024,
+                .step = 16,
+                .help = "Texels per side of one page (a power of two): the unit of allocation and "
+                        "rendering."});
+  p.push_back(ParamDecl{
+      .key = "lod.bias",
+      .label = "LOD bias",
+      .group = "Pages",
+      .type = ParamType::Int,
+      .defaultValue = 1,
+      .minValue = 0,
+      .maxValue = 6,
+      .step = 1,
+      .help = "Each pixel asks for the page this many levels finer than its footprint needs "
+              "(0: resolution-matched, one texel per pixel; 1: 2 x 2 texels per pixel...), "
+              "filling a pool that matching alone leaves mostly empty (the default pool holds "
+              "4.5 texels per pixel of a 1280 x 720 view).",
+      .uniform = "u_rmsmLodBias"});
+  p.push_back(ParamDecl{
+      .key = "pool.pages",
+      .label = "Pool pages",
+      .group = "Pages",
+      .type = ParamType::Int,
+      .defaultValue = 256,
+      .minValue = 1,
+      .maxValue = 4096,
+      .step = 1,
+      .help = "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform 2048² "
+              "map). When a frame asks for more, pages of the finest requested level move to their "
+              "parents, sibling group by sibling group, until they fit (counted in "
+              "pages.coarsened)."});
+  return p;
+}
+
+void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help) {
+  for (ParamDecl& d : decls)
+    if (d.key == key) {
+      d.help = std::move(help);
+      return;
+    }
+  throw std::logic_error("setParamHelp: no parameter '" + key + "'");
+}
+
 int poolColumnsFor(int pages) {
   int c = 1;
   while (c * c < pages) ++c;

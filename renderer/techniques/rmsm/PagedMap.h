@@ -7,6 +7,7 @@
 
 #include <span>
 #include <string>
+#include <vector>
 
 #include "algo/pages/VirtualPages.h"
 #include "core/ShadowPass.h"
@@ -15,6 +16,13 @@
 namespace sl {
 
 class SceneGpu;
+
+/// The parameters of a paged map, declared once for rmsm and asm: the shared shadow-map ones
+/// (bias, PCF; no `resolution`), virtual.resolution, page.size, lod.bias, pool.pages (rmsm's
+/// help texts; a technique replaces a help text with setParamHelp).
+std::vector<ParamDecl> pagedMapParamDecls();
+/// Replaces the help text of `key` in `decls`; throws std::logic_error when it is absent.
+void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help);
 
 /// Columns of a pool's page grid: the smallest square holding `pages`.
 int poolColumnsFor(int pages);

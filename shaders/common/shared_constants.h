@@ -33,7 +33,15 @@
 #define SL_IMAGE_RESOLVE_MAP 4       // r8ui: the selected map's index (partition overlay)
 
 // --- Multi-map lookups (shaders/common/depth_map_test.glsl): per-map uniform arrays.
-#define SL_MAX_DEPTH_MAPS 8
+// face-partition (techniques/facepartition) uses SL_FACE_SLOTS maps per depth slice (near,
+// -x, +x, -y, +y) and up to SL_FACE_MAX_ZSPLITS slices (face.zsplits): the most of any
+// technique. Cascades keep at most SL_MAX_CASCADES partitions, the paged maps
+// SL_PAGED_LOOKUP_LEVELS levels (one lookup map each).
+#define SL_FACE_SLOTS 5
+#define SL_FACE_MAX_ZSPLITS 4
+#define SL_MAX_DEPTH_MAPS 20  // SL_FACE_SLOTS * SL_FACE_MAX_ZSPLITS
+#define SL_MAX_CASCADES 8
+#define SL_PAGED_LOOKUP_LEVELS 8
 
 // --- view.overlay (rendererParamDecls' enum order; composite.frag).
 #define SL_OVERLAY_NONE 0

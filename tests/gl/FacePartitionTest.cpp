@@ -1,8 +1,10 @@
 // The `face-partition` technique (Lloyd et al. 2006 §5.1) against the Embree reference on the
 // dueling scene (camera into a low sun) and `default`, with the light behind the viewer, the
 // per-pixel selection against its CPU mirror (algo/partition/FacePartitionFit), exact memory,
-// declared passes == timed passes.
+// declared passes == timed passes; the combined scheme (face.zsplits): its selection, memory,
+// publications and outlines.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -109,63 +111,91 @@ TEST(FacePartition, DefaultSceneIsAccurate) {
 // pixel's world position (the same camera, aspect, scene bounds and light), with bias.normal 0
 // (the GPU selects again after the normal offset: the map of P + offset). The GPU works in
 // float: a pixel may differ only where the ray's exit distances through two faces are within
-// 1 mm, at most 0.1 % of the pixels. Measured: 0 mismatches of 33,202 pixels for each light.
+// 1 mm, at most 0.1 % of the pixels. With face.zsplits 3 the slice is chosen by view depth
+// first: a pixel may also differ where its depth is within 1 mm of a split (the gap).
+// Measured: 0 mismatches of 33,202 pixels for each light, with 1, 2 and 3 slices.
 TEST(FacePartition, SelectionOnGpuMatchesTheCpuMirror) {
-  for (const Light light : {Light::directional(180.0f, 14.0f), Light::directional(0.0f, 14.0f),
-                            Light::directional(120.0f, 40.0f)}) {
-    auto r = test::makeRenderer("dueling", "face-partition");
-    ASSERT_TRUE(r);
-    r->setCamera(*test::bookmark(*r->scene(), "into-sun"));
-    r->setLight(light);
-    ASSERT_FALSE(r->params().set("bias.normal", 0.0));  // the map of P itself, not of P + offset
-    ASSERT_FALSE(r->renderFrame(320, 180, 0));
-    const FrameReadback fr = r->readback();
-    partition::FacePartitionFit fit;
-    ASSERT_FALSE(partition::fitFacePartitions(r->camera(), double(320.0f / 180.0f),
-                                              r->scene()->bounds,
-                                              glm::dvec3(light.directionalTowards()), 0.0, fit));
-    std::size_t covered = 0, mismatched = 0, far = 0;
-    std::set<int> used;
-    for (std::size_t i = 0; i < fr.positions.size(); ++i) {
-      if (fr.positions[i].w <= 0.0f) continue;
-      ++covered;
-      double gap = 0.0;
-      const int cpu =
-          partition::selectFacePartition(fit.selection, glm::dvec3(fr.positions[i]), &gap);
-      used.insert(cpu);
-      if (cpu == int(fr.mapIndex[i])) continue;
-      ++mismatched;
-      if (gap > 1e-3) ++far;
+  for (const int zsplits : {1, 2, 3})
+    for (const Light light : {Light::directional(180.0f, 14.0f), Light::directional(0.0f, 14.0f),
+                              Light::directional(120.0f, 40.0f)}) {
+      SCOPED_TRACE(zsplits);
+      auto r = test::makeRenderer("dueling", "face-partition");
+      ASSERT_TRUE(r);
+      r->setCamera(*test::bookmark(*r->scene(), "into-sun"));
+      r->setLight(light);
+      ASSERT_FALSE(r->params().set("bias.normal", 0.0));  // the map of P itself, not of P + offset
+      ASSERT_FALSE(r->params().set("face.zsplits", zsplits));
+      ASSERT_FALSE(r->params().set("resolution", 256));  // the selection does not read the maps
+      ASSERT_FALSE(r->renderFrame(320, 180, 0));
+      const FrameReadback fr = r->readback();
+      partition::FacePartitionFit fit;
+      ASSERT_FALSE(
+          partition::fitFacePartitions(r->camera(), double(320.0f / 180.0f), r->scene()->bounds,
+                                       glm::dvec3(light.directionalTowards()), 0.0, fit, zsplits));
+      std::size_t covered = 0, mismatched = 0, far = 0;
+      std::set<int> used, slices;
+      for (std::size_t i = 0; i < fr.positions.size(); ++i) {
+        if (fr.positions[i].w <= 0.0f) continue;
+        ++covered;
+        double gap = 0.0;
+        const int cpu =
+            partition::selectFacePartition(fit.selection, glm::dvec3(fr.positions[i]), &gap);
+        used.insert(cpu);
+        slices.insert(cpu / partition::kFaceSlots);
+        if (cpu == int(fr.mapIndex[i])) continue;
+        ++mismatched;
+        if (gap > 1e-3) ++far;
+      }
+      std::printf(
+          "light (%.2f %.2f %.2f): %zu covered, %zu mismatched, %zu beyond 1 mm, %zu "
+          "partitions used\n",
+          double(light.directionalTowards().x), double(light.directionalTowards().y),
+          double(light.directionalTowards().z), covered, mismatched, far, used.size());
+      EXPECT_GT(covered, 20000u);
+      EXPECT_GE(used.size(), 2u);
+      // Pixels on both sides of a split (3 slices: the first ends 0.97 m away, before the
+      // ground the camera sees: 2 slices serve pixels).
+      EXPECT_EQ(int(slices.size()), std::min(zsplits, 2));
+      EXPECT_EQ(far, 0u);
+      EXPECT_LE(double(mismatched), 0.001 * double(covered));
+      test::expectNoGlErrors(*r);
     }
-    std::printf(
-        "light (%.2f %.2f %.2f): %zu covered, %zu mismatched, %zu beyond 1 mm, %zu "
-        "partitions used\n",
-        double(light.directionalTowards().x), double(light.directionalTowards().y),
-        double(light.directionalTowards().z), covered, mismatched, far, used.size());
-    EXPECT_GT(covered, 20000u);
-    EXPECT_GE(used.size(), 2u);
-    EXPECT_EQ(far, 0u);
-    EXPECT_LE(double(mismatched), 0.001 * double(covered));
-    test::expectNoGlErrors(*r);
-  }
 }
 
-// memory() lists every byte: 5 slots of resolution^2 32-bit depths, whatever the light.
+// memory() lists every byte: 5 slots per depth slice of resolution^2 32-bit depths, whatever
+// the light.
 TEST(FacePartition, MemoryIsExact) {
   auto r = test::makeRenderer("dueling", "uniform");
   ASSERT_TRUE(r);
   ASSERT_FALSE(r->renderFrame(160, 90, 0));
   const std::uint64_t before = gl::allocatedBytes() - r->stats().memory.bytes();
   ASSERT_FALSE(r->setTechnique("face-partition"));
-  for (auto [res, azimuth] : {std::pair{512, 180.0f}, {256, 0.0f}, {384, 90.0f}}) {
-    SCOPED_TRACE(res);
-    r->setLight(Light::directional(azimuth, 30.0f));
-    ASSERT_FALSE(r->params().set("resolution", res));
+  struct Case {
+    int res;
+    float azimuth;
+    int zsplits;
+  };
+  for (const Case c : {Case{512, 180.0f, 1},
+                       {256, 0.0f, 1},
+                       {384, 90.0f, 1},
+                       {256, 180.0f, 2},
+                       {128, 0.0f, 4},
+                       {384, 90.0f, 3}}) {
+    SCOPED_TRACE(c.res);
+    SCOPED_TRACE(c.zsplits);
+    r->setLight(Light::directional(c.azimuth, 30.0f));
+    ASSERT_FALSE(r->params().set("resolution", c.res));
+    ASSERT_FALSE(r->params().set("face.zsplits", c.zsplits));
     ASSERT_FALSE(r->renderFrame(160, 90, 0));
     const MemoryStats& m = r->stats().memory;
     EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
-    EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(res) * std::uint64_t(res) * 5);
+    EXPECT_EQ(m.bytes(),
+              4ull * std::uint64_t(c.res) * std::uint64_t(c.res) * 5 * std::uint64_t(c.zsplits));
   }
+  // Out of range: refused with the range named.
+  auto err = r->params().set("face.zsplits", 5);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("face.zsplits"), std::string::npos) << *err;
   test::expectNoGlErrors(*r);
 }
 
@@ -226,6 +256,70 @@ TEST(FacePartition, DeclaredPassesAndPanelKeys) {
   EXPECT_TRUE(r->renderFrame(160, 90, 0));
   r->setLight(Light::directional(180.0f, 14.0f));
   EXPECT_FALSE(r->renderFrame(160, 90, 0));
+  test::expectNoGlErrors(*r);
+}
+
+// face.zsplits 2 (the combined scheme): 10 slots, each published (map, slice, numbers, m) at
+// the declared cost, the Partitions panel's keys for all of them; the outside view draws the
+// split plane at face.split.1 and one light frustum per active (slice, face) slot.
+TEST(FacePartition, ZSplitsPublishEverySlotAndTheSplit) {
+  auto r = test::makeRenderer("dueling", "face-partition");
+  ASSERT_TRUE(r);
+  r->setCamera(*test::bookmark(*r->scene(), "into-sun"));
+  ASSERT_FALSE(r->params().set("resolution", 128));
+  ASSERT_FALSE(r->params().set("face.zsplits", 2));
+  ASSERT_FALSE(r->rendererParams().setFromString("view.outside", "on"));
+  std::set<std::string> keys = ui::partition::partitionsPanelKeys();
+  r->requestPublications(keys);
+  for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(160, 90, 0));
+  const TechniqueInfo* info = Renderer::findTechnique("face-partition");
+  ASSERT_TRUE(info);
+  const Publication& pub = r->publication();
+  EXPECT_EQ(pub.numbers.at("partition.count"), 10.0);
+  EXPECT_EQ(pub.images.size(), 10u);
+  for (int i = 0; i < 10; ++i) {
+    const std::string k = "partition." + std::to_string(i);
+    ASSERT_TRUE(pub.images.count(k + ".map")) << k;
+    EXPECT_EQ(pub.images.at(k + ".map").width, 128);
+  }
+  EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(*info, r->params(), keys));
+  EXPECT_EQ(r->stats().publicationBytes,
+            10ull * 128 * 128 * 4 + 10ull * (SL_CASCADE_M_BINS + 2) * 4);
+  const FrameReadback fr = r->readback();
+  double covered = 0.0;
+  std::set<int> slices;
+  for (std::size_t p = 0; p < fr.aliasing.size(); ++p)
+    if (fr.aliasing[p] > 0.0f) {
+      covered += 1.0;
+      slices.insert(int(fr.mapIndex[p]) / 5);
+    }
+  EXPECT_EQ(test::expectPartitionMMatches(pub, fr, 10), covered);
+  EXPECT_EQ(slices, (std::set<int>{0, 1}));  // both slices serve pixels
+  // The slice numbers, the split and the outside view's outlines.
+  r->requestPublications({"face.split.*", "partition.*.active", "partition.*.slice",
+                          "partition.*.near", "partition.*.far"});
+  ASSERT_FALSE(r->renderFrame(160, 90, 0));
+  const auto& n = r->publication().numbers;
+  const double z0 = n.at("face.split.0"), z1 = n.at("face.split.1"), z2 = n.at("face.split.2");
+  EXPECT_NEAR(z1, std::sqrt(z0 * z2), 1e-9 * z2);  // the log split of 2 slices
+  std::set<int> active;
+  for (int i = 0; i < 10; ++i) {
+    const std::string k = "partition." + std::to_string(i);
+    EXPECT_EQ(n.at(k + ".slice"), double(i / 5));
+    if (n.at(k + ".active") != 1.0) continue;
+    active.insert(i);
+    const double lo = i < 5 ? z0 : z1, hi = i < 5 ? z1 : z2;
+    EXPECT_GE(n.at(k + ".near"), lo - 1e-6 * z2) << k;
+    EXPECT_LE(n.at(k + ".far"), hi + 1e-6 * z2) << k;
+  }
+  EXPECT_GE(active.size(), 6u);
+  const auto& outlines = r->stats().outlines;
+  ASSERT_EQ(outlines.splitDepthsM.size(), 1u);
+  EXPECT_FLOAT_EQ(outlines.splitDepthsM[0], float(z1));
+  std::set<int> boxes;
+  for (const FrustumOutline& f : outlines.frusta)
+    if (f.role == OutlineRole::LightMap) boxes.insert(f.map);
+  EXPECT_EQ(boxes, active);
   test::expectNoGlErrors(*r);
 }
 

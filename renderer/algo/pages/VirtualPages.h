@@ -40,7 +40,7 @@ struct VirtualLayout {
   int virtualResolution = 16384;  ///< texels per side of the virtual map (power of two)
   int pageSize = 128;             ///< texels per side of a page (power of two)
   /// At most this many levels: the quadtree is cut below its root when deeper (the lookup
-  /// holds SL_MAX_DEPTH_MAPS maps, one per level), and its top level has several pages.
+  /// holds SL_PAGED_LOOKUP_LEVELS maps, one per level), and its top level has several pages.
   int maxLevels = SL_PAGE_MAX_LEVELS;
   /// Empty when valid, else a message naming the bad value.
   std::string validate() const;

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
+#include "Splits.h"
 #include "StorageFactor.h"
 #include "algo/Focus.h"
 
@@ -17,10 +19,19 @@ int faceSlot(int face) {
 }
 
 int selectFacePartition(const FaceSelection& sel, const glm::dvec3& p, double* secondGap) {
+  // The slice by view depth (cascades' rule), then the face the light ray leaves it through.
+  std::size_t s = 0;
+  double splitGap = std::numeric_limits<double>::infinity();
+  if (sel.splitFarM.size() > 1) {
+    const double d = glm::dot(p - sel.eye, sel.forward);
+    while (s + 1 < sel.splitFarM.size() && d > sel.splitFarM[s]) ++s;
+    for (std::size_t i = 0; i + 1 < sel.splitFarM.size(); ++i)
+      splitGap = std::min(splitGap, std::abs(d - sel.splitFarM[i]));
+  }
   int best = -1;
   double bestT = std::numeric_limits<double>::infinity();
   double secondT = bestT;
-  for (std::size_t f = 0; f < 6; ++f) {
+  for (std::size_t f = 6 * s; f < 6 * s + 6; ++f) {
     if (sel.partitionOfFace[f] < 0) continue;
     const glm::dvec3 n(sel.planes[f]);
     const double nd = glm::dot(n, sel.rayDir);
@@ -34,16 +45,19 @@ int selectFacePartition(const FaceSelection& sel, const glm::dvec3& p, double* s
       secondT = t;
     }
   }
-  if (secondGap) *secondGap = secondT - bestT;
-  return best < 0 ? 0 : best;
+  if (secondGap) *secondGap = std::min(secondT - bestT, splitGap);
+  return best < 0 ? int(s) * kFaceSlots : best;
 }
 
 std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect,
                                              const Aabb& sceneBounds,
                                              const glm::dvec3& towardsLight, double eta,
-                                             FacePartitionFit& out) {
+                                             FacePartitionFit& out, int zSplits) {
   if (!sceneBounds.valid()) return "face partitions: the scene bounds are empty";
   if (!(eta >= -1.0 && eta <= 1.0)) return "face partitions: warp.eta must be in [-1, 1]";
+  if (zSplits < 1 || zSplits > kMaxFaceZSplits)
+    return "face partitions: face.zsplits must be in 1.." + std::to_string(kMaxFaceZSplits) +
+           " (got " + std::to_string(zSplits) + ")";
   if (!(glm::length(towardsLight) > 1e-12) || !std::isfinite(glm::length(towardsLight)))
     return "face partitions: the light direction is zero or not finite";
   FacePartitionFit fit;
@@ -75,49 +89,70 @@ std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect
   base.eta = eta;
   base.depthOnly.assign(box.begin(), box.end());  // every caster toward the light
 
-  fit.selection.planes = frustumFacePlanes(fit.view, fit.view.nearM, fit.view.farM);
+  // The slices: the log split of the clipped depth range (k = 1: the whole of it).
+  try {
+    fit.splits = splitDistances(SplitScheme::Log, fit.view.nearM, fit.view.farM, zSplits);
+  } catch (const std::invalid_argument& e) {
+    return std::string("face partitions: ") + e.what();
+  }
   fit.selection.frontFaces = glm::dot(fit.view.forward, y) < 0.0;
   fit.selection.rayDir = fit.selection.frontFaces ? y : -y;
-  for (FacePartition& f :
-       facePartitions(fit.view, fit.view.nearM, fit.view.farM, y, clipMin, clipMax)) {
-    FacePart part;
-    part.face = f.face;
-    part.slot = faceSlot(f.face);
-    if (part.slot < 0) continue;  // the far face: never towards or away from the light alone
-    part.body = std::move(f.body);
-    warp::WarpSettings ws = base;
-    ws.axis = f.axis;
-    if (f.axis) ws.projectedAxis = f.bisector;
-    if (auto e = warp::fitWarp(fit.view, part.body, y, ws, part.fit))
-      return "face partitions: " + *e;
-    part.nearM = std::numeric_limits<double>::max();
-    part.farM = -part.nearM;
-    for (const glm::dvec3& p : part.body) {
-      const double d = glm::dot(p - fit.view.eye, fit.view.forward);
-      part.nearM = std::min(part.nearM, d);
-      part.farM = std::max(part.farM, d);
+  fit.selection.eye = fit.view.eye;
+  fit.selection.forward = fit.view.forward;
+  fit.selection.splitFarM.assign(fit.splits.begin() + 1, fit.splits.end());
+  fit.selection.planes.assign(6 * std::size_t(zSplits), glm::dvec4(0.0));
+  fit.selection.partitionOfFace.assign(6 * std::size_t(zSplits), -1);
+  for (int s = 0; s < zSplits; ++s) {
+    const double a = fit.splits[std::size_t(s)], b = fit.splits[std::size_t(s) + 1];
+    const std::array<glm::dvec4, 6> planes = frustumFacePlanes(fit.view, a, b);
+    std::copy(planes.begin(), planes.end(), fit.selection.planes.begin() + 6 * s);
+    const std::size_t first = fit.parts.size();
+    for (FacePartition& f : facePartitions(fit.view, a, b, y, clipMin, clipMax)) {
+      FacePart part;
+      part.face = f.face;
+      part.slice = s;
+      if (faceSlot(f.face) < 0) continue;  // the far face: never towards or away from the light
+      part.slot = s * kFaceSlots + faceSlot(f.face);
+      part.body = std::move(f.body);
+      warp::WarpSettings ws = base;
+      ws.axis = f.axis;
+      if (f.axis) ws.projectedAxis = f.bisector;
+      if (auto e = warp::fitWarp(fit.view, part.body, y, ws, part.fit))
+        return "face partitions: " + *e;
+      part.nearM = std::numeric_limits<double>::max();
+      part.farM = -part.nearM;
+      for (const glm::dvec3& p : part.body) {
+        const double d = glm::dot(p - fit.view.eye, fit.view.forward);
+        part.nearM = std::min(part.nearM, d);
+        part.farM = std::max(part.farM, d);
+      }
+      fit.selection.partitionOfFace[6 * std::size_t(s) + std::size_t(f.face)] = part.slot;
+      fit.parts.push_back(std::move(part));
     }
-    fit.selection.partitionOfFace[std::size_t(f.face)] = part.slot;
-    fit.parts.push_back(std::move(part));
-  }
-  if (fit.parts.empty()) {
-    // No face region with volume (the frustum sees a flat sliver of the scene): one
-    // uniform map over what it sees, selected everywhere (partition 0).
+    if (fit.parts.size() > first) continue;
+    // No face region with volume in this slice (the frustum sees a flat sliver of the
+    // scene): one uniform map over what the slice sees, selected everywhere in the slice
+    // (its first slot).
     FacePart part;
     part.face = -1;
-    part.slot = 0;
-    if (seen.empty()) {
-      const auto c = fit.view.corners();
+    part.slice = s;
+    part.slot = s * kFaceSlots;
+    const std::vector<glm::vec3> sliceSeen =
+        zSplits == 1 ? seen
+                     : intersectFrustumWithBox(
+                           camera.frustumCorners(float(aspect), float(a), float(b)), sceneBounds);
+    if (sliceSeen.empty()) {
+      const auto c = fit.view.corners(a, b);
       part.body.assign(c.begin(), c.end());
     } else {
-      part.body.assign(seen.begin(), seen.end());
+      part.body.assign(sliceSeen.begin(), sliceSeen.end());
     }
     warp::WarpSettings ws = base;
     ws.kind = warp::WarpKind::Uniform;
     if (auto e = warp::fitWarp(fit.view, part.body, y, ws, part.fit))
       return "face partitions: " + *e;
-    part.nearM = fit.view.nearM;
-    part.farM = fit.view.farM;
+    part.nearM = a;
+    part.farM = b;
     fit.parts.push_back(std::move(part));
   }
   out = std::move(fit);

@@ -156,7 +156,7 @@ AsmShadowMap::AsmShadowMap(const gl::ShaderLibrary& lib)
 
 void AsmShadowMap::renderShadows(FrameContext& ctx) {
   const pages::VirtualLayout layout{ctx.params.getInt("virtual.resolution"),
-                                    ctx.params.getInt("page.size"), SL_MAX_DEPTH_MAPS};
+                                    ctx.params.getInt("page.size"), SL_PAGED_LOOKUP_LEVELS};
   if (const std::string e = layout.validate(); !e.empty()) throw std::runtime_error("asm: " + e);
   const int poolPages = ctx.params.getInt("pool.pages");
   const int coarseLevel = coarseLevelOf(layout, ctx.params.getInt("asm.coarse.resolution"));

@@ -14,6 +14,8 @@
 
 namespace sl {
 
+static_assert(SL_MAX_CASCADES <= SL_MAX_DEPTH_MAPS);  // one lookup map per partition
+
 namespace {
 
 constexpr std::uint32_t kFloatMaxBits = 0x7f7fffffu;
@@ -38,7 +40,7 @@ TechniqueInfo CascadedShadowMap::info() {
        .type = ParamType::Int,
        .defaultValue = 4,
        .minValue = 1,
-       .maxValue = SL_MAX_DEPTH_MAPS,
+       .maxValue = SL_MAX_CASCADES,
        .step = 1,
        .help = "k: the view frustum is cut into k slices along the view depth, one "
                "orthographic map each (z-partitioning)."});

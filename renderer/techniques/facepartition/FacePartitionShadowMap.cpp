@@ -3,7 +3,6 @@
 #include "FacePartitionShadowMap.h"
 
 #include <algorithm>
-#include <array>
 #include <stdexcept>
 
 #include "algo/partition/StorageFactor.h"
@@ -16,8 +15,12 @@ namespace sl {
 
 namespace {
 
-constexpr int kSlots = partition::kFaceSlots;
-static_assert(kSlots <= SL_MAX_DEPTH_MAPS);
+constexpr int kSlots = partition::kFaceSlots;  // per depth slice
+
+/// Maps of the array for the parameters: kSlots per depth slice.
+int mapsFor(const ParamSet& ps) {
+  return kSlots * int(ps.getInt("face.zsplits"));
+}
 
 /// The lookup's view of one partition's map: its warp's perspective frame, or the
 /// orthographic fit when the warp fell back to uniform.
@@ -38,24 +41,40 @@ TechniqueInfo FacePartitionShadowMap::info() {
   for (ParamDecl& d : p)
     if (d.key == "resolution")
       d.help =
-          "Width and height of EVERY face partition's map in texels. There are 5 (the near face "
-          "and the four sides, one slot each, unused ones empty): the total is 5 times its "
-          "square.";
+          "Width and height of EVERY face partition's map in texels. There are 5 per depth "
+          "slice (the near face and the four sides, one slot each, unused ones empty): the "
+          "total is 5 x face.zsplits times its square.";
   p.insert(p.begin(), warpEtaDecl(0.0));
+  p.push_back({.key = "face.zsplits",
+               .label = "Depth slices",
+               .group = "Face partitions",
+               .type = ParamType::Int,
+               .defaultValue = 1,
+               .minValue = 1,
+               .maxValue = partition::kMaxFaceZSplits,
+               .step = 1,
+               .help = "k: the view frustum (clipped to the scene) is first cut into k slices "
+                       "at the log split z_i = n (f/n)^(i/k), as cascades do, and each slice "
+                       "is face-partitioned on its own: one warped map per (slice, face), 5 k "
+                       "maps (Lloyd et al. 2006's combined scheme). 1: face partitioning "
+                       "alone."});
   TechniqueInfo info{
       "face-partition", "Face-partitioned shadow maps",
       "Lloyd et al. 2006 §5.1: the view frustum split along its faces as seen from the light "
       "(front faces when v . y < 0, back faces otherwise), each part warped with LiSPSM along "
       "the bisector of its projected side edges, one map each; warping works even where the "
-      "frustum looks square from the light (dueling frusta). Directional light only.",
+      "frustum looks square from the light (dueling frusta). With face.zsplits > 1 the frustum "
+      "is first z-partitioned (log split) and every slice face-partitioned (their combined "
+      "scheme). Directional light only.",
       std::move(p)};
   info.passes = {
       {"face fit", "Fit the face partitions",
-       "Clip the view frustum to the scene, take its faces towards the light (light behind the "
-       "viewer) or away from it (light in front), and fit one warp per face: light-space z "
-       "along the bisector of the face's two side edges projected perpendicular to the light, "
-       "n' from warp.eta (0 = LiSPSM). The near face has no side edges: it warps along the view "
-       "vector, or stays uniform where the frustum looks square.",
+       "Clip the view frustum to the scene, cut it into face.zsplits slices at the log split, "
+       "take each slice's faces towards the light (light behind the viewer) or away from it "
+       "(light in front), and fit one warp per face: light-space z along the bisector of the "
+       "face's two side edges projected perpendicular to the light, n' from warp.eta (0 = "
+       "LiSPSM). The near face has no side edges: it warps along the view vector, or stays "
+       "uniform where the frustum looks square.",
        "partitions"},
       {"face maps", "Face partition maps",
        "Render the scene's depth into each face partition's layer through its warp: texels "
@@ -69,16 +88,22 @@ TechniqueInfo FacePartitionShadowMap::info() {
   info.publications = {
       {"partition.*.map", PublicationKind::ImageSet,
        "Every face slot's depth map as rendered (depth 0..1, warped; 1 everywhere when the slot "
-       "is unused), i = 0 near, 1 -x, 2 +x, 3 -y (bottom), 4 +y (top).",
-       "4 B x resolution^2 x 5",
+       "is unused), i = 5 s + f for depth slice s and f = 0 near, 1 -x, 2 +x, 3 -y (bottom), "
+       "4 +y (top).",
+       "4 B x resolution^2 x 5 x face.zsplits",
        [](const ParamSet& ps) {
          const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
-         return 4 * r * r * kSlots;
+         return 4 * r * r * std::uint64_t(mapsFor(ps));
        }},
-      PartitionMStats::publicationDecl([](const ParamSet&) { return kSlots; }),
-      number("partition.count", "Number of face slots (5)."),
+      PartitionMStats::publicationDecl(mapsFor),
+      number("partition.count", "Number of face slots (5 x face.zsplits)."),
       number("partition.active",
-             "Number of faces used this frame (1 to 5: those towards the light, or away)."),
+             "Number of (slice, face) maps used this frame (1 to 5 per slice: the faces towards "
+             "the light, or away)."),
+      number("partition.*.slice", "The depth slice of slot i (0 nearest)."),
+      number("face.split.*",
+             "View depth of split i of the clipped frustum (m): i = 0 its near plane .. "
+             "face.zsplits its far plane (the log split)."),
       number("partition.*.active", "1 when slot i's face is used this frame."),
       number("partition.*.face",
              "The frustum face of slot i (StorageFactor's order: 0 near, 2 -x, 3 +x, 4 -y, 5 +y; "
@@ -119,12 +144,12 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
   {
     auto pass = ctx.timer.scope("face fit");
     partition::FacePartitionFit fit;
-    if (auto err = partition::fitFacePartitions(ctx.camera, ctx.aspect, ctx.scene.bounds,
-                                                glm::dvec3(ctx.light.directionalTowards()),
-                                                ctx.params.get("warp.eta"), fit))
+    if (auto err = partition::fitFacePartitions(
+            ctx.camera, ctx.aspect, ctx.scene.bounds, glm::dvec3(ctx.light.directionalTowards()),
+            ctx.params.get("warp.eta"), fit, ctx.params.getInt("face.zsplits")))
       throw std::runtime_error(*err);
     fit_ = std::move(fit);
-    views_.assign(kSlots, DepthMapView{});
+    views_.assign(std::size_t(fit_.slots()), DepthMapView{});
     for (const partition::FacePart& p : fit_.parts) {
       views_[std::size_t(p.slot)] = partView(p.fit);
       // The outside view: a warped face's light box and warping frustum, a uniform one's
@@ -134,33 +159,42 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
       else if (!p.fit.warped())
         ctx.addOutline(views_[std::size_t(p.slot)].lightViewProj, OutlineRole::LightMap, p.slot);
     }
+    // The slices' split planes (the outside view's rectangles), as cascades draw theirs.
+    if (ctx.outlines)
+      for (std::size_t i = 1; i + 1 < fit_.splits.size(); ++i)
+        ctx.outlines->splitDepthsM.push_back(float(fit_.splits[i]));
   }
+  const int slots = fit_.slots();
   {
     auto pass = ctx.timer.scope("face maps");
-    maps_.ensure(res, kSlots, "face-partition: 5 maps", "resolution");
-    std::array<bool, kSlots> used{};
+    maps_.ensure(res, slots, "face-partition: " + std::to_string(slots) + " maps",
+                 slots > kSlots ? "resolution or face.zsplits" : "resolution");
+    std::vector<bool> used(std::size_t(slots), false);
     for (const partition::FacePart& p : fit_.parts) {
       used[std::size_t(p.slot)] = true;
       renderDepth(ctx, depthProgram_, maps_.layerFramebuffer(p.slot), res, res,
                   views_[std::size_t(p.slot)].lightViewProj);
     }
-    for (int i = 0; i < kSlots; ++i)
+    for (int i = 0; i < slots; ++i)
       if (!used[std::size_t(i)]) {
         beginDepthPass(maps_.layerFramebuffer(i), res, res);  // cleared to 1: empty
       }
   }
 
-  mStats_.update(ctx, kSlots);  // the previous frame's m per selected slot, when requested
+  mStats_.update(ctx, slots);  // the previous frame's m per selected slot, when requested
 
-  publishNumber(ctx, "partition.count", kSlots);
+  publishNumber(ctx, "partition.count", slots);
   publishNumber(ctx, "partition.active", double(fit_.parts.size()));
   publishNumber(ctx, "faces.front", fit_.selection.frontFaces ? 1.0 : 0.0);
   publishNumber(ctx, "depth.near", fit_.view.nearM);
   publishNumber(ctx, "depth.far", fit_.view.farM);
-  for (int i = 0; i < kSlots; ++i) {
+  for (std::size_t i = 0; i < fit_.splits.size(); ++i)
+    publishNumber(ctx, "face.split." + std::to_string(i), fit_.splits[i]);
+  for (int i = 0; i < slots; ++i) {
     const std::string key = "partition." + std::to_string(i);
     publishDepthLayer(ctx, key + ".map", maps_.texture(), i);
     publishNumber(ctx, key + ".texels", double(res) * double(res));
+    publishNumber(ctx, key + ".slice", double(i / kSlots));
     const auto part = std::find_if(fit_.parts.begin(), fit_.parts.end(),
                                    [&](const partition::FacePart& p) { return p.slot == i; });
     const bool active = part != fit_.parts.end();
@@ -191,7 +225,13 @@ void FacePartitionShadowMap::bindLookup(const gl::Program& resolve, int firstUni
   glBindTextureUnit(GLuint(firstUnit), maps_.texture().id());
   resolve.set("u_faceMaps", firstUnit);
   resolve.set("u_faceRayDir", glm::vec3(fit_.selection.rayDir));
-  for (std::size_t f = 0; f < 6; ++f) {
+  resolve.set("u_faceSlices", fit_.selection.slices());
+  resolve.set("u_faceEye", glm::vec3(fit_.selection.eye));
+  resolve.set("u_faceForward", glm::vec3(fit_.selection.forward));
+  for (std::size_t s = 0; s < fit_.selection.splitFarM.size(); ++s)
+    resolve.set(("u_faceSplitFar[" + std::to_string(s) + "]").c_str(),
+                float(fit_.selection.splitFarM[s]));
+  for (std::size_t f = 0; f < fit_.selection.planes.size(); ++f) {
     const std::string i = "[" + std::to_string(f) + "]";
     resolve.set(("u_facePlanes" + i).c_str(), glm::vec4(fit_.selection.planes[f]));
     resolve.set(("u_facePartition" + i).c_str(), fit_.selection.partitionOfFace[f]);

@@ -2,6 +2,8 @@
 // split along its faces as seen from the light, one LiSPSM map per face (its own layer of a
 // texture array) warped along the bisector of the face's projected side edges; the lookup
 // picks a pixel's face by where its light ray leaves the frustum (algo/partition/FacePartitionFit).
+// face.zsplits = k > 1: the frustum is first cut into k depth slices (log split) and every
+// slice face-partitioned, 5 slots per slice (their combined scheme).
 #pragma once
 
 #include <vector>
@@ -33,7 +35,7 @@ class FacePartitionShadowMap : public Technique {
  private:
   gl::Program depthProgram_;
   PartitionMStats mStats_;  ///< partition.<i>.m.* per slot (only while requested)
-  DepthMapArray maps_;      ///< one layer per face slot
+  DepthMapArray maps_;      ///< one layer per (slice, face) slot
   partition::FacePartitionFit fit_;
   std::vector<DepthMapView> views_;
 };

@@ -106,7 +106,7 @@ bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int min
     throw std::runtime_error(
         technique + ": pool.pages = " + std::to_string(poolPages) + " cannot hold the " +
         std::to_string(minPages) + " pages of the coarsest level (the quadtree is cut at " +
-        std::to_string(SL_MAX_DEPTH_MAPS) + " levels); raise pool.pages or page.size");
+        std::to_string(SL_PAGED_LOOKUP_LEVELS) + " levels); raise pool.pages or page.size");
   if (columns * layout.pageSize > kMaxPoolSide)
     throw std::runtime_error(technique + ": a pool of " + std::to_string(poolPages) + " pages of " +
                              std::to_string(layout.pageSize) + "² is " +

@@ -14,6 +14,8 @@
 
 namespace sl {
 
+static_assert(SL_PAGED_LOOKUP_LEVELS <= SL_MAX_DEPTH_MAPS);  // one lookup map per level
+
 namespace {
 
 gl::ProgramDesc requestProgramDesc() {
@@ -116,7 +118,7 @@ RmsmShadowMap::RmsmShadowMap(const gl::ShaderLibrary& lib)
 void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   // One lookup "map" per level (rmsm/lookup.glsl): a deeper tree is cut below its root.
   const pages::VirtualLayout layout{ctx.params.getInt("virtual.resolution"),
-                                    ctx.params.getInt("page.size"), SL_MAX_DEPTH_MAPS};
+                                    ctx.params.getInt("page.size"), SL_PAGED_LOOKUP_LEVELS};
   if (const std::string e = layout.validate(); !e.empty()) throw std::runtime_error("rmsm: " + e);
   const int poolPages = ctx.params.getInt("pool.pages");
   if (map_.ensure(layout, poolPages, layout.topPages(), "rmsm") || !table_ ||

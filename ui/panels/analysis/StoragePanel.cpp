@@ -67,9 +67,19 @@ void schemeFromDeclarations(const sl::TechniqueInfo* info,
                   id.c_str());
     out.eta.reset();
   } else if (info && info->findPublication("faces.front")) {  // face partitions (§5.1)
-    s.scheme = Scheme::Face;
-    std::snprintf(buf, sizeof buf, "face partitions, LiSPSM per face (%s%s)", id.c_str(),
-                  eta && *eta != 0.0 ? ": analysed at eta 0" : "");
+    // face.zsplits > 1: each log-split slice face-partitioned (the combined scheme).
+    const std::optional<double> slices =
+        declared("face.zsplits") ? param("face.zsplits") : std::nullopt;
+    s.partitions = slices ? std::max(1, int(std::lround(*slices))) : 1;
+    s.scheme = s.partitions > 1 ? Scheme::FaceCascades : Scheme::Face;
+    s.split = sl::partition::SplitScheme::Log;
+    if (s.partitions > 1)
+      std::snprintf(buf, sizeof buf,
+                    "face partitions of %d log-split slices, LiSPSM per face (%s%s)", s.partitions,
+                    id.c_str(), eta && *eta != 0.0 ? ": analysed at eta 0" : "");
+    else
+      std::snprintf(buf, sizeof buf, "face partitions, LiSPSM per face (%s%s)", id.c_str(),
+                    eta && *eta != 0.0 ? ": analysed at eta 0" : "");
     out.eta.reset();
   } else if (eta) {
     s.scheme = Scheme::Eta;

@@ -7,6 +7,10 @@
 // ...".
 #pragma once
 
+#include <cstdint>
+#include <utility>
+#include <vector>
+
 #include <QObject>
 #include <QString>
 
@@ -93,6 +97,29 @@ class SelfTests : public QObject {
   void claimRtw();
   void claimPca(const QString& text);
   void claimVibration(const QString& text);
+  // Lessons 5 and 8-12 (SelfTestsLessons.cpp): each changes one thing the lesson's text names
+  // (technique, Warp eta, split scheme, tessellation, resolution) and measures the main view.
+  struct LessonNumbers {
+    double errorPct = 0.0;  ///< against the ray-traced reference
+    double mP95 = 0.0;      ///< m's 95th percentile over the covered pixels (exact)
+    std::uint64_t bytes = 0;
+    double frameMs = 0.0;
+  };
+  LessonNumbers measureLesson();
+  /// Sets the current technique's parameter `key` (a failure is a check), then renders
+  /// `frames` frames.
+  void lessonSet(const char* key, const QString& value, int frames = 2);
+  /// Switches the technique as the Technique list does, sets `params` before its first frame
+  /// renders, then renders `frames` frames (`timeoutMs` for slow techniques).
+  void lessonSwitch(const QString& technique,
+                    const std::vector<std::pair<const char*, QString>>& params, int frames = 3,
+                    int timeoutMs = 30000);
+  void claimForwardBackward(const QString& text);
+  void claimPerspectiveWarp(const QString& text);
+  void claimDuelingFrusta(const QString& text);
+  void claimCascades(const QString& text);
+  void claimOmni(const QString& text);
+  void claimFvsm(const QString& text);
   /// The main view's error against the reference, with its per-pixel readback.
   sl::Renderer::ErrorResult measureView();
   void check(bool ok, const QString& what);

@@ -18,6 +18,7 @@
 
 #include "LessonController.h"
 #include "MainWindow.h"
+#include "PresenterMode.h"
 #include "PublicationDocks.h"
 #include "SelfTests.h"
 #include "ViewportWidget.h"
@@ -88,15 +89,36 @@ bool SelfTests::lessonClaims(const QString& dir) {
     claimPca(text);
   else if (name.endsWith(QLatin1String("vibration-threshold")))
     claimVibration(text);
+  else if (name.endsWith(QLatin1String("forward-vs-backward")))
+    claimForwardBackward(text);
+  else if (name.endsWith(QLatin1String("perspective-warping")))
+    claimPerspectiveWarp(text);
+  else if (name.endsWith(QLatin1String("dueling-frusta")))
+    claimDuelingFrusta(text);
+  else if (name.endsWith(QLatin1String("cascades")))
+    claimCascades(text);
+  else if (name.endsWith(QLatin1String("omni")))
+    claimOmni(text);
+  else if (name.endsWith(QLatin1String("fvsm")))
+    claimFvsm(text);
   return true;
 }
 
 void SelfTests::lessonLayout(const sl::PresetLayout& layout) {
   QCoreApplication::processEvents();
+  QDockWidget* big = layout.large.empty()
+                         ? nullptr
+                         : w_.findChild<QDockWidget*>(QString::fromStdString(layout.large));
+  const QList<QDockWidget*> behind = big ? w_.tabifiedDockWidgets(big) : QList<QDockWidget*>();
   for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) {
     const bool listed = std::find(layout.docks.begin(), layout.docks.end(),
                                   dock->objectName().toStdString()) != layout.docks.end();
-    if (!listed && dock->isVisible()) check(false, tr("dock %1 is hidden").arg(dock->objectName()));
+    // Presenter mode tabs Lesson and Parameters behind the big panel (README, Presenter
+    // mode): there only as a tab, not on screen.
+    const bool tabBehind =
+        w_.presenter_->active() && behind.contains(dock) && dock->visibleRegion().isEmpty();
+    if (!listed && dock->isVisible() && !tabBehind)
+      check(false, tr("dock %1 is hidden").arg(dock->objectName()));
   }
   if (layout.large.empty()) return;
   QDockWidget* large = w_.findChild<QDockWidget*>(QString::fromStdString(layout.large));
@@ -345,6 +367,274 @@ void SelfTests::claimVibration(const QString& text) {
   const std::vector<std::size_t> held = changedPerFrame(3);
   check(std::all_of(held.begin(), held.end(), [](std::size_t c) { return c == 0; }),
         tr("threshold 0.9999: %1 pixels change per frame").arg(list(held)));
+}
+
+// --- Lessons 5 and 8-12 ------------------------------------------------------------------
+
+SelfTests::LessonNumbers SelfTests::measureLesson() {
+  const sl::Renderer::ErrorResult e = measureView();
+  std::vector<float> ms;
+  for (std::size_t i = 0; i < e.frame.aliasing.size(); ++i)
+    if (covered(e.frame, i) && std::isfinite(e.frame.aliasing[i]) && e.frame.aliasing[i] > 0.0f)
+      ms.push_back(e.frame.aliasing[i]);
+  LessonNumbers n;
+  n.errorPct = e.stats.errorPct;
+  if (!ms.empty()) {
+    const auto k = std::ptrdiff_t(double(ms.size() - 1) * 0.95);
+    std::nth_element(ms.begin(), ms.begin() + k, ms.end());
+    n.mP95 = double(ms[std::size_t(k)]);
+  }
+  const sl::FrameStats& s = w_.viewport_->renderer()->stats();
+  n.bytes = s.memory.bytes();
+  n.frameMs = s.totalMs;
+  std::printf("     %s: error %.3f %%, m p95 %.2f, %.2f MiB, %.0f ms (view %dx%d)\n",
+              w_.viewport_->techniqueId().c_str(), n.errorPct, n.mP95,
+              double(n.bytes) / (1024.0 * 1024.0), n.frameMs, e.frame.width, e.frame.height);
+  std::fflush(stdout);
+  return n;
+}
+
+void SelfTests::lessonSet(const char* key, const QString& value, int frames) {
+  if (auto e = w_.viewport_->renderer()->params().setFromString(key, value.toStdString()))
+    check(false, QString::fromStdString(*e));
+  check(w_.waitForFrames(frames), tr("%1 frames after %2 = %3").arg(frames).arg(key, value));
+}
+
+void SelfTests::lessonSwitch(const QString& technique,
+                             const std::vector<std::pair<const char*, QString>>& params, int frames,
+                             int timeoutMs) {
+  w_.setTechnique(technique);
+  check(w_.viewport_->techniqueId() == technique.toStdString(),
+        tr("the technique is now %1").arg(technique));
+  for (const auto& [key, value] : params)
+    if (auto e = w_.viewport_->renderer()->params().setFromString(key, value.toStdString()))
+      check(false, QString::fromStdString(*e));
+  check(w_.waitForFrames(frames, timeoutMs),
+        tr("%1 renders %2 frames within %3 s").arg(technique).arg(frames).arg(timeoutMs / 1000));
+}
+
+void SelfTests::claimForwardBackward(const QString& text) {
+  const double ratio = stated(
+      text, QStringLiteral("importance to at least (\\d+(?:\\.\\d+)?) times as many of the light"));
+  const double sameWithin =
+      stated(text, QStringLiteral("the errors stay within (\\d+) % of each other"));
+  check(std::isfinite(ratio) && std::isfinite(sameWithin),
+        tr("the text states the ratio of the texels given importance and the errors' difference"));
+  sl::Renderer* r = w_.viewport_->renderer();
+  const QString resolution = QString::number(r->params().getInt("resolution"));
+  const auto forwardIm = rtwsettle::importanceCoverage(r->publication());
+  const LessonNumbers forward = measureLesson();
+  // Backward analysis at the same texels, nothing else changed.
+  lessonSwitch(QStringLiteral("rtw-backward"), {{"resolution", resolution}});
+  const auto backwardIm = rtwsettle::importanceCoverage(r->publication());
+  const LessonNumbers backward = measureLesson();
+  check(forwardIm && backwardIm && forwardIm->first >= ratio * backwardIm->first,
+        tr("the light's texels given importance: forward %1 %, backward %2 % of %3: %4x (at least "
+           "%5x)")
+            .arg(forwardIm ? 100.0 * forwardIm->first : -1.0, 0, 'f', 1)
+            .arg(backwardIm ? 100.0 * backwardIm->first : -1.0, 0, 'f', 1)
+            .arg(forwardIm ? forwardIm->second : 0)
+            .arg(forwardIm && backwardIm && backwardIm->first > 0
+                     ? forwardIm->first / backwardIm->first
+                     : 0.0,
+                 0, 'f', 2)
+            .arg(ratio));
+  check(std::abs(backward.errorPct - forward.errorPct) <= sameWithin / 100.0 * forward.errorPct,
+        tr("at %1 x %1 texels: rtw-forward %2 % error, rtw-backward %3 % (within %4 % of each "
+           "other)")
+            .arg(resolution)
+            .arg(forward.errorPct, 0, 'f', 3)
+            .arg(backward.errorPct, 0, 'f', 3)
+            .arg(sameWithin));
+}
+
+void SelfTests::claimPerspectiveWarp(const QString& text) {
+  const double errRatio =
+      stated(text, QStringLiteral("the error falls at least (\\d+(?:\\.\\d+)?) times"));
+  const double mRatio =
+      stated(text, QStringLiteral("95th percentile at least (\\d+(?:\\.\\d+)?) times"));
+  check(std::isfinite(errRatio) && std::isfinite(mRatio),
+        tr("the text states how far the error and m's 95th percentile fall"));
+  // Only Warp eta changes: -1 (uniform), 0 (LiSPSM, the lesson's state), 1 (PSM).
+  const LessonNumbers lispsm = measureLesson();
+  lessonSet("warp.eta", QStringLiteral("-1"));
+  const LessonNumbers uniform = measureLesson();
+  lessonSet("warp.eta", QStringLiteral("1"));
+  const LessonNumbers psm = measureLesson();
+  lessonSet("warp.eta", QStringLiteral("0"));
+  check(uniform.errorPct >= errRatio * lispsm.errorPct && uniform.mP95 >= mRatio * lispsm.mP95,
+        tr("η = -1: error %1 %, m p95 %2; η = 0: %3 %, %4: the error falls %5x (at least %6x), "
+           "m p95 %7x (at least %8x)")
+            .arg(uniform.errorPct, 0, 'f', 2)
+            .arg(uniform.mP95, 0, 'f', 1)
+            .arg(lispsm.errorPct, 0, 'f', 2)
+            .arg(lispsm.mP95, 0, 'f', 1)
+            .arg(lispsm.errorPct > 0 ? uniform.errorPct / lispsm.errorPct : 0.0, 0, 'f', 1)
+            .arg(errRatio)
+            .arg(lispsm.mP95 > 0 ? uniform.mP95 / lispsm.mP95 : 0.0, 0, 'f', 1)
+            .arg(mRatio));
+  check(psm.errorPct > lispsm.errorPct && psm.mP95 > lispsm.mP95,
+        tr("η = 1 (towards PSM): error %1 %, m p95 %2, both above η = 0's")
+            .arg(psm.errorPct, 0, 'f', 2)
+            .arg(psm.mP95, 0, 'f', 1));
+}
+
+void SelfTests::claimDuelingFrusta(const QString& text) {
+  const double side = stated(text, QStringLiteral("against one of (\\d+)²"));
+  const double factor =
+      stated(text, QStringLiteral("error is at most (\\d+(?:\\.\\d+)?) times theirs"));
+  check(std::isfinite(side) && std::isfinite(factor),
+        tr("the text states the equal-texel map and the factor"));
+  sl::Renderer* r = w_.viewport_->renderer();
+  const int res = r->params().getInt("resolution");
+  const LessonNumbers faces = measureLesson();
+  const std::uint64_t faceTexels = faces.bytes / 4;
+  lessonSwitch(QStringLiteral("lispsm"), {{"resolution", QString::number(side)}});
+  const LessonNumbers lispsm = measureLesson();
+  lessonSwitch(QStringLiteral("uniform"), {{"resolution", QString::number(side)}});
+  const LessonNumbers uniform = measureLesson();
+  const double single = side * side;
+  check(std::abs(double(faceTexels) - single) <= 0.01 * single,
+        tr("the same texels: face-partition %1 (%2 B, 5 maps of %3 x %3), one map of %4 x %4: %5")
+            .arg(faceTexels)
+            .arg(faces.bytes)
+            .arg(res)
+            .arg(side)
+            .arg(single, 0, 'f', 0));
+  check(faces.errorPct <= factor * lispsm.errorPct && faces.errorPct <= factor * uniform.errorPct,
+        tr("error: face-partition %1 %, lispsm %2 %, uniform %3 % (face-partition at most %4x)")
+            .arg(faces.errorPct, 0, 'f', 3)
+            .arg(lispsm.errorPct, 0, 'f', 3)
+            .arg(uniform.errorPct, 0, 'f', 3)
+            .arg(factor));
+  // lispsm falls back to the uniform map: the same shadows.
+  check(std::abs(lispsm.errorPct - uniform.errorPct) <= 0.01,
+        tr("lispsm falls back to the uniform map: %1 % and %2 %")
+            .arg(lispsm.errorPct, 0, 'f', 3)
+            .arg(uniform.errorPct, 0, 'f', 3));
+}
+
+void SelfTests::claimCascades(const QString& text) {
+  const double last = stated(text, QStringLiteral("maps 0 to (\\d+) have m p95 within"));
+  const double spread =
+      stated(text, QStringLiteral("m p95 within a factor (\\d+(?:\\.\\d+)?) of each other"));
+  const double drop =
+      stated(text, QStringLiteral("map 0's m p95 falls at least (\\d+(?:\\.\\d+)?) times"));
+  check(std::isfinite(last) && std::isfinite(spread) && std::isfinite(drop),
+        tr("the text states the log split's spread and map 0's fall"));
+  sl::Renderer* r = w_.viewport_->renderer();
+  const int k = r->params().getInt("partitions");
+  // Each map's m p95 over the pixels that selected it, as the Partitions panel shows it.
+  auto perMap = [&]() {
+    std::vector<double> p95;
+    const auto& n = r->publication().numbers;
+    for (int i = 0; i < k; ++i) {
+      const std::string key = "partition." + std::to_string(i) + ".m.";
+      const auto pixels = n.find(key + "pixels"), m = n.find(key + "p95");
+      p95.push_back(pixels != n.end() && m != n.end() && pixels->second > 0 ? m->second
+                                                                            : std::nan(""));
+    }
+    return p95;
+  };
+  auto list = [](const std::vector<double>& v) {
+    QStringList s;
+    for (double x : v) s << (std::isfinite(x) ? QString::number(x, 'f', 1) : QStringLiteral("-"));
+    return s.join(QStringLiteral(", "));
+  };
+  w_.waitForFrames(2);
+  const std::vector<double> uniform = perMap();
+  const LessonNumbers uniformN = measureLesson();
+  lessonSet("split", QStringLiteral("log"), 3);
+  const std::vector<double> log = perMap();
+  const LessonNumbers logN = measureLesson();
+  double lo = INFINITY, hi = 0.0;
+  int used = 0;
+  for (std::size_t i = 0; i < log.size() && double(i) <= last; ++i)
+    if (std::isfinite(log[i])) lo = std::min(lo, log[i]), hi = std::max(hi, log[i]), ++used;
+  check(used >= 2 && double(used) == last + 1 && hi <= spread * lo,
+        tr("log split: the maps' m p95 %1; maps 0 to %2 within a factor %3 (at most %4)")
+            .arg(list(log))
+            .arg(last)
+            .arg(used ? hi / lo : 0.0, 0, 'f', 1)
+            .arg(spread));
+  check(!uniform.empty() && !log.empty() && uniform[0] >= drop * log[0],
+        tr("map 0's m p95: %1 with the uniform split, %2 with log: %3x (at least %4x); error %5 % "
+           "and %6 %")
+            .arg(uniform.empty() ? -1.0 : uniform[0], 0, 'f', 1)
+            .arg(log.empty() ? -1.0 : log[0], 0, 'f', 1)
+            .arg(!uniform.empty() && !log.empty() && log[0] > 0 ? uniform[0] / log[0] : 0.0, 0, 'f',
+                 1)
+            .arg(drop)
+            .arg(uniformN.errorPct, 0, 'f', 2)
+            .arg(logN.errorPct, 0, 'f', 2));
+  check(logN.errorPct < uniformN.errorPct, tr("the error falls with log: %1 % to %2 %")
+                                               .arg(uniformN.errorPct, 0, 'f', 2)
+                                               .arg(logN.errorPct, 0, 'f', 2));
+}
+
+void SelfTests::claimOmni(const QString& text) {
+  const double dpMiB = stated(text, QStringLiteral("2 × 2048² = (\\d+) MiB"));
+  const double cubeMiB = stated(text, QStringLiteral("the cube's 6 × 1024² = (\\d+) MiB"));
+  const double same =
+      stated(text, QStringLiteral("the same error here, within a factor (\\d+(?:\\.\\d+)?)"));
+  const double tessRatio =
+      stated(text, QStringLiteral("at least (\\d+(?:\\.\\d+)?) times the error tessellated"));
+  check(std::isfinite(dpMiB) && std::isfinite(cubeMiB) && std::isfinite(same) &&
+            std::isfinite(tessRatio),
+        tr("the text states both memories, the error factor and the tessellation ratio"));
+  const LessonNumbers off = measureLesson();
+  lessonSet("tessellation", QStringLiteral("on"), 3);
+  const LessonNumbers dp = measureLesson();
+  lessonSwitch(QStringLiteral("cube"), {});
+  const LessonNumbers cube = measureLesson();
+  const double MiB = 1024.0 * 1024.0;
+  check(double(dp.bytes) == dpMiB * MiB && double(cube.bytes) == cubeMiB * MiB,
+        tr("memory: dual paraboloid %1 MiB, cube %2 MiB (stated %3 and %4)")
+            .arg(double(dp.bytes) / MiB, 0, 'f', 2)
+            .arg(double(cube.bytes) / MiB, 0, 'f', 2)
+            .arg(dpMiB)
+            .arg(cubeMiB));
+  check(off.errorPct >= tessRatio * dp.errorPct,
+        tr("dual paraboloid: error %1 % without tessellation, %2 % with it: %3x (at least %4x)")
+            .arg(off.errorPct, 0, 'f', 3)
+            .arg(dp.errorPct, 0, 'f', 3)
+            .arg(dp.errorPct > 0 ? off.errorPct / dp.errorPct : 0.0, 0, 'f', 1)
+            .arg(tessRatio));
+  check(dp.errorPct <= same * cube.errorPct && cube.errorPct <= same * dp.errorPct,
+        tr("about the same error: dual paraboloid %1 %, cube %2 % (within %3x)")
+            .arg(dp.errorPct, 0, 'f', 3)
+            .arg(cube.errorPct, 0, 'f', 3)
+            .arg(same));
+}
+
+void SelfTests::claimFvsm(const QString& text) {
+  const double tiles = stated(text, QStringLiteral("Tiles per axis (\\d+) and Tile resolution"));
+  const double tileRes = stated(text, QStringLiteral("and Tile resolution (\\d+)"));
+  const double errFactor = stated(
+      text, QStringLiteral("fvsm's error is at most (\\d+(?:\\.\\d+)?) times virtual-tiled's"));
+  const double timeFactor =
+      stated(text, QStringLiteral("in at most (\\d+(?:\\.\\d+)?) times its frame time"));
+  check(std::isfinite(tiles) && std::isfinite(tileRes) && std::isfinite(errFactor) &&
+            std::isfinite(timeFactor),
+        tr("the text states the small brute-force budget, the error and the time factors"));
+  const LessonNumbers fvsm = measureLesson();
+  // The brute force at the small budget only (the full 16 x 16 tiles of 4096 x 4096 take tens
+  // of seconds a frame here).
+  lessonSwitch(QStringLiteral("virtual-tiled"),
+               {{"tiles", QString::number(tiles)}, {"tile.resolution", QString::number(tileRes)}},
+               2, 240000);
+  const LessonNumbers small = measureLesson();
+  check(fvsm.errorPct <= errFactor * small.errorPct && fvsm.frameMs <= timeFactor * small.frameMs,
+        tr("fvsm: %1 % error in %2 ms; virtual-tiled, %3 x %3 tiles of %4 x %4 texels: %5 % in "
+           "%6 ms (fvsm at most %7x the error in at most %8x the time)")
+            .arg(fvsm.errorPct, 0, 'f', 4)
+            .arg(fvsm.frameMs, 0, 'f', 0)
+            .arg(tiles)
+            .arg(tileRes)
+            .arg(small.errorPct, 0, 'f', 4)
+            .arg(small.frameMs, 0, 'f', 0)
+            .arg(errFactor)
+            .arg(timeFactor));
 }
 
 }  // namespace sl::ui

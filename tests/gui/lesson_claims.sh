@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Each lesson's claim, in numbers (shadowlab --lesson NAME --self-test lesson-claims=DIR, see
 # ui/SelfTestsLessons.cpp): every lesson in scenes/lessons started fresh, as
-# scripts/grab_lessons.sh grabs it (the same screen, so the same window): its temporal state
-# settled, only its listed panels shown and its telling panel large; the claims read from the
-# lesson's own text and measured: perspective aliasing (m in three bands, the error thin lines
-# along the exact shadow's edges), projective aliasing (the floor's m at a low and a high sun),
-# RTW against uniform at the same texels in the split view, the PCA's settled angle (two fresh
-# starts, the same angle), the vibration (changed pixels per frame, none once held). The
-# window of each lesson is saved to DIR for a look.
+# scripts/grab_lessons.sh grabs it (the same screen and presenter mode, so the same window and
+# view): its temporal state settled, only its listed panels shown and its telling panel large;
+# the claims read from the lesson's own text and measured: perspective aliasing (m in three
+# bands, the error thin lines along the exact shadow's edges), projective aliasing (the floor's
+# m at a low and a high sun), RTW against uniform at the same texels in the split view, the
+# PCA's settled angle (two fresh starts, the same angle), the vibration (changed pixels per
+# frame, none once held), forward against backward analysis (texels given importance, error),
+# LiSPSM's η (error and m from η = -1 to 0 and 1), face partitioning against lispsm and uniform
+# at the same texels, the cascades' split schemes (each map's m), cube against dual paraboloid
+# (memory, error, tessellation) and FVSM against a small brute-force budget. The window of each
+# lesson is saved to DIR for a look.
 # usage: lesson_claims.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1
@@ -27,8 +31,8 @@ for json in "$here"/../../scenes/lessons/*.json; do
   for run in $(seq $runs); do
     log=$out/$name-$run
     rc=0
-    timeout 300 "$app" --lesson "$name" --self-test "lesson-claims=$out" >"$log.out" 2>"$log.err" ||
-      rc=$?
+    timeout 300 "$app" --lesson "$name" --presenter --self-test "lesson-claims=$out" \
+      >"$log.out" 2>"$log.err" || rc=$?
     cat "$log.out"
     if [[ $rc -ne 0 ]] || ! grep -qx PASS "$log.out"; then
       echo "FAIL: $name (run $run) exited with $rc; stderr:"

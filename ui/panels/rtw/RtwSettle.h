@@ -7,6 +7,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "core/Renderer.h"
 
@@ -48,6 +49,21 @@ inline std::optional<bool> settled(const sl::Publication& pub) {
 inline std::optional<double> angleDeg(const sl::Publication& pub) {
   auto it = pub.numbers.find("rotation.deg");
   return it == pub.numbers.end() ? std::nullopt : std::optional<double>(it->second);
+}
+
+/// The share of the light's texels the frame's importance map (before the collapse) gives any
+/// importance (I > 0), and the map's texel count; nothing when the frame did not publish it.
+inline std::optional<std::pair<double, std::size_t>> importanceCoverage(
+    const sl::Publication& pub) {
+  auto it = pub.images.find("importance");
+  if (it == pub.images.end() || it->second.values.empty()) return std::nullopt;
+  const sl::FloatImage& im = it->second;
+  std::size_t any = 0, texels = 0;
+  for (std::size_t i = 0; i < im.values.size(); i += std::size_t(std::max(1, im.channels))) {
+    ++texels;
+    any += im.values[i] > 0.0f ? 1 : 0;
+  }
+  return std::pair{double(any) / double(texels), texels};
 }
 
 }  // namespace sl::ui::rtwsettle

@@ -617,13 +617,24 @@ void SelfTests::claimFvsm(const QString& text) {
   check(std::isfinite(tiles) && std::isfinite(tileRes) && std::isfinite(errFactor) &&
             std::isfinite(timeFactor),
         tr("the text states the small brute-force budget, the error and the time factors"));
-  const LessonNumbers fvsm = measureLesson();
+  // Frame times are wall clock on a shared machine (ctest runs two tests at once): each side's
+  // time is its best of three frames, so a load spike in one frame does not decide the claim.
+  const auto bestFrameMs = [this](double ms) {
+    for (int i = 0; i < 2; ++i) {
+      check(w_.waitForFrames(1, 240000), tr("one more frame to time"));
+      ms = std::min(ms, w_.viewport_->renderer()->stats().totalMs);
+    }
+    return ms;
+  };
+  LessonNumbers fvsm = measureLesson();
+  fvsm.frameMs = bestFrameMs(fvsm.frameMs);
   // The brute force at the small budget only (the full 16 x 16 tiles of 4096 x 4096 take tens
   // of seconds a frame here).
   lessonSwitch(QStringLiteral("virtual-tiled"),
                {{"tiles", QString::number(tiles)}, {"tile.resolution", QString::number(tileRes)}},
                2, 240000);
-  const LessonNumbers small = measureLesson();
+  LessonNumbers small = measureLesson();
+  small.frameMs = bestFrameMs(small.frameMs);
   check(fvsm.errorPct <= errFactor * small.errorPct && fvsm.frameMs <= timeFactor * small.frameMs,
         tr("fvsm: %1 % error in %2 ms; virtual-tiled, %3 x %3 tiles of %4 x %4 texels: %5 % in "
            "%6 ms (fvsm at most %7x the error in at most %8x the time)")

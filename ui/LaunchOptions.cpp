@@ -12,6 +12,7 @@ namespace {
 /// The GUI self-tests (ui/SelfTests.cpp runs them), each with its argument's form.
 constexpr const char* kSelfTests[] = {"params",
                                       "bad-gltf=FILE[,FILE...]",
+                                      "bad-session=FILE[,FILE...]",
                                       "teaching[=DIR]",
                                       "charts[=DIR]",
                                       "split-resize[=TECHNIQUE]",

@@ -60,10 +60,16 @@ bool isGltfFile(const QString& path) {
   return suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
 }
 
-QString gltfPathOf(const QMimeData* mime) {
+bool isSessionFile(const QString& path) {
+  return QFileInfo(path).suffix().toLower() == QLatin1String("json");
+}
+
+/// The first local file of a drag that is a glTF scene or (a .json) a session.
+QString droppedPathOf(const QMimeData* mime) {
   if (!mime || !mime->hasUrls()) return {};
   for (const QUrl& url : mime->urls())
-    if (url.isLocalFile() && isGltfFile(url.toLocalFile())) return url.toLocalFile();
+    if (url.isLocalFile() && (isGltfFile(url.toLocalFile()) || isSessionFile(url.toLocalFile())))
+      return url.toLocalFile();
   return {};
 }
 
@@ -277,14 +283,18 @@ void MainWindow::openSceneDialog() {
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
-  if (!gltfPathOf(event->mimeData()).isEmpty()) event->acceptProposedAction();
+  if (!droppedPathOf(event->mimeData()).isEmpty()) event->acceptProposedAction();
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
-  const QString path = gltfPathOf(event->mimeData());
+  // A glTF loads as the scene; a .json opens as a session (File > Open session…).
+  const QString path = droppedPathOf(event->mimeData());
   if (path.isEmpty()) return;
   event->acceptProposedAction();
-  loadScene(path);
+  if (isSessionFile(path))
+    sessions_->open(path);
+  else
+    loadScene(path);
 }
 
 void MainWindow::refreshBookmarks() {

@@ -9,6 +9,7 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDragEnterEvent>
 #include <QDir>
@@ -24,6 +25,7 @@
 #include <QMouseEvent>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QRegularExpression>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
@@ -36,6 +38,7 @@
 #include "MainWindow.h"
 #include "MessageText.h"
 #include "PassStepper.h"
+#include "SessionFiles.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
 #include "algo/omni/OmniMapping.h"
@@ -137,6 +140,8 @@ void SelfTests::run() {
     ran = liveError(argument_);
   else if (name_ == QLatin1String("adaptive-resolution"))
     ran = adaptiveResolution(argument_);
+  else if (name_ == QLatin1String("bad-session"))
+    ran = badSession(argument_);
   else
     ran = badGltf(argument_);
   const bool pass = ran && failures_ == 0;
@@ -295,6 +300,7 @@ bool SelfTests::omniProbe(const QString& dir) {
       w_.grab().toImage().save(QDir(dir).filePath(QStringLiteral("omni-probe.png")));
   }
   check(probed >= 3, tr("%1 of 4 hover points over a surface").arg(probed));
+  omniMapReadout(panel, cube);
   QEvent leave(QEvent::Leave);
   QCoreApplication::sendEvent(view, &leave);
   QCoreApplication::processEvents();
@@ -324,6 +330,93 @@ bool SelfTests::omniProbe(const QString& dir) {
       tr("Omni map hidden: %1 probe reads for 2 moves and 2 frames").arg(qulonglong(hiddenReads)));
   QCoreApplication::sendEvent(view, &leave);
   return true;
+}
+
+void SelfTests::omniMapReadout(PublicationPanel* panel, bool cube) {
+  auto* density = panel->findChild<QCheckBox*>();
+  auto* image = panel->findChild<ImageView*>();
+  check(density && image && image->hasImage(), tr("the Omni map shows an image and a density box"));
+  if (!density || !image || !image->hasImage()) return;
+  density->setChecked(true);
+  QCoreApplication::processEvents();
+  const QJsonObject drawn = panel->drawnValues();
+  // One scale for both mappings (OmniMapPanel's kDensityLog2Min/Max), whatever the data.
+  check(drawn.value(QStringLiteral("density_shown")).toBool() &&
+            drawn.value(QStringLiteral("scale_min")).toDouble() == 12.0 &&
+            drawn.value(QStringLiteral("scale_max")).toDouble() == 24.0,
+        tr("density shown on the fixed scale 12..24 log2 texels/sr (got %1..%2)")
+            .arg(drawn.value(QStringLiteral("scale_min")).toDouble())
+            .arg(drawn.value(QStringLiteral("scale_max")).toDouble()));
+  // The cells of the layout: the cube's +x face is the cross's middle row, first column; the
+  // paraboloid's first disc the left cell. Texel (x, y up) of the layout -> widget point.
+  const int resolution = drawn.value(QStringLiteral("resolution")).toInt();
+  const QSize texels = image->texelSize();
+  const int cell = texels.height() / (cube ? 3 : 1);
+  const int row0 = cube ? cell : 0;
+  const QRectF r = image->shownImageRect();
+  // The readout names the texel it reads ("texel (x, y)  uv (u, v)  depth = D, N texels/sr"):
+  // the widget's pixel covers a few texels, so the value is checked at the texel it names.
+  struct Readout {
+    QString text;
+    int tx = -1, ty = -1;
+    double value = 0.0;
+  };
+  auto readAt = [&](int tx, int ty) {
+    const QPointF at(r.left() + (tx + 0.5) / texels.width() * r.width(),
+                     r.bottom() - (ty + 0.5) / texels.height() * r.height());
+    QMouseEvent move(QEvent::MouseMove, at, image->mapToGlobal(at), Qt::NoButton, Qt::NoButton,
+                     Qt::NoModifier);
+    QCoreApplication::sendEvent(image, &move);
+    Readout out;
+    out.text = image->hoverText();
+    const QRegularExpressionMatch m =
+        QRegularExpression(QStringLiteral("^texel \\((\\d+), (\\d+)\\).*, (\\S+) texels/sr$"))
+            .match(out.text);
+    if (m.hasMatch()) {
+      out.tx = m.captured(1).toInt();
+      out.ty = m.captured(2).toInt();
+      out.value = m.captured(3).toDouble();
+    }
+    return out;
+  };
+  const omni::ParaboloidFrame frame = omni::paraboloidFrame({0, 1, 0});
+  auto expected = [&](int tx, int ty) {  // texel of the cell: the mapping's density there
+    const glm::dvec2 uv((tx + 0.5) / cell, (ty - row0 + 0.5) / cell);
+    return cube ? omni::cubeTexelsPerSteradian(omni::cubeDirection(0, uv), resolution)
+                : omni::paraboloidTexelsPerSteradian(frame, omni::paraboloidDirection(frame, 0, uv),
+                                                     resolution);
+  };
+  // Centre, and near a corner (cube) or the rim (paraboloid); the density is symmetric about
+  // the centre, so a cell drawn rotated reads the same.
+  const std::pair<int, int> centre{cell / 2, row0 + cell / 2};
+  const std::pair<int, int> edge = cube ? std::pair{2, row0 + 2} : std::pair{cell / 2, row0 + 3};
+  double values[2] = {0.0, 0.0};
+  int k = 0;
+  for (const auto& [aimX, aimY] : {centre, edge}) {
+    const Readout read = readAt(aimX, aimY);
+    const double want = read.tx >= 0 ? expected(read.tx, read.ty) : 0.0;
+    values[k++] = read.value;
+    check(read.tx >= 0 && std::abs(read.tx - aimX) <= 3 && std::abs(read.ty - aimY) <= 3 &&
+              std::abs(read.value / want - 1.0) < 1e-3,
+          tr("the value under the cursor near texel (%1, %2): \"%3\"; algo/omni there: %4 "
+             "texels/sr")
+              .arg(aimX)
+              .arg(aimY)
+              .arg(read.text)
+              .arg(want, 0, 'g', 6));
+  }
+  const double ratio = values[1] / values[0], analytic = cube ? 3.0 * std::sqrt(3.0) : 4.0;
+  check(ratio > 0.9 * analytic && ratio < analytic,
+        tr("read under the cursor, near the %1 / centre = %2 (analytic at the very %1: %3)")
+            .arg(cube ? tr("corner") : tr("rim"))
+            .arg(ratio, 0, 'f', 4)
+            .arg(analytic, 0, 'f', 4));
+  density->setChecked(false);
+  QCoreApplication::processEvents();
+  check(!panel->drawnValues().value(QStringLiteral("density_shown")).toBool(),
+        tr("unchecked: the depth is shown again"));
+  QEvent leave(QEvent::Leave);
+  QCoreApplication::sendEvent(image, &leave);
 }
 
 bool SelfTests::charts(const QString& dir) {
@@ -704,25 +797,43 @@ bool SelfTests::teaching(const QString& dir) {
 }
 
 bool SelfTests::badGltf(const QString& paths) {
+  return badFiles(paths, w_.openAction_, tr("File > Open"));
+}
+
+bool SelfTests::badSession(const QString& paths) {
+  return badFiles(paths, w_.sessions_->openAction(), tr("File > Open session"));
+}
+
+bool SelfTests::badFiles(const QString& paths, QAction* open, const QString& menuName) {
   const QStringList files = paths.split(QLatin1Char(','), Qt::SkipEmptyParts);
-  check(!files.isEmpty(), tr("bad-gltf names at least one file"));
+  check(!files.isEmpty(), tr("%1 names at least one file").arg(name_));
   for (const QString& path : files) {
-    check(QFileInfo::exists(path), tr("the broken glTF %1 exists").arg(path));
+    check(QFileInfo::exists(path), tr("the broken file %1 exists").arg(path));
     if (!QFileInfo::exists(path)) return false;
-    badGltfOpen(path, false);
-    badGltfOpen(path, true);
+    badFileOpen(path, open, menuName, false);
+    badFileOpen(path, open, menuName, true);
   }
   return true;
 }
 
-void SelfTests::badGltfOpen(const QString& path, bool drop) {
-  const std::shared_ptr<const sl::Scene> sceneBefore = w_.viewport_->scene();
-  const QString specBefore = w_.sceneSpec_;
+SelfTests::ViewState SelfTests::viewState() const {
+  return ViewState{w_.viewport_->scene(),
+                   w_.sceneSpec_,
+                   w_.viewport_->techniqueId(),
+                   w_.viewport_->splitTechnique(),
+                   w_.viewport_->renderer()->params(),
+                   w_.viewport_->renderer()->rendererParams(),
+                   w_.viewport_->splitParams()};
+}
+
+void SelfTests::badFileOpen(const QString& path, QAction* open, const QString& menuName,
+                            bool drop) {
+  const ViewState before = viewState();
   const QString comboBefore = w_.sceneCombo_->currentText();
   const QString titleBefore = w_.windowTitle();
   const QString fileName = QFileInfo(path).fileName();
   const QString absolute = QFileInfo(path).absoluteFilePath();
-  const QString how = drop ? tr("dropped") : tr("File > Open");
+  const QString how = drop ? tr("dropped") : menuName;
   std::printf("---- %s, %s\n", qPrintable(fileName), qPrintable(how));
   w_.statusBar()->clearMessage();
 
@@ -767,8 +878,8 @@ void SelfTests::badGltfOpen(const QString& path, bool drop) {
     QDropEvent dropEvent(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
     QApplication::sendEvent(&w_, &dropEvent);  // returns once the error dialog is closed
   } else {
-    w_.openAction_->trigger();  // File > Open glTF…: returns once both dialogs are closed
-    check(sawFileDialog, tr("File > Open glTF… showed the file dialog"));
+    open->trigger();  // the menu item: returns once both dialogs are closed
+    check(sawFileDialog, tr("%1 showed the file dialog").arg(menuName));
   }
   driver.stop();
   const qint64 ms = clock.elapsed();
@@ -790,8 +901,10 @@ void SelfTests::badGltfOpen(const QString& path, bool drop) {
             .arg(status.size())
             .arg(detailsText.size()));
   check(ms < 20000, tr("%1 the file, read the error and closed it in %2 ms").arg(how).arg(ms));
-  check(w_.viewport_->scene() == sceneBefore && w_.sceneSpec_ == specBefore,
-        tr("the previous scene (%1) is still shown").arg(specBefore));
+  const ViewState after = viewState();
+  check(after.scene == before.scene && after.sceneSpec == before.sceneSpec,
+        tr("the previous scene (%1) is still shown").arg(before.sceneSpec));
+  check(after == before, tr("technique, parameters and split view are unchanged"));
   check(w_.sceneCombo_->currentText() == comboBefore && w_.windowTitle() == titleBefore,
         tr("the scene selector and the title still name it (%1)").arg(comboBefore));
   const std::uint64_t frame = w_.viewport_->renderer()->stats().frameIndex;

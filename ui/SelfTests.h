@@ -1,13 +1,16 @@
 // GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
-// params, bad-gltf=FILE[,FILE…], teaching=DIR, charts=DIR, split-resize[=TECHNIQUE],
-// omni-probe[=DIR], session-save=FILE, session-check (SelfTestsSession.cpp), presenter[=DIR],
-// split-params[=DIR] (SelfTestsPresenter.cpp), lesson-claims[=DIR] (SelfTestsLessons.cpp). They act
-// as a user would and check what the renderer and the window did; each check prints "ok   ..." or
-// "FAIL
+// params, bad-gltf=FILE[,FILE…], bad-session=FILE[,FILE…], teaching=DIR, charts=DIR,
+// split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check
+// (SelfTestsSession.cpp), presenter[=DIR], split-params[=DIR] (SelfTestsPresenter.cpp),
+// lesson-claims[=DIR] (SelfTestsLessons.cpp). They act as a user would and check what the renderer
+// and the window did; each check prints "ok   ..." or "FAIL
 // ...".
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -17,9 +20,12 @@
 #include "core/Preset.h"
 #include "core/Renderer.h"
 
+class QAction;
+
 namespace sl::ui {
 
 class MainWindow;
+class PublicationPanel;
 
 class SelfTests : public QObject {
   Q_OBJECT
@@ -38,7 +44,24 @@ class SelfTests : public QObject {
   /// bad-gltf=FILE[,FILE…]: each broken file opened through File > Open, then dropped on
   /// the window; each time the error is shown (elided) and the scene stays.
   bool badGltf(const QString& paths);
-  void badGltfOpen(const QString& path, bool drop);
+  /// bad-session=FILE[,FILE…]: each broken session opened through File > Open session…, then
+  /// dropped on the window; each time the error is shown (elided) and the scene, technique,
+  /// parameters and split view stay.
+  bool badSession(const QString& paths);
+  /// badGltf and badSession: each file opened through `open` (the menu item called
+  /// `menuName`, driving its file dialog), then dropped on the window.
+  bool badFiles(const QString& paths, QAction* open, const QString& menuName);
+  void badFileOpen(const QString& path, QAction* open, const QString& menuName, bool drop);
+  /// What a refused file must leave unchanged: scene, technique, parameters, split view.
+  struct ViewState {
+    std::shared_ptr<const sl::Scene> scene;
+    QString sceneSpec;
+    std::string technique, splitTechnique;
+    sl::ParamSet params, shared;
+    std::map<std::string, std::string> splitParams;
+    bool operator==(const ViewState&) const = default;
+  };
+  ViewState viewState() const;
   /// Pass stepping, overlays, split view and lessons; PNGs of each step into `dir`.
   bool teaching(const QString& dir);
   /// A tiny Charts sweep, its PNG into `dir`, and a click on a point switching the view.
@@ -52,6 +75,10 @@ class SelfTests : public QObject {
   /// face or hemisphere and uv algo/omni computes for that pixel's direction from the light;
   /// leaving the view removes it. PNG of the window into `dir`.
   bool omniProbe(const QString& dir);
+  /// Part of omniProbe: the Omni map's texel-density view (one log2 texels/sr scale for both
+  /// mappings) and its value under the cursor at a face's / disc's centre and its corner / rim,
+  /// against algo/omni's density there; then back to depth.
+  void omniMapReadout(PublicationPanel* panel, bool cube);
   /// session-save=FILE: a state far from the defaults (scene, technique, parameters, overlay,
   /// camera, light, a split technique with its own parameters, a hidden dock), its metrics
   /// printed ("metric ..." lines), saved to FILE through SessionFiles; Recent sessions lists

@@ -178,12 +178,7 @@ bool SelfTests::sessionSave(const QString& path) {
 }
 
 void SelfTests::badSessionOpen(const QString& path) {
-  const std::string technique = w_.viewport_->techniqueId();
-  const sl::ParamSet params = w_.viewport_->renderer()->params();
-  const sl::ParamSet shared = w_.viewport_->renderer()->rendererParams();
-  const std::string split = w_.viewport_->splitTechnique();
-  const auto splitParams = w_.viewport_->splitParams();
-  const QString scene = w_.sceneSpec_;
+  const ViewState before = viewState();
   QString messageText;
   QTimer driver;  // closes the error dialog as a user would, reading it first
   driver.setInterval(50);
@@ -200,11 +195,7 @@ void SelfTests::badSessionOpen(const QString& path) {
   check(!opened, tr("%1 is refused").arg(QFileInfo(path).fileName()));
   check(messageText.contains(QFileInfo(path).fileName()),
         tr("an error dialog names the file: \"%1\"").arg(messageText.left(160)));
-  check(w_.viewport_->techniqueId() == technique && w_.viewport_->renderer()->params() == params &&
-            w_.viewport_->renderer()->rendererParams() == shared &&
-            w_.viewport_->splitTechnique() == split && w_.viewport_->splitParams() == splitParams &&
-            w_.sceneSpec_ == scene,
-        tr("scene, technique, parameters and split view are unchanged"));
+  check(viewState() == before, tr("scene, technique, parameters and split view are unchanged"));
 }
 
 bool SelfTests::sessionCheck() {

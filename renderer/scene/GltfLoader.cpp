@@ -18,6 +18,7 @@
 #include <optional>
 #include <set>
 #include <string_view>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -50,6 +51,10 @@ constexpr int kMaxJsonDepth = 256;
 /// ~1 KiB per node, so a 22 MB chain of 1,000,000 nodes took 1.2 GB (100,000 cameras on
 /// 100,000 nodes, a large but real file, have 600,000).
 constexpr std::size_t kMaxJsonContainers = std::size_t(1) << 20;
+/// A "uri" that is not a data: URI names a file relative to the scene: no path is longer than
+/// PATH_MAX (4096 on Linux). Longer ones are refused in the JSON text, before tinygltf copies
+/// them (a 40 MB URI took 500 MiB through its DOM, model, path and "File not found" message).
+constexpr std::size_t kMaxUriBytes = 4096;
 /// Node instances in the flattened hierarchy.
 constexpr std::size_t kMaxNodeInstances = std::size_t(1) << 20;
 /// Triangles in the flattened scene (all instances together).
@@ -1369,6 +1374,47 @@ std::vector<unsigned char> readRegularFile(const fs::path& path, const std::stri
   }
 }
 
+/// The offset and length of the first "uri" string value in JSON `text` that is longer than
+/// kMaxUriBytes and not a data: URI, or {npos, 0}. One pass over the tokens' strings (escapes
+/// skipped, so a quote inside a string is not a token); lengths are the raw JSON bytes.
+std::pair<std::size_t, std::size_t> overlongUri(std::string_view text) {
+  constexpr std::size_t npos = std::string_view::npos;
+  // The string starting at the quote `at`: its content's end (the closing quote) or npos.
+  auto stringEnd = [&](std::size_t at) {
+    for (std::size_t k = at + 1; k < text.size(); ++k) {
+      if (text[k] == '\\')
+        ++k;
+      else if (text[k] == '"')
+        return k;
+    }
+    return npos;
+  };
+  auto skipBlanks = [&](std::size_t k) {
+    while (k < text.size() &&
+           (text[k] == ' ' || text[k] == '\t' || text[k] == '\n' || text[k] == '\r'))
+      ++k;
+    return k;
+  };
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    if (text[k] != '"') continue;
+    const std::size_t end = stringEnd(k);
+    if (end == npos) break;
+    const bool uriKey = text.substr(k + 1, end - k - 1) == "uri";
+    k = end;
+    if (!uriKey) continue;
+    std::size_t v = skipBlanks(end + 1);
+    if (v >= text.size() || text[v] != ':') continue;
+    v = skipBlanks(v + 1);
+    if (v >= text.size() || text[v] != '"') continue;
+    const std::size_t valueEnd = stringEnd(v);
+    if (valueEnd == npos) break;
+    const std::size_t length = valueEnd - v - 1;
+    if (length > kMaxUriBytes && text.substr(v + 1, 5) != "data:") return {v + 1, length};
+    k = valueEnd;
+  }
+  return {npos, 0};
+}
+
 /// Refuses JSON nested deeper than kMaxJsonDepth (before any recursive parser sees it) or
 /// holding more than kMaxJsonContainers arrays and objects (before any parser allocates).
 void checkJsonDepth(const unsigned char* bytes, std::size_t size, const std::string& what) {
@@ -1381,6 +1427,11 @@ void checkJsonDepth(const unsigned char* bytes, std::size_t size, const std::str
   if (at != std::string_view::npos)
     fail(what + " holds more than " + std::to_string(kMaxJsonContainers) +
          " arrays and objects (at byte " + std::to_string(at) + "): refused (kMaxJsonContainers)");
+  if (const auto [uriAt, length] = overlongUri(text); uriAt != std::string_view::npos)
+    fail(what + " has a URI of " + std::to_string(length) + " bytes (" +
+         quoteInput(std::string(text.substr(uriAt, kMaxQuotedBytes + 1))) + " at byte " +
+         std::to_string(uriAt) + "), longer than any file path: refused (kMaxUriBytes " +
+         std::to_string(kMaxUriBytes) + ")");
 }
 
 /// Why an external (non-data:) URI is refused, or "" if it is a relative path that stays

@@ -202,8 +202,40 @@ TEST(GltfLoaderLimits, LongUrisAreQuotedShort) {
   fs::path dir = outDir("long-uri");
   writeFile(dir / "bad.gltf",
             gltfText(R"({"mesh":0})", "0", "http://" + std::string(100000, 'x') + ".bin"));
-  std::string error = expectRefused(dir / "bad.gltf", {"is refused", "...'"});
+  std::string error = expectRefused(dir / "bad.gltf", {"has a URI of 100011 bytes ('http://xxx",
+                                                       "...' at byte ", "kMaxUriBytes"});
   EXPECT_LT(error.size(), 600u);
+}
+
+TEST(GltfLoaderLimits, UrisLongerThanAPathAreRefusedBeforeParsing) {
+  // 4096 bytes (PATH_MAX): no such file, but not refused for its length; 4097: refused in the
+  // JSON text (a 40 MB one took 500 MiB through tinygltf's copies); data: URIs are not paths.
+  fs::path dir = outDir("overlong-uri");
+  writeFile(dir / "at-limit.gltf", gltfText(R"({"mesh":0})", "0", std::string(4092, 'a') + ".bin"));
+  SceneLoadResult atLimit = loadGltf(dir / "at-limit.gltf");
+  EXPECT_FALSE(atLimit);
+  EXPECT_EQ(atLimit.error.find("kMaxUriBytes"), std::string::npos) << atLimit.error;
+  writeFile(dir / "over.gltf", gltfText(R"({"mesh":0})", "0", std::string(4093, 'a') + ".bin"));
+  expectRefused(dir / "over.gltf", {"has a URI of 4097 bytes ('aaa", "...' at byte ",
+                                    "longer than any file path: refused (kMaxUriBytes 4096)"});
+  // Blanks around the colon: still the key.
+  writeFile(dir / "spaced.gltf",
+            gltfText(R"({"mesh":0})", "0", triangleDataUri(),
+                     R"(,"images":[{"uri" :  ")" + std::string(5000, 'b') + R"("}])"));
+  expectRefused(dir / "spaced.gltf", {"has a URI of 5000 bytes ('bbb"});
+  // "uri" inside a string value (escaped quotes) is not a key: the file loads.
+  writeFile(dir / "in-string.gltf",
+            gltfText(R"({"mesh":0,"name":"\"uri\":\")" + std::string(5000, 'c') + R"(\""})", "0"));
+  SceneLoadResult inString = loadGltf(dir / "in-string.gltf");
+  EXPECT_TRUE(inString) << inString.error;
+  // A data: URI is not a path: a 5000-byte one is decoded (here: not base64, so tinygltf's
+  // own error, never kMaxUriBytes).
+  writeFile(dir / "data.gltf",
+            gltfText(R"({"mesh":0})", "0",
+                     "data:application/octet-stream;base64," + std::string(5000, '!')));
+  SceneLoadResult data = loadGltf(dir / "data.gltf");
+  EXPECT_FALSE(data);
+  EXPECT_EQ(data.error.find("kMaxUriBytes"), std::string::npos) << data.error;
 }
 
 // ---- JSON nesting --------------------------------------------------------------------------

@@ -360,22 +360,10 @@ void ImageView::paintEvent(QPaintEvent*) {
     }
   }
 
-  // Readout line: the texel under the cursor, or a hint.
   // Readout of the texel under the cursor; a usage hint when the view has room for it.
-  QString readout = height() > 220 ? tr("wheel: zoom · drag: pan · double-click: fit") : QString();
-  const QRectF r = imageRect();
-  if (!image_.isNull() && hover_.x() >= 0 && r.contains(hover_)) {
-    const double u = (hover_.x() - r.left()) / r.width();
-    const double v = (r.bottom() - hover_.y()) / r.height();
-    const int tx = std::clamp(static_cast<int>(u * texelsW_), 0, texelsW_ - 1);
-    const int ty = std::clamp(static_cast<int>(v * texelsH_), 0, texelsH_ - 1);
-    readout = QStringLiteral("texel (%1, %2)  uv (%3, %4)")
-                  .arg(tx)
-                  .arg(ty)
-                  .arg(u, 0, 'f', 3)
-                  .arg(v, 0, 'f', 3);
-    if (reader_) readout += QStringLiteral("  ") + reader_(tx, ty);
-  }
+  QString readout = hoverText();
+  if (readout.isEmpty() && height() > 220)
+    readout = tr("wheel: zoom · drag: pan · double-click: fit");
   p.setPen(pal.color(QPalette::PlaceholderText));
   p.drawText(QRect(kMargin, height() - line - kMargin / 2, width() - 2 * kMargin, line),
              Qt::AlignLeft | Qt::AlignVCenter,
@@ -386,6 +374,22 @@ void ImageView::paintEvent(QPaintEvent*) {
     p.setBrush(Qt::NoBrush);
     p.drawRect(QRectF(rect()).adjusted(1.5, 1.5, -1.5, -1.5));
   }
+}
+
+QString ImageView::hoverText() const {
+  const QRectF r = imageRect();
+  if (image_.isNull() || hover_.x() < 0 || !r.contains(hover_)) return {};
+  const double u = (hover_.x() - r.left()) / r.width();
+  const double v = (r.bottom() - hover_.y()) / r.height();
+  const int tx = std::clamp(static_cast<int>(u * texelsW_), 0, texelsW_ - 1);
+  const int ty = std::clamp(static_cast<int>(v * texelsH_), 0, texelsH_ - 1);
+  QString text = QStringLiteral("texel (%1, %2)  uv (%3, %4)")
+                     .arg(tx)
+                     .arg(ty)
+                     .arg(u, 0, 'f', 3)
+                     .arg(v, 0, 'f', 3);
+  if (reader_) text += QStringLiteral("  ") + reader_(tx, ty);
+  return text;
 }
 
 void ImageView::wheelEvent(QWheelEvent* event) {

@@ -89,6 +89,9 @@ class ImageView : public QWidget {
 
   /// Text for the texel under the cursor (x right, y up from the bottom row).
   void setValueReader(std::function<QString(int x, int y)> reader);
+  /// The readout line for the texel under the cursor ("texel (x, y)  uv (u, v)" and the value
+  /// reader's text), empty when the cursor is not over the image.
+  QString hoverText() const;
   /// Colour legend on the right: `range` through `map`, `unit` under it. An empty unit
   /// and a default range with `show` false hides it.
   void setLegend(const ValueRange& range, ColorMap map, const QString& title, bool show = true);

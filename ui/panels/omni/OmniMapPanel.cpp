@@ -156,6 +156,9 @@ void OmniMapPanel::redraw() {
   const ColorMap map = density ? ColorMap::Viridis : ColorMap::Grey;
   view_->setImage(colorize(shown, 0, range, map), shown.width, shown.height);
   view_->setLegend(range, map, density ? tr("log2 texels/sr") : QString(), density);
+  drawn_[QStringLiteral("density_shown")] = density;
+  drawn_[QStringLiteral("scale_min")] = double(range.lo);
+  drawn_[QStringLiteral("scale_max")] = double(range.hi);
   auto depth = depth_, log2d = density_log2_;
   view_->setValueReader([depth, log2d](int x, int y) {
     const size_t at = size_t(y) * size_t(depth->width) + size_t(x);

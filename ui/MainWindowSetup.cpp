@@ -22,6 +22,7 @@
 #include "SplitSideParams.h"
 #include "SessionFiles.h"
 #include "TeachingBar.h"
+#include "Theme.h"
 #include "ViewportWidget.h"
 #include "panels/common/ChartsPanel.h"
 #include "panels/common/LessonPanel.h"
@@ -166,9 +167,22 @@ void MainWindow::createActions() {
                            .arg(QCoreApplication::applicationVersion()));
   });
 
-  commandActions_ = {open,      reload,  screenshot,        saveAll,       quit,
-                     resetView, error,   continuousAction_, resetTemporal, cycleOverlay,
-                     split,     outside, defaultLayout,     shortcuts,     presenter_->action()};
+  commandActions_ = {open,
+                     reload,
+                     screenshot,
+                     saveAll,
+                     quit,
+                     resetView,
+                     error,
+                     continuousAction_,
+                     resetTemporal,
+                     cycleOverlay,
+                     split,
+                     outside,
+                     defaultLayout,
+                     shortcuts,
+                     presenter_->action(),
+                     presenter_->fullPanelAction()};
   // Shortcuts work wherever the focus is (also while the viewport has it).
   for (QAction* a : commandActions_) a->setShortcutContext(Qt::ApplicationShortcut);
   // Frame stepping keys: plain keys, so only while the main window has the focus (typing
@@ -273,6 +287,9 @@ void MainWindow::createDocks() {
   timingDock_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
   commandActions_ << paramDock_->toggleViewAction() << timingDock_->toggleViewAction();
   createPanelDocks();
+  // Dock titles at the body size: Qt draws them in the platform's smaller title font unless
+  // the dock has a font of its own, and presenter mode would not scale that one.
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) followBodyFont(dock, 1.0);
 }
 
 void MainWindow::createStatusBar() {

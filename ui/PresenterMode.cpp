@@ -10,6 +10,8 @@
 #include <QLayout>
 #include <QMenu>
 #include <QScreen>
+#include <QStatusBar>
+#include <QToolBar>
 
 #include "MainWindow.h"
 #include "Theme.h"
@@ -25,16 +27,32 @@ constexpr int kStateVersion = 0x5e55;  ///< saveState/restoreState tag of the sa
 PresenterMode::PresenterMode(MainWindow& window) : QObject(&window), w_(window) {}
 
 void PresenterMode::createActions(QMenu* view) {
-  action_ = view->addAction(tr("&Presenter mode (large fonts, high contrast, one big panel)"));
-  action_->setObjectName(QStringLiteral("presenterAction"));
-  action_->setCheckable(true);
-  action_->setShortcut(Qt::Key_F11);
-  action_->setShortcutContext(Qt::ApplicationShortcut);
-  action_->setToolTip(
+  // A checkable action of the View menu, also the window's own: the full panel hides the
+  // menu's tool bars, the window keeps the shortcut.
+  auto toggle = [&](const QString& text, const char* name, Qt::Key key, const QString& tip,
+                    void (PresenterMode::*slot)(bool)) {
+    QAction* a = view->addAction(text);
+    a->setObjectName(QString::fromLatin1(name));
+    a->setCheckable(true);
+    a->setShortcut(key);
+    a->setShortcutContext(Qt::ApplicationShortcut);
+    a->setToolTip(tip);
+    connect(a, &QAction::toggled, this, slot);
+    w_.addAction(a);
+    return a;
+  };
+  action_ = toggle(
+      tr("&Presenter mode (large fonts, high contrast, one big panel)"), "presenterAction",
+      Qt::Key_F11,
       tr("For a projector: fonts scaled to the screen, white on black, the window filling the "
          "screen, one panel beside the view as large as it fits, a ring around the pointer "
-         "(F11)"));
-  connect(action_, &QAction::toggled, this, &PresenterMode::setActive);
+         "(F11)"),
+      &PresenterMode::setActive);
+  fullPanelAction_ =
+      toggle(tr("Big panel &full screen (presenter mode)"), "fullPanelAction", Qt::Key_F12,
+             tr("Presenter mode's big panel over the whole screen, the view hidden; again to bring "
+                "the view back beside it (F12)"),
+             &PresenterMode::setFullPanel);
   panelMenu_ = view->addMenu(tr("Presenter &panel"));
   panelMenu_->setObjectName(QStringLiteral("presenterPanelMenu"));
   connect(panelMenu_, &QMenu::aboutToShow, this, [this] {
@@ -99,6 +117,7 @@ void PresenterMode::setActive(bool on) {
     fitScreen();
     w_.viewport_->setPointerHighlight(true);
   } else {
+    setFullPanel(false);
     active_ = false;
     w_.viewport_->setPointerHighlight(false);
     if (app) {
@@ -117,6 +136,33 @@ void PresenterMode::setActive(bool on) {
   w_.viewport_->update();
 }
 
+void PresenterMode::setFullPanel(bool on) {
+  if (on && !active_) setActive(true);
+  if (on == fullPanel_) {
+    if (fullPanelAction_ && fullPanelAction_->isChecked() != on) fullPanelAction_->setChecked(on);
+    return;
+  }
+  fullPanel_ = on;
+  if (on) {
+    // The view, the tool bars and the status line go; the big panel takes the window (a
+    // main window without a visible central widget gives its dock areas all the room).
+    hiddenForPanel_.clear();
+    for (QToolBar* bar : w_.findChildren<QToolBar*>(Qt::FindDirectChildrenOnly))
+      if (bar->isVisible()) hiddenForPanel_.push_back(bar);
+    if (w_.statusBar()->isVisible()) hiddenForPanel_.push_back(w_.statusBar());
+    for (QWidget* widget : hiddenForPanel_) widget->hide();
+    w_.viewport_->hide();
+  } else {
+    w_.viewport_->show();
+    for (QWidget* widget : hiddenForPanel_)
+      if (widget) widget->show();
+    hiddenForPanel_.clear();
+  }
+  arrangeDocks();
+  if (fullPanelAction_ && fullPanelAction_->isChecked() != on) fullPanelAction_->setChecked(on);
+  w_.viewport_->update();
+}
+
 void PresenterMode::arrangeDocks() {
   big_ = pickBigDock();
   // Everything but the big panel hidden; the Lesson and Parameters tabbed behind it (a
@@ -129,7 +175,7 @@ void PresenterMode::arrangeDocks() {
   w_.addDockWidget(Qt::RightDockWidgetArea, big_);
   big_->show();
   for (QDockWidget* behind : {w_.lessonDock_, w_.paramDock_}) {
-    if (!behind || behind == big_) continue;
+    if (!behind || behind == big_ || fullPanel_) continue;
     w_.addDockWidget(Qt::RightDockWidgetArea, behind);
     w_.tabifyDockWidget(big_, behind);
     behind->show();
@@ -149,7 +195,9 @@ void PresenterMode::fitScreen() {
 }
 
 void PresenterMode::sizeBigDock() {
-  if (big_) w_.resizeDocks({big_}, {int(w_.width() * kPanelShare)}, Qt::Horizontal);
+  if (!big_) return;
+  const double share = fullPanel_ ? 1.0 : kPanelShare;
+  w_.resizeDocks({big_}, {int(w_.width() * share)}, Qt::Horizontal);
 }
 
 }  // namespace sl::ui

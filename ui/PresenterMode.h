@@ -4,10 +4,15 @@
 // picked in View > Presenter panel, else the first visible panel that shows the technique's
 // data; the Lesson and Parameters tabbed behind it, every other dock hidden), a ring
 // following the pointer over the view. Leaving it restores font, theme, docks and geometry.
+// The big panel full screen (F12, View > Big panel full screen; presenter mode turns on with
+// it): the view, the tool bars, the status line and the panels tabbed behind are hidden and
+// the panel fills the window under the menu bar; F12 again brings the view back beside it.
+// Explicit fonts follow the body size through Theme.h's bodyRelativeFont / followBodyFont.
 #pragma once
 
 #include <QByteArray>
 #include <QFont>
+#include <QList>
 #include <QObject>
 #include <QPointer>
 #include <QString>
@@ -15,6 +20,7 @@
 class QAction;
 class QDockWidget;
 class QMenu;
+class QWidget;
 
 namespace sl::ui {
 
@@ -29,12 +35,17 @@ class PresenterMode : public QObject {
   /// Adds "Presenter mode" (F11) and the "Presenter panel" choice to `view`.
   void createActions(QMenu* view);
   QAction* action() const { return action_; }
+  QAction* fullPanelAction() const { return fullPanelAction_; }
 
   bool active() const { return active_; }
   void setActive(bool on);
 
   /// The big panel's dock while active (null otherwise or when no panel applies).
   QDockWidget* bigDock() const;
+  /// The big panel full screen (the view hidden); turning it on turns presenter mode on,
+  /// leaving presenter mode turns it off.
+  void setFullPanel(bool on);
+  bool fullPanel() const { return fullPanel_; }
   /// The user's choice of big panel (by dock object name; empty: automatic).
   void choosePanel(const QString& dockName);
   /// A lesson's or session's layout was applied: its large panel (dock object name; empty:
@@ -52,6 +63,9 @@ class PresenterMode : public QObject {
 
   MainWindow& w_;
   QAction* action_ = nullptr;
+  QAction* fullPanelAction_ = nullptr;
+  bool fullPanel_ = false;
+  QList<QWidget*> hiddenForPanel_;  ///< tool bars and status line the full panel hid
   QMenu* panelMenu_ = nullptr;
   bool active_ = false;
   QString chosen_;       ///< View > Presenter panel (dock object name), empty: automatic

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include <QObject>
+#include <QRect>
+#include <QSize>
 #include <QString>
 
 #include "core/Preset.h"
@@ -90,8 +92,12 @@ class SelfTests : public QObject {
   /// presenter[=DIR] (SelfTestsPresenter.cpp): presenter mode at the screen's size: the
   /// window fits, body text >= 22 px x min(w / 1920, h / 1080), one panel with an image >=
   /// 35 % of the screen's height, the changed overlay's vivid pixels = the renderer's count,
-  /// pointer ring, zoom inset (nearest neighbour), ticks; PNGs into DIR.
+  /// pointer ring, zoom inset (nearest neighbour), ticks; every dock's fonts (widgets, dock
+  /// titles, Qt Charts items) >= 80 % of the body size and the Timing panel's pass names
+  /// drawn whole with it the big panel; the big panel full screen (F12) and back; PNGs into DIR.
   bool presenter(const QString& dir);
+  void checkPresenterFonts(const QString& dir, const QSize& screen);
+  void checkFullPanel(const QString& dir, const QRect& screen);
   /// split-params[=DIR] (SelfTestsPresenter.cpp): the compare side's own parameter panel
   /// (a resolution edit changes its memory, not the main side's) and "equal memory".
   bool splitParams(const QString& dir);

@@ -12,6 +12,7 @@
 
 #include "MainWindow.h"
 #include "SelfTests.h"
+#include "TeachingBar.h"
 #include "ViewportWidget.h"
 
 namespace sl::ui {
@@ -122,6 +123,63 @@ bool SelfTests::liveError(const QString& dir) {
   check(newSceneMs >= 0, tr("the new scene's live error after %1 ms: \"%2\"")
                              .arg(newSceneMs)
                              .arg(w_.errorLabel_->text()));
+
+  // The split view's right half (uniform at 512, the left at its own resolution): its own
+  // live error within the time limit, its age in its caption, equal to the synchronous
+  // error of the same still frame; a camera move makes it stale, then fresh again.
+  w_.teaching_->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
+  auto waitSplitFresh = [&]() -> qint64 {
+    QElapsedTimer splitClock;
+    splitClock.start();
+    while (splitClock.elapsed() < kFreshWithinMs) {
+      QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+      const auto l = view->splitLiveError(), m = view->liveError();
+      if (l && !l->age.stale && m && !m->age.stale) return splitClock.elapsed();
+    }
+    return -1;
+  };
+  const qint64 splitMs = waitSplitFresh();
+  check(splitMs >= 0 && view->splitLiveReference() && view->splitLiveReference()->finished() >= 1,
+        tr("split view: the right half's live error after %1 ms (%2 traces on its worker)")
+            .arg(splitMs)
+            .arg(qulonglong(view->splitLiveReference() ? view->splitLiveReference()->finished()
+                                                       : 0)));
+  std::printf("measure split_live_error_first_ms=%lld\n", static_cast<long long>(splitMs));
+  w_.waitForFrames(1);  // the captions follow the frame that took it
+  const auto splitLive = view->splitLiveError();
+  const auto mainLive = view->liveError();
+  const QString rightCaption = view->splitCaption(true), leftCaption = view->splitCaption(false);
+  check(splitLive && rightCaption.contains(QStringLiteral("error ")) &&
+            rightCaption.contains(QStringLiteral(" s old")) &&
+            leftCaption.contains(QStringLiteral(" s old")),
+        tr("the captions say each half's error and its reference's age: \"%1\" | \"%2\"")
+            .arg(leftCaption, rightCaption));
+  const double splitAsync = splitLive ? splitLive->errorPct : -1.0;
+  w_.continuousAction_->trigger();  // off: the frame stays
+  w_.waitForFrames(1);
+  (void)view->computeErrorNow();  // both halves, synchronously
+  const auto splitSync = view->splitErrorPct();
+  check(splitSync && *splitSync == splitAsync && mainLive && splitAsync != mainLive->errorPct,
+        tr("right half: synchronous %1 %, live %2 % (left %3 %)")
+            .arg(splitSync.value_or(-1), 0, 'f', 4)
+            .arg(splitAsync, 0, 'f', 4)
+            .arg(mainLive ? mainLive->errorPct : -1.0, 0, 'f', 4));
+  w_.continuousAction_->trigger();  // on again: traced afresh (F6 off forgot the traces)
+  check(waitSplitFresh() >= 0, tr("the right half live again after F6 off and on"));
+  cam = view->camera();
+  cam.orbit(15.0f, 0.0f);
+  view->setCamera(cam);
+  w_.waitForFrames(1);
+  const auto splitMoved = view->splitLiveError();
+  check(splitMoved && splitMoved->age.stale &&
+            view->splitCaption(true).contains(QStringLiteral("earlier view")),
+        tr("after a camera move the right half's reference is an earlier view's: \"%1\"")
+            .arg(view->splitCaption(true)));
+  const qint64 splitAgainMs = waitSplitFresh();
+  check(splitAgainMs >= 0, tr("the right half fresh again %1 ms after the move").arg(splitAgainMs));
+  if (!dir.isEmpty())
+    view->grabView().save(QDir(dir).filePath(QStringLiteral("live-error-split.png")));
+  w_.teaching_->setSplitTechnique(QString());
 
   // Leave with a trace running: the window closes (worker cancelled and joined), exit 0.
   cam = view->camera();

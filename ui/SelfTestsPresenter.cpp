@@ -17,9 +17,14 @@
 #include <QFontInfo>
 #include <QLabel>
 #include <QLocale>
+#include <QMenuBar>
 #include <QMouseEvent>
 #include <QScreen>
 #include <QSpinBox>
+#include <QtCharts/QAbstractAxis>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+#include <QtCharts/QLegend>
 
 #include "MainWindow.h"
 #include "PresenterMode.h"
@@ -31,6 +36,7 @@
 #include "common/shared_constants.h"
 #include "panels/common/PanelKit.h"
 #include "panels/common/ParamPanel.h"
+#include "panels/common/TimingPanel.h"
 
 namespace sl::ui {
 
@@ -47,6 +53,31 @@ void sendMouse(QWidget* target, QEvent::Type type, const QPoint& at, Qt::MouseBu
                Qt::MouseButtons buttons, Qt::KeyboardModifiers mods) {
   QMouseEvent e(type, QPointF(at), target->mapToGlobal(QPointF(at)), button, buttons, mods);
   QCoreApplication::sendEvent(target, &e);
+}
+
+/// The largest shown image of `dock`'s image views: its shorter side (widget pixels), and
+/// how much of its view it fills in the dimension that limits it (0..1).
+struct ShownImage {
+  double side = 0.0, fill = 0.0;
+};
+ShownImage largestImage(QDockWidget* dock) {
+  ShownImage out;
+  if (!dock) return out;
+  for (ImageView* iv : dock->findChildren<ImageView*>())
+    if (iv->isVisible() && iv->hasImage()) {
+      const QRectF r = iv->shownImageRect();
+      out.side = std::max(out.side, std::min(r.width(), r.height()));
+      out.fill = std::max(out.fill, std::max(r.width() / iv->width(), r.height() / iv->height()));
+    }
+  return out;
+}
+
+/// The docks shown and not covered (a tabbed dock behind another is not).
+int docksInView(const QMainWindow& window) {
+  int n = 0;
+  for (QDockWidget* d : window.findChildren<QDockWidget*>())
+    if (d->isVisible() && !d->visibleRegion().isEmpty()) ++n;
+  return n;
 }
 
 }  // namespace
@@ -103,20 +134,12 @@ bool SelfTests::presenter(const QString& dir) {
 
   // 3. One big panel beside the view, its image as large as the space allows.
   QDockWidget* big = w_.presenter_->bigDock();
-  int visibleDocks = 0;
-  for (QDockWidget* d : w_.findChildren<QDockWidget*>())
-    if (d->isVisible() && !d->visibleRegion().isEmpty()) ++visibleDocks;
+  const int visibleDocks = docksInView(w_);
   check(big && big->isVisible() && visibleDocks == 1,
         tr("one panel shown: %1 (%2 dock(s) in view)")
             .arg(big ? big->windowTitle() : QStringLiteral("none"))
             .arg(visibleDocks));
-  double imageSide = 0.0;
-  if (big)
-    for (ImageView* iv : big->findChildren<ImageView*>())
-      if (iv->isVisible() && iv->hasImage()) {
-        const QRectF r = iv->shownImageRect();
-        imageSide = std::max(imageSide, std::min(r.width(), r.height()));
-      }
+  const double imageSide = largestImage(big).side;
   const double wantedSide = 0.35 * sr.height();
   check(imageSide >= wantedSide, tr("the big panel's image is %1 px square (>= 35 % of the "
                                     "screen's height, %2 px)")
@@ -234,13 +257,149 @@ bool SelfTests::presenter(const QString& dir) {
     check(saved, tr("saved %1.png and %1-view.png into %2").arg(name, dir));
   }
 
-  // 8. Off again: the normal font and theme come back.
+  // 8. Every font in the docks follows the presenter's scale, the Timing panel big: its
+  // pass names whole.
+  checkPresenterFonts(dir, sr.size());
+  // 9. The big panel full screen (F12) and back.
+  checkFullPanel(dir, sr);
+
+  // 10. Off again (from the full panel): the view, the normal font and theme come back.
+  w_.presenter_->fullPanelAction()->trigger();
+  QCoreApplication::processEvents();
   w_.presenter_->action()->trigger();
   QCoreApplication::processEvents();
-  check(!w_.presenter_->active() && QFontInfo(QApplication::font()).pixelSize() < appPx,
-        tr("presenter mode off: body text back to %1 px")
+  check(!w_.presenter_->active() && !w_.presenter_->fullPanel() && w_.viewport_->isVisible() &&
+            QFontInfo(QApplication::font()).pixelSize() < appPx,
+        tr("presenter mode off (from the full panel): view shown, body text back to %1 px")
             .arg(QFontInfo(QApplication::font()).pixelSize()));
   return true;
+}
+
+void SelfTests::checkPresenterFonts(const QString& dir, const QSize& screen) {
+  w_.presenter_->choosePanel(w_.timingDock_->objectName());
+  for (int i = 0; i < 10; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+  w_.stepFrame();  // paused since the changed overlay's check: one frame for the Timing panel
+  w_.waitForFrames(1);
+  for (int i = 0; i < 5; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+  // Every widget of every dock (shown or not: a dock shown later keeps its font), the docks'
+  // own titles, and the Qt Charts items: at least kMinShare of the body size.
+  constexpr double kMinShare = 0.8;
+  const int body = bodyPixelSize();
+  const int least = int(std::floor(body * kMinShare));
+  int walked = 0, small = 0, smallest = body;
+  QString smallestName;
+  QStringList smallNames;
+  auto visit = [&](const QFont& font, const QString& name) {
+    const int px = QFontInfo(font).pixelSize();
+    ++walked;
+    if (px < smallest) smallest = px, smallestName = name;
+    if (px < least) {
+      ++small;
+      if (smallNames.size() < 12) smallNames << QStringLiteral("%1 (%2 px)").arg(name).arg(px);
+    }
+  };
+  for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) {
+    visit(dock->font(), dock->windowTitle());
+    for (QWidget* widget : dock->findChildren<QWidget*>())
+      visit(widget->font(),
+            dock->windowTitle() + QStringLiteral(" / ") + widget->metaObject()->className());
+    for (QChartView* view : dock->findChildren<QChartView*>()) {
+      const QChart* chart = view->chart();
+      if (!chart) continue;
+      const QString at = dock->windowTitle() + QStringLiteral(" / chart ");
+      visit(chart->titleFont(), at + QStringLiteral("title"));
+      visit(chart->legend()->font(), at + QStringLiteral("legend"));
+      for (const QAbstractAxis* axis : chart->axes()) {
+        visit(axis->labelsFont(), at + QStringLiteral("axis labels"));
+        visit(axis->titleFont(), at + QStringLiteral("axis title"));
+      }
+    }
+  }
+  check(walked > 100 && small == 0,
+        tr("fonts in the docks: %1 walked, %2 below %3 px (%4 % of the %5 px body); smallest "
+           "%6 px (%7)%8")
+            .arg(walked)
+            .arg(small)
+            .arg(least)
+            .arg(kMinShare * 100.0, 0, 'f', 0)
+            .arg(body)
+            .arg(smallest)
+            .arg(smallestName)
+            .arg(smallNames.isEmpty()
+                     ? QString()
+                     : QStringLiteral(": ") + smallNames.join(QStringLiteral(", "))));
+  // The big dock's title bar (drawn by Qt in the dock's font) is as tall as a body line.
+  const int titleH = w_.timingDock_->widget()->y();
+  check(titleH >= body,
+        tr("the big dock's title bar is %1 px tall (>= the %2 px body)").arg(titleH).arg(body));
+  const TimingPanel* timing = w_.timingPanel_;
+  const QStringList names = timing->passNames(), shown = timing->shownPassNames();
+  check(w_.presenter_->bigDock() == w_.timingDock_ && !names.isEmpty() && shown == names,
+        tr("the Timing panel big, %1 pass names drawn whole (%2 wide, boxes %3): %4")
+            .arg(names.size())
+            .arg(timing->width())
+            .arg(timing->stacked() ? QStringLiteral("one above the other")
+                                   : QStringLiteral("side by side"))
+            .arg(shown.join(QStringLiteral(", "))));
+  if (!dir.isEmpty())
+    check(
+        w_.grab().save(QDir(dir).filePath(
+            QStringLiteral("presenter-%1x%2-timing.png").arg(screen.width()).arg(screen.height()))),
+        tr("saved the Timing panel's grab"));
+  w_.presenter_->choosePanel(QString());  // automatic again
+  for (int i = 0; i < 5; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+}
+
+void SelfTests::checkFullPanel(const QString& dir, const QRect& screen) {
+  auto settle = [] {
+    for (int i = 0; i < 10; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+  };
+  const double besideSide = largestImage(w_.presenter_->bigDock()).side;
+  w_.presenter_->fullPanelAction()->trigger();  // what F12 does
+  settle();
+  QDockWidget* big = w_.presenter_->bigDock();
+  const QRect frame = w_.frameGeometry();
+  const QRect dockRect = big ? QRect(big->mapTo(&w_, QPoint(0, 0)), big->size()) : QRect();
+  const int below = w_.menuBar()->isVisible() ? w_.menuBar()->height() : 0;
+  const int visibleDocks = docksInView(w_);
+  check(w_.presenter_->fullPanel() && !w_.viewport_->isVisible() && big && visibleDocks == 1 &&
+            screen.contains(frame) && dockRect.width() >= w_.width() * 97 / 100 &&
+            dockRect.height() >= (w_.height() - below) * 97 / 100,
+        tr("full panel: %1 is %2x%3 of the %4x%5 window (menu bar %6 px), the view hidden, "
+           "%7 dock(s) in view")
+            .arg(big ? big->windowTitle() : QStringLiteral("none"))
+            .arg(dockRect.width())
+            .arg(dockRect.height())
+            .arg(w_.width())
+            .arg(w_.height())
+            .arg(below)
+            .arg(visibleDocks));
+  // Its image as large as the space allows: larger than beside the view, and filling the
+  // image view in the dimension that limits it.
+  const auto [side, fill] = largestImage(big);
+  check(side >= 0.6 * screen.height() && side > besideSide && fill >= 0.85,
+        tr("full panel's image %1 px square (beside the view %2 px; >= 60 % of the screen's "
+           "height, %3 px), filling %4 % of its view's limiting side")
+            .arg(side, 0, 'f', 0)
+            .arg(besideSide, 0, 'f', 0)
+            .arg(0.6 * screen.height(), 0, 'f', 0)
+            .arg(fill * 100.0, 0, 'f', 0));
+  if (!dir.isEmpty())
+    check(w_.grab().save(QDir(dir).filePath(QStringLiteral("presenter-%1x%2-fullpanel.png")
+                                                .arg(screen.width())
+                                                .arg(screen.height()))),
+          tr("saved the full panel's grab"));
+  // F12 again: the view back beside the panel, rendering.
+  w_.presenter_->fullPanelAction()->trigger();
+  settle();
+  w_.stepFrame();  // paused: one frame
+  const bool rendered = w_.waitForFrames(1);
+  check(!w_.presenter_->fullPanel() && w_.viewport_->isVisible() && rendered &&
+            w_.presenter_->bigDock() && w_.presenter_->bigDock()->width() < w_.width() * 3 / 4,
+        tr("full panel off: the view is back (%1x%2) and renders, the panel %3 px wide")
+            .arg(w_.viewport_->width())
+            .arg(w_.viewport_->height())
+            .arg(w_.presenter_->bigDock() ? w_.presenter_->bigDock()->width() : 0));
 }
 
 bool SelfTests::splitParams(const QString& dir) {

@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 
 #include "MainWindow.h"
+#include "Theme.h"
 #include "ViewportWidget.h"
 #include "core/Renderer.h"
 #include "panels/common/ParamPanel.h"
@@ -36,9 +37,7 @@ QWidget* SplitSideParams::createDockWidget(ParamPanel* mainPanel) {
   layout->setContentsMargins(4, 4, 4, 0);
   title_ = new QLabel;
   title_->setWordWrap(true);
-  QFont bold = title_->font();
-  bold.setBold(true);
-  title_->setFont(bold);
+  followBodyFont(title_, 1.0, true);
   layout->addWidget(title_);
   equalMemory_ =
       new QCheckBox(tr("Equal memory (the right half's resolution spends the left "

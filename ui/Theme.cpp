@@ -3,8 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <QApplication>
+#include <QEvent>
+#include <QFontInfo>
+#include <QWidget>
+#include <QtCharts/QAbstractAxis>
+#include <QtCharts/QChart>
+#include <QtCharts/QLegend>
 #include <QFont>
 #include <QSize>
 #include <QPalette>
@@ -80,6 +87,83 @@ void applyPresenterTheme(QApplication& app, int bodyPixelSize, double logicalDpi
   QFont font = app.font();
   font.setPointSizeF(bodyPixelSize * 72.0 / std::max(logicalDpi, 1.0));
   app.setFont(font);
+}
+
+namespace {
+/// The functions followBodyFont registered, run when the application font changes: one filter
+/// on the application sees the ApplicationFontChange Qt sends to the top-level widgets (a
+/// child with a font of its own set gets no event of its own), once per new font.
+class BodyFontFollowers : public QObject {
+ public:
+  static BodyFontFollowers& instance() {
+    static auto* self = [] {
+      auto* f = new BodyFontFollowers(QCoreApplication::instance());
+      QCoreApplication::instance()->installEventFilter(f);
+      return f;
+    }();
+    return *self;
+  }
+  void add(QObject* owner, std::function<void()> apply) {
+    apply();
+    followers_.push_back({owner, std::move(apply)});
+    connect(owner, &QObject::destroyed, this, [this](QObject* gone) {
+      std::erase_if(followers_, [gone](const Follower& f) { return f.owner == gone; });
+    });
+  }
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (event->type() == QEvent::ApplicationFontChange && QApplication::font() != applied_) {
+      applied_ = QApplication::font();
+      const std::vector<Follower> now = followers_;  // an apply may add or remove one
+      for (const Follower& f : now) f.apply();
+    }
+    return QObject::eventFilter(watched, event);
+  }
+
+ private:
+  using QObject::QObject;
+  struct Follower {
+    QObject* owner;
+    std::function<void()> apply;
+  };
+  std::vector<Follower> followers_;
+  QFont applied_ = QApplication::font();
+};
+}  // namespace
+
+int bodyPixelSize() {
+  return QFontInfo(QApplication::font()).pixelSize();
+}
+
+QFont bodyRelativeFont(double relative, const QFont& base) {
+  QFont font = base;
+  font.setPixelSize(std::max(1, int(std::lround(bodyPixelSize() * relative))));
+  return font;
+}
+
+QFont bodyRelativeFont(double relative) {
+  return bodyRelativeFont(relative, QApplication::font());
+}
+
+void setChartFonts(QChart& chart) {
+  chart.setTitleFont(bodyRelativeFont(1.0));
+  const QFont small = bodyRelativeFont(kSmallText);
+  for (QAbstractAxis* a : chart.axes()) {
+    a->setTitleFont(small);
+    a->setLabelsFont(small);
+  }
+  chart.legend()->setFont(small);
+}
+
+void followBodyFont(QWidget* owner, std::function<void()> apply) {
+  BodyFontFollowers::instance().add(owner, std::move(apply));
+}
+
+void followBodyFont(QWidget* widget, double relative, bool bold) {
+  followBodyFont(widget, [widget, relative, bold] {
+    QFont font = bodyRelativeFont(relative);
+    font.setBold(bold);
+    widget->setFont(font);
+  });
 }
 
 }  // namespace sl::ui

@@ -55,13 +55,16 @@ int enumIndexOf(const sl::ParamSet& params, const char* key, const char* name) {
   return -1;
 }
 
+/// "name · error 0.420 % · [note ·] 3.1 ms": the error first (a narrow half elides the end),
+/// `errorNote` (the live reference's age) right after it.
 QString captionFor(const std::string& techniqueId, const sl::FrameStats& stats,
-                   std::optional<double> errorPct) {
+                   std::optional<double> errorPct, const QString& errorNote = {}) {
   const sl::TechniqueInfo* info = sl::Renderer::findTechnique(techniqueId);
   QString s = info ? QString::fromStdString(info->name) : QString::fromStdString(techniqueId);
-  s += QStringLiteral("  \u00b7  %1 ms").arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1);
   s += errorPct ? QStringLiteral("  \u00b7  error %1 %").arg(*errorPct, 0, 'f', 3)
                 : QStringLiteral("  \u00b7  error \u2014");
+  if (!errorNote.isEmpty()) s += QStringLiteral("  \u00b7  ") + errorNote;
+  s += QStringLiteral("  \u00b7  %1 ms").arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1);
   return s;
 }
 }  // namespace
@@ -329,6 +332,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
 
 ViewportWidget::~ViewportWidget() {
   liveReference_.reset();  // cancels a running trace and joins the worker
+  splitLiveReference_.reset();
   destroyRenderer();
 }
 
@@ -367,8 +371,7 @@ void ViewportWidget::applyStateToRenderer() {
 }
 
 void ViewportWidget::destroyRenderer() {
-  if (liveReference_) liveReference_->cancel();  // its result would be of a renderer gone
-  liveLatest_.reset();
+  cancelLiveReferences();  // their results would be of a renderer gone
   if (!renderer_) return;
   Q_EMIT rendererAboutToBeDestroyed();
   makeCurrent();
@@ -640,10 +643,18 @@ void ViewportWidget::updateOverlayWidget() {
   const bool split = !splitTechniqueId_.empty() && splitRenderer_;
   overlay_->split = split ? splitImage_ : QImage();
   if (split) {
-    overlay_->leftCaption = captionFor(renderer_->techniqueId(), renderer_->stats(),
-                                       errorIsCurrent() ? mainErrorPct_ : std::nullopt);
-    overlay_->rightCaption = captionFor(splitTechniqueId_, splitRenderer_->stats(),
-                                        errorIsCurrent() ? splitErrorPct_ : std::nullopt);
+    // Continuous rendering: each half's live error (its own reference) and how old it is.
+    auto caption = [this](const std::string& id, const sl::FrameStats& stats,
+                          std::optional<double> exact, const std::optional<LiveError>& live) {
+      if (!continuous_) return captionFor(id, stats, errorIsCurrent() ? exact : std::nullopt);
+      return captionFor(id, stats, live ? std::optional(live->errorPct) : std::nullopt,
+                        live ? QString::fromStdString(sl::describeReferenceAge(live->age))
+                             : tr("tracing the reference\u2026"));
+    };
+    overlay_->leftCaption =
+        caption(renderer_->techniqueId(), renderer_->stats(), mainErrorPct_, liveError());
+    overlay_->rightCaption =
+        caption(splitTechniqueId_, splitRenderer_->stats(), splitErrorPct_, splitLiveError());
   }
   overlay_->legend = ViewOverlay::Legend::None;
   if (renderer_ && renderer_->rendererParams().has("view.overlay")) {
@@ -763,6 +774,8 @@ std::optional<std::string> ViewportWidget::setSplitTechnique(
   splitParams_ = info ? params : std::map<std::string, std::string>{};
   splitParamsPending_ = true;
   splitErrorPct_.reset();
+  if (splitLiveReference_) splitLiveReference_->cancel();  // of the previous right half
+  splitLiveLatest_.reset();
   markViewChanged();
   if (paused_) ++pendingSteps_;
   update();
@@ -861,8 +874,7 @@ void ViewportWidget::resizeGL(int, int) {
 
 void ViewportWidget::setScene(std::shared_ptr<const sl::Scene> scene) {
   scene_ = std::move(scene);
-  if (liveReference_) liveReference_->cancel();  // a trace of the old scene is never shown
-  liveLatest_.reset();
+  cancelLiveReferences();  // a trace of the old scene is never shown
   if (scene_ && scene_->light) light_ = *scene_->light;
   Q_EMIT lightChanged();
   if (renderer_) {
@@ -1034,13 +1046,13 @@ void ViewportWidget::setContinuous(bool on) {
   continuous_ = on;
   if (on) {
     errorTimer_.stop();
-    if (!liveReference_)
-      liveReference_ = std::make_unique<sl::AsyncReference>(kLiveReferenceMinIntervalS,
-                                                            kLiveReferenceDurationFactor);
+    for (auto* worker : {&liveReference_, &splitLiveReference_})
+      if (!*worker)
+        *worker = std::make_unique<sl::AsyncReference>(kLiveReferenceMinIntervalS,
+                                                       kLiveReferenceDurationFactor);
     update();
   } else {
-    if (liveReference_) liveReference_->cancel();
-    liveLatest_.reset();
+    cancelLiveReferences();
     if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);
   }
   updateOverlayWidget();
@@ -1067,14 +1079,61 @@ void ViewportWidget::updateLiveReference() {
       Q_EMIT errorComputed(*mainErrorPct_);
     }
   }
+  updateSplitLiveReference();
   if (!liveReference_->wantsTrace(viewRevision_)) return;
-  // The snapshot is read here (GL); the worker traces CPU copies only.
+  if (auto job = referenceJob(*renderer_, viewRevision_, framesRendered_))
+    liveReference_->submit(std::move(*job));
+}
+
+void ViewportWidget::cancelLiveReferences() {
+  for (sl::AsyncReference* worker : {liveReference_.get(), splitLiveReference_.get()})
+    if (worker) worker->cancel();
+  liveLatest_.reset();
+  splitLiveLatest_.reset();
+}
+
+// GL current (paintGL, after both halves rendered).
+void ViewportWidget::updateSplitLiveReference() {
+  const bool split = !splitTechniqueId_.empty() && splitRenderer_ &&
+                     splitRenderer_->techniqueId() == splitTechniqueId_ && !splitImage_.isNull();
+  if (!splitLiveReference_ || !split) return;
+  if (auto failure = splitLiveReference_->takeFailure())
+    Q_EMIT renderProblem(QStringLiteral("split view: reference trace failed: %1")
+                             .arg(QString::fromStdString(*failure)));
+  if (auto done = splitLiveReference_->takeFinished()) {
+    done->trace.referenceMask = {};  // the error overlay is the left half's only
+    splitLiveLatest_ = std::move(done);
+    if (splitLiveLatest_->viewRevision == viewRevision_)
+      splitErrorPct_ = splitLiveLatest_->trace.stats.errorPct;
+  }
+  if (!splitLiveReference_->wantsTrace(viewRevision_)) return;
+  if (auto job = referenceJob(*splitRenderer_, viewRevision_, framesRendered_))
+    splitLiveReference_->submit(std::move(*job));
+}
+
+std::optional<ViewportWidget::LiveError> ViewportWidget::splitLiveError() const {
+  if (!continuous_ || !splitLiveLatest_ || splitTechniqueId_.empty()) return std::nullopt;
+  LiveError e;
+  e.errorPct = splitLiveLatest_->trace.stats.errorPct;
+  e.age = sl::referenceAge(*splitLiveLatest_, viewRevision_, framesRendered_,
+                           sl::AsyncReference::steadySeconds());
+  return e;
+}
+
+QString ViewportWidget::splitCaption(bool right) const {
+  return right ? overlay_->rightCaption : overlay_->leftCaption;
+}
+
+// GL current: the snapshot is read here; the worker traces CPU copies only.
+std::optional<sl::ReferenceJob> ViewportWidget::referenceJob(sl::Renderer& renderer,
+                                                             std::uint64_t viewRevision,
+                                                             std::uint64_t frameNumber) {
   auto snapshot =
-      std::make_shared<sl::Renderer::ReferenceSnapshot>(renderer_->snapshotForReference());
-  if (!snapshot->reference) return;
+      std::make_shared<sl::Renderer::ReferenceSnapshot>(renderer.snapshotForReference());
+  if (!snapshot->reference) return std::nullopt;
   sl::ReferenceJob job;
-  job.viewRevision = viewRevision_;
-  job.frameNumber = framesRendered_;
+  job.viewRevision = viewRevision;
+  job.frameNumber = frameNumber;
   job.trace = [snapshot](const std::atomic<bool>& cancelled) -> std::optional<sl::ReferenceTrace> {
     const int width = snapshot->frame.width, height = snapshot->frame.height;
     std::string signature = snapshot->frameSignature;
@@ -1088,7 +1147,7 @@ void ViewportWidget::updateLiveReference() {
     t.frameSignature = std::move(signature);
     return t;
   };
-  liveReference_->submit(std::move(job));
+  return job;
 }
 
 std::optional<ViewportWidget::LiveError> ViewportWidget::liveError() const {

@@ -84,6 +84,14 @@ class ViewportWidget : public QOpenGLWidget {
   QString errorOverlayNote() const;
   /// The reference worker (null before continuous rendering was first turned on).
   const sl::AsyncReference* liveReference() const { return liveReference_.get(); }
+  /// The split view's right half in continuous rendering: its own reference, traced on its
+  /// own worker at the same lower rate (its half may be a pixel wider than the left one and
+  /// its technique's frame is its own), what it measured and how old it is; the right
+  /// caption shows it. Null / empty without a split view or continuous rendering.
+  std::optional<LiveError> splitLiveError() const;
+  const sl::AsyncReference* splitLiveReference() const { return splitLiveReference_.get(); }
+  /// The captions drawn under the two halves of the split view (empty without one).
+  QString splitCaption(bool right) const;
   /// Lower rate of the live reference: at most one trace per this many seconds of a still
   /// view, or per this factor times the last trace's duration when that is longer.
   static constexpr double kLiveReferenceMinIntervalS = 0.75;
@@ -298,7 +306,17 @@ class ViewportWidget : public QOpenGLWidget {
   sl::Light light_;
   bool continuous_ = false;
   std::unique_ptr<sl::AsyncReference> liveReference_;
-  std::optional<sl::FinishedReference> liveLatest_;  ///< its mask dropped once uploaded
+  std::optional<sl::FinishedReference> liveLatest_;         ///< its mask dropped once uploaded
+  std::unique_ptr<sl::AsyncReference> splitLiveReference_;  ///< the right half's worker
+  std::optional<sl::FinishedReference> splitLiveLatest_;
+  /// Cancels both halves' running traces and forgets their results.
+  void cancelLiveReferences();
+  /// The split half's live reference: takes a finished trace, starts the next (GL current).
+  void updateSplitLiveReference();
+  /// A trace of `renderer`'s last frame for an AsyncReference (null: nothing to trace).
+  static std::optional<sl::ReferenceJob> referenceJob(sl::Renderer& renderer,
+                                                      std::uint64_t viewRevision,
+                                                      std::uint64_t frameNumber);
   bool probeWanted_ = false;
   bool adaptiveAllowed_ = false;
   sl::AdaptiveResolution adaptive_;

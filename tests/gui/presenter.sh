@@ -4,7 +4,9 @@
 # and a lesson (its layout's large panel the big one) with --presenter at 1920x1080;
 # the self-test checks the window fits, body text >= 22 px x min(w/1920, h/1080), one big
 # panel image >= 35 % of the screen's height, the changed overlay's pixels = the renderer's
-# count, the pointer ring, the zoom inset, the ticks. PNGs in <out>/presenter.
+# count, the pointer ring, the zoom inset, the ticks; every dock's fonts (widgets, dock titles,
+# Qt Charts) >= 80 % of the body and the Timing panel's pass names whole with it big; the big
+# panel full screen (F12) and back. PNGs in <out>/presenter.
 # usage: presenter.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1

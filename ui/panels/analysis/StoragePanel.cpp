@@ -16,6 +16,7 @@
 #include <QtCharts/QChartView>
 
 #include "StorageChartKit.h"
+#include "Theme.h"
 
 namespace sl::ui {
 
@@ -123,9 +124,19 @@ class HemisphereView : public QWidget {
   QSize sizeHint() const override { return {340, 300}; }
 
  protected:
+  /// The labels' font: kSmallText x the body size (presenter mode scales it).
+  static QFont labelFont() { return bodyRelativeFont(kSmallText); }
+  /// The disk with room for its labels ("behind" on the left, "right" above, the colour
+  /// bar and its ticks on the right, two caption lines below) at the labels' size.
   QRectF diskRect() const {
-    const double side = std::max(60.0, std::min(width() - 150.0, height() - 58.0));
-    return {60.0, 22.0, side, side};
+    const QFontMetrics fm(labelFont());
+    const double left = fm.horizontalAdvance(QStringLiteral("behind")) + 10.0;
+    const double top = fm.height() + 8.0;
+    const double right = fm.horizontalAdvance(QStringLiteral("in front")) + 22.0 + 14.0 +
+                         fm.horizontalAdvance(QStringLiteral("0.000e+00"));
+    const double below = 2.0 * fm.height() + 12.0;
+    const double side = std::max(60.0, std::min(width() - left - right, height() - top - below));
+    return {left, top, side, side};
   }
   void paintEvent(QPaintEvent*) override {
     QPainter g(this);
@@ -139,18 +150,19 @@ class HemisphereView : public QWidget {
     const std::optional<StorageScale> scale = storageScale({*panel_});
     if (!scale) return;
     const QRectF disk = diskRect();
-    paintHemisphereDisk(g, disk, *panel_, *scale, 10);
+    const QFont font = labelFont();
+    const QFontMetrics fm(font);
+    paintHemisphereDisk(g, disk, *panel_, *scale, font.pixelSize());
     paintLightMark(g, diskToWidget(disk, mark_.x, mark_.y), 6.0);
-    paintStorageColorBar(g, QRect(int(disk.right()) + 58, int(disk.top()), 14, int(disk.height())),
-                         *scale, 10);
-    QFont f = g.font();
-    f.setPixelSize(11);
-    g.setFont(f);
+    const int barX = int(disk.right()) + fm.horizontalAdvance(QStringLiteral("in front")) + 12;
+    paintStorageColorBar(g, QRect(barX, int(disk.top()), 14, int(disk.height())), *scale,
+                         font.pixelSize());
+    g.setFont(font);
     g.setPen(Qt::black);
     QString text = caption_;
     if (hover_) text += QStringLiteral("   |   cursor: S %1").arg(formatValue(*hover_));
-    g.drawText(QRectF(4, disk.bottom() + 4, width() - 8, 32), Qt::AlignLeft | Qt::TextWordWrap,
-               text);
+    g.drawText(QRectF(4, disk.bottom() + 4, width() - 8, 2 * fm.height() + 6),
+               Qt::AlignLeft | Qt::TextWordWrap, text);
   }
   std::optional<double> cellAt(const QPointF& p) const {
     if (!panel_) return std::nullopt;
@@ -190,18 +202,15 @@ class EtaView : public QChartView {
   EtaView() {
     setRenderHint(QPainter::Antialiasing);
     setMinimumSize(240, 200);
+    followBodyFont(this, [this] {
+      if (chart()) setChartFonts(*chart());
+    });
   }
   void setCurve(const sl::partition::EtaCurve& curve, std::optional<double> eta) {
     QChart* old = chart();
     QChart* c = makeEtaChart(curve, eta,
                              eta ? tr("this technique: eta %1").arg(*eta, 0, 'g', 3) : QString());
-    QFont small = font();
-    small.setPointSizeF(std::max(6.0, small.pointSizeF() - 1.0));
-    for (QAbstractAxis* a : c->axes()) {
-      a->setTitleFont(small);
-      a->setLabelsFont(small);
-    }
-    c->legend()->setFont(small);
+    setChartFonts(*c);
     // Short names in a narrow dock (the CLI's PNG keeps the long ones).
     const QString names[] = {QStringLiteral("M_x"), QStringLiteral("M_z"),
                              QStringLiteral("S = M_x M_z"), tr("this technique")};

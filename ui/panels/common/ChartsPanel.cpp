@@ -25,6 +25,7 @@
 
 #include "ChartKit.h"
 #include "MessageText.h"
+#include "Theme.h"
 #include "ViewportWidget.h"
 
 namespace sl::ui {
@@ -101,7 +102,7 @@ ChartsPanel::ChartsPanel(ViewportWidget* viewport, QWidget* parent)
   chartView_->setRenderHint(QPainter::Antialiasing);
   chartView_->setMinimumSize(300, 220);
   layout->addWidget(chartView_, 1);
-  redrawChart();
+  followBodyFont(chartView_, [this] { redrawChart(); });  // draws it now
 
   timer_.setInterval(0);
   connect(&timer_, &QTimer::timeout, this, &ChartsPanel::tick);
@@ -430,6 +431,7 @@ void ChartsPanel::redrawChart() {
                                                  .arg(c.medianErrorPct, 0, 'g', 3));
     });
   }
+  setChartFonts(*chart);
   QChart* old = chartView_->chart();
   chartView_->setChart(chart);
   delete old;

@@ -15,6 +15,7 @@
 #include <QVBoxLayout>
 
 #include "MessageText.h"
+#include "Theme.h"
 #include "scene/GltfLoader.h"
 
 namespace sl::ui {
@@ -80,10 +81,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(8, 6, 8, 8);
   title_ = new QLabel;
   title_->setObjectName(QStringLiteral("lessonTitle"));
-  QFont f = title_->font();
-  f.setBold(true);
-  f.setPointSizeF(f.pointSizeF() * 1.2);
-  title_->setFont(f);
+  followBodyFont(title_, 1.2, true);
   title_->setWordWrap(true);
   layout->addWidget(title_);
   text_ = new QTextBrowser;

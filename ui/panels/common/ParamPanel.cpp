@@ -25,6 +25,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "Theme.h"
+
 namespace sl::ui {
 
 namespace {
@@ -166,10 +168,7 @@ QWidget* ParamPanel::buildSection(const Section& section) {
 
   auto* header = new QHBoxLayout;
   auto* title = new QLabel(section.title);
-  QFont titleFont = title->font();
-  titleFont.setBold(true);
-  titleFont.setPointSizeF(titleFont.pointSizeF() * 1.15);
-  title->setFont(titleFont);
+  followBodyFont(title, 1.15, true);
   header->addWidget(title, 1);
   auto* resetAll = new QToolButton;
   resetAll->setText(tr("Reset all"));

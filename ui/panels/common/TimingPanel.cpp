@@ -7,6 +7,7 @@
 #include <numeric>
 #include <vector>
 
+#include <QEvent>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -51,6 +52,36 @@ class PassBarsWidget : public QWidget {
   }
   QSize minimumSizeHint() const override { return {200, rowHeight() * 2}; }
 
+  /// The widest pass name, the value column ("0000.00 ms  100%") and the least bar width:
+  /// what one row needs with the name beside its bar.
+  int nameWidth() const {
+    const QFontMetrics fm = fontMetrics();
+    int w = 0;
+    for (const auto& pass : passes_)
+      w = std::max(w, fm.horizontalAdvance(QString::fromStdString(pass.name)));
+    return w + 10;
+  }
+  int valueWidth() const {
+    return fontMetrics().horizontalAdvance(QStringLiteral("0000.00 ms  100%")) + 8;
+  }
+  int besideWidth() const { return nameWidth() + valueWidth() + 60; }
+  /// The name on a line of its own above its bar: the names do not fit beside the bars.
+  bool namesAbove() const { return width() < besideWidth(); }
+
+  QStringList names() const {
+    QStringList out;
+    for (const auto& pass : passes_) out << QString::fromStdString(pass.name);
+    return out;
+  }
+  /// Each name as paintEvent draws it.
+  QStringList shownNames() const {
+    QStringList out;
+    const int room = namesAbove() ? width() - 4 : nameW() - 6;
+    for (const auto& pass : passes_)
+      out << fontMetrics().elidedText(QString::fromStdString(pass.name), Qt::ElideRight, room);
+    return out;
+  }
+
  protected:
   void paintEvent(QPaintEvent*) override {
     QPainter p(this);
@@ -64,20 +95,25 @@ class PassBarsWidget : public QWidget {
     double sum = 0;
     for (const auto& pass : passes_) sum += pass.ms;
     const double scale = std::max({totalMs_, sum, 1e-6});
-    const QFontMetrics fm = fontMetrics();
-    int nameW = 0;
-    for (const auto& pass : passes_)
-      nameW = std::max(nameW, fm.horizontalAdvance(QString::fromStdString(pass.name)));
-    nameW = std::min(nameW + 10, width() * 9 / 20);
-    const int valueW = fm.horizontalAdvance(QStringLiteral("0000.00 ms  100%")) + 8;
+    const bool above = namesAbove();
+    const int nameW = above ? 0 : this->nameW();
+    const int valueW = valueWidth();
     const int barX = nameW, barW = std::max(10, width() - nameW - valueW);
+    const int lineH = fontMetrics().height() + 8;
     QColor bar = pal.color(QPalette::Highlight);
+    const QStringList shown = shownNames();
     int y = 0;
-    for (const auto& pass : passes_) {
-      const QRect row(0, y, width(), rowHeight());
+    for (std::size_t i = 0; i < passes_.size(); ++i) {
+      const sl::PassTiming& pass = passes_[i];
       p.setPen(pal.color(QPalette::Text));
-      p.drawText(QRect(0, y, nameW - 6, row.height()), Qt::AlignVCenter | Qt::AlignRight,
-                 fm.elidedText(QString::fromStdString(pass.name), Qt::ElideRight, nameW - 6));
+      if (above) {
+        p.drawText(QRect(2, y, width() - 4, lineH), Qt::AlignVCenter | Qt::AlignLeft,
+                   shown[int(i)]);
+        y += lineH - 6;
+      } else {
+        p.drawText(QRect(0, y, nameW - 6, lineH), Qt::AlignVCenter | Qt::AlignRight, shown[int(i)]);
+      }
+      const QRect row(0, y, width(), lineH);
       const QRectF track(barX, y + 4, barW, row.height() - 8);
       p.setPen(Qt::NoPen);
       p.setBrush(pal.color(QPalette::AlternateBase));
@@ -90,12 +126,17 @@ class PassBarsWidget : public QWidget {
       p.drawText(
           QRect(barX + barW + 8, y, valueW - 8, row.height()), Qt::AlignVCenter | Qt::AlignLeft,
           QStringLiteral("%1  %2%").arg(formatMs(pass.ms)).arg(100.0 * pass.ms / scale, 0, 'f', 0));
-      y += rowHeight();
+      y += lineH;
     }
   }
 
+  void resizeEvent(QResizeEvent*) override { updateGeometry(); }
+
  private:
-  int rowHeight() const { return fontMetrics().height() + 8; }
+  int nameW() const { return std::min(nameWidth(), width() * 9 / 20); }
+  int rowHeight() const {
+    return fontMetrics().height() + 8 + (namesAbove() ? fontMetrics().height() + 2 : 0);
+  }
   std::vector<sl::PassTiming> passes_;
   double totalMs_ = 0;
 };
@@ -179,7 +220,7 @@ TimingPanel::TimingPanel(QWidget* parent) : QWidget(parent) {
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   outer->addWidget(summary_);
 
-  auto* row = new QHBoxLayout;
+  auto* row = row_ = new QBoxLayout(QBoxLayout::LeftToRight);
   row->setSpacing(10);
   auto* passBox = new QGroupBox(tr("Passes (current frame)"));
   auto* passLayout = new QVBoxLayout(passBox);
@@ -244,6 +285,7 @@ void TimingPanel::showStats(const sl::FrameStats& stats) {
     if (!used[i]) rows.push_back(stats.passes[i]);
   passes_->setToolTip(tip);
   passes_->setPasses(std::move(rows), stats.totalMs);
+  arrangeBoxes();
   history_->add(stats.totalMs);
 
   // The memory list only changes with the technique or its parameters.
@@ -279,6 +321,36 @@ void TimingPanel::setTechnique(const sl::TechniqueInfo* technique) {
 
 void TimingPanel::resetHistory() {
   history_->clear();
+}
+
+QStringList TimingPanel::passNames() const {
+  return passes_->names();
+}
+
+QStringList TimingPanel::shownPassNames() const {
+  return passes_->shownNames();
+}
+
+bool TimingPanel::stacked() const {
+  return row_->direction() == QBoxLayout::TopToBottom;
+}
+
+void TimingPanel::arrangeBoxes() {
+  // Side by side the pass bars get 4/11 of the width; when that is too narrow for the names
+  // beside their bars (a narrow dock, presenter mode's large fonts), one box above the other.
+  const bool narrow = width() * 4 / 11 < passes_->besideWidth();
+  const auto direction = narrow ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight;
+  if (row_->direction() != direction) row_->setDirection(direction);
+}
+
+void TimingPanel::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  arrangeBoxes();
+}
+
+void TimingPanel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange) arrangeBoxes();
 }
 
 }  // namespace sl::ui

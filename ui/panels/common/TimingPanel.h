@@ -10,6 +10,7 @@
 
 #include "core/Renderer.h"
 
+class QBoxLayout;
 class QLabel;
 class QTreeWidget;
 
@@ -31,7 +32,21 @@ class TimingPanel : public QWidget {
   /// Forgets the history (new scene or technique: old times are not comparable).
   void resetHistory();
 
+  /// The bars' pass names, and each as it is drawn at the panel's present size (elided
+  /// only when even a line of its own is too narrow for it).
+  QStringList passNames() const;
+  QStringList shownPassNames() const;
+  /// Whether the three boxes stand one above the other (a narrow panel, large fonts).
+  bool stacked() const;
+
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+  void changeEvent(QEvent* event) override;
+
  private:
+  void arrangeBoxes();
+
+  QBoxLayout* row_ = nullptr;
   QLabel* summary_ = nullptr;
   PassBarsWidget* passes_ = nullptr;
   FrameHistoryWidget* history_ = nullptr;

@@ -9,6 +9,8 @@
 #include <QPainter>
 #include <QVBoxLayout>
 
+#include "Theme.h"
+
 namespace sl::ui {
 
 namespace {
@@ -70,9 +72,7 @@ FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
   });
   // kd leaves over the grid (SM uv), each with its texture's log2 size; the selected cell.
   grid_->setOverlay([this](QPainter& p, const QRectF& r) {
-    QFont f = p.font();
-    f.setPointSizeF(std::max(6.0, f.pointSizeF() - 2.0));
-    p.setFont(f);
+    p.setFont(bodyRelativeFont(kSmallText, p.font()));
     for (std::size_t k = 0; k < tiles_.size(); ++k) {
       const fvsm::Tile& t = tiles_[k].tile;
       const glm::dvec2 lo = t.uvMin(), hi = t.uvMax();

@@ -18,6 +18,7 @@
 #include <QVBoxLayout>
 
 #include "algo/rtw/Moments.h"
+#include "Theme.h"
 
 namespace sl::ui {
 
@@ -132,9 +133,7 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   state_->setObjectName(QStringLiteral("covarianceState"));
   state_->setAlignment(Qt::AlignCenter);
   state_->setMargin(3);
-  QFont bold = state_->font();
-  bold.setBold(true);
-  state_->setFont(bold);
+  followBodyFont(state_, 1.0, true);
   outer->addWidget(state_);
   gauge_ = new ThresholdGauge;
   outer->addWidget(gauge_);

@@ -468,32 +468,39 @@ bool SelfTests::splitParams(const QString& dir) {
 
   // 2. Equal memory: the largest right resolution within the left half's bytes; one step
   // more spends more.
+  // The parameter matched is the right technique's declared memory knob (its resolution
+  // here, rmsm's pool pages below), set through its spin box in the right half's panel.
   auto checkEqualMemory = [&](const QString& when) {
     w_.waitForFrames(2);
     const std::uint64_t mainBytes = main->stats().memory.bytes();
     const std::uint64_t splitBytes = split->stats().memory.bytes();
-    const int value = int(split->params().get("resolution"));
-    const sl::ParamDecl* decl = nullptr;
-    for (const sl::ParamDecl& d : split->params().decls())
-      if (d.key == "resolution") decl = &d;
+    const sl::ParamDecl* decl = sl::memoryKnob(split->params().decls());
+    check(decl != nullptr, tr("%1: the right technique declares a memory knob").arg(when));
+    if (!decl) return;
+    const QString key = QString::fromStdString(decl->key);
+    const int value = int(split->params().get(decl->key));
     check(splitBytes <= mainBytes &&
               side.bytesText().contains(QLocale().toString(qulonglong(mainBytes))) &&
               side.bytesText().contains(QLocale().toString(qulonglong(splitBytes))),
-          tr("%1: right %2 B at resolution %3 <= left %4 B (%5 %), both shown")
+          tr("%1: right %2 B at %3 = %4 <= left %5 B (%6 %), both shown")
               .arg(when)
               .arg(splitBytes)
+              .arg(key)
               .arg(value)
               .arg(mainBytes)
               .arg(100.0 * double(splitBytes) / double(mainBytes), 0, 'f', 1));
-    if (!decl || value + decl->step > decl->maxValue) return;
+    auto* knobSpin = side.panel()->findChild<QSpinBox*>(QStringLiteral("param:") + key);
+    check(knobSpin != nullptr, tr("%1: the right half's panel edits %2").arg(when, key));
+    const int step = std::max(1, int(decl->step));
+    if (!knobSpin || value + step > decl->maxValue) return;
     // One step more (measured with a frame, then back): over the budget.
-    spin->setValue(value + int(decl->step));
+    knobSpin->setValue(value + step);
     QCoreApplication::processEvents();
     w_.waitForFrames(1);
     const std::uint64_t over = split->stats().memory.bytes();
-    check(over > mainBytes, tr("%1: one step more (%2) spends %3 B > %4 B")
-                                .arg(when)
-                                .arg(value + int(decl->step))
+    check(over > mainBytes, tr("%1: one step more (%2 = %3) spends %4 B > %5 B")
+                                .arg(when, key)
+                                .arg(value + step)
                                 .arg(over)
                                 .arg(mainBytes));
   };
@@ -521,6 +528,19 @@ bool SelfTests::splitParams(const QString& dir) {
             .arg(main->stats().memory.bytes()));
   // The pending match is what the check measures (the one-step-more edit is undone by it).
   checkEqualMemory(tr("re-matched"));
+  // A second pair: rmsm's memory is its physical pool, so equal memory sets pool.pages (its
+  // virtual.resolution, a resolution in name, spends no byte).
+  w_.teaching_->setSplitTechnique(QStringLiteral("rmsm"));
+  for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+  split = v->splitRenderer();
+  check(split && v->splitTechnique() == "rmsm", tr("the split view shows rmsm"));
+  if (!split) return false;
+  side.equalMemoryBox()->setChecked(false);
+  side.equalMemoryBox()->setChecked(true);
+  for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
+  check(side.bytesText().contains(QStringLiteral("Equal memory: pool.pages = ")),
+        tr("rmsm: equal memory sets pool.pages (%1)").arg(side.bytesText()));
+  checkEqualMemory(tr("rmsm"));
   if (!dir.isEmpty())
     check(w_.grab().save(QDir(dir).filePath(QStringLiteral("split-params.png"))),
           tr("saved split-params.png into %1").arg(dir));

@@ -40,14 +40,14 @@ QWidget* SplitSideParams::createDockWidget(ParamPanel* mainPanel) {
   followBodyFont(title_, 1.0, true);
   layout->addWidget(title_);
   equalMemory_ =
-      new QCheckBox(tr("Equal memory (the right half's resolution spends the left "
+      new QCheckBox(tr("Equal memory (the right half's memory parameter spends the left "
                        "half's bytes)"));
   equalMemory_->setObjectName(QStringLiteral("equalMemory"));
   equalMemory_->setToolTip(
-      tr("Searches the right technique's resolution for the largest value whose shadow "
-         "memory is at most the left technique's, measuring each candidate with a frame "
-         "(memory need not follow the resolution alone); matches again when the left side's "
-         "memory changes"));
+      tr("Searches the parameter the right technique's memory grows with (a map's "
+         "resolution, a pool's pages) for the largest value whose shadow memory is at most "
+         "the left technique's, measuring each candidate with a frame (memory need not follow "
+         "that parameter alone); matches again when the left side's memory changes"));
   layout->addWidget(equalMemory_);
   bytes_ = new QLabel;
   bytes_->setObjectName(QStringLiteral("splitBytes"));

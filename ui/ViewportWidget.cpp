@@ -524,19 +524,10 @@ std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std:
   if (framesRendered_ == 0 || renderer_->stats().frameIndex == 0)
     return fail("no frame of the main technique yet");
   sl::ParamSet& params = split->params();
-  const sl::ParamDecl* decl = nullptr;
-  for (const sl::ParamDecl& d : params.decls())
-    if (d.key == "resolution") decl = &d;
-  if (!decl) {
-    for (const sl::ParamDecl& d : params.decls())
-      if (d.type == sl::ParamType::Int && d.key.size() >= 10 &&
-          d.key.compare(d.key.size() - 10, 10, "resolution") == 0) {
-        if (decl) return fail("technique '" + splitTechniqueId_ + "' has several resolutions");
-        decl = &d;
-      }
-  }
+  const sl::ParamDecl* decl = sl::memoryKnob(params.decls());
   if (!decl)
-    return fail("technique '" + splitTechniqueId_ + "' has no resolution parameter to match");
+    return fail("technique '" + splitTechniqueId_ +
+                "' declares no parameter its memory grows with, so there is nothing to match");
   MemoryMatch match;
   match.key = decl->key;
   match.mainBytes = renderer_->stats().memory.bytes();

@@ -181,11 +181,13 @@ class ViewportWidget : public QOpenGLWidget {
                : nullptr;
   }
 
-  /// "Equal memory": the split technique's resolution parameter (`resolution`, else the
-  /// one Int parameter whose key ends in "resolution") searched for the largest value whose
-  /// memory() is at most the main technique's, each candidate measured by rendering the
-  /// right half (memory need not be a function of resolution alone). Assumes memory grows
-  /// with resolution (doubling, then bisection: about 2 log2(range) frames).
+  /// "Equal memory": the split technique's declared memory knob (`ParamDecl::memoryKnob`: a
+  /// map's resolution, rmsm/asm's pool pages, virtual-tiled's tile resolution; fvsm has none: its
+  /// textures follow each frame's needs)
+  /// searched for the largest value whose memory() is at most the main technique's, each
+  /// candidate measured by rendering the right half (memory need not be a function of the
+  /// knob alone). Assumes memory grows with it (doubling, then bisection: about
+  /// 2 log2(range) frames; tests/gl checks the growth for every technique).
   struct MemoryMatch {
     std::string key;               ///< the parameter set
     long long value = 0;           ///< its value now

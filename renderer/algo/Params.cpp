@@ -35,6 +35,12 @@ std::string_view paramTypeName(ParamType type) {
   return "?";
 }
 
+const ParamDecl* memoryKnob(const std::vector<ParamDecl>& decls) {
+  for (const ParamDecl& d : decls)
+    if (d.memoryKnob) return &d;
+  return nullptr;
+}
+
 std::string describeRange(const ParamDecl& decl) {
   switch (decl.type) {
     case ParamType::Bool:

@@ -31,7 +31,15 @@ struct ParamDecl {
   /// follows `type`: Float -> float, Int / Bool / Enum -> int. A name that none of the
   /// technique's programs declares makes the technique fail to create.
   std::string uniform;
+  /// The one integer parameter the technique's memory grows with (a map's resolution, a
+  /// pool's page count): what the split view's "Equal memory" searches. At most one per
+  /// technique (checked by tests/cpu), and a GL test checks the growth for every technique.
+  bool memoryKnob = false;
 };
+
+/// The declaration marked `memoryKnob` (null when none is; the first when several are, which
+/// tests/cpu refuses for every shipped technique).
+const ParamDecl* memoryKnob(const std::vector<ParamDecl>& decls);
 
 /// Human readable range, e.g. "64..16384", "0..1", "on|off", "pcf-none|pcf-3x3".
 std::string describeRange(const ParamDecl& decl);

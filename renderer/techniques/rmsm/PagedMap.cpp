@@ -68,7 +68,8 @@ std::vector<ParamDecl> pagedMapParamDecls() {
       .help = "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform 2048² "
               "map). When a frame asks for more, pages of the finest requested level move to their "
               "parents, sibling group by sibling group, until they fit (counted in "
-              "pages.coarsened)."});
+              "pages.coarsened).",
+      .memoryKnob = true});
   return p;
 }
 

@@ -34,7 +34,8 @@ TechniqueInfo VirtualTiledShadowMap::info() {
        .maxValue = 8192,
        .step = 16,
        .help = "Width and height of every tile's depth texture in texels (one texture, reused "
-               "by every tile)."},
+               "by every tile).",
+       .memoryKnob = true},
   };
   appendTileBiasParams(params);
   TechniqueInfo info{"virtual-tiled", "Virtual tiled shadow map (brute force)",

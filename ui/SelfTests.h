@@ -93,6 +93,7 @@ class SelfTests : public QObject {
   void claimRtw();
   void claimPca(const QString& text);
   void claimVibration(const QString& text);
+  void claimAsm(const QString& text);
   /// The main view's error against the reference, with its per-pixel readback.
   sl::Renderer::ErrorResult measureView();
   void check(bool ok, const QString& what);

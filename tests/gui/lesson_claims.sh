@@ -6,7 +6,8 @@
 # lesson's own text and measured: perspective aliasing (m in three bands, the error thin lines
 # along the exact shadow's edges), projective aliasing (the floor's m at a low and a high sun),
 # RTW against uniform at the same texels in the split view, the PCA's settled angle (two fresh
-# starts, the same angle), the vibration (changed pixels per frame, none once held). The
+# starts, the same angle), the vibration (changed pixels per frame, none once held), ASM against
+# RMSM (lesson 13: both errors, the Pages panel's counts, uniform and rtw-backward staged). The
 # window of each lesson is saved to DIR for a look.
 # usage: lesson_claims.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail

@@ -153,6 +153,7 @@ class SelfTests : public QObject {
   void claimCascades(const QString& text);
   void claimOmni(const QString& text);
   void claimFvsm(const QString& text);
+  void claimAsm(const QString& text);
   /// The main view's error against the reference, with its per-pixel readback.
   sl::Renderer::ErrorResult measureView();
   void check(bool ok, const QString& what);

@@ -25,13 +25,14 @@ namespace sl {
 namespace {
 /// view.overlay's names, value i at index i (SL_OVERLAY_*, composite.frag).
 std::vector<std::string> overlayNames() {
-  std::vector<std::string> names(SL_OVERLAY_CHANGED + 1);
+  std::vector<std::string> names(SL_OVERLAY_PAGES + 1);
   names[SL_OVERLAY_NONE] = "none";
   names[SL_OVERLAY_ERROR] = "error";
   names[SL_OVERLAY_ALIASING] = "aliasing";
   names[SL_OVERLAY_GRID] = "warp-grid";
   names[SL_OVERLAY_PARTITION] = "partition";
   names[SL_OVERLAY_CHANGED] = "changed";
+  names[SL_OVERLAY_PAGES] = "pages";
   return names;
 }
 }  // namespace
@@ -54,7 +55,7 @@ std::vector<ParamDecl> rendererParamDecls() {
        .type = ParamType::Enum,
        .defaultValue = SL_OVERLAY_NONE,
        .minValue = SL_OVERLAY_NONE,
-       .maxValue = SL_OVERLAY_CHANGED,
+       .maxValue = SL_OVERLAY_PAGES,
        .step = 1,
        .enumNames = overlayNames(),
        .help =
@@ -69,7 +70,9 @@ std::vector<ParamDecl> rendererParamDecls() {
            std::to_string(SL_PARTITION_COLOURS) +
            "): 0 red, 1 green, 2 blue, 3 yellow, 4 magenta, 5 cyan, 6 orange, 7 violet; or "
            "changed: the pixels whose hard shadow test flipped (lit <-> shadowed) since the "
-           "previous frame in vivid yellow (flicker, vibration; main view only).",
+           "previous frame in vivid yellow (flicker, vibration; main view only); or pages: the "
+           "borders of the page each pixel's lookup used, in orange over the scene in grey (paged "
+           "maps: rmsm, asm; the partition overlay colours each pixel by the level it uses).",
        .uniform = "u_overlay"},
       {.key = "view.outside",
        .label = "Outside view",
@@ -675,6 +678,11 @@ void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool refe
   bindLight(c, s.light);
   c.set("u_cameraPos", eye);
   bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
+  // The pages overlay's page grid per selectable map (none: 0).
+  const std::vector<int> grid = s.technique ? s.technique->pageGrid() : std::vector<int>{};
+  for (int i = 0; i < SL_MAX_DEPTH_MAPS; ++i)
+    c.set(("u_pageCells[" + std::to_string(i) + "]").c_str(),
+          i < int(grid.size()) ? grid[std::size_t(i)] : 0);
   const int overlay = s.rendererParams.getInt("view.overlay");
   if (overlay == SL_OVERLAY_ERROR && !referenceMatches)
     c.set("u_overlay", SL_OVERLAY_NONE);  // no reference of this exact view

@@ -128,6 +128,10 @@ class Technique {
   virtual MemoryStats memory() const = 0;
   virtual std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) = 0;
   virtual void resetTemporalState() {}
+  /// Pages per side of each map the lookup selects (a paged map: rmsm and asm, one map per
+  /// quadtree level), for the page-border overlay (SL_OVERLAY_PAGES: a pixel's page is its map
+  /// and floor(uv * pages per side)); empty when the technique has no pages.
+  virtual std::vector<int> pageGrid() const { return {}; }
 };
 
 /// The built-in technique list (TechniqueEntry: core/Renderer.h).

@@ -16,6 +16,8 @@ layout(binding = SL_UNIT_TEXEL) uniform sampler2D u_texel;  // selected map's uv
 layout(binding = SL_UNIT_MAP_INDEX) uniform usampler2D u_mapIndex;  // selected map per pixel
 layout(binding = SL_UNIT_PREV_HARD) uniform usampler2D u_prevHard;  // last frame's hard mask
 uniform int u_overlay;  // view.overlay: SL_OVERLAY_*
+// Pages per side of each map the lookup selects (Technique::pageGrid; 0: the map has no pages).
+uniform int u_pageCells[SL_MAX_DEPTH_MAPS];
 in vec2 v_uv;
 
 // Diverging heat map for log2(m) in [-4, 4]: blue (oversampled), white, red (undersampled).
@@ -33,6 +35,17 @@ vec3 partitionColor(uint i) {
   return c[i % uint(SL_PARTITION_COLOURS)];
 }
 out vec4 o_color;
+
+// The page a pixel's lookup used (the pages overlay; CPU mirror sl::pages::pageBorders): its
+// map and floor(uv * pages per side) in that map's page grid; x = -1 when uncovered or pageless.
+ivec3 pageOf(ivec2 px) {
+  if (texelFetch(u_gPosition, px, 0).w <= 0.0) return ivec3(-1);
+  uint m = texelFetch(u_mapIndex, px, 0).r;
+  int n = m < uint(SL_MAX_DEPTH_MAPS) ? u_pageCells[m] : 0;
+  if (n <= 0) return ivec3(-1);
+  ivec2 cell = ivec2(floor(texelFetch(u_texel, px, 0).xy * float(n)));
+  return ivec3(int(m), clamp(cell, ivec2(0), ivec2(n - 1)));
+}
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
@@ -76,6 +89,21 @@ void main() {
     c = vec3(dot(c, vec3(0.299, 0.587, 0.114)) * 0.6);
     if (now != SL_MASK_EMPTY && before != SL_MASK_EMPTY && (now == SL_MASK_LIT) != (before == SL_MASK_LIT))
       c = vec3(SL_CHANGED_COLOUR);
+  } else if (u_overlay == SL_OVERLAY_PAGES) {
+    // The scene in grey, a pixel whose covered 4-neighbour uses another page (another level
+    // or another page of its level) in one colour: the borders of the pages on the scene.
+    c = vec3(dot(c, vec3(0.299, 0.587, 0.114)) * 0.8);
+    ivec3 k = pageOf(px);
+    ivec2 size = textureSize(u_gPosition, 0);
+    const ivec2 d[4] = ivec2[](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
+    bool border = false;
+    for (int i = 0; i < 4 && k.x >= 0; ++i) {
+      ivec2 q = px + d[i];
+      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+      ivec3 o = pageOf(q);
+      border = border || (o.x >= 0 && o != k);
+    }
+    if (border) c = vec3(SL_PAGE_BORDER_COLOUR);
   }
   o_color = vec4(c, 1.0);
 }

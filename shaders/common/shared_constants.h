@@ -50,7 +50,9 @@
 #define SL_OVERLAY_GRID 3
 #define SL_OVERLAY_PARTITION 4  // each pixel coloured by the index of the map it selected
 #define SL_OVERLAY_CHANGED 5    // pixels lit in one frame and shadowed in the next (flicker)
+#define SL_OVERLAY_PAGES 6      // the borders of the page each pixel uses (paged maps)
 #define SL_CHANGED_COLOUR 1.00, 0.95, 0.00  // the changed overlay's vivid yellow (RGB 0..1)
+#define SL_PAGE_BORDER_COLOUR 1.00, 0.35, 0.00  // the pages overlay's borders (RGB 0..1)
 #define SL_PARTITION_COLOURS 8  // distinct overlay colours (composite.frag); index mod 8
 // Their RGB (0..1): composite.frag and the Partitions panel (ui/panels/partition).
 #define SL_PARTITION_COLOUR_0 0.90, 0.20, 0.20  // red

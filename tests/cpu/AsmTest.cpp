@@ -1,12 +1,14 @@
 // algo/asm (adaptive shadow maps, Fernando et al. 2001): the refine key, edge finding on a
 // hand-made shadow image, the page cache's coarse map, refinement iterations that stop,
-// budget, cache hits, least-recently-used eviction and invalidation. Exact expectations.
+// budget, cache hits, least-recently-used eviction and invalidation, the Pages panel's states of
+// the cache. Exact expectations.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
 #include "algo/asm/AdaptivePages.h"
 #include "algo/pages/PageRequests.h"
+#include "algo/pages/PageViews.h"
 
 namespace sl::adaptive {
 namespace {
@@ -167,6 +169,59 @@ TEST(AsmCache, InvalidateDropsEveryPage) {
   EXPECT_EQ(c.table().resolve({0, 2, 2}).page, (PageId{2, 0, 0}));
   EXPECT_EQ(c.invalidations(), 2);
   EXPECT_EQ(c.lastUsed(5), -1);
+}
+
+// The Pages panel's view of the cache, per level and frame: new this frame, kept and used (a
+// hit), kept and unused, evicted this frame, requested but refused; the pool's slot levels.
+TEST(AsmCache, PanelStatesPerLevel) {
+  using pages::PageState;
+  auto grid = [](int n, PageState fill, std::vector<std::pair<PageId, PageState>> cells) {
+    std::vector<float> g(std::size_t(n) * std::size_t(n), float(fill));
+    for (const auto& [p, s] : cells)
+      g[std::size_t(p.y) * std::size_t(n) + std::size_t(p.x)] = float(s);
+    return g;
+  };
+  const std::vector<PageKey> none;
+  PageCache c(kSmall, 6, 2);  // 4 coarse pages (level 2: 2 x 2) + 2
+  std::vector<int> slots;
+  c.invalidate(slots);  // frame 0: the coarse map is new
+  EXPECT_EQ(cacheLevelStates(c, none, 2), grid(2, PageState::New, {}));
+  EXPECT_EQ(cacheLevelStates(c, none, 0), grid(8, PageState::Empty, {}));
+
+  c.beginFrame();  // frame 1: one page; the coarse pages untouched
+  std::vector<PageKey> req{packPage({0, 0, 0})};
+  c.refine(req, 8);
+  EXPECT_EQ(cacheLevelStates(c, req, 0), grid(8, PageState::Empty, {{{0, 0, 0}, PageState::New}}));
+  EXPECT_EQ(cacheLevelStates(c, req, 2), grid(2, PageState::CachedIdle, {}));
+
+  c.beginFrame();  // frame 2: another page, a coarse page touched
+  c.refine(
+      pages::sortUnique(std::vector<PageKey>{packPage({0, 7, 7}), packPage({2, 1, 0}) | kTouchBit}),
+      8);
+  EXPECT_EQ(
+      cacheLevelStates(c, std::vector<PageKey>{packPage({0, 7, 7})}, 0),
+      grid(8, PageState::Empty, {{{0, 0, 0}, PageState::CachedIdle}, {{0, 7, 7}, PageState::New}}));
+  EXPECT_EQ(cacheLevelStates(c, none, 2),
+            grid(2, PageState::CachedIdle, {{{2, 1, 0}, PageState::CachedHit}}));
+
+  c.beginFrame();  // frame 3: (1, 2, 2) evicts (0, 0, 0); (0, 3, 3) refused (all in use)
+  c.refine(std::vector<PageKey>{packPage({1, 2, 2})}, 8);
+  c.refine(
+      pages::sortUnique(std::vector<PageKey>{packPage({0, 7, 7}) | kTouchBit, packPage({0, 3, 3})}),
+      8);
+  req = pages::sortUnique(std::vector<PageKey>{packPage({1, 2, 2}), packPage({0, 3, 3})});
+  EXPECT_EQ(cacheLevelStates(c, req, 0), grid(8, PageState::Empty,
+                                              {{{0, 0, 0}, PageState::Evicted},
+                                               {{0, 7, 7}, PageState::CachedHit},
+                                               {{0, 3, 3}, PageState::Pending}}));
+  EXPECT_EQ(cacheLevelStates(c, req, 1), grid(4, PageState::Empty, {{{1, 2, 2}, PageState::New}}));
+  EXPECT_EQ(cacheLevelStates(c, req, 2), grid(2, PageState::CachedIdle, {}));
+  EXPECT_EQ(cachePoolLevels(c), (std::vector<float>{2, 2, 2, 2, 1, 0}));
+
+  c.beginFrame();  // frame 4: nothing evicted any more
+  EXPECT_TRUE(c.evictedThisFrame().empty());
+  EXPECT_EQ(cacheLevelStates(c, none, 0),
+            grid(8, PageState::Empty, {{{0, 7, 7}, PageState::CachedIdle}}));
 }
 
 }  // namespace

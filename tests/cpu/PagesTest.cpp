@@ -325,5 +325,30 @@ TEST(Pages, PanelViewsOfOneFrame) {
   EXPECT_TRUE(std::isnan(slots[3]));
 }
 
+// The page-border overlay's CPU mirror on a hand-made 5 x 3 image (map 0: 2 x 2 pages, map 1:
+// one page): a pixel is a border when a covered 4-neighbour with pages uses another page (the
+// other cell of map 0, or map 1); an uncovered pixel, a map without pages (5) and uv 1.0
+// (clamped into the last page) draw and cause nothing.
+TEST(Pages, PageBordersWhereTheNeighboursPageDiffers) {
+  const float u[5] = {0.1f, 0.2f, 0.4f, 0.6f, 1.0f};
+  std::vector<glm::vec2> uv;
+  for (int y = 0; y < 3; ++y)
+    for (float x : u) uv.emplace_back(x, 0.25f);
+  const std::vector<std::uint8_t> map = {0, 0, 0, 0, 0,  //
+                                         5, 0, 0, 0, 1,  //
+                                         0, 0, 0, 0, 0};
+  const std::vector<std::uint8_t> covered = {1, 1, 1, 1, 1,  //
+                                             1, 1, 1, 1, 1,  //
+                                             0, 1, 1, 1, 1};
+  const std::vector<int> cells = {2, 1};
+  EXPECT_EQ(pageBorders(uv, map, covered, 5, 3, cells),
+            (std::vector<std::uint8_t>{0, 0, 1, 1, 1,  //
+                                       0, 0, 1, 1, 1,  //
+                                       0, 0, 1, 1, 1}));
+  // No pages anywhere: no border.
+  EXPECT_EQ(pageBorders(uv, map, covered, 5, 3, {}), std::vector<std::uint8_t>(15, 0));
+  EXPECT_THROW(pageBorders(uv, map, covered, 4, 3, cells), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace sl::pages

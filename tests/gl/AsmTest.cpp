@@ -2,13 +2,17 @@
 // edge-finding pass and its dedup + compaction (algo/asm and algo/pages are the reference),
 // the shadow test pass agreeing with the resolve once the quadtree converged, the page cache
 // (camera moves keep pages, a light change drops them and no stale page is used), exact
-// memory, declared passes == timed passes, bad parameters.
+// memory, declared passes == timed passes, bad parameters, the Pages panel's publications (the
+// CPU cache's states).
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 
 #include "GlTestEnv.h"
 #include "algo/asm/AdaptivePages.h"
 #include "algo/pages/PageRequests.h"
+#include "algo/pages/PageViews.h"
 #include "common/shared_constants.h"
 #include "core/Technique.h"
 #include "gl/Gl.h"
@@ -218,6 +222,101 @@ TEST(Asm, DeclaredPassesAndBadParameters) {
       << *err;
   ASSERT_FALSE(r->params().set("pool.pages", 1100));
   EXPECT_FALSE(r->renderFrame(96, 64, 0));
+}
+
+// NaN (a free slot, an entry nothing covers) equal to NaN.
+bool sameValues(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!(a[i] == b[i] || (std::isnan(a[i]) && std::isnan(b[i])))) return false;
+  return true;
+}
+
+// The Pages panel's publications of asm are the CPU PageCache's: the GPU's keys of every
+// iteration replayed through a CPU cache of the same layout, pool and budget allocate the same
+// pages into the same slots, and the published page table (per level: allocated this frame,
+// cached used / unused, evicted, requested and waiting), pool levels and served levels equal
+// the CPU's views, over 3 frames: the coarse map + refinement, the same view again (cached
+// pages used, hits), a cut from the close-up of a shadow corner to the next corner with a
+// pool too small for both views (evictions).
+TEST(Asm, PagesPanelPublicationsAreTheCpuCaches) {
+  auto r = makeProbe("plane-box");
+  ASSERT_TRUE(r);
+  const pages::VirtualLayout layout{16384, 128, SL_MAX_DEPTH_MAPS};
+  const int pool = 6, budget = 64, coarseLevel = 7;  // 128² coarse map: one page
+  ASSERT_FALSE(r->params().set("virtual.resolution", layout.virtualResolution));
+  ASSERT_FALSE(r->params().set("page.size", layout.pageSize));
+  ASSERT_FALSE(r->params().set("pool.pages", pool));
+  ASSERT_FALSE(r->params().set("asm.pages.per.frame", budget));
+  ASSERT_FALSE(r->params().set("asm.coarse.resolution", 128));
+  r->requestPublications({"pages.*", "asm.*"});
+  adaptive::PageCache cpu(layout, pool, coarseLevel);
+  // The close-up of a shadow corner fills the pool with fine pages; the close-up of the
+  // next corner then needs other pages and evicts the first corner's (unused there).
+  const Camera closeup = *test::bookmark(*r->scene(), "edge-closeup");
+  r->setCamera(closeup);
+  const int w = 128, h = 72;
+  std::array<std::array<int, pages::kPageStates>, 3> cells{};
+  for (int f = 0; f < 3; ++f) {
+    SCOPED_TRACE(f);
+    if (f == 2) {  // the next corner of the 2 x 2 m shadow (2 m along z), the same look
+      Camera cam = closeup;
+      cam.position += glm::vec3(0.0f, 0.0f, 2.0f);
+      cam.target += glm::vec3(0.0f, 0.0f, 2.0f);
+      r->setCamera(cam);
+    }
+    ASSERT_FALSE(r->renderFrame(w, h, 0));
+    const AsmShadowMap::FrameResult& gpu = g_probe->lastFrame();
+    ASSERT_EQ(gpu.invalidated, f == 0);
+    std::vector<int> slots;
+    if (f == 0)
+      cpu.invalidate(slots);
+    else
+      cpu.beginFrame();
+    int left = budget;
+    std::vector<pages::PageKey> requests;
+    ASSERT_EQ(gpu.uniquePerIteration.size(), gpu.iterations.size());
+    for (std::size_t i = 0; i < gpu.uniquePerIteration.size(); ++i) {
+      const adaptive::Refinement ref = cpu.refine(gpu.uniquePerIteration[i], left);
+      left -= int(ref.allocated.size());
+      EXPECT_EQ(ref.allocated, gpu.iterations[i].allocated) << "iteration " << i;
+      EXPECT_EQ(ref.slots, gpu.iterations[i].slots) << "iteration " << i;
+      for (pages::PageKey k : gpu.uniquePerIteration[i])
+        if (k != pages::kNoPage && (k & adaptive::kTouchBit) == 0) requests.push_back(k);
+    }
+    const std::vector<pages::PageKey> requested = pages::sortUnique(requests);
+    const Publication& pub = r->publication();
+    EXPECT_EQ(pub.numbers.at("pages.requested"), double(requested.size()));
+    EXPECT_EQ(pub.numbers.at("pages.allocated"), double(cpu.pool().usedCount()));
+    for (int l = 0; l < layout.levels(); ++l) {
+      const auto it = pub.images.find("pages.table." + std::to_string(l));
+      ASSERT_NE(it, pub.images.end()) << l;
+      const std::vector<float> states = adaptive::cacheLevelStates(cpu, requested, l);
+      EXPECT_EQ(it->second.values, states) << "level " << l;
+      for (float v : states) ++cells[std::size_t(f)][std::size_t(v)];
+    }
+    EXPECT_TRUE(sameValues(pub.curves.at("pages.pool.levels"), adaptive::cachePoolLevels(cpu)));
+    EXPECT_TRUE(sameValues(pub.images.at("pages.served").values, pages::servedLevels(cpu.table())));
+    // The cells agree with the cache's own counts.
+    using PS = pages::PageState;
+    const auto& c = cells[std::size_t(f)];
+    EXPECT_EQ(double(c[int(PS::New)]), pub.numbers.at("asm.new") + (f == 0 ? 1 : 0));
+    EXPECT_EQ(double(c[int(PS::CachedHit)]), pub.numbers.at("asm.hits"));
+    EXPECT_EQ(double(c[int(PS::New)] + c[int(PS::CachedHit)] + c[int(PS::CachedIdle)]),
+              pub.numbers.at("asm.cached"));
+    EXPECT_LE(double(c[int(PS::Evicted)]), pub.numbers.at("asm.evicted"));
+    std::printf("frame %d: new %d, cached hit %d, idle %d, evicted %d, waiting %d\n", f,
+                c[int(PS::New)], c[int(PS::CachedHit)], c[int(PS::CachedIdle)], c[int(PS::Evicted)],
+                c[int(PS::Pending)]);
+  }
+  using PS = pages::PageState;
+  EXPECT_EQ(cells[0][int(PS::CachedHit)] + cells[0][int(PS::CachedIdle)], 0);
+  EXPECT_GT(cells[0][int(PS::New)], 1) << "the first frame refines the coarse map";
+  EXPECT_GT(cells[1][int(PS::CachedHit)], 0) << "the second frame uses pages it kept";
+  EXPECT_EQ(cells[1][int(PS::Evicted)], 0);
+  EXPECT_GT(cells[2][int(PS::Evicted)], 0) << "the new view evicts the old view's pages";
+  EXPECT_GT(cells[2][int(PS::CachedIdle)] + cells[2][int(PS::CachedHit)], 0);
+  test::expectNoGlErrors(*r);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "GlTestEnv.h"
 #include "algo/pages/PageRequests.h"
+#include "algo/pages/PageViews.h"
 #include "common/shared_constants.h"
 #include "core/Technique.h"
 #include "gl/Gl.h"
@@ -242,6 +243,46 @@ TEST(Rmsm, DeclaredPassesAndBadParameters) {
       << *small;
   ASSERT_FALSE(r->params().set("pool.pages", 16));
   EXPECT_FALSE(r->renderFrame(96, 64, 0));
+}
+
+// The pages overlay (view.overlay = pages): the composite paints exactly the pixels that
+// pages::pageBorders finds from the read-back map index, uv and coverage (0 mismatches), for
+// rmsm and asm (both paged maps: one map per quadtree level, pages per side halving per level);
+// every other pixel is grey.
+TEST(Rmsm, PageBorderOverlayIsWhereThePageChanges) {
+  const pages::VirtualLayout layout{16384, 128, SL_MAX_DEPTH_MAPS};
+  std::vector<int> grid;
+  for (int l = 0; l < layout.levels(); ++l) grid.push_back(layout.pagesPerSide(l));
+  for (const char* id : {"rmsm", "asm"}) {
+    SCOPED_TRACE(id);
+    auto r = test::makeRenderer("plane-box", id);
+    ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().set("virtual.resolution", layout.virtualResolution));
+    ASSERT_FALSE(r->rendererParams().setFromString("view.overlay", "pages"));
+    const int w = 160, h = 90;
+    ASSERT_FALSE(r->renderFrame(w, h, 0));
+    const FrameReadback fr = r->readback();
+    std::vector<std::uint8_t> covered(fr.positions.size());
+    for (std::size_t i = 0; i < covered.size(); ++i) covered[i] = fr.positions[i].w > 0.0f;
+    const std::vector<std::uint8_t> border =
+        pages::pageBorders(fr.texel, fr.mapIndex, covered, w, h, grid);
+    int borders = 0, mismatches = 0, levels = 0;
+    std::set<int> used;
+    for (std::size_t i = 0; i < border.size(); ++i) {
+      const std::uint8_t* c = &fr.color.pixels[4 * i];
+      const bool painted = c[0] == 255 && c[1] == 89 && c[2] == 0;  // SL_PAGE_BORDER_COLOUR
+      mismatches += painted != (border[i] != 0);
+      borders += border[i];
+      if (covered[i]) used.insert(fr.mapIndex[i]);
+    }
+    levels = int(used.size());
+    std::printf("%s: %d border pixels of %d, %d levels used, %d mismatches\n", id, borders, w * h,
+                levels, mismatches);
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_GT(borders, 100);
+    EXPECT_GT(levels, 1);
+    test::expectNoGlErrors(*r);
+  }
 }
 
 }  // namespace

@@ -10,7 +10,8 @@
 # frame, none once held), forward against backward analysis (texels given importance, error),
 # LiSPSM's η (error and m from η = -1 to 0 and 1), face partitioning against lispsm and uniform
 # at the same texels, the cascades' split schemes (each map's m), cube against dual paraboloid
-# (memory, error, tessellation) and FVSM against a small brute-force budget. The window of each
+# (memory, error, tessellation), FVSM against a small brute-force budget and ASM against RMSM
+# (both errors, the Pages panel's counts, uniform and rtw-backward staged). The window of each
 # lesson is saved to DIR for a look.
 # usage: lesson_claims.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail

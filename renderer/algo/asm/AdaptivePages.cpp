@@ -7,6 +7,7 @@
 #include <string>
 
 #include "algo/pages/PageRequests.h"
+#include "algo/pages/PageViews.h"
 
 namespace sl::adaptive {
 
@@ -140,8 +141,6 @@ Refinement PageCache::refine(std::span<const PageKey> keys, int budget) {
   // Coarsest level first (the quadtree refines top-down), then row, column.
   std::stable_sort(requests.begin(), requests.end(),
                    [](const PageId& a, const PageId& b) { return a.level > b.level; });
-  if (evictedFrame_ != frame_) evicted_.clear();
-  evictedFrame_ = frame_;
   for (std::size_t i = 0; i < requests.size(); ++i) {
     if (int(r.allocated.size()) >= budget) {
       r.deferred = int(requests.size() - i);
@@ -163,6 +162,45 @@ Refinement PageCache::refine(std::span<const PageKey> keys, int budget) {
     r.slots.push_back(*slot);
   }
   return r;
+}
+
+std::vector<float> cacheLevelStates(const PageCache& cache, std::span<const PageKey> requested,
+                                    int level) {
+  using pages::PageState;
+  const pages::VirtualLayout& layout = cache.layout();
+  const int n = layout.pagesPerSide(level);
+  std::vector<float> out(std::size_t(n) * std::size_t(n), float(PageState::Empty));
+  auto at = [&](const PageId& p) -> float& {
+    return out[std::size_t(p.y) * std::size_t(n) + std::size_t(p.x)];
+  };
+  for (PageKey k : requested) {
+    const PageId p = pages::unpackPage(k & ~kTouchBit);
+    if (p.level == level) at(p) = float(PageState::Pending);
+  }
+  for (const PageId& p : cache.evictedThisFrame())
+    if (p.level == level) at(p) = float(PageState::Evicted);
+  const std::int64_t frame = std::int64_t(cache.frame());
+  const std::span<const int> slots = cache.table().level(level);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const int s = slots[i];
+    if (s < 0) continue;
+    out[i] = float(cache.allocatedIn(s) >= frame ? PageState::New
+                   : cache.lastUsed(s) >= frame  ? PageState::CachedHit
+                                                 : PageState::CachedIdle);
+  }
+  return out;
+}
+
+std::vector<float> cachePoolLevels(const PageCache& cache) {
+  const int capacity = cache.pool().capacity();
+  std::vector<PageId> held;
+  std::vector<int> slots;
+  for (int s = 0; s < capacity; ++s)
+    if (cache.lastUsed(s) >= 0) {
+      held.push_back(cache.pageIn(s));
+      slots.push_back(s);
+    }
+  return pages::poolLevels(held, slots, capacity);
 }
 
 }  // namespace sl::adaptive

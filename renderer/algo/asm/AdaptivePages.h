@@ -77,8 +77,12 @@ class PageCache {
   /// Drops every page and allocates the coarse level again; returns its pages (to render,
   /// in row order) and their slots through `slots`.
   std::vector<PageId> invalidate(std::vector<int>& slots);
-  /// A new frame: pages used before it become candidates for eviction.
-  void beginFrame() { ++frame_; }
+  /// A new frame: pages used before it become candidates for eviction; evictedThisFrame()
+  /// starts empty.
+  void beginFrame() {
+    ++frame_;
+    evicted_.clear();
+  }
   /// One iteration's sorted unique keys (pages::sortUnique of the compacted list): touches
   /// mark their pages used this frame; requests, coarsest level first, take a free slot, else
   /// the least recently used page not used this frame (oldest frame, then lowest slot; coarse
@@ -109,9 +113,18 @@ class PageCache {
   int coarseLevel_ = 0;
   std::vector<Slot> slots_;
   std::uint64_t frame_ = 0;
-  std::uint64_t evictedFrame_ = 0;
   std::vector<PageId> evicted_;
   int invalidations_ = 0;
 };
+
+/// The Pages panel's page table for the cache after a frame: per entry of `level`, row by row,
+/// a pages::PageState: New (allocated this frame), CachedHit (allocated earlier, used this
+/// frame), CachedIdle (allocated earlier, unused), else Evicted (evicted this frame), else
+/// Pending (in `requested`, this frame's sorted unique request keys, without kTouchBit), else
+/// Empty.
+std::vector<float> cacheLevelStates(const PageCache& cache, std::span<const PageKey> requested,
+                                    int level);
+/// Per pool slot: the level of the page the cache holds there, NaN when free.
+std::vector<float> cachePoolLevels(const PageCache& cache);
 
 }  // namespace sl::adaptive

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 namespace sl::pages {
 
@@ -56,13 +57,47 @@ std::vector<float> requestHeat(const VirtualLayout& layout, std::span<const Page
   return heat[0];
 }
 
-std::vector<float> poolLevels(const Allocation& allocation, int capacity) {
+std::vector<float> poolLevels(std::span<const PageId> pages, std::span<const int> slots,
+                              int capacity) {
   std::vector<float> out(static_cast<std::size_t>(std::max(capacity, 0)),
                          std::numeric_limits<float>::quiet_NaN());
-  for (std::size_t i = 0; i < allocation.pages.size(); ++i) {
-    const int s = allocation.slots[i];
-    if (s >= 0 && s < capacity) out[static_cast<std::size_t>(s)] = float(allocation.pages[i].level);
+  for (std::size_t i = 0; i < std::min(pages.size(), slots.size()); ++i) {
+    const int s = slots[i];
+    if (s >= 0 && s < capacity) out[static_cast<std::size_t>(s)] = float(pages[i].level);
   }
+  return out;
+}
+
+std::vector<std::uint8_t> pageBorders(std::span<const glm::vec2> uv,
+                                      std::span<const std::uint8_t> map,
+                                      std::span<const std::uint8_t> covered, int width, int height,
+                                      std::span<const int> pagesPerSide) {
+  const std::size_t n = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
+  if (uv.size() != n || map.size() != n || covered.size() != n)
+    throw std::invalid_argument("pageBorders: the images must hold width x height pixels");
+  // Per pixel: its page (map, x, y), or map = -1 when uncovered or its map has no pages.
+  std::vector<glm::ivec3> page(n, glm::ivec3(-1));
+  for (std::size_t i = 0; i < n; ++i) {
+    const int m = map[i];
+    const int cells = m < int(pagesPerSide.size()) ? pagesPerSide[std::size_t(m)] : 0;
+    if (!covered[i] || cells <= 0) continue;
+    const glm::ivec2 c = glm::clamp(glm::ivec2(glm::floor(uv[i] * float(cells))), glm::ivec2(0),
+                                    glm::ivec2(cells - 1));
+    page[i] = glm::ivec3(m, c);
+  }
+  std::vector<std::uint8_t> out(n, 0);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const glm::ivec3 k = page[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+      if (k.x < 0) continue;
+      const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
+      for (int d = 0; d < 4; ++d) {
+        const int qx = x + dx[d], qy = y + dy[d];
+        if (qx < 0 || qy < 0 || qx >= width || qy >= height) continue;
+        const glm::ivec3 o = page[std::size_t(qy) * std::size_t(width) + std::size_t(qx)];
+        if (o.x >= 0 && o != k) out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = 1;
+      }
+    }
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "algo/Focus.h"
 #include "algo/pages/PageRequests.h"
+#include "algo/pages/PageViews.h"
 #include "common/shared_constants.h"
 #include "core/LightBinding.h"
 #include "core/Publish.h"
@@ -145,6 +146,8 @@ TechniqueInfo AsmShadowMap::info() {
   info.publications[7].what = "Pages the pool holds after this frame (coarse map included).";
   info.publications[8].what = "Times the cache was dropped since the technique was made.";
   info.publications[9].what = "Pages the pool holds at most (pool.pages).";
+  // The Pages panel's page table, pool and requests, as rmsm's (the cache's states).
+  for (PublicationDecl& d : pagedMapPublicationDecls()) info.publications.push_back(std::move(d));
   return info;
 }
 
@@ -241,6 +244,15 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "asm.cached", cache_->pool().usedCount());
   publishNumber(ctx, "asm.invalidations", cache_->invalidations());
   publishNumber(ctx, "asm.pool", poolPages);
+  last_.requested = pages::sortUnique(last_.requestKeys);
+  map_.publish(ctx,
+               {.table = &cache_->table(),
+                .levelStates =
+                    [&](int l) { return adaptive::cacheLevelStates(*cache_, last_.requested, l); },
+                .requests = last_.requestKeys,
+                .poolLevels = [&] { return adaptive::cachePoolLevels(*cache_); },
+                .requested = int(last_.requested.size()),
+                .allocated = cache_->pool().usedCount()});
 }
 
 void AsmShadowMap::findEdges(FrameContext& ctx) {
@@ -290,6 +302,9 @@ bool AsmShadowMap::iterate(FrameContext& ctx, int iteration, int& budget) {
       glGetNamedBufferSubData(requestList_.id(), 4, GLsizeiptr(4 * last_.compacted.size()),
                               last_.compacted.data());
     last_.unique = pages::sortUnique(last_.compacted);
+    last_.uniquePerIteration.push_back(last_.unique);
+    for (pages::PageKey k : last_.compacted)
+      if (k != pages::kNoPage && (k & adaptive::kTouchBit) == 0) last_.requestKeys.push_back(k);
     r = cache_->refine(last_.unique, budget);
     budget -= int(r.allocated.size());
     if (!r.allocated.empty()) map_.uploadTable(cache_->table());

@@ -31,6 +31,7 @@ class AsmShadowMap : public Technique {
   std::vector<const gl::Program*> programs() const override {
     return {&depthProgram_, &testProgram_, &edgesProgram_, &compactProgram_};
   }
+  std::vector<int> pageGrid() const override { return map_.pageGrid(); }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
@@ -41,7 +42,12 @@ class AsmShadowMap : public Technique {
     std::vector<adaptive::Refinement> iterations;  ///< one per iteration run
     std::vector<pages::PageKey> compacted;         ///< the last iteration's GPU list
     std::vector<pages::PageKey> unique;            ///< ... sorted, unique
-    int newPages = 0;                              ///< rendered this frame (coarse map aside)
+    /// Every iteration's sorted unique keys (touches included): what the page cache was fed.
+    std::vector<std::vector<pages::PageKey>> uniquePerIteration;
+    /// Every iteration's compacted requests (touches aside) and their sorted unique keys: the
+    /// Pages panel's heat map and pending pages.
+    std::vector<pages::PageKey> requestKeys, requested;
+    int newPages = 0;  ///< rendered this frame (coarse map aside)
   };
   const FrameResult& lastFrame() const { return last_; }
   const adaptive::PageCache* cache() const { return cache_.get(); }

@@ -4,7 +4,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algo/pages/PageViews.h"
 #include "common/shared_constants.h"
+#include "core/Publish.h"
 #include "core/SceneGpu.h"
 
 namespace sl {
@@ -71,6 +73,86 @@ std::vector<ParamDecl> pagedMapParamDecls() {
               "pages.coarsened).",
       .memoryKnob = true});
   return p;
+}
+
+std::vector<PublicationDecl> pagedMapPublicationDecls() {
+  return {
+      {"pages.table.*",
+       PublicationKind::ImageSet,
+       "Page table level i (0 = finest), one cell per entry, a PageState (algo/pages/PageViews): "
+       "rmsm 0 empty, 1 requested and allocated, 2 allocated unasked (top level, ancestor of "
+       "coarsened requests), 3 requested but coarsened (pool ran out); asm 4 allocated this "
+       "frame, 5 cached and used (hit), 6 cached unused, 7 evicted this frame, 8 requested, not "
+       "allocated. CPU data, no readback.",
+       "",
+       {}},
+      {"pages.served",
+       PublicationKind::Image,
+       "Per finest page: the level of the page serving it (its finest allocated ancestor).",
+       "",
+       {}},
+      {"pages.requests.heat",
+       PublicationKind::Image,
+       "Per finest page: how many of this frame's compacted requests ask for a page holding it.",
+       "",
+       {}},
+      {"pages.pool.levels",
+       PublicationKind::Curve,
+       "Per pool slot: the level of the page it holds (NaN: free).",
+       "",
+       {}},
+      {"pages.pool.depth", PublicationKind::Image,
+       "The physical pool's depth texture as rendered (0..1), pages side by side.",
+       "4 B x pool texels (ceil(sqrt(pool.pages)) columns of page.size^2)",
+       [](const ParamSet& ps) {
+         const std::uint64_t pages = std::uint64_t(ps.getInt("pool.pages"));
+         const std::uint64_t cols = std::uint64_t(poolColumnsFor(int(pages)));
+         const std::uint64_t rows = (pages + cols - 1) / cols;
+         const std::uint64_t side = std::uint64_t(ps.getInt("page.size"));
+         return 4 * cols * rows * side * side;
+       }},
+      {"pages.pool.columns", PublicationKind::Number, "Pages per row of the pool.", "", {}},
+      {"pages.requests.compacted",
+       PublicationKind::Number,
+       "Requests left after dedup and compaction (the GPU list's length; asm: all iterations' "
+       "requests, touches aside).",
+       "",
+       {}},
+      {"pages.requested", PublicationKind::Number, "Unique pages requested this frame.", "", {}},
+      {"pages.allocated",
+       PublicationKind::Number,
+       "Pool slots in use after the frame (the top level or coarse map included).",
+       "",
+       {}},
+      {"pages.pool", PublicationKind::Number, "Pages the pool holds (pool.pages).", "", {}},
+  };
+}
+
+void PagedMap::publish(FrameContext& ctx, const PageViewsFrame& f) const {
+  publishNumber(ctx, "pages.requests.compacted", double(f.requests.size()));
+  publishNumber(ctx, "pages.requested", f.requested);
+  publishNumber(ctx, "pages.allocated", f.allocated);
+  publishNumber(ctx, "pages.pool", poolPages_);
+  publishNumber(ctx, "pages.pool.columns", poolColumns_);
+  for (int l = 0; l < layout_.levels(); ++l) {
+    const std::string key = "pages.table." + std::to_string(l);
+    if (ctx.wants(key))
+      publishImage(ctx, key, layout_.pagesPerSide(l), layout_.pagesPerSide(l), f.levelStates(l));
+  }
+  const int finest = layout_.finestPagesPerSide();
+  if (ctx.wants("pages.served"))
+    publishImage(ctx, "pages.served", finest, finest, pages::servedLevels(*f.table));
+  if (ctx.wants("pages.requests.heat"))
+    publishImage(ctx, "pages.requests.heat", finest, finest,
+                 pages::requestHeat(layout_, f.requests));
+  if (ctx.wants("pages.pool.levels")) publishValues(ctx, "pages.pool.levels", f.poolLevels());
+  publishDepth(ctx, "pages.pool.depth", poolMap_);
+}
+
+std::vector<int> PagedMap::pageGrid() const {
+  std::vector<int> n;
+  for (int l = 0; l < layout_.levels(); ++l) n.push_back(layout_.pagesPerSide(l));
+  return n;
 }
 
 void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help) {

@@ -5,6 +5,7 @@
 // The CPU side (layout, page table, pool allocator) is algo/pages.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -23,6 +24,23 @@ class SceneGpu;
 std::vector<ParamDecl> pagedMapParamDecls();
 /// Replaces the help text of `key` in `decls`; throws std::logic_error when it is absent.
 void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help);
+
+/// The Pages panel's publications, declared once for rmsm and asm (pages.table.*, pages.served,
+/// pages.requests.heat, pages.pool.levels, pages.pool.depth, pages.pool.columns,
+/// pages.requests.compacted, pages.requested, pages.allocated, pages.pool).
+std::vector<PublicationDecl> pagedMapPublicationDecls();
+
+/// A paged technique's frame as the Pages panel shows it (CPU data; published by
+/// PagedMap::publish only where requested).
+struct PageViewsFrame {
+  const pages::PageTable* table = nullptr;
+  /// Per level: a pages::PageState per entry (pages::levelStates, adaptive::cacheLevelStates).
+  std::function<std::vector<float>(int level)> levelStates;
+  std::span<const pages::PageKey> requests;        ///< this frame's compacted requests (heat map)
+  std::function<std::vector<float>()> poolLevels;  ///< per slot: its page's level, NaN free
+  int requested = 0;                               ///< unique pages requested this frame
+  int allocated = 0;                               ///< pool slots in use after the frame
+};
 
 /// Columns of a pool's page grid: the smallest square holding `pages`.
 int poolColumnsFor(int pages);
@@ -53,6 +71,11 @@ class PagedMap {
   /// The paged lookup's bindings: every level a map of the shared bias model with `view`'s
   /// matrix, the pool at unit firstUnit, the page table at firstUnit + 1.
   void bindLookup(const gl::Program& p, int firstUnit, const DepthMapView& view) const;
+  /// The Pages panel's publications of `frame` (pagedMapPublicationDecls), each only while
+  /// requested; the pool's depth is the only readback.
+  void publish(FrameContext& ctx, const PageViewsFrame& frame) const;
+  /// Pages per side of every level (Technique::pageGrid: the page-border overlay).
+  std::vector<int> pageGrid() const;
   /// The pool's and the page table's bytes.
   void addMemory(MemoryStats& m) const;
 

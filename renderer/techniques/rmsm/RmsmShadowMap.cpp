@@ -54,59 +54,21 @@ TechniqueInfo RmsmShadowMap::info() {
        "page, into its slot of the pool (a viewport of page.size² texels).",
        "pages"},
   };
-  info.publications = {
-      {"pages.table.*",
-       PublicationKind::ImageSet,
-       "Page table level i (0 = finest), one cell per entry: 0 empty, 1 requested and "
-       "allocated, 2 allocated unasked (top level, ancestor of coarsened requests), 3 requested "
-       "but coarsened (pool ran out). CPU data, no readback.",
-       "",
-       {}},
-      {"pages.served",
-       PublicationKind::Image,
-       "Per finest page: the level of the page serving it (its finest allocated ancestor).",
-       "",
-       {}},
-      {"pages.requests.heat",
-       PublicationKind::Image,
-       "Per finest page: how many of this frame's compacted requests ask for a page holding it.",
-       "",
-       {}},
-      {"pages.pool.levels",
-       PublicationKind::Curve,
-       "Per pool slot: the level of the page it holds (NaN: free).",
-       "",
-       {}},
-      {"pages.pool.depth", PublicationKind::Image,
-       "The physical pool's depth texture as rendered (0..1), pages side by side.",
-       "4 B x pool texels (ceil(sqrt(pool.pages)) columns of page.size^2)",
-       [](const ParamSet& ps) {
-         const std::uint64_t pages = std::uint64_t(ps.getInt("pool.pages"));
-         const std::uint64_t cols = std::uint64_t(poolColumnsFor(int(pages)));
-         const std::uint64_t rows = (pages + cols - 1) / cols;
-         const std::uint64_t side = std::uint64_t(ps.getInt("page.size"));
-         return 4 * cols * rows * side * side;
-       }},
-      {"pages.pool.columns", PublicationKind::Number, "Pages per row of the pool.", "", {}},
-      {"pages.requests.compacted",
-       PublicationKind::Number,
-       "Requests left after dedup and compaction (the GPU list's length).",
-       "",
-       {}},
-      {"pages.requested", PublicationKind::Number, "Unique pages requested.", "", {}},
-      {"pages.allocated", PublicationKind::Number, "Pages allocated (root included).", "", {}},
-      {"pages.coarsened",
-       PublicationKind::Number,
-       "Requests that got a coarser page because the pool ran out.",
-       "",
-       {}},
-      {"pages.pool", PublicationKind::Number, "Pages the pool holds (pool.pages).", "", {}},
-      {"pages.superpages",
-       PublicationKind::Number,
-       "1024² superpages the allocated pages fall into (Lefohn et al.'s render unit).",
-       "",
-       {}},
-  };
+  info.publications = pagedMapPublicationDecls();
+  info.publications.insert(
+      info.publications.end(),
+      {
+          {"pages.coarsened",
+           PublicationKind::Number,
+           "Requests that got a coarser page because the pool ran out.",
+           "",
+           {}},
+          {"pages.superpages",
+           PublicationKind::Number,
+           "1024² superpages the allocated pages fall into (Lefohn et al.'s render unit).",
+           "",
+           {}},
+      });
   return info;
 }
 
@@ -139,28 +101,15 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   allocate(ctx);
   renderPages(ctx);
 
-  publishNumber(ctx, "pages.requests.compacted", double(last_.compacted.size()));
-  publishNumber(ctx, "pages.requested", last_.allocation.requested);
-  publishNumber(ctx, "pages.allocated", double(last_.allocation.pages.size()));
   publishNumber(ctx, "pages.coarsened", last_.allocation.coarsened);
-  publishNumber(ctx, "pages.pool", poolPages);
   publishNumber(ctx, "pages.superpages", last_.superpages);
-  publishNumber(ctx, "pages.pool.columns", map_.poolColumns());
-  for (int l = 0; l < layout_.levels(); ++l) {
-    const std::string key = "pages.table." + std::to_string(l);
-    if (ctx.wants(key))
-      publishImage(ctx, key, layout_.pagesPerSide(l), layout_.pagesPerSide(l),
-                   pages::levelStates(*table_, last_.unique, l));
-  }
-  const int finest = layout_.finestPagesPerSide();
-  if (ctx.wants("pages.served"))
-    publishImage(ctx, "pages.served", finest, finest, pages::servedLevels(*table_));
-  if (ctx.wants("pages.requests.heat"))
-    publishImage(ctx, "pages.requests.heat", finest, finest,
-                 pages::requestHeat(layout_, last_.compacted));
-  if (ctx.wants("pages.pool.levels"))
-    publishValues(ctx, "pages.pool.levels", pages::poolLevels(last_.allocation, poolPages));
-  publishDepth(ctx, "pages.pool.depth", map_.poolTexture());
+  map_.publish(ctx,
+               {.table = table_.get(),
+                .levelStates = [&](int l) { return pages::levelStates(*table_, last_.unique, l); },
+                .requests = last_.compacted,
+                .poolLevels = [&] { return pages::poolLevels(last_.allocation, poolPages); },
+                .requested = last_.allocation.requested,
+                .allocated = int(last_.allocation.pages.size())});
 }
 
 void RmsmShadowMap::requestPages(FrameContext& ctx) {

@@ -26,6 +26,7 @@ class RmsmShadowMap : public Technique {
   std::vector<const gl::Program*> programs() const override {
     return {&depthProgram_, &requestProgram_, &compactProgram_};
   }
+  std::vector<int> pageGrid() const override { return map_.pageGrid(); }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 

@@ -2,10 +2,12 @@
 #include "PagesPanel.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <QComboBox>
 #include <QHBoxLayout>
+#include <QJsonObject>
 #include <QLabel>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -18,18 +20,52 @@ namespace {
 enum View { Table = 0, Served, Heat, PoolLevels, PoolDepth };
 constexpr std::size_t kHistory = 300;  ///< frames of pool use kept
 
-/// The page-table state colours (PageState 0..3) and their legend.
-QRgb stateColour(float v) {
-  switch (int(v)) {
-    case int(pages::PageState::Requested):
-      return qRgb(60, 190, 90);
-    case int(pages::PageState::Fallback):
-      return qRgb(70, 110, 230);
-    case int(pages::PageState::Coarsened):
-      return qRgb(230, 60, 50);
-    default:
-      return qRgb(40, 40, 44);
+/// Every page-table state (pages::PageState 0..8): its colour, legend text and name in
+/// drawnValues. RMSM's frames use 0..3, ASM's cache 0 and 4..8.
+struct StateStyle {
+  pages::PageState state;
+  QRgb colour;
+  const char* legend;
+  const char* id;
+};
+constexpr StateStyle kStates[pages::kPageStates] = {
+    {pages::PageState::Empty, qRgb(40, 40, 44), "empty", "empty"},
+    {pages::PageState::Requested, qRgb(60, 190, 90), "requested", "requested"},
+    {pages::PageState::Fallback, qRgb(70, 110, 230),
+     "allocated unasked (top level, ancestor of coarsened)", "fallback"},
+    {pages::PageState::Coarsened, qRgb(230, 60, 50), "requested, coarsened (pool ran out)",
+     "coarsened"},
+    {pages::PageState::New, qRgb(120, 230, 70), "allocated this frame", "new"},
+    {pages::PageState::CachedHit, qRgb(40, 180, 210), "cached, used (hit)", "cached_hit"},
+    {pages::PageState::CachedIdle, qRgb(60, 80, 150), "cached, unused", "cached_idle"},
+    {pages::PageState::Evicted, qRgb(245, 150, 30), "evicted this frame", "evicted"},
+    {pages::PageState::Pending, qRgb(225, 50, 150), "requested, not allocated (budget, pool)",
+     "requested_waiting"},
+};
+
+const StateStyle& styleOf(float v) {
+  const int i = int(v);
+  return kStates[i >= 0 && i < pages::kPageStates ? i : 0];
+}
+
+/// One level of the page table as drawn (row 0 at the bottom).
+QImage tableImage(const sl::FloatImage& t) {
+  QImage img(t.width, t.height, QImage::Format_RGB32);
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x)
+      img.setPixel(x, t.height - 1 - y, styleOf(t.values[size_t(y) * t.width + x]).colour);
+  return img;
+}
+
+/// The legend of `states` as rich text.
+QString legendText(std::initializer_list<pages::PageState> states) {
+  QStringList parts;
+  for (pages::PageState s : states) {
+    const StateStyle& st = kStates[int(s)];
+    parts << QStringLiteral("<span style='color:%1'>■</span> %2")
+                 .arg(QColor(st.colour).name(), QObject::tr(st.legend));
   }
+  return parts.join(QStringLiteral(", "));
 }
 }  // namespace
 
@@ -70,10 +106,12 @@ PagesPanel::PagesPanel(QWidget* parent) : PublicationPanel(parent) {
 }
 
 std::set<std::string> PagesPanel::observedKeys() const {
+  // asm.*: the cache's own counts, shown next to the cells the table draws.
   return {"pages.table.*",     "pages.served",     "pages.requests.heat",
           "pages.pool.levels", "pages.pool.depth", "pages.pool.columns",
           "pages.requested",   "pages.allocated",  "pages.coarsened",
-          "pages.pool",        "pages.superpages", "pages.requests.compacted"};
+          "pages.pool",        "pages.superpages", "pages.requests.compacted",
+          "asm.new",           "asm.hits",         "asm.evicted"};
 }
 
 void PagesPanel::showPublication(const sl::Publication& pub) {
@@ -101,36 +139,79 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
   level_->setRange(0, std::max(levels_ - 1, 0));
   const double requested = number("pages.requested"), allocated = number("pages.allocated"),
                pool = number("pages.pool"), coarsened = number("pages.coarsened");
-  info_->setText(
-      tr("%1 requests after dedup, %2 unique pages; <b>%3 of %4</b> pool pages used, %5 "
-         "superpages; <b>%6</b> requests coarsened (pool ran out).<br>Page table: "
-         "<span style='color:#3cbe5a'>■</span> requested, "
-         "<span style='color:#466ee6'>■</span> allocated unasked (top level, ancestor of "
-         "coarsened), <span style='color:#e63c32'>■</span> requested, coarsened, "
-         "<span style='color:#28282c'>■</span> empty.")
-          .arg(number("pages.requests.compacted"))
-          .arg(requested)
-          .arg(allocated)
-          .arg(pool)
-          .arg(number("pages.superpages"))
-          .arg(coarsened));
+  // Every level's cells as drawn, counted by colour: a cache (ASM) draws states 4..8.
+  std::array<int, pages::kPageStates> cells{};
+  for (const auto& [key, image] : images_) {
+    if (key.rfind("pages.table.", 0) != 0) continue;
+    const QImage img = tableImage(image);
+    for (int y = 0; y < img.height(); ++y)
+      for (int x = 0; x < img.width(); ++x)
+        for (const StateStyle& st : kStates)
+          if (img.pixel(x, y) == st.colour) ++cells[std::size_t(st.state)];
+  }
+  auto count = [&](pages::PageState s) { return cells[std::size_t(s)]; };
+  using PS = pages::PageState;
+  const bool cache = count(PS::New) + count(PS::CachedHit) + count(PS::CachedIdle) +
+                         count(PS::Evicted) + count(PS::Pending) >
+                     0;
+  if (cache)
+    info_->setText(
+        tr("Page cache: %1 request keys after dedup (all iterations), %2 unique pages "
+           "requested; <b>%3 of %4</b> pool pages held: %5 allocated this frame, %6 cached "
+           "and used, %7 cached unused; %8 evicted this frame, %9 requested, not allocated."
+           "<br>Page table: ")
+            .arg(number("pages.requests.compacted"))
+            .arg(requested)
+            .arg(allocated)
+            .arg(pool)
+            .arg(count(PS::New))
+            .arg(count(PS::CachedHit))
+            .arg(count(PS::CachedIdle))
+            .arg(count(PS::Evicted))
+            .arg(count(PS::Pending)) +
+        legendText({PS::New, PS::Pending, PS::CachedHit, PS::CachedIdle, PS::Evicted, PS::Empty}) +
+        QStringLiteral("."));
+  else
+    info_->setText(tr("%1 requests after dedup, %2 unique pages; <b>%3 of %4</b> pool pages "
+                      "used, %5 superpages; <b>%6</b> requests coarsened (pool ran out).<br>Page "
+                      "table: ")
+                       .arg(number("pages.requests.compacted"))
+                       .arg(requested)
+                       .arg(allocated)
+                       .arg(pool)
+                       .arg(number("pages.superpages"))
+                       .arg(coarsened) +
+                   legendText({PS::Requested, PS::Fallback, PS::Coarsened, PS::Empty}) +
+                   QStringLiteral("."));
   if (!history_.empty() && double(pub.frameIndex) <= history_.back().frame) history_.clear();
-  history_.push_back({double(pub.frameIndex), allocated, requested, pool});
+  history_.push_back({double(pub.frameIndex), allocated, requested, pool, double(count(PS::New)),
+                      double(count(PS::Evicted))});
   while (history_.size() > kHistory) history_.pop_front();
-  PlotWidget::Series used{tr("allocated"), {}, QColor(60, 190, 90)};
+  PlotWidget::Series used{cache ? tr("held") : tr("allocated"), {}, QColor(60, 190, 90)};
   PlotWidget::Series asked{tr("unique pages requested"), {}, QColor(230, 60, 50)};
+  PlotWidget::Series fresh{tr("allocated this frame"), {}, QColor(kStates[int(PS::New)].colour)};
+  PlotWidget::Series gone{tr("evicted this frame"), {}, QColor(kStates[int(PS::Evicted)].colour)};
   for (const FrameUse& f : history_) {
     used.points.emplace_back(f.frame, f.allocated);
     asked.points.emplace_back(f.frame, f.requested);
+    fresh.points.emplace_back(f.frame, f.fresh);
+    gone.points.emplace_back(f.frame, f.evicted);
   }
-  use_->setSeries({used, asked});
+  if (cache)
+    use_->setSeries({used, asked, fresh, gone});
+  else
+    use_->setSeries({used, asked});
   use_->setLines({{pool, QColor(200, 200, 200), tr("pool.pages")}});
+  QJsonObject drawnCells;
+  for (const StateStyle& st : kStates) drawnCells[QLatin1String(st.id)] = count(st.state);
   drawn_ = {{QStringLiteral("frames"), int(history_.size())},
             {QStringLiteral("levels"), levels_},
             {QStringLiteral("requested"), requested},
             {QStringLiteral("allocated"), allocated},
             {QStringLiteral("pool"), pool},
-            {QStringLiteral("coarsened"), coarsened}};
+            {QStringLiteral("coarsened"), coarsened},
+            {QStringLiteral("cache"), cache},
+            {QStringLiteral("cells"), drawnCells}};
   redraw();
 }
 
@@ -144,17 +225,14 @@ void PagesPanel::redraw() {
   if (v == Table) {
     const sl::FloatImage* t = find("pages.table." + std::to_string(level_->value()));
     if (!t) return view_->clearImage(tr("no page table published"));
-    QImage img(t->width, t->height, QImage::Format_RGB32);
-    for (int y = 0; y < t->height; ++y)
-      for (int x = 0; x < t->width; ++x)
-        img.setPixel(x, t->height - 1 - y, stateColour(t->values[size_t(y) * t->width + x]));
-    view_->setImage(img, t->width, t->height);
+    view_->setImage(tableImage(*t), t->width, t->height);
     view_->setLegend({}, ColorMap::Grey, QString(), false);
     auto copy = std::make_shared<sl::FloatImage>(*t);
     view_->setValueReader([copy](int x, int y) {
-      static const char* names[] = {"empty", "requested", "allocated unasked", "coarsened"};
-      const int s = int(copy->values[size_t(y) * copy->width + x]);
-      return QObject::tr("page (%1, %2): %3").arg(x).arg(y).arg(names[std::clamp(s, 0, 3)]);
+      return QObject::tr("page (%1, %2): %3")
+          .arg(x)
+          .arg(y)
+          .arg(QObject::tr(styleOf(copy->values[size_t(y) * copy->width + x]).legend));
     });
     view_->setCaption(
         tr("page table, level %1 (%2 x %2 pages)").arg(level_->value()).arg(t->width));
@@ -204,8 +282,9 @@ void PagesPanel::redraw() {
 }
 
 void PagesPanel::highlightPass(const QString& passId) {
-  // RMSM's passes (ASM publishes its numbers only, not its page table: not shown here).
-  view_->setHighlighted(passId.startsWith(QLatin1String("rmsm")));
+  // RMSM's and ASM's passes (both publish their page table and pool here).
+  view_->setHighlighted(passId.startsWith(QLatin1String("rmsm")) ||
+                        passId.startsWith(QLatin1String("asm")));
 }
 
 QJsonObject PagesPanel::drawnValues() const {

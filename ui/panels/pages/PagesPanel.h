@@ -1,5 +1,7 @@
-// The Pages panel (rmsm): the page table per level (requested / allocated unasked /
-// coarsened because the pool ran out, colours with a legend), the level serving each finest
+// The Pages panel (rmsm and asm): the page table per level (rmsm: requested / allocated
+// unasked / coarsened because the pool ran out; asm's cache: allocated this frame / requested,
+// not allocated / cached and used / cached unused / evicted; colours with a legend, the cells
+// of every level counted as drawn), the level serving each finest
 // page, this frame's requests as a heat map, the pool with each slot's level, the pool's
 // depth, the frame's counts, and the pool's use over the last frames. Reads the pages.*
 // publications (algo/pages/PageViews.h).
@@ -38,7 +40,7 @@ class PagesPanel : public PublicationPanel {
   PlotWidget* use_ = nullptr;  ///< pool pages used and requested per frame
   QLabel* info_ = nullptr;
   struct FrameUse {
-    double frame, allocated, requested, pool;
+    double frame, allocated, requested, pool, fresh, evicted;
   };
   std::deque<FrameUse> history_;                  ///< the last kHistory frames published
   std::map<std::string, sl::FloatImage> images_;  ///< the last frame's pages.* images

@@ -46,6 +46,9 @@ const char* kUsage =
     "                            [--size WxH] [--frames N] [--camera NAME|INDEX]\n"
     "                            [--light LIGHT] [--preset FILE.json]\n"
     "                            --out FILE.png [--metrics FILE.json] [--error-image FILE.png]\n"
+    "                            [--wrong-pixels FILE.csv]\n"
+    "         (--wrong-pixels: one line per pixel whose hard test disagrees with the reference:\n"
+    "          where it is, its surface, m, the map and uv its lookup used)\n"
     "       shadowlab-cli compare [--scene NAME|FILE] [--technique ID[:KEY=V1,V2...]]...\n"
     "                            [--set KEY=VALUE]... [--size WxH] [--camera NAME|INDEX]\n"
     "                            [--light LIGHT] --out-dir DIR [--montage FILE.png]\n"
@@ -63,7 +66,7 @@ struct RenderConfig {
   std::string camera;
   std::optional<sl::Camera> presetCamera;  ///< a --preset's camera (a later --camera wins)
   std::optional<sl::Light> light;
-  std::string out, metrics, errorImage;
+  std::string out, metrics, errorImage, wrongPixels;
 };
 
 /// Techniques whose shadow map depends on earlier frames through a rotation (DA-RTW's R_k
@@ -205,6 +208,30 @@ std::string describeError(const sl::ShadowErrorStats& e) {
   return buf;
 }
 
+/// The pixels whose hard test disagrees with the reference, one CSV line each (row 0 = top):
+/// what was wrong, the surface there, the aliasing m, the map the lookup selected and the uv
+/// it looked up in it (render --wrong-pixels).
+std::string wrongPixelsCsv(const sl::Renderer::ErrorResult& err) {
+  const sl::FrameReadback& f = err.frame;
+  std::string out = "x,y,wrong,px,py,pz,nx,ny,nz,m,map,u,v\n";
+  char line[320];
+  for (int y = 0; y < f.height; ++y) {
+    for (int x = 0; x < f.width; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(f.width) + std::size_t(x);
+      const std::uint8_t tech = f.hardMask[i], ref = err.referenceMask[i];
+      if (tech == sl::kMaskUncovered || ref == sl::kMaskUncovered) continue;
+      const bool techLit = tech != sl::kMaskShadowed, refLit = ref != sl::kMaskShadowed;
+      if (techLit == refLit) continue;
+      const glm::vec4 p = f.positions[i], n = f.normals[i];
+      std::snprintf(line, sizeof line, "%d,%d,%s,%.6f,%.6f,%.6f,%.5f,%.5f,%.5f,%.5f,%d,%.8f,%.8f\n",
+                    x, y, techLit ? "false_lit" : "false_shadow", p.x, p.y, p.z, n.x, n.y, n.z,
+                    f.aliasing[i], int(f.mapIndex[i]), f.texel[i].x, f.texel[i].y);
+      out += line;
+    }
+  }
+  return out;
+}
+
 void configure(sl::Renderer& r, const RenderConfig& cfg, const std::shared_ptr<sl::Scene>& scene) {
   r.setScene(scene);
   if (auto e = r.setTechnique(cfg.technique)) throw UsageError("--technique: " + *e);
@@ -265,6 +292,8 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
       cfg.metrics = a.take(i, o);
     else if (o == "--error-image")
       cfg.errorImage = a.take(i, o);
+    else if (o == "--wrong-pixels")
+      cfg.wrongPixels = a.take(i, o);
     else if (o == "--light")
       cfg.light = parseLight(o, a.take(i, o));
     else if (o == "--preset") {
@@ -289,7 +318,10 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
 
 int cmdRender(Args& a) {
   RenderConfig cfg = parseRender(a, 1, true);
-  checkOutputs({{"--out", cfg.out}, {"--metrics", cfg.metrics}, {"--error-image", cfg.errorImage}},
+  checkOutputs({{"--out", cfg.out},
+                {"--metrics", cfg.metrics},
+                {"--error-image", cfg.errorImage},
+                {"--wrong-pixels", cfg.wrongPixels}},
                {{"--scene", cfg.scene}});
   sl::gl::EglContext ctx;
   checkFrameSize(cfg.width, cfg.height);
@@ -304,6 +336,7 @@ int cmdRender(Args& a) {
   if (!cfg.errorImage.empty())
     writePng(cfg.errorImage,
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
+  if (!cfg.wrongPixels.empty()) writeText(cfg.wrongPixels, wrongPixelsCsv(err));
   if (std::string w = describeWarmup(j); !w.empty())
     std::fprintf(w.rfind("note:", 0) == 0 ? stderr : stdout, "%s\n", w.c_str());
   std::printf("%s on %s: %.2f ms (%s), %llu texels, %s -> %s\n", r.techniqueId().c_str(),
@@ -355,6 +388,8 @@ int cmdCompare(Args& a) {
       rest.rest.push_back(o);
   }
   RenderConfig base = parseRender(rest, 1, false);
+  if (!base.wrongPixels.empty())
+    throw UsageError("--wrong-pixels: a render option (one configuration), not compare's");
   if (base.out.empty()) base.out = "shadowlab-out";
   checkOutputFolder("--out-dir", base.out);
   if (!montage.empty()) checkOutputs({{"--montage", montage}}, {{"--scene", base.scene}});

@@ -37,6 +37,13 @@ bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& 
   return true;
 }
 
+bool publishRed(FrameContext& ctx, const std::string& key, const gl::Texture& texture) {
+  if (!ctx.wants(key)) return false;
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  ctx.publication->images[key] = readImage(ctx, texture, GL_RED, GL_FLOAT);
+  return true;
+}
+
 bool publishFloatBits(FrameContext& ctx, const std::string& key, const gl::Texture& texture) {
   if (!ctx.wants(key)) return false;
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);

@@ -16,6 +16,9 @@ bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& 
 /// One layer of a depth array texture (cascades, faces) as a float image (0..1).
 bool publishDepthLayer(FrameContext& ctx, const std::string& key, const gl::Texture& depth,
                        int layer);
+/// The red channel of a colour texture (R32F, or the first channel of any float-readable
+/// format) as a float image.
+bool publishRed(FrameContext& ctx, const std::string& key, const gl::Texture& texture);
 /// An R32UI texture that holds float bits (atomicMax importance) as a float image.
 bool publishFloatBits(FrameContext& ctx, const std::string& key, const gl::Texture& texture);
 /// `count` floats of `buffer` from float `offset` on as a curve.

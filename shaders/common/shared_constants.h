@@ -144,5 +144,10 @@
 #define SL_FVSM_FOOTPRINT_BOX 0
 #define SL_FVSM_FOOTPRINT_CHORD 1
 #define SL_IMAGE_FVSM_SMTMM 0  // rgba32f: (sm u, sm v, need log2 u, need log2 v); need -1: empty
+// r32f: the FVSM panel's camera thumbnail (fvsm.camera: unshadowed N.L grey, -1 without a
+// surface, -2 outside the frame), written only while the panel asks for it
+#define SL_IMAGE_FVSM_CAMERA 1
+// Side of the FVSM panel's thumbnails (fvsm.camera, fvsm.light.depth), texels
+#define SL_FVSM_THUMBNAIL 256
 
 #endif  // SL_SHARED_CONSTANTS_H

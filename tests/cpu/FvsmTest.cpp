@@ -426,5 +426,23 @@ TEST(FvsmPublished, TileRecordsRoundTrip) {
   EXPECT_THROW(unpackTileRecords(bad), std::invalid_argument);
 }
 
+// The panel's camera thumbnail: the frame scaled to fit side² with its aspect kept, each
+// texel showing the pixel under its centre.
+TEST(FvsmThumbnail, KeepsTheAspectAndSamplesThePixelUnderEachCentre) {
+  EXPECT_EQ(thumbnailUsedSize({1280, 720}, 256), glm::ivec2(256, 144));
+  EXPECT_EQ(thumbnailUsedSize({720, 1280}, 256), glm::ivec2(144, 256));
+  EXPECT_EQ(thumbnailUsedSize({160, 90}, 256), glm::ivec2(256, 144));   // enlarged
+  EXPECT_EQ(thumbnailUsedSize({1000, 3}, 256), glm::ivec2(256, 1));     // 0.768 rounds to 1
+  EXPECT_EQ(thumbnailUsedSize({1000, 1}, 256), glm::ivec2(256, 1));     // never 0
+  EXPECT_EQ(thumbnailUsedSize({300, 200}, 256), glm::ivec2(256, 171));  // 170.67
+  EXPECT_THROW(thumbnailUsedSize({0, 10}, 256), std::invalid_argument);
+  // 1280 / 256 = 5 pixels per texel: texel t shows pixel 5t + 2 (its centre 5t + 2.5).
+  EXPECT_EQ(thumbnailSamplePixel({0, 0}, {256, 144}, {1280, 720}), glm::ivec2(2, 2));
+  EXPECT_EQ(thumbnailSamplePixel({255, 143}, {256, 144}, {1280, 720}), glm::ivec2(1277, 717));
+  // Enlarged: 160 pixels over 256 texels, texel 1's centre 1.5 x 0.625 = 0.9375 -> pixel 0.
+  EXPECT_EQ(thumbnailSamplePixel({1, 255}, {256, 144}, {160, 90}), glm::ivec2(0, 89));
+  EXPECT_EQ(thumbnailSamplePixel({2, 143}, {256, 144}, {160, 90}), glm::ivec2(1, 89));
+}
+
 }  // namespace
 }  // namespace sl::fvsm

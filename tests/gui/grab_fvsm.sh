@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The GUI on plane-box with fvsm: the FVSM panel draws the SMTMM's needs along both SM axes as
-# heat maps with the kd leaves' screen rectangles over them, the tile grid with the kd leaves
-# over the light's view, the neediest cell's histogram, the tiles' textures and the frame's
+# The GUI on plane-box with fvsm: the FVSM panel draws each kd leaf's screen rectangle over the
+# camera's image and the kd leaves over the light's view (depth), the SMTMM's needs along both
+# SM axes as heat maps with the rectangles over them, the tile grid with the kd leaves over it, the neediest cell's histogram, the tiles' textures and the frame's
 # kd-tree numbers (a real picture; published.json: what it drew, checked for consistency).
 # usage: grab_fvsm.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
@@ -14,7 +14,7 @@ start_xvfb
 
 rc=0
 timeout 300 "$app" --scene plane-box --technique fvsm --set fvsm.max_texture=256 \
-  --set fvsm.fallback.resolution=256 --grab "$out/fvsm" --grab-after 3 \
+  --set fvsm.fallback.resolution=256 --set fvsm.xi=0 --grab "$out/fvsm" --grab-after 3 \
   >"$out/fvsm.stdout" 2>"$out/fvsm.stderr" || rc=$?
 if [[ $rc -ne 0 ]]; then
   echo "FAIL: shadowlab (fvsm) exited with $rc; stderr:"
@@ -31,6 +31,15 @@ assert p["need_u"] >= 0 and p["need_v"] >= 0, p
 assert p["leaves_drawn"] == p["tiles"], p
 assert 1 <= p["rects_drawn"] <= p["leaves_drawn"], p
 assert p["grid_n"] == 16 and p["texture_kinds"] >= 1, p
+# The issue's two views: the rectangles over the camera image (the frame's aspect, its longer
+# side 256 texels, some with a surface), the leaves over the light's view (256², some
+# geometry nearer than the far plane).
+assert max(p["camera_w"], p["camera_h"]) == 256 and min(p["camera_w"], p["camera_h"]) >= 1, p
+assert p["camera_rects_drawn"] == p["rects_drawn"], p
+assert 0 < p["camera_surface_texels"] < p["camera_w"] * p["camera_h"], p
+assert (p["light_w"], p["light_h"]) == (256, 256), p
+assert p["light_leaves_drawn"] == p["tiles"], p
+assert 0 < p["light_geometry_texels"] <= 256 * 256, p
 # The histogram drawn is a real cell's: its buckets count each of its entries once per axis.
 assert p["cell_entries"] >= 1, p
 assert p["hist_u_total"] == p["cell_entries"] == p["hist_v_total"], p

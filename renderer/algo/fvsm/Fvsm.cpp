@@ -443,4 +443,24 @@ std::vector<TileRecord> unpackTileRecords(std::span<const float> values) {
   return out;
 }
 
+glm::ivec2 thumbnailUsedSize(glm::ivec2 frameSize, int side) {
+  if (frameSize.x <= 0 || frameSize.y <= 0 || side <= 0)
+    throw std::invalid_argument("thumbnailUsedSize: sizes must be positive");
+  const int longer = std::max(frameSize.x, frameSize.y);
+  // Integer rounding of side * length / longer (exact, no floating point).
+  const auto scaled = [&](int length) {
+    return std::clamp(int((std::int64_t(length) * side * 2 + longer) / (std::int64_t(2) * longer)),
+                      1, side);
+  };
+  return {scaled(frameSize.x), scaled(frameSize.y)};
+}
+
+glm::ivec2 thumbnailSamplePixel(glm::ivec2 t, glm::ivec2 used, glm::ivec2 frameSize) {
+  // floor((t + ½) frame / used) = floor((2t + 1) frame / (2 used)), in integers.
+  const auto axis = [](int ti, int u, int f) {
+    return std::min(int((std::int64_t(2 * ti + 1) * f) / (std::int64_t(2) * u)), f - 1);
+  };
+  return {axis(t.x, used.x, frameSize.x), axis(t.y, used.y, frameSize.y)};
+}
+
 }  // namespace sl::fvsm

@@ -254,6 +254,15 @@ void tileScreenRectPixels(const EntryRect& rect, glm::ivec2 smtmmSize, glm::ivec
                           int marginEntries, glm::ivec2& minPixel, glm::ivec2& maxPixel);
 
 // ---------------------------------------------------------------------------------------
+// The FVSM panel's camera thumbnail (fvsm.camera; shaders/fvsm/camera_thumbnail.comp): the
+// frame scaled into a side x side image with its aspect kept, from the bottom-left.
+
+/// The frame's part of the thumbnail: the longer side `side`, the other rounded, >= 1.
+glm::ivec2 thumbnailUsedSize(glm::ivec2 frameSize, int side);
+/// The frame pixel thumbnail texel `t` (inside `used`) shows: the pixel under its centre.
+glm::ivec2 thumbnailSamplePixel(glm::ivec2 t, glm::ivec2 used, glm::ivec2 frameSize);
+
+// ---------------------------------------------------------------------------------------
 // What the renderer publishes for the FVSM panel (plain floats, so that the panel needs no
 // GL and the CPU tests can check the layout exactly).
 

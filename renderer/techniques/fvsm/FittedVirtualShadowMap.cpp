@@ -16,6 +16,8 @@ namespace sl {
 namespace {
 
 constexpr int kMinTextureLog2 = 4;  ///< the smallest tile side: 16 texels
+/// The FVSM panel's thumbnails (fvsm.camera, fvsm.light.depth): this many texels per axis.
+constexpr int kThumbnail = SL_FVSM_THUMBNAIL;
 
 bool isPowerOfTwo(int v) {
   return v > 0 && (v & (v - 1)) == 0;
@@ -38,13 +40,14 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .label = "Quality ξ",
        .group = "FVSM",
        .type = ParamType::Int,
-       .defaultValue = 0,
+       .defaultValue = -3,
        .minValue = fvsm::kMinXi,
        .maxValue = 12,
        .step = 1,
        .help = "ξ: subtracted from every log2 resolution need before the traversal (Giegl & "
                "Wimmer §4.9): each step halves the texels per axis everywhere. Large ξ: one "
-               "ordinary shadow map; below 0: finer than the SMTMM's sub-pixel need."},
+               "ordinary shadow map; below 0: finer than the SMTMM's sub-pixel need (default "
+               "−3: the error of the 16 x 16 x 4096² brute force on diagonal, README)."},
       {.key = "fvsm.texture.mode",
        .label = "Tile textures",
        .group = "FVSM",
@@ -216,6 +219,18 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        "each grid cell's need histogram, 2 (η1 − η0 + 1) channels: the buckets along u, then "
        "along v (algo/fvsm gridHistogramChannels)",
        "0 B (the CPU's grid)", [](const ParamSet&) { return std::uint64_t(0); }},
+      {"fvsm.camera", PublicationKind::Image,
+       "the camera's image for the panel's screen rectangles: the frame scaled into " +
+           std::to_string(kThumbnail) +
+           "² with its aspect kept, from the bottom-left (−2 "
+           "beyond the frame); unshadowed N.L grey, −1 without a surface",
+       "4 B x " + std::to_string(kThumbnail) + "²",
+       [](const ParamSet&) { return std::uint64_t(4) * kThumbnail * kThumbnail; }},
+      {"fvsm.light.depth", PublicationKind::Image,
+       "the light's view for the panel's kd leaves: the whole fit's depth (0..1) at " +
+           std::to_string(kThumbnail) + "²; row 0 at v = 0",
+       "4 B x " + std::to_string(kThumbnail) + "²",
+       [](const ParamSet&) { return std::uint64_t(4) * kThumbnail * kThumbnail; }},
       {"fvsm.tiles.list", PublicationKind::Curve,
        "the kd leaves, 17 floats each (algo/fvsm packTileRecords): level, index, need, texture "
        "log2, texture and viewport size, screen rectangle in SMTMM entries, unmet",
@@ -228,7 +243,10 @@ TechniqueInfo FittedVirtualShadowMap::info() {
 FittedVirtualShadowMap::FittedVirtualShadowMap(const gl::ShaderLibrary& lib)
     : depth_(lib, depthProgramDesc()),
       apply_(lib, applyTileProgramDesc()),
-      smtmm_(lib, {"fvsm/smtmm", {{GL_COMPUTE_SHADER, "fvsm/smtmm.comp"}}, {}, {}}) {}
+      smtmm_(lib, {"fvsm/smtmm", {{GL_COMPUTE_SHADER, "fvsm/smtmm.comp"}}, {}, {}}),
+      cameraThumb_(
+          lib,
+          {"fvsm/camera_thumbnail", {{GL_COMPUTE_SHADER, "fvsm/camera_thumbnail.comp"}}, {}, {}}) {}
 
 void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
   const ParamSet& p = ctx.params;
@@ -284,6 +302,26 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     raw.resize(std::size_t(smtmmSize_.x) * std::size_t(smtmmSize_.y));
     glGetTextureImage(smtmmTexture_.id(), 0, GL_RGBA, GL_FLOAT,
                       GLsizei(raw.size() * sizeof(glm::vec4)), raw.data());
+  }
+  if (ctx.wants("fvsm.camera")) {  // the panel's camera image
+    if (!cameraTexture_) cameraTexture_ = gl::Texture::create2D(GL_R32F, kThumbnail, kThumbnail);
+    const glm::ivec2 used = fvsm::thumbnailUsedSize(frameSize_, kThumbnail);
+    cameraThumb_.use();
+    cameraThumb_.set("u_frameSize", frameSize_);
+    cameraThumb_.set("u_used", used);
+    cameraThumb_.set("u_towardsLight", ctx.light.directionalTowards());
+    glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+    glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
+    glBindImageTexture(SL_IMAGE_FVSM_CAMERA, cameraTexture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_R32F);
+    glDispatchCompute(GLuint((kThumbnail + 7) / 8), GLuint((kThumbnail + 7) / 8), 1);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    publishRed(ctx, "fvsm.camera", cameraTexture_);
+  }
+  if (ctx.wants("fvsm.light.depth")) {  // the panel's light view: the whole fit, small
+    lightThumb_.ensure(glm::ivec2(kThumbnail), "fvsm light-view thumbnail");
+    renderDepth(ctx, depth_, lightThumb_.fbo.id(), kThumbnail, kThumbnail, full_.lightViewProj);
+    publishDepth(ctx, "fvsm.light.depth", lightThumb_.texture);
   }
   if (ctx.wants("fvsm.smtmm")) {  // read back anyway: publishing it costs no readback
     FloatImage img{smtmmSize_.x, smtmmSize_.y, 4, {}};
@@ -394,12 +432,18 @@ MemoryStats FittedVirtualShadowMap::memory() const {
     m.add("SMTMM", gl::formatName(smtmmTexture_.format()), smtmmTexture_.width(),
           smtmmTexture_.height(), 1, gl::bytesPerTexel(smtmmTexture_.format()));
   for (const auto& [size, target] : targets_) target.addMemory(m, "tile texture");
+  if (cameraTexture_)
+    m.add("camera thumbnail (panel)", gl::formatName(cameraTexture_.format()),
+          cameraTexture_.width(), cameraTexture_.height(), 1,
+          gl::bytesPerTexel(cameraTexture_.format()));
+  lightThumb_.addMemory(m, "light-view thumbnail (panel)");
   return m;
 }
 
 std::optional<std::string> FittedVirtualShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
   if (auto e = depth_.rebuild(lib)) return e;
   if (auto e = apply_.rebuild(lib)) return e;
+  if (auto e = cameraThumb_.rebuild(lib)) return e;
   return smtmm_.rebuild(lib);
 }
 

@@ -24,7 +24,9 @@ class FittedVirtualShadowMap : public Technique {
   void renderShadows(FrameContext& ctx) override;
   ResolveMode resolveMode() const override { return ResolveMode::Deferred; }
   void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override;
-  std::vector<const gl::Program*> programs() const override { return {&depth_, &apply_, &smtmm_}; }
+  std::vector<const gl::Program*> programs() const override {
+    return {&depth_, &apply_, &smtmm_, &cameraThumb_};
+  }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
@@ -38,7 +40,13 @@ class FittedVirtualShadowMap : public Technique {
   gl::Program depth_;
   gl::Program apply_;
   gl::Program smtmm_;
+  gl::Program cameraThumb_;
   gl::Texture smtmmTexture_;
+  // The FVSM panel's views, allocated only once it asks for them (fvsm.camera,
+  // fvsm.light.depth): the camera's image at one pixel per SMTMM entry, and the whole fit's
+  // depth at kLightThumbnail² texels.
+  gl::Texture cameraTexture_;
+  TileDepthTarget lightThumb_;
   std::map<std::pair<int, int>, TileDepthTarget> targets_;  ///< tile textures by (width, height)
   DepthMapView full_;
   glm::ivec2 smtmmSize_{0}, frameSize_{0};

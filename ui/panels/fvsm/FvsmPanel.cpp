@@ -20,24 +20,44 @@ constexpr int kGridNeedU = 0, kGridNeedV = 1, kGridEntries = 2;  // fvsm.grid (g
 QColor leafColor(std::size_t k) {
   return QColor::fromHsv(int((k * 67) % 360), 200, 255);
 }
+
+/// The frame's part of the camera thumbnail (fvsm.camera: the frame from the bottom-left,
+/// −2 beyond it), as its own image; empty when there is none.
+sl::FloatImage framePart(const sl::FloatImage& thumb) {
+  if (thumb.width <= 0 || thumb.height <= 0 || thumb.channels != 1) return {};
+  int w = 0, h = 0;
+  while (w < thumb.width && thumb.values[std::size_t(w)] > -1.5f) ++w;
+  while (h < thumb.height && thumb.values[std::size_t(h) * thumb.width] > -1.5f) ++h;
+  sl::FloatImage out{w, h, 1, {}};
+  out.values.reserve(std::size_t(w) * std::size_t(h));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      out.values.push_back(thumb.values[std::size_t(y) * thumb.width + x]);
+  return out;
+}
 }  // namespace
 
 FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
   auto* content = new QWidget;
   auto* layout = new QVBoxLayout(content);
   layout->setContentsMargins(4, 4, 4, 4);
+  // One captioned image view, added to `row`.
+  const auto addView = [](QHBoxLayout* row, const QString& caption) {
+    auto* view = new ImageView;
+    view->setCaption(caption);
+    row->addWidget(view);
+    return view;
+  };
+  auto* views = new QHBoxLayout;
+  camera_ = addView(views, tr("Camera image (unshadowed): each kd leaf's screen rectangle, where "
+                              "its deferred shadowing runs"));
+  light_ = addView(views, tr("Light's view (depth): the kd-tree's leaves, log2 texture size"));
   auto* maps = new QHBoxLayout;
-  needU_ = new ImageView;
-  needV_ = new ImageView;
-  grid_ = new ImageView;
-  needU_->setCaption(
-      tr("SMTMM (camera view): log2 texels needed along SM u; kd leaves' screen "
-         "rectangles"));
-  needV_->setCaption(tr("SMTMM: log2 texels needed along SM v"));
-  grid_->setCaption(tr("Tile grid over the light's view: need per cell; kd leaves (log2 texture)"));
-  maps->addWidget(needU_);
-  maps->addWidget(needV_);
-  maps->addWidget(grid_);
+  needU_ = addView(maps, tr("SMTMM (camera view): log2 texels needed along SM u; kd leaves' "
+                            "screen rectangles"));
+  needV_ = addView(maps, tr("SMTMM: log2 texels needed along SM v"));
+  grid_ =
+      addView(maps, tr("Tile grid over the light's view: need per cell; kd leaves (log2 texture)"));
   auto* lower = new QHBoxLayout;
   histogram_ = new PlotWidget;
   histogram_->setAxisLabels(tr("log2 need"), tr("SMTMM entries"));
@@ -50,28 +70,33 @@ FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
   numbers_ = new QLabel;
   numbers_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   numbers_->setWordWrap(true);
+  layout->addLayout(views, 4);
   layout->addLayout(maps, 3);
   layout->addLayout(lower, 2);
   layout->addWidget(numbers_);
   setContent(content);
-  // Screen rectangles over the SMTMM (entries; inclusive), the hovered cell's leaf brighter.
-  needU_->setOverlay([this](QPainter& p, const QRectF& r) {
-    const QSize t = needU_->texelSize();
-    if (t.isEmpty()) return;
+  // Screen rectangles (SMTMM entries, inclusive) over a view of the whole frame: the camera
+  // image and the SMTMM.
+  const auto drawScreenRects = [this](QPainter& p, const QRectF& r) {
+    const glm::ivec2 t = smtmmSize_;
+    if (t.x <= 0 || t.y <= 0) return;
     for (std::size_t k = 0; k < tiles_.size(); ++k) {
       const fvsm::EntryRect& s = tiles_[k].tile.screen;
       if (s.empty()) continue;
-      const double x0 = r.left() + r.width() * s.min.x / t.width();
-      const double x1 = r.left() + r.width() * (s.max.x + 1) / t.width();
-      const double y0 = r.bottom() - r.height() * (s.max.y + 1) / t.height();
-      const double y1 = r.bottom() - r.height() * s.min.y / t.height();
+      const double x0 = r.left() + r.width() * s.min.x / t.x;
+      const double x1 = r.left() + r.width() * (s.max.x + 1) / t.x;
+      const double y0 = r.bottom() - r.height() * (s.max.y + 1) / t.y;
+      const double y1 = r.bottom() - r.height() * s.min.y / t.y;
       p.setPen(QPen(leafColor(k), 1.2));
       p.setBrush(Qt::NoBrush);
       p.drawRect(QRectF(QPointF(x0, y0), QPointF(x1, y1)));
     }
-  });
-  // kd leaves over the grid (SM uv), each with its texture's log2 size; the selected cell.
-  grid_->setOverlay([this](QPainter& p, const QRectF& r) {
+  };
+  needU_->setOverlay(drawScreenRects);
+  camera_->setOverlay(drawScreenRects);
+  // kd leaves (SM uv) over a view of the whole map: the light's depth and the tile grid, each
+  // with its texture's log2 size; over the grid the selected cell too.
+  const auto drawLeaves = [this](QPainter& p, const QRectF& r) {
     p.setFont(bodyRelativeFont(kSmallText, p.font()));
     for (std::size_t k = 0; k < tiles_.size(); ++k) {
       const fvsm::Tile& t = tiles_[k].tile;
@@ -87,6 +112,10 @@ FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
                    QStringLiteral("%1x%2").arg(t.textureLog2.x).arg(t.textureLog2.y));
       }
     }
+  };
+  light_->setOverlay(drawLeaves);
+  grid_->setOverlay([this, drawLeaves](QPainter& p, const QRectF& r) {
+    drawLeaves(p, r);
     const QSize n = grid_->texelSize();
     if (cellX_ >= 0 && !n.isEmpty()) {
       const double w = r.width() / n.width(), h = r.height() / n.height();
@@ -97,9 +126,10 @@ FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
 }
 
 std::set<std::string> FvsmPanel::observedKeys() const {
-  return {"fvsm.smtmm",       "fvsm.tiles",          "fvsm.tiles.unmet",   "fvsm.need_log2.u",
-          "fvsm.need_log2.v", "fvsm.texels",         "fvsm.grid",          "fvsm.grid.histogram",
-          "fvsm.tiles.list",  "fvsm.histogram.eta0", "fvsm.histogram.eta1"};
+  return {"fvsm.smtmm",       "fvsm.tiles",          "fvsm.tiles.unmet",    "fvsm.need_log2.u",
+          "fvsm.need_log2.v", "fvsm.texels",         "fvsm.grid",           "fvsm.grid.histogram",
+          "fvsm.tiles.list",  "fvsm.histogram.eta0", "fvsm.histogram.eta1", "fvsm.camera",
+          "fvsm.light.depth"};
 }
 
 void FvsmPanel::highlightPass(const QString& passId) {
@@ -109,6 +139,9 @@ void FvsmPanel::highlightPass(const QString& passId) {
   needV_->setHighlighted(smtmm);
   grid_->setHighlighted(grid);
   histogram_->setHighlighted(grid);
+  // The kd leaves are rendered over the light's view, applied inside their rectangles.
+  light_->setHighlighted(passId == QLatin1String("tile depth"));
+  camera_->setHighlighted(passId == QLatin1String("tile apply"));
 }
 
 void FvsmPanel::selectCell(int x, int y) {
@@ -181,6 +214,43 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
     }
   }
   const sl::FloatImage& smtmm = img->second;
+  smtmmSize_ = {smtmm.width, smtmm.height};
+  int cameraRects = 0, lightLeaves = 0;
+  sl::FloatImage camera;
+  if (auto c = pub.images.find("fvsm.camera"); c != pub.images.end()) camera = framePart(c->second);
+  if (camera.width > 0 && camera.height > 0) {
+    // −1 (no surface) below the range: drawn black.
+    camera_->setImage(colorize(camera, 0, ValueRange{0.0f, 1.0f, false}, ColorMap::Grey),
+                      camera.width, camera.height);
+    camera_->setLegend({}, ColorMap::Grey, {}, false);
+    for (const fvsm::TileRecord& t : tiles_) cameraRects += t.tile.screen.empty() ? 0 : 1;
+    drawn_["camera_surface_texels"] = double(std::count_if(
+        camera.values.begin(), camera.values.end(), [](float v) { return v >= 0.0f; }));
+  } else {
+    camera_->clearImage(tr("no camera image published"));
+  }
+  if (auto l = pub.images.find("fvsm.light.depth");
+      l != pub.images.end() && l->second.width > 0 && l->second.channels == 1) {
+    const sl::FloatImage& depth = l->second;
+    const ValueRange range = finiteRange(depth.values, 1, 0, 1.0f);  // 1: nothing there
+    light_->setImage(colorize(depth, 0, range, ColorMap::Grey), depth.width, depth.height);
+    light_->setLegend(range, ColorMap::Grey, tr("depth"));
+    light_->setValueReader([depth](int x, int y) {
+      return QStringLiteral("depth %1")
+          .arg(double(depth.values[std::size_t(y) * depth.width + x]), 0, 'f', 4);
+    });
+    lightLeaves = int(tiles_.size());
+    drawn_["light_geometry_texels"] = double(
+        std::count_if(depth.values.begin(), depth.values.end(), [](float v) { return v < 1.0f; }));
+    drawn_["light_w"] = depth.width;
+    drawn_["light_h"] = depth.height;
+  } else {
+    light_->clearImage(tr("no light view published"));
+  }
+  drawn_["camera_w"] = camera.width;
+  drawn_["camera_h"] = camera.height;
+  drawn_["camera_rects_drawn"] = cameraRects;
+  drawn_["light_leaves_drawn"] = lightLeaves;
   float maxNeed = 0.0f;
   for (std::size_t i = 0; i + 3 < smtmm.values.size(); i += 4)
     maxNeed = std::max({maxNeed, smtmm.values[i + kChannelNeedU], smtmm.values[i + kChannelNeedV]});
@@ -290,6 +360,8 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
   drawn_["texture_kinds"] = double(kinds.size());
   needU_->update();
   grid_->update();
+  camera_->update();
+  light_->update();
 }
 
 }  // namespace sl::ui

@@ -650,6 +650,8 @@ void SelfTests::claimFvsm(const QString& text) {
             .arg(small.frameMs, 0, 'f', 0)
             .arg(errFactor)
             .arg(timeFactor));
+}
+
 // Lesson 13: asm misses the thin pole's shadow (its error as stated), rmsm on the other side
 // draws it; the Pages panel shows why (only the coarse map held, nothing requested); at about
 // the same memory uniform 2048² and rtw-backward 1024² on the other side give the stated errors.

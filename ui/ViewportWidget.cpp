@@ -537,7 +537,8 @@ std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std:
   const int halfW = w - w / 2;
   if (halfW < kMinDrawnPx || h < kMinDrawnPx) return fail("the view is too small to measure");
   const long long step = std::max<long long>(1, std::llround(decl->step));
-  const long long lo = std::llround(decl->minValue), hi = std::llround(decl->maxValue);
+  const long long hi = std::llround(decl->maxValue);
+  long long lo = std::llround(decl->minValue);
   std::string problem;
   makeCurrent();
   split->setCamera(camera_);
@@ -555,11 +556,40 @@ std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std:
     }
     return split->stats().memory.bytes();
   };
+  // The smallest value the technique accepts (rmsm refuses a pool smaller than its coarsest
+  // level): grid indices doubled from the minimum until one renders, then bisected down.
+  std::optional<std::uint64_t> bytesA = bytesAt(lo);
+  if (!bytesA) {
+    const long long lastAll = (hi - lo) / step;
+    long long refused = 0, k = 1;
+    for (; k <= lastAll; k *= 2) {
+      problem.clear();
+      if ((bytesA = bytesAt(lo + k * step))) break;
+      refused = k;
+    }
+    if (!bytesA && refused < lastAll) {
+      problem.clear();
+      if ((bytesA = bytesAt(lo + lastAll * step))) k = lastAll;
+    }
+    while (bytesA && k - refused > 1) {
+      const long long mid = refused + (k - refused) / 2;
+      problem.clear();
+      if (const auto bytes = bytesAt(lo + mid * step)) {
+        k = mid;
+        bytesA = bytes;
+      } else {
+        refused = mid;
+      }
+    }
+    if (bytesA) {
+      problem.clear();
+      lo += k * step;
+    }
+  }
   // Over the value grid lo, lo + step, ...: the largest value within the budget. Grid
   // indices doubled until over it (never a map far larger than the budget), then bisected.
   const long long last = (hi - lo) / step;
   long long a = 0;  // within the budget (once lo is)
-  std::optional<std::uint64_t> bytesA = bytesAt(lo);
   if (bytesA && *bytesA > match.mainBytes) {
     match.belowMinimum = true;
   } else if (bytesA) {

@@ -242,7 +242,7 @@ bool sameValues(const std::vector<float>& a, const std::vector<float>& b) {
 TEST(Asm, PagesPanelPublicationsAreTheCpuCaches) {
   auto r = makeProbe("plane-box");
   ASSERT_TRUE(r);
-  const pages::VirtualLayout layout{16384, 128, SL_MAX_DEPTH_MAPS};
+  const pages::VirtualLayout layout{16384, 128, SL_PAGED_LOOKUP_LEVELS};
   const int pool = 6, budget = 64, coarseLevel = 7;  // 128² coarse map: one page
   ASSERT_FALSE(r->params().set("virtual.resolution", layout.virtualResolution));
   ASSERT_FALSE(r->params().set("page.size", layout.pageSize));

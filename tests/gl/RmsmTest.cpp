@@ -250,7 +250,7 @@ TEST(Rmsm, DeclaredPassesAndBadParameters) {
 // rmsm and asm (both paged maps: one map per quadtree level, pages per side halving per level);
 // every other pixel is grey.
 TEST(Rmsm, PageBorderOverlayIsWhereThePageChanges) {
-  const pages::VirtualLayout layout{16384, 128, SL_MAX_DEPTH_MAPS};
+  const pages::VirtualLayout layout{16384, 128, SL_PAGED_LOOKUP_LEVELS};
   std::vector<int> grid;
   for (int l = 0; l < layout.levels(); ++l) grid.push_back(layout.pagesPerSide(l));
   for (const char* id : {"rmsm", "asm"}) {

@@ -537,8 +537,7 @@ std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std:
   const int halfW = w - w / 2;
   if (halfW < kMinDrawnPx || h < kMinDrawnPx) return fail("the view is too small to measure");
   const long long step = std::max<long long>(1, std::llround(decl->step));
-  const long long hi = std::llround(decl->maxValue);
-  long long lo = std::llround(decl->minValue);
+  const long long lo = std::llround(decl->minValue), hi = std::llround(decl->maxValue);
   std::string problem;
   makeCurrent();
   split->setCamera(camera_);
@@ -556,69 +555,42 @@ std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std:
     }
     return split->stats().memory.bytes();
   };
-  // The smallest value the technique accepts (rmsm refuses a pool smaller than its coarsest
-  // level): grid indices doubled from the minimum until one renders, then bisected down.
-  std::optional<std::uint64_t> bytesA = bytesAt(lo);
-  if (!bytesA) {
-    const long long lastAll = (hi - lo) / step;
-    long long refused = 0, k = 1;
-    for (; k <= lastAll; k *= 2) {
-      problem.clear();
-      if ((bytesA = bytesAt(lo + k * step))) break;
-      refused = k;
-    }
-    if (!bytesA && refused < lastAll) {
-      problem.clear();
-      if ((bytesA = bytesAt(lo + lastAll * step))) k = lastAll;
-    }
-    while (bytesA && k - refused > 1) {
-      const long long mid = refused + (k - refused) / 2;
-      problem.clear();
-      if (const auto bytes = bytesAt(lo + mid * step)) {
-        k = mid;
-        bytesA = bytes;
-      } else {
-        refused = mid;
-      }
-    }
-    if (bytesA) {
-      problem.clear();
-      lo += k * step;
-    }
-  }
-  // Over the value grid lo, lo + step, ...: the largest value within the budget. Grid
-  // indices doubled until over it (never a map far larger than the budget), then bisected.
+  // Both searches below run over the value grid lo, lo + step, ..., lo + last * step for the
+  // first index >= `from` where `holds` is true, `holds` being false below it and true from it
+  // on: indices doubled (never a map far larger than needed), then bisected. last + 1: none.
   const long long last = (hi - lo) / step;
-  long long a = 0;  // within the budget (once lo is)
-  if (bytesA && *bytesA > match.mainBytes) {
-    match.belowMinimum = true;
-  } else if (bytesA) {
-    long long b = last + 1;  // first index known over the budget (last + 1: none known)
-    for (long long k = 1; k <= last; k *= 2) {
-      const auto bytes = bytesAt(lo + k * step);
-      if (!bytes) break;
-      if (*bytes > match.mainBytes) {
-        b = k;
+  auto firstWhere = [&](long long from, auto&& holds) {
+    if (holds(from)) return from;
+    long long no = from, yes = last + 1;
+    for (long long k = 1; from + k <= last; k *= 2) {
+      if (holds(from + k)) {
+        yes = from + k;
         break;
       }
-      a = k;
+      no = from + k;
     }
-    if (b == last + 1 && a < last && problem.empty()) {  // beyond the last power of two
-      const auto bytes = bytesAt(lo + last * step);
-      if (bytes && *bytes <= match.mainBytes)
-        a = last;
-      else
-        b = last;
+    if (yes == last + 1 && no < last && holds(last)) yes = last;
+    while (yes <= last && yes - no > 1) {
+      const long long mid = no + (yes - no) / 2;
+      (holds(mid) ? yes : no) = mid;
     }
-    while (problem.empty() && b - a > 1) {
-      const long long mid = a + (b - a) / 2;
-      const auto bytes = bytesAt(lo + mid * step);
-      if (!bytes) break;
-      if (*bytes <= match.mainBytes)
-        a = mid;
-      else
-        b = mid;
-    }
+    return yes;
+  };
+  // The smallest value the technique accepts (rmsm refuses a pool smaller than its coarsest
+  // level), then the first one over the main technique's bytes.
+  const long long accepted = firstWhere(0, [&](long long k) {
+    problem.clear();
+    return bytesAt(lo + k * step).has_value();
+  });
+  long long a = accepted;
+  if (accepted <= last) {
+    problem.clear();
+    const long long over = firstWhere(accepted, [&](long long k) {
+      const auto bytes = bytesAt(lo + k * step);
+      return !bytes || *bytes > match.mainBytes;
+    });
+    match.belowMinimum = over == accepted;
+    a = match.belowMinimum ? accepted : over - 1;
   }
   match.value = lo + a * step;
   const auto finalBytes = problem.empty() ? bytesAt(match.value) : std::nullopt;

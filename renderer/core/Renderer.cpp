@@ -678,12 +678,15 @@ void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool refe
   bindLight(c, s.light);
   c.set("u_cameraPos", eye);
   bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
-  // The pages overlay's page grid per selectable map (none: 0).
-  const std::vector<int> grid = s.technique ? s.technique->pageGrid() : std::vector<int>{};
-  for (int i = 0; i < SL_MAX_DEPTH_MAPS; ++i)
-    c.set(("u_pageCells[" + std::to_string(i) + "]").c_str(),
-          i < int(grid.size()) ? grid[std::size_t(i)] : 0);
   const int overlay = s.rendererParams.getInt("view.overlay");
+  // The pages overlay's page grid per selectable map (none: 0), read by that overlay only:
+  // not set (SL_MAX_DEPTH_MAPS uniforms) on every other frame.
+  if (overlay == SL_OVERLAY_PAGES) {
+    const std::vector<int> grid = s.technique ? s.technique->pageGrid() : std::vector<int>{};
+    for (int i = 0; i < SL_MAX_DEPTH_MAPS; ++i)
+      c.set(("u_pageCells[" + std::to_string(i) + "]").c_str(),
+            i < int(grid.size()) ? grid[std::size_t(i)] : 0);
+  }
   if (overlay == SL_OVERLAY_ERROR && !referenceMatches)
     c.set("u_overlay", SL_OVERLAY_NONE);  // no reference of this exact view
   if ((overlay == SL_OVERLAY_ALIASING || overlay == SL_OVERLAY_CHANGED) && !mainCamera)

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Continuous rendering keeps the error live (issue 15 item 6): F6 on, the readout shows a
 # number and the reference's age within a time limit (traced on a worker thread, equal to the
-# synchronous error of the same view); a camera move makes it stale and greyed, then fresh; a
-# scene change mid-trace drops the trace; the split view's right half has its own live error
+# synchronous error of the same view); a camera move makes it stale and greyed (read in the
+# first frame after it), then fresh; a scene change shows nothing of the old scene; the split
+# view's right half has its own live error
 # (its age in its caption, equal to its synchronous error, stale after a move then fresh); the
-# window closes while a trace runs, exit 0.
+# window closes right after a move (a trace possibly running), exit 0.
 # usage: live_error.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1

@@ -16,6 +16,16 @@ namespace sl {
 namespace {
 /// The largest pool texture side ShadowLab asks for (GL 4.5 guarantees 16384 on llvmpipe).
 constexpr int kMaxPoolSide = 16384;
+
+/// (Re)creates a DEPTH_COMPONENT32F texture of width x height and its depth-only framebuffer.
+void createDepthTarget(gl::Texture& texture, gl::Framebuffer& fbo, int width, int height,
+                       const std::string& what) {
+  texture = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height);
+  fbo = gl::Framebuffer::create();
+  fbo.attach(GL_DEPTH_ATTACHMENT, texture);
+  fbo.setDrawBuffers(0);
+  fbo.checkComplete(what);
+}
 }  // namespace
 
 std::vector<ParamDecl> pagedMapParamDecls() {
@@ -214,12 +224,8 @@ bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int min
   if (!poolMap_ || poolPages_ != poolPages || poolMap_.width() != columns * layout_.pageSize) {
     poolPages_ = poolPages;
     poolColumns_ = columns;
-    poolMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, columns * layout_.pageSize,
-                                     rows * layout_.pageSize);
-    poolFbo_ = gl::Framebuffer::create();
-    poolFbo_.attach(GL_DEPTH_ATTACHMENT, poolMap_);
-    poolFbo_.setDrawBuffers(0);
-    poolFbo_.checkComplete(technique + " page pool");
+    createDepthTarget(poolMap_, poolFbo_, columns * layout_.pageSize, rows * layout_.pageSize,
+                      technique + " page pool");
     changed = true;
   }
   return changed;
@@ -268,11 +274,7 @@ void PagedMap::renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
   const int ps = layout_.pageSize;
   const int side = std::min(superpageSize, layout_.virtualResolution);
   if (!superpage_ || superpage_.width() != side) {
-    superpage_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, side, side);
-    superpageFbo_ = gl::Framebuffer::create();
-    superpageFbo_.attach(GL_DEPTH_ATTACHMENT, superpage_);
-    superpageFbo_.setDrawBuffers(0);
-    superpageFbo_.checkComplete("rmsm superpage target");
+    createDepthTarget(superpage_, superpageFbo_, side, side, "rmsm superpage target");
   }
   {
     // Free slots hold 1 (far) as on the page-by-page path: the pools are then equal.

@@ -21,10 +21,11 @@ PassStepper::PassStepper(MainWindow& window) : QObject(&window), w_(window) {}
 
 void PassStepper::buildSteps() {
   steps_.clear();
-  const sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport_->renderer();
   const sl::TechniqueInfo* info = r ? sl::Renderer::findTechnique(r->techniqueId()) : nullptr;
   if (!info) return;
-  for (const sl::PassDecl& p : sl::framePassDecls(*info))
+  // The passes this frame runs (a pass of one rmsm.render value only while it holds).
+  for (const sl::PassDecl& p : sl::framePassDecls(*info, r->params()))
     steps_.push_back({QString::fromStdString(p.id), QString::fromStdString(p.title),
                       QString::fromStdString(p.explanation), w_.docks_.dock(p.panel)});
 }

@@ -691,9 +691,10 @@ bool SelfTests::teaching(const QString& dir) {
     saveImage(w_.grab().toImage(), QStringLiteral("pass-%1-%2.png").arg(i + 1).arg(file));
   }
   // The steps are the declared passes of the technique, in the order they were timed.
-  const sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport_->renderer();
   QStringList declared, timed;
-  for (const sl::PassDecl& p : sl::framePassDecls(*sl::Renderer::findTechnique(r->techniqueId())))
+  for (const sl::PassDecl& p :
+       sl::framePassDecls(*sl::Renderer::findTechnique(r->techniqueId()), r->params()))
     declared << QString::fromStdString(p.id);
   for (const sl::PassTiming& p : r->stats().passes) timed << QString::fromStdString(p.name);
   check(seen == declared && (r->stats().timingFramesLate > 0 || timed == declared),

@@ -86,6 +86,14 @@ std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique) {
   return out;
 }
 
+std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique, const ParamSet& params) {
+  std::vector<PassDecl> out;
+  for (PassDecl& p : framePassDecls(technique))
+    if (p.onlyWhenParam.empty() || params.getInt(p.onlyWhenParam) == p.onlyWhenValue)
+      out.push_back(std::move(p));
+  return out;
+}
+
 const std::vector<PublicationDecl>& rendererPublicationDecls() {
   static const std::vector<PublicationDecl> decls = {
       {"aliasing.*", PublicationKind::Number,

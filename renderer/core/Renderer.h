@@ -45,6 +45,10 @@ struct PassDecl {
   /// Timed inside the renderer's resolve (a deferred technique's per-tile passes:
   /// Technique::resolveDeferred): listed after "resolve" in framePassDecls.
   bool duringResolve = false;
+  /// Runs only while the technique's Int/Enum parameter `onlyWhenParam` equals
+  /// `onlyWhenValue` (rmsm.render: superpages or pages); empty = every frame.
+  std::string onlyWhenParam;
+  int onlyWhenValue = 0;
 };
 
 /// What a publication is: a float image, a set of images under one pattern, a curve
@@ -95,6 +99,9 @@ std::vector<PassDecl> rendererPassDecls();
 /// Every pass of a frame with `technique`, in frame order: gbuffer, the technique's
 /// passes, resolve, composite.
 std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique);
+/// The passes of a frame with `technique` under `params` (its ParamSet): framePassDecls less
+/// those whose onlyWhenParam does not hold (the timed passes of that frame).
+std::vector<PassDecl> framePassDecls(const TechniqueInfo& technique, const ParamSet& params);
 /// Publications of the renderer itself, whatever the technique, declared once (next to
 /// rendererPassDecls): the measured aliasing statistics "aliasing.*" (a GPU reduction of the
 /// resolve pass's m, run only while requested), the frame's camera "camera.*" and light

@@ -129,6 +129,9 @@
 #define SL_RMSM_GROUP 8  // local_size_x/y of the request and compaction passes
 #define SL_RMSM_IMAGE_REQUESTS 0  // r32ui: the page key each pixel asks for (SL_PAGE_NONE: none)
 #define SL_RMSM_BUFFER_REQUESTS 0  // SSBO: count, then the compacted keys
+// Side in texels of an RMSM superpage (Lefohn et al. 2007): rmsm.render = superpages renders
+// each 1024² block of one level holding allocated pages once, then copies its pages to the pool.
+#define SL_RMSM_SUPERPAGE 1024
 // Adaptive shadow maps (asm): the shadow-test pass writes per pixel (mask, served page key,
 // refine key) into an rgba32ui image; the edge pass turns it into one key per pixel in the
 // RMSM request image (SL_RMSM_IMAGE_REQUESTS), compacted by rmsm/compact.comp. A key with

@@ -145,7 +145,7 @@ TEST(Publication, EveryPublishedKeyIsDeclaredAndEveryPassIsTimed) {
     // The declared passes are the timed ones, in the same order (glFinish timing: this frame).
     std::vector<std::string> timed, declared;
     for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
-    for (const PassDecl& p : framePassDecls(info)) declared.push_back(p.id);
+    for (const PassDecl& p : framePassDecls(info, r->params())) declared.push_back(p.id);
     if (r->stats().timingFramesLate == 0) {
       EXPECT_EQ(timed, declared);
     }

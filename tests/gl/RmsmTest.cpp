@@ -1,8 +1,9 @@
 // The `rmsm` technique (resolution-matched shadow maps): GPU-vs-CPU parity of the per-pixel
 // requests, the dedup + compaction list and the page table (algo/pages is the reference),
 // accuracy against the Embree reference next to uniform, the pool running out (coarser pages,
-// counted, no GL error), exact memory, declared passes == timed passes.
+// counted, no GL error), exact memory, declared passes == timed passes, superpages == page by page.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 
@@ -117,6 +118,88 @@ TEST(Rmsm, RequestsCompactionAndPageTableMatchTheCpuReference) {
   test::expectNoGlErrors(*r);
 }
 
+std::vector<float> readDepth(const gl::Texture& t) {
+  std::vector<float> out(std::size_t(t.width()) * t.height());
+  glGetTextureImage(t.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(out.size() * 4), out.data());
+  return out;
+}
+
+// Lefohn et al.'s render step against the page-by-page one: the same frame with rmsm.render =
+// pages, then superpages, allocates the same pages to the same slots, and the pools hold the
+// same depths (both each texel centre's exact depth, rasterised in a 1024² block instead of a
+// page.size² viewport): no texel off by more than 1e-6 + 1e-4 x its depth step to a
+// neighbour, at most 0.01 % off by more than 1e-6 (measured: plane-box 3 of 242346 texels, at
+// most 1.55e-6, where depth steps 0.11 per texel; diagonal 0, at most 5.4e-7); one scene draw
+// per superpage instead of per page; the error metric is the same to the last digit.
+TEST(Rmsm, SuperpagesFillThePoolLikePageByPage) {
+  for (auto [scene, virt] : {std::pair{"plane-box", 4096}, {"diagonal", 16384}}) {
+    SCOPED_TRACE(scene);
+    auto r = makeProbe(scene);
+    ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().set("virtual.resolution", virt));
+    ASSERT_FALSE(r->params().set("page.size", 64));
+    ASSERT_FALSE(r->params().set("rmsm.render", RmsmShadowMap::kRenderPages));
+    ASSERT_FALSE(r->renderFrame(160, 90, 0));
+    ASSERT_TRUE(g_probe);
+    const RmsmShadowMap::FrameResult pagesFrame = g_probe->lastFrame();
+    const std::vector<float> pagesPool = readDepth(g_probe->poolTexture());
+    const double pagesError = r->computeError().stats.errorPct;
+    EXPECT_EQ(pagesFrame.sceneDraws, int(pagesFrame.allocation.pages.size()));
+
+    ASSERT_FALSE(r->params().set("rmsm.render", RmsmShadowMap::kRenderSuperpages));
+    ASSERT_FALSE(r->renderFrame(160, 90, 0));
+    const RmsmShadowMap::FrameResult& superFrame = g_probe->lastFrame();
+    ASSERT_EQ(superFrame.allocation.pages, pagesFrame.allocation.pages);
+    ASSERT_EQ(superFrame.allocation.slots, pagesFrame.allocation.slots);
+    const std::vector<float> superPool = readDepth(g_probe->poolTexture());
+    ASSERT_EQ(superPool.size(), pagesPool.size());
+    // Texel-centre depths rasterised at window positions that differ by float rounding (a
+    // position 1024 texels from the target's origin carries ~6e-5 texel of it): a surface whose
+    // depth changes by g per texel may differ by ~6e-5 g. Counted: texels off by more than 1e-6,
+    // and off by more than 1e-6 + 1e-4 g (g: the larger depth step to a 4-neighbour in the
+    // page-by-page pool).
+    const int W = g_probe->poolTexture().width();
+    auto at = [&](int u, int v) { return pagesPool[std::size_t(v) * W + u]; };
+    int over = 0, overSlope = 0, differ = 0, rendered = 0;
+    float maxDiff = 0.0f;
+    for (std::size_t i = 0; i < superPool.size(); ++i) {
+      const float d = std::abs(superPool[i] - pagesPool[i]);
+      differ += superPool[i] != pagesPool[i];
+      rendered += pagesPool[i] < 1.0f;
+      maxDiff = std::max(maxDiff, d);
+      if (d <= 1e-6f) continue;
+      ++over;
+      const int x = int(i % W), y = int(i / W), h = int(pagesPool.size() / W);
+      float g = 0.0f;
+      if (x > 0) g = std::max(g, std::abs(at(x, y) - at(x - 1, y)));
+      if (x + 1 < W) g = std::max(g, std::abs(at(x + 1, y) - at(x, y)));
+      if (y > 0) g = std::max(g, std::abs(at(x, y) - at(x, y - 1)));
+      if (y + 1 < h) g = std::max(g, std::abs(at(x, y + 1) - at(x, y)));
+      overSlope += d > 1e-6f + 1e-4f * g;
+      std::printf("  pool texel %d,%d: %.8f vs %.8f, off by %.3g, depth step to a neighbour %.3g\n",
+                  x, y, double(pagesPool[i]), double(superPool[i]), double(d), double(g));
+    }
+    const double superError = r->computeError().stats.errorPct;
+    std::printf(
+        "%s: %zu pages in %zu superpages (%d scene draws, page by page %d); %d texels "
+        "below the far plane; %d differ, %d by more than 1e-6, %d by more than 1e-6 + 1e-4 x "
+        "the depth step (max %.3g); error %.4f %% (page by page %.4f %%)\n",
+        scene, superFrame.allocation.pages.size(), superFrame.superpages.size(),
+        superFrame.sceneDraws, pagesFrame.sceneDraws, rendered, differ, over, overSlope,
+        double(maxDiff), superError, pagesError);
+    EXPECT_GT(superFrame.superpages.size(), 1u);
+    EXPECT_LT(superFrame.superpages.size(), superFrame.allocation.pages.size());
+    EXPECT_EQ(superFrame.sceneDraws, int(superFrame.superpages.size()));
+    EXPECT_EQ(pagesFrame.renderTexels, std::int64_t(pagesFrame.allocation.pages.size()) * 64 * 64);
+    EXPECT_GE(superFrame.renderTexels, pagesFrame.renderTexels) << "blocks hold their pages";
+    EXPECT_GT(rendered, int(superPool.size() / 20)) << "the scene covers the pool's pages";
+    EXPECT_EQ(overSlope, 0);
+    EXPECT_LE(over, rendered / 10000) << "at most 0.01 % of the texels off by more than 1e-6";
+    EXPECT_EQ(superError, pagesError);
+    test::expectNoGlErrors(*r);
+  }
+}
+
 double errorOf(const std::string& scene, const std::string& technique,
                const std::vector<std::pair<const char*, double>>& sets, int w = 320, int h = 180) {
   auto r = test::makeRenderer(scene, technique);
@@ -192,18 +275,25 @@ TEST(Rmsm, ExhaustedPoolCoarsensAndCounts) {
   test::expectNoGlErrors(*r);
 }
 
-// memory() lists every byte: the pool, the page table's levels, the request image and list.
+// memory() lists every byte: the pool, the page table's levels, the request image and list,
+// and (rmsm.render = superpages) the superpage target of min(1024, virtual.resolution)².
 TEST(Rmsm, MemoryIsExact) {
   auto r = test::makeRenderer("diagonal", "uniform");
   ASSERT_TRUE(r);
   ASSERT_FALSE(r->renderFrame(160, 90, 0));
   const std::uint64_t before = gl::allocatedBytes() - r->stats().memory.bytes();
   ASSERT_FALSE(r->setTechnique("rmsm"));
-  for (auto [pool, page, virt] : {std::tuple{256, 128, 16384}, {10, 64, 2048}, {3, 256, 4096}}) {
-    SCOPED_TRACE(pool);
+  for (auto [pool, page, virt, render] : {std::tuple{256, 128, 16384, 0},
+                                          {10, 64, 2048, 0},
+                                          {3, 256, 4096, 0},
+                                          {10, 64, 512, 0},
+                                          {256, 128, 16384, 1},
+                                          {10, 64, 512, 1}}) {
+    SCOPED_TRACE(testing::Message() << pool << " " << page << " " << virt << " " << render);
     ASSERT_FALSE(r->params().set("pool.pages", pool));
     ASSERT_FALSE(r->params().set("page.size", page));
     ASSERT_FALSE(r->params().set("virtual.resolution", virt));
+    ASSERT_FALSE(r->params().set("rmsm.render", render));
     ASSERT_FALSE(r->renderFrame(160, 90, 0));
     const MemoryStats& m = r->stats().memory;
     EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
@@ -212,23 +302,42 @@ TEST(Rmsm, MemoryIsExact) {
     const std::uint64_t rows = std::uint64_t((pool + columns - 1) / columns);
     std::uint64_t table = 0;
     for (int n = virt / page; n >= 1; n /= 2) table += 4ull * std::uint64_t(n) * std::uint64_t(n);
+    const std::uint64_t side = std::uint64_t(std::min(SL_RMSM_SUPERPAGE, virt));
+    const std::uint64_t superpage =
+        render == RmsmShadowMap::kRenderSuperpages ? 4 * side * side : 0;
     EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(columns * page) * rows * std::uint64_t(page) + table +
-                             4ull * 160 * 90 + 4ull * (1 + 160 * 90));
+                             4ull * 160 * 90 + 4ull * (1 + 160 * 90) + superpage);
   }
   test::expectNoGlErrors(*r);
 }
 
-// Every declared pass is timed, in declaration order; bad parameters name themselves.
+// Every declared pass of each rmsm.render value is timed (superpages: "rmsm superpages" and
+// "rmsm copy"; pages: "rmsm pages"), the other value's are not; bad parameters name themselves.
 TEST(Rmsm, DeclaredPassesAndBadParameters) {
   auto r = test::makeRenderer("plane-box", "rmsm");
   ASSERT_TRUE(r);
-  ASSERT_FALSE(r->renderFrame(96, 64, 0));
-  std::vector<std::string> timed;
-  for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
-  std::vector<std::string> declared;
-  for (const PassDecl& d : framePassDecls(RmsmShadowMap::info())) declared.push_back(d.id);
-  for (const std::string& d : declared)
-    EXPECT_NE(std::find(timed.begin(), timed.end(), d), timed.end()) << d;
+  for (int render : {RmsmShadowMap::kRenderSuperpages, RmsmShadowMap::kRenderPages}) {
+    SCOPED_TRACE(render);
+    ASSERT_FALSE(r->params().set("rmsm.render", render));
+    ASSERT_FALSE(r->renderFrame(96, 64, 0));
+    std::vector<std::string> timed;
+    for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
+    std::vector<std::string> declared;
+    for (const PassDecl& d : framePassDecls(RmsmShadowMap::info(), r->params()))
+      declared.push_back(d.id);
+    for (const std::string& d : declared)
+      EXPECT_NE(std::find(timed.begin(), timed.end(), d), timed.end()) << d;
+    const bool super = render == RmsmShadowMap::kRenderSuperpages;
+    for (const char* id : {"rmsm superpages", "rmsm copy"}) {
+      EXPECT_EQ(std::count(declared.begin(), declared.end(), id), super ? 1 : 0) << id;
+      EXPECT_EQ(std::count(timed.begin(), timed.end(), id), super ? 1 : 0) << id;
+    }
+    EXPECT_EQ(std::count(timed.begin(), timed.end(), "rmsm pages"), super ? 0 : 1);
+    EXPECT_EQ(std::count(declared.begin(), declared.end(), "rmsm pages"), super ? 0 : 1);
+  }
+  EXPECT_EQ(framePassDecls(RmsmShadowMap::info()).size(),
+            framePassDecls(RmsmShadowMap::info(), r->params()).size() + 2);
+  ASSERT_FALSE(r->params().set("rmsm.render", RmsmShadowMap::kRenderSuperpages));
   ASSERT_FALSE(r->params().set("virtual.resolution", 1000));
   const auto err = r->renderFrame(96, 64, 0);
   ASSERT_TRUE(err);

@@ -1,6 +1,7 @@
 // The GL side of a paged virtual shadow map (PagedMap.h).
 #include "PagedMap.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -8,12 +9,23 @@
 #include "common/shared_constants.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
+#include "gl/GpuTimer.h"
 
 namespace sl {
 
 namespace {
 /// The largest pool texture side ShadowLab asks for (GL 4.5 guarantees 16384 on llvmpipe).
 constexpr int kMaxPoolSide = 16384;
+
+/// (Re)creates a DEPTH_COMPONENT32F texture of width x height and its depth-only framebuffer.
+void createDepthTarget(gl::Texture& texture, gl::Framebuffer& fbo, int width, int height,
+                       const std::string& what) {
+  texture = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height);
+  fbo = gl::Framebuffer::create();
+  fbo.attach(GL_DEPTH_ATTACHMENT, texture);
+  fbo.setDrawBuffers(0);
+  fbo.checkComplete(what);
+}
 }  // namespace
 
 std::vector<ParamDecl> pagedMapParamDecls() {
@@ -170,15 +182,20 @@ int poolColumnsFor(int pages) {
   return c;
 }
 
+glm::mat4 regionViewProj(const glm::mat4& viewProj, int level, int x, int y, int side,
+                         const pages::VirtualLayout& layout) {
+  const float n = float(layout.pagesPerSide(level)), s = float(side);
+  glm::mat4 crop(1.0f);
+  crop[0][0] = n / s;
+  crop[1][1] = n / s;
+  crop[3][0] = -(2.0f * float(x) + s - n) / s;
+  crop[3][1] = -(2.0f * float(y) + s - n) / s;
+  return crop * viewProj;
+}
+
 glm::mat4 pageViewProj(const glm::mat4& viewProj, const pages::PageId& p,
                        const pages::VirtualLayout& layout) {
-  const float n = float(layout.pagesPerSide(p.level));
-  glm::mat4 crop(1.0f);
-  crop[0][0] = n;
-  crop[1][1] = n;
-  crop[3][0] = -(2.0f * float(p.x) + 1.0f - n);
-  crop[3][1] = -(2.0f * float(p.y) + 1.0f - n);
-  return crop * viewProj;
+  return regionViewProj(viewProj, p.level, p.x, p.y, 1, layout);
 }
 
 bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int minPages,
@@ -207,12 +224,8 @@ bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int min
   if (!poolMap_ || poolPages_ != poolPages || poolMap_.width() != columns * layout_.pageSize) {
     poolPages_ = poolPages;
     poolColumns_ = columns;
-    poolMap_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, columns * layout_.pageSize,
-                                     rows * layout_.pageSize);
-    poolFbo_ = gl::Framebuffer::create();
-    poolFbo_.attach(GL_DEPTH_ATTACHMENT, poolMap_);
-    poolFbo_.setDrawBuffers(0);
-    poolFbo_.checkComplete(technique + " page pool");
+    createDepthTarget(poolMap_, poolFbo_, columns * layout_.pageSize, rows * layout_.pageSize,
+                      technique + " page pool");
     changed = true;
   }
   return changed;
@@ -252,6 +265,50 @@ void PagedMap::renderPages(const gl::Program& depth, const SceneGpu& scene,
   glDisable(GL_SCISSOR_TEST);
 }
 
+void PagedMap::renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
+                                const glm::mat4& viewProj,
+                                std::span<const pages::Superpage> superpages,
+                                const pages::PageTable& table, int superpageSize,
+                                gl::GpuTimer& timer, const std::string& renderPass,
+                                const std::string& copyPass) {
+  const int ps = layout_.pageSize;
+  const int side = std::min(superpageSize, layout_.virtualResolution);
+  if (!superpage_ || superpage_.width() != side) {
+    createDepthTarget(superpage_, superpageFbo_, side, side, "rmsm superpage target");
+  }
+  {
+    // Free slots hold 1 (far) as on the page-by-page path: the pools are then equal.
+    auto pass = timer.scope(renderPass);
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(poolFbo_.id(), GL_DEPTH, 0, &one);
+  }
+  for (const pages::Superpage& s : superpages) {
+    // The block's pages: perSide a side, or the whole level when it has fewer.
+    const int blockPages = std::min(s.pagesPerSide, layout_.pagesPerSide(s.level));
+    const int x0 = s.x * s.pagesPerSide, y0 = s.y * s.pagesPerSide;
+    {
+      auto pass = timer.scope(renderPass);
+      beginDepthPass(superpageFbo_.id(), blockPages * ps, blockPages * ps, true);
+      depth.use();
+      depth.set("u_lightViewProj", regionViewProj(viewProj, s.level, x0, y0, blockPages, layout_));
+      scene.draw(depth, SL_UNIT_MATERIAL);
+    }
+    auto pass = timer.scope(copyPass);
+    for (const pages::PageId& p : s.pages) {
+      const int slot = table.slot(p);
+      if (slot < 0) throw std::logic_error("renderSuperpages: a page without a slot");
+      glCopyImageSubData(superpage_.id(), GL_TEXTURE_2D, 0, (p.x - x0) * ps, (p.y - y0) * ps, 0,
+                         poolMap_.id(), GL_TEXTURE_2D, 0, (slot % poolColumns_) * ps,
+                         (slot / poolColumns_) * ps, 0, ps, ps, 1);
+    }
+  }
+}
+
+void PagedMap::releaseSuperpageTarget() {
+  superpageFbo_ = {};
+  superpage_ = {};
+}
+
 void PagedMap::setLayoutUniforms(const gl::Program& p, const glm::mat4& viewProj) const {
   p.set("u_rmsmViewProj", viewProj);
   p.set("u_rmsmVirtualResolution", layout_.virtualResolution);
@@ -276,6 +333,9 @@ void PagedMap::addMemory(MemoryStats& m) const {
   if (poolMap_)
     m.add("page pool", gl::formatName(poolMap_.format()), poolMap_.width(), poolMap_.height(), 1,
           gl::bytesPerTexel(poolMap_.format()));
+  if (superpage_)
+    m.add("superpage target", gl::formatName(superpage_.format()), superpage_.width(),
+          superpage_.height(), 1, gl::bytesPerTexel(superpage_.format()));
   if (pageTable_)
     for (int l = 0; l < layout_.levels(); ++l)
       m.add("page table level " + std::to_string(l), "R32UI", layout_.pagesPerSide(l),

@@ -17,6 +17,9 @@
 namespace sl {
 
 class SceneGpu;
+namespace gl {
+class GpuTimer;
+}
 
 /// The parameters of a paged map, declared once for rmsm and asm: the shared shadow-map ones
 /// (bias, PCF; no `resolution`), virtual.resolution, page.size, lod.bias, pool.pages (rmsm's
@@ -66,6 +69,18 @@ class PagedMap {
   void renderPages(const gl::Program& depth, const SceneGpu& scene, const glm::mat4& viewProj,
                    std::span<const pages::PageId> pageIds, std::span<const int> slots,
                    bool clearPool);
+  /// Lefohn et al.'s render step: the pool cleared, then per superpage (its level's block of
+  /// `superpageSize`² texels, or the whole level when smaller) one depth pass of `viewProj`
+  /// cropped to the block (regionViewProj) into the superpage target (timed as `renderPass`),
+  /// then each of its pages copied (glCopyImageSubData) to its slot in `table` (`copyPass`).
+  /// Creates the target of min(superpageSize, virtual.resolution)² texels on first use.
+  void renderSuperpages(const gl::Program& depth, const SceneGpu& scene, const glm::mat4& viewProj,
+                        std::span<const pages::Superpage> superpages, const pages::PageTable& table,
+                        int superpageSize, gl::GpuTimer& timer, const std::string& renderPass,
+                        const std::string& copyPass);
+  /// Frees the superpage target (the page-by-page path does not need it).
+  void releaseSuperpageTarget();
+  const gl::Texture& superpageTexture() const { return superpage_; }
   /// The layout's uniforms of rmsm/request.glsl.
   void setLayoutUniforms(const gl::Program& p, const glm::mat4& viewProj) const;
   /// The paged lookup's bindings: every level a map of the shared bias model with `view`'s
@@ -76,7 +91,7 @@ class PagedMap {
   void publish(FrameContext& ctx, const PageViewsFrame& frame) const;
   /// Pages per side of every level (Technique::pageGrid: the page-border overlay).
   std::vector<int> pageGrid() const;
-  /// The pool's and the page table's bytes.
+  /// The pool's, the page table's and the superpage target's bytes.
   void addMemory(MemoryStats& m) const;
 
  private:
@@ -86,11 +101,17 @@ class PagedMap {
   gl::Texture poolMap_;  ///< DEPTH_COMPONENT32F, poolColumns x rows pages
   gl::Framebuffer poolFbo_;
   gl::Texture pageTable_;  ///< R32UI, finest pages per side, one mip level per quadtree level
+  gl::Texture superpage_;  ///< DEPTH_COMPONENT32F, one superpage (renderSuperpages only)
+  gl::Framebuffer superpageFbo_;
 };
 
 /// World -> clip of one page: the map's matrix followed by the crop of the page's square of
 /// light uv onto the whole clip square (depth unchanged: the page stores the map's depth).
 glm::mat4 pageViewProj(const glm::mat4& viewProj, const pages::PageId& p,
                        const pages::VirtualLayout& layout);
+/// World -> clip of a square block of `side` x `side` pages of `level` whose lower-left page
+/// is (x, y): the crop of that block of light uv onto the whole clip square (side 1: one page).
+glm::mat4 regionViewProj(const glm::mat4& viewProj, int level, int x, int y, int side,
+                         const pages::VirtualLayout& layout);
 
 }  // namespace sl

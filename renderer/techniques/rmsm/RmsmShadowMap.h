@@ -3,7 +3,8 @@
 // pages camera pixels ask for are rendered, at the LOD each pixel needs, into one physical
 // pool behind a page table (a mip chain). Per frame: requests (compute) → dedup + compaction
 // (compute) → read back → sort + unique + allocate (CPU, renderer/algo/pages) → page table →
-// render each allocated page into its pool slot (a viewport into the pool). Directional only.
+// bin pages into 1024² superpages → render each superpage once → copy its pages into the pool
+// (rmsm.render = superpages; pages: each page rendered into its slot). Directional only.
 #pragma once
 
 #include <vector>
@@ -35,9 +36,18 @@ class RmsmShadowMap : public Technique {
     std::vector<pages::PageKey> compacted;  ///< the GPU's list after dedup + compaction
     std::vector<pages::PageKey> unique;     ///< sorted, unique (CPU)
     pages::Allocation allocation;
-    int superpages = 0;  ///< 1024² superpages the allocated pages fall into
+    /// The allocated pages binned into SL_RMSM_SUPERPAGE² superpages.
+    std::vector<pages::Superpage> superpages;
+    int sceneDraws = 0;  ///< scene draws of the render step (superpages or pages)
+    /// Texels the render step's viewports cover (cleared and rasterised): per superpage its
+    /// block (min(superpage, level) side)², or per page page.size².
+    std::int64_t renderTexels = 0;
   };
+  /// rmsm.render's values.
+  static constexpr int kRenderSuperpages = 0, kRenderPages = 1;
   const FrameResult& lastFrame() const { return last_; }
+  /// The pool (pages side by side) after the last frame's render step.
+  const gl::Texture& poolTexture() const { return map_.poolTexture(); }
   /// The per-pixel request keys of the last frame (r32ui, camera size) and the page table.
   const gl::Texture& requestImage() const { return requests_; }
   const gl::Texture& pageTableTexture() const { return map_.pageTableTexture(); }

@@ -111,7 +111,8 @@ std::set<std::string> PagesPanel::observedKeys() const {
           "pages.pool.levels", "pages.pool.depth", "pages.pool.columns",
           "pages.requested",   "pages.allocated",  "pages.coarsened",
           "pages.pool",        "pages.superpages", "pages.requests.compacted",
-          "asm.new",           "asm.hits",         "asm.evicted"};
+          "pages.scene_draws", "asm.new",          "asm.hits",
+          "asm.evicted"};
 }
 
 void PagesPanel::showPublication(const sl::Publication& pub) {
@@ -173,14 +174,16 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
         QStringLiteral("."));
   else
     info_->setText(tr("%1 requests after dedup, %2 unique pages; <b>%3 of %4</b> pool pages "
-                      "used, %5 superpages; <b>%6</b> requests coarsened (pool ran out).<br>Page "
+                      "used, %5 superpages, %7 scene draws; <b>%6</b> requests coarsened (pool ran "
+                      "out).<br>Page "
                       "table: ")
                        .arg(number("pages.requests.compacted"))
                        .arg(requested)
                        .arg(allocated)
                        .arg(pool)
                        .arg(number("pages.superpages"))
-                       .arg(coarsened) +
+                       .arg(coarsened)
+                       .arg(number("pages.scene_draws")) +
                    legendText({PS::Requested, PS::Fallback, PS::Coarsened, PS::Empty}) +
                    QStringLiteral("."));
   if (!history_.empty() && double(pub.frameIndex) <= history_.back().frame) history_.clear();

@@ -120,9 +120,10 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
   tile_.ensure(glm::ivec2(res), "virtual-tiled tile");
   ResolveProgress* progress = t.progress;
   const int total = n * n;
-  // Progressive (the GUI's continuous rendering): tiles from `next` on, until the budget is
-  // spent; every pixel is written by exactly one tile, so the result once all are done does
-  // not depend on how the tiles were spread over calls.
+  // Progressive (the GUI's continuous rendering): tiles from `next` on, at least one, then as
+  // long as the next tile (estimated as long as the last) fits in the budget; every pixel is
+  // written by exactly one tile, so the result once all are done does not depend on how the tiles
+  // were spread over calls.
   int first = 0;
   if (progress && progress->resume) first = std::clamp(progress->next, 0, total);
   if (first >= total) first = 0;
@@ -130,6 +131,7 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
   const auto start = std::chrono::steady_clock::now();
   const glm::vec2 texelsPerUv(float(n) * float(res));
   int k = first;
+  double doneMs = 0.0;  // wall time when the previous tile was done
   while (k < total) {
     const int i = k % n, j = k / n;
     const glm::dvec2 lo(double(i) / n, double(j) / n);
@@ -149,7 +151,10 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
       const double ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
               .count();
-      if (ms >= progress->budgetMs) break;
+      const double tileMs = ms - doneMs;
+      doneMs = ms;
+      // Stop before a tile that would pass the budget (estimated as long as this one).
+      if (ms + tileMs > progress->budgetMs) break;
     }
   }
   if (progress) {

@@ -23,7 +23,8 @@ constexpr const char* kSelfTests[] = {"params",
                                       "split-params[=DIR]",
                                       "lesson-claims[=DIR]",
                                       "live-error[=DIR]",
-                                      "adaptive-resolution[=DIR]"};
+                                      "adaptive-resolution[=DIR]",
+                                      "no-freeze[=DIR]"};
 
 QString selfTestUsage() {
   QStringList all;

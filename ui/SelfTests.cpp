@@ -140,6 +140,8 @@ void SelfTests::run() {
     ran = liveError(argument_);
   else if (name_ == QLatin1String("adaptive-resolution"))
     ran = adaptiveResolution(argument_);
+  else if (name_ == QLatin1String("no-freeze"))
+    ran = noFreeze(argument_);
   else if (name_ == QLatin1String("bad-session"))
     ran = badSession(argument_);
   else

@@ -113,6 +113,11 @@ class SelfTests : public QObject {
   /// large budget climbs back to full size; view.adaptive off renders at full size. PNGs of
   /// the window (live error) and the reduced view into DIR when given.
   bool adaptiveResolution(const QString& dir);
+  /// no-freeze[=DIR]: continuous rendering of virtual-tiled at its defaults resolves its
+  /// tiles progressively: a 20 ms heartbeat timer never waits 1 s or more, partial frames
+  /// say "tile k of 256", a complete frame arrives, and it equals the one-call frame pixel
+  /// for pixel with the same error (live vs synchronous). PNGs into DIR when given.
+  bool noFreeze(const QString& dir);
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
   /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;

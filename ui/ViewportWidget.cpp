@@ -438,6 +438,13 @@ void ViewportWidget::paintGL() {
   const int frameW = sl::AdaptiveResolution::scaled(mainWidth, divisor);
   const int frameH = sl::AdaptiveResolution::scaled(h, divisor);
   internalSize_ = QSize(frameW, frameH);
+  // Progressive resolve (continuous rendering with adaptive resolution on): a technique that
+  // resolves tile by tile spends at most half the budget on tiles per frame and keeps its
+  // result between frames, so that no frame blocks the event loop for seconds
+  // (virtual-tiled's 256 tiles). Scripted runs and on-demand frames resolve in one call.
+  const bool progressive = adaptive && continuous_ && !paused_;
+  renderer_->setProgressiveBudget(
+      progressive ? kProgressiveShare * double(shared.getInt("view.adaptive.budget_ms")) : 0.0);
   QElapsedTimer frameClock;
   frameClock.start();
   if (split)
@@ -450,8 +457,16 @@ void ViewportWidget::paintGL() {
     error = std::string("renderer: ") + e.what();
   }
   lastFrameMs_ = std::max(double(frameClock.nsecsElapsed()) / 1e6, renderer_->stats().totalMs);
+  // A progressive frame's tiles are bounded by their own budget: the resolution follows the
+  // rest (the per-pixel work), else a slow tile would drop the view and restart the tiles.
+  const auto& progress = renderer_->stats().progress;
   if (adaptive && !error)
-    adaptive_.onFrame(lastFrameMs_, double(shared.getInt("view.adaptive.budget_ms")));
+    adaptive_.onFrame(progress ? std::max(0.0, lastFrameMs_ - progress->spentMs) : lastFrameMs_,
+                      double(shared.getInt("view.adaptive.budget_ms")));
+  if (progress && !error)
+    progressNote_ = *progress;
+  else
+    progressNote_.reset();
   ++framesRendered_;
   if (error) problem += (problem.empty() ? "" : "; ") + *error;
   for (const std::string& glError : renderer_->takeGlErrors())
@@ -461,14 +476,28 @@ void ViewportWidget::paintGL() {
   lastProblem_ = problem;
 
   updateZoomInset();
-  if (continuous_ && !error) updateLiveReference();
+  // A partial progressive frame is neither traced nor measured: the error waits for the
+  // complete one.
+  const bool partial = !renderer_->stats().complete();
+  if (continuous_ && !error && !partial) updateLiveReference();
   updateOverlayWidget();
   Q_EMIT frameRendered();
   probeHover();  // the frame changed under a still mouse
   // On demand (or paused): the error is computed once the view is still (restarted by every
   // frame). Continuous: the live reference above keeps it.
-  if (!errorIsCurrent() && (!continuous_ || paused_)) errorTimer_.start(kErrorDelayMs);
-  if (continuous_ && !paused_) update();
+  if (partial)
+    errorTimer_.stop();
+  else if (!errorIsCurrent() && (!continuous_ || paused_))
+    errorTimer_.start(kErrorDelayMs);
+  // A progressive frame yields to the event loop before the next one: the next frame is
+  // asked for from a 1 ms timer, so that timers and input already due (ordered by due
+  // time) run first instead of queueing behind back-to-back frames.
+  if (continuous_ && !paused_) {
+    if (progress && !error)
+      QTimer::singleShot(1, this, [this] { update(); });
+    else
+      update();
+  }
 }
 
 // GL current. Creates the split renderer and applies the technique and parameters
@@ -1172,11 +1201,23 @@ void ViewportWidget::setAdaptiveAllowed(bool allowed) {
 }
 
 QString ViewportWidget::resolutionNote() const {
-  if (frameDivisor_ <= 1) return {};
-  return tr("internal resolution %1\u00d7%2: frame took %3 ms")
-      .arg(internalSize_.width())
-      .arg(internalSize_.height())
-      .arg(adaptive_.dropFrameMs() > 0 ? adaptive_.dropFrameMs() : lastFrameMs_, 0, 'f', 0);
+  QString note;
+  if (frameDivisor_ > 1)
+    note =
+        tr("internal resolution %1\u00d7%2: frame took %3 ms")
+            .arg(internalSize_.width())
+            .arg(internalSize_.height())
+            .arg(adaptive_.dropFrameMs() > 0 ? adaptive_.dropFrameMs() : lastFrameMs_, 0, 'f', 0);
+  const QString tiles = progressText();
+  if (!tiles.isEmpty()) note += (note.isEmpty() ? QString() : QStringLiteral("  \u00b7  ")) + tiles;
+  return note;
+}
+
+QString ViewportWidget::progressText() const {
+  if (!progressNote_ || progressNote_->shownComplete) return {};
+  return tr("tile %1 of %2: drawn progressively, error when complete")
+      .arg(progressNote_->done)
+      .arg(progressNote_->total);
 }
 
 void ViewportWidget::setProbeWanted(bool wanted) {

@@ -113,6 +113,11 @@ class ViewportWidget : public QOpenGLWidget {
   double lastFrameMs() const { return lastFrameMs_; }
   /// "internal resolution 240×150: frame took 610 ms" while reduced, else empty.
   QString resolutionNote() const;
+  /// While a progressive frame is partial (continuous rendering of a tiled technique):
+  /// "tile k of N: drawn progressively, error when complete"; empty otherwise.
+  QString progressText() const;
+  /// The last frame's progressive resolve (absent: a one-call frame).
+  const std::optional<sl::FrameStats::Progress>& frameProgress() const { return progressNote_; }
 
   /// Pixels read back for the hover probe since the renderer was created.
   std::uint64_t probesRead() const { return probesRead_; }
@@ -325,6 +330,10 @@ class ViewportWidget : public QOpenGLWidget {
   int frameDivisor_ = 1;  ///< of the last frame
   QSize internalSize_;    ///< the main renderer's last frame (device pixels)
   double lastFrameMs_ = 0.0;
+  std::optional<sl::FrameStats::Progress> progressNote_;  ///< the last frame's progress
+  /// Share of view.adaptive.budget_ms a progressive frame spends on tiles (the rest: G-buffer,
+  /// composite, the overshoot of the last tile, the event loop).
+  static constexpr double kProgressiveShare = 0.5;
   std::uint64_t probesRead_ = 0;
 
   // What the renderer saw last frame; any difference means "view changed".

@@ -62,6 +62,19 @@ struct FrameStats {
     std::uint64_t changed = 0;   ///< of which lit in one and shadowed in the other
   };
   std::optional<MaskChangeCount> maskChange;
+  /// A progressive resolve (Renderer::setProgressiveBudget, a technique that resolves unit by
+  /// unit): the units done of this view and their number. Absent for a one-call resolve (the
+  /// frame is complete). `shownComplete`: the targets hold every unit of this view (a whole
+  /// pass has finished since the view last changed; later calls refresh it in place).
+  struct Progress {
+    int done = 0, total = 0;
+    bool shownComplete = false;
+    bool completedNow = false;  ///< this call finished the pass (done == total)
+    double spentMs = 0.0;       ///< wall time this call spent on units (within the budget)
+  };
+  std::optional<Progress> progress;
+  /// False while the view shows a partial progressive result (metrics and error wait).
+  bool complete() const { return !progress || progress->shownComplete; }
   double passMs(const std::string& name) const;
 };
 

@@ -192,6 +192,14 @@ struct RendererState {
   /// What the error overlay's reference mask was computed for (frame signature).
   std::string referenceSignature;
   std::string frameSignature;
+  /// Progressive resolve (setProgressiveBudget): the budget per call (0: off), the view whose
+  /// units the main targets hold, the next unit and their number, whether a whole pass of
+  /// that view has finished, and this call's progress (for FrameStats).
+  double progressiveBudgetMs = 0.0;
+  std::string progressSignature;
+  int progressNext = 0, progressTotal = 0;
+  bool progressShownComplete = false;
+  std::optional<FrameStats::Progress> frameProgress;
 
   const gl::Program& resolveProgramFor(const std::string& lookup) {
     auto it = resolvePrograms.find(lookup);
@@ -498,6 +506,15 @@ const std::set<std::string>& Renderer::requestedPublications() const {
 const Publication& Renderer::publication() const {
   return s_->publication;
 }
+void Renderer::setProgressiveBudget(double ms) {
+  s_->progressiveBudgetMs = ms > 0.0 ? ms : 0.0;
+  if (ms <= 0.0) s_->progressSignature.clear();
+}
+
+double Renderer::progressiveBudget() const {
+  return s_->progressiveBudgetMs;
+}
+
 void Renderer::resetTemporalState() {
   if (s_->technique) s_->technique->resetTemporalState();
 }
@@ -631,9 +648,20 @@ void resolveInto(RendererState& s, Targets& t, bool mainCamera) {
     glBindVertexArray(s.emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
   } else {
+    // A progressive resolve continues the view the targets hold (the main camera only).
+    ResolveProgress progress;
+    const bool progressive = mainCamera && s.progressiveBudgetMs > 0.0;
+    if (progressive) {
+      progress.budgetMs = s.progressiveBudgetMs;
+      progress.resume = s.progressSignature == s.frameSignature && s.progressTotal > 0;
+      progress.next = progress.resume && s.progressNext < s.progressTotal ? s.progressNext : 0;
+      if (!progress.resume) s.progressShownComplete = false;
+      s.progressSignature.clear();  // until this call's units are done
+    }
     // Map 0 for every pixel unless the technique writes its selection.
     const GLuint zero = 0;
-    glClearTexImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    if (!progress.resume)
+      glClearTexImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     const ResolveTargets targets{t.width,
                                  t.height,
                                  t.position,
@@ -647,8 +675,19 @@ void resolveInto(RendererState& s, Targets& t, bool mainCamera) {
                                  s.light,
                                  s.sceneGpu.get(),
                                  mainCamera ? s.timer.get() : nullptr,
-                                 mainCamera};
+                                 mainCamera,
+                                 progressive ? &progress : nullptr};
     s.technique->resolveDeferred(targets, params);
+    if (progressive && progress.total > 0) {
+      s.progressSignature = s.frameSignature;
+      s.progressNext = progress.next;
+      s.progressTotal = progress.total;
+      const bool done = progress.next >= progress.total;
+      if (done) s.progressShownComplete = true;
+      s.frameProgress =
+          FrameStats::Progress{std::min(progress.next, progress.total), progress.total,
+                               s.progressShownComplete, done, progress.spentMs};
+    }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
@@ -807,6 +846,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   const float aspect = float(width) / float(height);
   const glm::mat4 view = s.camera.view(), proj = s.camera.projection(aspect);
   ++s.frameIndex;
+  s.frameProgress.reset();
   s.timer->beginFrame();
   const bool publishing = !s.requested.empty();
   if (publishing) {
@@ -886,7 +926,10 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 
   {  // 4. Composite (shading).
     auto pass = s.timer->scope("composite");
-    compositeInto(s, t, s.camera.position, s.referenceSignature == s.frameSignature,
+    // A partial progressive frame draws no error pixels: its reference is of the whole frame.
+    const bool shownComplete = !s.frameProgress || s.frameProgress->shownComplete;
+    compositeInto(s, t, s.camera.position,
+                  shownComplete && s.referenceSignature == s.frameSignature,
                   /*mainCamera=*/true);
   }
 
@@ -928,6 +971,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   s.stats.outlines = std::move(outlines);
   s.stats.outsideCamera = outsideCamera;
   s.stats.maskChange = maskChange;
+  s.stats.progress = s.frameProgress;
   (void)frameStart;
   return std::nullopt;
 }

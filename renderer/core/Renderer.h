@@ -332,6 +332,15 @@ class Renderer {
   std::optional<std::string> reloadShaders();
   /// GL debug-output errors seen since the last call (empty when all is well).
   std::vector<std::string> takeGlErrors();
+  /// Progressive resolve (the GUI's continuous rendering, so that no call blocks its event
+  /// loop for long): > 0 lets a technique that resolves unit by unit (virtual-tiled's tiles,
+  /// ResolveProgress) spend about `ms` of wall time on units per renderFrame, keeping its
+  /// screen-space result between calls while the frame signature stays the same (restarting
+  /// when camera, light, parameters, scene or size change); FrameStats::progress says how far
+  /// it is. Once every unit is done the targets equal a one-call frame's, pixel for pixel.
+  /// 0 (the default: CLI, tests, grabs) = every frame complete in one call.
+  void setProgressiveBudget(double ms);
+  double progressiveBudget() const;
   /// Resets state that accumulates over frames (e.g. DA-RTW's rotation).
   void resetTemporalState();
 

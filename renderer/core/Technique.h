@@ -76,6 +76,22 @@ enum class ResolveMode {
 /// R8 (1 = lit), aliasing m R32F (texel footprint of the SELECTED map / pixel footprint,
 /// 0 where uncovered), texel RG32F (the selected map's uv, for the grid overlay), map index
 /// R8UI (the selected map, for the partition overlay; cleared to 0 before the call).
+/// A deferred resolve spread over several calls (Renderer::setProgressiveBudget: the GUI's
+/// continuous rendering; the CLI, tests and grabs never set it and resolve in one call). A
+/// technique that resolves in independent units (virtual-tiled: one tile each, every pixel
+/// written by exactly one tile) does units [next, ...) until `budgetMs` of wall time has gone
+/// (at least one), then sets `next` and `total`; the result once every unit is done is the
+/// one-call resolve's, pixel for pixel. A technique that ignores it leaves `total` 0 (done).
+struct ResolveProgress {
+  /// In: the targets already hold this same frame's earlier units (or a complete result): do
+  /// not clear them.
+  bool resume = false;
+  int next = 0;         ///< in: the first unit to do; out: the next one (total: complete)
+  int total = 0;        ///< out: the number of units (0: not progressive, done in one call)
+  double budgetMs = 0;  ///< in: wall time to spend on units in this call
+  double spentMs = 0;   ///< out: wall time spent on units in this call
+};
+
 struct ResolveTargets {
   int width = 0, height = 0;
   const gl::Texture& gPosition;  ///< world xyz, w = covered (RGBA32F)
@@ -97,6 +113,8 @@ struct ResolveTargets {
   /// False for the outside view's resolve: its pixels are not the main camera's, which a
   /// screen-space analysis (fvsm's tile rectangles) was made for.
   bool mainCamera = true;
+  /// Non-null: the host spreads the resolve over calls (ResolveProgress); null: one call.
+  ResolveProgress* progress = nullptr;
   /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the five
   /// targets to image units SL_IMAGE_RESOLVE_* (write-only), for a compute pass.
   void bindForCompute() const;

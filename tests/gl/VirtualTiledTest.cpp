@@ -113,5 +113,85 @@ TEST(VirtualTiled, DeclaredPassesAreTimed) {
   EXPECT_NE(err->find("tiles"), std::string::npos) << *err;
 }
 
+// Progressive resolve (Renderer::setProgressiveBudget, the GUI's continuous rendering): a
+// budget of ~0 ms does one tile per call; the targets keep the earlier calls' tiles, so once
+// all 16 are done the frame equals the one-call frame pixel for pixel (every target, the
+// colour, the error). Partial frames say how far they are; a camera move restarts at tile 1;
+// budget 0 renders complete frames again.
+TEST(VirtualTiled, ProgressiveThenCompleteEqualsOneCall) {
+  auto r = test::makeRenderer("plane-box", "virtual-tiled");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("tiles", 4));
+  ASSERT_FALSE(r->params().set("tile.resolution", 128));
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  EXPECT_FALSE(r->stats().progress) << "no budget: one call, no progress";
+  EXPECT_TRUE(r->stats().complete());
+  const FrameReadback oneCall = r->readback();
+  const double oneCallPct = r->computeError().stats.errorPct;
+
+  // A different view first, so that the targets hold other pixels when the tiles start.
+  const Camera original = r->camera();
+  Camera moved = original;
+  moved.orbit(30.0f, 10.0f);
+  r->setCamera(moved);
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  r->setCamera(original);
+
+  r->setProgressiveBudget(1e-6);  // one tile per call
+  int calls = 0;
+  std::vector<int> done;
+  for (; calls < 40; ++calls) {
+    ASSERT_FALSE(r->renderFrame(160, 120, 0));
+    const auto& p = r->stats().progress;
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->total, 16);
+    done.push_back(p->done);
+    if (p->shownComplete) break;
+    EXPECT_FALSE(r->stats().complete());
+  }
+  ASSERT_EQ(done.size(), 16u) << "one tile per call";
+  for (int i = 0; i < 16; ++i) EXPECT_EQ(done[std::size_t(i)], i + 1);
+  EXPECT_TRUE(r->stats().progress->completedNow);
+  EXPECT_TRUE(r->stats().complete());
+  const FrameReadback progressive = r->readback();
+  EXPECT_EQ(progressive.hardMask, oneCall.hardMask);
+  EXPECT_EQ(progressive.aliasing, oneCall.aliasing);
+  EXPECT_EQ(progressive.texel, oneCall.texel);
+  EXPECT_EQ(progressive.mapIndex, oneCall.mapIndex);
+  EXPECT_EQ(progressive.color.pixels, oneCall.color.pixels);
+  EXPECT_EQ(r->computeError().stats.errorPct, oneCallPct);
+
+  // The same view again: refreshed in place, the shown frame stays complete and equal.
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  EXPECT_EQ(r->stats().progress->done, 1);
+  EXPECT_TRUE(r->stats().complete());
+  EXPECT_EQ(r->readback().hardMask, oneCall.hardMask);
+
+  // A camera move restarts: partial again, from the first tile.
+  r->setCamera(moved);
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  EXPECT_EQ(r->stats().progress->done, 1);
+  EXPECT_FALSE(r->stats().complete());
+  // A large budget finishes the rest in one call; budget 0: complete frames, no progress.
+  r->setProgressiveBudget(1e9);
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  EXPECT_EQ(r->stats().progress->done, 16);
+  EXPECT_TRUE(r->stats().complete());
+  r->setProgressiveBudget(0.0);
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  EXPECT_FALSE(r->stats().progress);
+  test::expectNoGlErrors(*r);
+}
+
+// A technique that resolves in one call ignores the budget: complete frames, no progress.
+TEST(VirtualTiled, ProgressiveBudgetLeavesOtherTechniquesWhole) {
+  auto r = test::makeRenderer("plane-box", "uniform");
+  ASSERT_TRUE(r);
+  r->setProgressiveBudget(1e-6);
+  ASSERT_FALSE(r->renderFrame(80, 60, 0));
+  EXPECT_FALSE(r->stats().progress);
+  EXPECT_TRUE(r->stats().complete());
+}
+
 }  // namespace
 }  // namespace sl

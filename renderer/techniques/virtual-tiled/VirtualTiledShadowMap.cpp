@@ -4,6 +4,7 @@
 #include "VirtualTiledShadowMap.h"
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 #include <stdexcept>
 
@@ -117,22 +118,50 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
   const int n = params.getInt("tiles");
   const int res = params.getInt("tile.resolution");
   tile_.ensure(glm::ivec2(res), "virtual-tiled tile");
-  clearResolveTargets(t);
+  ResolveProgress* progress = t.progress;
+  const int total = n * n;
+  // Progressive (the GUI's continuous rendering): tiles from `next` on, at least one, then as
+  // long as the next tile (estimated as long as the last) fits in the budget; every pixel is
+  // written by exactly one tile, so the result once all are done does not depend on how the tiles
+  // were spread over calls.
+  int first = 0;
+  if (progress && progress->resume) first = std::clamp(progress->next, 0, total);
+  if (first >= total) first = 0;
+  if (!progress || !progress->resume) clearResolveTargets(t);
+  const auto start = std::chrono::steady_clock::now();
   const glm::vec2 texelsPerUv(float(n) * float(res));
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const glm::dvec2 lo(double(i) / n, double(j) / n);
-      const glm::dvec2 hi(double(i + 1) / n, double(j + 1) / n);
-      const DepthMapView view = subRectView(full_, lo, hi);
-      if (t.timer) t.timer->begin("tile depth");
-      renderDepth(*t.sceneGpu, depth_, tile_.fbo.id(), res, res, view.lightViewProj);
-      if (t.timer) t.timer->begin("tile apply");
-      glm::dvec2 applyLo, applyHi;
-      tileApplyRange(lo, hi, applyLo, applyHi);
-      applyTile(apply_, t,
-                {full_, view, tile_.texture, glm::ivec2(res), applyLo, applyHi, texelsPerUv,
-                 glm::ivec2(0), glm::ivec2(t.width, t.height), unsigned(j * n + i) & 255u});
+  int k = first;
+  double doneMs = 0.0;  // wall time when the previous tile was done
+  while (k < total) {
+    const int i = k % n, j = k / n;
+    const glm::dvec2 lo(double(i) / n, double(j) / n);
+    const glm::dvec2 hi(double(i + 1) / n, double(j + 1) / n);
+    const DepthMapView view = subRectView(full_, lo, hi);
+    if (t.timer) t.timer->begin("tile depth");
+    renderDepth(*t.sceneGpu, depth_, tile_.fbo.id(), res, res, view.lightViewProj);
+    if (t.timer) t.timer->begin("tile apply");
+    glm::dvec2 applyLo, applyHi;
+    tileApplyRange(lo, hi, applyLo, applyHi);
+    applyTile(apply_, t,
+              {full_, view, tile_.texture, glm::ivec2(res), applyLo, applyHi, texelsPerUv,
+               glm::ivec2(0), glm::ivec2(t.width, t.height), unsigned(k) & 255u});
+    ++k;
+    if (progress) {
+      glFinish();  // the tile's real cost, so that the budget bounds the call's wall time
+      const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
+      const double tileMs = ms - doneMs;
+      doneMs = ms;
+      // Stop before a tile that would pass the budget (estimated as long as this one).
+      if (ms + tileMs > progress->budgetMs) break;
     }
+  }
+  if (progress) {
+    progress->next = k;
+    progress->total = total;
+    progress->spentMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
   endTiles(t);
 }

@@ -1,9 +1,9 @@
 // The `asm` technique (adaptive shadow maps, Fernando et al. 2001): GPU-vs-CPU parity of the
 // edge-finding pass and its dedup + compaction (algo/asm and algo/pages are the reference),
 // the shadow test pass agreeing with the resolve once the quadtree converged, the page cache
-// (camera moves keep pages, a light change drops them and no stale page is used), exact
-// memory, declared passes == timed passes, bad parameters, the Pages panel's publications (the
-// CPU cache's states).
+// (camera moves keep pages, a light change or a new scene drops them and no stale page is
+// used), exact memory, declared passes == timed passes, bad parameters, the Pages panel's
+// publications (the CPU cache's states).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -162,6 +162,54 @@ TEST(Asm, CacheSurvivesTheCameraNotTheLight) {
   fresh->setLight(light);
   ASSERT_FALSE(fresh->renderFrame(w, h, 0));
   EXPECT_EQ(after, fresh->readback().hardMask);
+  test::expectNoGlErrors(*r);
+}
+
+// A new scene drops the cached pages even when everything the cache is keyed on matches (same
+// light, primitive count and bounds): here the box moves inside the plane, so the old pages are
+// wrong; the frame equals a fresh renderer's.
+TEST(Asm, ANewSceneDropsTheCacheEvenWithTheSameBounds) {
+  auto r = test::makeRenderer("plane-box", "asm");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("virtual.resolution", 16384));
+  r->requestPublications({"asm.*"});
+  const int w = 128, h = 72;
+  for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(w, h, 0));
+  ASSERT_EQ(r->publication().numbers.at("asm.invalidations"), 1.0);
+
+  auto moved = std::make_shared<Scene>(*r->scene());
+  const Aabb bounds = moved->bounds;
+  bool movedOne = false;
+  for (MeshPrimitive& p : moved->primitives) {
+    Aabb b;
+    for (const glm::vec3& v : p.positions) b.extend(v);
+    if (b.max.x - b.min.x > 0.5f * (bounds.max.x - bounds.min.x)) continue;  // the plane
+    for (glm::vec3& v : p.positions) v.x += 0.25f * (b.max.x - b.min.x);
+    movedOne = true;
+  }
+  ASSERT_TRUE(movedOne);
+  Aabb after;
+  for (const MeshPrimitive& p : moved->primitives)
+    for (const glm::vec3& v : p.positions) after.extend(v);
+  ASSERT_EQ(after.min, bounds.min) << "the box must stay inside the plane's bounds";
+  ASSERT_EQ(after.max, bounds.max);
+
+  const Camera cam = r->camera();
+  const Light light = r->light();
+  r->setScene(moved);
+  r->setCamera(cam);
+  r->setLight(light);
+  ASSERT_FALSE(r->renderFrame(w, h, 0));
+  EXPECT_EQ(r->publication().numbers.at("asm.invalidations"), 2.0);
+
+  auto fresh = test::makeRenderer("plane-box", "asm");
+  ASSERT_TRUE(fresh);
+  ASSERT_FALSE(fresh->params().set("virtual.resolution", 16384));
+  fresh->setScene(moved);
+  fresh->setCamera(cam);
+  fresh->setLight(light);
+  ASSERT_FALSE(fresh->renderFrame(w, h, 0));
+  EXPECT_EQ(r->readback().hardMask, fresh->readback().hardMask);
   test::expectNoGlErrors(*r);
 }
 

@@ -179,7 +179,6 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
   ctx.addOutline(view_.lightViewProj, OutlineRole::LightMap);
 
   const CacheKey key{view_.lightViewProj,
-                     &ctx.scene,
                      ctx.scene.primitives.size(),
                      ctx.scene.bounds.min,
                      ctx.scene.bounds.max,

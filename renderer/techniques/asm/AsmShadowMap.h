@@ -34,6 +34,10 @@ class AsmShadowMap : public Technique {
   std::vector<int> pageGrid() const override { return map_.pageGrid(); }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
+  /// A new scene (Renderer::setScene) or a reset: the cached pages are dropped; the next frame
+  /// starts from the coarse map. (Not keyed on the scene's address: a new scene may be
+  /// allocated where the old one was.)
+  void resetTemporalState() override { cacheKey_ = {}; }
 
   /// What the last frame did (tests, publications).
   struct FrameResult {
@@ -66,10 +70,10 @@ class AsmShadowMap : public Technique {
   gl::Program depthProgram_, testProgram_, edgesProgram_, compactProgram_;
   PagedMap map_;
   std::unique_ptr<adaptive::PageCache> cache_;
-  /// What the cached pages were rendered for: any change drops them.
+  /// What the cached pages were rendered for: any change drops them (and so does a new scene,
+  /// resetTemporalState). The default key matches no frame (lightViewProj is zero).
   struct CacheKey {
     glm::mat4 lightViewProj{0.0f};
-    const Scene* scene = nullptr;
     std::size_t primitives = 0;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
     int virtualResolution = 0, pageSize = 0, poolPages = 0, coarseLevel = 0;

@@ -1215,9 +1215,13 @@ QString ViewportWidget::resolutionNote() const {
 
 QString ViewportWidget::progressText() const {
   if (!progressNote_ || progressNote_->shownComplete) return {};
-  return tr("tile %1 of %2: drawn progressively, error when complete")
-      .arg(progressNote_->done)
-      .arg(progressNote_->total);
+  const int per = std::max(1, progressNote_->unitsPerTile);
+  const int bands = progressNote_->done % per;
+  const QString ofNext = bands ? tr(" (+ %1 of %2 bands)").arg(bands).arg(per) : QString();
+  return tr("tile %1 of %2%3: drawn progressively, error when complete")
+      .arg(progressNote_->done / per)
+      .arg(progressNote_->total / per)
+      .arg(ofNext);
 }
 
 void ViewportWidget::setProbeWanted(bool wanted) {

@@ -71,6 +71,7 @@ struct FrameStats {
     bool shownComplete = false;
     bool completedNow = false;  ///< this call finished the pass (done == total)
     double spentMs = 0.0;       ///< wall time this call spent on units (within the budget)
+    int unitsPerTile = 1;       ///< units (bands) per tile: tiles done = done / unitsPerTile
   };
   std::optional<Progress> progress;
   /// False while the view shows a partial progressive result (metrics and error wait).

@@ -684,9 +684,12 @@ void resolveInto(RendererState& s, Targets& t, bool mainCamera) {
       s.progressTotal = progress.total;
       const bool done = progress.next >= progress.total;
       if (done) s.progressShownComplete = true;
-      s.frameProgress =
-          FrameStats::Progress{std::min(progress.next, progress.total), progress.total,
-                               s.progressShownComplete, done, progress.spentMs};
+      s.frameProgress = FrameStats::Progress{std::min(progress.next, progress.total),
+                                             progress.total,
+                                             s.progressShownComplete,
+                                             done,
+                                             progress.spentMs,
+                                             std::max(1, progress.unitsPerTile)};
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);

@@ -71,27 +71,30 @@ enum class ResolveMode {
   Deferred,
 };
 
-/// What a deferred resolve reads and writes (Technique::resolveDeferred). The targets
-/// follow shaders/common/resolve.frag: hard mask R8UI (SL_MASK_*), filtered visibility
-/// R8 (1 = lit), aliasing m R32F (texel footprint of the SELECTED map / pixel footprint,
-/// 0 where uncovered), texel RG32F (the selected map's uv, for the grid overlay), map index
-/// R8UI (the selected map, for the partition overlay; cleared to 0 before the call).
 /// A deferred resolve spread over several calls (Renderer::setProgressiveBudget: the GUI's
 /// continuous rendering; the CLI, tests and grabs never set it and resolve in one call). A
-/// technique that resolves in independent units (virtual-tiled: one tile each, every pixel
-/// written by exactly one tile) does units [next, ...) until `budgetMs` of wall time has gone
+/// technique that resolves in independent units (virtual-tiled: a 512-row band of a tile's
+/// depth pass each, the tile applied after its last band; every pixel written by exactly one
+/// tile) does units [next, ...) until `budgetMs` of wall time has gone
 /// (at least one), then sets `next` and `total`; the result once every unit is done is the
 /// one-call resolve's, pixel for pixel. A technique that ignores it leaves `total` 0 (done).
 struct ResolveProgress {
   /// In: the targets already hold this same frame's earlier units (or a complete result): do
   /// not clear them.
   bool resume = false;
-  int next = 0;         ///< in: the first unit to do; out: the next one (total: complete)
-  int total = 0;        ///< out: the number of units (0: not progressive, done in one call)
+  int next = 0;   ///< in: the first unit to do; out: the next one (total: complete)
+  int total = 0;  ///< out: the number of units (0: not progressive, done in one call)
+  /// out: units per tile (virtual-tiled: a tile's depth pass in bands of rows), for the note
+  int unitsPerTile = 1;
   double budgetMs = 0;  ///< in: wall time to spend on units in this call
   double spentMs = 0;   ///< out: wall time spent on units in this call
 };
 
+/// What a deferred resolve reads and writes (Technique::resolveDeferred). The targets
+/// follow shaders/common/resolve.frag: hard mask R8UI (SL_MASK_*), filtered visibility
+/// R8 (1 = lit), aliasing m R32F (texel footprint of the SELECTED map / pixel footprint,
+/// 0 where uncovered), texel RG32F (the selected map's uv, for the grid overlay), map index
+/// R8UI (the selected map, for the partition overlay; cleared to 0 before the call).
 struct ResolveTargets {
   int width = 0, height = 0;
   const gl::Texture& gPosition;  ///< world xyz, w = covered (RGBA32F)

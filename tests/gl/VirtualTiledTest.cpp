@@ -183,6 +183,48 @@ TEST(VirtualTiled, ProgressiveThenCompleteEqualsOneCall) {
   test::expectNoGlErrors(*r);
 }
 
+// A tile of 1024 rows resolves progressively in two bands of 512 (kProgressiveBandRows): one
+// unit per call, the note's tiles are units / 2, the complete frame is the one-call frame.
+// With the outside view on (a one-call resolve reusing the tile texture after the main one),
+// a tile interrupted mid-way starts again at its first band and is finished in that call, so
+// the frame still completes and is still equal.
+TEST(VirtualTiled, ProgressiveBandsThenCompleteEqualsOneCall) {
+  for (const bool outside : {false, true}) {
+    SCOPED_TRACE(outside ? "outside view on" : "outside view off");
+    auto r = test::makeRenderer("plane-box", "virtual-tiled");
+    ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().set("tiles", 2));
+    ASSERT_FALSE(r->params().set("tile.resolution", 1024));
+    ASSERT_FALSE(r->rendererParams().setFromString("view.outside", outside ? "on" : "off"));
+    ASSERT_FALSE(r->renderFrame(160, 120, 0));
+    const FrameReadback oneCall = r->readback();
+    const double oneCallPct = r->computeError().stats.errorPct;
+    ASSERT_GT(oneCallPct, 0.0);
+
+    r->setProgressiveBudget(1e-6);  // one unit per call (a whole tile after a restart)
+    std::vector<int> done;
+    for (int calls = 0; calls < 40; ++calls) {
+      ASSERT_FALSE(r->renderFrame(160, 120, 0));
+      const auto& p = r->stats().progress;
+      ASSERT_TRUE(p);
+      EXPECT_EQ(p->total, 8);
+      EXPECT_EQ(p->unitsPerTile, 2);
+      done.push_back(p->done);
+      if (p->shownComplete) break;
+    }
+    const std::vector<int> expected = {1, 2, 3, 4, 5, 6, 7, 8};
+    EXPECT_EQ(done, expected) << "one band per call, or the rest of a restarted tile";
+    ASSERT_TRUE(r->stats().complete());
+    const FrameReadback progressive = r->readback();
+    EXPECT_EQ(progressive.hardMask, oneCall.hardMask);
+    EXPECT_EQ(progressive.aliasing, oneCall.aliasing);
+    EXPECT_EQ(progressive.texel, oneCall.texel);
+    EXPECT_EQ(progressive.color.pixels, oneCall.color.pixels);
+    EXPECT_EQ(r->computeError().stats.errorPct, oneCallPct);
+    test::expectNoGlErrors(*r);
+  }
+}
+
 // A technique that resolves in one call ignores the budget: complete frames, no progress.
 TEST(VirtualTiled, ProgressiveBudgetLeavesOtherTechniquesWhole) {
   auto r = test::makeRenderer("plane-box", "uniform");

@@ -119,47 +119,69 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
   const int res = params.getInt("tile.resolution");
   tile_.ensure(glm::ivec2(res), "virtual-tiled tile");
   ResolveProgress* progress = t.progress;
-  const int total = n * n;
-  // Progressive (the GUI's continuous rendering): tiles from `next` on, at least one, then as
-  // long as the next tile (estimated as long as the last) fits in the budget; every pixel is
-  // written by exactly one tile, so the result once all are done does not depend on how the tiles
-  // were spread over calls.
+  // Progressive (the GUI's continuous rendering): units from `next` on, at least one, then as
+  // long as the next unit (estimated as long as the last) fits in the budget. A unit is one band
+  // of a tile's depth rows; after its last band the tile is applied. Every pixel is written by
+  // exactly one tile and a band writes only its own texels, so the result once all are done
+  // does not depend on how the units were spread over calls. One call: a band per tile.
+  const int bands = progress ? std::max(1, res / kProgressiveBandRows) : 1;
+  const int total = n * n * bands;
   int first = 0;
   if (progress && progress->resume) first = std::clamp(progress->next, 0, total);
   if (first >= total) first = 0;
+  // Mid-tile, the earlier bands must still be in tile_ (a one-call resolve in between, the
+  // outside view's, rendered other tiles into it): else that tile starts again at band 0, and
+  // this call finishes it whatever the budget (so that it cannot restart forever).
+  int mustReach = first + 1;
+  if (first % bands != 0 && (bandTile_ != first / bands || bandsDone_ != first % bands)) {
+    first -= first % bands;
+    mustReach = first + bands;
+  }
   if (!progress || !progress->resume) clearResolveTargets(t);
   const auto start = std::chrono::steady_clock::now();
   const glm::vec2 texelsPerUv(float(n) * float(res));
-  int k = first;
-  double doneMs = 0.0;  // wall time when the previous tile was done
-  while (k < total) {
+  int u = first;
+  double doneMs = 0.0;  // wall time when the previous unit was done
+  while (u < total) {
+    const int k = u / bands, band = u % bands;
     const int i = k % n, j = k / n;
     const glm::dvec2 lo(double(i) / n, double(j) / n);
     const glm::dvec2 hi(double(i + 1) / n, double(j + 1) / n);
     const DepthMapView view = subRectView(full_, lo, hi);
     if (t.timer) t.timer->begin("tile depth");
+    if (bands > 1) {
+      const int y0 = res * band / bands, y1 = res * (band + 1) / bands;
+      glEnable(GL_SCISSOR_TEST);  // the clear and the draw: rows [y0, y1) only
+      glScissor(0, y0, res, y1 - y0);
+    }
     renderDepth(*t.sceneGpu, depth_, tile_.fbo.id(), res, res, view.lightViewProj);
-    if (t.timer) t.timer->begin("tile apply");
-    glm::dvec2 applyLo, applyHi;
-    tileApplyRange(lo, hi, applyLo, applyHi);
-    applyTile(apply_, t,
-              {full_, view, tile_.texture, glm::ivec2(res), applyLo, applyHi, texelsPerUv,
-               glm::ivec2(0), glm::ivec2(t.width, t.height), unsigned(k) & 255u});
-    ++k;
+    glDisable(GL_SCISSOR_TEST);
+    bandTile_ = progress ? k : -1;
+    bandsDone_ = band + 1;
+    if (band == bands - 1) {
+      if (t.timer) t.timer->begin("tile apply");
+      glm::dvec2 applyLo, applyHi;
+      tileApplyRange(lo, hi, applyLo, applyHi);
+      applyTile(apply_, t,
+                {full_, view, tile_.texture, glm::ivec2(res), applyLo, applyHi, texelsPerUv,
+                 glm::ivec2(0), glm::ivec2(t.width, t.height), unsigned(k) & 255u});
+    }
+    ++u;
     if (progress) {
-      glFinish();  // the tile's real cost, so that the budget bounds the call's wall time
+      glFinish();  // the unit's real cost, so that the budget bounds the call's wall time
       const double ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
               .count();
-      const double tileMs = ms - doneMs;
+      const double unitMs = ms - doneMs;
       doneMs = ms;
-      // Stop before a tile that would pass the budget (estimated as long as this one).
-      if (ms + tileMs > progress->budgetMs) break;
+      // Stop before a unit that would pass the budget (estimated as long as this one).
+      if (u >= mustReach && ms + unitMs > progress->budgetMs) break;
     }
   }
   if (progress) {
-    progress->next = k;
+    progress->next = u;
     progress->total = total;
+    progress->unitsPerTile = bands;
     progress->spentMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }

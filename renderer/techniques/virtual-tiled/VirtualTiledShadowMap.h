@@ -36,6 +36,10 @@ void endTiles(const ResolveTargets& targets);
 
 class VirtualTiledShadowMap : public Technique {
  public:
+  /// A progressive resolve (ResolveProgress) renders a tile's depth in bands of this many rows
+  /// (scissored: the same texels as one pass), one unit each, so that a unit of a 4096² tile
+  /// is an eighth of its depth pass; the tile is applied after its last band.
+  static constexpr int kProgressiveBandRows = 512;
   static TechniqueInfo info();
   explicit VirtualTiledShadowMap(const gl::ShaderLibrary& lib);
 
@@ -51,6 +55,9 @@ class VirtualTiledShadowMap : public Technique {
   gl::Program apply_;
   TileDepthTarget tile_;  ///< the one tile texture every tile is rendered into in turn
   DepthMapView full_;     ///< the whole virtual map (this frame's fit)
+  /// The tile whose first `bandsDone_` bands tile_ holds (progressive); -1: none (a one-call
+  /// resolve, e.g. the outside view's, reuses tile_).
+  int bandTile_ = -1, bandsDone_ = 0;
 };
 
 /// The deferred application of one tile (shaders/virtual-tiled/apply_tile.comp), shared by

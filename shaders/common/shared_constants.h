@@ -129,6 +129,10 @@
 #define SL_RMSM_GROUP 8  // local_size_x/y of the request and compaction passes
 #define SL_RMSM_IMAGE_REQUESTS 0  // r32ui: the page key each pixel asks for (SL_PAGE_NONE: none)
 #define SL_RMSM_BUFFER_REQUESTS 0  // SSBO: count, then the compacted keys
+#define SL_RMSM_BUFFER_SORT 1      // SSBO: the keys a bitonic step sorts (rmsm/sort.comp)
+#define SL_RMSM_BUFFER_UNIQUE 2    // SSBO: the sorted keys with repeats -> SL_PAGE_NONE
+#define SL_RMSM_BUFFER_UNIQUE_COUNT 3  // SSBO: the number of keys rmsm/unique.comp kept
+#define SL_RMSM_SORT_GROUP 64      // local_size_x of rmsm/sort.comp and rmsm/unique.comp
 // Side in texels of an RMSM superpage (Lefohn et al. 2007): rmsm.render = superpages renders
 // each 1024² block of one level holding allocated pages once, then copies its pages to the pool.
 #define SL_RMSM_SUPERPAGE 1024

@@ -3,6 +3,7 @@
 // accuracy against the Embree reference next to uniform, the pool running out (coarser pages,
 // counted, no GL error), exact memory, declared passes == timed passes, superpages == page by page.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -116,6 +117,28 @@ TEST(Rmsm, RequestsCompactionAndPageTableMatchTheCpuReference) {
   }
   EXPECT_EQ(at, table.size());
   test::expectNoGlErrors(*r);
+}
+
+// The GPU's sort and unique (bitonic sort, unique, second sort) against std::sort +
+// std::unique of the same read-back compacted list: exact, on three scenes at three sizes and
+// LOD biases (list lengths 57 to 770, none a power of two: the padding is exercised).
+TEST(Rmsm, GpuSortUniqueEqualsTheCpuReference) {
+  for (const char* scene : {"plane-box", "diagonal", "corridor"}) {
+    auto r = makeProbe(scene);
+    ASSERT_TRUE(r);
+    for (auto [w, h, bias] : {std::tuple{96, 64, 0}, {160, 90, 1}, {320, 180, 2}}) {
+      SCOPED_TRACE(testing::Message() << scene << " " << w << "x" << h << " lod.bias " << bias);
+      ASSERT_FALSE(r->params().set("lod.bias", bias));
+      ASSERT_FALSE(r->renderFrame(w, h, 0));
+      const RmsmShadowMap& t = *g_probe;
+      const std::vector<pages::PageKey> cpu = pages::sortUnique(t.lastFrame().compacted);
+      std::printf("%s %dx%d bias %d: %zu compacted, %zu unique\n", scene, w, h, bias,
+                  t.lastFrame().compacted.size(), cpu.size());
+      EXPECT_GT(cpu.size(), 2u);
+      EXPECT_EQ(t.lastFrame().unique, cpu);
+    }
+    test::expectNoGlErrors(*r);
+  }
 }
 
 std::vector<float> readDepth(const gl::Texture& t) {
@@ -305,8 +328,10 @@ TEST(Rmsm, MemoryIsExact) {
     const std::uint64_t side = std::uint64_t(std::min(SL_RMSM_SUPERPAGE, virt));
     const std::uint64_t superpage =
         render == RmsmShadowMap::kRenderSuperpages ? 4 * side * side : 0;
+    const std::uint64_t sortKeys = 4ull * std::bit_ceil(std::uint64_t(160 * 90));
     EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(columns * page) * rows * std::uint64_t(page) + table +
-                             4ull * 160 * 90 + 4ull * (1 + 160 * 90) + superpage);
+                             4ull * 160 * 90 + 4ull * (1 + 160 * 90) + superpage + 2 * sortKeys +
+                             4);
   }
   test::expectNoGlErrors(*r);
 }

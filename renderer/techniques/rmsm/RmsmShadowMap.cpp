@@ -1,8 +1,9 @@
-// Resolution-matched shadow maps (RmsmShadowMap.h): requests and compaction in compute, the
-// CPU reference allocator (algo/pages), one depth pass per allocated page into the pool.
+// Resolution-matched shadow maps (RmsmShadowMap.h): requests, compaction, sort and unique in
+// compute, the CPU reference allocator (algo/pages), the pages rendered into the pool.
 #include "RmsmShadowMap.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 
@@ -24,6 +25,12 @@ gl::ProgramDesc requestProgramDesc() {
 }
 gl::ProgramDesc compactProgramDesc() {
   return {"rmsm/compact", {{GL_COMPUTE_SHADER, "rmsm/compact.comp"}}, {}, {}};
+}
+gl::ProgramDesc sortProgramDesc() {
+  return {"rmsm/sort", {{GL_COMPUTE_SHADER, "rmsm/sort.comp"}}, {}, {}};
+}
+gl::ProgramDesc uniqueProgramDesc() {
+  return {"rmsm/unique", {{GL_COMPUTE_SHADER, "rmsm/unique.comp"}}, {}, {}};
 }
 
 }  // namespace
@@ -60,8 +67,13 @@ TechniqueInfo RmsmShadowMap::info() {
        "virtual texels, the key of the page serving it; a request stays only when its left and "
        "lower neighbours ask for a different page; the survivors are appended to one list.",
        "pages"},
-      {"rmsm allocate", "Read back, sort, unique, allocate",
-       "The compacted list is read back, sorted and made unique; the top level (one root page "
+      {"rmsm sort", "Sort, unique",
+       "The compacted list (compute): a bitonic sort of the keys (padded to a power of two), "
+       "then each key equal to its predecessor is dropped and a second sort moves the kept "
+       "ones, in order, to the front: the sorted unique page list.",
+       "pages"},
+      {"rmsm allocate", "Read back, allocate",
+       "The sorted unique list is read back; the top level (one root page "
        "unless the tree is cut) and then the requests, coarse to fine, take pool slots from the "
        "free list (while they do not fit, pages of the finest level move to their parents, "
        "sibling group by group); the page table's mip chain is finalised (each entry: its "
@@ -118,7 +130,9 @@ TechniqueInfo RmsmShadowMap::info() {
 RmsmShadowMap::RmsmShadowMap(const gl::ShaderLibrary& lib)
     : depthProgram_(lib, depthProgramDesc()),
       requestProgram_(lib, requestProgramDesc()),
-      compactProgram_(lib, compactProgramDesc()) {}
+      compactProgram_(lib, compactProgramDesc()),
+      sortProgram_(lib, sortProgramDesc()),
+      uniqueProgram_(lib, uniqueProgramDesc()) {}
 
 void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   // One lookup "map" per level (rmsm/lookup.glsl): a deeper tree is cut below its root.
@@ -141,6 +155,7 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   ctx.addOutline(view_.lightViewProj, OutlineRole::LightMap);
 
   requestPages(ctx);
+  sortUnique(ctx);
   allocate(ctx);
   renderPages(ctx);
 
@@ -184,8 +199,58 @@ void RmsmShadowMap::requestPages(FrameContext& ctx) {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
+void RmsmShadowMap::bitonicSort(const gl::Buffer& keys, std::uint32_t count) const {
+  sortProgram_.use();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RMSM_BUFFER_SORT, keys.id());
+  sortProgram_.set("u_count", unsigned(count));
+  const GLuint groups = GLuint((count + SL_RMSM_SORT_GROUP - 1) / SL_RMSM_SORT_GROUP);
+  for (std::uint32_t k = 2; k <= count; k <<= 1)
+    for (std::uint32_t j = k >> 1; j > 0; j >>= 1) {
+      sortProgram_.set("u_k", unsigned(k));
+      sortProgram_.set("u_j", unsigned(j));
+      glDispatchCompute(groups, 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+}
+
+void RmsmShadowMap::sortUnique(FrameContext& ctx) {
+  auto pass = ctx.timer.scope("rmsm sort");
+  // The list's length sizes the sort (a power of two at least 2, padded with SL_PAGE_NONE,
+  // which sorts last): 4 bytes read back.
+  std::uint32_t count = 0;
+  glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
+  const std::uint32_t capacity = std::uint32_t(requestList_.size() / 4 - 1);
+  count = std::min(count, capacity);
+  const std::uint32_t n = std::bit_ceil(std::max(count, 2u));
+  const GLsizeiptr bytes = GLsizeiptr(4) * std::bit_ceil(std::max(capacity, 2u));
+  if (!sortKeys_ || sortKeys_.size() != bytes) {
+    sortKeys_ = gl::Buffer::create(bytes, nullptr);
+    uniqueKeys_ = gl::Buffer::create(bytes, nullptr);
+  }
+  if (!uniqueCount_) uniqueCount_ = gl::Buffer::create(4, nullptr);
+  if (count > 0) glCopyNamedBufferSubData(requestList_.id(), sortKeys_.id(), 4, 0, 4 * count);
+  const std::uint32_t none = SL_PAGE_NONE, zero = 0;
+  if (n > count)
+    glClearNamedBufferSubData(sortKeys_.id(), GL_R32UI, GLintptr(4) * count,
+                              GLsizeiptr(4) * (n - count), GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+  glNamedBufferSubData(uniqueCount_.id(), 0, 4, &zero);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  bitonicSort(sortKeys_, n);
+
+  uniqueProgram_.use();
+  uniqueProgram_.set("u_count", unsigned(n));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RMSM_BUFFER_SORT, sortKeys_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RMSM_BUFFER_UNIQUE, uniqueKeys_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RMSM_BUFFER_UNIQUE_COUNT, uniqueCount_.id());
+  glDispatchCompute(GLuint((n + SL_RMSM_SORT_GROUP - 1) / SL_RMSM_SORT_GROUP), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  bitonicSort(uniqueKeys_, n);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
 void RmsmShadowMap::allocate(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rmsm allocate");
+  // The compacted list too: the Pages panel's heat map of this frame's requests.
   std::uint32_t count = 0;
   glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
   const std::size_t capacity = std::size_t(requestList_.size() / 4 - 1);
@@ -193,7 +258,12 @@ void RmsmShadowMap::allocate(FrameContext& ctx) {
   if (!last_.compacted.empty())
     glGetNamedBufferSubData(requestList_.id(), 4, GLsizeiptr(4 * last_.compacted.size()),
                             last_.compacted.data());
-  last_.unique = pages::sortUnique(last_.compacted);
+  std::uint32_t unique = 0;
+  glGetNamedBufferSubData(uniqueCount_.id(), 0, 4, &unique);
+  last_.unique.assign(std::min<std::size_t>(unique, last_.compacted.size()), 0u);
+  if (!last_.unique.empty())
+    glGetNamedBufferSubData(uniqueKeys_.id(), 0, GLsizeiptr(4 * last_.unique.size()),
+                            last_.unique.data());
   pool_->releaseAll();
   last_.allocation = pages::allocatePages(last_.unique, *pool_, *table_);
   last_.superpages = pages::binSuperpages(last_.allocation.pages, layout_, SL_RMSM_SUPERPAGE);
@@ -233,13 +303,18 @@ MemoryStats RmsmShadowMap::memory() const {
     m.add("page requests (per pixel)", "R32UI", requests_.width(), requests_.height(), 1, 4);
   if (requestList_)
     m.add("compacted requests (count + keys)", "R32UI", int(requestList_.size() / 4), 1, 1, 4);
+  if (sortKeys_) m.add("sorted requests", "R32UI", int(sortKeys_.size() / 4), 1, 1, 4);
+  if (uniqueKeys_) m.add("unique requests", "R32UI", int(uniqueKeys_.size() / 4), 1, 1, 4);
+  if (uniqueCount_) m.add("unique count", "R32UI", 1, 1, 1, 4);
   return m;
 }
 
 std::optional<std::string> RmsmShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
   if (auto e = depthProgram_.rebuild(lib)) return e;
   if (auto e = requestProgram_.rebuild(lib)) return e;
-  return compactProgram_.rebuild(lib);
+  if (auto e = compactProgram_.rebuild(lib)) return e;
+  if (auto e = sortProgram_.rebuild(lib)) return e;
+  return uniqueProgram_.rebuild(lib);
 }
 
 }  // namespace sl

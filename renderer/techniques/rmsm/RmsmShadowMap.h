@@ -25,7 +25,7 @@ class RmsmShadowMap : public Technique {
   std::string lookupShader() const override { return "rmsm/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depthProgram_, &requestProgram_, &compactProgram_};
+    return {&depthProgram_, &requestProgram_, &compactProgram_, &sortProgram_, &uniqueProgram_};
   }
   std::vector<int> pageGrid() const override { return map_.pageGrid(); }
   MemoryStats memory() const override;
@@ -34,7 +34,7 @@ class RmsmShadowMap : public Technique {
   /// What the last frame did (tests, publications).
   struct FrameResult {
     std::vector<pages::PageKey> compacted;  ///< the GPU's list after dedup + compaction
-    std::vector<pages::PageKey> unique;     ///< sorted, unique (CPU)
+    std::vector<pages::PageKey> unique;     ///< the GPU's sorted unique list (read back)
     pages::Allocation allocation;
     /// The allocated pages binned into SL_RMSM_SUPERPAGE² superpages.
     std::vector<pages::Superpage> superpages;
@@ -58,16 +58,24 @@ class RmsmShadowMap : public Technique {
 
  private:
   void requestPages(FrameContext& ctx);
+  /// The compacted list sorted and made unique on the GPU (rmsm/sort.comp, rmsm/unique.comp;
+  /// reference pages::sortUnique).
+  void sortUnique(FrameContext& ctx);
+  /// Bitonic sort of the first `count` (a power of two) keys of `keys`, ascending.
+  void bitonicSort(const gl::Buffer& keys, std::uint32_t count) const;
   void allocate(FrameContext& ctx);
   void renderPages(FrameContext& ctx);
 
-  gl::Program depthProgram_, requestProgram_, compactProgram_;
+  gl::Program depthProgram_, requestProgram_, compactProgram_, sortProgram_, uniqueProgram_;
   pages::VirtualLayout layout_;
   std::unique_ptr<pages::PageTable> table_;
   std::unique_ptr<pages::PagePool> pool_;
   PagedMap map_;            ///< the pool and the page table's textures
   gl::Texture requests_;    ///< R32UI per camera pixel
   gl::Buffer requestList_;  ///< count + one key per pixel
+  /// The sort's keys and the unique list: the pixel count rounded up to a power of two each.
+  gl::Buffer sortKeys_, uniqueKeys_;
+  gl::Buffer uniqueCount_;  ///< the number of unique keys
   DepthMapView view_;
   FrameResult last_;
 };

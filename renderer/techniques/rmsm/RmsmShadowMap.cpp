@@ -221,6 +221,7 @@ void RmsmShadowMap::sortUnique(FrameContext& ctx) {
   glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
   const std::uint32_t capacity = std::uint32_t(requestList_.size() / 4 - 1);
   count = std::min(count, capacity);
+  compactedCount_ = count;
   const std::uint32_t n = std::bit_ceil(std::max(count, 2u));
   const GLsizeiptr bytes = GLsizeiptr(4) * std::bit_ceil(std::max(capacity, 2u));
   if (!sortKeys_ || sortKeys_.size() != bytes) {
@@ -251,19 +252,15 @@ void RmsmShadowMap::sortUnique(FrameContext& ctx) {
 void RmsmShadowMap::allocate(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rmsm allocate");
   // The compacted list too: the Pages panel's heat map of this frame's requests.
-  std::uint32_t count = 0;
-  glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
-  const std::size_t capacity = std::size_t(requestList_.size() / 4 - 1);
-  last_.compacted.assign(std::min<std::size_t>(count, capacity), 0u);
-  if (!last_.compacted.empty())
-    glGetNamedBufferSubData(requestList_.id(), 4, GLsizeiptr(4 * last_.compacted.size()),
-                            last_.compacted.data());
+  auto read = [](const gl::Buffer& b, GLintptr offset, std::size_t n) {
+    std::vector<pages::PageKey> keys(n, 0u);
+    if (n > 0) glGetNamedBufferSubData(b.id(), offset, GLsizeiptr(4 * n), keys.data());
+    return keys;
+  };
+  last_.compacted = read(requestList_, 4, compactedCount_);
   std::uint32_t unique = 0;
   glGetNamedBufferSubData(uniqueCount_.id(), 0, 4, &unique);
-  last_.unique.assign(std::min<std::size_t>(unique, last_.compacted.size()), 0u);
-  if (!last_.unique.empty())
-    glGetNamedBufferSubData(uniqueKeys_.id(), 0, GLsizeiptr(4 * last_.unique.size()),
-                            last_.unique.data());
+  last_.unique = read(uniqueKeys_, 0, std::min<std::size_t>(unique, compactedCount_));
   pool_->releaseAll();
   last_.allocation = pages::allocatePages(last_.unique, *pool_, *table_);
   last_.superpages = pages::binSuperpages(last_.allocation.pages, layout_, SL_RMSM_SUPERPAGE);

@@ -75,7 +75,8 @@ class RmsmShadowMap : public Technique {
   gl::Buffer requestList_;  ///< count + one key per pixel
   /// The sort's keys and the unique list: the pixel count rounded up to a power of two each.
   gl::Buffer sortKeys_, uniqueKeys_;
-  gl::Buffer uniqueCount_;  ///< the number of unique keys
+  gl::Buffer uniqueCount_;            ///< the number of unique keys
+  std::uint32_t compactedCount_ = 0;  ///< the compacted list's length (clamped), sortUnique
   DepthMapView view_;
   FrameResult last_;
 };

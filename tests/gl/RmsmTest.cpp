@@ -328,7 +328,16 @@ TEST(Rmsm, MemoryIsExact) {
     const std::uint64_t side = std::uint64_t(std::min(SL_RMSM_SUPERPAGE, virt));
     const std::uint64_t superpage =
         render == RmsmShadowMap::kRenderSuperpages ? 4 * side * side : 0;
-    const std::uint64_t sortKeys = 4ull * std::bit_ceil(std::uint64_t(160 * 90));
+    // The sort's two buffers: the compacted length rounded up to a power of two, each.
+    std::uint64_t sorted = 0, unique = 0;
+    for (const ResourceInfo& res : m.resources) {
+      if (res.name == "sorted requests") sorted = res.bytes;
+      if (res.name == "unique requests") unique = res.bytes;
+    }
+    EXPECT_EQ(sorted, unique);
+    EXPECT_TRUE(sorted >= 8 && std::has_single_bit(sorted)) << sorted;
+    EXPECT_LE(sorted, 4ull * std::bit_ceil(std::uint64_t(160 * 90)));
+    const std::uint64_t sortKeys = sorted;
     EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(columns * page) * rows * std::uint64_t(page) + table +
                              4ull * 160 * 90 + 4ull * (1 + 160 * 90) + superpage + 2 * sortKeys +
                              4);

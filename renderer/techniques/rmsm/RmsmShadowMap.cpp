@@ -222,8 +222,10 @@ void RmsmShadowMap::sortUnique(FrameContext& ctx) {
   const std::uint32_t capacity = std::uint32_t(requestList_.size() / 4 - 1);
   count = std::min(count, capacity);
   compactedCount_ = count;
+  // Buffers of this frame's sort size (reallocated when the power of two changes): the bytes
+  // follow the list, not the pixel count (a few KiB, not MiBs).
   const std::uint32_t n = std::bit_ceil(std::max(count, 2u));
-  const GLsizeiptr bytes = GLsizeiptr(4) * std::bit_ceil(std::max(capacity, 2u));
+  const GLsizeiptr bytes = GLsizeiptr(4) * n;
   if (!sortKeys_ || sortKeys_.size() != bytes) {
     sortKeys_ = gl::Buffer::create(bytes, nullptr);
     uniqueKeys_ = gl::Buffer::create(bytes, nullptr);

@@ -73,7 +73,8 @@ class RmsmShadowMap : public Technique {
   PagedMap map_;            ///< the pool and the page table's textures
   gl::Texture requests_;    ///< R32UI per camera pixel
   gl::Buffer requestList_;  ///< count + one key per pixel
-  /// The sort's keys and the unique list: the pixel count rounded up to a power of two each.
+  /// The sort's keys and the unique list: this frame's compacted length rounded up to a power
+  /// of two (at least 2) each.
   gl::Buffer sortKeys_, uniqueKeys_;
   gl::Buffer uniqueCount_;            ///< the number of unique keys
   std::uint32_t compactedCount_ = 0;  ///< the compacted list's length (clamped), sortUnique

@@ -265,12 +265,12 @@ void PagedMap::renderPages(const gl::Program& depth, const SceneGpu& scene,
   glDisable(GL_SCISSOR_TEST);
 }
 
-void PagedMap::renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
-                                const glm::mat4& viewProj,
-                                std::span<const pages::Superpage> superpages,
-                                const pages::PageTable& table, int superpageSize,
-                                gl::GpuTimer& timer, const std::string& renderPass,
-                                const std::string& copyPass) {
+std::int64_t PagedMap::renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
+                                        const glm::mat4& viewProj,
+                                        std::span<const pages::Superpage> superpages,
+                                        const pages::PageTable& table, int superpageSize,
+                                        gl::GpuTimer& timer, const std::string& renderPass,
+                                        const std::string& copyPass) {
   const int ps = layout_.pageSize;
   const int side = std::min(superpageSize, layout_.virtualResolution);
   if (!superpage_ || superpage_.width() != side) {
@@ -282,9 +282,11 @@ void PagedMap::renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
     const float one = 1.0f;
     glClearNamedFramebufferfv(poolFbo_.id(), GL_DEPTH, 0, &one);
   }
+  std::int64_t texels = 0;
   for (const pages::Superpage& s : superpages) {
     // The block's pages: perSide a side, or the whole level when it has fewer.
     const int blockPages = std::min(s.pagesPerSide, layout_.pagesPerSide(s.level));
+    texels += std::int64_t(blockPages * ps) * (blockPages * ps);
     const int x0 = s.x * s.pagesPerSide, y0 = s.y * s.pagesPerSide;
     {
       auto pass = timer.scope(renderPass);
@@ -302,6 +304,7 @@ void PagedMap::renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
                          (slot / poolColumns_) * ps, 0, ps, ps, 1);
     }
   }
+  return texels;
 }
 
 void PagedMap::releaseSuperpageTarget() {

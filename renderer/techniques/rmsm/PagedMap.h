@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -74,10 +75,13 @@ class PagedMap {
   /// cropped to the block (regionViewProj) into the superpage target (timed as `renderPass`),
   /// then each of its pages copied (glCopyImageSubData) to its slot in `table` (`copyPass`).
   /// Creates the target of min(superpageSize, virtual.resolution)² texels on first use.
-  void renderSuperpages(const gl::Program& depth, const SceneGpu& scene, const glm::mat4& viewProj,
-                        std::span<const pages::Superpage> superpages, const pages::PageTable& table,
-                        int superpageSize, gl::GpuTimer& timer, const std::string& renderPass,
-                        const std::string& copyPass);
+  /// Returns the texels the superpages' viewports cover (each cleared and rasterised).
+  std::int64_t renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
+                                const glm::mat4& viewProj,
+                                std::span<const pages::Superpage> superpages,
+                                const pages::PageTable& table, int superpageSize,
+                                gl::GpuTimer& timer, const std::string& renderPass,
+                                const std::string& copyPass);
   /// Frees the superpage target (the page-by-page path does not need it).
   void releaseSuperpageTarget();
   const gl::Texture& superpageTexture() const { return superpage_; }

@@ -272,15 +272,10 @@ void RmsmShadowMap::allocate(FrameContext& ctx) {
 
 void RmsmShadowMap::renderPages(FrameContext& ctx) {
   if (ctx.params.getInt("rmsm.render") == kRenderSuperpages) {
-    map_.renderSuperpages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, last_.superpages,
-                          *table_, SL_RMSM_SUPERPAGE, ctx.timer, "rmsm superpages", "rmsm copy");
+    last_.renderTexels = map_.renderSuperpages(depthProgram_, ctx.sceneGpu, view_.lightViewProj,
+                                               last_.superpages, *table_, SL_RMSM_SUPERPAGE,
+                                               ctx.timer, "rmsm superpages", "rmsm copy");
     last_.sceneDraws = int(last_.superpages.size());
-    last_.renderTexels = 0;
-    for (const pages::Superpage& s : last_.superpages) {
-      const std::int64_t side =
-          std::int64_t(std::min(s.pagesPerSide, layout_.pagesPerSide(s.level))) * layout_.pageSize;
-      last_.renderTexels += side * side;
-    }
     return;
   }
   map_.releaseSuperpageTarget();

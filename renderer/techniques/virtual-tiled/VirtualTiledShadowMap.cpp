@@ -155,7 +155,7 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
       glScissor(0, y0, res, y1 - y0);
     }
     renderDepth(*t.sceneGpu, depth_, tile_.fbo.id(), res, res, view.lightViewProj);
-    glDisable(GL_SCISSOR_TEST);
+    if (bands > 1) glDisable(GL_SCISSOR_TEST);
     bandTile_ = progress ? k : -1;
     bandsDone_ = band + 1;
     if (band == bands - 1) {

@@ -24,7 +24,8 @@ constexpr const char* kSelfTests[] = {"params",
                                       "lesson-claims[=DIR]",
                                       "live-error[=DIR]",
                                       "adaptive-resolution[=DIR]",
-                                      "no-freeze[=DIR]"};
+                                      "no-freeze[=DIR]",
+                                      "storage-click[=DIR]"};
 
 QString selfTestUsage() {
   QStringList all;

@@ -142,6 +142,8 @@ void SelfTests::run() {
     ran = adaptiveResolution(argument_);
   else if (name_ == QLatin1String("no-freeze"))
     ran = noFreeze(argument_);
+  else if (name_ == QLatin1String("storage-click"))
+    ran = storageClick(argument_);
   else if (name_ == QLatin1String("bad-session"))
     ran = badSession(argument_);
   else

@@ -118,6 +118,11 @@ class SelfTests : public QObject {
   /// say "tile k of 256", a complete frame arrives, and it equals the one-call frame pixel
   /// for pixel with the same error (live vs synchronous). PNGs into DIR when given.
   bool noFreeze(const QString& dir);
+  /// storage-click[=DIR] (SelfTestsStorage.cpp): a click on the Storage factor panel's
+  /// hemisphere moves the light to the direction there (the paper's Fig. 7 frame of this
+  /// camera, from algo/partition), the status bar says so, the panel re-analyses with the
+  /// mark under the click; a click outside the disk keeps the light. PNGs into DIR.
+  bool storageClick(const QString& dir);
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
   /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;

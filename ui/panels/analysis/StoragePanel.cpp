@@ -122,6 +122,8 @@ class HemisphereView : public QWidget {
     update();
   }
   QSize sizeHint() const override { return {340, 300}; }
+  /// Where disk coordinates (u, v) lie in this widget (what a click there picks).
+  QPointF pointAt(double u, double v) const { return diskToWidget(diskRect(), u, v); }
 
  protected:
   /// The labels' font: kSmallText x the body size (presenter mode scales it).
@@ -400,6 +402,11 @@ void StoragePanel::updateNumbers() {
     drawn[QStringLiteral("mx")] = r.mx;
     drawn[QStringLiteral("mz")] = r.mz;
     drawn[QStringLiteral("grid")] = in.grid;
+    const glm::dvec2 mark = result_->frame.disk(in.towardsLight);
+    drawn[QStringLiteral("mark_u")] = mark.x;
+    drawn[QStringLiteral("mark_v")] = mark.y;
+    drawn[QStringLiteral("light_azimuth_deg")] = double(light.azimuthDeg);
+    drawn[QStringLiteral("light_elevation_deg")] = double(light.elevationDeg);
     drawn[QStringLiteral("compute_ms")] = result_->computeMs;
     if (heightPx_ > 0.0 && mapResolution_ > 0.0) {
       // m in texels per pixel: M (res 1) x image pixels / map texels along the axis.
@@ -424,6 +431,14 @@ void StoragePanel::updateNumbers() {
   }
   numbers_->setText(text);
   drawn_ = drawn;
+}
+
+QWidget* StoragePanel::hemisphereWidget() const {
+  return hemisphere_;
+}
+
+QPointF StoragePanel::hemispherePoint(double u, double v) const {
+  return hemisphere_->pointAt(u, v);
 }
 
 QJsonObject StoragePanel::drawnValues() const {

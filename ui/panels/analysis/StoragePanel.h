@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 
+#include <QPointF>
+
 #include "algo/partition/StoragePlots.h"
 #include "panels/analysis/StoragePanelKeys.h"
 #include "panels/common/PanelKit.h"
@@ -49,8 +51,13 @@ class StoragePanel : public PublicationPanel {
   /// A click on the hemisphere emits lightChosen (PublicationPanel) with that direction.
   /// "scheme", "s", "mx", "mz" (the current light), "predicted_m_x", "predicted_m_z"
   /// (texels per pixel at this resolution), "measured_p95", "measured_max", "grid",
-  /// "compute_ms".
+  /// "compute_ms", "mark_u", "mark_v" (the light's mark on the disk), "light_azimuth_deg",
+  /// "light_elevation_deg" (the analysed light).
   QJsonObject drawnValues() const override;
+  /// The hemisphere disk and where disk coordinates (u right = in front, v up = the viewer's
+  /// right) lie in it: what a click there picks (the storage-click self-test clicks there).
+  QWidget* hemisphereWidget() const;
+  QPointF hemispherePoint(double u, double v) const;
 
  private:
   struct Result;

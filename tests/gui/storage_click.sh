@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The Storage factor panel's hemisphere (issue 10): a click on the disk moves the light to the
+# direction there — the one algo/partition's Fig. 7 frame of this camera gives for that disk
+# point — the status bar says so, and the panel re-analyses with the light's mark under the
+# click; a click outside the disk keeps the light. PNGs of the window after each click.
+# usage: storage_click.sh <shadowlab> <tests/data dir> <out dir>
+set -euo pipefail
+app=$1
+out=$3/storage_click
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/xvfb.bash"
+rm -rf "$out" && mkdir -p "$out"
+start_xvfb
+
+rc=0
+timeout 300 "$app" --scene diagonal --technique lispsm --self-test "storage-click=$out" \
+  >"$out/storage_click.stdout" 2>"$out/storage_click.stderr" || rc=$?
+cat "$out/storage_click.stdout"
+if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/storage_click.stdout"; then
+  echo "FAIL: self-test storage-click exited with $rc; stderr:"
+  cat "$out/storage_click.stderr"
+  exit 1
+fi
+for n in 1 2; do
+  python3 "$here/pngstats.py" --min-colors 32 --min-stddev 8 "$out/storage-click-$n.png"
+done
+echo "PASS"

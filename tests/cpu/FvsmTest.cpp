@@ -349,26 +349,74 @@ TEST(FvsmTraversal, EmptyGridRendersNothing) {
 }
 
 TEST(FvsmTextures, ThreeModes) {
-  EXPECT_EQ(tileTexture(TextureMode::SubRect, {3, 5}, 12), (TileTexture{{4096, 4096}, {8, 32}}));
-  EXPECT_EQ(tileTexture(TextureMode::PowerOfTwo, {3, 5}, 12), (TileTexture{{32, 32}, {8, 32}}));
-  EXPECT_EQ(tileTexture(TextureMode::ExactSize, {3, 5}, 12), (TileTexture{{8, 32}, {8, 32}}));
-  EXPECT_EQ(textureModeBoundTexels(TextureMode::SubRect, 12, 4), 16777216u);
+  EXPECT_EQ(tileTexture(TextureMode::SubRect, {3, 5}, 12, 0), (TileTexture{{4096, 4096}, {8, 32}}));
+  EXPECT_EQ(tileTexture(TextureMode::PowerOfTwo, {3, 5}, 12, 0), (TileTexture{{32, 32}, {8, 32}}));
+  EXPECT_EQ(tileTexture(TextureMode::ExactSize, {3, 5}, 12, 0), (TileTexture{{8, 32}, {8, 32}}));
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::SubRect, 12, 4, 0), 16777216u);
   // 4^4 + … + 4^12 = (4^13 − 4^4) / 3 = 22369536 ≤ 4/3 · 4096² = 22369621.3
-  EXPECT_EQ(textureModeBoundTexels(TextureMode::PowerOfTwo, 12, 4), 22369536u);
-  EXPECT_LE(3 * textureModeBoundTexels(TextureMode::PowerOfTwo, 12, 0), 4u * 16777216u);
-  EXPECT_EQ(textureModeBoundTexels(TextureMode::ExactSize, 12, 4), 8176u * 8176u);
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::PowerOfTwo, 12, 4, 0), 22369536u);
+  EXPECT_LE(3 * textureModeBoundTexels(TextureMode::PowerOfTwo, 12, 0, 0), 4u * 16777216u);
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::ExactSize, 12, 4, 0), 8176u * 8176u);
   EXPECT_STREQ(textureModeName(TextureMode::PowerOfTwo), "power-of-two");
+}
+
+// The tile overlap is a border of b texels added around the cell's 2^t (not carved out of
+// them): the viewport is 2^t + 2b per axis, and every mode's texture holds it.
+TEST(FvsmTextures, TheBorderAddsTexels) {
+  EXPECT_EQ(tileTexture(TextureMode::SubRect, {3, 5}, 12, 1),
+            (TileTexture{{4098, 4098}, {10, 34}}));
+  EXPECT_EQ(tileTexture(TextureMode::PowerOfTwo, {3, 5}, 12, 2), (TileTexture{{36, 36}, {12, 36}}));
+  EXPECT_EQ(tileTexture(TextureMode::ExactSize, {3, 5}, 12, 4), (TileTexture{{16, 40}, {16, 40}}));
+  EXPECT_EQ(tileTexture(TextureMode::PowerOfTwo, {12, 12}, 12, 1).size, glm::ivec2(4098));
+  EXPECT_THROW(tileTexture(TextureMode::SubRect, {3, 5}, 12, -1), std::invalid_argument);
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::SubRect, 12, 4, 1), 4098u * 4098u);
+  // (16 + 2)² + (32 + 2)² + … + (4096 + 2)², 9 sizes
+  std::uint64_t series = 0;
+  for (int k = 4; k <= 12; ++k) series += std::uint64_t((1 << k) + 2) * std::uint64_t((1 << k) + 2);
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::PowerOfTwo, 12, 4, 1), series);
+  // Sides 16 + 2 … 4096 + 2: every w x h pair sums to (8176 + 9 · 2)².
+  EXPECT_EQ(textureModeBoundTexels(TextureMode::ExactSize, 12, 4, 1), 8194u * 8194u);
+  // Every leaf's viewport, its border included, fits in its mode's texture.
+  for (int mode = 0; mode < kTextureModes; ++mode)
+    for (int b = 0; b <= 4; ++b)
+      for (int x = 4; x <= 12; ++x)
+        for (int y = 4; y <= 12; ++y) {
+          const TileTexture t = tileTexture(TextureMode(mode), {x, y}, 12, b);
+          EXPECT_TRUE(t.viewport.x <= t.size.x && t.viewport.y <= t.size.y)
+              << mode << " " << b << " " << x << " " << y;
+          EXPECT_EQ(t.viewport, glm::ivec2((1 << x) + 2 * b, (1 << y) + 2 * b));
+        }
+}
+
+// The texels per uv of a bordered tile are its cell's 2^t, and its lattice starts b texels
+// before the cell: texel b's left edge is the cell's left edge (the uv rectangle that
+// tileUvRectWithOverlap gives, drawn into tileTexture's viewport).
+TEST(FvsmTextures, TheBorderKeepsTheCellsLattice) {
+  const Tile t = tile(2, 1, 1, 0, {3, 3}, {5, 3}, {{1, 0}, {2, 1}});
+  for (int b = 0; b <= 4; ++b) {
+    glm::dvec2 lo, hi;
+    tileUvRectWithOverlap(t, b, lo, hi);
+    const TileTexture tex = tileTexture(TextureMode::ExactSize, t.textureLog2, 12, b);
+    const glm::dvec2 texelsPerUv = glm::dvec2(tex.viewport) / (hi - lo);
+    const glm::dvec2 cellTexelsPerUv =
+        glm::dvec2(1 << t.textureLog2.x, 1 << t.textureLog2.y) / (t.uvMax() - t.uvMin());
+    EXPECT_NEAR(texelsPerUv.x, cellTexelsPerUv.x, 1e-9 * cellTexelsPerUv.x) << b;
+    EXPECT_NEAR(texelsPerUv.y, cellTexelsPerUv.y, 1e-9 * cellTexelsPerUv.y) << b;
+    const glm::dvec2 cellStartTexel = (t.uvMin() - lo) * texelsPerUv;
+    EXPECT_NEAR(cellStartTexel.x, double(b), 1e-9) << b;
+    EXPECT_NEAR(cellStartTexel.y, double(b), 1e-9) << b;
+  }
 }
 
 TEST(FvsmTiles, OverlapAndScreenRectangle) {
   const Tile t = tile(2, 1, 1, 0, {3, 3}, {2, 1}, {{1, 0}, {2, 1}});
   glm::dvec2 lo, hi;
-  tileUvRectWithOverlap(t, 0.0, lo, hi);
+  tileUvRectWithOverlap(t, 0, lo, hi);
   EXPECT_EQ(lo, glm::dvec2(0.25, 0.0));
   EXPECT_EQ(hi, glm::dvec2(0.5, 0.5));
-  tileUvRectWithOverlap(t, 0.5, lo, hi);  // texel (1/16, 1/4)
-  EXPECT_EQ(lo, glm::dvec2(0.21875, -0.125));
-  EXPECT_EQ(hi, glm::dvec2(0.53125, 0.625));
+  tileUvRectWithOverlap(t, 2, lo, hi);  // texel (1/16, 1/4)
+  EXPECT_EQ(lo, glm::dvec2(0.125, -0.5));
+  EXPECT_EQ(hi, glm::dvec2(0.625, 1.0));
   glm::ivec2 pmin, pmax;
   tileScreenRectPixels(t.screen, {4, 2}, {10, 5}, 0, pmin, pmax);
   EXPECT_EQ(pmin, glm::ivec2(2, 0));  // 1 · 10 / 4
@@ -405,7 +453,7 @@ TEST(FvsmPublished, GridAndHistogramChannels) {
 TEST(FvsmPublished, TileRecordsRoundTrip) {
   const std::vector<Tile> tiles = {tile(2, 1, 1, 0, {14, 13}, {12, 12}, {{1, 0}, {2, 1}}),
                                    tile(0, 0, 0, 0, {5, 3}, {5, 4}, EntryRect{}, true)};
-  const std::vector<float> packed = packTileRecords(tiles, TextureMode::PowerOfTwo, 12);
+  const std::vector<float> packed = packTileRecords(tiles, TextureMode::PowerOfTwo, 12, 0);
   ASSERT_EQ(packed.size(), 2u * kTileRecordFloats);
   EXPECT_EQ(
       std::vector<float>(packed.begin(), packed.begin() + kTileRecordFloats),
@@ -413,13 +461,14 @@ TEST(FvsmPublished, TileRecordsRoundTrip) {
   const std::vector<TileRecord> back = unpackTileRecords(packed);
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[0].tile, tiles[0]);
-  EXPECT_EQ(back[0].texture, tileTexture(TextureMode::PowerOfTwo, {12, 12}, 12));
+  EXPECT_EQ(back[0].texture, tileTexture(TextureMode::PowerOfTwo, {12, 12}, 12, 0));
   EXPECT_EQ(back[1].tile, tiles[1]);  // the empty rectangle survives
   EXPECT_TRUE(back[1].tile.screen.empty());
   EXPECT_EQ(back[1].texture.size, glm::ivec2(32, 32));  // power-of-two: the larger side
   EXPECT_EQ(back[1].texture.viewport, glm::ivec2(32, 16));
-  EXPECT_EQ(unpackTileRecords(packTileRecords(tiles, TextureMode::ExactSize, 12))[1].texture.size,
-            glm::ivec2(32, 16));
+  EXPECT_EQ(
+      unpackTileRecords(packTileRecords(tiles, TextureMode::ExactSize, 12, 0))[1].texture.size,
+      glm::ivec2(32, 16));
   EXPECT_THROW(unpackTileRecords(std::vector<float>(16, 0.0f)), std::invalid_argument);
   std::vector<float> bad = packed;
   bad[3] = 0.5f;

@@ -319,44 +319,54 @@ const char* textureModeName(TextureMode mode) {
   return "?";
 }
 
-TileTexture tileTexture(TextureMode mode, glm::ivec2 textureLog2, int maxTextureLog2) {
-  const glm::ivec2 viewport(1 << textureLog2.x, 1 << textureLog2.y);
+TileTexture tileTexture(TextureMode mode, glm::ivec2 textureLog2, int maxTextureLog2,
+                        int borderTexels) {
+  if (borderTexels < 0) throw std::invalid_argument("fvsm: a negative tile border");
+  const int b2 = 2 * borderTexels;
+  const glm::ivec2 viewport((1 << textureLog2.x) + b2, (1 << textureLog2.y) + b2);
   switch (mode) {
     case TextureMode::SubRect:
-      return {glm::ivec2(1 << maxTextureLog2), viewport};
+      return {glm::ivec2((1 << maxTextureLog2) + b2), viewport};
     case TextureMode::PowerOfTwo:
-      return {glm::ivec2(1 << std::max(textureLog2.x, textureLog2.y)), viewport};
+      return {glm::ivec2((1 << std::max(textureLog2.x, textureLog2.y)) + b2), viewport};
     case TextureMode::ExactSize:
       return {viewport, viewport};
   }
   throw std::invalid_argument("fvsm: unknown texture mode");
 }
 
-std::uint64_t textureModeBoundTexels(TextureMode mode, int maxTextureLog2, int minTextureLog2) {
+std::uint64_t textureModeBoundTexels(TextureMode mode, int maxTextureLog2, int minTextureLog2,
+                                     int borderTexels) {
+  if (borderTexels < 0) throw std::invalid_argument("fvsm: a negative tile border");
   const std::uint64_t tmax = std::uint64_t(1) << maxTextureLog2;
+  const std::uint64_t b2 = 2 * std::uint64_t(borderTexels);
   switch (mode) {
     case TextureMode::SubRect:
-      return tmax * tmax;
+      return (tmax + b2) * (tmax + b2);
     case TextureMode::PowerOfTwo: {
       std::uint64_t sum = 0;
-      for (int k = minTextureLog2; k <= maxTextureLog2; ++k) sum += std::uint64_t(1) << (2 * k);
+      for (int k = minTextureLog2; k <= maxTextureLog2; ++k) {
+        const std::uint64_t side = (std::uint64_t(1) << k) + b2;
+        sum += side * side;
+      }
       return sum;
     }
     case TextureMode::ExactSize: {
-      const std::uint64_t side = 2 * tmax - (std::uint64_t(1) << minTextureLog2);
+      const std::uint64_t sizes = std::uint64_t(maxTextureLog2 - minTextureLog2 + 1);
+      const std::uint64_t side = 2 * tmax - (std::uint64_t(1) << minTextureLog2) + b2 * sizes;
       return side * side;
     }
   }
   throw std::invalid_argument("fvsm: unknown texture mode");
 }
 
-void tileUvRectWithOverlap(const Tile& tile, double overlapTexels, glm::dvec2& uvMin,
+void tileUvRectWithOverlap(const Tile& tile, int overlapTexels, glm::dvec2& uvMin,
                            glm::dvec2& uvMax) {
   const glm::dvec2 lo = tile.uvMin(), hi = tile.uvMax();
   const glm::dvec2 texel =
       (hi - lo) / glm::dvec2(double(1 << tile.textureLog2.x), double(1 << tile.textureLog2.y));
-  uvMin = lo - overlapTexels * texel;
-  uvMax = hi + overlapTexels * texel;
+  uvMin = lo - double(overlapTexels) * texel;
+  uvMax = hi + double(overlapTexels) * texel;
 }
 
 void tileScreenRectPixels(const EntryRect& rect, glm::ivec2 smtmmSize, glm::ivec2 frameSize,
@@ -396,11 +406,11 @@ std::vector<float> gridHistogramChannels(const TileGrid& grid, const HistogramSe
 }
 
 std::vector<float> packTileRecords(std::span<const Tile> tiles, TextureMode mode,
-                                   int maxTextureLog2) {
+                                   int maxTextureLog2, int borderTexels) {
   std::vector<float> out;
   out.reserve(tiles.size() * kTileRecordFloats);
   for (const Tile& t : tiles) {
-    const TileTexture tex = tileTexture(mode, t.textureLog2, maxTextureLog2);
+    const TileTexture tex = tileTexture(mode, t.textureLog2, maxTextureLog2, borderTexels);
     const EntryRect r = t.screen.empty() ? EntryRect{} : t.screen;
     out.insert(out.end(), {float(t.levelX), float(t.levelY), float(t.ix), float(t.iy),
                            float(t.needLog2.x), float(t.needLog2.y), float(t.textureLog2.x),

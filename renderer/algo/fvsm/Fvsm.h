@@ -228,23 +228,31 @@ inline constexpr int kTextureModes = 3;
 const char* textureModeName(TextureMode mode);
 
 /// Where a tile of 2^textureLog2 texels is drawn: texture `size`, viewport `viewport`
-/// at its origin.
+/// at its origin. With a border of b texels (the tile overlap against seams, §5) the viewport
+/// is 2^textureLog2 + 2b per axis: the kd cell keeps its 2^textureLog2 texels, on the same
+/// lattice, and the border adds b of the same texels on every side (it is not carved out of
+/// the cell's). Every mode's texture holds that viewport: t_max + 2b, 2^k + 2b, exact.
 struct TileTexture {
   glm::ivec2 size{0};
   glm::ivec2 viewport{0};
   bool operator==(const TileTexture&) const = default;
 };
-TileTexture tileTexture(TextureMode mode, glm::ivec2 textureLog2, int maxTextureLog2);
+TileTexture tileTexture(TextureMode mode, glm::ivec2 textureLog2, int maxTextureLog2,
+                        int borderTexels);
 
-/// Texels of every texture a mode can need, the paper's bounds: SubRect t_max²;
-/// PowerOfTwo the series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max²); ExactSize
-/// every w x h with both sides powers of two in [2^min, t_max] ((2 t_max − 2^min)², the
-/// bound of allocating every shape; a frame allocates only the shapes it uses).
-std::uint64_t textureModeBoundTexels(TextureMode mode, int maxTextureLog2, int minTextureLog2);
+/// Texels of every texture a mode can need, the paper's bounds (border b = 0): SubRect
+/// t_max²; PowerOfTwo the series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max²);
+/// ExactSize every w x h with both sides powers of two in [2^min, t_max] ((2 t_max − 2^min)²,
+/// the bound of allocating every shape; a frame allocates only the shapes it uses). A border
+/// adds 2b to every side: (t_max + 2b)², sum of (2^k + 2b)², (2 t_max − 2^min + 2b L)² for L
+/// sizes.
+std::uint64_t textureModeBoundTexels(TextureMode mode, int maxTextureLog2, int minTextureLog2,
+                                     int borderTexels);
 
 /// Tile overlap against seams (§5): the tile's SM uv rectangle grown by `overlapTexels` of
-/// its own texels on every side (0 = the exact kd cell).
-void tileUvRectWithOverlap(const Tile& tile, double overlapTexels, glm::dvec2& uvMin,
+/// its own texels on every side (0 = the exact kd cell): what tileTexture's viewport with
+/// that border covers.
+void tileUvRectWithOverlap(const Tile& tile, int overlapTexels, glm::dvec2& uvMin,
                            glm::dvec2& uvMax);
 
 /// A tile's screen rectangle in pixels [min, max) for a frame of `frameSize` pixels and an
@@ -287,7 +295,7 @@ struct TileRecord {
 /// inclusive; min > max: empty), unmet (0 / 1).
 inline constexpr int kTileRecordFloats = 17;
 std::vector<float> packTileRecords(std::span<const Tile> tiles, TextureMode mode,
-                                   int maxTextureLog2);
+                                   int maxTextureLog2, int borderTexels);
 /// The inverse; throws std::invalid_argument when the size is not a multiple of
 /// kTileRecordFloats or a value is not an integer.
 std::vector<TileRecord> unpackTileRecords(std::span<const float> values);

@@ -63,14 +63,16 @@ TechniqueInfo FittedVirtualShadowMap::info() {
       {.key = "fvsm.overlap",
        .label = "Tile overlap",
        .group = "FVSM",
-       .type = ParamType::Float,
-       .defaultValue = 1.0,
-       .minValue = 0.0,
-       .maxValue = 4.0,
-       .step = 0.5,
-       .help = "Each tile's texture covers its kd cell grown by this many of its own texels on "
-               "every side, so receivers near a tile edge find the neighbour's depth (0 shows "
-               "the seams)."},
+       .type = ParamType::Int,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 4,
+       .step = 1,
+       .help = "A border of this many texels around each tile (§5): its texture covers the kd "
+               "cell grown by that many of its own texels on every side, so receivers near a "
+               "tile edge find the neighbour's depth (0 shows the seams). The border adds "
+               "texels (2^t + 2 x overlap per side); the cell keeps its 2^t, on the same "
+               "lattice."},
       {.key = "fvsm.grid",
        .label = "Tile grid n",
        .group = "FVSM",
@@ -208,7 +210,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
       number("fvsm.tiles.unmet", "leaves whose need exceeded the max texture at the finest level"),
       number("fvsm.need_log2.u", "log2 texels the whole map needs along u (after ξ, outliers)"),
       number("fvsm.need_log2.v", "log2 texels the whole map needs along v (after ξ, outliers)"),
-      number("fvsm.texels", "texels of all tiles rendered this frame"),
+      number("fvsm.texels", "texels of all tiles rendered this frame (their borders included)"),
       number("fvsm.histogram.eta0", "the histograms' lower end bucket η0 (log2)"),
       number("fvsm.histogram.eta1", "the histograms' upper end bucket η1 (log2)"),
       {"fvsm.grid", PublicationKind::Image,
@@ -350,7 +352,8 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
                    fvsm::gridHistogramChannels(grid, histogram));
     if (ctx.wants("fvsm.tiles.list"))
       publishValues(ctx, "fvsm.tiles.list",
-                    fvsm::packTileRecords(tiles_, textureMode(p), traversal.maxTextureLog2));
+                    fvsm::packTileRecords(tiles_, textureMode(p), traversal.maxTextureLog2,
+                                          p.getInt("fvsm.overlap")));
     publishNumber(ctx, "fvsm.histogram.eta0", double(histogram.eta0));
     publishNumber(ctx, "fvsm.histogram.eta1", double(histogram.eta1));
     fallbackResolution_ = p.getInt("fvsm.fallback.resolution");
@@ -359,8 +362,10 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     std::uint64_t texels = 0;
     int unmet = 0;
     for (const fvsm::Tile& t : tiles_) {
-      depthTarget(fvsm::tileTexture(mode, t.textureLog2, traversal.maxTextureLog2).size);
-      texels += std::uint64_t(1) << (t.textureLog2.x + t.textureLog2.y);
+      const fvsm::TileTexture tex = fvsm::tileTexture(mode, t.textureLog2, traversal.maxTextureLog2,
+                                                      p.getInt("fvsm.overlap"));
+      depthTarget(tex.size);
+      texels += std::uint64_t(tex.viewport.x) * std::uint64_t(tex.viewport.y);
       unmet += t.unmet ? 1 : 0;
     }
     depthTarget(glm::ivec2(fallbackResolution_));
@@ -383,13 +388,13 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
   if (!t.sceneGpu) throw std::logic_error("fvsm: the resolve has no scene");
   const fvsm::TextureMode mode = textureMode(params);
   const int maxLog2 = log2Of(params.getInt("fvsm.max_texture"));
-  const double overlap = params.get("fvsm.overlap");
+  const int overlap = params.getInt("fvsm.overlap");
   const bool rects = params.getBool("fvsm.screen_rect") && t.mainCamera &&
                      frameSize_ == glm::ivec2(t.width, t.height);
   clearResolveTargets(t);
   for (std::size_t k = 0; k < tiles_.size(); ++k) {
     const fvsm::Tile& tile = tiles_[k];
-    const fvsm::TileTexture tex = fvsm::tileTexture(mode, tile.textureLog2, maxLog2);
+    const fvsm::TileTexture tex = fvsm::tileTexture(mode, tile.textureLog2, maxLog2, overlap);
     TileDepthTarget& target = depthTarget(tex.size);
     glm::dvec2 lo, hi;
     fvsm::tileUvRectWithOverlap(tile, overlap, lo, hi);

@@ -24,6 +24,9 @@ using nlohmann::json;
 namespace sl::cli {
 namespace {
 
+/// Why an error metric is not checked: no frame of the technique covered a pixel.
+constexpr const char* kNotMeasured = "not measured (no covered pixel)";
+
 std::string valueText(const json& v) {
   if (v.is_string()) return v.get<std::string>();
   if (v.is_boolean()) return v.get<bool>() ? "on" : "off";
@@ -503,9 +506,10 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       if (t.spec.label == label && !t.skipped.empty()) return t.skipped;
     if (StabilitySummary::isErrorMetric(metric) &&
         !std::isfinite(byLabel.at(label).metrics().at(metric)))
-      return "not measured (no covered pixel)";
+      return kNotMeasured;
     return "";
   };
+  int checkedExpectations = 0, notMeasured = 0;  // checked; skipped for want of pixels
   for (const Expectation& e : sc.expect) {
     ExpectationResult r;
     r.why = e.why;
@@ -577,7 +581,22 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       expJson.back()["status"] = r.status;
       expJson.back()["xfail"] = e.xfail;
     }
+    if (r.status == "skipped")
+      notMeasured += r.detail.find(kNotMeasured) != std::string::npos ? 1 : 0;
+    else
+      ++checkedExpectations;
     count(tally, sc, r, e.xfail);
+  }
+  // Expectations that all went unchecked because no frame covered a pixel: the case measured
+  // nothing it claims, which is a failure (a broken camera or scene), not a pass.
+  if (!sc.expect.empty() && checkedExpectations == 0 && notMeasured > 0 && !ran.empty()) {
+    ExpectationResult r;
+    r.text = "the case checks at least one of its expectations";
+    r.status = "FAIL";
+    r.detail = "checked none: " + std::to_string(notMeasured) + " of " +
+               std::to_string(sc.expect.size()) + " " + kNotMeasured;
+    count(tally, sc, r, "");
+    expJson.push_back({{"status", r.status}, {"detail", r.detail}, {"text", r.text}});
   }
   caseJson["expectations"] = expJson;
   return caseJson;

@@ -3,7 +3,8 @@
 # OpenGL implementation cannot render are refused (exit 2, naming the file and the JSON
 # path) before any case runs; a technique whose frames cover no pixel reports its error as
 # not measured (null in the JSON, "n/a" in the table) and its expectations on error metrics
-# are skipped, not passed or failed on a made-up 0.
+# are skipped, not passed or failed on a made-up 0; a case that checks none of its
+# expectations that way fails.
 set -uo pipefail
 cli=$1 out=$3/suite-load-checks
 rm -rf "$out" && mkdir -p "$out"
@@ -101,6 +102,24 @@ if timeout 120 "$cli" stability --suite fine.json --json fine.out.json >/dev/nul
 else
   echo "FAIL: stability --suite fine.json:"; cat fine.stderr; fail=1
 fi
+
+# A case whose every expectation goes unchecked for want of covered pixels checked nothing:
+# it fails (exit 1, naming the case) instead of passing by accident.
+cat >sky-only.json <<'JSON'
+{"name": "sky only", "size": [64, 36], "cases": [
+  {"name": "sky-only", "scene": "plane-box", "frames": 1,
+   "camera": {"position": [0, 5, 0], "target": [0.01, 50, 0.01]},
+   "techniques": ["uniform"],
+   "expect": [{"technique": "uniform", "metric": "error_pct", "op": "<", "value": 1}]}]}
+JSON
+timeout 120 "$cli" stability --suite sky-only.json --json sky-only.out.json >sky-only.stdout 2>sky-only.stderr
+rc=$?
+want="shadowlab-cli: FAILED case 'sky-only': the case checks at least one of its expectations (checked none: 1 of 1 not measured (no covered pixel))"
+if [ $rc -ne 1 ] || ! grep -qxF "$want" sky-only.stderr; then
+  printf 'FAIL: sky-only exited %s (want 1) and stderr:\n' "$rc"; cat sky-only.stderr; fail=1
+fi
+got=$(python3 -c 'import json; j = json.load(open("sky-only.out.json")); print(j["passed"], j["skipped"], j["failed"])')
+[ "$got" == "0 1 1" ] || { echo "FAIL: sky-only JSON passed/skipped/failed: $got (want 0 1 1)"; fail=1; }
 
 [ $fail -eq 0 ] && echo "suite load checks: ok"
 exit $fail

@@ -48,9 +48,11 @@ constexpr std::uint64_t kMaxFileBytes = std::uint64_t(1) << 30;
 /// Nesting of JSON arrays and objects (the JSON parsers recurse; real files need < 20).
 constexpr int kMaxJsonDepth = 256;
 /// Arrays and objects in the JSON, counted before parsing: tinygltf's DOM and model take
-/// ~1 KiB per node, so a 22 MB chain of 1,000,000 nodes took 1.2 GB (100,000 cameras on
-/// 100,000 nodes, a large but real file, have 600,000).
-constexpr std::size_t kMaxJsonContainers = std::size_t(1) << 20;
+/// ~0.7 KiB per container, so a 22 MB chain of 1,000,000 nodes took 1.2 GB and 100,000
+/// cameras on 100,000 nodes (600,000) 800 MiB with the GL context. 2^18 keeps any accepted
+/// file under 500 MiB (40,000 cameras, 240,000 containers: tests/fixtures/hostile); real
+/// scenes have a few thousand nodes.
+constexpr std::size_t kMaxJsonContainers = std::size_t(1) << 18;
 /// A "uri" that is not a data: URI names a file relative to the scene: no path is longer than
 /// PATH_MAX (4096 on Linux). Longer ones are refused in the JSON text, before tinygltf copies
 /// them (a 40 MB URI took 500 MiB through its DOM, model, path and "File not found" message).

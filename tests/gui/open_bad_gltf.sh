@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Opening a broken glTF from the GUI — File > Open glTF… with Qt's file dialog, and dropping
 # the file on the window (a QDropEvent with its URL), driven by shadowlab --self-test
-# bad-gltf=FILE,FILE,… (see ui/MainWindowSelfTest.cpp) — shows an error dialog and a status
+# bad-gltf=FILE,FILE,… (see ui/SelfTests.cpp) — shows an error dialog and a status
 # message naming the file, both elided to a sane length (ui/MessageText.h), and the previous
-# scene stays loaded and keeps rendering. Every fixture in tests/data that fails to load, plus
-# a generated one whose 40 MB buffer URI the loader's message may echo.
+# scene stays loaded and keeps rendering. Every fixture in tests/data that fails to load, a
+# generated one whose 40 MB buffer URI the loader's message may echo, and every hostile glTF
+# of tests/fixtures/hostile that the CLI refuses.
 # usage: open_bad_gltf.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1
@@ -37,12 +38,27 @@ huge=$out/huge-uri.gltf
 } >"$huge"
 files+=("$huge")
 
+# Every hostile glTF of issue 14 that the CLI refuses (exit 2 in tests/fixtures/hostile/
+# expected.tsv): the crafted files as they are, the generated ones (deep nesting, a million-node
+# chain, 100,000 cameras, a FIFO, sparse 1 GiB files...) written by gen.py as cli.hostile_fixtures
+# does. The FIFOs have no writer: a loader that read them would hang here.
+hostile=$here/../fixtures/hostile
+python3 "$hostile/gen.py" "$out/gen" >/dev/null
+while IFS=$'\t' read -r name status _; do
+  [[ $name =~ \.(gltf|glb)$ && $status == 2 ]] || continue
+  if [[ $name == gen:* ]]; then f=$out/gen/${name#gen:}; else f=$hostile/$name; fi
+  [[ -e "$f" ]] || { echo "FAIL: hostile fixture $f is missing"; exit 1; }
+  files+=("$f")
+done < <(grep -v '^#' "$hostile/expected.tsv")
+(( ${#files[@]} >= 30 )) || { echo "FAIL: only ${#files[@]} files to open"; exit 1; }
+
 list=$(IFS=,; echo "${files[*]}")
 rc=0
-timeout 120 "$app" --scene plane-box --technique uniform --self-test "bad-gltf=$list" \
+timeout 600 "$app" --scene plane-box --technique uniform --self-test "bad-gltf=$list" \
   >"$out/self-test.stdout" 2>"$out/self-test.stderr" || rc=$?
 check_bad_files bad-gltf "File > Open" "$out" "$rc" "${files[@]}"
-# Passed: do not leave the 40 MB file (and a long stderr) behind.
-rm -f "$huge"
+# Passed: do not leave the 40 MB file, the generated fixtures (sparse GiB files, FIFOs) and a
+# long stderr behind.
+rm -rf "$huge" "$out/gen"
 head -c 65536 "$out/self-test.stderr" >"$out/self-test.stderr.head" && rm "$out/self-test.stderr"
 echo "PASS"

@@ -390,6 +390,10 @@ void StoragePanel::updateNumbers() {
                 .arg(formatValue(r.s), formatValue(r.mx), formatValue(r.mz))
                 .arg(r.parts.size())
                 .arg(r.parts.size() == 1 ? QString() : QStringLiteral("s"));
+    bool fallback = false;
+    for (const auto& p : r.parts) fallback = fallback || p.fit.fallback;
+    drawn[QStringLiteral("fallback")] = fallback;
+    if (in.eta) drawn[QStringLiteral("eta")] = *in.eta;
     for (const auto& p : r.parts)
       if (p.fit.fallback) {
         text += tr("; <span style='color:#b35900'>%1 falls back to uniform: %2</span>")

@@ -52,7 +52,8 @@ class StoragePanel : public PublicationPanel {
   /// "scheme", "s", "mx", "mz" (the current light), "predicted_m_x", "predicted_m_z"
   /// (texels per pixel at this resolution), "measured_p95", "measured_max", "grid",
   /// "compute_ms", "mark_u", "mark_v" (the light's mark on the disk), "light_azimuth_deg",
-  /// "light_elevation_deg" (the analysed light).
+  /// "light_elevation_deg" (the analysed light), "eta" (marked on the eta plot, when the
+  /// scheme warps), "fallback" (a part of the scheme falls back to uniform).
   QJsonObject drawnValues() const override;
   /// The hemisphere disk and where disk coordinates (u right = in front, v up = the viewer's
   /// right) lie in it: what a click there picks (the storage-click self-test clicks there).

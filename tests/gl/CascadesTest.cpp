@@ -3,6 +3,7 @@
 // consecutive frames), exact memory, declared passes == timed passes, and the golden image
 // of corridor with the partition overlay; partition.warp on corridor (warped beats plain).
 #include <algorithm>
+#include <limits>
 #include <cstdio>
 #include <set>
 
@@ -315,6 +316,43 @@ TEST(Cascades, DeclaredPassesAndPanelKeys) {
   test::expectPartitionMMatches(pub, r->readback(), 3);
   EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(*info, r->params(), keys));
   test::expectNoGlErrors(*r);
+}
+
+// The depth-range reduction (depth_range.comp, depth.fit) against the CPU's min and max view
+// depth of the same G-buffer (read back): with a still camera the range read back at frame
+// f + 1 is frame f's, the same pixels. float against double: within 1e-5 relative. And the
+// split range is it, widened by 5 % each way (stabilize off: no hysteresis).
+TEST(Cascades, DepthRangeReductionMatchesTheGBuffer) {
+  for (const char* scene : {"corridor", "diagonal"}) {
+    SCOPED_TRACE(scene);
+    auto r = test::makeRenderer(scene, "cascades");
+    ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().set("stabilize", 0));
+    ASSERT_FALSE(r->params().set("depth.fit", 1));
+    r->requestPublications({"depth.*"});
+    for (int f = 0; f < 3; ++f) ASSERT_FALSE(r->renderFrame(200, 120, 0));
+    const FrameReadback fr = r->readback();
+    const Camera& cam = r->camera();
+    const glm::dvec3 eye(cam.position), fwd(cam.forward());
+    double lo = std::numeric_limits<double>::max(), hi = 0.0;
+    for (const glm::vec4& p : fr.positions) {
+      if (p.w <= 0.0f) continue;
+      const double d = std::max(glm::dot(glm::dvec3(p) - eye, fwd), 0.0);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    const auto& n = r->publication().numbers;
+    const double gpuLo = n.at("depth.measured.near"), gpuHi = n.at("depth.measured.far");
+    std::printf("%s: view depth of the covered pixels %.5f .. %.5f m (CPU), %.5f .. %.5f (GPU)\n",
+                scene, lo, hi, gpuLo, gpuHi);
+    EXPECT_EQ(n.at("depth.fitted"), 1.0);
+    EXPECT_NEAR(gpuLo, lo, 1e-5 * hi);
+    EXPECT_NEAR(gpuHi, hi, 1e-5 * hi);
+    // The split range: the measured one widened by 5 % (then cut to frustum and scene).
+    EXPECT_GE(n.at("depth.near"), gpuLo / 1.05 - 1e-6);
+    EXPECT_LE(n.at("depth.far"), gpuHi * 1.05 + 1e-6);
+    test::expectNoGlErrors(*r);
+  }
 }
 
 TEST(Golden, CorridorCascadesPartitionOverlay) {

@@ -193,6 +193,18 @@ TechniqueInfo CascadedShadowMap::info() {
        "1 when the split range used last frame's G-buffer depth range.",
        "",
        {}},
+      {"depth.measured.near",
+       PublicationKind::Number,
+       "The smallest view depth (m) of last frame's covered G-buffer pixels, as the "
+       "depth-range reduction read it back (depth.fit on; 0 when none yet).",
+       "",
+       {}},
+      {"depth.measured.far",
+       PublicationKind::Number,
+       "The largest view depth (m) of last frame's covered G-buffer pixels (as "
+       "depth.measured.near).",
+       "",
+       {}},
   };
   return info;
 }
@@ -305,6 +317,8 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "depth.near", fit_.nearM);
   publishNumber(ctx, "depth.far", fit_.farM);
   publishNumber(ctx, "depth.fitted", s.visibleDepthM ? 1.0 : 0.0);
+  publishNumber(ctx, "depth.measured.near", fitDepth && lastRange_ ? lastRange_->x : 0.0);
+  publishNumber(ctx, "depth.measured.far", fitDepth && lastRange_ ? lastRange_->y : 0.0);
   for (int i = 0; i < k; ++i) {
     const partition::CascadePart& p = fit_.parts[size_t(i)];
     const std::string key = "partition." + std::to_string(i);

@@ -93,6 +93,7 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
   for (double v : flick) s.flickerPctMean += v / double(flick.size());
   for (double v : flick) s.flickerPctMax = std::max(s.flickerPctMax, v);
   s.totalMs = median(ms);
+  for (double v : ms) s.totalMsMax = std::max(s.totalMsMax, v);
   return s;
 }
 

@@ -45,7 +45,8 @@ struct StabilitySummary {
   double covered = 0;
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
   double flickerPct = 0, flickerPctMean = 0, flickerPctMax = 0;
-  double totalMs = 0;
+  double totalMs = 0;     ///< median frame
+  double totalMsMax = 0;  ///< the worst frame
   int renderErrors = 0, glErrors = 0, nonFiniteNumbers = 0;
   bool hasRotation = false;
 
@@ -73,6 +74,7 @@ struct StabilitySummary {
             {"flicker_pct_mean", flickerPctMean},
             {"flicker_pct_max", flickerPctMax},
             {"total_ms", totalMs},
+            {"total_ms_max", totalMsMax},
             {"render_errors", renderErrors},
             {"gl_errors", glErrors},
             {"non_finite_numbers", nonFiniteNumbers}};

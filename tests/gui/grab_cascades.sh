@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The GUI on corridor with cascades and the partition overlay: the Partitions panel draws
-# every partition's map with its split distances (published.json: what the panel drew),
+# every partition's map with its split distances, its frustum slice and its pixels' m
+# (published.json: what the panel drew),
 # the splits chain from near to far, and the panel and view PNGs are real pictures.
 # usage: grab_cascades.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
@@ -35,6 +36,9 @@ for a, b in zip(parts, parts[1:]):
     assert a["texels_per_m"] > b["texels_per_m"], (a, b)  # near partitions: finer texels
 for q in parts:
     assert q["map_published"] and q["far_m"] > q["near_m"] and q["texels"] > 0, q
+    # Its frustum slice drawn on its map (the 12 edges of the slice, clipped) and its pixels' m.
+    assert q["slice_segments"] >= 4, q
+    assert q["m_pixels"] > 0 and 0 < q["m_p95"] <= q["m_max"], q
 print("partitions panel:", [(round(q["near_m"], 3), round(q["far_m"], 3)) for q in parts])
 PY
 echo "PASS"

@@ -2,6 +2,8 @@
 #include "PagesPanel.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <array>
 #include <cmath>
 
@@ -138,18 +140,30 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
   }
   showContent(true);
   level_->setRange(0, std::max(levels_ - 1, 0));
+  const bool newLayout = levels_ != shownLevels_;
+  shownLevels_ = levels_;
   const double requested = number("pages.requested"), allocated = number("pages.allocated"),
                pool = number("pages.pool"), coarsened = number("pages.coarsened");
   // Every level's cells as drawn, counted by colour: a cache (ASM) draws states 4..8.
   std::array<int, pages::kPageStates> cells{};
+  int finestUsed = -1;  // the finest level with a page in any state but empty
   for (const auto& [key, image] : images_) {
     if (key.rfind("pages.table.", 0) != 0) continue;
     const QImage img = tableImage(image);
+    bool used = false;
     for (int y = 0; y < img.height(); ++y)
       for (int x = 0; x < img.width(); ++x)
         for (const StateStyle& st : kStates)
-          if (img.pixel(x, y) == st.colour) ++cells[std::size_t(st.state)];
+          if (img.pixel(x, y) == st.colour) {
+            ++cells[std::size_t(st.state)];
+            used = used || st.state != pages::PageState::Empty;
+          }
+    const int level = std::atoi(key.c_str() + std::strlen("pages.table."));
+    if (used && (finestUsed < 0 || level < finestUsed)) finestUsed = level;
   }
+  // A new technique or layout opens on the finest level that holds pages (level 0 may be
+  // empty: ASM from a coarse map); after that the level is the user's.
+  if (newLayout && finestUsed >= 0) level_->setValue(finestUsed);
   auto count = [&](pages::PageState s) { return cells[std::size_t(s)]; };
   using PS = pages::PageState;
   const bool cache = count(PS::New) + count(PS::CachedHit) + count(PS::CachedIdle) +

@@ -47,6 +47,7 @@ class PagesPanel : public PublicationPanel {
   std::vector<float> poolLevels_;
   int poolColumns_ = 1;
   int levels_ = 0;
+  int shownLevels_ = -1;  ///< levels_ when the level was last chosen for the user
   QJsonObject drawn_;
 };
 

@@ -53,14 +53,23 @@ std::string joined(const std::vector<std::string>& items) {
 
 /// joined(items), cut after the item that passes `maxChars` with ", ... (N in all: `list`)":
 /// error lines stay bounded (one line of at most 300 bytes) however many there are.
-std::string joinedBounded(const std::vector<std::string>& items, std::size_t maxChars) {
+std::string joinedBounded(const std::vector<std::string>& items, std::size_t maxChars,
+                          const std::string& where = ": shadowlab-cli list") {
   std::string out;
   for (const std::string& s : items) {
     if (out.size() > maxChars)
-      return out + ", ... (" + std::to_string(items.size()) + " in all: shadowlab-cli list)";
+      return out + ", ... (" + std::to_string(items.size()) + " in all" + where + ")";
     out += (out.empty() ? "" : ", ") + s;
   }
   return out;
+}
+
+/// A case's labels for a message: each quoted to 40 bytes, the list cut after ~100 (a label
+/// is any string a suite gives: the fuzzer found an 8 KB one echoed whole).
+std::string boundedLabels(const std::set<std::string>& labels) {
+  std::vector<std::string> quoted;
+  for (const std::string& l : labels) quoted.push_back(quoteText(l, 40));
+  return joinedBounded(quoted, 100, "");
 }
 
 struct SuiteTechnique {
@@ -230,8 +239,8 @@ Expectation expectationOf(const JsonReader& r, const json& e, const std::string&
     const std::string p = jsonPath(path, key);
     std::string l = r.string(e[std::string(key)], p);
     if (!(star && l == "*") && !labels.count(l))
-      r.fail(p, "names '" + quoteText(l, 60) + "', which the case does not run (labels: " +
-                    joined({labels.begin(), labels.end()}) + ")");
+      r.fail(p, "names '" + quoteText(l, 60) +
+                    "', which the case does not run (labels: " + boundedLabels(labels) + ")");
     return l;
   };
   const json* metric = JsonReader::member(e, "metric");

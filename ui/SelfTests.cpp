@@ -358,8 +358,9 @@ void SelfTests::omniMapReadout(PublicationPanel* panel, bool cube) {
   const int cell = texels.height() / (cube ? 3 : 1);
   const int row0 = cube ? cell : 0;
   const QRectF r = image->shownImageRect();
-  // The readout names the texel it reads ("texel (x, y)  uv (u, v)  depth = D, N texels/sr"):
-  // the widget's pixel covers a few texels, so the value is checked at the texel it names.
+  // The readout names the texel it reads ("texel (x, y)  uv (u, v)  distance = D m (stored
+  // S), N texels/sr"): the widget's pixel covers a few texels, so the value is checked at the
+  // texel it names.
   struct Readout {
     QString text;
     int tx = -1, ty = -1;

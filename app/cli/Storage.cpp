@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "Commands.h"
@@ -18,6 +19,7 @@ namespace sl::cli {
 const char* const kStorageUsage =
     "       shadowlab-cli storage [--near N] [--far F] [--fov DEG] [--light AZIMUTH,ELEVATION]\n"
     "                             [--scheme uniform|psm|lispsm|tsm|cascades|face]\n"
+    "                             [--eta E] [--focus F]\n"
     "                             [--partitions K] [--split uniform|log|practical]\n"
     "                             [--lambda L] [--partition-warp on|off] [--grid N]\n"
     "                             [--csv FILE.csv] [--out PREFIX]\n";
@@ -34,13 +36,18 @@ constexpr const char* kStorageHelp =
     "  overhead (default 0,90). --out PREFIX writes PREFIX-eta.png (Fig. 6: M_x, M_z, S\n"
     "  over eta for this light) and PREFIX-hemisphere.png (Fig. 7: S over the light's\n"
     "  hemisphere, one disk per scheme); --csv both as rows\n"
-    "  plot,scheme,eta,azimuth_deg,elevation_deg,mx,mz,s.\n";
+    "  plot,scheme,eta,azimuth_deg,elevation_deg,mx,mz,s.\n"
+    "  --eta (psm, lispsm: one warp with this eta, their warp.eta; default 1 and 0) and\n"
+    "  --focus (tsm: its warp.focus, default 0.5). A TSM is one warp too: the eta its focus\n"
+    "  gives (printed) with --scheme lispsm --eta prints the same S, M_x, M_z.\n";
 
 struct StorageOptions {
   double nearM = 1.0, farM = 100.0, fovDeg = 60.0;
   double azimuthDeg = 0.0, elevationDeg = 90.0;
   std::string scheme = "lispsm";
-  int partitions = 0;  // 0: the scheme's default (4 for cascades, 1 otherwise)
+  std::optional<double> eta;    // --eta: psm, lispsm
+  std::optional<double> focus;  // --focus: tsm
+  int partitions = 0;           // 0: the scheme's default (4 for cascades, 1 otherwise)
   partition::SplitScheme split = partition::SplitScheme::Log;
   double lambda = 0.5;
   bool partitionWarp = true;
@@ -75,6 +82,7 @@ SchemeSettings settingsFor(const std::string& name, int k, const StorageOptions&
   } else {
     s.scheme = *partition::parseScheme(name);
   }
+  if (name == "tsm" && o.focus) s.tsmFocusFraction = *o.focus;
   return s;
 }
 
@@ -114,6 +122,10 @@ StorageOptions parse(Args& a) {
           o.scheme != "cascades" && o.scheme != "face")
         throw UsageError("--scheme: unknown '" + o.scheme +
                          "' (uniform, psm, lispsm, tsm, cascades, face)");
+    } else if (opt == "--eta") {
+      o.eta = parseDouble(opt, a.take(i, opt), -1.0, 1.0);
+    } else if (opt == "--focus") {
+      o.focus = parseDouble(opt, a.take(i, opt), 0.0, 1.0);
     } else if (opt == "--partitions") {
       o.partitions = parseInt(opt, a.take(i, opt), 1, 8);
     } else if (opt == "--split") {
@@ -141,6 +153,11 @@ StorageOptions parse(Args& a) {
   if (!(o.farM > o.nearM))
     throw UsageError("--far: " + fmt(o.farM) + " must be greater than --near (" + fmt(o.nearM) +
                      (nearGiven ? ")" : ", the default)"));
+  if (o.eta && o.scheme != "psm" && o.scheme != "lispsm")
+    throw UsageError("--eta: only psm and lispsm take an eta (got --scheme " + o.scheme +
+                     (o.scheme == "tsm" ? ": its eta follows from --focus, and is printed)" : ")"));
+  if (o.focus && o.scheme != "tsm")
+    throw UsageError("--focus: only tsm takes a focus (got --scheme " + o.scheme + ")");
   if (o.partitions == 0) o.partitions = o.scheme == "cascades" ? 4 : 1;
   if (o.partitions > 1 && o.scheme != "cascades" && o.scheme != "face")
     throw UsageError("--partitions: only cascades and face take partitions (got --scheme " +
@@ -169,7 +186,11 @@ int cmdStorage(Args& a) {
   };
 
   // The asked-for light and scheme.
-  const SchemeSettings chosen = settingsFor(o.scheme, o.partitions, o);
+  SchemeSettings chosen = settingsFor(o.scheme, o.partitions, o);
+  if (o.eta) {
+    chosen.scheme = Scheme::Eta;
+    chosen.eta = *o.eta;
+  }
   const StorageResult res = evaluate(chosen, light);
   std::printf(
       "storage factor (Lloyd et al. 2006): scheme %s, near %s, far %s, fov %s deg, "

@@ -79,4 +79,20 @@ MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
   return r;
 }
 
+float planeDistanceAlongRay(glm::vec3 lightPosM, glm::vec3 dir, glm::vec3 P, glm::vec3 N) {
+  const float nd = glm::dot(N, dir);
+  if (std::abs(nd) < 1e-6f * glm::length(N)) return -1.0f;
+  const float t = glm::dot(N, P - lightPosM) / nd;
+  return t > 0.0f ? t : -1.0f;
+}
+
+float receiverDistanceAt(glm::vec3 lightPosM, glm::vec3 dir, glm::vec3 P, glm::vec3 N) {
+  const float t = planeDistanceAlongRay(lightPosM, dir, P, N);
+  return t > 0.0f ? t : glm::length(P - lightPosM);
+}
+
+float distanceBiasM(float windowBias, float depthPerM, float clipW, float distanceM) {
+  return windowBias / depthPerM * distanceM / clipW;
+}
+
 }  // namespace sl

@@ -102,4 +102,21 @@ MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
                           glm::vec3 towardsLight, glm::vec2 localTexelUv,
                           const ShadowBiasSettings& s);
 
+// --- Distance maps (the cube: texels store the distance from a point light along their
+// centre's ray; GLSL: the SL_DEPTH_MAP_STORES_DISTANCE branch of depth_map_test.glsl).
+
+/// Distance from `lightPosM` along unit `dir` to the plane through P with normal N; -1 when
+/// the ray runs (nearly) inside the plane (|N.dir| < 1e-6 |N|) or meets it behind the
+/// light. GLSL: planeDistanceAlongRay (common/light_distance.glsl).
+float planeDistanceAlongRay(glm::vec3 lightPosM, glm::vec3 dir, glm::vec3 P, glm::vec3 N);
+/// The receiver (offset point P, normal N) at the texel whose centre's ray is `dir`: its
+/// plane met by that ray, or its own distance |P - light| when the ray does not meet it.
+/// Compared, less distanceBiasM, with the distance the texel stores. GLSL:
+/// receiverDistanceAt.
+float receiverDistanceAt(glm::vec3 lightPosM, glm::vec3 dir, glm::vec3 P, glm::vec3 N);
+/// A window-depth bias of a perspective map (shadowDepthBias, at the receiver's
+/// `depthPerM` = windowDepthPerM) as metres along the receiver's ray: bias / depthPerM is
+/// metres of the map's axial depth (clip w), times distance / w, the ray's secant.
+float distanceBiasM(float windowBias, float depthPerM, float clipW, float distanceM);
+
 }  // namespace sl

@@ -34,8 +34,24 @@
 // shadowHardAt / shadowFilteredAt. Nearest texels via the technique's fetch: metrics see
 // the map's true resolution; PCF averages the hard tests of a (2r+1)^2 neighbourhood
 // inside the selected map.
+//
+// DISTANCE MAPS (the cube): a perspective map whose texels store the distance from a point
+// light along the texel centre's own ray (normalised: shadowMapDepth returns the stored
+// value) instead of window depth. The lookup then also defines SL_DEPTH_MAP_STORES_DISTANCE
+// and, before including this file,
+//   vec3  shadowMapLight(int map)             the point distances are measured from (world)
+//   vec3  shadowMapTexelRay(int map, ivec2 t) unit world direction through texel t's centre
+//   float shadowMapStoredDistance(int map, float m)  metres -> the stored value (affine)
+// and the receiver's plane is met by the SAMPLED TEXEL'S RAY (planeDistanceAlongRay): the
+// same exact-at-the-centre comparison, in distances. Selection, normal offset and the slope
+// and constant terms are the window-depth model's, the terms turned into metres along the
+// receiver's ray (sl::distanceBiasM). CPU mirror: sl::planeDistanceAlongRay,
+// sl::receiverDistanceAt, sl::distanceBiasM.
 #include "common/shared_constants.h"
 #include "common/shadow_coord.glsl"
+#ifdef SL_DEPTH_MAP_STORES_DISTANCE
+#include "common/light_distance.glsl"
+#endif
 
 // Per map (bindDepthLookup, one DepthMapView each): its own orthographic or perspective
 // matrix (sl::lightPlaneMatrix splits its plane transform into the two next arrays).
@@ -59,6 +75,11 @@ vec2 g_receiverUv;   // unwarped light uv of the map (after the normal offset)
 float g_receiverZ;   // window depth
 vec2 g_receiverDz;   // d(window depth) / d(light uv) on the receiver's plane
 float g_receiverBias;
+#ifdef SL_DEPTH_MAP_STORES_DISTANCE
+vec3 g_receiverP;        // the offset receiver (world): its plane is met by each tap's ray
+vec3 g_receiverN;        // its world normal
+float g_receiverBiasM;   // g_receiverBias in metres along the receiver's ray
+#endif
 
 vec2 shadowMapSize(int map) { return vec2(shadowMapTexels(map)); }
 
@@ -120,31 +141,61 @@ ShadowCoord shadowLookupCoord(vec3 P, vec3 N) {
   float slope = min(abs(g_receiverDz.x) * t.x + abs(g_receiverDz.y) * t.y,
                     10.0 * texelM * depthPerM);
   g_receiverBias = u_biasSlope * slope + u_biasConstantM * depthPerM;
+#ifdef SL_DEPTH_MAP_STORES_DISTANCE
+  // Window depth -> metres of the face's axial depth (/ depthPerM) -> metres along the
+  // receiver's ray (x distance / w: the ray's secant to the face axis). sl::distanceBiasM.
+  float distanceM = length(Po - shadowMapLight(map));
+  g_receiverP = Po;
+  g_receiverN = N;
+  g_receiverBiasM = g_receiverBias / depthPerM * distanceM / c.w;
+  return ShadowCoord(map, vec3(lightToMapUv(map, uvz.xy), shadowMapStoredDistance(map, distanceM)));
+#else
   return ShadowCoord(map, vec3(lightToMapUv(map, uvz.xy), uvz.z));
+#endif
 }
 
+#ifdef SL_DEPTH_MAP_STORES_DISTANCE
+// The receiver's distance along unit `ray` from the map's light: its plane met by the ray,
+// or (the ray runs inside the plane or away from it: a plane edge-on to the light, which
+// the resolve's N.L test shadows) the offset receiver's own distance. CPU:
+// sl::receiverDistanceAt.
+float receiverDistanceAt(int map, vec3 ray) {
+  vec3 light = shadowMapLight(map);
+  float t = planeDistanceAlongRay(light, ray, g_receiverP, g_receiverN);
+  return t > 0.0 ? t : length(g_receiverP - light);
+}
+#endif
+
 // A PCF tap beyond the selected map's edge is clamped to the edge texel, unless the lookup
-// defines SL_DEPTH_MAP_ACROSS_EDGES and (declared before, defined after including this file)
-//   float shadowMapDepthAcross(int map, ivec2 t, out vec2 centreLightUv)
-// which reads the neighbouring map's texel in the direction of t and returns the point it
-// stores as a depth in `map` and the light uv where the receiver's plane meets that point's
-// ray (the cube's faces: PCF continues across face edges).
+// stores distances and defines SL_DEPTH_MAP_ACROSS_EDGES and (declared before, defined after
+// including this file)
+//   float shadowMapDistanceAcross(int map, ivec2 t, out vec3 ray)
+// which reads the neighbouring map's texel in the direction of t and returns the value it
+// stores and its centre's ray (the cube's faces: PCF continues across face edges, and the
+// receiver's plane is met by that texel's own ray, exactly as inside the face).
 float depthMapTexelTest(ShadowCoord c, ivec2 offset) {
   ivec2 size = shadowMapTexels(c.map);
   ivec2 t = clamp(ivec2(floor(c.uvz.xy * vec2(size))), ivec2(0), size - 1) + offset;
-  vec2 centre;
   float stored;
+#ifdef SL_DEPTH_MAP_STORES_DISTANCE
+  vec3 ray;
 #ifdef SL_DEPTH_MAP_ACROSS_EDGES
   if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) {
-    stored = shadowMapDepthAcross(c.map, t, centre);
+    stored = shadowMapDistanceAcross(c.map, t, ray);
   } else
 #endif
   {
     t = clamp(t, ivec2(0), size - 1);
-    centre = texelCentreLightUv(c.map, t);
+    ray = shadowMapTexelRay(c.map, t);
     stored = shadowMapDepth(c.map, t);
   }
+  float z = shadowMapStoredDistance(c.map, receiverDistanceAt(c.map, ray) - g_receiverBiasM);
+#else
+  t = clamp(t, ivec2(0), size - 1);
+  vec2 centre = texelCentreLightUv(c.map, t);
+  stored = shadowMapDepth(c.map, t);
   float z = g_receiverZ + dot(g_receiverDz, centre - g_receiverUv) - g_receiverBias;
+#endif
   return z <= stored ? 1.0 : 0.0;
 }
 

@@ -1,10 +1,13 @@
 // Cube shadow map, layered pass: each triangle goes to every rendered face's layer
 // (gl_Layer) through that face's 90° perspective (C++: omni::fitCube), skipped where it
-// lies wholly outside one plane of the face's frustum. Depth: common/depth.frag.
+// lies wholly outside one plane of the face's frustum. Stored: the distance from the light
+// (cube/distance.frag, the same interpolants as the six-pass cube/distance.vert).
+#include "cube/distance.glsl"
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 18) out;
 in vec2 vs_uv[];
 out vec2 v_uv;
+out vec3 v_fromLight;
 uniform int u_layerCount;          // rendered faces (6 for a point light)
 uniform mat4 u_layerViewProj[6];   // world -> clip of the face in layer l
 
@@ -26,14 +29,17 @@ void main() {
     gl_Layer = l;
     gl_Position = c0;
     v_uv = vs_uv[0];
+    v_fromLight = gl_in[0].gl_Position.xyz - u_cubeLightPos;
     EmitVertex();
     gl_Layer = l;
     gl_Position = c1;
     v_uv = vs_uv[1];
+    v_fromLight = gl_in[1].gl_Position.xyz - u_cubeLightPos;
     EmitVertex();
     gl_Layer = l;
     gl_Position = c2;
     v_uv = vs_uv[2];
+    v_fromLight = gl_in[2].gl_Position.xyz - u_cubeLightPos;
     EmitVertex();
     EndPrimitive();
   }

@@ -1,6 +1,7 @@
 // The dual paraboloid's mapping in GLSL (CPU: omni::paraboloidUv, omni::paraboloidDirection;
 // Brabec, Annen, Seidel 2002): hemisphere 0 looks along u_dpAxis, hemisphere 1 along -axis
 // (rotated 180° about u_dpX); p = (x, y) / (1 + z) in the hemisphere's frame, uv = 0.5 + 0.5 p.
+#include "common/light_distance.glsl"
 uniform vec3 u_dpLight;                 // world, metres
 uniform vec3 u_dpX, u_dpY, u_dpAxis;    // omni::ParaboloidFrame (x × y = axis)
 uniform float u_dpNearM, u_dpFarM;      // window depth = (L - near) / (far - near)
@@ -24,12 +25,7 @@ vec3 dpDirection(int hemi, vec2 uv) {
   if (hemi == 1) l = vec3(l.x, -l.y, -l.z);
   return normalize(l.x * u_dpX + l.y * u_dpY + l.z * u_dpAxis);
 }
-float dpWindowDepth(float distanceM) { return (distanceM - u_dpNearM) / (u_dpFarM - u_dpNearM); }
+float dpWindowDepth(float distanceM) { return storedLightDistance(distanceM, u_dpNearM, u_dpFarM); }
 // Distance from the light along unit `dir` to the plane through P with normal N; -1 when the
 // ray runs (nearly) inside the plane or away from it.
-float dpPlaneDistance(vec3 dir, vec3 P, vec3 N) {
-  float nd = dot(N, dir);
-  if (abs(nd) < 1e-6) return -1.0;
-  float t = dot(N, P - u_dpLight) / nd;
-  return t > 0.0 ? t : -1.0;
-}
+float dpPlaneDistance(vec3 dir, vec3 P, vec3 N) { return planeDistanceAlongRay(u_dpLight, dir, P, N); }

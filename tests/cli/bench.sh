@@ -5,7 +5,8 @@
 # --x ms|bytes: a CSV written without --x charts against memory (`chart --x bytes`), so does
 # an older CSV without `pareto_bytes` (docs/images); `pareto_bytes` is the front of memory
 # against error; `bench --x bytes` draws the memory chart directly; a bad --x value, or
-# --x bytes on a CSV without `bytes`, exits 2 naming it.
+# --x bytes on a CSV without `bytes`, exits 2 naming it. Omni lights: cube and
+# dual-paraboloid on omni-room with exact bytes and their own per-pass columns.
 set -euo pipefail
 cli=$1 out=$3/bench
 here=$(cd "$(dirname "$0")" && pwd)
@@ -46,6 +47,34 @@ for r in static:
 print(f"ok: error_pct {e}, aliasing_mean {m}")
 PY
 grep -q "left" "$out/path.stderr" || { echo "FAIL: no progress/time-left line on stderr"; exit 1; }
+
+# Omni lights (point light of omni-room): cube at 64^2 and 128^2 per face, dual-paraboloid at
+# 64^2 per hemisphere, one frame each. Every row measured (finite error and m), its bytes
+# exactly the maps' (4 B x resolution^2 x 6 faces or 2 hemispheres), its own pass timed
+# (cube_faces_ms, paraboloid_halves_ms) and the other technique's pass column empty.
+"$cli" bench --scene omni-room --technique cube:resolution=64,128 \
+  --technique dual-paraboloid:resolution=64 --frames 1 --size 160x90 --csv "$out/omni.csv" \
+  2>/dev/null
+python3 - "$out" <<'PY'
+import csv, math, sys
+rows = list(csv.DictReader(open(f"{sys.argv[1]}/omni.csv")))
+by = {(r["technique"], r["params"]): r for r in rows}
+want = {("cube", "resolution=64"): (6, 64, "cube_faces_ms", "paraboloid_halves_ms"),
+        ("cube", "resolution=128"): (6, 128, "cube_faces_ms", "paraboloid_halves_ms"),
+        ("dual-paraboloid", "resolution=64"): (2, 64, "paraboloid_halves_ms", "cube_faces_ms")}
+assert len(rows) == 3 and set(by) == set(want), f"rows {sorted(by)}"
+for key, (maps, res, own, other) in want.items():
+    r = by[key]
+    for k in ("error_pct", "aliasing_mean", "aliasing_p95", "aliasing_max"):
+        v = float(r[k])
+        assert math.isfinite(v) and v >= 0, f"{key} {k} = {r[k]}"
+    assert float(r["aliasing_max"]) > 0, f"{key}: no aliasing measured"
+    assert int(r["bytes"]) == 4 * res * res * maps, f"{key} bytes {r['bytes']}"
+    assert int(r["texels"]) == res * res * maps, f"{key} texels {r['texels']}"
+    assert r[own] != "" and float(r[own]) >= 0, f"{key}: pass column {own} = '{r[own]}'"
+    assert r[other] == "", f"{key}: {other} = '{r[other]}' (not its pass)"
+print(f"ok: omni rows {[(k, by[k]['error_pct'], by[k]['bytes']) for k in want]}")
+PY
 
 # x: memory. A sweep where the fronts differ (RTW small but slow), charted after the run.
 "$cli" bench --scene plane-box --technique uniform:resolution=256,1024 \

@@ -2,7 +2,8 @@
 # shadowlab-cli storage (issue 10): the storage factor of Lloyd et al. 2006. The CSV's numbers
 # against the paper's closed forms (overhead light: eq. 12 S = (f/n - 1) / (2 tan theta) for
 # eta >= 0, the uniform map's (f/n - 1) f / (2 n tan theta) at eta = -1), the printed S,
-# both PNGs written and not blank, bad values refused with exit 2.
+# both PNGs written and not blank, bad values refused with exit 2; tsm's printed eta given to
+# lispsm as --eta prints tsm's S (a TSM is one warp).
 set -uo pipefail
 cli=$1 out=$3/storage
 rm -rf "$out"
@@ -68,6 +69,28 @@ for path, want in zip(sys.argv[1:], (20, 200)):
     if n < want: print(f"FAIL: {path} looks blank ({n} colours)"); bad = 1
 sys.exit(bad)
 PY
+# TSM is one warp (Lloyd et al. §4.3): the eta --scheme tsm prints for its focus, given to
+# lispsm as --eta, prints the same S, M_x, M_z (within 1e-5: the eta is printed to 6 digits).
+# Light 30 deg to the right of behind, 40 up; focus 0.3 and 0.5 (the default).
+for focus in 0.3 0.5; do
+  "$cli" storage --near 1 --far 100 --fov 60 --light 30,40 --scheme tsm --focus "$focus" \
+    >"$out/tsm.txt" || { echo "FAIL: storage --scheme tsm exited $?"; fail=1; }
+  eta=$(awk '$1 == "whole" { for (i = 1; i < NF; ++i) if ($i == "eta") print $(i + 1) }' "$out/tsm.txt")
+  "$cli" storage --near 1 --far 100 --fov 60 --light 30,40 --scheme lispsm --eta "$eta" \
+    >"$out/eta.txt" || { echo "FAIL: storage --eta $eta exited $?"; fail=1; }
+  python3 - "$out/tsm.txt" "$out/eta.txt" "$eta" "$focus" <<'PY' || fail=1
+import re, sys
+def sline(path):
+    for line in open(path):
+        m = re.match(r"S = (\S+)  M_x = (\S+)  M_z = (\S+)", line)
+        if m: return [float(x) for x in m.groups()]
+    raise SystemExit(f"FAIL: no S line in {path}")
+t, e, eta = sline(sys.argv[1]), sline(sys.argv[2]), float(sys.argv[3])
+ok = -1 < eta < 1 and all(abs(a - b) <= 1e-5 * abs(a) for a, b in zip(t, e))
+print(("ok  " if ok else "FAIL") + f" tsm focus {sys.argv[4]}: eta {eta}, S M_x M_z {t}; one warp at that eta: {e}")
+sys.exit(0 if ok else 1)
+PY
+done
 check() {
   local want=$1; shift
   local err rc=0
@@ -83,6 +106,9 @@ check "shadowlab-cli: --fov: 180 is out of range 1..170" --fov 180
 check "shadowlab-cli: --scheme: unknown 'cube' (uniform, psm, lispsm, tsm, cascades, face)" --scheme cube
 check "shadowlab-cli: --partitions: 9 is out of range 1..8" --scheme cascades --partitions 9
 check "shadowlab-cli: --partitions: only cascades and face take partitions (got --scheme psm)" --scheme psm --partitions 2
+check "shadowlab-cli: --eta: only psm and lispsm take an eta (got --scheme tsm: its eta follows from --focus, and is printed)" --scheme tsm --eta 0.5
+check "shadowlab-cli: --focus: only tsm takes a focus (got --scheme lispsm)" --scheme lispsm --focus 0.5
+check "shadowlab-cli: --eta: 2 is out of range -1..1" --eta 2
 check "shadowlab-cli: --light: elevation must be in 0..90 degrees (the hemisphere above the viewer), got -10" --light 0,-10
 check "shadowlab-cli: --out: '$out/x-eta.png' is the same file as --csv (one would overwrite the other)" --csv "$out/x-eta.png" --out "$out/x"
 exit $fail

@@ -215,5 +215,18 @@ TEST(OmniDensity, MeasuredTexelSolidAnglesMatchTheAnalyticRatios) {
               1e-2);
 }
 
+TEST(OmniStoredDistance, NormalisedByNearAndFarAndInverted) {
+  // What cube/distance.frag and dual-paraboloid/depth.frag store: 0 at near, 1 at far
+  // (the cleared "nothing"), affine in between; distanceFromStored inverts it.
+  const double n = 0.0057, f = 5.7;
+  EXPECT_EQ(storedDistance(n, n, f), 0.0);
+  EXPECT_EQ(storedDistance(f, n, f), 1.0);
+  EXPECT_DOUBLE_EQ(storedDistance(0.5 * (n + f), n, f), 0.5);
+  EXPECT_DOUBLE_EQ(distanceFromStored(1.0, n, f), f);
+  EXPECT_DOUBLE_EQ(distanceFromStored(0.0, n, f), n);
+  for (double d = n; d <= f; d += 0.37)
+    EXPECT_NEAR(distanceFromStored(storedDistance(d, n, f), n, f), d, 1e-15 * f) << d;
+}
+
 }  // namespace
 }  // namespace sl::omni

@@ -100,5 +100,54 @@ TEST(ShadowBias, OrthographicMapIsTheAffineFormulaBitForBit) {
   EXPECT_EQ(r.bias, shadowDepthBias(bias, g, t, texelM, map.depthPerM));
 }
 
+// --- Distance maps (the cube's faces store the distance from the light along each texel
+// centre's ray; GLSL: SL_DEPTH_MAP_STORES_DISTANCE in depth_map_test.glsl).
+
+TEST(ShadowBiasDistance, PlaneDistanceAlongRayMeetsThePlane) {
+  const glm::vec3 light(0.3f, 1.0f, -0.2f);
+  const glm::vec3 N = glm::normalize(glm::vec3(0.2f, 1.0f, -0.1f)), P(0.5f, 0.1f, 0.4f);
+  for (glm::vec3 target :
+       {glm::vec3(2.0f, 0.0f, 1.0f), glm::vec3(-1.5f, 0.2f, -3.0f), glm::vec3(0.3f, 0.0f, -0.2f)}) {
+    const glm::vec3 dir = glm::normalize(target - light);
+    const float t = planeDistanceAlongRay(light, dir, P, N);
+    ASSERT_GT(t, 0.0f);
+    EXPECT_NEAR(glm::dot(N, light + t * dir - P), 0.0f, 1e-6f) << "on the plane";
+    EXPECT_EQ(receiverDistanceAt(light, dir, P, N), t);
+  }
+  // Straight down onto the floor y = 0 from 1 m: 1 m; at 45 degrees: sqrt 2.
+  const glm::vec3 up(0, 1, 0), above(0, 1, 0);
+  EXPECT_FLOAT_EQ(planeDistanceAlongRay(above, {0, -1, 0}, glm::vec3(5, 0, 5), up), 1.0f);
+  EXPECT_FLOAT_EQ(planeDistanceAlongRay(above, glm::normalize(glm::vec3(1, -1, 0)), {}, up),
+                  std::sqrt(2.0f));
+  // A ray inside the plane's direction or away from it never meets it: -1, and the receiver
+  // falls back to its own distance.
+  EXPECT_EQ(planeDistanceAlongRay(above, {1, 0, 0}, {}, up), -1.0f);
+  EXPECT_EQ(planeDistanceAlongRay(above, {0, 1, 0}, {}, up), -1.0f);
+  EXPECT_FLOAT_EQ(receiverDistanceAt(above, {0, 1, 0}, glm::vec3(3, 0, 4), up), std::sqrt(26.0f));
+}
+
+TEST(ShadowBiasDistance, BiasInMetresMovesTheReceiverByTheWindowBias) {
+  // A 90 degree face (the cube's): a receiver at distance d along a slanted ray, moved
+  // towards the light by distanceBiasM(b) along that ray, rises by b in window depth (to
+  // first order: a centimetre at 2..4.4 m, so within 1 %; float window depth near 1 adds
+  // under 0.1 %: tolerance 2 %).
+  constexpr float kNearM = 0.1f, kFarM = 10.0f;
+  const glm::vec3 light(0.0f);
+  const glm::mat4 vp = glm::perspective(glm::radians(90.0f), 1.0f, kNearM, kFarM) *
+                       glm::lookAt(light, glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
+  const DepthMapFrame face{vp, glm::vec2(2.0f), depthPerMAtUnitW(true, 0.0f, kNearM, kFarM)};
+  for (glm::vec3 P : {glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(1.5f, -0.8f, -2.0f),
+                      glm::vec3(-3.0f, 2.9f, -3.1f)}) {
+    const glm::vec4 c = mapUvzw(face, P);
+    const float d = glm::length(P - light);
+    const float perM = windowDepthPerM(face.depthPerM, c.w);
+    const float b = 1e-2f * perM;  // a centimetre of axial depth, in window depth
+    const float m = distanceBiasM(b, perM, c.w, d);
+    EXPECT_NEAR(m, 1e-2f * d / c.w, 1e-8f);  // the ray's secant times a centimetre
+    const glm::vec3 moved = P - m * glm::normalize(P - light);
+    EXPECT_NEAR(c.z - mapUvzw(face, moved).z, b, 0.02f * b) << P.x;
+  }
+}
+
 }  // namespace
 }  // namespace sl

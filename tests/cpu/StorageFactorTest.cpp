@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -89,6 +91,71 @@ TEST(WarpEta, EndpointsAreUniformLispsmAndPsm) {
     EXPECT_NEAR(warp::etaFromNPrime(np, n, f), eta, 1e-12) << eta;
     last = np;
   }
+}
+
+TEST(WarpEta, InverseEndpointsAndRoundTripFromNPrime) {
+  // Eq. 11 inverted (etaFromNPrime, what tsm publishes for its focus' n'): n' = infinity ->
+  // -1 (uniform), n + sqrt(f n) -> 0 (LiSPSM), n -> 1 (PSM), exactly (0 within rounding of
+  // the square root); n' -> eta -> n' round
+  // trips on both branches (n' above and below n'_LiSPSM) over several f / n.
+  for (const auto& [n, f] : {std::pair{1.0, 100.0}, {0.1, 1000.0}, {2.0, 3.0}}) {
+    SCOPED_TRACE(f / n);
+    const double lispsm = n + std::sqrt(f * n);
+    EXPECT_EQ(warp::etaFromNPrime(std::numeric_limits<double>::infinity(), n, f), -1.0);
+    EXPECT_NEAR(warp::etaFromNPrime(lispsm, n, f), 0.0, 1e-15);  // sqrt(f n) / n vs sqrt(f / n)
+    EXPECT_EQ(warp::etaFromNPrime(n, n, f), 1.0);
+    EXPECT_DOUBLE_EQ(warp::nPrimeFromEta(0.0, n, f), lispsm);
+    EXPECT_DOUBLE_EQ(warp::nPrimeFromEta(1.0, n, f), n);
+    for (double q = 1.0; q < 1e6; q *= 1.37) {  // n' from n to a million n
+      const double np = q * n, eta = warp::etaFromNPrime(np, n, f);
+      EXPECT_GE(eta, -1.0);
+      EXPECT_LE(eta, 1.0);
+      EXPECT_NEAR(warp::nPrimeFromEta(eta, n, f), np, 1e-9 * np) << "n' " << np;
+      EXPECT_EQ(eta > 0.0, np < lispsm) << "branch at n' " << np;
+    }
+    // Far beyond: eta tends to -1 from above; below n (a TSM focus at the eye) eq. 11 has no
+    // eta: it clamps to 1 (PSM).
+    EXPECT_GT(warp::etaFromNPrime(1e12 * n, n, f), -1.0);
+    EXPECT_LT(warp::etaFromNPrime(1e12 * n, n, f), -1.0 + 1e-6);
+    EXPECT_EQ(warp::etaFromNPrime(0.5 * n, n, f), 1.0);
+  }
+}
+
+TEST(WarpEta, TsmIsOneWarpWithItsEta) {
+  // Lloyd et al. §4.3: a TSM is one perspective warp along light-space z, i.e. eq. 11 with
+  // some eta. For random lights and focus fractions, the warp fitted with WarpKind::Eta at
+  // the TSM fit's eta has the TSM's n' and the same M_x, M_z, S (1e-9 relative) - what the
+  // Storage factor panel assumes when it analyses tsm by the eta it publishes, and why
+  // `shadowlab-cli storage --scheme tsm` prints the same S as one warp at that eta.
+  const ViewFrustum v = paperView(0.5, 60.0);
+  std::mt19937 rng(2006);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), focus(0.05, 0.7);
+  int compared = 0, beyondPsm = 0;
+  for (int i = 0; i < 300; ++i) {
+    const glm::dvec3 l(u(rng), std::abs(u(rng)) + 0.05, u(rng));
+    SchemeSettings tsm = scheme(Scheme::Tsm);
+    tsm.tsmFocusFraction = focus(rng);
+    const StorageResult t = evaluate(v, l, tsm);
+    const WarpFit& tf = t.parts[0].fit;
+    if (!tf.warped()) continue;
+    if (tf.eta >= 1.0) {  // n' below eq. 11's n: no eta reaches it (clamped, published as 1)
+      ++beyondPsm;
+      continue;
+    }
+    ++compared;
+    SchemeSettings eta = scheme(Scheme::Eta);
+    eta.eta = tf.eta;
+    const StorageResult e = evaluate(v, l, eta);
+    const WarpFit& ef = e.parts[0].fit;
+    ASSERT_TRUE(ef.warped()) << i;
+    EXPECT_NEAR(ef.nPrime, tf.nPrime, 1e-9 * tf.nPrime) << i;
+    EXPECT_NEAR(e.s, t.s, 1e-9 * t.s) << i;
+    EXPECT_NEAR(e.mx, t.mx, 1e-9 * t.mx) << i;
+    EXPECT_NEAR(e.mz, t.mz, 1e-9 * t.mz) << i;
+  }
+  std::printf("TSM = one warp at its eta: %d lights compared, %d with n' < n (eta 1)\n", compared,
+              beyondPsm);
+  EXPECT_GT(compared, 150);
 }
 
 // ---------------------------------------------------------------------------------------

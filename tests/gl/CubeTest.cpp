@@ -1,9 +1,12 @@
 // The `cube` technique on the GPU: its lookup selects the face and uv algo/omni computes on
-// the CPU for every direction around the light; omni-room at 1024^2 per face within 0.5 % of
-// the exact reference (layered and six passes give the same mask); a spot renders only the
+// the CPU for every direction around the light; its faces store the distance from the light
+// (omni::storedDistance of the CPU-mapped texel centre's hit); omni-room at 1024^2 per face within
+// 0.5 % of the exact reference (layered and six passes give the same mask); a spot renders only the
 // faces its cone reaches; memory() lists every byte; declared passes are the timed ones.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
 
 #include "GlTestEnv.h"
 #include "algo/omni/OmniMapping.h"
@@ -58,6 +61,88 @@ TEST(Cube, GpuLookupMatchesCpuFaceMappingOnTheSphere) {
   EXPECT_GT(compared, 100000u);
   EXPECT_LT(ties, compared / 100);
   test::expectNoGlErrors(*r);
+}
+
+TEST(Cube, FacesStoreTheDistanceFromTheLight) {
+  // A roof (y = 0.5, x in [0.5, 2], z in [-1, 0]) over an 8 m floor, the light at (0, 1, 0).
+  // For every texel of every face the CPU maps its centre to a direction
+  // (omni::cubeTexelCentreDirection) and meets the two planes with it (the first hit inside
+  // its rectangle, |P - L|): the face must store omni::storedDistance(|P - L|, near, far)
+  // there, and exactly 1 (nothing) where the ray meets neither (the upper half). Texels
+  // whose centre ray passes within 1 mm of a rectangle's edge are skipped (coverage there
+  // is the rasterizer's call: vertices snap to 1/256 texel). Tolerance 5e-7 of the depth
+  // range (2.9e-6 m of 5.8 m): the position relative to the light is interpolated in
+  // float32 at up to 5.7 m (a few float ulps: 1e-7 relative), the stored float's own ulp is
+  // 6e-8 (measured worst: 1.2e-7 of the range at 256^2).
+  // Layered and six passes store the same maps, bit for bit.
+  test::eglContext().makeCurrent();
+  Renderer r;
+  r.setScene(test::roofOverFloor(1.0f));
+  ASSERT_FALSE(r.setTechnique("cube"));
+  const glm::dvec3 L(0.0, 1.0, 0.0);
+  r.setLight(Light::point(glm::vec3(L)));
+  r.requestPublications({"face.*.map", "cube.near_m", "cube.far_m"});
+  for (int res : {64, 256}) {
+    SCOPED_TRACE(res);
+    ASSERT_FALSE(r.params().set("resolution", res));
+    std::map<std::string, FloatImage> maps[2];
+    for (int layered : {1, 0}) {
+      ASSERT_FALSE(r.params().set("cube.layered", layered));
+      ASSERT_FALSE(r.renderFrame(32, 32, 0));
+      maps[layered] = r.publication().images;
+    }
+    ASSERT_EQ(maps[0].size(), 6u);
+    for (const auto& [key, img] : maps[1])
+      EXPECT_EQ(img.values, maps[0].at(key).values) << key << ": layered != six passes";
+    const double nearM = r.publication().numbers.at("cube.near_m");
+    const double farM = r.publication().numbers.at("cube.far_m");
+    const double tolerance = 5e-7;
+    double worst = 0.0;
+    std::size_t hits = 0, empty = 0, skipped = 0;
+    for (int f = 0; f < omni::kCubeFaces; ++f) {
+      const FloatImage& img = maps[1].at("face." + std::to_string(f) + ".map");
+      ASSERT_EQ(img.width, res);
+      for (int y = 0; y < res; ++y)
+        for (int x = 0; x < res; ++x) {
+          const glm::dvec3 d = omni::cubeTexelCentreDirection({f, {x, y}}, res);
+          // The first of roof and floor inside its rectangle; the margin to its edges.
+          double t = -1.0, margin = 1e9;
+          auto meet = [&](double planeY, glm::dvec2 lo, glm::dvec2 hi) {
+            if (t > 0.0 || d.y >= 0.0) return;
+            const double s = (planeY - L.y) / d.y;
+            const glm::dvec3 P = L + s * d;
+            const double m = std::min({P.x - lo.x, hi.x - P.x, P.z - lo.y, hi.y - P.z});
+            margin = std::min(margin, std::abs(m));
+            if (m > 0.0) t = s;
+          };
+          meet(0.5, {0.5, -1.0}, {2.0, 0.0});
+          meet(0.0, {-4.0, -4.0}, {4.0, 4.0});
+          if (margin < 1e-3) {
+            ++skipped;
+            continue;
+          }
+          const float stored = img.values[std::size_t(y) * std::size_t(res) + std::size_t(x)];
+          if (t < 0.0) {
+            ++empty;
+            ASSERT_EQ(stored, 1.0f) << "face " << f << " texel " << x << ", " << y;
+            continue;
+          }
+          ++hits;
+          const double want = omni::storedDistance(t, nearM, farM);
+          worst = std::max(worst, std::abs(double(stored) - want));
+          ASSERT_NEAR(stored, want, tolerance)
+              << "face " << f << " texel " << x << ", " << y << ": |P - L| = " << t << " m";
+        }
+    }
+    std::printf(
+        "cube %d^2: %zu texels hit (worst |stored - distance| %.3g of the range, "
+        "%.3g m), %zu empty, %zu skipped at edges\n",
+        res, hits, worst, worst * (farM - nearM), empty, skipped);
+    EXPECT_GT(hits, std::size_t(res * res * 2));   // the floor fills -y and half of 4 sides
+    EXPECT_GT(empty, std::size_t(res * res * 2));  // +y and the upper halves
+    EXPECT_LT(skipped, hits / 50);
+  }
+  test::expectNoGlErrors(r);
 }
 
 TEST(Cube, OmniRoomAt1024PerFaceAgreesWithReference) {

@@ -10,31 +10,6 @@
 namespace sl {
 namespace {
 
-/// An 8 m floor (y = 0) under a point light at (0, 1, 0), and a roof quad at y = 0.5 over
-/// x in [shadowFromX / 2, 2], z in [-1, 0]: its shadow on the floor begins at x =
-/// shadowFromX and covers z < 0 only.
-std::shared_ptr<Scene> roofOverFloor(float shadowFromX) {
-  auto s = std::make_shared<Scene>();
-  s->name = "roof-over-floor";
-  Material dark;  // lit floor well below white: the colour shows the filtered visibility
-  dark.baseColorFactor = {0.25f, 0.25f, 0.25f, 1.0f};
-  s->materials.push_back(dark);
-  auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
-    MeshPrimitive q;
-    q.positions = {a, b, c, d};
-    q.normals.assign(4, glm::vec3(0, 1, 0));
-    q.indices = {0, 2, 1, 0, 3, 2};
-    q.material = 0;
-    s->primitives.push_back(q);
-  };
-  quad({-4, 0, -4}, {4, 0, -4}, {4, 0, 4}, {-4, 0, 4});
-  const float x0 = shadowFromX / 2.0f;
-  quad({x0, 0.5f, -1}, {2, 0.5f, -1}, {2, 0.5f, 0}, {x0, 0.5f, 0});
-  s->bounds.min = {-4.0f, 0.0f, -4.0f};
-  s->bounds.max = {4.0f, 0.5f, 4.0f};
-  return s;
-}
-
 struct SeamPcfCase {
   const char* technique;
   const char* axisParam;  ///< a parameter to set to 1 (dp.axis = x), or null
@@ -56,7 +31,7 @@ TEST_P(OmniPcf, FilteringReachesAcrossTheSeam) {
   const float texelM = 1.0f / 32.0f;
   test::eglContext().makeCurrent();
   Renderer r;
-  r.setScene(roofOverFloor(sc.seamX + texelM));
+  r.setScene(test::roofOverFloor(sc.seamX + texelM));
   ASSERT_FALSE(r.setTechnique(sc.technique));
   r.setLight(Light::point({0.0f, 1.0f, 0.0f}));
   ASSERT_FALSE(r.params().set("resolution", 64));

@@ -1,6 +1,7 @@
 // PSM / LiSPSM / TSM (techniques/perspective) against the Embree reference and the uniform
 // map at the same resolution; eta = -1 and the square-frustum fallback are the uniform map;
-// the fallback published; memory, passes and lights as declared.
+// the fallback published; tsm is one warp with the eta it publishes (and the Storage factor
+// panel's scheme says so); memory, passes and lights as declared.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,8 @@
 #include "GlTestEnv.h"
 #include "algo/warp/PerspectiveWarp.h"
 #include "gl/Gl.h"
+#include "panels/analysis/StoragePanelKeys.h"
+#include "panels/analysis/StorageScheme.h"
 
 namespace sl {
 namespace {
@@ -175,6 +178,71 @@ TEST(PerspectiveWarp, TsmFocusAndItsFallback) {
   EXPECT_EQ(far.fallback, 1.0);
   EXPECT_EQ(far.cause, double(int(warp::FallbackCause::TsmFocusBeyondLine)));
   EXPECT_TRUE(std::isinf(far.nPrime));
+}
+
+// Lloyd et al. 2006 (§4.3): a TSM is one perspective warp along light-space z with some n',
+// i.e. some eta (eq. 11 inverted, warp::etaFromNPrime). tsm publishes that eta; lispsm given
+// it as warp.eta fits the same warp (the same light space and body, n' back through eq. 11
+// within 1e-9 relative) and renders the same hard mask pixel for pixel. And the Storage
+// factor panel analyses tsm as exactly that warp: schemeFromDeclarations (what the panel
+// calls on the frame's numbers) gives one warp with the published eta, not uniform.
+TEST(PerspectiveWarp, TsmIsOneWarpWithThePublishedEtaAndThePanelAnalysesIt) {
+  auto r = test::makeRenderer("corridor", "uniform");
+  ASSERT_TRUE(r);
+  for (const char* bookmark : {"start-level", "midway"})
+    for (double focus : {0.2, 0.5}) {
+      SCOPED_TRACE(std::string(bookmark) + " focus " + std::to_string(focus));
+      useBookmark(*r, bookmark);
+      const Measured t = measure(*r, "tsm", 512, {{"warp.focus", focus}});
+      ASSERT_EQ(t.fallback, 0.0);
+      ASSERT_GT(t.eta, -1.0);
+      ASSERT_LT(t.eta, 1.0);
+      // The panel's scheme for this very frame (tsm declares no warp.eta parameter).
+      r->requestPublications(ui::analysis::storagePanelKeys());
+      ASSERT_FALSE(r->renderFrame(320, 180, 0));
+      const Publication& pub = r->publication();
+      auto num = [&](const std::string& key) -> std::optional<double> {
+        auto it = pub.numbers.find(key);
+        if (it == pub.numbers.end()) return std::nullopt;
+        return it->second;
+      };
+      ui::StorageInputs in;
+      ui::schemeFromDeclarations(
+          Renderer::findTechnique("tsm"), [&](const std::string& k) { return num("param." + k); },
+          num, in);
+      EXPECT_EQ(in.settings.scheme, partition::Scheme::Eta) << in.schemeLabel;
+      EXPECT_EQ(in.settings.eta, t.eta) << in.schemeLabel;
+      ASSERT_TRUE(in.eta);
+      EXPECT_EQ(*in.eta, t.eta);
+      r->requestPublications({});
+      // lispsm with that eta: the same n' and the same mask.
+      const Measured l = measure(*r, "lispsm", 512, {{"warp.eta", t.eta}});
+      EXPECT_NEAR(l.nPrime, t.nPrime, 1e-9 * t.nPrime);
+      EXPECT_TRUE(l.mask == t.mask) << "tsm and lispsm at its eta render different masks";
+      EXPECT_EQ(l.errorPct, t.errorPct);
+    }
+  // The other schemes as before: lispsm's eta is its parameter, uniform has none.
+  for (const char* id : {"lispsm", "uniform"}) {
+    ui::StorageInputs in;
+    ui::schemeFromDeclarations(
+        Renderer::findTechnique(id),
+        [&](const std::string& k) -> std::optional<double> {
+          return k == "warp.eta" ? std::optional<double>(0.25) : std::nullopt;
+        },
+        [](const std::string&) -> std::optional<double> { return 0.75; }, in);
+    EXPECT_EQ(in.settings.scheme,
+              std::string(id) == "lispsm" ? partition::Scheme::Eta : partition::Scheme::Uniform)
+        << id;
+    if (std::string(id) == "lispsm") {
+      EXPECT_EQ(in.settings.eta, 0.25);
+    }
+  }
+  // tsm without a published eta (not requested): nothing to analyse it by but uniform.
+  ui::StorageInputs none;
+  ui::schemeFromDeclarations(
+      Renderer::findTechnique("tsm"), [](const std::string&) { return std::optional<double>(); },
+      [](const std::string&) { return std::optional<double>(); }, none);
+  EXPECT_EQ(none.settings.scheme, partition::Scheme::Uniform);
 }
 
 TEST(PerspectiveWarp, MemoryPassesAndLights) {

@@ -73,6 +73,14 @@ glm::dvec3 cubeTexelCentreDirection(const CubeTexel& t, int resolution) {
   return cubeDirection(t.face, (glm::dvec2(t.texel) + 0.5) / double(resolution));
 }
 
+double storedDistance(double distanceM, double nearM, double farM) {
+  return (distanceM - nearM) / (farM - nearM);
+}
+
+double distanceFromStored(double stored, double nearM, double farM) {
+  return nearM + stored * (farM - nearM);
+}
+
 double cubeTexelsPerSteradian(const glm::dvec3& dir, int resolution) {
   const int face = selectCubeFace(dir);
   const double r = glm::length(dir) / glm::dot(dir, kFaces[face].forward);

@@ -48,6 +48,14 @@ struct CubeTexel {
 CubeTexel cubeTexel(const glm::dvec3& dir, int resolution);
 glm::dvec3 cubeTexelCentreDirection(const CubeTexel& t, int resolution);
 
+/// What an omni map stores per texel for a surface `distanceM` from the light (the cube's
+/// faces and the paraboloid's discs alike): (distance - near) / (far - near), 1 = the far
+/// distance (nothing nearer: the cleared value). GLSL: storedLightDistance
+/// (common/light_distance.glsl), written by cube/distance.frag and dual-paraboloid/depth.frag.
+double storedDistance(double distanceM, double nearM, double farM);
+/// The inverse: the distance (m) a stored value stands for.
+double distanceFromStored(double stored, double nearM, double farM);
+
 /// Texels per steradian of a cube map of `resolution`^2 texels per face, in direction `dir`:
 /// (resolution / 2)^2 r^3 with r = |dir| / dir.forward (the face's plane at distance 1,
 /// dOmega = dA / r^3). Face centre: (res/2)^2; corner: 3√3 times that.

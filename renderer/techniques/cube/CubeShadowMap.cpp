@@ -1,5 +1,5 @@
-// Cube shadow map (CubeShadowMap.h): fit the faces, render them (layered or six passes),
-// bind the six per-face views of the shared lookup.
+// Cube shadow map (CubeShadowMap.h): fit the faces, render their distances from the light
+// (layered or six passes), bind the six per-face views of the shared lookup.
 #include "CubeShadowMap.h"
 
 #include <stdexcept>
@@ -12,11 +12,18 @@ namespace sl {
 
 namespace {
 
+gl::ProgramDesc facePassProgramDesc() {
+  return {"cube/distance",
+          {{GL_VERTEX_SHADER, "cube/distance.vert"}, {GL_FRAGMENT_SHADER, "cube/distance.frag"}},
+          {},
+          {}};
+}
+
 gl::ProgramDesc layeredProgramDesc() {
   return {"cube/depth_layered",
           {{GL_VERTEX_SHADER, "cube/depth_layered.vert"},
            {GL_GEOMETRY_SHADER, "cube/depth_layered.geom"},
-           {GL_FRAGMENT_SHADER, "common/depth.frag"}},
+           {GL_FRAGMENT_SHADER, "cube/distance.frag"}},
           {},
           {}};
 }
@@ -45,15 +52,16 @@ TechniqueInfo CubeShadowMap::info() {
                      "direction from the light.",
                      std::move(p)};
   info.passes = {{"cube faces", "Cube faces",
-                  "Render the scene's depth six times from the light, once per 90° face "
+                  "Render the scene's distance from the light six times, once per 90° face "
                   "(+x, -x, +y, -y, +z, -z), in one layered pass or six: one frustum cannot "
                   "hold a light that shines every way. Texels are densest at the face "
                   "corners (3√3 times the centre's per steradian).",
                   "omni"}};
   info.publications = {
       {"face.*.map", PublicationKind::ImageSet,
-       "Every rendered face's depth map (window depth 0..1 of its 90° perspective), i = "
-       "face 0..5 (+x, -x, +y, -y, +z, -z).",
+       "Every rendered face's map: the distance from the light along each texel centre's ray, "
+       "(d - cube.near_m) / (cube.far_m - cube.near_m), 1 = nothing; i = face 0..5 (+x, -x, "
+       "+y, -y, +z, -z).",
        "4 B x resolution^2 x faces (6 for a point light)",
        [](const ParamSet& ps) {
          const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
@@ -72,7 +80,13 @@ TechniqueInfo CubeShadowMap::info() {
 }
 
 CubeShadowMap::CubeShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthProgramDesc()), layeredProgram_(lib, layeredProgramDesc()) {}
+    : depthProgram_(lib, facePassProgramDesc()), layeredProgram_(lib, layeredProgramDesc()) {}
+
+void CubeShadowMap::setDistance(const gl::Program& program) const {
+  program.set("u_cubeLightPos", fit_.lightPosM);
+  program.set("u_cubeNearM", fit_.nearM);
+  program.set("u_cubeFarM", fit_.farM);
+}
 
 void CubeShadowMap::renderShadows(FrameContext& ctx) {
   const int res = ctx.params.getInt("resolution");
@@ -93,6 +107,8 @@ void CubeShadowMap::renderShadows(FrameContext& ctx) {
       v.farM = fit_.farM;
       views_.push_back(v);
     }
+    setDistance(depthProgram_);
+    setDistance(layeredProgram_);
     if (ctx.params.getBool("cube.layered")) {
       beginDepthPass(faces_.layeredFramebuffer(), res, res);
       layeredProgram_.use();
@@ -121,11 +137,13 @@ void CubeShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const 
   bindDepthLookup(resolve, views_);
   glBindTextureUnit(GLuint(firstUnit), faces_.texture().id());
   resolve.set("u_cubeFaces", firstUnit);
-  resolve.set("u_cubeLightPos", fit_.lightPosM);
+  setDistance(resolve);
   for (int f = 0; f < omni::kCubeFaces; ++f) {
     const std::string i = "[" + std::to_string(f) + "]";
     resolve.set(("u_cubeFaceLayer" + i).c_str(), fit_.layer[size_t(f)]);
-    resolve.set(("u_cubeClipToWorld" + i).c_str(), glm::inverse(fit_.viewProj[size_t(f)]));
+    const omni::CubeFaceBasis b = omni::cubeFaceBasis(f);
+    resolve.set(("u_cubeFaceBasis" + i).c_str(),
+                glm::mat3(glm::vec3(b.right), glm::vec3(b.up), glm::vec3(b.forward)));
   }
 }
 

@@ -1,7 +1,8 @@
-// Cube shadow map (seed 001; docs/techniques.md §7): six 90° perspective depth maps around a
-// point light (a spot: only the faces its cone reaches, algo/omni/CubeFit), in one texture
-// array, rendered in one layered pass (a geometry shader) or six, looked up through the
-// shared per-map bias model with the face chosen by the direction's major axis.
+// Cube shadow map (seed 001; docs/techniques.md §7): six 90° perspective faces around a
+// point light (a spot: only the faces its cone reaches, algo/omni/CubeFit), in one depth
+// texture array storing the DISTANCE from the light (gl_FragDepth, omni::storedDistance),
+// rendered in one layered pass (a geometry shader) or six, looked up through the shared
+// per-map bias model as distance maps, the face chosen by the direction's major axis.
 #pragma once
 
 #include <vector>
@@ -27,6 +28,9 @@ class CubeShadowMap : public Technique {
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
  private:
+  /// The light and the faces' near/far: what cube/distance.glsl normalises distances by.
+  void setDistance(const gl::Program& program) const;
+
   gl::Program depthProgram_, layeredProgram_;
   DepthMapArray faces_;  ///< one layer per rendered face (six-pass or layered mode)
   omni::CubeFit fit_;

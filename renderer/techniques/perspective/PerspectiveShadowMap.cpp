@@ -24,7 +24,8 @@ ParamDecl warpEtaDecl(double defaultEta) {
               "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), "
               "1 PSM (n' = n). Shared by psm, lispsm (which differ only in the default) and "
               "cascades with partition.warp (per partition: n and f of its slice) and "
-              "face-partition (one warp per face)."};
+              "face-partition (one warp per face); tsm derives it from warp.focus and publishes "
+              "it (warp.eta)."};
 }
 
 namespace {
@@ -40,7 +41,9 @@ ParamDecl focusDecl() {
           .step = 0.05,
           .help =
               "TSM's focus point on the view axis at near + this share of (far - near); the "
-              "warp maps it to the 80 % line of the map (Martin and Tan 2004)."};
+              "warp maps it to the 80 % line of the map (Martin and Tan 2004). That is one "
+              "warp with some n', i.e. some eta (Lloyd et al. 2006): published as warp.n_prime "
+              "and warp.eta and analysed as such; to set eta itself use lispsm or psm."};
 }
 
 }  // namespace
@@ -65,7 +68,8 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
     name = "Trapezoidal shadow map (TSM)";
     description =
         "Martin and Tan 2004 in the light space of Lloyd et al. 2006: the warp that maps a focus "
-        "point on the view axis to the map's 80 % line.";
+        "point on the view axis to the map's 80 % line, i.e. one warp with the eta (eq. 11) "
+        "its focus gives at this light, published as warp.eta.";
     params.insert(params.begin(), focusDecl());
   } else {
     throw std::invalid_argument("perspective shadow map: unknown id '" + id +
@@ -88,7 +92,9 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
       {"warp.n_prime", PublicationKind::Number,
        "n': distance from the warp's projection centre to the body, metres (inf = uniform)", "",
        nullptr},
-      {"warp.eta", PublicationKind::Number, "eta of the warp used (-1 = uniform)", "", nullptr},
+      {"warp.eta", PublicationKind::Number,
+       "eta of the warp used (-1 = uniform); tsm: eq. 11 inverted for the n' its focus gives", "",
+       nullptr},
       {"warp.fallback", PublicationKind::Number,
        "1 when a warp was asked for but the uniform map was used (frustum square from the light)",
        "", nullptr},

@@ -25,78 +25,6 @@ namespace {
 const glm::dvec3 kWorldUp(0.0, 1.0, 0.0);
 }  // namespace
 
-bool StorageInputs::operator==(const StorageInputs& o) const {
-  const auto& a = view;
-  const auto& b = o.view;
-  const auto& s = settings;
-  const auto& t = o.settings;
-  return a.forward == b.forward && a.up == b.up && a.nearM == b.nearM && a.farM == b.farM &&
-         a.fovYRad == b.fovYRad && a.aspect == b.aspect && towardsLight == o.towardsLight &&
-         s.scheme == t.scheme && s.eta == t.eta && s.partitions == t.partitions &&
-         s.split == t.split && s.lambda == t.lambda && s.partitionWarp == t.partitionWarp &&
-         grid == o.grid;
-}
-
-void schemeFromDeclarations(const sl::TechniqueInfo* info,
-                            const std::function<std::optional<double>(const std::string&)>& param,
-                            StorageInputs& out) {
-  using sl::partition::Scheme;
-  sl::partition::SchemeSettings s;
-  const std::string id = info ? info->id : std::string("?");
-  auto declared = [&](const std::string& key) -> const sl::ParamDecl* {
-    if (!info) return nullptr;
-    for (const sl::ParamDecl& d : info->params)
-      if (d.key == key) return &d;
-    return nullptr;
-  };
-  const std::optional<double> k = declared("partitions") ? param("partitions") : std::nullopt;
-  const std::optional<double> eta = declared("warp.eta") ? param("warp.eta") : std::nullopt;
-  char buf[160];
-  if (k) {
-    s.scheme = Scheme::Cascades;
-    s.partitions = std::max(1, int(std::lround(*k)));
-    if (const sl::ParamDecl* d = declared("split"))
-      if (auto v = param("split"); v && *v >= 0 && std::size_t(*v) < d->enumNames.size())
-        if (auto split = sl::partition::parseSplitScheme(d->enumNames[std::size_t(*v)]))
-          s.split = *split;
-    if (declared("split.lambda"))
-      if (auto v = param("split.lambda")) s.lambda = *v;
-    if (declared("partition.warp"))
-      if (auto v = param("partition.warp")) s.partitionWarp = *v != 0.0;
-    std::snprintf(buf, sizeof buf, "cascades k=%d, %s split%s (%s)", s.partitions,
-                  sl::partition::splitSchemeName(s.split), s.partitionWarp ? " + LiSPSM" : "",
-                  id.c_str());
-    out.eta.reset();
-  } else if (info && info->findPublication("faces.front")) {  // face partitions (§5.1)
-    // face.zsplits > 1: each log-split slice face-partitioned (the combined scheme).
-    const std::optional<double> slices =
-        declared("face.zsplits") ? param("face.zsplits") : std::nullopt;
-    s.partitions = slices ? std::max(1, int(std::lround(*slices))) : 1;
-    s.scheme = s.partitions > 1 ? Scheme::FaceCascades : Scheme::Face;
-    s.split = sl::partition::SplitScheme::Log;
-    if (s.partitions > 1)
-      std::snprintf(buf, sizeof buf,
-                    "face partitions of %d log-split slices, LiSPSM per face (%s%s)", s.partitions,
-                    id.c_str(), eta && *eta != 0.0 ? ": analysed at eta 0" : "");
-    else
-      std::snprintf(buf, sizeof buf, "face partitions, LiSPSM per face (%s%s)", id.c_str(),
-                    eta && *eta != 0.0 ? ": analysed at eta 0" : "");
-    out.eta.reset();
-  } else if (eta) {
-    s.scheme = Scheme::Eta;
-    s.eta = std::clamp(*eta, -1.0, 1.0);
-    std::snprintf(buf, sizeof buf, "one warp, eta %.3g (%s)", s.eta, id.c_str());
-    out.eta = s.eta;
-  } else {
-    s.scheme = Scheme::Uniform;
-    std::snprintf(buf, sizeof buf, "uniform (%s%s)", id.c_str(),
-                  id.rfind("rtw", 0) == 0 || id == "da-rtw" ? ": its warp is not analysed" : "");
-    out.eta = -1.0;
-  }
-  out.settings = s;
-  out.schemeLabel = buf;
-}
-
 // --- The hemisphere view -------------------------------------------------------------------
 
 /// S over the light's hemisphere (one disk, a colour bar), the light marked; a click picks
@@ -317,7 +245,7 @@ void StoragePanel::showPublication(const sl::Publication& pub) {
   in.towardsLight = glm::dvec3(sl::Light::directional(float(*az), float(*el)).directionalTowards());
   schemeFromDeclarations(
       sl::Renderer::findTechnique(pub.techniqueId),
-      [&](const std::string& key) { return num("param." + key); }, in);
+      [&](const std::string& key) { return num("param." + key); }, num, in);
   measuredP95_ = num("aliasing.p95").value_or(-1.0);
   measuredMax_ = num("aliasing.max").value_or(-1.0);
   binOctaves_ = num("aliasing.bin_octaves").value_or(0.0);

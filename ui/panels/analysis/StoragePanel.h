@@ -12,6 +12,7 @@
 
 #include "algo/partition/StoragePlots.h"
 #include "panels/analysis/StoragePanelKeys.h"
+#include "panels/analysis/StorageScheme.h"
 #include "panels/common/PanelKit.h"
 
 class QLabel;
@@ -20,24 +21,6 @@ namespace sl::ui {
 
 class HemisphereView;
 class EtaView;
-
-/// What the analysis needs from a frame (the panel's inputs; equal inputs: no recompute).
-struct StorageInputs {
-  sl::warp::ViewFrustum view;
-  glm::dvec3 towardsLight{0.0, 1.0, 0.0};
-  sl::partition::SchemeSettings settings;
-  std::string schemeLabel;    ///< "uniform (uniform)", "eta 0 (lispsm)", "cascades k=4"
-  std::optional<double> eta;  ///< the scheme's eta, marked on the eta plot
-  int grid = 41;              ///< hemisphere cells per side
-  bool operator==(const StorageInputs& o) const;
-};
-
-/// The scheme of technique `info` with parameter values `param` (by key, from the
-/// declarations): cascades' k when it declares "partitions", the eta of "warp.eta", else
-/// uniform (uniform, RTW). Pure: unit-testable without a renderer.
-void schemeFromDeclarations(const sl::TechniqueInfo* info,
-                            const std::function<std::optional<double>(const std::string&)>& param,
-                            StorageInputs& out);
 
 class StoragePanel : public PublicationPanel {
   Q_OBJECT

@@ -59,7 +59,7 @@ OmniMapPanel::OmniMapPanel(QWidget* parent) : PublicationPanel(parent) {
 }
 
 std::set<std::string> OmniMapPanel::observedKeys() const {
-  return {"face.*.map", "cube.faces", "half.*.map", "dp.far_m"};
+  return {"face.*.map", "cube.faces", "cube.near_m", "cube.far_m", "half.*.map", "dp.far_m"};
 }
 
 void OmniMapPanel::showPublication(const sl::Publication& pub) {
@@ -127,6 +127,12 @@ void OmniMapPanel::showPublication(const sl::Publication& pub) {
       }
   }
   kind_ = cube ? QStringLiteral("cube") : QStringLiteral("paraboloid");
+  auto number = [&](const char* key) {
+    auto it = pub.numbers.find(key);
+    return it == pub.numbers.end() ? 0.0 : it->second;
+  };
+  nearM_ = cube ? number("cube.near_m") : 0.0;
+  farM_ = number(cube ? "cube.far_m" : "dp.far_m");
   const double analytic = cube ? 3.0 * std::sqrt(3.0) : 4.0;
   info_->setText(cube ? tr("Cube: %1 of 6 faces of %2 × %2 texels (cross: +y above, −y below +x +z "
                            "−x −z). Texels "
@@ -160,12 +166,17 @@ void OmniMapPanel::redraw() {
   drawn_[QStringLiteral("scale_min")] = double(range.lo);
   drawn_[QStringLiteral("scale_max")] = double(range.hi);
   auto depth = depth_, log2d = density_log2_;
-  view_->setValueReader([depth, log2d](int x, int y) {
+  view_->setValueReader([depth, log2d, nearM = nearM_, farM = farM_](int x, int y) {
     const size_t at = size_t(y) * size_t(depth->width) + size_t(x);
     const float d = depth->values[at], l = log2d->values[at];
     if (std::isnan(l)) return QObject::tr("no texel");
-    return QObject::tr("depth = %1, %2 texels/sr")
-        .arg(d >= 1.0f ? QObject::tr("1 (empty)") : formatValue(d), formatValue(std::exp2(l)));
+    const QString stored =
+        d >= 1.0f ? QObject::tr("1 (empty)")
+        : farM > nearM
+            ? QObject::tr("%1 m (stored %2)")
+                  .arg(formatValue(omni::distanceFromStored(d, nearM, farM)), formatValue(d))
+            : formatValue(d);
+    return QObject::tr("distance = %1, %2 texels/sr").arg(stored, formatValue(std::exp2(l)));
   });
   view_->setCaption(kind_ == QLatin1String("cube") ? tr("cube faces") : tr("paraboloid discs"));
   view_->setOverlay([this](QPainter& p, const QRectF& r) { drawProbe(p, r); });

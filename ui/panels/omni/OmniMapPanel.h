@@ -1,6 +1,7 @@
 // The Omni map panel: a cube shadow map unfolded as a cross (+y above, -y below the row
 // +x, +z, -x, -z, so neighbouring texels touch across every drawn edge) or the dual
-// paraboloid's two discs; the value under the cursor; and a texel-density view (log2 texels
+// paraboloid's two discs; the value under the cursor (both store the distance from the
+// light: shown in metres); and a texel-density view (log2 texels
 // per steradian from algo/omni, ONE fixed colour scale for both, so a class can compare);
 // and a marker where the view's pixel under the mouse looks up (the renderer's own face or
 // hemisphere and uv for that pixel, ViewportWidget::pixelProbed).
@@ -45,6 +46,9 @@ class OmniMapPanel : public PublicationPanel {
   std::shared_ptr<sl::FloatImage> depth_, density_log2_;
   QString kind_;  ///< "cube", "paraboloid" or empty
   int resolution_ = 0;
+  /// What the stored values are normalised by (cube.near_m / far_m; the paraboloid: 0 and
+  /// dp.far_m): both store (distance - near) / (far - near), omni::storedDistance.
+  double nearM_ = 0.0, farM_ = 0.0;
   QJsonObject drawn_;
 };
 

@@ -56,9 +56,12 @@ void main() {
   if (any(lessThan(uv, u_tileUvMin)) || any(greaterThanEqual(uv, u_tileUvMax))) return;
   vec3 P = worldFromEye(e);
 
-  ivec2 q = px & ~1;  // the quad: dX along the pixel's row, dY along its column
-  vec2 dX = texelAt(ivec2(q.x + 1, px.y)) - texelAt(ivec2(q.x, px.y));
-  vec2 dY = texelAt(ivec2(px.x, q.y + 1)) - texelAt(ivec2(px.x, q.y));
+  // The quad: dX along the pixel's row, dY along its column, each between the quad's two
+  // pixels — this one (its own coordinate, `own`) and its partner.
+  ivec2 q = px & ~1;
+  vec2 own = uv * u_texelsPerFullUv;
+  vec2 dX = px.x == q.x ? texelAt(px + ivec2(1, 0)) - own : own - texelAt(px - ivec2(1, 0));
+  vec2 dY = px.y == q.y ? texelAt(px + ivec2(0, 1)) - own : own - texelAt(px - ivec2(0, 1));
   float area = abs(dX.x * dY.y - dX.y * dY.x);
   vec3 N = texelFetch(u_gNormal, px, 0).xyz;
   ShadowCoord c = shadowLookupCoord(P, N);

@@ -20,7 +20,7 @@ namespace {
 // the buffer is one float matrix-vector product of the G-buffer's position, the rebuild eq.
 // 1's products and the inverse view's; the G-buffer's own position was interpolated in float
 // on the ray through the pixel's centre. Measured (llvmpipe, 320x180): depth 1.2e-7 on both
-// scenes; rebuilt GPU 4.3e-7 (diagonal), 5.3e-7 (corridor), CPU (double from the float depth)
+// scenes; rebuilt GPU 3.4e-7 (diagonal), 5.3e-7 (corridor), CPU (double from the float depth)
 // 2.6e-7, 4.7e-7. The bounds are about 4x those: a wrong term of eq. 1 (a pixel's half offset,
 // a sign of b, the aspect) moves positions by 1e-3 d or more.
 constexpr double kDepthTol = 5e-7;    // |buffer − (−z_eye(P))| / d

@@ -28,4 +28,20 @@ double FrameStats::passMs(const std::string& name) const {
   return 0.0;
 }
 
+std::vector<float> tileTimingCurve(const std::vector<PassTiming>& sequence,
+                                   const std::string& depthPass, const std::string& applyPass) {
+  std::vector<float> out;
+  double depthMs = 0.0;
+  for (const PassTiming& p : sequence) {
+    if (p.name == depthPass) {
+      depthMs += p.ms;
+    } else if (p.name == applyPass) {
+      out.push_back(float(depthMs));
+      out.push_back(float(p.ms));
+      depthMs = 0.0;
+    }
+  }
+  return out;
+}
+
 }  // namespace sl

@@ -36,7 +36,12 @@ struct MemoryStats {
 struct FrameStats {
   std::uint64_t frameIndex = 0;
   int width = 0, height = 0;
+  /// Per declared pass, the sum of its scopes (a pass repeated per tile or cascade is one
+  /// entry), in the order each was first timed.
   std::vector<PassTiming> passes;
+  /// The same timer results, one entry per scope in the order they ran (unsummed): e.g. a
+  /// "tile depth" / "tile apply" pair per tile (tileTimingCurve).
+  std::vector<PassTiming> passSequence;
   double totalMs = 0.0;
   /// "glFinish+wallclock" (software rasterisers, where GL_TIME_ELAPSED is meaningless)
   /// or "GL_TIME_ELAPSED" (timer queries on real GPUs).
@@ -78,5 +83,13 @@ struct FrameStats {
   bool complete() const { return !progress || progress->shownComplete; }
   double passMs(const std::string& name) const;
 };
+
+/// Per tile of a technique that times its tiles as repeated scopes (TechniqueInfo::tileTiming),
+/// from the unsummed `sequence` (FrameStats::passSequence): for each `applyPass` scope, in
+/// order, two values — the ms of the `depthPass` scopes since the previous `applyPass` scope
+/// (or the start), and of that `applyPass` scope. Other scopes are skipped; depth scopes
+/// after the last apply (a tile not applied yet) are not listed.
+std::vector<float> tileTimingCurve(const std::vector<PassTiming>& sequence,
+                                   const std::string& depthPass, const std::string& applyPass);
 
 }  // namespace sl

@@ -632,7 +632,8 @@ void drawGBuffer(RendererState& s, Targets& t, const glm::mat4& viewProj, const 
 
 /// The resolve of `t`'s G-buffer into its targets with the technique's maps (lookup or
 /// deferred), as they were built this frame.
-void resolveInto(RendererState& s, Targets& t, bool mainCamera) {
+void resolveInto(RendererState& s, Targets& t, bool mainCamera, const glm::mat4& view,
+                 const glm::mat4& proj) {
   const ParamSet& params = paramsFor(s, s.techniqueId);
   glBindFramebuffer(GL_FRAMEBUFFER, t.resolve.id());
   glViewport(0, 0, t.width, t.height);
@@ -676,7 +677,9 @@ void resolveInto(RendererState& s, Targets& t, bool mainCamera) {
                                  s.sceneGpu.get(),
                                  mainCamera ? s.timer.get() : nullptr,
                                  mainCamera,
-                                 progressive ? &progress : nullptr};
+                                 progressive ? &progress : nullptr,
+                                 view,
+                                 proj};
     s.technique->resolveDeferred(targets, params);
     if (progressive && progress.total > 0) {
       s.progressSignature = s.frameSignature;
@@ -759,7 +762,7 @@ Camera renderOutsideView(RendererState& s, int width, int height, float aspect,
   s.ensureOutsideTargets(width, height);
   Targets& o = s.outsideTargets;
   drawGBuffer(s, o, viewProj, cam.position);
-  resolveInto(s, o, /*mainCamera=*/false);
+  resolveInto(s, o, /*mainCamera=*/false, cam.view(), cam.projection(aspect));
   compositeInto(s, o, cam.position, false, /*mainCamera=*/false);
 
   if (segments.empty()) return cam;
@@ -904,7 +907,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                          0, 0, 0, t.width, t.height, 1);
     };
     if (countChange && hadFrame) copyHard();
-    resolveInto(s, t, /*mainCamera=*/true);
+    resolveInto(s, t, /*mainCamera=*/true, view, proj);
     t.resolved = true;
     if (countChange && !hadFrame) copyHard();
     if (countChange && hadFrame) {
@@ -966,6 +969,14 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   s.stats.width = width;
   s.stats.height = height;
   s.stats.passes = s.timer->endFrame();
+  s.stats.passSequence = s.timer->sequence();
+  if (publishing) {  // per-tile times (TechniqueInfo::tileTiming) from the same results
+    const TechniqueEntry* entry = findEntry(s, s.techniqueId);
+    const TechniqueInfo* info = entry ? &entry->info : nullptr;
+    if (info && info->tileTiming && s.publication.wants(info->tileTiming->key))
+      s.publication.curves[info->tileTiming->key] = tileTimingCurve(
+          s.stats.passSequence, info->tileTiming->depthPass, info->tileTiming->applyPass);
+  }
   s.stats.timingMethod = s.timer->methodName();
   s.stats.timingFramesLate = s.timer->framesLate();
   s.stats.memory = s.technique->memory();

@@ -86,6 +86,15 @@ struct TechniqueInfo {
   /// frame is not what a user sees: measuring commands render unmeasured frames until it
   /// settles. Such a technique publishes "pca.valid", "rotation.held", "rotation.step_deg".
   bool temporalRotation = false;
+  /// A deferred technique that times its tiles as repeated passes (virtual-tiled, fvsm): when
+  /// `key` (a Curve it declares) is requested, the renderer publishes per tile, in the order
+  /// the tiles were applied, two values: the ms of the `depthPass` scopes since the previous
+  /// tile's `applyPass` scope (the tile's depth; its bands in a progressive call) and of its
+  /// `applyPass` scope — from the timer results FrameStats::passes sums (tileTimingCurve).
+  struct TileTiming {
+    std::string key, depthPass, applyPass;
+  };
+  std::optional<TileTiming> tileTiming;
   /// The declaration matching `key` (exactly or by pattern); null when not published.
   const PublicationDecl* findPublication(std::string_view key) const;
 };

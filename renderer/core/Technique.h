@@ -118,6 +118,9 @@ struct ResolveTargets {
   bool mainCamera = true;
   /// Non-null: the host spreads the resolve over calls (ResolveProgress); null: one call.
   ResolveProgress* progress = nullptr;
+  /// The camera the G-buffer was drawn with (the main one, or the outside view's): its view
+  /// and perspective projection (the tiled techniques rebuild positions from eye depth).
+  glm::mat4 cameraView{1.0f}, cameraProj{1.0f};
   /// Binds the G-buffer to texture units SL_UNIT_G_POSITION / SL_UNIT_G_NORMAL and the five
   /// targets to image units SL_IMAGE_RESOLVE_* (write-only), for a compute pass.
   void bindForCompute() const;

@@ -1,5 +1,6 @@
 #include "GpuTimer.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -65,23 +66,27 @@ void GpuTimer::end() {
 }
 
 namespace {
-/// Passes with the same name (e.g. repeated per cascade) are summed.
-void addPass(std::vector<PassTiming>& out, const std::string& name, double ms) {
-  for (PassTiming& p : out)
-    if (p.name == name) {
-      p.ms += ms;
-      return;
-    }
-  out.push_back({name, ms});
+/// Passes with the same name (e.g. repeated per cascade) are summed, in order of first use.
+std::vector<PassTiming> sumByName(const std::vector<PassTiming>& sequence) {
+  std::vector<PassTiming> out;
+  for (const PassTiming& s : sequence) {
+    auto it =
+        std::find_if(out.begin(), out.end(), [&](const PassTiming& p) { return p.name == s.name; });
+    if (it != out.end())
+      it->ms += s.ms;
+    else
+      out.push_back(s);
+  }
+  return out;
 }
 }  // namespace
 
 std::vector<PassTiming> GpuTimer::endFrame() {
   if (open_) end();
   if (method_ == Method::FinishWallClock) {
-    std::vector<PassTiming> out;
-    for (const Entry& e : entries_) addPass(out, e.name, e.ms);
-    return out;
+    sequence_.clear();
+    for (const Entry& e : entries_) sequence_.push_back({e.name, e.ms});
+    return sumByName(sequence_);
   }
   // Timer queries: read the previous frame's, without waiting for the GPU.
   bool ready = !pending_.empty();
@@ -91,12 +96,13 @@ std::vector<PassTiming> GpuTimer::endFrame() {
     ready = ready && available != 0;
   }
   if (ready) {
-    lastResults_.clear();
+    sequence_.clear();
     for (const Entry& e : pending_) {
       GLuint64 ns = 0;
       glGetQueryObjectui64v(e.query, GL_QUERY_RESULT, &ns);  // available: no wait
-      addPass(lastResults_, e.name, double(ns) * 1e-6);
+      sequence_.push_back({e.name, double(ns) * 1e-6});
     }
+    lastResults_ = sumByName(sequence_);
     late_ = 1;
     pending_ = std::move(entries_);
     pendingPool_ = pool_;

@@ -28,6 +28,9 @@ class GpuTimer {
   /// without waiting (if the GPU has not finished them yet, the last results read are
   /// returned again and framesLate() grows).
   std::vector<PassTiming> endFrame();
+  /// The results endFrame() last returned, one entry per scope in the order they ran, not
+  /// summed by name (a pass repeated per tile: one entry per tile).
+  const std::vector<PassTiming>& sequence() const { return sequence_; }
   /// How many frames old the timer-query results endFrame() returned are (0 for
   /// finish+wallclock; 1 normally for queries).
   int framesLate() const { return method_ == Method::TimerQuery ? late_ : 0; }
@@ -56,6 +59,7 @@ class GpuTimer {
   std::vector<Entry> entries_;
   std::vector<Entry> pending_;  ///< the previous frame's query entries, not yet read
   std::vector<PassTiming> lastResults_;
+  std::vector<PassTiming> sequence_;                ///< lastResults_ before summing
   std::vector<Handle<QueryDeleter>> queryPool_[2];  ///< alternate frames
   int pool_ = 0, pendingPool_ = 0;
   int late_ = 0;

@@ -143,6 +143,13 @@
 #define SL_ASM_IMAGE_TESTED 1
 #define SL_ASM_TOUCH_BIT 0x80000000u
 
+// --- The tiled techniques' eye-space depth buffer (virtual-tiled and fvsm: Giegl & Wimmer
+// 2007 §3.2; techniques/virtual-tiled EyeDepthBuffer, shaders/virtual-tiled/eye_depth.*): r32f,
+// metres along the camera's view axis, 0 = no surface. Sampled on the unit after the tile's
+// own lookup texture (SL_UNIT_LOOKUP_FIRST) by the tile apply and SMTMM passes.
+#define SL_UNIT_EYE_DEPTH 11
+#define SL_IMAGE_EYE_DEPTH 5  // written by virtual-tiled/eye_depth.comp
+
 // --- Fitted virtual shadow maps (techniques/fvsm, shaders/fvsm; algo/fvsm).
 // Cap of a quantised SMTMM need (log2 texels of the whole virtual map along one axis): a
 // footprint collapsed to a line along an SM axis needs "infinite" resolution.

@@ -1,30 +1,20 @@
 // The shadow-map tile mapping map (SMTMM) of fitted virtual shadow maps (Giegl & Wimmer 2007,
 // §4.3; CPU reference: sl::fvsm::smtmmEntry / buildSmtmm, algo/fvsm/Fvsm.cpp, which this
 // mirrors line by line in float): one invocation per entry, sampling the pixel at the centre
-// of the entry's block. Linear eye depth comes from the G-buffer's world position (the
-// camera's view matrix); the pixel's footprint is the parallelogram P ± a ± b built from the
-// smaller depth step towards its neighbours (eq. 1), projected into the virtual map's uv.
+// of the entry's block. Linear eye depth is read from the eye-space depth buffer (step 1,
+// virtual-tiled/eye_depth.comp); the pixel's footprint is the parallelogram P ± a ± b built
+// from the smaller depth step towards its neighbours, each corner an eye-space position by
+// eq. 1 (virtual-tiled/eye_depth.glsl: eyeDepthAt, eyePosition), projected into the virtual
+// map's uv.
 #include "common/shared_constants.h"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;
 layout(rgba32f, binding = SL_IMAGE_FVSM_SMTMM) writeonly uniform image2D o_smtmm;
 uniform ivec2 u_frameSize;
 uniform ivec2 u_smtmmSize;
-uniform mat4 u_view;         // world -> eye
-uniform vec2 u_tanHalfFov;   // x, y
 uniform mat4 u_eyeToSmUv;    // eye -> the virtual map's uv (x, y; w divided)
 uniform int u_footprint;     // SL_FVSM_FOOTPRINT_BOX or _CHORD (fvsm.need.footprint)
 
-float eyeDepthAt(ivec2 p) {
-  vec4 P = texelFetch(u_gPosition, p, 0);
-  return P.w > 0.0 ? -(u_view * vec4(P.xyz, 1.0)).z : 0.0;
-}
-
-// sl::fvsm::eyePosition (eq. 1).
-vec3 eyePosition(vec2 pixel, float z) {
-  vec2 ndc = 2.0 * pixel / vec2(u_frameSize) - 1.0;
-  return vec3(ndc * u_tanHalfFov * z, -z);
-}
+#include "virtual-tiled/eye_depth.glsl"
 
 vec2 toSmUv(vec3 e) {
   vec4 c = u_eyeToSmUv * vec4(e, 1.0);

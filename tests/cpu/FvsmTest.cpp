@@ -4,8 +4,11 @@
 // all exact, on grids small enough to work out by hand (the numbers are in the comments).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "algo/fvsm/Fvsm.h"
 
@@ -46,6 +49,44 @@ TEST(FvsmSmtmm, EyePositionIsEquationOne) {
   EXPECT_EQ(eyePosition(v, {4.0, 4.0}, 2.0), glm::dvec3(0.0, 0.0, -2.0));
   EXPECT_EQ(eyePosition(v, {8.0, 6.0}, 2.0), glm::dvec3(2.0, 1.0, -2.0));
   EXPECT_EQ(eyePosition(v, {0.0, 0.0}, 3.0), glm::dvec3(-3.0, -3.0, -3.0));
+}
+
+// Eq. (1) inverts the camera's projection: an eye-space point projected by P to a pixel and
+// its depth −z comes back from eyePosition with eyeProjectionOf(P)'s terms, for a centred
+// frustum (glm::perspective: tan(fov/2) x aspect, tan(fov/2), no offset) and an off-centre
+// one (glm::frustum, b = (r + l) / (r − l)). Double against double: within 1e-12 m.
+TEST(FvsmSmtmm, EyePositionInvertsTheProjection) {
+  const EyeProjection centred =
+      eyeProjectionOf(glm::perspective(glm::radians(60.0), 2.0, 0.1, 50.0));
+  EXPECT_NEAR(centred.tanHalfFov.y, std::tan(glm::radians(30.0)), 1e-15);
+  EXPECT_NEAR(centred.tanHalfFov.x, 2.0 * std::tan(glm::radians(30.0)), 1e-15);
+  EXPECT_EQ(centred.ndcOffset, glm::dvec2(0.0));
+  const glm::dmat4 offCentre = glm::frustum(-0.3, 0.5, -0.1, 0.2, 0.25, 40.0);
+  const EyeProjection off = eyeProjectionOf(offCentre);
+  EXPECT_NEAR(off.ndcOffset.x, 0.2 / 0.8, 1e-15);
+  EXPECT_NEAR(off.ndcOffset.y, 0.1 / 0.3, 1e-15);
+  std::vector<float> none;
+  for (const glm::dmat4& proj :
+       {glm::dmat4(glm::perspective(glm::radians(60.0), 2.0, 0.1, 50.0)), offCentre}) {
+    EyeDepthView v;
+    v.width = 160;
+    v.height = 90;
+    const EyeProjection t = eyeProjectionOf(proj);
+    v.tanHalfFovX = t.tanHalfFov.x;
+    v.tanHalfFovY = t.tanHalfFov.y;
+    v.ndcOffset = t.ndcOffset;
+    v.eyeDepthM = none;
+    for (const glm::dvec3 e : {glm::dvec3(0.3, -0.2, -2.0), glm::dvec3(-4.0, 1.5, -17.5),
+                               glm::dvec3(0.01, 0.02, -0.3)}) {
+      const glm::dvec4 clip = proj * glm::dvec4(e, 1.0);
+      const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+      const glm::dvec2 pixel = (ndc + 1.0) * 0.5 * glm::dvec2(v.width, v.height);
+      const glm::dvec3 back = eyePosition(v, pixel, -e.z);
+      EXPECT_NEAR(back.x, e.x, 1e-12);
+      EXPECT_NEAR(back.y, e.y, 1e-12);
+      EXPECT_EQ(back.z, e.z);
+    }
+  }
 }
 
 TEST(FvsmSmtmm, QuantisationIsCeilOfMinusLog2) {

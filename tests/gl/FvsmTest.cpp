@@ -216,8 +216,8 @@ TEST(Fvsm, TheOverlapFixesTheSeamsAndNothingElse) {
   }
 }
 
-// memory() lists every byte (the SMTMM, every tile texture allocated so far, the fallback) in
-// each texture mode.
+// memory() lists every byte (the eye-space depth buffer, the SMTMM, every tile texture
+// allocated so far, the fallback) in each texture mode.
 TEST(Fvsm, MemoryIsExact) {
   auto r = test::makeRenderer("plane-box", "uniform");
   ASSERT_TRUE(r);
@@ -342,16 +342,57 @@ TEST(Fvsm, PublishesTheCameraImageAndTheLightsView) {
   test::expectNoGlErrors(*r);
 }
 
+// The paper's steps 1-5 are five declared passes, each timed on its own (the pass stepper
+// steps through them), then the tiles during the resolve.
+// Per-leaf times (fvsm.tile_ms): one (depth, apply) pair per kd leaf (fvsm.tiles of them, the
+// fallback map not among them), from the scopes the passes "tile depth" and "tile apply"
+// sum — so the curve sums to those passes within float rounding (floats: 1e-4 ms plus 1e-5
+// relative).
+TEST(Fvsm, PublishesEachLeafsTimes) {
+  auto r = fvsmRenderer({{"fvsm.max_texture", 128}, {"fvsm.fallback.resolution", 64}});
+  ASSERT_TRUE(r);
+  r->requestPublications({"fvsm.tile_ms", "fvsm.tiles"});
+  for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(160, 120, 0));  // queries: a frame late
+  const Publication& pub = r->publication();
+  ASSERT_TRUE(pub.curves.count("fvsm.tile_ms"));
+  const std::vector<float>& c = pub.curves.at("fvsm.tile_ms");
+  const double leaves = pub.numbers.at("fvsm.tiles");
+  EXPECT_GT(leaves, 1.0);
+  ASSERT_EQ(double(c.size()), 2.0 * leaves) << "a (depth, apply) pair per leaf";
+  double depth = 0.0, apply = 0.0;
+  for (std::size_t k = 0; k + 1 < c.size(); k += 2) {
+    EXPECT_GE(c[k], 0.0f);
+    EXPECT_GE(c[k + 1], 0.0f);
+    depth += c[k];
+    apply += c[k + 1];
+  }
+  const double passDepth = r->stats().passMs("tile depth");
+  const double passApply = r->stats().passMs("tile apply");
+  std::printf(
+      "fvsm plane-box 160x120: %.0f leaves; depth %.3f ms (pass %.3f), apply %.3f ms "
+      "(pass %.3f)\n",
+      leaves, depth, passDepth, apply, passApply);
+  EXPECT_GT(passDepth, 0.0);
+  EXPECT_NEAR(depth, passDepth, 1e-4 + 1e-5 * passDepth);
+  EXPECT_NEAR(apply, passApply, 1e-4 + 1e-5 * passApply);
+  test::expectNoGlErrors(*r);
+}
+
 TEST(Fvsm, DeclaredPassesAreTimedAndBadValuesRefused) {
   auto r = fvsmRenderer({{"fvsm.max_texture", 128}, {"fvsm.fallback.resolution", 64}});
   ASSERT_TRUE(r);
   ASSERT_FALSE(r->renderFrame(80, 60, 0));
+  const TechniqueInfo* info = Renderer::findTechnique("fvsm");
+  ASSERT_TRUE(info);
+  std::vector<std::string> declared;
+  for (const PassDecl& p : framePassDecls(*info)) declared.push_back(p.id);
+  EXPECT_EQ(declared,
+            (std::vector<std::string>{"gbuffer", "eye depth", "smtmm", "fvsm grid", "fvsm pyramid",
+                                      "fvsm kd-tree", "resolve", "tile depth", "tile apply",
+                                      "fallback", "composite"}));
   if (r->stats().timingFramesLate == 0) {
-    std::vector<std::string> timed, declared;
+    std::vector<std::string> timed;
     for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
-    const TechniqueInfo* info = Renderer::findTechnique("fvsm");
-    ASSERT_TRUE(info);
-    for (const PassDecl& p : framePassDecls(*info)) declared.push_back(p.id);
     EXPECT_EQ(timed, declared);
   }
   ASSERT_FALSE(r->params().set("fvsm.grid", 12));

@@ -72,7 +72,8 @@ TEST(VirtualTiled, MatchesUniformAtTheSameVirtualResolution) {
   EXPECT_GT(maps.size(), 3u) << "the map index is the tile";
 }
 
-// memory() lists the one tile texture: tile.resolution² depths, whatever the tile count.
+// memory() lists the one tile texture (tile.resolution² depths, whatever the tile count) and
+// the eye-space depth buffer (one float per pixel).
 TEST(VirtualTiled, MemoryIsOneTile) {
   auto r = test::makeRenderer("plane-box", "uniform");
   ASSERT_TRUE(r);
@@ -86,7 +87,7 @@ TEST(VirtualTiled, MemoryIsOneTile) {
     ASSERT_FALSE(r->renderFrame(80, 60, 0));
     const MemoryStats& m = r->stats().memory;
     EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
-    EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(res) * std::uint64_t(res));
+    EXPECT_EQ(m.bytes(), 4ull * std::uint64_t(res) * std::uint64_t(res) + 4ull * 80 * 60);
   }
   test::expectNoGlErrors(*r);
 }
@@ -107,10 +108,56 @@ TEST(VirtualTiled, DeclaredPassesAreTimed) {
   for (const PassDecl& p : framePassDecls(*info)) declared.push_back(p.id);
   EXPECT_EQ(timed, declared);
   EXPECT_NE(std::find(timed.begin(), timed.end(), "tile depth"), timed.end());
+  EXPECT_EQ(timed[1], "eye depth") << "the eye-space depth buffer right after the G-buffer";
   // A bad value is refused with the range.
   auto err = r->params().set("tiles", 0);
   ASSERT_TRUE(err);
   EXPECT_NE(err->find("tiles"), std::string::npos) << *err;
+}
+
+// Per-tile times (virtual_tiled.tile_ms): one (depth, apply) pair per tile, n² of them, from
+// the very scopes the passes "tile depth" and "tile apply" sum — so the curve sums to those
+// passes within float rounding (the curve holds floats: 1e-4 ms plus 1e-5 relative).
+TEST(VirtualTiled, PublishesEachTilesTimes) {
+  auto r = test::makeRenderer("plane-box", "virtual-tiled");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("tiles", 3));
+  ASSERT_FALSE(r->params().set("tile.resolution", 64));
+  r->requestPublications({"virtual_tiled.tile_ms"});
+  for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(80, 60, 0));  // queries: a frame late
+  ASSERT_TRUE(r->publication().curves.count("virtual_tiled.tile_ms"));
+  const std::vector<float>& c = r->publication().curves.at("virtual_tiled.tile_ms");
+  ASSERT_EQ(c.size(), 2u * 9u) << "a (depth, apply) pair per tile";
+  double depth = 0.0, apply = 0.0;
+  for (std::size_t k = 0; k < 9; ++k) {
+    EXPECT_GE(c[2 * k], 0.0f);
+    EXPECT_GE(c[2 * k + 1], 0.0f);
+    depth += c[2 * k];
+    apply += c[2 * k + 1];
+  }
+  const double passDepth = r->stats().passMs("tile depth"),
+               passApply = r->stats().passMs("tile apply");
+  std::printf(
+      "virtual-tiled 3x3x64^2, 80x60: tiles' depth %.3f ms (pass %.3f), apply %.3f ms (pass "
+      "%.3f)\n",
+      depth, passDepth, apply, passApply);
+  EXPECT_GT(passDepth, 0.0);
+  EXPECT_NEAR(depth, passDepth, 1e-4 + 1e-5 * passDepth);
+  EXPECT_NEAR(apply, passApply, 1e-4 + 1e-5 * passApply);
+  test::expectNoGlErrors(*r);
+}
+
+// The grouping itself (core/FrameStats tileTimingCurve), exact: depth scopes add up until the
+// next apply scope closes the tile; other passes are skipped; trailing depth (a tile not yet
+// applied: a progressive call's last bands) is not listed.
+TEST(VirtualTiled, TileTimingCurveGroupsDepthScopesUntilEachApply) {
+  const std::vector<PassTiming> seq = {
+      {"gbuffer", 9.0},    {"eye depth", 1.0},  {"resolve", 0.5},     {"tile depth", 2.0},
+      {"tile depth", 3.0}, {"tile apply", 4.0}, {"tile apply", 0.25}, {"tile depth", 6.0},
+      {"fallback", 7.0},   {"tile apply", 8.0}, {"tile depth", 5.0}};
+  EXPECT_EQ(tileTimingCurve(seq, "tile depth", "tile apply"),
+            (std::vector<float>{5.0f, 4.0f, 0.0f, 0.25f, 6.0f, 8.0f}));
+  EXPECT_TRUE(tileTimingCurve({}, "tile depth", "tile apply").empty());
 }
 
 // Progressive resolve (Renderer::setProgressiveBudget, the GUI's continuous rendering): a

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The GUI on plane-box with fvsm: the FVSM panel draws each kd leaf's screen rectangle over the
 # camera's image and the kd leaves over the light's view (depth), the SMTMM's needs along both
-# SM axes as heat maps with the rectangles over them, the tile grid with the kd leaves over it, the neediest cell's histogram, the tiles' textures and the frame's
+# SM axes as heat maps with the rectangles over them, the tile grid with the kd leaves over it, the neediest cell's histogram, the tiles' textures and times, and the frame's
 # kd-tree numbers (a real picture; published.json: what it drew, checked for consistency).
 # usage: grab_fvsm.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
@@ -40,6 +40,8 @@ assert 0 < p["camera_surface_texels"] < p["camera_w"] * p["camera_h"], p
 assert (p["light_w"], p["light_h"]) == (256, 256), p
 assert p["light_leaves_drawn"] == p["tiles"], p
 assert 0 < p["light_geometry_texels"] <= 256 * 256, p
+# Each leaf's depth and apply time (fvsm.tile_ms) is listed, and they took some time.
+assert p["tile_times_listed"] == p["tiles"] and p["tile_ms_sum"] > 0, p
 # The histogram drawn is a real cell's: its buckets count each of its entries once per axis.
 assert p["cell_entries"] >= 1, p
 assert p["hist_u_total"] == p["cell_entries"] == p["hist_v_total"], p

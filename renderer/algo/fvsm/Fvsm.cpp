@@ -41,9 +41,13 @@ double smallerDepthStep(const EyeDepthView& view, glm::ivec2 pixel, glm::ivec2 s
 
 }  // namespace
 
+EyeProjection eyeProjectionOf(const glm::dmat4& proj) {
+  return {{1.0 / proj[0][0], 1.0 / proj[1][1]}, {proj[2][0], proj[2][1]}};
+}
+
 glm::dvec3 eyePosition(const EyeDepthView& view, glm::dvec2 pixel, double eyeDepthM) {
-  const double ndcX = 2.0 * pixel.x / double(view.width) - 1.0;
-  const double ndcY = 2.0 * pixel.y / double(view.height) - 1.0;
+  const double ndcX = 2.0 * pixel.x / double(view.width) - 1.0 + view.ndcOffset.x;
+  const double ndcY = 2.0 * pixel.y / double(view.height) - 1.0 + view.ndcOffset.y;
   return {ndcX * view.tanHalfFovX * eyeDepthM, ndcY * view.tanHalfFovY * eyeDepthM, -eyeDepthM};
 }
 

@@ -1,5 +1,6 @@
 // Fitted virtual shadow maps (Giegl & Wimmer, GI 2007; seed 003, docs/techniques.md §6): the
-// CPU reference of every step after the eye-space depth buffer — the SMTMM entry of one pixel
+// CPU reference of eq. (1) (a pixel's eye-space position from the eye-space depth buffer, §3.2)
+// and of every step after that buffer — the SMTMM entry of one pixel
 // from its depth neighbourhood (§4.3), the tile grid with its η histogram and outlier
 // rejection (§4.4), the max pyramid (§4.5), the top-down kd-tree traversal (§4.6) with ξ
 // (§4.9), and the three tile texture modes (§4.10). Plain C++: the `fvsm` technique runs
@@ -26,19 +27,30 @@ inline constexpr int kMaxNeedLog2 = SL_FVSM_MAX_NEED_LOG2;
 // ---------------------------------------------------------------------------------------
 // Step 2: SMTMM entries.
 
+/// Eq. (1)'s terms of a camera's perspective projection P (OpenGL: clip w = −z_eye): the
+/// paper's 1 / a_x, 1 / a_y (`tanHalfFov`: 1 / P[0][0], 1 / P[1][1]) and b_x, b_y
+/// (`ndcOffset`: P[2][0], P[2][1]; 0 for a centred frustum).
+struct EyeProjection {
+  glm::dvec2 tanHalfFov{1.0};
+  glm::dvec2 ndcOffset{0.0};
+};
+EyeProjection eyeProjectionOf(const glm::dmat4& proj);
+
 /// What the SMTMM pass knows about the camera: a perspective camera looking along its −z
-/// with the given half-angle tangents, and the linear eye-space depth buffer (metres along
-/// −z, 0 = no surface). Eq. (1) of the paper: a pixel's eye-space position from its screen
-/// position and its linear depth.
+/// with the given half-angle tangents (and frustum offset, eyeProjectionOf), and the linear
+/// eye-space depth buffer (metres along −z, 0 = no surface). Eq. (1) of the paper: a pixel's
+/// eye-space position from its screen position and its linear depth.
 struct EyeDepthView {
   int width = 0, height = 0;
   double tanHalfFovX = 1.0, tanHalfFovY = 1.0;
+  glm::dvec2 ndcOffset{0.0};         ///< b_x, b_y (EyeProjection)
   std::span<const float> eyeDepthM;  ///< width * height, row-major, row 0 at the bottom
   float depthAt(int x, int y) const { return eyeDepthM[std::size_t(y) * width + x]; }
 };
 
 /// Eye-space position of screen position `pixel` (pixel units, (0, 0) = the bottom-left
-/// corner of the frame; a pixel's centre is at +0.5) at linear depth `eyeDepthM` (eq. 1).
+/// corner of the frame; a pixel's centre is at +0.5) at linear depth `eyeDepthM` (eq. 1):
+/// d ((ndc + b) tanHalfFov, −1). The GPU's is shaders/virtual-tiled/eye_depth.glsl.
 glm::dvec3 eyePosition(const EyeDepthView& view, glm::dvec2 pixel, double eyeDepthM);
 
 /// One SMTMM entry. `smUv`: where in the virtual shadow map ([0, 1]²) the pixel looks;

@@ -178,23 +178,36 @@ TechniqueInfo FittedVirtualShadowMap::info() {
       "rectangle.",
       std::move(params)};
   info.passes = {
+      EyeDepthBuffer::passDecl(),
       {"smtmm", "SMTMM",
-       "One entry per block of pixels: where the pixel looks in the light's map, and the log2 "
-       "resolution the whole map needs there along each axis (from its footprint built from "
-       "neighbour depths); read back.",
+       "Step 2 (§4.3). One entry per block of pixels: where the pixel looks in the light's "
+       "map, and the log2 resolution the whole map needs there along each axis (from its "
+       "footprint built from neighbour depths in the eye-space depth buffer, eq. 1); read "
+       "back to the CPU.",
        "fvsm"},
-      {"fvsm grid", "Tile grid, pyramid, kd-tree (CPU)",
-       "The SMTMM accumulated into an n x n grid (max need per axis, screen rectangle, need "
-       "histogram, outliers dropped), a max pyramid over it, and the top-down traversal that "
-       "splits a node while its need exceeds the max texture size.",
+      {"fvsm grid", "Tile grid (CPU)",
+       "Step 3 (§4.4). The read-back SMTMM accumulated into an n x n grid over the light's "
+       "map: per cell the max need per axis, the screen rectangle of its entries, and a "
+       "histogram of needs with end buckets η0, η1 (a few outlier entries may be dropped).",
+       "fvsm"},
+      {"fvsm pyramid", "Max pyramid (CPU)",
+       "Step 4 (§4.5). A max pyramid over the grid: each coarser cell holds the largest need "
+       "(per axis) and the union of the screen rectangles of the four below it.",
+       "fvsm"},
+      {"fvsm kd-tree", "kd-tree traversal (CPU)",
+       "Step 5 (§4.6). Top-down over the pyramid: a node is split along an axis while its "
+       "need (less ξ) exceeds the max texture size; each leaf gets the texture its need asks "
+       "for (allocated here when new).",
        "fvsm"},
       {"tile depth", "Tile depth (all tiles)",
        "Each kd leaf's part of the light frustum rendered at the resolution it needs (with the "
-       "overlap) into its texture. The time is the sum over the tiles.",
+       "overlap) into its texture. The time is the sum over the tiles (per tile: "
+       "fvsm.tile_ms).",
        "", true},
       {"tile apply", "Deferred shadowing (all tiles)",
-       "Each leaf applied to the pixels of its screen rectangle whose light uv falls in it. "
-       "The time is the sum over the tiles.",
+       "Each leaf applied to the pixels of its screen rectangle whose light uv falls in it, "
+       "their world positions rebuilt from the eye-space depth buffer (eq. 1). The time is "
+       "the sum over the tiles (per tile: fvsm.tile_ms).",
        "", true},
       {"fallback", "Fallback map", "Pixels no leaf reached: one map over the whole fit.", "", true},
   };
@@ -237,7 +250,12 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        "the kd leaves, 17 floats each (algo/fvsm packTileRecords): level, index, need, texture "
        "log2, texture and viewport size, screen rectangle in SMTMM entries, unmet",
        "0 B (the CPU's kd-tree)", [](const ParamSet&) { return std::uint64_t(0); }},
+      {"fvsm.tile_ms", PublicationKind::Curve,
+       "per kd leaf, in the order of fvsm.tiles.list: its depth ms and its apply ms, 2 floats "
+       "(the scopes the passes tile depth / tile apply sum; the fallback map not included)",
+       "0 B (the timer's own)", [](const ParamSet&) { return std::uint64_t(0); }},
   };
+  info.tileTiming = TechniqueInfo::TileTiming{"fvsm.tile_ms", "tile depth", "tile apply"};
   info.lights = {LightType::Directional};
   return info;
 }
@@ -248,7 +266,8 @@ FittedVirtualShadowMap::FittedVirtualShadowMap(const gl::ShaderLibrary& lib)
       smtmm_(lib, {"fvsm/smtmm", {{GL_COMPUTE_SHADER, "fvsm/smtmm.comp"}}, {}, {}}),
       cameraThumb_(
           lib,
-          {"fvsm/camera_thumbnail", {{GL_COMPUTE_SHADER, "fvsm/camera_thumbnail.comp"}}, {}, {}}) {}
+          {"fvsm/camera_thumbnail", {{GL_COMPUTE_SHADER, "fvsm/camera_thumbnail.comp"}}, {}, {}}),
+      eyeDepth_(lib) {}
 
 void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
   const ParamSet& p = ctx.params;
@@ -269,8 +288,12 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     throw std::runtime_error(e.what());
   }
 
+  {  // 1. The eye-space depth buffer.
+    auto pass = ctx.timer.scope("eye depth");
+    eyeDepth_.update(ctx.gPosition, ctx.width, ctx.height, ctx.cameraView, ctx.cameraProj);
+  }
   std::vector<glm::vec4> raw;
-  {
+  {  // 2. The SMTMM, read back.
     auto pass = ctx.timer.scope("smtmm");
     LightFit fit;
     if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
@@ -289,14 +312,11 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     glm::mat4 uvFromClip(1.0f);
     uvFromClip[0][0] = uvFromClip[1][1] = 0.5f;
     uvFromClip[3][0] = uvFromClip[3][1] = 0.5f;
-    const float tanY = std::tan(glm::radians(ctx.camera.fovYDeg) * 0.5f);
     smtmm_.use();
     smtmm_.set("u_frameSize", frameSize_);
     smtmm_.set("u_smtmmSize", smtmmSize_);
-    smtmm_.set("u_view", ctx.cameraView);
-    smtmm_.set("u_tanHalfFov", glm::vec2(tanY * ctx.aspect, tanY));
     smtmm_.set("u_eyeToSmUv", uvFromClip * full_.lightViewProj * glm::inverse(ctx.cameraView));
-    glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+    eyeDepth_.bind(smtmm_);
     glBindImageTexture(SL_IMAGE_FVSM_SMTMM, smtmmTexture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_RGBA32F);
     glDispatchCompute(GLuint((smtmmSize_.x + 7) / 8), GLuint((smtmmSize_.y + 7) / 8), 1);
@@ -331,16 +351,15 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     for (const glm::vec4& e : raw) img.values.insert(img.values.end(), {e.x, e.y, e.z, e.w});
     ctx.publication->images["fvsm.smtmm"] = std::move(img);
   }
-  {
+  fvsm::TileGrid grid;
+  {  // 3. The tile grid with its histograms (CPU).
     auto pass = ctx.timer.scope("fvsm grid");
     std::vector<fvsm::SmtmmEntry> entries(raw.size());
     for (std::size_t i = 0; i < raw.size(); ++i) {
       if (raw[i].z < 0.0f) continue;
       entries[i] = {true, glm::dvec2(raw[i].x, raw[i].y), glm::ivec2(raw[i].z, raw[i].w)};
     }
-    const fvsm::TileGrid grid = fvsm::accumulateGrid(entries, smtmmSize_, n, histogram);
-    const fvsm::Pyramid pyramid = fvsm::buildPyramid(grid);
-    tiles_ = fvsm::traverse(pyramid, traversal);
+    grid = fvsm::accumulateGrid(entries, smtmmSize_, n, histogram);
     const auto publishCells = [&](const char* key, int channels, std::vector<float> values) {
       if (ctx.wants(key))
         ctx.publication->images[key] = FloatImage{n, n, channels, std::move(values)};
@@ -350,12 +369,21 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     if (ctx.wants("fvsm.grid.histogram"))
       publishCells("fvsm.grid.histogram", 2 * histogram.bucketCount(),
                    fvsm::gridHistogramChannels(grid, histogram));
+    publishNumber(ctx, "fvsm.histogram.eta0", double(histogram.eta0));
+    publishNumber(ctx, "fvsm.histogram.eta1", double(histogram.eta1));
+  }
+  fvsm::Pyramid pyramid;
+  {  // 4. The max pyramid (CPU).
+    auto pass = ctx.timer.scope("fvsm pyramid");
+    pyramid = fvsm::buildPyramid(grid);
+  }
+  {  // 5. The kd-tree traversal (CPU), and the textures its leaves need.
+    auto pass = ctx.timer.scope("fvsm kd-tree");
+    tiles_ = fvsm::traverse(pyramid, traversal);
     if (ctx.wants("fvsm.tiles.list"))
       publishValues(ctx, "fvsm.tiles.list",
                     fvsm::packTileRecords(tiles_, textureMode(p), traversal.maxTextureLog2,
                                           p.getInt("fvsm.overlap")));
-    publishNumber(ctx, "fvsm.histogram.eta0", double(histogram.eta0));
-    publishNumber(ctx, "fvsm.histogram.eta1", double(histogram.eta1));
     fallbackResolution_ = p.getInt("fvsm.fallback.resolution");
     // Allocate every texture this frame's tiles use now, so memory() holds them all.
     const fvsm::TextureMode mode = textureMode(p);
@@ -386,6 +414,7 @@ TileDepthTarget& FittedVirtualShadowMap::depthTarget(glm::ivec2 size) {
 
 void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const ParamSet& params) {
   if (!t.sceneGpu) throw std::logic_error("fvsm: the resolve has no scene");
+  eyeDepth_.updateForResolve(t);
   const fvsm::TextureMode mode = textureMode(params);
   const int maxLog2 = log2Of(params.getInt("fvsm.max_texture"));
   const int overlap = params.getInt("fvsm.overlap");
@@ -411,7 +440,7 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
     glm::ivec2 rectMin(0), rectMax(t.width, t.height);
     if (rects) fvsm::tileScreenRectPixels(tile.screen, smtmmSize_, frameSize_, 1, rectMin, rectMax);
     applyTile(
-        apply_, t,
+        apply_, t, eyeDepth_,
         {full_, view, target.texture, tex.viewport, applyLo, applyHi,
          glm::vec2(glm::dvec2(tex.viewport) / (hi - lo)), rectMin, rectMax, unsigned(k) & 255u,
          /*onlyEmpty=*/false, /*clampToTile=*/false});
@@ -423,7 +452,7 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
                 full_.lightViewProj);
     glm::dvec2 everywhereLo, everywhereHi;  // the whole map is a border tile
     tileApplyRange(glm::dvec2(0.0), glm::dvec2(1.0), everywhereLo, everywhereHi);
-    applyTile(apply_, t,
+    applyTile(apply_, t, eyeDepth_,
               {full_, full_, target.texture, glm::ivec2(fallbackResolution_), everywhereLo,
                everywhereHi, glm::vec2(float(fallbackResolution_)), glm::ivec2(0),
                glm::ivec2(t.width, t.height), 255u, /*onlyEmpty=*/true});
@@ -437,6 +466,7 @@ MemoryStats FittedVirtualShadowMap::memory() const {
     m.add("SMTMM", gl::formatName(smtmmTexture_.format()), smtmmTexture_.width(),
           smtmmTexture_.height(), 1, gl::bytesPerTexel(smtmmTexture_.format()));
   for (const auto& [size, target] : targets_) target.addMemory(m, "tile texture");
+  eyeDepth_.addMemory(m);
   if (cameraTexture_)
     m.add("camera thumbnail (panel)", gl::formatName(cameraTexture_.format()),
           cameraTexture_.width(), cameraTexture_.height(), 1,
@@ -449,6 +479,7 @@ std::optional<std::string> FittedVirtualShadowMap::reloadShaders(const gl::Shade
   if (auto e = depth_.rebuild(lib)) return e;
   if (auto e = apply_.rebuild(lib)) return e;
   if (auto e = cameraThumb_.rebuild(lib)) return e;
+  if (auto e = eyeDepth_.reloadShaders(lib)) return e;
   return smtmm_.rebuild(lib);
 }
 

@@ -1,5 +1,6 @@
-// Fitted virtual shadow maps (Giegl & Wimmer, GI 2007; docs/techniques.md §6): the SMTMM pass
-// on the GPU (shaders/fvsm/smtmm.comp), read back; the tile grid, its max pyramid and the
+// Fitted virtual shadow maps (Giegl & Wimmer, GI 2007; docs/techniques.md §6): the eye-space
+// depth buffer (techniques/virtual-tiled EyeDepthBuffer) and the SMTMM pass on the GPU
+// (shaders/fvsm/smtmm.comp), read back; the tile grid, its max pyramid and the
 // kd-tree traversal on the CPU with the reference itself (algo/fvsm); then every kd leaf is
 // rendered at the resolution it needs and applied by deferred shadowing inside its screen
 // rectangle (shaders/virtual-tiled/apply_tile.comp, shared with `virtual-tiled`). Pixels no
@@ -25,7 +26,7 @@ class FittedVirtualShadowMap : public Technique {
   ResolveMode resolveMode() const override { return ResolveMode::Deferred; }
   void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depth_, &apply_, &smtmm_, &cameraThumb_};
+    return {&depth_, &apply_, &smtmm_, &cameraThumb_, &eyeDepth_.program()};
   }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
@@ -41,6 +42,7 @@ class FittedVirtualShadowMap : public Technique {
   gl::Program apply_;
   gl::Program smtmm_;
   gl::Program cameraThumb_;
+  EyeDepthBuffer eyeDepth_;  ///< this frame's (the outside view's during its resolve)
   gl::Texture smtmmTexture_;
   // The FVSM panel's views, allocated only once it asks for them (fvsm.camera,
   // fvsm.light.depth): the camera's image at one pixel per SMTMM entry, and the whole fit's

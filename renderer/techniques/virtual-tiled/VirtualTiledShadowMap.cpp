@@ -46,16 +46,26 @@ TechniqueInfo VirtualTiledShadowMap::info() {
                      "whole screen. Quality of an (n x resolution)² map, at n² times the cost.",
                      std::move(params)};
   info.passes = {
+      EyeDepthBuffer::passDecl(),
       {"tile depth", "Tile depth (all tiles)",
        "For each of the n x n tiles in turn: render the scene's depth over that tile's part of "
-       "the light frustum into the one tile texture. The time is the sum over the tiles.",
+       "the light frustum into the one tile texture. The time is the sum over the tiles "
+       "(per tile: virtual_tiled.tile_ms).",
        "", true},
       {"tile apply", "Deferred shadowing (all tiles)",
-       "After each tile's depth: a compute pass over the screen shadows the pixels whose light "
-       "uv falls in that tile (world position from the G-buffer) and writes the hard mask, "
-       "visibility, aliasing m, the tile's uv and its index. The time is the sum over the "
-       "tiles.",
+       "After each tile's depth: a compute pass over the screen rebuilds each pixel's world "
+       "position from the eye-space depth buffer (eq. 1), shadows the pixels whose light uv "
+       "falls in that tile and writes the hard mask, visibility, aliasing m, the tile's uv and "
+       "its index. The time is the sum over the tiles (per tile: virtual_tiled.tile_ms).",
        "", true},
+  };
+  info.tileTiming = TechniqueInfo::TileTiming{"virtual_tiled.tile_ms", "tile depth", "tile apply"};
+  info.publications = {
+      {"virtual_tiled.tile_ms", PublicationKind::Curve,
+       "per tile applied this frame, in order (row by row of the tile grid): its depth ms and "
+       "its apply ms, 2 floats (the scopes the passes tile depth / tile apply sum; in a "
+       "progressive call only that call's tiles and bands)",
+       "0 B (the timer's own)", [](const ParamSet&) { return std::uint64_t(0); }},
   };
   info.lights = {LightType::Directional};
   return info;
@@ -67,9 +77,13 @@ gl::ProgramDesc applyTileProgramDesc() {
 }
 
 VirtualTiledShadowMap::VirtualTiledShadowMap(const gl::ShaderLibrary& lib)
-    : depth_(lib, depthProgramDesc()), apply_(lib, applyTileProgramDesc()) {}
+    : depth_(lib, depthProgramDesc()), apply_(lib, applyTileProgramDesc()), eyeDepth_(lib) {}
 
 void VirtualTiledShadowMap::renderShadows(FrameContext& ctx) {
+  {
+    auto pass = ctx.timer.scope("eye depth");
+    eyeDepth_.update(ctx.gPosition, ctx.width, ctx.height, ctx.cameraView, ctx.cameraProj);
+  }
   LightFit fit;
   if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
                                      ctx.light.directionalTowards(), FocusSettings{}, fit)) {
@@ -115,6 +129,7 @@ void endTiles(const ResolveTargets& t) {
 
 void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const ParamSet& params) {
   if (!t.sceneGpu) throw std::logic_error("virtual-tiled: the resolve has no scene");
+  eyeDepth_.updateForResolve(t);
   const int n = params.getInt("tiles");
   const int res = params.getInt("tile.resolution");
   tile_.ensure(glm::ivec2(res), "virtual-tiled tile");
@@ -162,7 +177,7 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
       if (t.timer) t.timer->begin("tile apply");
       glm::dvec2 applyLo, applyHi;
       tileApplyRange(lo, hi, applyLo, applyHi);
-      applyTile(apply_, t,
+      applyTile(apply_, t, eyeDepth_,
                 {full_, view, tile_.texture, glm::ivec2(res), applyLo, applyHi, texelsPerUv,
                  glm::ivec2(0), glm::ivec2(t.width, t.height), unsigned(k) & 255u});
     }
@@ -191,11 +206,13 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
 MemoryStats VirtualTiledShadowMap::memory() const {
   MemoryStats m;
   tile_.addMemory(m, "tile");
+  eyeDepth_.addMemory(m);
   return m;
 }
 
 std::optional<std::string> VirtualTiledShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
   if (auto e = depth_.rebuild(lib)) return e;
+  if (auto e = eyeDepth_.reloadShaders(lib)) return e;
   return apply_.rebuild(lib);
 }
 
@@ -208,14 +225,17 @@ void clearResolveTargets(const ResolveTargets& t) {
   glClearTexImage(t.texel.id(), 0, GL_RG, GL_FLOAT, zero);
 }
 
-void applyTile(const gl::Program& apply, const ResolveTargets& t, const TileApply& tile) {
+void applyTile(const gl::Program& apply, const ResolveTargets& t, const EyeDepthBuffer& eyeDepth,
+               const TileApply& tile) {
   t.bindForCompute();
   apply.use();
   bindLight(apply, t.light);
+  eyeDepth.bind(apply);
   apply.set("u_size", glm::ivec2(t.width, t.height));
   apply.set("u_rectMin", tile.rectMin);
   apply.set("u_rectMax", tile.rectMax);
-  apply.set("u_fullViewProj", tile.full.lightViewProj);
+  apply.set("u_fullFromEye",
+            glm::mat4(glm::dmat4(tile.full.lightViewProj) * glm::dmat4(eyeDepth.worldFromEye())));
   apply.set("u_tileUvMin", glm::vec2(tile.uvMin));
   apply.set("u_tileUvMax", glm::vec2(tile.uvMax));
   apply.set("u_texelsPerFullUv", tile.texelsPerFullUv);

@@ -1,13 +1,15 @@
 // Brute-force virtual tiled shadow map (Giegl & Wimmer, GI 2007, §3.2; docs/techniques.md §6):
 // the light's focused orthographic frustum cut into n x n tiles, each rendered at
 // tile.resolution (16 x 16 x 4096² = a 65536² virtual map) into ONE reused depth texture and
-// applied at once by deferred shadowing: a compute pass over the screen shadows the pixels
-// whose light uv falls in that tile. The baseline fitted virtual shadow maps are measured
-// against.
+// applied at once by deferred shadowing: a compute pass over the screen rebuilds each pixel's
+// world position from the eye-space depth buffer (eq. 1, EyeDepthBuffer.h) and shadows the
+// pixels whose light uv falls in that tile. The baseline fitted virtual shadow maps are
+// measured against.
 #pragma once
 
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
+#include "techniques/virtual-tiled/EyeDepthBuffer.h"
 
 namespace sl {
 
@@ -46,15 +48,18 @@ class VirtualTiledShadowMap : public Technique {
   void renderShadows(FrameContext& ctx) override;
   ResolveMode resolveMode() const override { return ResolveMode::Deferred; }
   void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override;
-  std::vector<const gl::Program*> programs() const override { return {&depth_, &apply_}; }
+  std::vector<const gl::Program*> programs() const override {
+    return {&depth_, &apply_, &eyeDepth_.program()};
+  }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
  private:
   gl::Program depth_;
   gl::Program apply_;
-  TileDepthTarget tile_;  ///< the one tile texture every tile is rendered into in turn
-  DepthMapView full_;     ///< the whole virtual map (this frame's fit)
+  EyeDepthBuffer eyeDepth_;  ///< this frame's (the outside view's during its resolve)
+  TileDepthTarget tile_;     ///< the one tile texture every tile is rendered into in turn
+  DepthMapView full_;        ///< the whole virtual map (this frame's fit)
   /// The tile whose first `bandsDone_` bands tile_ holds (progressive); -1: none (a one-call
   /// resolve, e.g. the outside view's, reuses tile_).
   int bandTile_ = -1, bandsDone_ = 0;
@@ -63,7 +68,8 @@ class VirtualTiledShadowMap : public Technique {
 /// The deferred application of one tile (shaders/virtual-tiled/apply_tile.comp), shared by
 /// the virtual tiled map and fvsm: writes the resolve targets of the pixels in screen
 /// rectangle [rectMin, rectMax) whose light uv in `full` lies in [uvMin, uvMax), with the
-/// tile as map 0 of the shared bias model (its texture on SL_UNIT_LOOKUP_FIRST).
+/// tile as map 0 of the shared bias model (its texture on SL_UNIT_LOOKUP_FIRST); each
+/// pixel's position rebuilt from the eye-space depth buffer (applyTile's `eyeDepth`).
 struct TileApply {
   const DepthMapView& full;
   const DepthMapView& tile;
@@ -78,7 +84,8 @@ struct TileApply {
   /// is lit (tile_lookup.glsl), the seams an overlap removes.
   bool clampToTile = true;
 };
-void applyTile(const gl::Program& apply, const ResolveTargets& targets, const TileApply& tile);
+void applyTile(const gl::Program& apply, const ResolveTargets& targets,
+               const EyeDepthBuffer& eyeDepth, const TileApply& tile);
 /// Before the tiles: every pixel empty (hard SL_MASK_EMPTY, visibility 1, m 0, uv 0).
 void clearResolveTargets(const ResolveTargets& targets);
 /// The apply program (shared by the tiled techniques).

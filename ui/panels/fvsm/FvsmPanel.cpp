@@ -129,18 +129,22 @@ std::set<std::string> FvsmPanel::observedKeys() const {
   return {"fvsm.smtmm",       "fvsm.tiles",          "fvsm.tiles.unmet",    "fvsm.need_log2.u",
           "fvsm.need_log2.v", "fvsm.texels",         "fvsm.grid",           "fvsm.grid.histogram",
           "fvsm.tiles.list",  "fvsm.histogram.eta0", "fvsm.histogram.eta1", "fvsm.camera",
-          "fvsm.light.depth"};
+          "fvsm.light.depth", "fvsm.tile_ms"};
 }
 
 void FvsmPanel::highlightPass(const QString& passId) {
   const bool smtmm = passId == QLatin1String("smtmm");
   const bool grid = passId == QLatin1String("fvsm grid");
+  const bool pyramid = passId == QLatin1String("fvsm pyramid");
+  const bool kdTree = passId == QLatin1String("fvsm kd-tree");
   needU_->setHighlighted(smtmm);
   needV_->setHighlighted(smtmm);
-  grid_->setHighlighted(grid);
+  // The grid and its histograms; the pyramid is built over the grid; the kd leaves are drawn
+  // over the grid and the light's view.
+  grid_->setHighlighted(grid || pyramid || kdTree);
   histogram_->setHighlighted(grid);
   // The kd leaves are rendered over the light's view, applied inside their rectangles.
-  light_->setHighlighted(passId == QLatin1String("tile depth"));
+  light_->setHighlighted(kdTree || passId == QLatin1String("tile depth"));
   camera_->setHighlighted(passId == QLatin1String("tile apply"));
 }
 
@@ -213,6 +217,12 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
       tiles_.clear();  // a malformed list draws nothing rather than garbage
     }
   }
+  // Per-leaf (depth, apply) ms in the leaves' order; only when it lists exactly these leaves
+  // (with timer queries it is a frame older than the list).
+  std::vector<float> tileMs;
+  if (auto c = pub.curves.find("fvsm.tile_ms");
+      c != pub.curves.end() && c->second.size() == 2 * tiles_.size())
+    tileMs = c->second;
   const sl::FloatImage& smtmm = img->second;
   smtmmSize_ = {smtmm.width, smtmm.height};
   int cameraRects = 0, lightLeaves = 0;
@@ -289,7 +299,7 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
     const ValueRange gridRange{0.0f, maxCell, false};
     grid_->setImage(colorize(need, 0, gridRange, ColorMap::Viridis), need.width, need.height);
     grid_->setLegend(gridRange, ColorMap::Viridis, tr("log2 need"));
-    grid_->setValueReader([this, gi = gridImage_](int x, int y) {
+    grid_->setValueReader([this, gi = gridImage_, tileMs](int x, int y) {
       // The readout of the cell under the cursor also selects it for the histogram (drawn
       // in its own widget; the grid's selection outline follows on its next repaint).
       if (x != cellX_ || y != cellY_) {
@@ -305,15 +315,21 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
                       .arg(c[4])
                       .arg(c[kGridEntries]);
       const glm::dvec2 uv((x + 0.5) / gi.width, (y + 0.5) / gi.height);
-      for (const fvsm::TileRecord& t : tiles_) {
+      for (std::size_t k = 0; k < tiles_.size(); ++k) {
+        const fvsm::TileRecord& t = tiles_[k];
         const glm::dvec2 lo = t.tile.uvMin(), hi = t.tile.uvMax();
         if (uv.x < lo.x || uv.y < lo.y || uv.x >= hi.x || uv.y >= hi.y) continue;
-        s += tr("; leaf texture %1x%2 in %3x%4%5")
+        s += tr("; leaf %1: texture %2x%3 in %4x%5%6")
+                 .arg(k)
                  .arg(t.texture.viewport.x)
                  .arg(t.texture.viewport.y)
                  .arg(t.texture.size.x)
                  .arg(t.texture.size.y)
                  .arg(t.tile.unmet ? tr(" (unmet)") : QString());
+        if (2 * k + 1 < tileMs.size())
+          s += tr(", depth %1 ms + apply %2 ms")
+                   .arg(double(tileMs[2 * k]), 0, 'f', 1)
+                   .arg(double(tileMs[2 * k + 1]), 0, 'f', 1);
       }
       return s;
     });
@@ -342,6 +358,36 @@ void FvsmPanel::showPublication(const sl::Publication& pub) {
                 .arg(k.first.second)
                 .arg(count);
   }
+  // The leaves' times (fvsm.tile_ms), dearest first: what each leaf cost to render and apply.
+  double tileMsSum = 0.0;
+  if (!tileMs.empty()) {
+    std::vector<std::size_t> order(tiles_.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      order[k] = k;
+      tileMsSum += double(tileMs[2 * k]) + double(tileMs[2 * k + 1]);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return tileMs[2 * a] + tileMs[2 * a + 1] > tileMs[2 * b] + tileMs[2 * b + 1];
+    });
+    constexpr std::size_t kListed = 8;
+    text += tr("\n\nTile times (depth + apply), %1 leaves, %2 ms in all; the dearest:")
+                .arg(tiles_.size())
+                .arg(tileMsSum, 0, 'f', 1);
+    for (std::size_t i = 0; i < std::min(kListed, order.size()); ++i) {
+      const std::size_t k = order[i];
+      const fvsm::TileRecord& t = tiles_[k];
+      text += QStringLiteral("\n  #%1 %2x%3: %4 + %5 ms")
+                  .arg(k)
+                  .arg(t.texture.viewport.x)
+                  .arg(t.texture.viewport.y)
+                  .arg(double(tileMs[2 * k]), 0, 'f', 1)
+                  .arg(double(tileMs[2 * k + 1]), 0, 'f', 1);
+    }
+  } else {
+    text += tr("\n\nTile times: not published for these leaves");
+  }
+  drawn_["tile_times_listed"] = double(tileMs.size() / 2);
+  drawn_["tile_ms_sum"] = tileMsSum;
   textures_->setText(text);
   numbers_->setText(tr("kd leaves %1 (unmet at the finest level: %2)    whole map needs 2^%3 x "
                        "2^%4 texels    tile texels %5")

@@ -8,7 +8,8 @@
 // outlier rejection) with the kd-tree's leaves drawn as their SM rectangles, labelled with the log2
 // texture each was rendered at; the need histogram of the hovered (else the neediest) grid cell
 // (`fvsm.grid.histogram`, end buckets η0, η1); the textures the leaves used (size, mode's
-// viewport) and the frame's numbers.
+// viewport), each leaf's depth and apply time (`fvsm.tile_ms`: the dearest listed, the hovered
+// cell's leaf in its readout) and the frame's numbers.
 #pragma once
 
 #include <vector>
@@ -36,7 +37,9 @@ class FvsmPanel : public PublicationPanel {
   /// "light_w", "light_h", "light_leaves_drawn" (the light's view and the kd leaves drawn
   /// over it), "light_geometry_texels" (its texels nearer than the far plane),
   /// "cell_x", "cell_y", "cell_entries" (the cell whose histogram is drawn), "hist_u_total",
-  /// "hist_v_total" (its histogram's counts), "texture_kinds" (distinct tile textures).
+  /// "hist_v_total" (its histogram's counts), "texture_kinds" (distinct tile textures),
+  /// "tile_times_listed" (leaves with their depth and apply ms, from `fvsm.tile_ms`; 0 when
+  /// it does not list this frame's leaves), "tile_ms_sum" (their sum).
   QJsonObject drawnValues() const override { return drawn_; }
 
  private:

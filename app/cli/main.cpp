@@ -44,11 +44,13 @@ const char* kUsage =
     "usage: shadowlab-cli list\n"
     "       shadowlab-cli render --scene NAME|FILE --technique ID [--set KEY=VALUE]...\n"
     "                            [--size WxH] [--frames N] [--camera NAME|INDEX]\n"
+    "                            [--path NAME|INDEX [--path-at FRACTION (0)]]\n"
     "                            [--light LIGHT] [--preset FILE.json]\n"
     "                            --out FILE.png [--metrics FILE.json] [--error-image FILE.png]\n"
-    "                            [--wrong-pixels FILE.csv]\n"
+    "                            [--wrong-pixels FILE.csv] [--publish CURVE]...\n"
     "         (--wrong-pixels: one line per pixel whose hard test disagrees with the reference:\n"
-    "          where it is, its surface, m, the map and uv its lookup used)\n"
+    "          where it is, its surface, m, the map and uv its lookup used;\n"
+    "          --publish: a curve the technique publishes, into --metrics' published_curves)\n"
     "       shadowlab-cli compare [--scene NAME|FILE] [--technique ID[:KEY=V1,V2...]]...\n"
     "                            [--set KEY=VALUE]... [--size WxH] [--camera NAME|INDEX]\n"
     "                            [--light LIGHT] --out-dir DIR [--montage FILE.png]\n"
@@ -65,8 +67,11 @@ struct RenderConfig {
   int frames = 1;
   std::string camera;
   std::optional<sl::Camera> presetCamera;  ///< a --preset's camera (a later --camera wins)
+  std::string path;     ///< a camera path: the camera at pathAt of its duration (bench's frames)
+  double pathAt = 0.0;  ///< 0 = the path's start, 1 = its end
   std::optional<sl::Light> light;
   std::string out, metrics, errorImage, wrongPixels;
+  std::vector<std::string> publish;  ///< curves to add to --metrics (published_curves)
 };
 
 /// Techniques whose shadow map depends on earlier frames through a rotation (DA-RTW's R_k
@@ -125,11 +130,25 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   std::map<std::string, std::vector<double>> passMs;
   std::vector<std::string> passOrder;
   std::vector<double> totals;
-  // The technique's published numbers (no image or curve: nothing read back for them).
+  // The technique's published numbers (no image or curve: nothing read back for them), and
+  // the curves --publish asks for.
   std::set<std::string> numberKeys;
-  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r.techniqueId()))
+  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r.techniqueId())) {
     for (const sl::PublicationDecl& d : info->publications)
       if (d.kind == sl::PublicationKind::Number) numberKeys.insert(d.key);
+    for (const std::string& key : cfg.publish) {
+      const auto it = std::find_if(info->publications.begin(), info->publications.end(),
+                                   [&](const sl::PublicationDecl& d) { return d.key == key; });
+      if (it == info->publications.end() || it->kind != sl::PublicationKind::Curve) {
+        std::string curves;
+        for (const sl::PublicationDecl& d : info->publications)
+          if (d.kind == sl::PublicationKind::Curve) curves += (curves.empty() ? "" : ", ") + d.key;
+        throw UsageError("--publish: '" + key + "' is not a curve " + r.techniqueId() +
+                         " publishes (its curves: " + (curves.empty() ? "none" : curves) + ")");
+      }
+      numberKeys.insert(key);
+    }
+  }
   r.requestPublications(numberKeys);
   for (int f = 0; f < cfg.frames; ++f) {
     if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) throw std::runtime_error(*e);
@@ -167,6 +186,9 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   json published = json::object();  // the last frame's
   for (const auto& [k, v] : r.publication().numbers) published[k] = v;
   j["published"] = published;
+  json curves = json::object();  // the last frame's, those --publish asked for
+  for (const auto& [k, v] : r.publication().curves) curves[k] = v;
+  j["published_curves"] = curves;
   r.requestPublications({});
   json res = json::array();
   for (const auto& m : st.memory.resources)
@@ -242,7 +264,12 @@ void configure(sl::Renderer& r, const RenderConfig& cfg, const std::shared_ptr<s
     sl::ParamSet& set = r.rendererParams().has(key) ? r.rendererParams() : r.params();
     if (auto e = set.assign(kv)) throw UsageError("--set: " + *e);
   }
-  r.setCamera(cfg.presetCamera ? *cfg.presetCamera : pickCamera(*scene, cfg.camera));
+  if (!cfg.path.empty()) {
+    const sl::CameraPath& path = pickPath(*scene, cfg.path);
+    r.setCamera(path.sample(float(cfg.pathAt) * path.durationS()));
+  } else {
+    r.setCamera(cfg.presetCamera ? *cfg.presetCamera : pickCamera(*scene, cfg.camera));
+  }
   if (cfg.light) r.setLight(*cfg.light);
   // A light the technique cannot render: exit 2 with the renderer's own message.
   if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r.techniqueId()))
@@ -271,6 +298,7 @@ int cmdList() {
 
 RenderConfig parseRender(Args& a, size_t start, bool needOut) {
   RenderConfig cfg;
+  bool pathAtGiven = false;
   for (size_t i = start; i < a.rest.size(); ++i) {
     const std::string& o = a.rest[i];
     if (o == "--scene")
@@ -286,6 +314,11 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
     else if (o == "--camera") {
       cfg.camera = a.take(i, o);
       cfg.presetCamera.reset();
+    } else if (o == "--path")
+      cfg.path = a.take(i, o);
+    else if (o == "--path-at") {
+      cfg.pathAt = parseDouble(o, a.take(i, o), 0.0, 1.0);
+      pathAtGiven = true;
     } else if (o == "--out" || o == "--out-dir")
       cfg.out = a.take(i, o);
     else if (o == "--metrics")
@@ -294,6 +327,8 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
       cfg.errorImage = a.take(i, o);
     else if (o == "--wrong-pixels")
       cfg.wrongPixels = a.take(i, o);
+    else if (o == "--publish")
+      cfg.publish.push_back(a.take(i, o));
     else if (o == "--light")
       cfg.light = parseLight(o, a.take(i, o));
     else if (o == "--preset") {
@@ -313,6 +348,10 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
     }
   }
   if (needOut && cfg.out.empty()) throw UsageError("--out: missing (where to write the image)");
+  if (!cfg.path.empty() && (!cfg.camera.empty() || cfg.presetCamera))
+    throw UsageError("--path: give either a camera path (--path) or a camera (--camera, --preset)");
+  if (cfg.path.empty() && pathAtGiven)
+    throw UsageError("--path-at: needs --path (the camera path it is a fraction of)");
   return cfg;
 }
 

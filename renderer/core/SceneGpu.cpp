@@ -77,17 +77,28 @@ SceneGpu::SceneGpu(const Scene& scene) : materials_(scene.materials) {
   }
 }
 
-void SceneGpu::draw(const gl::Program& program, int textureUnit, bool patches,
-                    Geometry geometry) const {
+void SceneGpu::draw(const gl::Program& program, int textureUnit, bool patches, Geometry geometry,
+                    const gl::Program* opaque) const {
   const Mesh& mesh = meshes_[geometry == Geometry::AsLoaded ? 0 : 1];
   glBindVertexArray(mesh.vao.id());
   if (patches) glPatchParameteri(GL_PATCH_VERTICES, 3);
   program.set("u_baseColorTex", textureUnit);
   static const Material kDefault{};
+  const gl::Program* bound = &program;  // the caller bound it
   for (const Draw& d : mesh.draws) {
     const Material& m = d.material >= 0 && size_t(d.material) < materials_.size()
                             ? materials_[d.material]
                             : kDefault;
+    const gl::Program* use = opaque && m.alphaMode != AlphaMode::Mask ? opaque : &program;
+    if (use != bound) {
+      use->use();
+      bound = use;
+    }
+    if (use == opaque) {
+      glDrawElements(patches ? GL_PATCHES : GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
+                     reinterpret_cast<const void*>(d.firstIndex * sizeof(std::uint32_t)));
+      continue;
+    }
     const gl::Texture* tex = nullptr;
     if (m.baseColorTexture >= 0 && size_t(m.baseColorTexture) < textures_.size() &&
         textures_[m.baseColorTexture])
@@ -100,6 +111,7 @@ void SceneGpu::draw(const gl::Program& program, int textureUnit, bool patches,
     glDrawElements(patches ? GL_PATCHES : GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(d.firstIndex * sizeof(std::uint32_t)));
   }
+  if (bound != &program) program.use();
   glBindVertexArray(0);
 }
 

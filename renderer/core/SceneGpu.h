@@ -22,8 +22,11 @@ class SceneGpu {
   /// (int 0/1), u_alphaCutoff, u_hasTexture and binds the base colour texture to unit
   /// `textureUnit` (the program's u_baseColorTex must use that unit).
   /// `patches`: draws GL_PATCHES (3 vertices) for tessellation programs.
+  /// `opaque` (optional, already holding the pass's uniforms): drawn instead of `program`
+  /// for every primitive whose material is not alpha-tested (alphaMode MASK), with no
+  /// material uniforms set; `program` is bound again at the end.
   void draw(const gl::Program& program, int textureUnit = 0, bool patches = false,
-            Geometry geometry = Geometry::AsLoaded) const;
+            Geometry geometry = Geometry::AsLoaded, const gl::Program* opaque = nullptr) const;
   std::size_t triangleCount() const { return meshes_[0].triangles; }
   std::size_t splitTriangleCount() const { return meshes_[1].triangles; }
   float splitEdgeM() const { return splitEdgeM_; }

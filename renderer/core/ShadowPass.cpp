@@ -9,11 +9,26 @@
 
 namespace sl {
 
-gl::ProgramDesc depthProgramDesc() {
-  return {"common/depth",
-          {{GL_VERTEX_SHADER, "common/depth.vert"}, {GL_FRAGMENT_SHADER, "common/depth.frag"}},
-          {},
-          {}};
+gl::ProgramDesc depthProgramDesc(bool opaque) {
+  gl::ProgramDesc d{
+      opaque ? "common/depth (opaque)" : "common/depth",
+      {{GL_VERTEX_SHADER, "common/depth.vert"}, {GL_FRAGMENT_SHADER, "common/depth.frag"}},
+      {},
+      {}};
+  if (opaque) d.defines.push_back("SL_DEPTH_OPAQUE");
+  return d;
+}
+
+DepthProgram::DepthProgram(const gl::ShaderLibrary& lib)
+    : masked_(lib, depthProgramDesc(false)), opaque_(lib, depthProgramDesc(true)) {}
+
+void DepthProgram::draw(const SceneGpu& scene) const {
+  scene.draw(masked_, SL_UNIT_MATERIAL, false, SceneGpu::Geometry::AsLoaded, &opaque_);
+}
+
+std::optional<std::string> DepthProgram::rebuild(const gl::ShaderLibrary& lib) {
+  if (auto e = masked_.rebuild(lib)) return e;
+  return opaque_.rebuild(lib);
 }
 
 void beginDepthPass(GLuint framebuffer, int width, int height, bool clear) {
@@ -28,17 +43,25 @@ void beginDepthPass(GLuint framebuffer, int width, int height, bool clear) {
   glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &one);
 }
 
-void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
-                 int height, const glm::mat4& lightViewProj) {
+void renderDepth(const FrameContext& ctx, const DepthProgram& program, GLuint framebuffer,
+                 int width, int height, const glm::mat4& lightViewProj) {
   renderDepth(ctx.sceneGpu, program, framebuffer, width, height, lightViewProj);
 }
 
-void renderDepth(const SceneGpu& scene, const gl::Program& program, GLuint framebuffer, int width,
+void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
                  int height, const glm::mat4& lightViewProj) {
   beginDepthPass(framebuffer, width, height);
   program.use();
   program.set("u_lightViewProj", lightViewProj);
-  scene.draw(program, SL_UNIT_MATERIAL);
+  ctx.sceneGpu.draw(program, SL_UNIT_MATERIAL);
+}
+
+void renderDepth(const SceneGpu& scene, const DepthProgram& program, GLuint framebuffer, int width,
+                 int height, const glm::mat4& lightViewProj) {
+  beginDepthPass(framebuffer, width, height);
+  program.use();
+  program.set("u_lightViewProj", lightViewProj);
+  program.draw(scene);
 }
 
 DepthMapView subRectView(const DepthMapView& full, glm::dvec2 uvMin, glm::dvec2 uvMax) {
@@ -136,7 +159,7 @@ void DepthMapArray::addMemory(MemoryStats& m, const std::string& label) const {
 }
 
 SingleDepthMap::SingleDepthMap(const gl::ShaderLibrary& lib, std::string label)
-    : label_(std::move(label)), program_(lib, depthProgramDesc()) {}
+    : label_(std::move(label)), program_(lib) {}
 
 void SingleDepthMap::render(FrameContext& ctx, int resolution, const DepthMapView& view,
                             bool outline) {

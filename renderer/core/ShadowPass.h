@@ -17,7 +17,32 @@
 namespace sl {
 
 /// shaders/common/depth.vert + depth.frag: transforms by u_lightViewProj, alpha test.
-gl::ProgramDesc depthProgramDesc();
+/// `opaque`: built with SL_DEPTH_OPAQUE, no alpha test (an empty fragment shader).
+gl::ProgramDesc depthProgramDesc(bool opaque = false);
+
+/// The depth-only light pass's program, built twice: with the alpha test, for primitives
+/// whose material is alpha-tested (MASK), and without it for all others. A fragment shader
+/// that may discard keeps the rasteriser from testing depth before shading; on llvmpipe the
+/// opaque build renders depth 2.3x faster (README, "The depth pass without the alpha test").
+/// Every uniform is set on both builds.
+class DepthProgram {
+ public:
+  explicit DepthProgram(const gl::ShaderLibrary& lib);
+  template <class T>
+  void set(const char* name, const T& value) const {
+    masked_.set(name, value);
+    opaque_.set(name, value);
+  }
+  /// Binds the alpha-tested build (SceneGpu::draw switches per primitive).
+  void use() const { masked_.use(); }
+  /// Draws the scene: alpha-tested primitives with the masked build, the rest opaque.
+  void draw(const SceneGpu& scene) const;
+  std::vector<const gl::Program*> programs() const { return {&masked_, &opaque_}; }
+  std::optional<std::string> rebuild(const gl::ShaderLibrary& lib);
+
+ private:
+  gl::Program masked_, opaque_;
+};
 
 /// Binds `framebuffer`, sets the viewport and the depth-only state (less, write, no
 /// culling) and clears depth to 1 (unless `clear` is false: a page pool keeping its cache):
@@ -26,10 +51,13 @@ void beginDepthPass(GLuint framebuffer, int width, int height, bool clear = true
 
 /// Clears and renders the scene's depth into `framebuffer` (width x height). No bias: the
 /// map holds the exact depth at each texel centre; the lookup applies the bias model.
+void renderDepth(const FrameContext& ctx, const DepthProgram& program, GLuint framebuffer,
+                 int width, int height, const glm::mat4& lightViewProj);
+/// The same with a technique's own depth program (the cube's distance), one build for all.
 void renderDepth(const FrameContext& ctx, const gl::Program& program, GLuint framebuffer, int width,
                  int height, const glm::mat4& lightViewProj);
 /// The same for a technique that renders maps outside renderShadows (ResolveTargets::sceneGpu).
-void renderDepth(const SceneGpu& scene, const gl::Program& program, GLuint framebuffer, int width,
+void renderDepth(const SceneGpu& scene, const DepthProgram& program, GLuint framebuffer, int width,
                  int height, const glm::mat4& lightViewProj);
 
 /// One depth map of a lookup (common/depth_map_test.glsl): its own light matrix and
@@ -109,11 +137,11 @@ class SingleDepthMap {
   void bindLookup(const gl::Program& resolve, int firstUnit) const;
   MemoryStats memory() const;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib);
-  const gl::Program& program() const { return program_; }
+  const DepthProgram& program() const { return program_; }
 
  private:
   std::string label_;
-  gl::Program program_;
+  DepthProgram program_;
   gl::Texture map_;
   gl::Framebuffer fbo_;
   DepthMapView view_;
@@ -126,7 +154,7 @@ class SingleDepthMapTechnique : public Technique {
   void bindLookup(const gl::Program& resolve, int firstUnit) const override {
     map_.bindLookup(resolve, firstUnit);
   }
-  std::vector<const gl::Program*> programs() const override { return {&map_.program()}; }
+  std::vector<const gl::Program*> programs() const override { return map_.program().programs(); }
   MemoryStats memory() const override { return map_.memory(); }
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
     return map_.reloadShaders(lib);

@@ -24,7 +24,7 @@ std::string testShader(const char* file) {
 
 class Array2x2 : public Technique {
  public:
-  explicit Array2x2(const gl::ShaderLibrary& lib) : depth_(lib, depthProgramDesc()) {}
+  explicit Array2x2(const gl::ShaderLibrary& lib) : depth_(lib) {}
 
   void renderShadows(FrameContext& ctx) override {
     auto pass = ctx.timer.scope("shadow map");
@@ -64,7 +64,7 @@ class Array2x2 : public Technique {
     resolve.set("u_maps", firstUnit);
     resolve.set("u_selectViewProj", select_);
   }
-  std::vector<const gl::Program*> programs() const override { return {&depth_}; }
+  std::vector<const gl::Program*> programs() const override { return depth_.programs(); }
   MemoryStats memory() const override {
     MemoryStats m;
     if (maps_) m.add("2x2 sub-maps", "DEPTH_COMPONENT32F", maps_.width(), maps_.height(), 4, 4);
@@ -75,7 +75,7 @@ class Array2x2 : public Technique {
   }
 
  private:
-  gl::Program depth_;
+  DepthProgram depth_;
   gl::Texture maps_;
   std::array<gl::Framebuffer, 4> fbos_;
   std::array<DepthMapView, 4> views_;

@@ -152,7 +152,7 @@ TechniqueInfo AsmShadowMap::info() {
 }
 
 AsmShadowMap::AsmShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthProgramDesc()),
+    : depthProgram_(lib),
       testProgram_(lib, testProgramDesc()),
       edgesProgram_(lib, edgesProgramDesc()),
       compactProgram_(lib, compactProgramDesc()) {}

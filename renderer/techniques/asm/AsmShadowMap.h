@@ -29,7 +29,9 @@ class AsmShadowMap : public Technique {
   std::string lookupShader() const override { return "asm/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depthProgram_, &testProgram_, &edgesProgram_, &compactProgram_};
+    std::vector<const gl::Program*> p = depthProgram_.programs();
+    p.insert(p.end(), {&testProgram_, &edgesProgram_, &compactProgram_});
+    return p;
   }
   std::vector<int> pageGrid() const override { return map_.pageGrid(); }
   MemoryStats memory() const override;
@@ -67,7 +69,8 @@ class AsmShadowMap : public Technique {
   bool iterate(FrameContext& ctx, int iteration, int& budget);
   void findEdges(FrameContext& ctx);
 
-  gl::Program depthProgram_, testProgram_, edgesProgram_, compactProgram_;
+  DepthProgram depthProgram_;
+  gl::Program testProgram_, edgesProgram_, compactProgram_;
   PagedMap map_;
   std::unique_ptr<adaptive::PageCache> cache_;
   /// What the cached pages were rendered for: any change drops them (and so does a new scene,

@@ -210,9 +210,7 @@ TechniqueInfo CascadedShadowMap::info() {
 }
 
 CascadedShadowMap::CascadedShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthProgramDesc()),
-      rangeProgram_(lib, rangeProgramDesc()),
-      mStats_(lib) {}
+    : depthProgram_(lib), rangeProgram_(lib, rangeProgramDesc()), mStats_(lib) {}
 
 void CascadedShadowMap::resetTemporalState() {
   rangeFence_.reset();

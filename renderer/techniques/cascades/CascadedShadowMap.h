@@ -23,7 +23,9 @@ class CascadedShadowMap : public Technique {
   std::string lookupShader() const override { return "cascades/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depthProgram_, &rangeProgram_, &mStats_.program()};
+    std::vector<const gl::Program*> p = depthProgram_.programs();
+    p.insert(p.end(), {&rangeProgram_, &mStats_.program()});
+    return p;
   }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
@@ -34,7 +36,8 @@ class CascadedShadowMap : public Technique {
   std::optional<glm::dvec2> readDepthRange();
   void reduceDepthRange(const FrameContext& ctx);
 
-  gl::Program depthProgram_, rangeProgram_;
+  DepthProgram depthProgram_;
+  gl::Program rangeProgram_;
   PartitionMStats mStats_;  ///< partition.<i>.m.* (only while requested)
   DepthMapArray maps_;      ///< one layer per partition
   gl::Buffer rangeBuffer_;  ///< 2 uints: min and max view depth bits

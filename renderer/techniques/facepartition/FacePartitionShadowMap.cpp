@@ -137,7 +137,7 @@ TechniqueInfo FacePartitionShadowMap::info() {
 }
 
 FacePartitionShadowMap::FacePartitionShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthProgramDesc()), mStats_(lib) {}
+    : depthProgram_(lib), mStats_(lib) {}
 
 void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
   const int res = ctx.params.getInt("resolution");

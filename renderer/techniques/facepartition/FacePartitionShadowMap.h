@@ -24,7 +24,9 @@ class FacePartitionShadowMap : public Technique {
   std::string lookupShader() const override { return "facepartition/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depthProgram_, &mStats_.program()};
+    std::vector<const gl::Program*> p = depthProgram_.programs();
+    p.push_back(&mStats_.program());
+    return p;
   }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
@@ -33,7 +35,7 @@ class FacePartitionShadowMap : public Technique {
   const partition::FacePartitionFit& lastFit() const { return fit_; }
 
  private:
-  gl::Program depthProgram_;
+  DepthProgram depthProgram_;
   PartitionMStats mStats_;  ///< partition.<i>.m.* per slot (only while requested)
   DepthMapArray maps_;      ///< one layer per (slice, face) slot
   partition::FacePartitionFit fit_;

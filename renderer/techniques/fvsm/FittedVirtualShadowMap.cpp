@@ -261,7 +261,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
 }
 
 FittedVirtualShadowMap::FittedVirtualShadowMap(const gl::ShaderLibrary& lib)
-    : depth_(lib, depthProgramDesc()),
+    : depth_(lib),
       apply_(lib, applyTileProgramDesc()),
       smtmm_(lib, {"fvsm/smtmm", {{GL_COMPUTE_SHADER, "fvsm/smtmm.comp"}}, {}, {}}),
       cameraThumb_(

@@ -26,7 +26,9 @@ class FittedVirtualShadowMap : public Technique {
   ResolveMode resolveMode() const override { return ResolveMode::Deferred; }
   void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depth_, &apply_, &smtmm_, &cameraThumb_, &eyeDepth_.program()};
+    std::vector<const gl::Program*> p = depth_.programs();
+    p.insert(p.end(), {&apply_, &smtmm_, &cameraThumb_, &eyeDepth_.program()});
+    return p;
   }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
@@ -38,7 +40,7 @@ class FittedVirtualShadowMap : public Technique {
  private:
   TileDepthTarget& depthTarget(glm::ivec2 size);
 
-  gl::Program depth_;
+  DepthProgram depth_;
   gl::Program apply_;
   gl::Program smtmm_;
   gl::Program cameraThumb_;

@@ -242,7 +242,7 @@ void PagedMap::uploadTable(const pages::PageTable& table) {
   }
 }
 
-void PagedMap::renderPages(const gl::Program& depth, const SceneGpu& scene,
+void PagedMap::renderPages(const DepthProgram& depth, const SceneGpu& scene,
                            const glm::mat4& viewProj, std::span<const pages::PageId> pageIds,
                            std::span<const int> slots, bool clearPool) {
   // The whole pool cleared (rmsm renders every page every frame) or only the pages rendered
@@ -260,12 +260,12 @@ void PagedMap::renderPages(const gl::Program& depth, const SceneGpu& scene,
       glClearNamedFramebufferfv(poolFbo_.id(), GL_DEPTH, 0, &one);
     }
     depth.set("u_lightViewProj", pageViewProj(viewProj, pageIds[i], layout_));
-    scene.draw(depth, SL_UNIT_MATERIAL);
+    depth.draw(scene);
   }
   glDisable(GL_SCISSOR_TEST);
 }
 
-std::int64_t PagedMap::renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
+std::int64_t PagedMap::renderSuperpages(const DepthProgram& depth, const SceneGpu& scene,
                                         const glm::mat4& viewProj,
                                         std::span<const pages::Superpage> superpages,
                                         const pages::PageTable& table, int superpageSize,
@@ -293,7 +293,7 @@ std::int64_t PagedMap::renderSuperpages(const gl::Program& depth, const SceneGpu
       beginDepthPass(superpageFbo_.id(), blockPages * ps, blockPages * ps, true);
       depth.use();
       depth.set("u_lightViewProj", regionViewProj(viewProj, s.level, x0, y0, blockPages, layout_));
-      scene.draw(depth, SL_UNIT_MATERIAL);
+      depth.draw(scene);
     }
     auto pass = timer.scope(copyPass);
     for (const pages::PageId& p : s.pages) {

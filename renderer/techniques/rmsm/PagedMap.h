@@ -67,7 +67,7 @@ class PagedMap {
   /// One depth pass per page into its slot: `viewProj` cropped to the page (pageViewProj);
   /// the whole pool cleared first, or (clearPool false: the other slots are a cache) each
   /// rendered slot only.
-  void renderPages(const gl::Program& depth, const SceneGpu& scene, const glm::mat4& viewProj,
+  void renderPages(const DepthProgram& depth, const SceneGpu& scene, const glm::mat4& viewProj,
                    std::span<const pages::PageId> pageIds, std::span<const int> slots,
                    bool clearPool);
   /// Lefohn et al.'s render step: the pool cleared, then per superpage (its level's block of
@@ -76,7 +76,7 @@ class PagedMap {
   /// then each of its pages copied (glCopyImageSubData) to its slot in `table` (`copyPass`).
   /// Creates the target of min(superpageSize, virtual.resolution)² texels on first use.
   /// Returns the texels the superpages' viewports cover (each cleared and rasterised).
-  std::int64_t renderSuperpages(const gl::Program& depth, const SceneGpu& scene,
+  std::int64_t renderSuperpages(const DepthProgram& depth, const SceneGpu& scene,
                                 const glm::mat4& viewProj,
                                 std::span<const pages::Superpage> superpages,
                                 const pages::PageTable& table, int superpageSize,

@@ -128,7 +128,7 @@ TechniqueInfo RmsmShadowMap::info() {
 }
 
 RmsmShadowMap::RmsmShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthProgramDesc()),
+    : depthProgram_(lib),
       requestProgram_(lib, requestProgramDesc()),
       compactProgram_(lib, compactProgramDesc()),
       sortProgram_(lib, sortProgramDesc()),

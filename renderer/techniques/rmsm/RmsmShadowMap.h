@@ -25,7 +25,9 @@ class RmsmShadowMap : public Technique {
   std::string lookupShader() const override { return "rmsm/lookup.glsl"; }
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depthProgram_, &requestProgram_, &compactProgram_, &sortProgram_, &uniqueProgram_};
+    std::vector<const gl::Program*> p = depthProgram_.programs();
+    p.insert(p.end(), {&requestProgram_, &compactProgram_, &sortProgram_, &uniqueProgram_});
+    return p;
   }
   std::vector<int> pageGrid() const override { return map_.pageGrid(); }
   MemoryStats memory() const override;
@@ -66,7 +68,8 @@ class RmsmShadowMap : public Technique {
   void allocate(FrameContext& ctx);
   void renderPages(FrameContext& ctx);
 
-  gl::Program depthProgram_, requestProgram_, compactProgram_, sortProgram_, uniqueProgram_;
+  DepthProgram depthProgram_;
+  gl::Program requestProgram_, compactProgram_, sortProgram_, uniqueProgram_;
   pages::VirtualLayout layout_;
   std::unique_ptr<pages::PageTable> table_;
   std::unique_ptr<pages::PagePool> pool_;

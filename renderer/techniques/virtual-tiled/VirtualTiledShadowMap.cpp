@@ -77,7 +77,7 @@ gl::ProgramDesc applyTileProgramDesc() {
 }
 
 VirtualTiledShadowMap::VirtualTiledShadowMap(const gl::ShaderLibrary& lib)
-    : depth_(lib, depthProgramDesc()), apply_(lib, applyTileProgramDesc()), eyeDepth_(lib) {}
+    : depth_(lib), apply_(lib, applyTileProgramDesc()), eyeDepth_(lib) {}
 
 void VirtualTiledShadowMap::renderShadows(FrameContext& ctx) {
   {

@@ -49,13 +49,15 @@ class VirtualTiledShadowMap : public Technique {
   ResolveMode resolveMode() const override { return ResolveMode::Deferred; }
   void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override;
   std::vector<const gl::Program*> programs() const override {
-    return {&depth_, &apply_, &eyeDepth_.program()};
+    std::vector<const gl::Program*> p = depth_.programs();
+    p.insert(p.end(), {&apply_, &eyeDepth_.program()});
+    return p;
   }
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
 
  private:
-  gl::Program depth_;
+  DepthProgram depth_;
   gl::Program apply_;
   EyeDepthBuffer eyeDepth_;  ///< this frame's (the outside view's during its resolve)
   TileDepthTarget tile_;     ///< the one tile texture every tile is rendered into in turn

@@ -149,6 +149,7 @@ std::string passColumn(const std::string& pass) {
 /// Medians over the frames of one configuration.
 struct ConfigSummary {
   double totalMs = 0;
+  std::vector<double> frameMs;  ///< every frame's total, in the order the frames ran
   std::map<std::string, double> passMs;
   std::string timingMethod;
   double texels = 0, bytes = 0;
@@ -166,6 +167,7 @@ ConfigSummary summarise(const std::vector<FrameSample>& frames) {
     return median(v);
   };
   s.totalMs = med([](const FrameSample& f) { return f.totalMs; });
+  for (const FrameSample& f : frames) s.frameMs.push_back(f.totalMs);
   std::map<std::string, std::vector<double>> passes;
   for (const FrameSample& f : frames)
     for (const PassTiming& p : f.passes) passes[p.name].push_back(p.ms);
@@ -399,7 +401,8 @@ int cmdBench(Args& a) {
   const std::vector<bool> frontBytes = frontAgainst([](const ConfigSummary& s) { return s.bytes; });
 
   std::ostringstream csv;
-  csv << "scene,camera,technique,params,label,frames,width,height,timing_method,total_ms";
+  csv << "scene,camera,technique,params,label,frames,width,height,timing_method,total_ms,"
+         "total_ms_frames";
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
   csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
          "aliasing_p95,aliasing_max,flicker_pct,pareto,pareto_bytes,render_errors,gl_errors,gl\n";
@@ -408,7 +411,9 @@ int cmdBench(Args& a) {
     csv << csvField(scene->name) << "," << csvField(cameraText) << ","
         << csvField(configs[i].techniqueId) << "," << csvField(configs[i].paramsText()) << ","
         << csvField(configs[i].label) << "," << samples[i].size() << "," << cfg.width << ","
-        << cfg.height << "," << csvField(s.timingMethod) << "," << number(s.totalMs);
+        << cfg.height << "," << csvField(s.timingMethod) << "," << number(s.totalMs) << ",";
+    for (std::size_t f = 0; f < s.frameMs.size(); ++f)  // the spread behind the median
+      csv << (f ? ";" : "") << number(s.frameMs[f]);
     for (const std::string& p : passNames)
       csv << "," << (s.passMs.count(p) ? number(s.passMs.at(p)) : std::string());
     csv << "," << std::uint64_t(s.texels) << "," << std::uint64_t(s.bytes) << ","

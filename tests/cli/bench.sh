@@ -31,6 +31,10 @@ need = ["scene", "technique", "params", "frames", "timing_method", "total_ms", "
 missing = [k for k in need if k not in rows[0]]
 assert not missing, f"missing columns {missing}"
 assert any(k.endswith("_ms") and k != "total_ms" for k in rows[0]), "no per-pass columns"
+for r in rows:  # every frame's total (3 frames): total_ms is the middle one
+    per = [float(x) for x in r["total_ms_frames"].split(";")]
+    assert len(per) == int(r["frames"]) == 3, r["total_ms_frames"]
+    assert sorted(per)[1] == float(r["total_ms"]), (r["total_ms_frames"], r["total_ms"])
 by = {r["params"]: r for r in rows}
 e = {res: float(by[f"resolution={res}"]["error_pct"]) for res in (4096, 512, 64)}
 assert e[4096] < 0.5, f"error at 4096^2 is {e[4096]}%, expected near zero"

@@ -251,15 +251,16 @@ TEST(Fvsm, PublishesTheGridHistogramsAndTileRecords) {
   ASSERT_TRUE(pub.images.count("fvsm.grid") && pub.images.count("fvsm.grid.histogram"));
   const FloatImage& grid = pub.images.at("fvsm.grid");
   const FloatImage& hist = pub.images.at("fvsm.grid.histogram");
-  ASSERT_EQ(grid.width, 16);
-  ASSERT_EQ(grid.height, 16);
+  const int gridN = r->params().getInt("fvsm.grid");  // the default: 32
+  ASSERT_EQ(grid.width, gridN);
+  ASSERT_EQ(grid.height, gridN);
   ASSERT_EQ(grid.channels, fvsm::kGridChannels);
   const int buckets =
       int(pub.numbers.at("fvsm.histogram.eta1") - pub.numbers.at("fvsm.histogram.eta0")) + 1;
   ASSERT_EQ(hist.channels, 2 * buckets);
-  ASSERT_EQ(hist.values.size(), std::size_t(16 * 16 * 2 * buckets));
+  ASSERT_EQ(hist.values.size(), std::size_t(gridN * gridN * 2 * buckets));
   double entries = 0.0;
-  for (int c = 0; c < 16 * 16; ++c) {
+  for (int c = 0; c < gridN * gridN; ++c) {
     const float n = grid.values[std::size_t(c) * fvsm::kGridChannels + 2];
     entries += n;
     for (int axis = 0; axis < 2; ++axis) {
@@ -274,8 +275,8 @@ TEST(Fvsm, PublishesTheGridHistogramsAndTileRecords) {
   const auto leaves = fvsm::unpackTileRecords(pub.curves.at("fvsm.tiles.list"));
   EXPECT_EQ(double(leaves.size()), pub.numbers.at("fvsm.tiles"));
   for (const auto& l : leaves) {
-    EXPECT_LE(l.tile.levelX, 4);
-    EXPECT_LE(l.tile.levelY, 4);
+    EXPECT_LE(1 << l.tile.levelX, gridN);  // no leaf below the grid's finest level
+    EXPECT_LE(1 << l.tile.levelY, gridN);
     EXPECT_EQ(l.texture, fvsm::tileTexture(fvsm::TextureMode::PowerOfTwo, l.tile.textureLog2, 7,
                                            r->params().getInt("fvsm.overlap")));
   }

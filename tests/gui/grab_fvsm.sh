@@ -30,7 +30,7 @@ assert p["need_u"] >= 0 and p["need_v"] >= 0, p
 # Every leaf the renderer counted is drawn over the grid, each with a screen rectangle.
 assert p["leaves_drawn"] == p["tiles"], p
 assert 1 <= p["rects_drawn"] <= p["leaves_drawn"], p
-assert p["grid_n"] == 16 and p["texture_kinds"] >= 1, p
+assert p["grid_n"] == 32 and p["texture_kinds"] >= 1, p
 # The two views: the rectangles over the camera image (the frame's aspect, its longer
 # side 256 texels, some with a surface), the leaves over the light's view (256², some
 # geometry nearer than the far plane).

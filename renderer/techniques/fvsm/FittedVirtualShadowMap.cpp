@@ -77,12 +77,14 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .label = "Tile grid n",
        .group = "FVSM",
        .type = ParamType::Int,
-       .defaultValue = 16,
+       .defaultValue = 32,
        .minValue = 1,
        .maxValue = 64,
        .step = 1,
        .help = "n x n tile grid the SMTMM is accumulated into (a power of two; the paper: 16 or "
-               "32): the finest kd-tree level."},
+               "32): the finest kd-tree level. A cell at the finest level holds at most the max "
+               "texture: 32 x 4096 (default) lets the neediest cells go finer than the 16 x 16 x "
+               "4096² brute force, and fits coarser cells more tightly (README)."},
       {.key = "fvsm.max_texture",
        .label = "Max tile texture",
        .group = "FVSM",

@@ -11,13 +11,6 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-rc=0
-timeout 400 "$app" --scene default --technique virtual-tiled --self-test "adaptive-resolution=$out" \
-  >"$out/adaptive.stdout" 2>"$out/adaptive.stderr" || rc=$?
-cat "$out/adaptive.stdout"
-if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/adaptive.stdout"; then
-  echo "FAIL: self-test adaptive-resolution exited with $rc; stderr:"
-  cat "$out/adaptive.stderr"
-  exit 1
-fi
+run_self_test "self-test adaptive-resolution" 400 "$out/adaptive" \
+  "$app" --scene default --technique virtual-tiled --self-test "adaptive-resolution=$out"
 echo "PASS"

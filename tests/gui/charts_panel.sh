@@ -13,15 +13,8 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-rc=0
-timeout 90 "$app" --scene plane-box --technique rtw-backward --self-test "charts=$out" \
-  >"$out/stdout" 2>"$out/stderr" || rc=$?
-cat "$out/stdout"
-if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/stdout"; then
-  echo "FAIL: self-test charts exited with $rc; stderr:"
-  cat "$out/stderr"
-  exit 1
-fi
+run_self_test "self-test charts" 90 "$out/charts" \
+  "$app" --scene plane-box --technique rtw-backward --self-test "charts=$out"
 [[ -s "$out/panel-charts.png" ]] || { echo "FAIL: no panel-charts.png"; exit 1; }
 [[ -s "$out/panel-charts-bytes.png" ]] || { echo "FAIL: no panel-charts-bytes.png"; exit 1; }
 echo "PASS"

@@ -36,16 +36,9 @@ print("ok: omni panel: cube cross of 6 faces, paraboloid 2 discs")
 PY
 
 for t in cube dual-paraboloid; do
-  rc=0
-  timeout 240 "$app" --scene omni-room --technique $t --set resolution=256 --set bias.normal=0 \
-    --self-test "omni-probe=$out/probe-$t" >"$out/probe-$t.stdout" 2>"$out/probe-$t.stderr" || rc=$?
   echo "[marker: $t]"
-  cat "$out/probe-$t.stdout"
-  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/probe-$t.stdout"; then
-    echo "FAIL: self-test omni-probe ($t) exited with $rc; stderr:"
-    cat "$out/probe-$t.stderr"
-    exit 1
-  fi
+  run_self_test "self-test omni-probe ($t)" 240 "$out/probe-$t" "$app" --scene omni-room \
+    --technique $t --set resolution=256 --set bias.normal=0 --self-test "omni-probe=$out/probe-$t"
   [[ $(grep -c "^ok   pixel" "$out/probe-$t.stdout") -ge 3 ]] || { echo "FAIL: under 3 pixels checked"; exit 1; }
   python3 "$here/pngstats.py" --min-colors 16 --min-stddev 8 "$out/probe-$t/omni-probe.png"
 done

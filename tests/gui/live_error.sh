@@ -15,14 +15,7 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-rc=0
-timeout 300 "$app" --scene default --technique uniform --self-test "live-error=$out" \
-  >"$out/live.stdout" 2>"$out/live.stderr" || rc=$?
-cat "$out/live.stdout"
-if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/live.stdout"; then
-  echo "FAIL: self-test live-error exited with $rc; stderr:"
-  cat "$out/live.stderr"
-  exit 1
-fi
+run_self_test "self-test live-error" 300 "$out/live" \
+  "$app" --scene default --technique uniform --self-test "live-error=$out"
 grep -q '^measure live_error_first_ms=' "$out/live.stdout" || { echo "FAIL: no measurement"; exit 1; }
 echo "PASS"

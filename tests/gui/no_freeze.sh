@@ -14,13 +14,6 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-rc=0
-timeout 500 "$app" --scene default --technique virtual-tiled --self-test "no-freeze=$out" \
-  >"$out/no_freeze.stdout" 2>"$out/no_freeze.stderr" || rc=$?
-cat "$out/no_freeze.stdout"
-if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/no_freeze.stdout"; then
-  echo "FAIL: self-test no-freeze exited with $rc; stderr:"
-  cat "$out/no_freeze.stderr"
-  exit 1
-fi
+run_self_test "self-test no-freeze" 500 "$out/no_freeze" \
+  "$app" --scene default --technique virtual-tiled --self-test "no-freeze=$out"
 echo "PASS"

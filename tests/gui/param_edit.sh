@@ -14,16 +14,9 @@ rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
 for technique in uniform rtw-backward; do
-  rc=0
-  timeout 120 "$app" --scene plane-box --technique "$technique" --self-test params \
-    >"$out/$technique.stdout" 2>"$out/$technique.stderr" || rc=$?
   echo "[$technique]"
-  cat "$out/$technique.stdout"
-  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/$technique.stdout"; then
-    echo "FAIL: self-test params with $technique exited with $rc; stderr:"
-    cat "$out/$technique.stderr"
-    exit 1
-  fi
+  run_self_test "self-test params with $technique" 120 "$out/$technique" \
+    "$app" --scene plane-box --technique "$technique" --self-test params
   grep -q "^ok   typing 5 (out of range)" "$out/$technique.stdout" ||
     { echo "FAIL: the out-of-range check did not run"; exit 1; }
 done

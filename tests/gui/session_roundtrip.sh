@@ -17,16 +17,10 @@ start_xvfb
 session=$out/my-session.json
 
 run() {  # name, arguments...
-  local name=$1 rc=0
+  local name=$1
   shift
-  timeout 300 "$app" "$@" >"$out/$name.stdout" 2>"$out/$name.stderr" || rc=$?
   echo "[$name]"
-  cat "$out/$name.stdout"
-  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/$name.stdout"; then
-    echo "FAIL: $name exited with $rc; stderr:"
-    cat "$out/$name.stderr"
-    exit 1
-  fi
+  run_self_test "$name" 300 "$out/$name" "$app" "$@"
 }
 
 run save --scene default --technique uniform --self-test "session-save=$session"

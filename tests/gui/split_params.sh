@@ -12,13 +12,6 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-rc=0
-timeout 240 "$app" --scene default --technique uniform --set resolution=1024 \
-  --self-test "split-params=$out" >"$out/stdout" 2>"$out/stderr" || rc=$?
-cat "$out/stdout"
-if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/stdout"; then
-  echo "FAIL: self-test split-params exited with $rc; stderr:"
-  cat "$out/stderr"
-  exit 1
-fi
+run_self_test "self-test split-params" 240 "$out/split_params" \
+  "$app" --scene default --technique uniform --set resolution=1024 --self-test "split-params=$out"
 echo "PASS"

@@ -14,16 +14,9 @@ start_xvfb
 
 for pair in "uniform da-rtw"; do
   read -r left right <<<"$pair"
-  rc=0
-  timeout 240 "$app" --scene default --technique "$left" --self-test "split-resize=$right" \
-    >"$out/$left-$right.stdout" 2>"$out/$left-$right.stderr" || rc=$?
   echo "[$left | $right]"
-  cat "$out/$left-$right.stdout"
-  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/$left-$right.stdout"; then
-    echo "FAIL: self-test split-resize ($left | $right) exited with $rc; stderr:"
-    cat "$out/$left-$right.stderr"
-    exit 1
-  fi
+  run_self_test "self-test split-resize ($left | $right)" 240 "$out/$left-$right" \
+    "$app" --scene default --technique "$left" --self-test "split-resize=$right"
   [[ $(grep -c "^ok   .x., right half" "$out/$left-$right.stdout") -eq 4 ]] ||
     { echo "FAIL: not every size was checked"; exit 1; }
 done

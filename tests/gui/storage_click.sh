@@ -12,15 +12,8 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-rc=0
-timeout 300 "$app" --scene diagonal --technique lispsm --self-test "storage-click=$out" \
-  >"$out/storage_click.stdout" 2>"$out/storage_click.stderr" || rc=$?
-cat "$out/storage_click.stdout"
-if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/storage_click.stdout"; then
-  echo "FAIL: self-test storage-click exited with $rc; stderr:"
-  cat "$out/storage_click.stderr"
-  exit 1
-fi
+run_self_test "self-test storage-click" 300 "$out/storage_click" \
+  "$app" --scene diagonal --technique lispsm --self-test "storage-click=$out"
 for n in 1 2; do
   python3 "$here/pngstats.py" --min-colors 32 --min-stddev 8 "$out/storage-click-$n.png"
 done

@@ -16,14 +16,7 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-rc=0
-timeout 120 "$app" --scene diagonal --technique da-rtw --self-test "teaching=$out" \
-  >"$out/stdout.txt" 2>"$out/stderr.txt" || rc=$?
-cat "$out/stdout.txt"
-if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/stdout.txt"; then
-  echo "FAIL: self-test teaching exited with $rc; stderr:"
-  cat "$out/stderr.txt"
-  exit 1
-fi
+run_self_test "self-test teaching" 120 "$out/teaching" \
+  "$app" --scene diagonal --technique da-rtw --self-test "teaching=$out"
 python3 "$here/pngstats.py" --min-colors 64 --min-stddev 8 "$out"/pass-*.png "$out/split.png"
 echo "PASS"

@@ -46,3 +46,19 @@ start_xvfb() {
   fi
   echo "Xvfb on $DISPLAY (pid $XVFB_PID)"
 }
+
+# Runs a shadowlab self-test: run_self_test <what> <timeout s> <log prefix> <command...>.
+# Its stdout is printed and kept in <log prefix>.stdout, its stderr in <log prefix>.stderr;
+# the calling test fails (exit 1, the stderr shown) unless it exited 0 and printed a line PASS.
+run_self_test() {
+  local what=$1 limit=$2 log=$3
+  shift 3
+  local rc=0
+  timeout "$limit" "$@" >"$log.stdout" 2>"$log.stderr" || rc=$?
+  cat "$log.stdout"
+  if [[ $rc -ne 0 ]] || ! grep -qx PASS "$log.stdout"; then
+    echo "FAIL: $what exited with $rc; stderr:"
+    cat "$log.stderr"
+    exit 1
+  fi
+}

@@ -2,6 +2,7 @@
 // frame's camera, light and scheme, drawn with ui/StorageChartKit.h (as shadowlab-cli's PNGs).
 #include "panels/analysis/StoragePanel.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -318,17 +319,15 @@ void StoragePanel::updateNumbers() {
                 .arg(formatValue(r.s), formatValue(r.mx), formatValue(r.mz))
                 .arg(r.parts.size())
                 .arg(r.parts.size() == 1 ? QString() : QStringLiteral("s"));
-    bool fallback = false;
-    for (const auto& p : r.parts) fallback = fallback || p.fit.fallback;
-    drawn[QStringLiteral("fallback")] = fallback;
+    // The first part that falls back to uniform, named with the algorithm's reason.
+    const auto falling =
+        std::find_if(r.parts.begin(), r.parts.end(), [](const auto& p) { return p.fit.fallback; });
+    drawn[QStringLiteral("fallback")] = falling != r.parts.end();
     if (in.eta) drawn[QStringLiteral("eta")] = *in.eta;
-    for (const auto& p : r.parts)
-      if (p.fit.fallback) {
-        text += tr("; <span style='color:#b35900'>%1 falls back to uniform: %2</span>")
-                    .arg(QString::fromStdString(p.label).toHtmlEscaped(),
-                         QString::fromStdString(p.fit.fallbackReason).toHtmlEscaped());
-        break;
-      }
+    if (falling != r.parts.end())
+      text += tr("; <span style='color:#b35900'>%1 falls back to uniform: %2</span>")
+                  .arg(QString::fromStdString(falling->label).toHtmlEscaped(),
+                       QString::fromStdString(falling->fit.fallbackReason).toHtmlEscaped());
     drawn[QStringLiteral("scheme")] = QString::fromStdString(in.schemeLabel);
     drawn[QStringLiteral("s")] = r.s;
     drawn[QStringLiteral("mx")] = r.mx;

@@ -48,6 +48,11 @@ bool Publication::wants(std::string_view key) const {
   });
 }
 
+double Publication::number(const std::string& key, double fallback) const {
+  const auto it = numbers.find(key);
+  return it == numbers.end() ? fallback : it->second;
+}
+
 const PublicationDecl* TechniqueInfo::findPublication(std::string_view key) const {
   for (const PublicationDecl& d : publications)
     if (publicationKeyMatches(d.key, key)) return &d;

@@ -179,6 +179,8 @@ struct Publication {
   /// (core/Publish.h) as they read.
   std::uint64_t readbackBytes = 0;
   bool wants(std::string_view key) const;
+  /// The published number `key`, or `fallback` when this frame did not publish it.
+  double number(const std::string& key, double fallback) const;
 };
 
 /// Per-pixel data of the last frame, read back from the GPU (slow: metrics and tests).

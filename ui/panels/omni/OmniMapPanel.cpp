@@ -127,12 +127,8 @@ void OmniMapPanel::showPublication(const sl::Publication& pub) {
       }
   }
   kind_ = cube ? QStringLiteral("cube") : QStringLiteral("paraboloid");
-  auto number = [&](const char* key) {
-    auto it = pub.numbers.find(key);
-    return it == pub.numbers.end() ? 0.0 : it->second;
-  };
-  nearM_ = cube ? number("cube.near_m") : 0.0;
-  farM_ = number(cube ? "cube.far_m" : "dp.far_m");
+  nearM_ = cube ? pub.number("cube.near_m", 0.0) : 0.0;
+  farM_ = pub.number(cube ? "cube.far_m" : "dp.far_m", 0.0);
   const double analytic = cube ? 3.0 * std::sqrt(3.0) : 4.0;
   info_->setText(cube ? tr("Cube: %1 of 6 faces of %2 × %2 texels (cross: +y above, −y below +x +z "
                            "−x −z). Texels "

@@ -118,10 +118,7 @@ std::set<std::string> PagesPanel::observedKeys() const {
 }
 
 void PagesPanel::showPublication(const sl::Publication& pub) {
-  auto number = [&](const char* key) {
-    auto it = pub.numbers.find(key);
-    return it == pub.numbers.end() ? -1.0 : it->second;
-  };
+  auto number = [&](const char* key) { return pub.number(key, -1.0); };
   images_.clear();
   levels_ = 0;
   for (const auto& [key, image] : pub.images)

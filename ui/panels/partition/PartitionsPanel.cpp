@@ -25,8 +25,7 @@ QColor partitionQColor(int i) {
 }
 
 double number(const sl::Publication& pub, const std::string& key, double fallback = -1.0) {
-  auto it = pub.numbers.find(key);
-  return it == pub.numbers.end() ? fallback : it->second;
+  return pub.number(key, fallback);
 }
 }  // namespace
 

@@ -5,7 +5,7 @@ pkgs=(cmake ninja-build g++ pkg-config git
       qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-qpa-plugins libglm-dev
       libtinygltf-dev nlohmann-json3-dev libstb-dev libopenimageio-dev
       libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev
-      libembree-dev libgtest-dev xvfb xauth python3
+      libembree-dev libgtest-dev xvfb xauth python3 ccache
       clang libclang-rt-14-dev)  # scripts/fuzz.sh: clang and libFuzzer (libclang_rt.fuzzer)
 missing=()
 for p in "${pkgs[@]}"; do

@@ -9,7 +9,7 @@ scripts/build.sh
 # A user's plain Release build (no preset: -O3, no -Werror), everything it builds (the tests
 # too, not run), must compile (issue 14); its own folder, incremental after the first run.
 cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build-release -j2
+CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1 cmake --build build-release -j2
 ctest --preset default -j2 "$@"
 # A short fuzzing run of the file readers (issue 14): 60 s per target, after the tests
 # (SHADOWLAB_FUZZ_SECONDS=0: build the fuzz targets only).

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "algo/GlslUniforms.h"
+#include "scene/DataDir.h"
 
 #ifndef SHADOWLAB_SHADER_DIR
 #define SHADOWLAB_SHADER_DIR "shaders"
@@ -107,8 +108,7 @@ void expand(const std::filesystem::path& root, const std::string& file, const Pr
 ShaderLibrary::ShaderLibrary(std::filesystem::path root) : root_(std::move(root)) {}
 
 std::filesystem::path ShaderLibrary::defaultRoot() {
-  if (const char* env = std::getenv("SHADOWLAB_SHADER_DIR"); env && *env) return env;
-  return SHADOWLAB_SHADER_DIR;
+  return dataDir("shaders", "SHADOWLAB_SHADER_DIR", SHADOWLAB_SHADER_DIR);
 }
 
 std::string ShaderLibrary::preprocess(const std::string& file, const ProgramDesc& desc,

@@ -36,7 +36,8 @@ class ShaderLibrary {
  public:
   explicit ShaderLibrary(std::filesystem::path root);
   const std::filesystem::path& root() const { return root_; }
-  /// Default root: SHADOWLAB_SHADER_DIR env var, else the compiled-in source path.
+  /// Default root (scene/DataDir.h): SHADOWLAB_SHADER_DIR env var, else
+  /// share/shadowlab/shaders beside the program, else the compiled-in source path.
   static std::filesystem::path defaultRoot();
   /// Preprocessed source of one stage (for tests and error messages).
   std::string preprocess(const std::string& file, const ProgramDesc& desc,

@@ -4,6 +4,7 @@
 #include "GltfLoader.h"
 
 #include "algo/InputFile.h"
+#include "scene/DataDir.h"
 
 #include <algorithm>
 #include <array>
@@ -1734,11 +1735,10 @@ SceneLoadResult loadGltf(const std::filesystem::path& path) {
 }
 
 std::filesystem::path builtinSceneDir() {
-  if (const char* env = std::getenv("SHADOWLAB_SCENE_DIR"); env && *env) return env;
 #ifdef SHADOWLAB_SCENE_DIR
-  return SHADOWLAB_SCENE_DIR;
+  return dataDir("scenes", "SHADOWLAB_SCENE_DIR", SHADOWLAB_SCENE_DIR);
 #else
-  return "scenes";
+  return dataDir("scenes", "SHADOWLAB_SCENE_DIR", "scenes");
 #endif
 }
 

@@ -21,8 +21,8 @@ struct SceneLoadResult {
 /// unsupported required extension "X", ...).
 SceneLoadResult loadGltf(const std::filesystem::path& path);
 
-/// Directory of the built-in scenes (SHADOWLAB_SCENE_DIR env var, else the compiled-in
-/// source path).
+/// Directory of the built-in scenes (scene/DataDir.h: SHADOWLAB_SCENE_DIR env var, else
+/// share/shadowlab/scenes beside the program, else the compiled-in source path).
 std::filesystem::path builtinSceneDir();
 /// Names of the built-in scenes (file stems of scenes/*.gltf|glb), sorted.
 std::vector<std::string> builtinSceneNames();

@@ -1092,7 +1092,7 @@ Renderer::ReferenceSnapshot Renderer::snapshotForReference() const {
   snap.frame = readback();
   snap.light = s_->light;
   snap.frameSignature = s_->frameSignature;
-  if (!s_->scene || snap.frame.width == 0) return snap;
+  if (!s_->scene || snap.frame.width == 0 || !ShadowReference::available()) return snap;
   if (!s_->reference || s_->referenceScene != s_->scene.get()) {
     s_->reference = std::make_shared<ShadowReference>(*s_->scene);
     s_->referenceScene = s_->scene.get();

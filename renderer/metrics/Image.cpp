@@ -1,4 +1,5 @@
-// Image files through OpenImageIO, row flips and the viridis colour map.
+// Image files through OpenImageIO (or, built with SHADOWLAB_OIIO=OFF, PNG through stb), row
+// flips and the viridis colour map.
 #include "metrics/Image.h"
 
 #include <algorithm>
@@ -6,7 +7,16 @@
 #include <stdexcept>
 #include <system_error>
 
+#if SHADOWLAB_HAVE_OIIO
 #include <OpenImageIO/imageio.h>
+#else
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+#endif
 
 namespace sl {
 
@@ -47,6 +57,7 @@ std::optional<std::string> writeImage(const std::filesystem::path& path, const I
       return "cannot create directory " + path.parent_path().string() + " for " + name + ": " +
              ec.message();
   }
+#if SHADOWLAB_HAVE_OIIO
   auto out = OIIO::ImageOutput::create(name);
   if (!out) return "cannot write " + name + ": " + OIIO::geterror();
   OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
@@ -60,6 +71,16 @@ std::optional<std::string> writeImage(const std::filesystem::path& path, const I
   }
   if (!out->close()) return "cannot write " + name + ": " + out->geterror();
   return std::nullopt;
+#else
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".png")
+    return "cannot write " + name + ": this build writes PNG only (built with SHADOWLAB_OIIO=OFF)";
+  if (!stbi_write_png(name.c_str(), image.width, image.height, 4, image.pixels.data(),
+                      image.width * 4))
+    return "cannot write " + name + ": " + std::strerror(errno);
+  return std::nullopt;
+#endif
 }
 
 std::optional<ImageRGBA8> readImage(const std::filesystem::path& path, std::string* error) {
@@ -70,6 +91,7 @@ std::optional<ImageRGBA8> readImage(const std::filesystem::path& path, std::stri
   };
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return fail("no such file");
+#if SHADOWLAB_HAVE_OIIO
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);  // alpha as stored, not premultiplied
   auto in = OIIO::ImageInput::open(name, &config);
@@ -84,10 +106,25 @@ std::optional<ImageRGBA8> readImage(const std::filesystem::path& path, std::stri
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
     return fail(in->geterror());
   in->close();
+  const int width = spec.width, height = spec.height;
+#else
+  // stb: PNG, JPEG, BMP, TGA, PSD, GIF, HDR, PIC, PNM; 8 bits per channel.
+  int width = 0, height = 0, fileChannels = 0;
+  std::uint8_t* data = stbi_load(name.c_str(), &width, &height, &fileChannels, 0);
+  if (!data) return fail(stbi_failure_reason() ? stbi_failure_reason() : "unreadable image");
+  if (width <= 0 || height <= 0 || fileChannels <= 0) {
+    stbi_image_free(data);
+    return fail("empty image");
+  }
+  const int channels = std::min(fileChannels, 4);
+  const std::size_t count = std::size_t(width) * std::size_t(height);
+  std::vector<std::uint8_t> raw(data, data + count * std::size_t(channels));
+  stbi_image_free(data);
+#endif
 
   ImageRGBA8 image;
-  image.width = spec.width;
-  image.height = spec.height;
+  image.width = width;
+  image.height = height;
   image.pixels.resize(count * 4);
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint8_t* s = raw.data() + i * std::size_t(channels);

@@ -314,6 +314,13 @@ ShadowReference::ShadowReference(const Scene& scene, float normalOffsetFraction)
   m.check("building the BVH of " + std::to_string(m.triangles) + " triangles");
 }
 
+bool ShadowReference::available() {
+  return true;
+}
+const char* ShadowReference::unavailableReason() {
+  return "";
+}
+
 ShadowReference::~ShadowReference() = default;
 ShadowReference::ShadowReference(ShadowReference&&) noexcept = default;
 ShadowReference& ShadowReference::operator=(ShadowReference&&) noexcept = default;

@@ -47,6 +47,11 @@ class ShadowReference {
   /// std::runtime_error when Embree fails (device, scene, geometry or BVH build) or a
   /// primitive's index points past its vertices. An empty scene is allowed.
   explicit ShadowReference(const Scene& scene, float normalOffsetFraction = 1e-5f);
+  /// False in a build without Embree (SHADOWLAB_REFERENCE=OFF, the headless folder that
+  /// travels): constructing one then throws std::runtime_error with unavailableReason().
+  static bool available();
+  /// Why there is no reference in this build ("" where available()).
+  static const char* unavailableReason();
   ~ShadowReference();
   ShadowReference(const ShadowReference&) = delete;
   ShadowReference& operator=(const ShadowReference&) = delete;

@@ -43,6 +43,9 @@ struct BenchConfig {
   std::string csv, chart;
   std::string chartY = "auto";
   ChartX chartX = ChartX::TimeMs;  ///< the chart's x (the CSV has both)
+  /// The Embree reference (error columns). Off with --no-reference, and in a build without
+  /// it (SHADOWLAB_REFERENCE=OFF): timings only, the error cells empty.
+  bool reference = true;
 };
 
 /// `--x ms|bytes`: what the chart's x axis and its Pareto front are against.
@@ -83,6 +86,8 @@ BenchConfig parseBench(Args& a) {
         throw UsageError("--chart-y: expected auto, linear or log, got '" + c.chartY + "'");
     } else if (o == "--x")
       c.chartX = parseChartXOption(a.take(i, o));
+    else if (o == "--no-reference")
+      c.reference = false;
     else
       throw UsageError("unknown option '" + o + "' (bench options: see shadowlab-cli --help)");
   }
@@ -339,7 +344,13 @@ int cmdBench(Args& a) {
     MeasureOptions opts;
     opts.width = cfg.width;
     opts.height = cfg.height;
-    ReferenceCache reference(*scene);
+    if (cfg.reference && !ShadowReference::available()) {
+      std::fprintf(stderr, "note: %s (error columns empty)\n",
+                   ShadowReference::unavailableReason());
+      cfg.reference = false;
+    }
+    std::optional<ReferenceCache> reference;
+    if (cfg.reference) reference.emplace(*scene);
 
     // Warm-up at the first camera: shader variants compile on first use (llvmpipe JIT), maps
     // are allocated, DA-RTW's rotation settles. Not measured.
@@ -356,7 +367,8 @@ int cmdBench(Args& a) {
       // after the reference (cold caches).
       for (std::size_t k = 0; k < runners.size(); ++k) {
         std::size_t i = (k + std::size_t(f)) % runners.size();
-        FrameSample s = runners[i]->renderAndMeasure(cameras[std::size_t(f)], opts, &reference);
+        FrameSample s = runners[i]->renderAndMeasure(cameras[std::size_t(f)], opts,
+                                                     reference ? &*reference : nullptr);
         for (const std::string& e : s.glErrors)
           std::fprintf(stderr, "\nshadowlab-cli: GL error in %s, frame %d: %s\n",
                        configs[i].label.c_str(), f, e.c_str());
@@ -371,7 +383,7 @@ int cmdBench(Args& a) {
       }
     }
     progress.finish();
-    referenceEvaluations = reference.evaluations();
+    referenceEvaluations = reference ? reference->evaluations() : 0;
   }
 
   // CSV: one row per configuration.

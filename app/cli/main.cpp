@@ -30,7 +30,9 @@
 #include "core/Preset.h"
 #include "core/Renderer.h"
 #include "gl/EglContext.h"
+#include "gl/ShaderLibrary.h"
 #include "metrics/Image.h"
+#include "metrics/ShadowReference.h"
 #include "scene/GltfLoader.h"
 
 namespace fs = std::filesystem;
@@ -41,16 +43,18 @@ namespace {
 using namespace sl::cli;
 
 const char* kUsage =
-    "usage: shadowlab-cli list\n"
+    "usage: shadowlab-cli list [--format text|markdown]   (markdown: the parameter reference)\n"
+    "       shadowlab-cli version   (the version, where data is read from, what this build has)\n"
     "       shadowlab-cli render --scene NAME|FILE --technique ID [--set KEY=VALUE]...\n"
     "                            [--size WxH] [--frames N] [--camera NAME|INDEX]\n"
     "                            [--path NAME|INDEX [--path-at FRACTION (0)]]\n"
     "                            [--light LIGHT] [--preset FILE.json]\n"
     "                            --out FILE.png [--metrics FILE.json] [--error-image FILE.png]\n"
-    "                            [--wrong-pixels FILE.csv] [--publish CURVE]...\n"
+    "                            [--wrong-pixels FILE.csv] [--publish CURVE]... [--no-reference]\n"
     "         (--wrong-pixels: one line per pixel whose hard test disagrees with the reference:\n"
     "          where it is, its surface, m, the map and uv its lookup used;\n"
-    "          --publish: a curve the technique publishes, into --metrics' published_curves)\n"
+    "          --publish: a curve the technique publishes, into --metrics' published_curves;\n"
+    "          --no-reference: no ray-traced reference, timings only: the error is n/a)\n"
     "       shadowlab-cli compare [--scene NAME|FILE] [--technique ID[:KEY=V1,V2...]]...\n"
     "                            [--set KEY=VALUE]... [--size WxH] [--camera NAME|INDEX]\n"
     "                            [--light LIGHT] --out-dir DIR [--montage FILE.png]\n"
@@ -72,6 +76,9 @@ struct RenderConfig {
   std::optional<sl::Light> light;
   std::string out, metrics, errorImage, wrongPixels;
   std::vector<std::string> publish;  ///< curves to add to --metrics (published_curves)
+  /// The Embree reference (the error). Off with --no-reference, and in a build without it
+  /// (SHADOWLAB_REFERENCE=OFF): timings only, the error n/a.
+  bool reference = true;
 };
 
 /// Techniques whose shadow map depends on earlier frames through a rotation (DA-RTW's R_k
@@ -162,7 +169,12 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   }
   if (progress) progress->finish();
   for (const std::string& e : r.takeGlErrors()) throw std::runtime_error("GL error: " + e);
-  err = r.computeError();
+  if (cfg.reference) {
+    err = r.computeError();
+  } else {
+    err = {};
+    err.frame = r.readback();
+  }
   const sl::FrameStats& st = r.stats();
   json j;
   j["scene"] = r.scene()->name;
@@ -201,8 +213,13 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
                    {"bytes", m.bytes}});
   j["resources"] = res;
   j["covered_pixels"] = err.stats.covered;
-  // No covered pixel: nothing was measured (null, not 0).
-  const bool measured = err.stats.covered > 0;
+  j["reference"] = cfg.reference;
+  if (!cfg.reference)
+    j["error_unmeasured"] = sl::ShadowReference::available()
+                                ? "--no-reference: no ray-traced reference, timings only"
+                                : sl::ShadowReference::unavailableReason();
+  // No covered pixel or no reference: nothing was measured (null, not 0).
+  const bool measured = cfg.reference && err.stats.covered > 0;
   j["error_pct"] = measured ? json(err.stats.errorPct) : json(nullptr);
   j["false_lit_pct"] = measured ? json(err.stats.falseLitPct) : json(nullptr);
   j["false_shadow_pct"] = measured ? json(err.stats.falseShadowPct) : json(nullptr);
@@ -276,7 +293,72 @@ void configure(sl::Renderer& r, const RenderConfig& cfg, const std::shared_ptr<s
     if (auto e = sl::checkLightSupport(*info, r.light().type)) throw UsageError(*e);
 }
 
-int cmdList() {
+/// `|` and line breaks would end a Markdown table cell.
+std::string markdownCell(std::string text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|')
+      out += "\\|";
+    else if (c == '\n')
+      out += ' ';
+    else
+      out += c;
+  }
+  return out;
+}
+
+/// `list --format markdown`: the parameter reference (docs/user-guide/parameters.md is this
+/// output; tests/cli/parameter_reference.sh fails when the committed page is stale).
+int cmdListMarkdown() {
+  std::cout << "# Parameter reference\n\n"
+               "Generated from the parameter declarations by `shadowlab-cli list --format "
+               "markdown`; do not edit by hand. Every parameter can be set with `--set "
+               "KEY=VALUE` (CLI), in a preset's or lesson's `params`, and in the GUI's "
+               "Parameters panel; values outside the range are refused with the range.\n\n"
+               "Built-in scenes: ";
+  const std::vector<std::string> scenes = sl::builtinSceneNames();
+  for (std::size_t i = 0; i < scenes.size(); ++i)
+    std::cout << (i ? ", " : "") << "`" << scenes[i] << "`";
+  std::cout << ".\n\n## Techniques\n\n";
+  for (const auto& t : sl::Renderer::techniques())
+    std::cout << "- [`" << t.id << "`](#" << t.id << ") — " << markdownCell(t.name) << "\n";
+  auto table = [](const std::vector<sl::ParamDecl>& decls) {
+    if (decls.empty()) {
+      std::cout << "No parameters of its own.\n\n";
+      return;
+    }
+    std::cout << "| parameter | default | range | what it does |\n|---|---|---|---|\n";
+    for (const auto& d : decls) {
+      sl::ParamSet tmp({d});
+      std::cout << "| `" << d.key << "` | `" << markdownCell(tmp.format(d.key)) << "` | "
+                << markdownCell(sl::describeRange(d)) << " | " << markdownCell(d.help) << " |\n";
+    }
+    std::cout << "\n";
+  };
+  for (const auto& t : sl::Renderer::techniques()) {
+    std::cout << "\n## " << t.id << "\n\n**" << markdownCell(t.name) << "**. "
+              << markdownCell(t.description) << "\n\n";
+    table(t.params);
+  }
+  std::cout << "\n## Shared parameters\n\nEvery technique has these (shading, overlays, the "
+               "outside view).\n\n";
+  table(sl::rendererParamDecls());
+  return 0;
+}
+
+int cmdList(Args& a) {
+  std::string format = "text";
+  for (size_t i = 1; i < a.rest.size(); ++i) {
+    const std::string& o = a.rest[i];
+    if (o == "--format") {
+      format = a.take(i, o);
+      if (format != "text" && format != "markdown")
+        throw UsageError("--format: expected text or markdown, got '" + format + "'");
+    } else {
+      throw UsageError("unknown option '" + o + "' (list options: --format text|markdown)");
+    }
+  }
+  if (format == "markdown") return cmdListMarkdown();
   std::cout << "Scenes (" << sl::builtinSceneDir().string() << "):\n";
   for (const std::string& n : sl::builtinSceneNames()) std::cout << "  " << n << "\n";
   std::cout << "\nTechniques:\n";
@@ -293,6 +375,22 @@ int cmdList() {
   }
   std::cout << "\nShared parameters (every technique):\n";
   printParams(sl::rendererParamDecls());
+  return 0;
+}
+
+/// The version, the data folders this program reads (scene/DataDir.h: an installed tree finds
+/// its own, wherever it was moved) and what this build can do.
+int cmdVersion() {
+  std::cout << "shadowlab-cli " << SHADOWLAB_VERSION << "\n"
+            << "shaders: " << sl::gl::ShaderLibrary::defaultRoot().string() << "\n"
+            << "scenes: " << sl::builtinSceneDir().string() << "\n"
+            << "reference: "
+            << (sl::ShadowReference::available() ? std::string("Embree ray tracer")
+                                                 : sl::ShadowReference::unavailableReason())
+            << "\n"
+            << "images: " << (SHADOWLAB_CLI_IMAGES_OIIO ? "OpenImageIO" : "PNG (stb)") << "\n"
+            << "charts: " << (SHADOWLAB_CLI_CHARTS ? "Qt Charts" : "none (built without Qt)")
+            << "\n";
   return 0;
 }
 
@@ -329,6 +427,8 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
       cfg.wrongPixels = a.take(i, o);
     else if (o == "--publish")
       cfg.publish.push_back(a.take(i, o));
+    else if (o == "--no-reference")
+      cfg.reference = false;
     else if (o == "--light")
       cfg.light = parseLight(o, a.take(i, o));
     else if (o == "--preset") {
@@ -352,6 +452,17 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
     throw UsageError("--path: give either a camera path (--path) or a camera (--camera, --preset)");
   if (cfg.path.empty() && pathAtGiven)
     throw UsageError("--path-at: needs --path (the camera path it is a fraction of)");
+  if (!cfg.reference && !cfg.errorImage.empty())
+    throw UsageError("--error-image: needs the ray-traced reference (not with --no-reference)");
+  if (!cfg.reference && !cfg.wrongPixels.empty())
+    throw UsageError("--wrong-pixels: needs the ray-traced reference (not with --no-reference)");
+  if (cfg.reference && !sl::ShadowReference::available()) {
+    if (!cfg.errorImage.empty() || !cfg.wrongPixels.empty())
+      throw UsageError(std::string(!cfg.errorImage.empty() ? "--error-image" : "--wrong-pixels") +
+                       ": " + sl::ShadowReference::unavailableReason());
+    std::fprintf(stderr, "note: %s (error n/a)\n", sl::ShadowReference::unavailableReason());
+    cfg.reference = false;
+  }
   return cfg;
 }
 
@@ -380,7 +491,8 @@ int cmdRender(Args& a) {
     std::fprintf(w.rfind("note:", 0) == 0 ? stderr : stdout, "%s\n", w.c_str());
   std::printf("%s on %s: %.2f ms (%s), %llu texels, %s -> %s\n", r.techniqueId().c_str(),
               r.scene()->name.c_str(), j["total_ms"].get<double>(), r.stats().timingMethod.c_str(),
-              (unsigned long long)r.stats().memory.texels(), describeError(err.stats).c_str(),
+              (unsigned long long)r.stats().memory.texels(),
+              cfg.reference ? describeError(err.stats).c_str() : "error n/a (no reference)",
               cfg.out.c_str());
   return 0;
 }
@@ -427,6 +539,11 @@ int cmdCompare(Args& a) {
       rest.rest.push_back(o);
   }
   RenderConfig base = parseRender(rest, 1, false);
+  if (!base.reference)
+    throw UsageError(sl::ShadowReference::available()
+                         ? "--no-reference: compare draws error images; it needs the ray-traced "
+                           "reference (render and bench measure time without it)"
+                         : std::string("compare: ") + sl::ShadowReference::unavailableReason());
   if (!base.wrongPixels.empty())
     throw UsageError("--wrong-pixels: a render option (one configuration), not compare's");
   if (base.out.empty()) base.out = "shadowlab-out";
@@ -554,15 +671,17 @@ int main(int argc, char** argv) {
         std::cout << kUsage;
       return 0;
     }
-    if (cmd == "list") return cmdList();
+    if (cmd == "list") return cmdList(a);
+    if (cmd == "version" || cmd == "--version") return cmdVersion();
     if (cmd == "render") return cmdRender(a);
     if (cmd == "compare") return cmdCompare(a);
     if (cmd == "bench") return cmdBench(a);
     if (cmd == "stability") return cmdStability(a);
     if (cmd == "chart") return cmdChart(a);
     if (cmd == "storage") return cmdStorage(a);
-    throw UsageError("unknown command '" + cmd +
-                     "' (commands: list, render, compare, bench, chart, stability, storage)");
+    throw UsageError(
+        "unknown command '" + cmd +
+        "' (commands: list, version, render, compare, bench, chart, stability, storage)");
   } catch (const UsageError& e) {
     std::cerr << "shadowlab-cli: " << e.what() << "\n";
     return 2;

@@ -29,7 +29,7 @@ build=build-fuzz
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake -S . -B $build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-  -DSHADOWLAB_FUZZ=ON -DSHADOWLAB_BUILD_GUI=OFF -DSHADOWLAB_BUILD_TESTS=OFF "${launcher[@]}" \
+  -DSHADOWLAB_FUZZ=ON -DSHADOWLAB_GUI=OFF -DSHADOWLAB_BUILD_TESTS=OFF "${launcher[@]}" \
   >/dev/null
 cmake --build $build -j2 --target "${targets[@]/#/fuzz_}"
 [ "$seconds" -eq 0 ] && exit 0

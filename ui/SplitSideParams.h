@@ -1,8 +1,9 @@
 // The split view's own parameters in the Parameters dock (issue 15): while the split view
 // is on, a second ParamPanel under the main one edits the right half's technique (read from
-// its ParamDecls like the main panel), and "Equal memory" sets its memory knob (ParamDecl::memoryKnob) so that it
-// spends the main technique's bytes (ViewportWidget::matchSplitMemory), showing both counts.
-// While the toggle is on, a change of the main side's memory matches again.
+// its ParamDecls like the main panel), and "Equal memory" sets its memory knob
+// (ParamDecl::memoryKnob) so that it spends the main technique's bytes
+// (ViewportWidget::matchSplitMemory), showing both counts. While the toggle is on, a change of the
+// main side's memory matches again.
 #pragma once
 
 #include <cstdint>

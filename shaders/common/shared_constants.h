@@ -17,12 +17,12 @@
 #define SL_UNIT_G_POSITION 1
 #define SL_UNIT_G_NORMAL 2
 #define SL_UNIT_G_ALBEDO 3
-#define SL_UNIT_VISIBILITY 4    // filtered visibility (resolve target 1)
-#define SL_UNIT_HARD 5          // hard mask (resolve target 0; last frame's for RTW's edges)
-#define SL_UNIT_REFERENCE 6     // Embree reference mask (error overlay)
-#define SL_UNIT_ALIASING 7      // m per pixel (resolve target 2)
-#define SL_UNIT_TEXEL 8         // selected map's uv per pixel (resolve target 3)
-#define SL_UNIT_MAP_INDEX 9     // selected map's index per pixel (resolve target 4)
+#define SL_UNIT_VISIBILITY 4     // filtered visibility (resolve target 1)
+#define SL_UNIT_HARD 5           // hard mask (resolve target 0; last frame's for RTW's edges)
+#define SL_UNIT_REFERENCE 6      // Embree reference mask (error overlay)
+#define SL_UNIT_ALIASING 7       // m per pixel (resolve target 2)
+#define SL_UNIT_TEXEL 8          // selected map's uv per pixel (resolve target 3)
+#define SL_UNIT_MAP_INDEX 9      // selected map's index per pixel (resolve target 4)
 #define SL_UNIT_LOOKUP_FIRST 10  // a technique's lookup textures start here
 
 // --- Image units of a deferred resolve (Technique::resolveDeferred writes these).
@@ -51,7 +51,7 @@
 #define SL_OVERLAY_PARTITION 4  // each pixel coloured by the index of the map it selected
 #define SL_OVERLAY_CHANGED 5    // pixels lit in one frame and shadowed in the next (flicker)
 #define SL_OVERLAY_PAGES 6      // the borders of the page each pixel uses (paged maps)
-#define SL_CHANGED_COLOUR 1.00, 0.95, 0.00  // the changed overlay's vivid yellow (RGB 0..1)
+#define SL_CHANGED_COLOUR 1.00, 0.95, 0.00      // the changed overlay's vivid yellow (RGB 0..1)
 #define SL_PAGE_BORDER_COLOUR 1.00, 0.35, 0.00  // the pages overlay's borders (RGB 0..1)
 #define SL_PARTITION_COLOURS 8  // distinct overlay colours (composite.frag); index mod 8
 // Their RGB (0..1): composite.frag and the Partitions panel (ui/panels/partition).
@@ -77,16 +77,16 @@
 #define SL_ALIASING_BINS 1024
 #define SL_ALIASING_BINS_PER_OCTAVE 32
 #define SL_ALIASING_LOG2_MIN (-16)
-#define SL_ALIASING_GROUP 16     // local_size_x/y
+#define SL_ALIASING_GROUP 16        // local_size_x/y
 #define SL_BUFFER_ALIASING_STATS 7  // SSBO binding (the renderer's, after the technique's)
 
 // --- Mask change (common/mask_change.comp, the changed overlay, the renderer's "mask.*"
 // publication; CPU mirror sl::compareConsecutiveMasks): the previous frame's hard mask is
 // copied before the resolve; pixels covered in both frames are counted, and those whose
 // lit/shadowed state differs. Buffer: compared, changed (uint).
-#define SL_UNIT_PREV_HARD 10          // last frame's hard mask (composite, mask_change.comp)
-#define SL_MASK_CHANGE_GROUP 16       // local_size_x/y
-#define SL_BUFFER_MASK_CHANGE 8       // SSBO binding
+#define SL_UNIT_PREV_HARD 10     // last frame's hard mask (composite, mask_change.comp)
+#define SL_MASK_CHANGE_GROUP 16  // local_size_x/y
+#define SL_BUFFER_MASK_CHANGE 8  // SSBO binding
 
 // --- Cascades (techniques/cascades, shaders/cascades).
 #define SL_CASCADE_BUFFER_DEPTH_RANGE 0  // min, max view depth (float bits as uint)
@@ -126,13 +126,13 @@
 #define SL_PAGE_MAX_PER_SIDE 8192
 #define SL_PAGE_MAX_LEVELS 14
 #define SL_PAGE_NONE 0xFFFFFFFFu
-#define SL_RMSM_GROUP 8  // local_size_x/y of the request and compaction passes
-#define SL_RMSM_IMAGE_REQUESTS 0  // r32ui: the page key each pixel asks for (SL_PAGE_NONE: none)
+#define SL_RMSM_GROUP 8            // local_size_x/y of the request and compaction passes
+#define SL_RMSM_IMAGE_REQUESTS 0   // r32ui: the page key each pixel asks for (SL_PAGE_NONE: none)
 #define SL_RMSM_BUFFER_REQUESTS 0  // SSBO: count, then the compacted keys
 #define SL_RMSM_BUFFER_SORT 1      // SSBO: the keys a bitonic step sorts (rmsm/sort.comp)
 #define SL_RMSM_BUFFER_UNIQUE 2    // SSBO: the sorted keys with repeats -> SL_PAGE_NONE
 #define SL_RMSM_BUFFER_UNIQUE_COUNT 3  // SSBO: the number of keys rmsm/unique.comp kept
-#define SL_RMSM_SORT_GROUP 64      // local_size_x of rmsm/sort.comp and rmsm/unique.comp
+#define SL_RMSM_SORT_GROUP 64          // local_size_x of rmsm/sort.comp and rmsm/unique.comp
 // Side in texels of an RMSM superpage (Lefohn et al. 2007): rmsm.render = superpages renders
 // each 1024² block of one level holding allocated pages once, then copies its pages to the pool.
 #define SL_RMSM_SUPERPAGE 1024

@@ -260,10 +260,18 @@ ChartAxis planCostAxis(ChartX x, std::span<const double> values) {
 
 std::array<std::uint8_t, 3> chartColorRgb(std::size_t i) {
   static constexpr std::array<std::uint8_t, 3> kPalette[] = {
-      {0, 114, 178}, {213, 94, 0},   {0, 158, 115},   {204, 121, 167},
-      {230, 159, 0}, {86, 180, 233}, {120, 120, 120}, {240, 228, 66},
+      {0, 114, 178},
+      {213, 94, 0},
+      {0, 158, 115},
+      {204, 121, 167},
+      {230, 159, 0},
+      {86, 180, 233},
+      {120, 120, 120},
+      {240, 228, 66},
       // Beyond Okabe-Ito's 8: psm/lispsm/tsm and cascades made more than 8 techniques.
-      {120, 70, 180}, {165, 42, 42},  {100, 130, 20}};
+      {120, 70, 180},
+      {165, 42, 42},
+      {100, 130, 20}};
   return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
 }
 

@@ -2,7 +2,7 @@
 # Grabs every lesson's window: opens each scenes/lessons/*.json with `shadowlab --lesson NAME`
 # on a private 1920x1080 Xvfb (with --presenter when `shadowlab --help` lists it), lets the
 # lesson settle (a grab waits for the lesson's temporal state) and saves the window as
-# OUTDIR/<lesson>.png. The README links the grabs in docs/images/lessons/.
+# OUTDIR/<lesson>.png. docs/lecturer/lessons.md shows the grabs in docs/images/lessons/.
 # usage: scripts/grab_lessons.sh OUTDIR [path/to/shadowlab] [frames before the grab (3)]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

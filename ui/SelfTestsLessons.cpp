@@ -117,8 +117,8 @@ void SelfTests::lessonLayout(const sl::PresetLayout& layout) {
   for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) {
     const bool listed = std::find(layout.docks.begin(), layout.docks.end(),
                                   dock->objectName().toStdString()) != layout.docks.end();
-    // Presenter mode tabs Lesson and Parameters behind the big panel (README, Presenter
-    // mode): there only as a tab, not on screen.
+    // Presenter mode tabs Lesson and Parameters behind the big panel
+    // (docs/user-guide/presenter.md): there only as a tab, not on screen.
     const bool tabBehind =
         w_.presenter_->active() && behind.contains(dock) && dock->visibleRegion().isEmpty();
     if (!listed && dock->isVisible() && !tabBehind)

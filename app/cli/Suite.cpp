@@ -3,7 +3,7 @@
 // expectations on the numbers; exit 1 naming every expectation that fails, and every case
 // that ran no configuration. The whole file is checked before anything runs: an unknown
 // technique (unless marked "optional"), parameter, metric or label, or a value out of range,
-// exits 2 naming the file and the JSON path. Format: README, "Speed against accuracy".
+// exits 2 naming the file and the JSON path. Format: docs/user-guide/suites.md.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -23,7 +23,7 @@ gl::ProgramDesc depthProgramDesc(bool opaque = false);
 /// The depth-only light pass's program, built twice: with the alpha test, for primitives
 /// whose material is alpha-tested (MASK), and without it for all others. A fragment shader
 /// that may discard keeps the rasteriser from testing depth before shading; on llvmpipe the
-/// opaque build renders fvsm's tile depth 2.3x faster (README, fitted virtual shadow maps).
+/// opaque build renders fvsm's tile depth 2.3x faster (docs/techniques/fvsm.md).
 /// Every uniform is set on both builds.
 class DepthProgram {
  public:

@@ -192,7 +192,8 @@ double texelSolidAngle(Dir dir, glm::dvec2 lo, glm::dvec2 hi) {
 
 TEST(OmniDensity, MeasuredTexelSolidAnglesMatchTheAnalyticRatios) {
   // Measured: the exact solid angle of real texels (their four corner directions through
-  // the inverse mappings), independent of the density formulas. README quotes these lines.
+  // the inverse mappings), independent of the density formulas. docs/techniques/omni-lights.md
+  // quotes these lines.
   const int res = 1024;
   const double t = 1.0 / res;
   auto cube = [](glm::dvec2 uv) { return cubeDirection(4, uv); };

@@ -81,9 +81,9 @@ TEST(Cascades, MorePartitionsLowerTheErrorOnCorridor) {
 // uniform 2048^2 18.9 %; m p95 0.537 / 1.230 / 0.628 / 34.9. Undersampled, 4 x 256^2:
 // warped 1.398 %, tight 1.614 %, stabilised 3.795 % (uniform 512^2 32.6 %). With m p95 < 1
 // the error is rows along long shadow edges, set by how far bias.normal (in local texels)
-// lands from the reference's own 1 cm ray offset, not by texel density (README, Cascades:
-// swept, tight and warped both reach 0.37 % at their best offset): the warp's lower m shows
-// in m, and in the error where the maps are undersampled.
+// lands from the reference's own 1 cm ray offset, not by texel density
+// (docs/techniques/cascades.md: swept, tight and warped both reach 0.37 % at their best
+// offset): the warp's lower m shows in m, and in the error where the maps are undersampled.
 TEST(Cascades, WarpedCascadesBeatPlainOnCorridor) {
   struct Run {
     double error, p95;
@@ -236,7 +236,7 @@ Flicker orbitFlicker(const Sets& sets, int frames) {
 // the crawl shows where the maps are undersampled: 4 x 256^2 at 320x180 (m p95 2.4
 // stabilised, 1.2 tight). Measured (stability suite, 24 frames): stabilised 0.084 % mean /
 // 0.111 % max, tight 0.226 % / 0.261 %. At 4 x 1024^2 (m p95 < 1) the tight fit's finer
-// texels lower the floor instead: 0.059 % against 0.117 % (README, "Cascades").
+// texels lower the floor instead: 0.059 % against 0.117 % (docs/techniques/cascades.md).
 TEST(Cascades, StabilisedPartitionsDoNotShimmer) {
   const int frames = 24;
   const Flicker on = orbitFlicker({{"resolution", 256}, {"partitions", 4}}, frames);

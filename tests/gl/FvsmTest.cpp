@@ -133,7 +133,8 @@ TEST(Fvsm, AccuracyAgainstVirtualTiled) {
 // with a border of 1, 2 or 4 texels shadow exactly the pixels the borderless tiles do, on
 // diagonal (its long shadows cross many leaves) at two ξ. Carving the border out of the
 // cell's texels (before) gave another texel size and phase: at ξ = −2, 1280x720, 35 wrong
-// pixels with overlap 1 against 34 without, only 12 of them in common (README, fvsm).
+// pixels with overlap 1 against 34 without, only 12 of them in common
+// (docs/techniques/fvsm.md).
 // Tolerance: a texel centre within float rounding of a triangle edge may be covered with
 // one projection and not with the other (another uv rectangle, the same lattice): at most
 // 0.01 % of the covered pixels.

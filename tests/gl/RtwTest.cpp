@@ -177,7 +177,8 @@ TEST(RtwParity, MomentChainMatchesCpu) {
 // 512^2 IM + three 1D maps of 512 = 525,824 texels, 0.50 x a uniform 1024^2. ShadowLab's
 // backward analysis scatters straight into the two 1D maps, so the 2D IM exists only while a
 // panel shows it: 262,144 (SM) + 1,024 (inverse tables) + 1,024 (1D maps) + 1,024 (blurred)
-// + 1,026 (warp maps, n + 1 edges) = 266,242 texels, 0.254 x uniform 1024^2 (README).
+// + 1,026 (warp maps, n + 1 edges) = 266,242 texels, 0.254 x uniform 1024^2
+// (docs/techniques/rtw.md).
 TEST(RtwMemory, ReportsWhatItAllocatesAndMeetsTheTargets) {
   auto r = test::makeRenderer("plane-box", "uniform");
   ASSERT_TRUE(r);
@@ -266,7 +267,7 @@ double halfMassWidth(const std::vector<float>& v) {
 // distribution ... for the vertical axis" and better shadows: measured here and printed,
 // NOT asserted, because with the exact warped depth neither reproduces on this scene (the
 // half-mass width of the sharper axis 10.2 % without, 10.4 % with rotation; error along the
-// walk 0.164 % vs 0.189 % at 512^2; README "Seed 000's claim").
+// walk 0.164 % vs 0.189 % at 512^2; docs/techniques/rtw.md, "Tokuyoshi et al.'s claim").
 TEST(RtwClaims, DaRtwAlignsThePrincipalAxis) {
   double sharpest[2] = {1.0, 1.0};
   int k = 0;

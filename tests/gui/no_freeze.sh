@@ -4,7 +4,7 @@
 # of units (512-row bands of a tile's depth pass) per frame; the longest frame stays under
 # 400 ms and a 20 ms heartbeat timer never waits 1 s; partial frames say "tile k of 256"; the
 # complete frame equals the one-call frame (pixels and error). Measured and the bounds' margins:
-# README "Never freezing".
+# docs/user-guide/continuous-rendering.md, "Never freezing".
 # usage: no_freeze.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1

@@ -48,7 +48,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
                "Wimmer §4.9): each step halves the texels per axis everywhere. Large ξ: one "
                "ordinary shadow map; below 0: finer than the SMTMM's sub-pixel need (default "
                "−3: with the 32 x 32 grid, fewer wrong pixels than the 16 x 16 x 4096² brute "
-               "force on diagonal and corridor, README)."},
+               "force on diagonal and corridor: docs/techniques/fvsm.md)."},
       {.key = "fvsm.texture.mode",
        .label = "Tile textures",
        .group = "FVSM",
@@ -85,7 +85,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .help = "n x n tile grid the SMTMM is accumulated into (a power of two; the paper: 16 or "
                "32): the finest kd-tree level. A cell at the finest level holds at most the max "
                "texture: 32 x 4096 (default) lets the neediest cells go finer than the 16 x 16 x "
-               "4096² brute force, and fits coarser cells more tightly (README)."},
+               "4096² brute force, and fits coarser cells more tightly "
+               "(docs/techniques/fvsm.md)."},
       {.key = "fvsm.max_texture",
        .label = "Max tile texture",
        .group = "FVSM",

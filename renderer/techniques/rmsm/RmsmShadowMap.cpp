@@ -53,7 +53,7 @@ TechniqueInfo RmsmShadowMap::info() {
               "rendered once into a superpage target, then its pages are copied into their "
               "pool slots (one scene draw per superpage). pages: one scene draw per allocated "
               "page, straight into its slot (the default: on llvmpipe superpages made the frame "
-              "1.4-2.1x slower, README)."});
+              "1.4-2.1x slower: docs/techniques/rmsm.md)."});
 
   TechniqueInfo info{"rmsm", "Resolution-matched shadow map",
                      "Lefohn, Sengupta, Owens 2007: every camera pixel asks for the page of a "

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the readers of untrusted files with libFuzzer (issue 14): builds tests/fuzz in
+# Fuzzes the readers of untrusted files with libFuzzer: builds tests/fuzz in
 # build-fuzz/ (clang, ASan + UBSan), then runs each target for SECONDS (default 600), one
 # after the other, at the lowest CPU priority. Prints each target's executions; fails on any
 # crash, leak, timeout (-timeout=5 s per input), memory blow-up (-rss_limit_mb=2048) or

@@ -12,6 +12,11 @@
 
 namespace sl {
 
+/// How pass times are measured (gl::GpuTimer): glFinish + a wall clock around each pass (this
+/// frame's times; software rasterisers, where GL_TIME_ELAPSED is meaningless), or
+/// GL_TIME_ELAPSED timer queries read a frame late (real GPUs).
+enum class TimingMethod { FinishWallClock, TimerQuery };
+
 struct PassTiming {
   std::string name;  ///< e.g. "gbuffer", "shadow map", "resolve"
   double ms = 0.0;
@@ -42,6 +47,11 @@ struct FrameStats {
   /// The same timer results, one entry per scope in the order they ran (unsummed): e.g. a
   /// "tile depth" / "tile apply" pair per tile (tileTimingCurve).
   std::vector<PassTiming> passSequence;
+  /// The passes this frame opened, one name per declared pass in the order each was first
+  /// opened: the names `passes` holds once this frame's times arrive. Known when each scope
+  /// opens, so it is this frame's whatever the timing method (`passes` may be
+  /// `timingFramesLate` frames old).
+  std::vector<std::string> passOrder;
   double totalMs = 0.0;
   /// "glFinish+wallclock" (software rasterisers, where GL_TIME_ELAPSED is meaningless)
   /// or "GL_TIME_ELAPSED" (timer queries on real GPUs).

@@ -348,7 +348,7 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
     glDebugMessageCallback(debugCallback, s_.get());
   }
   s_->maxFrame = maxFrameSize();
-  s_->timer = std::make_unique<gl::GpuTimer>();
+  s_->timer = std::make_unique<gl::GpuTimer>(options.timing);
   s_->gbufferProgram = gl::Program(s_->shaders, {"common/gbuffer",
                                                  {{GL_VERTEX_SHADER, "common/gbuffer.vert"},
                                                   {GL_FRAGMENT_SHADER, "common/gbuffer.frag"}},
@@ -970,6 +970,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   s.stats.height = height;
   s.stats.passes = s.timer->endFrame();
   s.stats.passSequence = s.timer->sequence();
+  s.stats.passOrder = s.timer->passOrder();
   if (publishing) {  // per-tile times (TechniqueInfo::tileTiming) from the same results
     const TechniqueEntry* entry = findEntry(s, s.techniqueId);
     const TechniqueInfo* info = entry ? &entry->info : nullptr;

@@ -228,6 +228,10 @@ struct TechniqueEntry {
 struct RendererOptions {
   std::string shaderDir;  ///< empty: SHADOWLAB_SHADER_DIR env var, else compiled-in path
   bool debugOutput = true;
+  /// How passes are timed (FrameStats::timingMethod). Empty: the SHADOWLAB_TIMING env var
+  /// (finish|query), else from GL_RENDERER (glFinish + wall clock on software rasterisers,
+  /// timer queries elsewhere). Tests force a method here rather than in the environment.
+  std::optional<TimingMethod> timing;
   /// Techniques this renderer offers besides the built-in list (Renderer::techniques()):
   /// tests add techniques that live only in tests. Found by setTechnique and paramsOf.
   std::vector<TechniqueEntry> extraTechniques;

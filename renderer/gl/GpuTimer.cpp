@@ -6,7 +6,11 @@
 
 namespace sl::gl {
 
-GpuTimer::GpuTimer() {
+GpuTimer::GpuTimer(std::optional<Method> method) {
+  if (method) {
+    method_ = *method;
+    return;
+  }
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   std::string r = renderer ? renderer : "";
   bool software = r.find("llvmpipe") != std::string::npos ||
@@ -25,6 +29,7 @@ std::string GpuTimer::methodName() const {
 
 void GpuTimer::beginFrame() {
   entries_.clear();
+  opened_.clear();
   queriesUsed_ = 0;
   open_ = false;
   // Never the pool whose queries are still to be read.
@@ -33,6 +38,7 @@ void GpuTimer::beginFrame() {
 
 void GpuTimer::begin(const std::string& pass) {
   if (open_) end();
+  opened_.push_back(pass);
   Entry e;
   e.name = pass;
   if (method_ == Method::FinishWallClock) {
@@ -80,6 +86,13 @@ std::vector<PassTiming> sumByName(const std::vector<PassTiming>& sequence) {
   return out;
 }
 }  // namespace
+
+std::vector<std::string> GpuTimer::passOrder() const {
+  std::vector<std::string> order;
+  for (const std::string& name : opened_)
+    if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
+  return order;
+}
 
 std::vector<PassTiming> GpuTimer::endFrame() {
   if (open_) end();

@@ -2,10 +2,12 @@
 // each pass is timed with glFinish + a wall clock; on real GPUs with timer queries, read
 // one frame late so the CPU never waits for the GPU (the frame's stats then hold the
 // previous frame's pass times; the first frame has none). The method is reported with
-// every measurement.
+// every measurement. The names of the passes opened this frame are known at once, whatever
+// the method (passOrder).
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,8 +18,10 @@ namespace sl::gl {
 
 class GpuTimer {
  public:
-  enum class Method { FinishWallClock, TimerQuery };
-  GpuTimer();  ///< picks the method from GL_RENDERER (SHADOWLAB_TIMING=finish|query overrides)
+  using Method = TimingMethod;
+  /// `method` given: that one (tests, RendererOptions::timing). Else SHADOWLAB_TIMING=
+  /// finish|query, else from GL_RENDERER (glFinish + wall clock on software rasterisers).
+  explicit GpuTimer(std::optional<Method> method = std::nullopt);
   Method method() const { return method_; }
   std::string methodName() const;
 
@@ -31,6 +35,9 @@ class GpuTimer {
   /// The results endFrame() last returned, one entry per scope in the order they ran, not
   /// summed by name (a pass repeated per tile: one entry per tile).
   const std::vector<PassTiming>& sequence() const { return sequence_; }
+  /// The passes opened since beginFrame(), one name per pass in the order each was first
+  /// opened (FrameStats::passOrder): this frame's, with either method, also after endFrame().
+  std::vector<std::string> passOrder() const;
   /// How many frames old the timer-query results endFrame() returned are (0 for
   /// finish+wallclock; 1 normally for queries).
   int framesLate() const { return method_ == Method::TimerQuery ? late_ : 0; }
@@ -57,7 +64,8 @@ class GpuTimer {
   };
   Method method_;
   std::vector<Entry> entries_;
-  std::vector<Entry> pending_;  ///< the previous frame's query entries, not yet read
+  std::vector<std::string> opened_;  ///< this frame's scopes in the order they opened
+  std::vector<Entry> pending_;       ///< the previous frame's query entries, not yet read
   std::vector<PassTiming> lastResults_;
   std::vector<PassTiming> sequence_;                ///< lastResults_ before summing
   std::vector<Handle<QueryDeleter>> queryPool_[2];  ///< alternate frames

@@ -1734,18 +1734,25 @@ SceneLoadResult loadGltf(const std::filesystem::path& path) {
   return result;
 }
 
-std::filesystem::path builtinSceneDir() {
-#ifdef SHADOWLAB_SCENE_DIR
-  return dataDir("scenes", "SHADOWLAB_SCENE_DIR", SHADOWLAB_SCENE_DIR);
-#else
-  return dataDir("scenes", "SHADOWLAB_SCENE_DIR", "scenes");
+std::filesystem::path builtinSceneDir(const char* environmentValue) {
+#ifndef SHADOWLAB_SCENE_DIR
+#define SHADOWLAB_SCENE_DIR "scenes"
 #endif
+#ifndef SHADOWLAB_DATA_SUBDIR
+#define SHADOWLAB_DATA_SUBDIR "share/shadowlab"
+#endif
+  return resolveDataDir("scenes", environmentValue ? environmentValue : "", executableDir(),
+                        SHADOWLAB_DATA_SUBDIR, SHADOWLAB_SCENE_DIR);
 }
 
-std::vector<std::string> builtinSceneNames() {
+std::filesystem::path builtinSceneDir() {
+  return builtinSceneDir(std::getenv("SHADOWLAB_SCENE_DIR"));
+}
+
+std::vector<std::string> builtinSceneNames(const std::filesystem::path& dir) {
   std::vector<std::string> names;
   std::error_code ec;
-  for (fs::directory_iterator it(builtinSceneDir(), ec), end; !ec && it != end; it.increment(ec)) {
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     std::error_code fileEc;
     if (it->is_regular_file(fileEc) && hasGltfExtension(it->path()))
       names.push_back(it->path().stem().string());
@@ -1755,7 +1762,8 @@ std::vector<std::string> builtinSceneNames() {
   return names;
 }
 
-SceneLoadResult loadSceneByNameOrPath(const std::string& nameOrPath) {
+SceneLoadResult loadSceneByNameOrPath(const std::string& nameOrPath,
+                                      const std::filesystem::path& sceneDir) {
   const fs::path asPath(nameOrPath);
   const bool looksLikePath = hasGltfExtension(asPath) ||
                              nameOrPath.find('/') != std::string::npos ||
@@ -1763,9 +1771,8 @@ SceneLoadResult loadSceneByNameOrPath(const std::string& nameOrPath) {
   if (looksLikePath) return loadGltf(asPath);
 
   if (!nameOrPath.empty()) {
-    const fs::path dir = builtinSceneDir();
     for (const char* ext : {".gltf", ".glb"}) {
-      fs::path candidate = dir / (nameOrPath + ext);
+      fs::path candidate = sceneDir / (nameOrPath + ext);
       std::error_code ec;
       if (fs::is_regular_file(candidate, ec)) {
         SceneLoadResult result = loadGltf(candidate);
@@ -1777,12 +1784,12 @@ SceneLoadResult loadSceneByNameOrPath(const std::string& nameOrPath) {
     if (fs::exists(asPath, ec)) return loadGltf(asPath);  // e.g. a file without extension
   }
 
-  std::vector<std::string> names = builtinSceneNames();
+  std::vector<std::string> names = builtinSceneNames(sceneDir);
   std::string list;
   for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
   SceneLoadResult result;
   result.error = "unknown scene '" + nameOrPath + "': not a built-in scene (" +
-                 (list.empty() ? "none found in " + builtinSceneDir().string() : list) +
+                 (list.empty() ? "none found in " + sceneDir.string() : list) +
                  ") nor a .gltf/.glb file";
   return result;
 }

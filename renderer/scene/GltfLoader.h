@@ -21,12 +21,16 @@ struct SceneLoadResult {
 /// unsupported required extension "X", ...).
 SceneLoadResult loadGltf(const std::filesystem::path& path);
 
-/// Directory of the built-in scenes (scene/DataDir.h: SHADOWLAB_SCENE_DIR env var, else
-/// share/shadowlab/scenes beside the program, else the compiled-in source path).
+/// Directory of the built-in scenes given the value of the SHADOWLAB_SCENE_DIR env var (null
+/// or empty: unset): scene/DataDir.h's order, that value, else share/shadowlab/scenes beside
+/// the program, else the compiled-in source path.
+std::filesystem::path builtinSceneDir(const char* environmentValue);
+/// builtinSceneDir(getenv("SHADOWLAB_SCENE_DIR")).
 std::filesystem::path builtinSceneDir();
-/// Names of the built-in scenes (file stems of scenes/*.gltf|glb), sorted.
-std::vector<std::string> builtinSceneNames();
-/// A built-in name ("plane-box") or a file path -> loaded scene.
-SceneLoadResult loadSceneByNameOrPath(const std::string& nameOrPath);
+/// Names of the built-in scenes (file stems of `dir`/*.gltf|glb), sorted.
+std::vector<std::string> builtinSceneNames(const std::filesystem::path& dir = builtinSceneDir());
+/// A built-in name ("plane-box", looked up in `sceneDir`) or a file path -> loaded scene.
+SceneLoadResult loadSceneByNameOrPath(const std::string& nameOrPath,
+                                      const std::filesystem::path& sceneDir = builtinSceneDir());
 
 }  // namespace sl

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 
 #include "algo/omni/OmniMapping.h"
@@ -55,23 +54,21 @@ TEST(Scene, BuiltinSceneNamesAreSortedStems) {
   EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
 }
 
+// SHADOWLAB_SCENE_DIR's value (given here, never set in this process) names the directory;
+// names and loading by name use a directory given to them.
 TEST(Scene, SceneDirFromEnvironment) {
-  const char* previous = std::getenv("SHADOWLAB_SCENE_DIR");
-  std::string saved = previous ? previous : "";
-  ASSERT_EQ(setenv("SHADOWLAB_SCENE_DIR", SHADOWLAB_TEST_DATA, 1), 0);
-  fs::path dir = builtinSceneDir();
-  std::vector<std::string> names = builtinSceneNames();
-  SceneLoadResult cube = loadSceneByNameOrPath("cube");
-  if (previous) {
-    setenv("SHADOWLAB_SCENE_DIR", saved.c_str(), 1);
-  } else {
-    unsetenv("SHADOWLAB_SCENE_DIR");
-  }
-  EXPECT_EQ(dir, fs::path(SHADOWLAB_TEST_DATA));
+  EXPECT_EQ(builtinSceneDir(SHADOWLAB_TEST_DATA), fs::path(SHADOWLAB_TEST_DATA));
+  EXPECT_EQ(builtinSceneDir(""), builtinSceneDir(nullptr)) << "empty: unset";
+  EXPECT_TRUE(fs::exists(builtinSceneDir(nullptr) / "plane-box.gltf"));
+  const fs::path dir = builtinSceneDir(SHADOWLAB_TEST_DATA);
+  std::vector<std::string> names = builtinSceneNames(dir);
   EXPECT_NE(std::find(names.begin(), names.end(), "cube"), names.end());
+  SceneLoadResult cube = loadSceneByNameOrPath("cube", dir);
   ASSERT_TRUE(cube) << cube.error;
   EXPECT_EQ(cube.scene->name, "cube");
-  EXPECT_TRUE(fs::exists(builtinSceneDir() / "plane-box.gltf"));
+  SceneLoadResult elsewhere = loadSceneByNameOrPath("plane-box", dir);
+  EXPECT_FALSE(elsewhere) << "plane-box is not in " << dir;
+  EXPECT_NE(elsewhere.error.find("cube"), std::string::npos) << elsewhere.error;
 }
 
 TEST(Scene, EveryBuiltinSceneLoadsWithSunCamerasAndPath) {

@@ -3,9 +3,10 @@
 // cancelled trace gives nothing; a mask of another size is refused for the error overlay;
 // the adaptive present size leaves every target and readback at the rendered size.
 #include <atomic>
-#include <thread>
+#include <chrono>
 
 #include "GlTestEnv.h"
+#include "Watchdog.h"
 
 namespace sl {
 namespace {
@@ -22,8 +23,11 @@ TEST(AsyncReferenceGl, SnapshotTracedOnAnotherThreadEqualsComputeError) {
   EXPECT_EQ(snap.frameSignature, r->frameSignature());
   std::optional<Renderer::ErrorResult> async;
   std::atomic<bool> cancelled{false};
-  std::thread worker([&] { async = Renderer::traceReference(snap, &cancelled); });  // no GL
-  worker.join();
+  // On another thread (no GL there); a trace that never returns fails within a bound (then
+  // the cancel flag, seen between bands, ends it) instead of hanging until the ctest timeout.
+  ASSERT_TRUE(test::finishesWithin(
+      std::chrono::seconds(120), "traceReference on a worker thread",
+      [&] { async = Renderer::traceReference(snap, &cancelled); }, [&] { cancelled = true; }));
   ASSERT_TRUE(async);
   EXPECT_EQ(async->referenceMask, sync.referenceMask);
   EXPECT_EQ(async->stats.covered, sync.stats.covered);

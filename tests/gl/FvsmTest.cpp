@@ -354,7 +354,12 @@ TEST(Fvsm, PublishesEachLeafsTimes) {
   auto r = fvsmRenderer({{"fvsm.max_texture", 128}, {"fvsm.fallback.resolution", 64}});
   ASSERT_TRUE(r);
   r->requestPublications({"fvsm.tile_ms", "fvsm.tiles"});
-  for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(160, 120, 0));  // queries: a frame late
+  // Timer queries: the times arrive a frame late, read without waiting, so the first frame
+  // is finished before the second reads them.
+  for (int f = 0; f < 2; ++f) {
+    glFinish();
+    ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  }
   const Publication& pub = r->publication();
   ASSERT_TRUE(pub.curves.count("fvsm.tile_ms"));
   const std::vector<float>& c = pub.curves.at("fvsm.tile_ms");
@@ -392,11 +397,7 @@ TEST(Fvsm, DeclaredPassesAreTimedAndBadValuesRefused) {
             (std::vector<std::string>{"gbuffer", "eye depth", "smtmm", "fvsm grid", "fvsm pyramid",
                                       "fvsm kd-tree", "resolve", "tile depth", "tile apply",
                                       "fallback", "composite"}));
-  if (r->stats().timingFramesLate == 0) {
-    std::vector<std::string> timed;
-    for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
-    EXPECT_EQ(timed, declared);
-  }
+  test::expectDeclaredPassesOpened(r->stats(), declared);
   ASSERT_FALSE(r->params().set("fvsm.grid", 12));
   auto err = r->renderFrame(80, 60, 0);
   ASSERT_TRUE(err);

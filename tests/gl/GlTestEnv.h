@@ -71,11 +71,13 @@ inline std::shared_ptr<Scene> roofOverFloor(float shadowFromX) {
   return s;
 }
 
-/// A renderer on the shared context with a built-in scene and its first camera.
+/// A renderer on the shared context with a built-in scene and its first camera (`options`:
+/// e.g. a forced timing method).
 inline std::unique_ptr<Renderer> makeRenderer(const std::string& scene,
-                                              const std::string& technique) {
+                                              const std::string& technique,
+                                              const RendererOptions& options = {}) {
   eglContext().makeCurrent();
-  auto r = std::make_unique<Renderer>();
+  auto r = std::make_unique<Renderer>(options);
   auto s = loadBuiltin(scene);
   if (!s) return nullptr;
   r->setScene(s);
@@ -89,6 +91,20 @@ inline const Camera* bookmark(const Scene& scene, const std::string& name) {
   for (const CameraBookmark& b : scene.cameras)
     if (b.name == name) return &b.camera;
   return nullptr;
+}
+
+/// The last frame opened exactly the declared passes, in the declared order
+/// (FrameStats::passOrder: that frame's whatever the timing method). Where `passes` holds that
+/// frame's times (glFinish timing) they name the same passes; timer-query times arrive a frame
+/// late (Renderer.TimerQueryTimesNameThePassesOfTheFrameTheyTimed checks those).
+inline void expectDeclaredPassesOpened(const FrameStats& stats,
+                                       const std::vector<std::string>& declared) {
+  EXPECT_EQ(stats.passOrder, declared);
+  std::vector<std::string> timed;
+  for (const PassTiming& p : stats.passes) timed.push_back(p.name);
+  if (stats.timingMethod == "glFinish+wallclock") {
+    EXPECT_EQ(timed, stats.passOrder);
+  }
 }
 
 inline void expectNoGlErrors(Renderer& r) {

@@ -63,6 +63,9 @@ TEST(Renderer, ReportsTimingAndMemory) {
   auto r = test::makeRenderer("plane-box", "uniform");
   ASSERT_TRUE(r);
   ASSERT_FALSE(r->params().set("resolution", 1024));
+  // Two frames: timer queries (real GPUs) give the first frame's times with the second.
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  glFinish();
   ASSERT_FALSE(r->renderFrame(160, 120, 0));
   const FrameStats& st = r->stats();
   EXPECT_EQ(st.memory.texels(), 1048576u);  // uniform at 1024^2 (issue 3's figure)
@@ -73,12 +76,22 @@ TEST(Renderer, ReportsTimingAndMemory) {
   test::expectNoGlErrors(*r);
 }
 
-// Timer queries (real GPUs; forced here with SHADOWLAB_TIMING=query, which llvmpipe
+RendererOptions timedBy(TimingMethod method) {
+  RendererOptions options;
+  options.timing = method;
+  return options;
+}
+
+std::vector<std::string> passNames(const std::vector<PassTiming>& passes) {
+  std::vector<std::string> names;
+  for (const PassTiming& p : passes) names.push_back(p.name);
+  return names;
+}
+
+// Timer queries (real GPUs; forced here with RendererOptions::timing, which llvmpipe
 // accepts): results are read a frame late, never waited on, and name the passes.
 TEST(Renderer, TimerQueriesAreReadAFrameLateWithoutWaiting) {
-  ::setenv("SHADOWLAB_TIMING", "query", 1);
-  auto r = test::makeRenderer("plane-box", "rtw-backward");
-  ::unsetenv("SHADOWLAB_TIMING");
+  auto r = test::makeRenderer("plane-box", "rtw-backward", timedBy(TimingMethod::TimerQuery));
   ASSERT_TRUE(r);
   ASSERT_FALSE(r->renderFrame(160, 90, 0));
   EXPECT_EQ(r->stats().timingMethod, "GL_TIME_ELAPSED");
@@ -94,6 +107,81 @@ TEST(Renderer, TimerQueriesAreReadAFrameLateWithoutWaiting) {
     }
     for (const char* want : {"gbuffer", "importance", "warped shadow map", "resolve"})
       EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+  }
+  test::expectNoGlErrors(*r);
+}
+
+// The method is chosen per renderer (RendererOptions::timing), not for the process: two
+// renderers on one context time the same frame each their own way, and both know the frame's
+// pass order at once.
+TEST(Renderer, TimingMethodIsChosenPerRenderer) {
+  auto finish = test::makeRenderer("plane-box", "uniform", timedBy(TimingMethod::FinishWallClock));
+  auto query = test::makeRenderer("plane-box", "uniform", timedBy(TimingMethod::TimerQuery));
+  ASSERT_TRUE(finish && query);
+  ASSERT_FALSE(finish->renderFrame(96, 64, 0));
+  ASSERT_FALSE(query->renderFrame(96, 64, 0));
+  std::vector<std::string> declared;
+  for (const PassDecl& p : framePassDecls(*Renderer::findTechnique("uniform")))
+    declared.push_back(p.id);
+  EXPECT_EQ(finish->stats().timingMethod, "glFinish+wallclock");
+  EXPECT_EQ(finish->stats().timingFramesLate, 0);
+  EXPECT_EQ(finish->stats().passOrder, declared);
+  EXPECT_EQ(passNames(finish->stats().passes), declared) << "glFinish: this frame's times";
+  EXPECT_EQ(query->stats().timingMethod, "GL_TIME_ELAPSED");
+  EXPECT_EQ(query->stats().passOrder, declared);
+  EXPECT_TRUE(query->stats().passes.empty()) << "no query read back yet";
+  test::expectNoGlErrors(*finish);
+  test::expectNoGlErrors(*query);
+}
+
+// With timer queries each frame's pass order is known at once (FrameStats::passOrder), and the
+// times that arrive a frame later carry the names of the frame they timed: the technique or
+// its tile count changes every frame, so frames open different passes (and different numbers
+// of tile scopes), and frame f's times must name frame f-1's passes, not its own.
+TEST(Renderer, TimerQueryTimesNameThePassesOfTheFrameTheyTimed) {
+  auto r = test::makeRenderer("plane-box", "uniform", timedBy(TimingMethod::TimerQuery));
+  ASSERT_TRUE(r);
+  struct Step {
+    const char* technique;
+    int tiles;  ///< virtual-tiled's n (n x n tiles); 0 for others
+  };
+  const Step steps[] = {{"uniform", 0},      {"virtual-tiled", 2}, {"virtual-tiled", 3},
+                        {"rtw-backward", 0}, {"virtual-tiled", 2}, {"uniform", 0}};
+  std::vector<std::string> previousOrder;
+  int previousTiles = 0;
+  for (std::size_t f = 0; f < std::size(steps); ++f) {
+    const Step& step = steps[f];
+    SCOPED_TRACE(std::string("frame ") + std::to_string(f) + ": " + step.technique);
+    ASSERT_FALSE(r->setTechnique(step.technique));
+    if (step.tiles > 0) {
+      ASSERT_FALSE(r->params().set("tiles", step.tiles));
+      ASSERT_FALSE(r->params().set("tile.resolution", 64));
+    }
+    glFinish();  // the previous frame's queries are done: this frame reads them
+    ASSERT_FALSE(r->renderFrame(80, 60, 0));
+    const FrameStats& st = r->stats();
+    EXPECT_EQ(st.timingMethod, "GL_TIME_ELAPSED");
+    std::vector<std::string> declared;
+    for (const PassDecl& p : framePassDecls(*Renderer::findTechnique(step.technique), r->params()))
+      declared.push_back(p.id);
+    EXPECT_EQ(st.passOrder, declared) << "this frame's passes, known at once";
+    if (f == 0) {
+      EXPECT_TRUE(st.passes.empty()) << "the first frame has no finished queries yet";
+    } else {
+      EXPECT_EQ(st.timingFramesLate, 1);
+      EXPECT_EQ(passNames(st.passes), previousOrder) << "the times are the previous frame's";
+      if (std::string(steps[f - 1].technique) != step.technique) {
+        EXPECT_NE(passNames(st.passes), st.passOrder);
+      }
+      for (const PassTiming& p : st.passes) EXPECT_GE(p.ms, 0.0) << p.name;
+      // Per scope: one "tile apply" per tile of the frame that was timed.
+      const auto applies =
+          std::count_if(st.passSequence.begin(), st.passSequence.end(),
+                        [](const PassTiming& p) { return p.name == "tile apply"; });
+      EXPECT_EQ(applies, previousTiles * previousTiles);
+    }
+    previousOrder = st.passOrder;
+    previousTiles = step.tiles;
   }
   test::expectNoGlErrors(*r);
 }

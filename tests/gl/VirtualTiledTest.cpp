@@ -100,15 +100,15 @@ TEST(VirtualTiled, DeclaredPassesAreTimed) {
   ASSERT_FALSE(r->params().set("tiles", 2));
   ASSERT_FALSE(r->params().set("tile.resolution", 64));
   ASSERT_FALSE(r->renderFrame(80, 60, 0));
-  if (r->stats().timingFramesLate != 0) GTEST_SKIP() << "timer queries: a frame late";
-  std::vector<std::string> timed, declared;
-  for (const PassTiming& p : r->stats().passes) timed.push_back(p.name);
+  std::vector<std::string> declared;
   const TechniqueInfo* info = Renderer::findTechnique("virtual-tiled");
   ASSERT_TRUE(info);
   for (const PassDecl& p : framePassDecls(*info)) declared.push_back(p.id);
-  EXPECT_EQ(timed, declared);
-  EXPECT_NE(std::find(timed.begin(), timed.end(), "tile depth"), timed.end());
-  EXPECT_EQ(timed[1], "eye depth") << "the eye-space depth buffer right after the G-buffer";
+  test::expectDeclaredPassesOpened(r->stats(), declared);
+  const std::vector<std::string>& opened = r->stats().passOrder;
+  EXPECT_NE(std::find(opened.begin(), opened.end(), "tile depth"), opened.end());
+  ASSERT_GE(opened.size(), 2u);
+  EXPECT_EQ(opened[1], "eye depth") << "the eye-space depth buffer right after the G-buffer";
   // A bad value is refused with the range.
   auto err = r->params().set("tiles", 0);
   ASSERT_TRUE(err);
@@ -124,7 +124,12 @@ TEST(VirtualTiled, PublishesEachTilesTimes) {
   ASSERT_FALSE(r->params().set("tiles", 3));
   ASSERT_FALSE(r->params().set("tile.resolution", 64));
   r->requestPublications({"virtual_tiled.tile_ms"});
-  for (int f = 0; f < 2; ++f) ASSERT_FALSE(r->renderFrame(80, 60, 0));  // queries: a frame late
+  // Timer queries: the times arrive a frame late, read without waiting, so the first frame
+  // is finished before the second reads them.
+  for (int f = 0; f < 2; ++f) {
+    glFinish();
+    ASSERT_FALSE(r->renderFrame(80, 60, 0));
+  }
   ASSERT_TRUE(r->publication().curves.count("virtual_tiled.tile_ms"));
   const std::vector<float>& c = r->publication().curves.at("virtual_tiled.tile_ms");
   ASSERT_EQ(c.size(), 2u * 9u) << "a (depth, apply) pair per tile";

@@ -92,7 +92,7 @@ else
 fi
 width=${size%x*} height=${size#*x}
 
-mkdir -p "$out/raw" || fail_usage "--out: cannot create $out/raw"
+mkdir -p "$out/raw" 2>/dev/null || fail_usage "--out: cannot create $out/raw"
 out=$(cd "$out" && pwd -P)
 raw=$out/raw
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/gpu-check.XXXXXX")

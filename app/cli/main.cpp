@@ -224,6 +224,10 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   j["false_lit_pct"] = measured ? json(err.stats.falseLitPct) : json(nullptr);
   j["false_shadow_pct"] = measured ? json(err.stats.falseShadowPct) : json(nullptr);
   j["gl"] = r.glDescription();
+  const sl::Renderer::GlStrings gl = r.glStrings();
+  j["gl_vendor"] = gl.vendor;
+  j["gl_renderer"] = gl.renderer;
+  j["gl_version"] = gl.version;
   return j;
 }
 

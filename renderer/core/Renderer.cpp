@@ -392,12 +392,17 @@ Renderer::~Renderer() {
   if (user == s_.get()) glDebugMessageCallback(nullptr, nullptr);
 }
 
-std::string Renderer::glDescription() const {
+Renderer::GlStrings Renderer::glStrings() const {
   auto str = [](GLenum e) {
     const char* p = reinterpret_cast<const char*>(glGetString(e));
     return std::string(p ? p : "?");
   };
-  return str(GL_RENDERER) + " | " + str(GL_VERSION);
+  return {str(GL_VENDOR), str(GL_RENDERER), str(GL_VERSION)};
+}
+
+std::string Renderer::glDescription() const {
+  const GlStrings gl = glStrings();
+  return gl.renderer + " | " + gl.version;
 }
 
 Renderer::FrameSizeLimit Renderer::maxFrameSize() {

@@ -249,8 +249,13 @@ class Renderer {
   static const std::vector<TechniqueInfo>& techniques();
   static const TechniqueInfo* findTechnique(std::string_view id);
 
-  /// GL_VENDOR / GL_RENDERER / GL_VERSION of the context.
+  /// "GL_RENDERER | GL_VERSION" of the context.
   std::string glDescription() const;
+  /// GL_VENDOR, GL_RENDERER and GL_VERSION of the context ("?" for one GL does not give).
+  struct GlStrings {
+    std::string vendor, renderer, version;
+  };
+  GlStrings glStrings() const;
 
   /// The largest frame the current context renders: per side the smallest of
   /// GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE and GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT.

@@ -358,8 +358,10 @@ void SceneBuilder::addCameraPath(const std::string& name, int cameraNode,
 
 std::string SceneBuilder::write(const std::string& path) {
   tinygltf::TinyGLTF writer;
+  // FILE.glb: binary glTF, the buffer in its BIN chunk; else JSON with base64 buffers.
+  const bool binary = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
   if (!writer.WriteGltfSceneToFile(&model_, path, /*embedImages=*/true, /*embedBuffers=*/true,
-                                   /*prettyPrint=*/true, /*writeBinary=*/false))
+                                   /*prettyPrint=*/!binary, /*writeBinary=*/binary))
     return "could not write " + path;
   return "";
 }

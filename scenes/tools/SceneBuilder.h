@@ -77,7 +77,7 @@ class SceneBuilder {
                      const std::vector<CameraKeyframe>& keys);
 
   std::size_t triangleCount() const { return triangles_; }
-  /// Writes the .gltf; returns an error message or "".
+  /// Writes the .gltf (a path ending in .glb: binary glTF); returns an error message or "".
   std::string write(const std::string& path);
 
  private:

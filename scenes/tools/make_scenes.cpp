@@ -2,10 +2,12 @@
 // test fixtures (tests/data) and CPU ray-cast previews of every camera bookmark.
 // Each scene models only what its lesson needs; see scenes/README.md for what each teaches.
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "SceneBuilder.h"
@@ -15,9 +17,10 @@
 
 namespace sl::gen {
 
-// Defined in make_fixtures.cpp and Preview.cpp.
+// Defined in make_fixtures.cpp, Preview.cpp and make_sponza_class.cpp.
 int writeFixtures(const std::filesystem::path& dir);
 int writePreviews(const Scene& scene, const std::filesystem::path& dir);
+SceneBuilder makeSponzaClass(std::size_t targetTriangles);
 
 namespace {
 
@@ -465,9 +468,10 @@ SceneBuilder makeYard() {
   return b;
 }
 
-int writeScene(SceneBuilder builder, const std::string& name, const std::filesystem::path& dir,
-               const std::filesystem::path& previewDir) {
-  std::filesystem::path path = dir / (name + ".gltf");
+/// Writes `builder` to `path` (.gltf or .glb), reads it back through the real loader and
+/// prints what scenes/README.md lists (first line: "PATH: N triangles, ...").
+int writeSceneFile(SceneBuilder builder, const std::filesystem::path& path,
+                   const std::filesystem::path& previewDir) {
   if (std::string err = builder.write(path.string()); !err.empty()) {
     std::fprintf(stderr, "%s\n", err.c_str());
     return 1;
@@ -501,16 +505,40 @@ int writeScene(SceneBuilder builder, const std::string& name, const std::filesys
   return 0;
 }
 
+int writeScene(SceneBuilder builder, const std::string& name, const std::filesystem::path& dir,
+               const std::filesystem::path& previewDir) {
+  return writeSceneFile(std::move(builder), dir / (name + ".gltf"), previewDir);
+}
+
 }  // namespace
 }  // namespace sl::gen
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
-  fs::path scenesDir, fixturesDir, previewDir;
+  fs::path scenesDir, fixturesDir, previewDir, sponzaFile;
+  constexpr long kSponzaDefaultTriangles = 262000;  // Crytek Sponza: 262 k (DA-RTW poster)
+  long sponzaTriangles = kSponzaDefaultTriangles;
+  bool trianglesGiven = false;
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
     auto value = [&]() -> fs::path { return i + 1 < argc ? fs::path(argv[++i]) : fs::path(); };
-    if (arg == "--scenes") {
+    if (arg == "--sponza-class") {
+      sponzaFile = value();
+      if (sponzaFile.empty()) {
+        std::fprintf(stderr, "--sponza-class: missing the file to write (OUT.glb or OUT.gltf)\n");
+        return 2;
+      }
+    } else if (arg == "--triangles") {
+      const std::string text = value().string();
+      char* end = nullptr;
+      sponzaTriangles = std::strtol(text.c_str(), &end, 10);
+      trianglesGiven = true;
+      if (text.empty() || *end != '\0' || sponzaTriangles < 5000 || sponzaTriangles > 20000000) {
+        std::fprintf(stderr, "--triangles: expected a whole number 5000..20000000, got '%s'\n",
+                     text.c_str());
+        return 2;
+      }
+    } else if (arg == "--scenes") {
       scenesDir = value();
     } else if (arg == "--fixtures") {
       fixturesDir = value();
@@ -519,14 +547,32 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: %s [--scenes DIR] [--fixtures DIR] [--preview DIR]\n"
+                   "       %s --sponza-class OUT.glb [--triangles N]\n"
                    "  --scenes DIR    write the built-in scenes (plane-box, diagonal, corridor, "
                    "default, dueling, spot-box, point-box, omni-room, spot-yard, thin-pole) as "
                    "DIR/<name>.gltf\n"
                    "  --fixtures DIR  write the loader's test fixtures into DIR\n"
-                   "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n",
-                   argv[0]);
+                   "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n"
+                   "  --sponza-class OUT.glb  write a generated atrium for timings (floor, two "
+                   "storeys of arcades, walls, drapes, an open roof, a sun, camera 'atrium') with "
+                   "at most --triangles N triangles (default %ld, as the Crytek Sponza of the "
+                   "DA-RTW poster); .gltf writes JSON\n",
+                   argv[0], argv[0], kSponzaDefaultTriangles);
       return 2;
     }
+  }
+  if (!sponzaFile.empty()) {
+    if (!scenesDir.empty() || !fixturesDir.empty() || !previewDir.empty()) {
+      std::fprintf(stderr, "--sponza-class: give it alone (with --triangles N)\n");
+      return 2;
+    }
+    if (sponzaFile.has_parent_path()) fs::create_directories(sponzaFile.parent_path());
+    return sl::gen::writeSceneFile(sl::gen::makeSponzaClass(std::size_t(sponzaTriangles)),
+                                   sponzaFile, {});
+  }
+  if (trianglesGiven) {
+    std::fprintf(stderr, "--triangles: only with --sponza-class OUT.glb\n");
+    return 2;
   }
   if (scenesDir.empty() && fixturesDir.empty()) {
     std::fprintf(stderr, "nothing to do: give --scenes DIR and/or --fixtures DIR (see --help)\n");

@@ -11,11 +11,6 @@ namespace sl {
 
 namespace {
 
-bool updateGoldenRequested() {
-  const char* v = std::getenv("SHADOWLAB_UPDATE_GOLDEN");
-  return v && std::string_view(v) == "1";
-}
-
 std::string percent(double fraction) {
   std::ostringstream s;
   s.precision(4);
@@ -24,6 +19,10 @@ std::string percent(double fraction) {
 }
 
 }  // namespace
+
+bool goldenUpdateRequested(const char* environmentValue) {
+  return environmentValue && std::string_view(environmentValue) == "1";
+}
 
 ImageRGBA8 makeGoldenDiffImage(const ImageRGBA8& candidate, const ImageRGBA8& golden,
                                int maxChannelDiff, std::size_t* failing, int* maxDiff) {
@@ -60,7 +59,7 @@ ImageRGBA8 makeGoldenDiffImage(const ImageRGBA8& candidate, const ImageRGBA8& go
 
 GoldenResult compareToGolden(const ImageRGBA8& candidate, const std::filesystem::path& golden,
                              GoldenTolerance tolerance, const std::filesystem::path& outDir,
-                             const std::string& name) {
+                             const std::string& name, std::optional<bool> update) {
   GoldenResult r;
   if (!candidate.valid()) {
     r.failingFraction = 1.0;
@@ -102,7 +101,7 @@ GoldenResult compareToGolden(const ImageRGBA8& candidate, const std::filesystem:
   if (problem.empty()) problem = counts + "; golden " + golden.string();
 
   // Bless: replace the golden with the candidate.
-  if (updateGoldenRequested()) {
+  if (update.value_or(goldenUpdateRequested(std::getenv("SHADOWLAB_UPDATE_GOLDEN")))) {
     if (auto err = writeImage(golden, candidate)) {
       r.message = name + ": SHADOWLAB_UPDATE_GOLDEN=1 but " + *err + " (" + problem + ")";
       return r;

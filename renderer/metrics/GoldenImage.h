@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "metrics/Image.h"
@@ -30,12 +31,15 @@ struct GoldenResult {
 ///   `outDir/name.candidate.png` and `outDir/name.diff.png` (failing pixels bright red over
 ///   a dim grey copy of the candidate; pixels outside the golden count as failing) and the
 ///   message says where they are and how to bless the candidate as the new golden.
-/// - With environment variable SHADOWLAB_UPDATE_GOLDEN=1, a comparison that would fail
-///   writes the candidate to `golden` instead (creating directories) and passes, the
-///   message saying so; a golden that already passes is left untouched (no churn).
+/// - With `update` (empty: environment variable SHADOWLAB_UPDATE_GOLDEN=1), a comparison
+///   that would fail writes the candidate to `golden` instead (creating directories) and
+///   passes, the message saying so; a golden that already passes is left untouched (no churn).
 GoldenResult compareToGolden(const ImageRGBA8& candidate, const std::filesystem::path& golden,
                              GoldenTolerance tolerance, const std::filesystem::path& outDir,
-                             const std::string& name);
+                             const std::string& name, std::optional<bool> update = std::nullopt);
+
+/// Whether SHADOWLAB_UPDATE_GOLDEN's value (null: unset) asks to bless goldens: exactly "1".
+bool goldenUpdateRequested(const char* environmentValue);
 
 /// The diff image used above: a dim grey copy of `candidate` with every pixel that
 /// differs from `golden` by more than maxChannelDiff (or lies outside it) in bright red.

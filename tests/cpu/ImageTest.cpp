@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
@@ -38,17 +37,6 @@ ImageRGBA8 gradient(int w, int h) {
     }
   return img;
 }
-
-/// Sets SHADOWLAB_UPDATE_GOLDEN for the lifetime of the object.
-struct UpdateGoldenEnv {
-  explicit UpdateGoldenEnv(const char* value) {
-    if (value)
-      setenv("SHADOWLAB_UPDATE_GOLDEN", value, 1);
-    else
-      unsetenv("SHADOWLAB_UPDATE_GOLDEN");
-  }
-  ~UpdateGoldenEnv() { unsetenv("SHADOWLAB_UPDATE_GOLDEN"); }
-};
 
 TEST(Image, PngRoundTripIsExact) {
   const fs::path dir = testDir("RoundTrip");
@@ -135,14 +123,14 @@ TEST(Image, ColorMapIsMonotoneInLightness) {
 }
 
 TEST(GoldenImage, PassesWithinTolerance) {
-  UpdateGoldenEnv env(nullptr);
   const fs::path dir = testDir("Pass");
   const ImageRGBA8 golden = gradient(20, 10);
   ASSERT_FALSE(writeImage(dir / "golden.png", golden));
   ImageRGBA8 candidate = golden;
   candidate.pixel(3, 4)[1] += 2;     // within maxChannelDiff
   candidate.pixel(5, 5)[0] ^= 0x80;  // one failing pixel = 0.5 %, allowed 1 %
-  const GoldenResult r = compareToGolden(candidate, dir / "golden.png", {2, 0.01}, dir, "pass");
+  const GoldenResult r =
+      compareToGolden(candidate, dir / "golden.png", {2, 0.01}, dir, "pass", false);
   EXPECT_TRUE(r.pass) << r.message;
   EXPECT_DOUBLE_EQ(r.failingFraction, 1.0 / 200.0);
   EXPECT_EQ(r.maxDiff, 128);
@@ -151,14 +139,14 @@ TEST(GoldenImage, PassesWithinTolerance) {
 }
 
 TEST(GoldenImage, FailureWritesCandidateAndDiff) {
-  UpdateGoldenEnv env(nullptr);
   const fs::path dir = testDir("Fail");
   const ImageRGBA8 golden = gradient(20, 10);
   ASSERT_FALSE(writeImage(dir / "golden.png", golden));
   ImageRGBA8 candidate = golden;
   for (int x = 0; x < 10; ++x) candidate.pixel(x, 2)[2] += 3;  // 10 pixels, diff 3 > 2
   const fs::path out = dir / "out";
-  const GoldenResult r = compareToGolden(candidate, dir / "golden.png", {2, 0.01}, out, "fail");
+  const GoldenResult r =
+      compareToGolden(candidate, dir / "golden.png", {2, 0.01}, out, "fail", false);
   EXPECT_FALSE(r.pass);
   EXPECT_DOUBLE_EQ(r.failingFraction, 10.0 / 200.0);
   EXPECT_EQ(r.maxDiff, 3);
@@ -185,11 +173,10 @@ TEST(GoldenImage, FailureWritesCandidateAndDiff) {
 }
 
 TEST(GoldenImage, MissingGoldenAndSizeMismatchFail) {
-  UpdateGoldenEnv env(nullptr);
   const fs::path dir = testDir("Missing");
   const ImageRGBA8 candidate = gradient(8, 8);
   const GoldenResult missing =
-      compareToGolden(candidate, dir / "nope.png", {0, 0.0}, dir, "missing");
+      compareToGolden(candidate, dir / "nope.png", {0, 0.0}, dir, "missing", false);
   EXPECT_FALSE(missing.pass);
   EXPECT_EQ(missing.failingFraction, 1.0);
   EXPECT_NE(missing.message.find("nope.png"), std::string::npos) << missing.message;
@@ -197,7 +184,8 @@ TEST(GoldenImage, MissingGoldenAndSizeMismatchFail) {
   EXPECT_TRUE(fs::exists(dir / "missing.diff.png"));
 
   ASSERT_FALSE(writeImage(dir / "small.png", gradient(4, 8)));
-  const GoldenResult size = compareToGolden(candidate, dir / "small.png", {255, 1.0}, dir, "size");
+  const GoldenResult size =
+      compareToGolden(candidate, dir / "small.png", {255, 1.0}, dir, "size", false);
   EXPECT_FALSE(size.pass);  // even with a tolerance that accepts anything
   EXPECT_NE(size.message.find("size mismatch"), std::string::npos) << size.message;
   EXPECT_TRUE(fs::exists(dir / "size.diff.png"));
@@ -209,25 +197,31 @@ TEST(GoldenImage, UpdateModeBlessesTheCandidate) {
   ImageRGBA8 candidate = old;
   for (std::uint8_t& b : candidate.pixels) b = std::uint8_t(255 - b);
   const fs::path golden = dir / "goldens" / "scene.png";
-  {
-    UpdateGoldenEnv env("1");
-    // Missing golden: written (directories created), passes.
-    const GoldenResult created = compareToGolden(old, golden, {0, 0.0}, dir, "scene");
-    EXPECT_TRUE(created.pass) << created.message;
-    EXPECT_NE(created.message.find("golden updated"), std::string::npos) << created.message;
-    ASSERT_TRUE(fs::exists(golden));
-    // Different candidate: replaces the golden, passes, says so.
-    const GoldenResult updated = compareToGolden(candidate, golden, {0, 0.0}, dir, "scene");
-    EXPECT_TRUE(updated.pass) << updated.message;
-    EXPECT_NE(updated.message.find("golden updated"), std::string::npos) << updated.message;
-    EXPECT_FALSE(fs::exists(dir / "scene.candidate.png"));
-  }
+  // Missing golden: written (directories created), passes.
+  const GoldenResult created = compareToGolden(old, golden, {0, 0.0}, dir, "scene", true);
+  EXPECT_TRUE(created.pass) << created.message;
+  EXPECT_NE(created.message.find("golden updated"), std::string::npos) << created.message;
+  ASSERT_TRUE(fs::exists(golden));
+  // Different candidate: replaces the golden, passes, says so.
+  const GoldenResult updated = compareToGolden(candidate, golden, {0, 0.0}, dir, "scene", true);
+  EXPECT_TRUE(updated.pass) << updated.message;
+  EXPECT_NE(updated.message.find("golden updated"), std::string::npos) << updated.message;
+  EXPECT_FALSE(fs::exists(dir / "scene.candidate.png"));
   const auto blessed = readImage(golden);
   ASSERT_TRUE(blessed);
   EXPECT_EQ(blessed->pixels, candidate.pixels);
-  // Without the variable, the blessed golden now passes and the old image fails.
-  EXPECT_TRUE(compareToGolden(candidate, golden, {0, 0.0}, dir, "scene").pass);
-  EXPECT_FALSE(compareToGolden(old, golden, {0, 0.0}, dir, "scene").pass);
+  // Without updating, the blessed golden now passes and the old image fails.
+  EXPECT_TRUE(compareToGolden(candidate, golden, {0, 0.0}, dir, "scene", false).pass);
+  EXPECT_FALSE(compareToGolden(old, golden, {0, 0.0}, dir, "scene", false).pass);
+}
+
+// SHADOWLAB_UPDATE_GOLDEN's value (given here, never set in this process): only "1" blesses.
+TEST(GoldenImage, UpdateRequestedOnlyByOne) {
+  EXPECT_TRUE(goldenUpdateRequested("1"));
+  EXPECT_FALSE(goldenUpdateRequested(nullptr));
+  EXPECT_FALSE(goldenUpdateRequested(""));
+  EXPECT_FALSE(goldenUpdateRequested("0"));
+  EXPECT_FALSE(goldenUpdateRequested("yes"));
 }
 
 }  // namespace

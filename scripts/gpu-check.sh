@@ -283,7 +283,7 @@ END {
   print "| timing method | " method (method == "GL_TIME_ELAPSED" ? " (timer queries, GPU time)" : method ~ /glFinish/ ? " (software GL: glFinish and a wall clock per pass)" : "") " |" > md_out
   print "| scene | generated atrium (`shadowlab-make-scenes --sponza-class`), " triangles " triangles, camera `atrium` |" > md_out
   print "| frame | " width "x" height ", shadow map " shadow_map "² (uniform, rtw-backward, da-rtw; fvsm and rmsm at their defaults) |" > md_out
-  print "| frames | medians over " frames " measured frames; da-rtw after " warmup_frames " warm-up frame(s) until its rotation settled |" > md_out
+  print "| frames | medians over " frames " measured frame" (frames == 1 ? "" : "s") "; da-rtw after " warmup_frames " warm-up frame(s) until its rotation settled |" > md_out
   print "| Embree reference | " reference " |" > md_out
   print "| binaries | " layout ", `" cli "` |" > md_out
   print "| run time | " elapsed " s |\n" > md_out
@@ -303,7 +303,7 @@ END {
   print "| **Total shadow mapping** | | **" ms(shadow) "** | **2.06** |\n" > md_out
 
   print "## Whole frame per technique (interleaved)\n" > md_out
-  print "`shadowlab-cli bench` renders the techniques in turn, frame by frame (" bench_frames " frames, medians), so drift hits all alike. A frame is every pass, the camera\047s included; MiB: the shadow maps\047 memory.\n" > md_out
+  print "`shadowlab-cli bench` renders the techniques in turn, frame by frame (" bench_frames " frame" (bench_frames == 1 ? "" : "s") ", medians), so drift hits all alike. A frame is every pass, the camera\047s included; MiB: the shadow maps\047 memory.\n" > md_out
   print "| technique | parameters | ms | ratio to uniform | MiB |" > md_out
   print "|---|---|---:|---:|---:|" > md_out
   for (i = 1; i <= nt; i++) {

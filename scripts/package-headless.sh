@@ -2,7 +2,7 @@
 # Builds the headless folder that travels: shadowlab-cli without Qt, OpenImageIO or Embree
 # (PNG through stb; no ray-traced reference: timings only), with the scene generator, the
 # shaders, the scenes and scripts/gpu-check.sh, and the non-system libraries it needs beside
-# it ($ORIGIN/../lib; libstdc++ linked in). The GL driver (libEGL, libGL) is the target's.
+# it ($ORIGIN/../lib, libstdc++ included). The GL driver (libEGL, libGL) is the target's.
 #
 #   scripts/package-headless.sh [--build DIR (build-headless)] [--out FOLDER (DIR/shadowlab-headless)]
 #
@@ -33,10 +33,11 @@ trap 'rm -rf "$stage"' EXIT
 cmake --install "$build" --prefix "$stage" --strip >/dev/null
 [ -f scripts/gpu-check.sh ] && install -m 755 scripts/gpu-check.sh "$stage/gpu-check.sh"
 
-# Non-system libraries beside the programs. Not copied: the C library family (the target
-# has its own) and the GL/EGL dispatch libraries (the target's driver provides them).
+# Non-system libraries beside the programs, libstdc++ and libgcc_s included (a target with an
+# older GCC runtime still runs them). Not copied: the C library family (the target has its
+# own) and the GL/EGL dispatch libraries (the target's driver provides them).
 mkdir -p "$stage/lib"
-system='^(linux-vdso|ld-linux|libc|libm|libdl|libpthread|librt|libgcc_s|libstdc\+\+|libEGL|libGL|libGLX|libGLdispatch|libOpenGL)\.'
+system='^(linux-vdso|ld-linux|libc|libm|libdl|libpthread|librt|libEGL|libGL|libGLX|libGLdispatch|libOpenGL)\.'
 for exe in "$stage"/bin/*; do
   ldd "$exe" | awk '/=>/ && $3 ~ /^\// {print $1, $3}'
 done | sort -u | while read -r name path; do

@@ -148,7 +148,15 @@ QJsonObject GrabRun::publicationJson() const {
   o[QStringLiteral("publication_bytes")] = static_cast<qint64>(r->stats().publicationBytes);
   o[QStringLiteral("panels")] = w_.docks_.drawnValues();
   o[QStringLiteral("frame_ms")] = r->stats().totalMs;
-  if (auto error = viewport->errorPct()) o[QStringLiteral("error_pct")] = *error;
+  // Never 0 for a frame that measured nothing: null, and why.
+  if (auto error = viewport->errorPct())
+    o[QStringLiteral("error_pct")] = *error;
+  else if (!viewport->errorNotMeasured().isEmpty()) {
+    o[QStringLiteral("error_pct")] = QJsonValue::Null;
+    o[QStringLiteral("error_unmeasured")] = viewport->errorNotMeasured();
+  }
+  if (!viewport->frameFailure().isEmpty())
+    o[QStringLiteral("frame_failure")] = viewport->frameFailure();
   if (!viewport->splitTechnique().empty()) {
     o[QStringLiteral("split_technique")] = QString::fromStdString(viewport->splitTechnique());
     if (auto error = viewport->splitErrorPct()) o[QStringLiteral("split_error_pct")] = *error;

@@ -106,6 +106,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
           &MainWindow::onRendererAboutToBeDestroyed);
   connect(viewport_, &ViewportWidget::frameRendered, this, &MainWindow::onFrameRendered);
   connect(viewport_, &ViewportWidget::renderProblem, this, &MainWindow::onRenderProblem);
+  connect(viewport_, &ViewportWidget::errorUnmeasured, this, &MainWindow::onErrorUnmeasured);
   connect(viewport_, &ViewportWidget::initializationFailed, this,
           &MainWindow::onInitializationFailed);
   connect(viewport_, &ViewportWidget::errorComputed, this, &MainWindow::onErrorComputed);
@@ -396,11 +397,17 @@ void MainWindow::onFrameRendered() {
   if (!renderer) return;
   splitSide_->onFrameRendered();
   const sl::FrameStats& stats = renderer->stats();
-  frameLabel_->setText(tr("frame %1 ms (%2)")
-                           .arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1)
-                           .arg(stats.timingMethod.empty()
-                                    ? tr("untimed")
-                                    : QString::fromStdString(stats.timingMethod)));
+  if (const QString failure = viewport_->frameFailure(); !failure.isEmpty()) {
+    frameLabel_->setText(tr("frame n/a (failed)"));
+    frameLabel_->setToolTip(failure);
+  } else {
+    frameLabel_->setToolTip({});
+    frameLabel_->setText(tr("frame %1 ms (%2)")
+                             .arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1)
+                             .arg(stats.timingMethod.empty()
+                                      ? tr("untimed")
+                                      : QString::fromStdString(stats.timingMethod)));
+  }
   timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
   timingPanel_->showStats(stats);
   if (viewport_->continuous()) updateLiveErrorLabel();
@@ -422,15 +429,29 @@ void MainWindow::onInitializationFailed(const QString& message) {
   QCoreApplication::exit(1);
 }
 
+void MainWindow::onErrorUnmeasured(const QString& why) {
+  errorLabel_->setEnabled(true);
+  if (viewport_->continuous()) return updateLiveErrorLabel();
+  errorLabel_->setText(tr("error n/a (%1)").arg(why));
+  errorLabel_->setToolTip(tr("The error of this view was not measured: %1").arg(why));
+}
+
 void MainWindow::onErrorComputed(double errorPct) {
   errorLabel_->setEnabled(true);
   if (viewport_->continuous()) return updateLiveErrorLabel();
   errorLabel_->setText(tr("error %1 %").arg(errorPct, 0, 'f', errorPct < 1 ? 3 : 2));
+  errorLabel_->setToolTip({});
 }
 
 void MainWindow::updateLiveErrorLabel() {
   if (!errorLabel_) return;  // (a lesson may turn continuous rendering on during setup)
   // Greyed while the number is an earlier view's (or there is none yet).
+  if (const QString failure = viewport_->frameFailure(); !failure.isEmpty()) {
+    errorLabel_->setEnabled(true);  // a failed frame is never measured, nor shown as 0
+    errorLabel_->setText(tr("error n/a (the frame failed)"));
+    errorLabel_->setToolTip(failure);
+    return;
+  }
   const auto live = viewport_->liveError();
   errorLabel_->setEnabled(live && !live->age.stale);
   errorLabel_->setText(viewport_->liveErrorText());

@@ -120,6 +120,7 @@ class MainWindow : public QMainWindow {
   void onRenderProblem(const QString& message);
   void onInitializationFailed(const QString& message);
   void onErrorComputed(double errorPct);
+  void onErrorUnmeasured(const QString& why);
   /// Continuous rendering: the live error with its reference's age (greyed when stale).
   void updateLiveErrorLabel();
   void onSceneComboActivated(int index);

@@ -93,7 +93,9 @@ void MainWindow::createActions() {
     errorLabel_->setEnabled(true);
     errorLabel_->setText(viewport_->errorPct()
                              ? tr("error %1 %").arg(*viewport_->errorPct(), 0, 'f', 3)
-                             : tr("error —"));
+                         : viewport_->errorNotMeasured().isEmpty()
+                             ? tr("error —")
+                             : tr("error n/a (%1)").arg(viewport_->errorNotMeasured()));
   });
   QAction* resetTemporal = view->addAction(tr("Reset &temporal state"), this, [this] {
     if (auto* r = viewport_->renderer()) r->resetTemporalState();

@@ -116,10 +116,12 @@ void PresenterMode::setActive(bool on) {
     arrangeDocks();
     fitScreen();
     w_.viewport_->setPointerHighlight(true);
+    w_.viewport_->setPresenting(true);  // full-size frames only: numbers a class reads
   } else {
     setFullPanel(false);
     active_ = false;
     w_.viewport_->setPointerHighlight(false);
+    w_.viewport_->setPresenting(false);
     if (app) {
       applyTheme(*app);
       QApplication::setFont(savedFont_);

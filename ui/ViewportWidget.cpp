@@ -42,8 +42,16 @@ bool isFlyKey(int key) {
   }
 }
 
-double errorPercentOf(const sl::ShadowErrorStats& stats) {
+/// The error of a frame, or nothing when it measured nothing (no covered pixel): never a 0
+/// that was not measured.
+std::optional<double> errorPercentOf(const sl::ShadowErrorStats& stats) {
+  if (stats.covered == 0) return std::nullopt;
   return stats.errorPct;
+}
+
+/// Why a frame's error is not a number ("no covered pixel"), for "error n/a (...)".
+QString unmeasuredReason(const sl::ShadowErrorStats& stats) {
+  return stats.covered == 0 ? QObject::tr("no covered pixel") : QString();
 }
 
 /// Index of `name` in the enum declaration of the shared parameter `key`, or -1.
@@ -57,12 +65,16 @@ int enumIndexOf(const sl::ParamSet& params, const char* key, const char* name) {
 
 /// "name · error 0.420 % · [note ·] 3.1 ms": the error first (a narrow half elides the end),
 /// `errorNote` (the live reference's age) right after it.
+/// `unmeasured`: why there is no error (a failed frame, no covered pixel): "error n/a (why)"
+/// instead of "error —" (not computed yet).
 QString captionFor(const std::string& techniqueId, const sl::FrameStats& stats,
-                   std::optional<double> errorPct, const QString& errorNote = {}) {
+                   std::optional<double> errorPct, const QString& errorNote = {},
+                   const QString& unmeasured = {}) {
   const sl::TechniqueInfo* info = sl::Renderer::findTechnique(techniqueId);
   QString s = info ? QString::fromStdString(info->name) : QString::fromStdString(techniqueId);
-  s += errorPct ? QStringLiteral("  \u00b7  error %1 %").arg(*errorPct, 0, 'f', 3)
-                : QStringLiteral("  \u00b7  error \u2014");
+  s += errorPct               ? QStringLiteral("  \u00b7  error %1 %").arg(*errorPct, 0, 'f', 3)
+       : unmeasured.isEmpty() ? QStringLiteral("  \u00b7  error \u2014")
+                              : QStringLiteral("  \u00b7  error n/a (%1)").arg(unmeasured);
   if (!errorNote.isEmpty()) s += QStringLiteral("  \u00b7  ") + errorNote;
   s += QStringLiteral("  \u00b7  %1 ms").arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1);
   return s;
@@ -326,6 +338,14 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   setMinimumSize(160, 120);
   errorTimer_.setSingleShot(true);
   connect(&errorTimer_, &QTimer::timeout, this, &ViewportWidget::computeErrorIfStill);
+  // Adaptive resolution: once the view is still, a reduced frame is redrawn at full size.
+  settleTimer_.setSingleShot(true);
+  connect(&settleTimer_, &QTimer::timeout, this, [this] {
+    if (frameDivisor_ == 1) return;
+    if (dragButton_ != Qt::NoButton || !heldKeys_.empty()) return settleTimer_.start();
+    fullSizeNext_ = true;
+    update();
+  });
   flyTimer_.setInterval(kFlyTickMs);
   connect(&flyTimer_, &QTimer::timeout, this, &ViewportWidget::flyStep);
 }
@@ -427,10 +447,12 @@ void ViewportWidget::paintGL() {
   // Adaptive resolution: render at 1/divisor of the size (never below the smallest drawn
   // view), stretched over it by the renderer.
   const sl::ParamSet& shared = renderer_->rendererParams();
-  const bool adaptive =
-      adaptiveAllowed_ && shared.has("view.adaptive") && shared.getBool("view.adaptive");
+  const bool adaptive = adaptiveActive();
   if (!adaptive && adaptive_.divisor() != 1) adaptive_.reset();
-  int divisor = adaptive_.divisor();
+  // A still view's settle frame (and an export's) is drawn at full size: what stays on
+  // screen, and what is measured, is never the reduced image.
+  const bool settle = std::exchange(fullSizeNext_, false);
+  int divisor = settle ? 1 : adaptive_.divisor();
   while (divisor > 1 && (mainWidth / divisor < kMinDrawnPx || h / divisor < kMinDrawnPx))
     divisor /= 2;
   if (divisor != frameDivisor_) markViewChanged();  // another image: the error is not its
@@ -442,7 +464,7 @@ void ViewportWidget::paintGL() {
   // resolves tile by tile spends at most half the budget on tiles per frame and keeps its
   // result between frames, so that no frame blocks the event loop for seconds
   // (virtual-tiled's 256 tiles). Scripted runs and on-demand frames resolve in one call.
-  const bool progressive = adaptive && continuous_ && !paused_;
+  const bool progressive = adaptiveAllowed_ && continuous_ && !paused_;
   renderer_->setProgressiveBudget(
       progressive ? kProgressiveShare * double(shared.getInt("view.adaptive.budget_ms")) : 0.0);
   QElapsedTimer frameClock;
@@ -457,10 +479,11 @@ void ViewportWidget::paintGL() {
     error = std::string("renderer: ") + e.what();
   }
   lastFrameMs_ = std::max(double(frameClock.nsecsElapsed()) / 1e6, renderer_->stats().totalMs);
+  frameFailure_ = error ? QString::fromStdString(*error) : QString();
   // A progressive frame's tiles are bounded by their own budget: the resolution follows the
   // rest (the per-pixel work), else a slow tile would drop the view and restart the tiles.
   const auto& progress = renderer_->stats().progress;
-  if (adaptive && !error)
+  if (adaptive && !error && !settle)
     adaptive_.onFrame(progress ? std::max(0.0, lastFrameMs_ - progress->spentMs) : lastFrameMs_,
                       double(shared.getInt("view.adaptive.budget_ms")));
   if (progress && !error)
@@ -485,6 +508,10 @@ void ViewportWidget::paintGL() {
   probeHover();  // the frame changed under a still mouse
   // On demand (or paused): the error is computed once the view is still (restarted by every
   // frame). Continuous: the live reference above keeps it.
+  if (frameDivisor_ > 1 && (!continuous_ || paused_))
+    settleTimer_.start(kSettleDelayMs);
+  else
+    settleTimer_.stop();
   if (partial)
     errorTimer_.stop();
   else if (!errorIsCurrent() && (!continuous_ || paused_))
@@ -667,16 +694,21 @@ void ViewportWidget::updateOverlayWidget() {
   if (split) {
     // Continuous rendering: each half's live error (its own reference) and how old it is.
     auto caption = [this](const std::string& id, const sl::FrameStats& stats,
-                          std::optional<double> exact, const std::optional<LiveError>& live) {
-      if (!continuous_) return captionFor(id, stats, errorIsCurrent() ? exact : std::nullopt);
-      return captionFor(id, stats, live ? std::optional(live->errorPct) : std::nullopt,
+                          std::optional<double> exact, const std::optional<LiveError>& live,
+                          const QString& unmeasured) {
+      if (!continuous_)
+        return captionFor(id, stats, errorIsCurrent() ? exact : std::nullopt, {},
+                          errorIsCurrent() ? unmeasured : QString());
+      const bool measured = live && live->unmeasured.isEmpty();
+      return captionFor(id, stats, measured ? std::optional(live->errorPct) : std::nullopt,
                         live ? QString::fromStdString(sl::describeReferenceAge(live->age))
-                             : tr("tracing the reference\u2026"));
+                             : tr("tracing the reference\u2026"),
+                        live ? live->unmeasured : QString());
     };
-    overlay_->leftCaption =
-        caption(renderer_->techniqueId(), renderer_->stats(), mainErrorPct_, liveError());
-    overlay_->rightCaption =
-        caption(splitTechniqueId_, splitRenderer_->stats(), splitErrorPct_, splitLiveError());
+    overlay_->leftCaption = caption(renderer_->techniqueId(), renderer_->stats(), mainErrorPct_,
+                                    liveError(), errorUnmeasured_);
+    overlay_->rightCaption = caption(splitTechniqueId_, splitRenderer_->stats(), splitErrorPct_,
+                                     splitLiveError(), splitErrorUnmeasured_);
   }
   overlay_->legend = ViewOverlay::Legend::None;
   if (renderer_ && renderer_->rendererParams().has("view.overlay")) {
@@ -1096,9 +1128,13 @@ void ViewportWidget::updateLiveReference() {
     done->trace.referenceMask = {};
     liveLatest_ = std::move(done);
     if (current) {
-      mainErrorPct_ = liveLatest_->trace.stats.errorPct;
+      mainErrorPct_ = errorPercentOf(liveLatest_->trace.stats);
+      errorUnmeasured_ = unmeasuredReason(liveLatest_->trace.stats);
       errorRevision_ = viewRevision_;
-      Q_EMIT errorComputed(*mainErrorPct_);
+      if (mainErrorPct_)
+        Q_EMIT errorComputed(*mainErrorPct_);
+      else
+        Q_EMIT errorUnmeasured(errorUnmeasured_);
     }
   }
   updateSplitLiveReference();
@@ -1137,6 +1173,7 @@ std::optional<ViewportWidget::LiveError> ViewportWidget::splitLiveError() const 
   if (!continuous_ || !splitLiveLatest_ || splitTechniqueId_.empty()) return std::nullopt;
   LiveError e;
   e.errorPct = splitLiveLatest_->trace.stats.errorPct;
+  e.unmeasured = unmeasuredReason(splitLiveLatest_->trace.stats);
   e.age = sl::referenceAge(*splitLiveLatest_, viewRevision_, framesRendered_,
                            sl::AsyncReference::steadySeconds());
   return e;
@@ -1176,6 +1213,7 @@ std::optional<ViewportWidget::LiveError> ViewportWidget::liveError() const {
   if (!continuous_ || !liveLatest_) return std::nullopt;
   LiveError e;
   e.errorPct = liveLatest_->trace.stats.errorPct;
+  e.unmeasured = unmeasuredReason(liveLatest_->trace.stats);
   e.age = sl::referenceAge(*liveLatest_, viewRevision_, framesRendered_,
                            sl::AsyncReference::steadySeconds());
   return e;
@@ -1189,8 +1227,9 @@ QString ViewportWidget::liveErrorText() const {
   if (!continuous_) return {};
   const auto e = liveError();
   if (!e) return tr("error \u2014  \u00b7  tracing the reference\u2026");
-  const QString pct = QString::number(e->errorPct, 'f', e->errorPct < 1 ? 3 : 2);
   const QString age = QString::fromStdString(sl::describeReferenceAge(e->age));
+  if (!e->unmeasured.isEmpty()) return tr("error n/a (%1)  \u00b7  %2").arg(e->unmeasured, age);
+  const QString pct = QString::number(e->errorPct, 'f', e->errorPct < 1 ? 3 : 2);
   if (e->age.stale) return tr("error %1 %  \u00b7  %2  \u00b7  re-tracing").arg(pct, age);
   return tr("error %1 %  \u00b7  %2").arg(pct, age);
 }
@@ -1198,6 +1237,23 @@ QString ViewportWidget::liveErrorText() const {
 void ViewportWidget::setAdaptiveAllowed(bool allowed) {
   adaptiveAllowed_ = allowed;
   update();
+}
+
+void ViewportWidget::setPresenting(bool on) {
+  presenting_ = on;
+  update();
+}
+
+bool ViewportWidget::adaptiveActive() const {
+  if (!adaptiveAllowed_ || presenting_ || !splitTechniqueId_.empty() || !renderer_) return false;
+  const sl::ParamSet& shared = renderer_->rendererParams();
+  return shared.has("view.adaptive") && shared.getBool("view.adaptive");
+}
+
+void ViewportWidget::renderFullSizeNow() {
+  if (frameDivisor_ == 1 || !renderer_) return;
+  fullSizeNext_ = true;
+  repaint();
 }
 
 QString ViewportWidget::resolutionNote() const {
@@ -1238,20 +1294,41 @@ void ViewportWidget::setProbeWanted(bool wanted) {
 
 std::optional<double> ViewportWidget::computeErrorNow() {
   if (!renderer_ || framesRendered_ == 0) return std::nullopt;
+  // A frame that failed is not measured: its image is the neutral frame, not the technique's.
+  if (!frameFailure_.isEmpty()) {
+    errorRevision_ = viewRevision_;
+    mainErrorPct_.reset();
+    errorUnmeasured_ = tr("the frame failed: %1").arg(frameFailure_);
+    Q_EMIT errorUnmeasured(errorUnmeasured_);
+    updateOverlayWidget();
+    return std::nullopt;
+  }
   makeCurrent();
   std::optional<double> pct;
+  bool computed = false;
   try {
-    pct = errorPercentOf(renderer_->computeError().stats);
-    if (!splitTechniqueId_.empty() && splitRenderer_)
-      splitErrorPct_ = errorPercentOf(splitRenderer_->computeError().stats);
+    const sl::ShadowErrorStats main = renderer_->computeError().stats;
+    pct = errorPercentOf(main);
+    errorUnmeasured_ = unmeasuredReason(main);
+    computed = true;
+    if (!splitTechniqueId_.empty() && splitRenderer_) {
+      const sl::ShadowErrorStats split = splitRenderer_->computeError().stats;
+      splitErrorPct_ = errorPercentOf(split);
+      splitErrorUnmeasured_ = unmeasuredReason(split);
+    }
   } catch (const std::exception& e) {
     Q_EMIT renderProblem(
         QStringLiteral("error metric failed: %1").arg(QString::fromStdString(e.what())));
   }
   doneCurrent();
-  if (!pct) return std::nullopt;
+  if (!computed) return std::nullopt;
   errorRevision_ = viewRevision_;
   mainErrorPct_ = pct;
+  if (!pct) {
+    Q_EMIT errorUnmeasured(errorUnmeasured_);
+    updateOverlayWidget();
+    return std::nullopt;
+  }
   Q_EMIT errorComputed(*pct);
   // The error overlay shows the reference just computed: draw it (one more frame, unless
   // paused, where the frozen frame must stay the one that was measured).
@@ -1285,6 +1362,7 @@ void ViewportWidget::computeErrorIfStill() {
 std::vector<FigureCell> ViewportWidget::figureCells(int dilatePx) {
   std::vector<FigureCell> cells;
   if (!renderer_ || framesRendered_ == 0) return cells;
+  renderFullSizeNow();  // a figure is never the reduced (adaptive resolution) image
   makeCurrent();
   try {
     for (sl::Renderer* r :

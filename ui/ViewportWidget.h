@@ -72,6 +72,7 @@ class ViewportWidget : public QOpenGLWidget {
   /// that earlier view's, and a trace of the current view is under way or due).
   struct LiveError {
     double errorPct = 0.0;
+    QString unmeasured;  ///< why errorPct is not a measurement (no covered pixel); empty: it is
     sl::ReferenceAge age;
   };
   std::optional<LiveError> liveError() const;
@@ -109,6 +110,9 @@ class ViewportWidget : public QOpenGLWidget {
   void setAdaptiveAllowed(bool allowed);
   /// The divisor the last frame was rendered at (1: full size).
   int internalDivisor() const { return frameDivisor_; }
+  /// The adaptive state's divisor (1: frames fit at full size; a settle frame may still be
+  /// drawn at full size while it is 2).
+  int adaptiveDivisor() const { return adaptive_.divisor(); }
   /// Wall-clock milliseconds of the last frame (both halves; at least its timed passes).
   double lastFrameMs() const { return lastFrameMs_; }
   /// "internal resolution 240×150: frame took 610 ms" while reduced, else empty.
@@ -136,6 +140,8 @@ class ViewportWidget : public QOpenGLWidget {
 
   /// How long the view must be still before the error is recomputed.
   static constexpr int kErrorDelayMs = 1200;
+  /// A reduced (adaptive resolution) frame of a still view is redrawn at full size after this.
+  static constexpr int kSettleDelayMs = 200;
   /// Views (and split halves) narrower or lower than this are not rendered.
   static constexpr int kMinDrawnPx = 16;
 
@@ -160,6 +166,13 @@ class ViewportWidget : public QOpenGLWidget {
 
   /// Presenter mode: a ring follows the mouse over the view (the pointer highlight).
   void setPointerHighlight(bool on);
+  /// Presenter mode: adaptive resolution is never used (every frame at full size).
+  void setPresenting(bool on);
+  /// Adaptive resolution is used for this frame: an interactive window, view.adaptive on, no
+  /// presenter mode and no split view (whose halves are compared at full size).
+  bool adaptiveActive() const;
+  /// Renders the view at full size now when its last frame was reduced (exports, grabs).
+  void renderFullSizeNow();
   bool pointerHighlight() const { return pointerHighlight_; }
 
   /// The zoom inset: `area` of the view (widget pixels) magnified by a whole factor,
@@ -218,6 +231,11 @@ class ViewportWidget : public QOpenGLWidget {
 
   /// The error of the (left half of the) view, once computed for it.
   std::optional<double> errorPct() const { return errorIsCurrent() ? mainErrorPct_ : std::nullopt; }
+  /// Why the current view's error is n/a (a failed frame, no covered pixel); empty when it
+  /// was measured or not evaluated yet.
+  QString errorNotMeasured() const { return errorIsCurrent() ? errorUnmeasured_ : QString(); }
+  /// The last main frame's problem (empty: it rendered): its time and error are not numbers.
+  QString frameFailure() const { return frameFailure_; }
   /// The error of the right half (split view), once computed.
   std::optional<double> splitErrorPct() const { return splitErrorPct_; }
 
@@ -242,6 +260,9 @@ class ViewportWidget : public QOpenGLWidget {
   void viewChanged();
   /// A fresh error for the current view, in percent of covered pixels.
   void errorComputed(double errorPct);
+  /// The error of the current view was evaluated and is not a number: `why` (the frame
+  /// failed: its problem; no covered pixel). Never shown as 0.
+  void errorUnmeasured(const QString& why);
   /// The main camera's pixel under the mouse (the left half in split view), read from the
   /// last frame on every mouse move and every new frame; nothing when the mouse left the
   /// view, is over the right half or the outside view is shown.
@@ -293,6 +314,8 @@ class ViewportWidget : public QOpenGLWidget {
   bool splitParamsPending_ = false;                 ///< not yet applied to splitRenderer_
   std::optional<double> splitErrorPct_;
   std::optional<double> mainErrorPct_;
+  QString errorUnmeasured_, splitErrorUnmeasured_;  ///< why the error is n/a (empty: measured)
+  QString frameFailure_;  ///< the last main frame's problem (empty: it rendered)
   QImage splitImage_;
   ViewOverlay* overlay_ = nullptr;
   bool paused_ = false;
@@ -326,6 +349,11 @@ class ViewportWidget : public QOpenGLWidget {
                                                       std::uint64_t frameNumber);
   bool probeWanted_ = false;
   bool adaptiveAllowed_ = false;
+  bool presenting_ = false;
+  /// The next frame renders at full size whatever the adaptive divisor (the still view's
+  /// settle frame, exports).
+  bool fullSizeNext_ = false;
+  QTimer settleTimer_;  ///< a reduced frame of a still view is redrawn at full size
   sl::AdaptiveResolution adaptive_;
   int frameDivisor_ = 1;  ///< of the last frame
   QSize internalSize_;    ///< the main renderer's last frame (device pixels)

@@ -1,19 +1,21 @@
-// The interactive view's adaptive internal resolution (issue 15 item 6): a frame slower than
-// the budget makes the next ones render at 1/2, 1/4 or 1/8 of the view's size (chosen from
-// how much slower it was, frame cost taken as proportional to pixels), and a frame fast
-// enough that the next size up (4x the pixels) would still fit well inside the budget climbs
-// one step back. Plain C++: the GUI feeds it frame times; the CLI never uses it.
+// The interactive view's adaptive internal resolution, off by default: a frame slower than the
+// budget makes the next ones render at half the view's size (never less: a lecturer's picture
+// stays readable), and the first frame fast enough that full size (4x the pixels) would fit
+// in the budget returns to full size. Plain C++: the GUI feeds it frame times (and redraws a
+// still view at full size); the CLI, grabs, exports, presenter mode and the split view
+// never use it.
 #pragma once
 
 namespace sl {
 
 class AdaptiveResolution {
  public:
-  static constexpr int kMaxDivisor = 8;
+  /// The floor: half the view's size.
+  static constexpr int kMaxDivisor = 2;
   /// Climb when 4 x the frame time stays below this share of the budget (hysteresis).
-  static constexpr double kClimbShare = 0.6;
+  static constexpr double kClimbShare = 0.8;
 
-  /// The view renders at its size / divisor() (1, 2, 4 or 8).
+  /// The view renders at its size / divisor() (1 or 2).
   int divisor() const { return divisor_; }
   /// A frame rendered at divisor() took `frameMs` against `budgetMs`; true when the divisor
   /// changed (the next frame renders at the new size).

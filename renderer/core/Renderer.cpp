@@ -91,13 +91,14 @@ std::vector<ParamDecl> rendererParamDecls() {
        .label = "Adaptive resolution",
        .group = "View",
        .type = ParamType::Bool,
-       .defaultValue = 1,
+       .defaultValue = 0,
        .minValue = 0,
        .maxValue = 1,
-       .help = "GUI only: when a frame takes longer than the frame budget, the interactive view "
-               "renders at 1/2, 1/4 or 1/8 of its size (stretched to fit) and says so; it "
-               "climbs back when frames are fast. The command line and the metrics always "
-               "render at the requested size."},
+       .help = "GUI only, off by default: when a frame takes longer than the frame budget, "
+               "the interactive view renders at half its size (stretched to fit; never less) "
+               "and says so in its corner; the first fast frame returns to full size, and a "
+               "still view is redrawn at full size. Never in presenter mode, the split view, "
+               "exports or grabs; the command line always renders at the requested size."},
       {.key = "view.adaptive.budget_ms",
        .label = "Frame budget (ms)",
        .group = "View",
@@ -107,7 +108,8 @@ std::vector<ParamDecl> rendererParamDecls() {
        .maxValue = 10000,
        .step = 10,
        .help = "GUI only: a frame slower than this lowers the view's internal resolution "
-               "(view.adaptive)."},
+               "(view.adaptive); continuous rendering spends at most half of it on a "
+               "progressive technique's tiles per frame, so the window never waits on one."},
       {.key = "view.outside.azimuth_deg",
        .label = "Outside azimuth",
        .group = "View",

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Never freeze the UI (issue 15 item 6): a slow technique (virtual-tiled: seconds a frame on
-# llvmpipe) takes more than the 250 ms budget, so the view renders at 1/2..1/8 of its size
-# and says so in the view; a large budget climbs back; view.adaptive off renders full size.
+# Adaptive resolution a lecturer can trust: off by default; turned on, a slow technique
+# (virtual-tiled: seconds a frame on llvmpipe) drops the view to half its size and never
+# lower, and the view says so; an export is the full-size image; a still view is redrawn at
+# full size; a fast technique returns to full size within one second (the test prints
+# recovery_ms); view.adaptive off renders full size.
 # usage: adaptive_resolution.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The GUI never shows 0 % for an error it did not measure: a view that sees only sky (no
+# covered pixel) and a light the technique refuses (the frame fails) are grabbed; the status
+# line reads "error n/a (...)" and the grab's published.json has error_pct null with the reason
+# (and frame_failure for the failed frame), never 0.
+# usage: unmeasured_error.sh <shadowlab> <tests/data dir> <out dir>
+set -euo pipefail
+app=$1 data=$2
+out=$3/unmeasured_error
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/xvfb.bash"
+rm -rf "$out" && mkdir -p "$out"
+start_xvfb
+
+for case in sky refused-light; do
+  rc=0
+  timeout 300 "$app" --lesson "$data/presets/unmeasured-$case.json" --grab "$out/$case" \
+    --grab-after 3 >"$out/$case.stdout" 2>"$out/$case.stderr" || rc=$?
+  # A refused light is a problem the grab reports (non-zero exit is allowed); the grab's
+  # files must be there either way.
+  [[ -s "$out/$case/published.json" ]] ||
+    { echo "FAIL: $case: no published.json (exit $rc)"; cat "$out/$case.stderr"; exit 1; }
+  python3 - "$case" "$out/$case/published.json" <<'PY'
+import json, sys
+case, path = sys.argv[1], sys.argv[2]
+p = json.load(open(path))
+assert "error_pct" in p, f"{case}: error_pct missing (the error was not evaluated): {sorted(p)}"
+assert p["error_pct"] is None, f"{case}: error_pct is {p['error_pct']!r}, not null"
+why = p.get("error_unmeasured", "")
+if case == "sky":
+    assert why == "no covered pixel", f"sky: error_unmeasured {why!r}"
+else:
+    assert why.startswith("the frame failed"), f"refused light: error_unmeasured {why!r}"
+    assert "point light" in p.get("frame_failure", ""), f"frame_failure {p.get('frame_failure')!r}"
+print(f"{case}: error_pct null, {why}")
+PY
+done
+echo "PASS"

@@ -27,7 +27,8 @@ const char* const kBenchUsage =
     "                           [--path NAME|INDEX | --camera NAME|INDEX] [--frames N]\n"
     "                           [--warmup N] [--size WxH] [--light LIGHT]\n"
     "                           [--set KEY=VALUE]... --csv FILE.csv [--chart FILE.png]\n"
-    "                           [--chart-y auto|linear|log] [--x ms|bytes]\n";
+    "                           [--chart-y auto|linear|log] [--x ms|bytes] [--no-reference]\n"
+    "         (--no-reference: no ray-traced reference, timings only: the error cells empty)\n";
 
 namespace {
 

@@ -55,6 +55,15 @@ assert png[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
 w, h = int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
 assert (w, h) == (320, 180), (w, h)
 PY
-# The scene generator travels too (scripts/gpu-check.sh generates its scene with it).
+# The scene generator and the GPU check travel too: the prepared check runs from the copy
+# (small sizes), finding its binaries, shaders and scenes in the folder, timings only.
 [ -x "$copy/bin/shadowlab-make-scenes" ] || { echo "FAIL: no shadowlab-make-scenes"; exit 1; }
+[ -x "$copy/gpu-check.sh" ] || { echo "FAIL: no gpu-check.sh in the folder"; exit 1; }
+env -u SHADOWLAB_SHADER_DIR -u SHADOWLAB_SCENE_DIR "$copy/gpu-check.sh" --dry-run \
+  --out "$out/gpu-check" >"$out/gpu-check.log" 2>&1 ||
+  { echo "FAIL: gpu-check.sh --dry-run from the folder:"; tail -20 "$out/gpu-check.log"; exit 1; }
+grep -q "^layout: headless folder\|headless folder" "$out/gpu-check/gpu-check.md" ||
+  { echo "FAIL: gpu-check.md does not say it ran from the headless folder"; exit 1; }
+grep -q "^| da-rtw |" "$out/gpu-check/gpu-check.md" ||
+  { echo "FAIL: gpu-check.md has no da-rtw row"; exit 1; }
 echo "PASS: headless folder ($kib KiB) renders diagonal from $copy"

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "CliCommon.h"
+#include "algo/InputFile.h"
 #include "metrics/ErrorMetrics.h"
 
 namespace sl::cli {
@@ -49,6 +50,13 @@ std::vector<std::string> drainGlErrors() {
 }
 
 }  // namespace
+
+std::string firstFailureText(const std::vector<const FrameSample*>& frames) {
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    if (frames[k]->failed())
+      return cutText("frame " + std::to_string(k) + ": " + frames[k]->renderError);
+  return "";
+}
 
 std::string ConfigSpec::paramsText() const {
   std::string out;
@@ -168,6 +176,12 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
   collectGlErrors();  // anything since the last frame (set-up) counts against this one
   if (auto e = r.renderFrame(options.width, options.height, 0)) s.renderError = *e;
   collectGlErrors();
+  if (s.failed()) {
+    // Nothing was measured: the renderer drew a neutral frame and its stats, readback and
+    // publication are an older frame's. The next frame has no previous one to compare with.
+    forgetPreviousFrame();
+    return s;
+  }
   const FrameStats& st = r.stats();
   s.totalMs = st.totalMs;
   s.passes = st.passes;

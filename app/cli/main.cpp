@@ -26,6 +26,7 @@
 #include "Commands.h"
 #include "Measure.h"
 #include "Montage.h"
+#include "algo/InputFile.h"
 #include "algo/metrics/BenchStats.h"
 #include "core/Preset.h"
 #include "core/Renderer.h"
@@ -567,8 +568,6 @@ int cmdCompare(Args& a) {
   const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
   json summary = json::array();
   std::vector<sl::ui::FigureCell> cells;
-  std::printf("%-28s %10s %12s %10s %10s %10s\n", "configuration", "total ms", "texels", "error %",
-              "false lit", "false shd");
   r.setScene(scene);  // the scene's light, or --light's
   if (base.light) r.setLight(*base.light);
   const sl::LightType lightType = r.light().type;
@@ -577,6 +576,9 @@ int cmdCompare(Args& a) {
       if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(spec.techniqueId))
         if (auto e = sl::checkLightSupport(*info, lightType))
           throw UsageError("--technique " + spec.techniqueId + ": " + *e);
+  std::size_t failed = 0;  // configurations whose frames the renderer refused
+  std::printf("%-28s %10s %12s %10s %10s %10s\n", "configuration", "total ms", "texels", "error %",
+              "false lit", "false shd");
   for (const sl::cli::ConfigSpec& spec : specs) {
     // A technique that cannot render this light (cube: no directional) gets a row saying
     // so, not a wrong picture; the others go on.
@@ -591,7 +593,20 @@ int cmdCompare(Args& a) {
     cfg.frames = std::max(cfg.frames, 3);
     configure(r, cfg, scene);
     sl::Renderer::ErrorResult err;
-    json j = renderAndMeasure(r, cfg, err);
+    json j;
+    try {
+      j = renderAndMeasure(r, cfg, err);
+    } catch (const UsageError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      // A frame the renderer refused measured nothing: a failed row, no image; the others
+      // go on.
+      const std::string why = sl::cutText(e.what());
+      std::printf("%-28s failed: %s\n", spec.label.c_str(), why.c_str());
+      summary.push_back({{"configuration", spec.label}, {"failure", why}});
+      ++failed;
+      continue;
+    }
     j["configuration"] = spec.label;
     std::string file = spec.label;
     for (char& ch : file)
@@ -632,7 +647,9 @@ int cmdCompare(Args& a) {
       "wrote images (<configuration>.png, <configuration>.error.png) and metrics (*.json, "
       "summary.json) to %s\n",
       fs::absolute(base.out).string().c_str());
-  if (!montage.empty()) {
+  if (!montage.empty() && cells.empty())
+    std::fprintf(stderr, "note: %s not written: no configuration rendered\n", montage.c_str());
+  if (!montage.empty() && !cells.empty()) {
     char title[256];
     std::snprintf(title, sizeof title,
                   "%s, %dx%d, %s light; below each image its errors against the exact reference "
@@ -645,7 +662,11 @@ int cmdCompare(Args& a) {
     if (auto e = sl::cli::writeMontage(cells, title, columns, inset, montage)) throw UsageError(*e);
     std::printf("wrote the montage %s\n", montage.c_str());
   }
-  return 0;
+  if (failed)
+    std::fprintf(stderr, "shadowlab-cli: %zu configuration%s failed (see \"failure\" in %s)\n",
+                 failed, failed == 1 ? "" : "s",
+                 (fs::path(base.out) / "summary.json").string().c_str());
+  return failed ? 1 : 0;
 }
 
 }  // namespace

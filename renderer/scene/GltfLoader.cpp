@@ -70,9 +70,6 @@ constexpr std::uint64_t kMaxImagePixels = std::uint64_t(1) << 26;
 constexpr std::uint64_t kMaxTotalImagePixels = std::uint64_t(1) << 26;
 /// Input quoted in a message is cut to this many bytes.
 constexpr std::size_t kMaxQuotedBytes = 120;
-/// A whole message or warning (tinygltf's texts quote input, such as a whole data: URI) is
-/// cut to this many bytes after the file's name.
-constexpr std::size_t kMaxMessageBytes = 300;
 /// How far from the origin (largest |x|, |y| or |z| of the bounds, metres) the geometry may
 /// reach. Positions, shadow maps and depths are floats in world space, and a float's spacing
 /// grows with its magnitude: below 1e5 m (2^16..2^17) it is 2^-7 m, about 8 mm. Measured
@@ -123,16 +120,6 @@ std::string oneLine(const std::string& text) {
   }
   while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
   return out;
-}
-
-/// `text` cut to `maxBytes` ("... (N bytes)" after the cut; never inside a UTF-8 sequence).
-std::string cutText(std::string text, std::size_t maxBytes = kMaxMessageBytes) {
-  if (text.size() <= maxBytes) return text;
-  const std::size_t total = text.size();
-  std::size_t n = maxBytes;
-  while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80) --n;
-  text.resize(n);
-  return text + "... (" + std::to_string(total) + " bytes)";
 }
 
 void addLines(std::vector<std::string>& to, const std::string& text) {

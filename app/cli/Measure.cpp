@@ -78,6 +78,9 @@ std::optional<std::string> validateConfig(const ConfigSpec& spec) {
     if (!set) return "technique '" + spec.techniqueId + "' has no parameter '" + k + "'";
     if (auto e = set->setFromString(k, v)) return *e;
   }
+  // Values in range that the technique cannot render together (fvsm.grid=3).
+  if (auto e = checkTechniqueParams(*info, own))
+    return "technique '" + spec.techniqueId + "': " + *e;
   return std::nullopt;
 }
 

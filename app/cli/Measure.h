@@ -29,8 +29,9 @@ struct ConfigSpec {
   std::string paramsText() const;
 };
 
-/// Checks that the technique exists, every key is a parameter of it (or a shared one) and
-/// every value is in range; the error names the problem.
+/// Checks that the technique exists, every key is a parameter of it (or a shared one),
+/// every value is in range and the values together are ones the technique renders
+/// (TechniqueInfo::checkParams); the error names the problem.
 std::optional<std::string> validateConfig(const ConfigSpec& spec);
 
 /// Parses "ID[:KEY=V1,V2,...]..." (e.g. "uniform:resolution=512,1024:pcf=0,1") into the

@@ -221,6 +221,9 @@ SuiteTechnique techniqueOf(const JsonReader& r, const json& t, const std::string
                                                                    : std::string()));
       st.spec.sets.push_back({k, text});
     }
+    // Values in range that the technique cannot render together (fvsm.grid = 3).
+    if (auto e = checkTechniqueParams(*info, own))
+      r.fail(setPath, "technique '" + st.spec.techniqueId + "': " + quoteText(*e));
   }
   if (!onlyTechniques.empty() && std::find(onlyTechniques.begin(), onlyTechniques.end(),
                                            st.spec.techniqueId) == onlyTechniques.end()) {

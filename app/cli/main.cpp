@@ -286,6 +286,9 @@ void configure(sl::Renderer& r, const RenderConfig& cfg, const std::shared_ptr<s
     sl::ParamSet& set = r.rendererParams().has(key) ? r.rendererParams() : r.params();
     if (auto e = set.assign(kv)) throw UsageError("--set: " + *e);
   }
+  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r.techniqueId()))
+    if (auto e = sl::checkTechniqueParams(*info, r.params()))
+      throw UsageError("--set: technique '" + r.techniqueId() + "': " + *e);
   if (!cfg.path.empty()) {
     const sl::CameraPath& path = pickPath(*scene, cfg.path);
     r.setCamera(path.sample(float(cfg.pathAt) * path.durationS()));
@@ -576,6 +579,26 @@ int cmdCompare(Args& a) {
       if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(spec.techniqueId))
         if (auto e = sl::checkLightSupport(*info, lightType))
           throw UsageError("--technique " + spec.techniqueId + ": " + *e);
+  // --set (and a preset's parameters) apply to every configuration that renders: each must
+  // have the key and take the value, checked before anything renders.
+  for (const sl::cli::ConfigSpec& spec : specs) {
+    const sl::TechniqueInfo* info = sl::Renderer::findTechnique(spec.techniqueId);
+    if (info && sl::checkLightSupport(*info, lightType)) continue;  // skipped below
+    sl::cli::ConfigSpec trial = spec;
+    for (const std::string& kv : base.sets) {
+      auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw UsageError("--set: expected KEY=VALUE, got '" + kv + "'");
+      bool swept = false;  // a --technique sweep's own value wins
+      for (const auto& [k, v] : spec.sets) swept = swept || k == kv.substr(0, eq);
+      if (!swept) trial.sets.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
+    }
+    if (auto e = sl::cli::validateConfig(trial))
+      throw UsageError("--set: " + *e +
+                       (all ? " (compare renders every technique: name the "
+                              "ones to compare with --technique)"
+                            : ""));
+  }
   std::size_t failed = 0;  // configurations whose frames the renderer refused
   std::printf("%-28s %10s %12s %10s %10s %10s\n", "configuration", "total ms", "texels", "error %",
               "false lit", "false shd");

@@ -341,10 +341,7 @@ int cmdBench(Args& a) {
   std::string cameraText;
   if (cfg.camera.empty() && !scene->paths.empty()) {
     const CameraPath& path = pickPath(*scene, cfg.path);
-    for (int f = 0; f < cfg.frames; ++f) {
-      float t = cfg.frames > 1 ? path.durationS() * float(f) / float(cfg.frames - 1) : 0.0f;
-      cameras.push_back(path.sample(t));
-    }
+    for (int f = 0; f < cfg.frames; ++f) cameras.push_back(path.sampleFrame(f, cfg.frames));
     cameraText = "path " + path.name;
   } else {
     if (!cfg.path.empty()) (void)pickPath(*scene, cfg.path);  // names the missing path

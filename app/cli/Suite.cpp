@@ -151,7 +151,9 @@ Camera cameraOf(const JsonReader& r, const json& c, const std::string& path) {
   cam.fovYDeg = float(r.number(c, path, "fov_deg", cam.fovYDeg));
   cam.nearM = float(r.number(c, path, "near_m", cam.nearM));
   cam.farM = float(r.number(c, path, "far_m", cam.farM));
-  if (auto e = cam.validate()) r.fail(path, *e);
+  if (auto e = cameraFieldError(cam, {"up", "near_m", "far_m"}))
+    r.fail(jsonPath(path, e->first), e->second);
+  if (auto e = cam.validate()) r.fail(path, withoutCameraPrefix(*e));
   return cam;
 }
 
@@ -425,9 +427,7 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
   std::vector<Camera> cameras;
   if (sc.motion == "path") {
     const CameraPath& path = pickPath(*scene, sc.path);
-    for (int f = 0; f < sc.frames; ++f)
-      cameras.push_back(
-          path.sample(sc.frames > 1 ? path.durationS() * float(f) / float(sc.frames - 1) : 0.0f));
+    for (int f = 0; f < sc.frames; ++f) cameras.push_back(path.sampleFrame(f, sc.frames));
   } else {
     if (sc.motion == "orbit") cam = orbitCentred(cam, *scene);
     for (int f = 0; f < sc.frames; ++f) {

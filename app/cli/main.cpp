@@ -72,7 +72,9 @@ struct RenderConfig {
   int frames = 1;
   std::string camera;
   std::optional<sl::Camera> presetCamera;  ///< a --preset's camera (a later --camera wins)
-  std::string path;     ///< a camera path: the camera at pathAt of its duration (bench's frames)
+  /// A camera path: the camera a fraction pathAt of the way from its first key to its last
+  /// (bench's frames spread over the same span).
+  std::string path;
   double pathAt = 0.0;  ///< 0 = the path's start, 1 = its end
   std::optional<sl::Light> light;
   std::string out, metrics, errorImage, wrongPixels;
@@ -291,7 +293,7 @@ void configure(sl::Renderer& r, const RenderConfig& cfg, const std::shared_ptr<s
       throw UsageError("--set: technique '" + r.techniqueId() + "': " + *e);
   if (!cfg.path.empty()) {
     const sl::CameraPath& path = pickPath(*scene, cfg.path);
-    r.setCamera(path.sample(float(cfg.pathAt) * path.durationS()));
+    r.setCamera(path.sampleFraction(float(cfg.pathAt)));
   } else {
     r.setCamera(cfg.presetCamera ? *cfg.presetCamera : pickCamera(*scene, cfg.camera));
   }

@@ -90,6 +90,13 @@ struct LoadFailure {
   throw LoadFailure{std::move(message)};
 }
 
+/// "2.5 s".
+std::string secondsText(float s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g s", double(s));
+  return buf;
+}
+
 std::string inQuotes(const std::string& s) {
   return "'" + s + "'";
 }
@@ -1238,6 +1245,10 @@ class Flattener {
       if (!std::isfinite(track.times[k]) || (k > 0 && track.times[k] < track.times[k - 1]))
         fail(label + ": key times must be finite and increasing");
       const float* v = &out[(k * perKey + (cubic ? 1 : 0)) * comps];
+      for (std::size_t c = 0; c < comps; ++c)
+        if (!std::isfinite(v[c]))
+          fail(label + ": key " + std::to_string(k) + " (at " + secondsText(track.times[k]) +
+               ") has a value that is not finite");
       track.values.emplace_back(v[0], v[1], v[2], track.rotation ? v[3] : 0.0f);
     }
     return track;
@@ -1336,6 +1347,11 @@ class Flattener {
       CameraKey key;
       key.timeS = t;
       decomposePose(inst.parentWorld * localMatrix(posed), key.position, key.rotation);
+      const float pose[7] = {key.position.x, key.position.y, key.position.z, key.rotation.x,
+                             key.rotation.y, key.rotation.z, key.rotation.w};
+      if (!std::all_of(std::begin(pose), std::end(pose), [](float v) { return std::isfinite(v); }))
+        fail("camera " + inQuotes(cameraName(inst)) + ": its animated pose at " + secondsText(t) +
+             " is not finite");
       keys.push_back(key);
     }
     return keys;

@@ -335,6 +335,7 @@ int cmdBench(Args& a) {
     }
   }
   std::shared_ptr<Scene> scene = loadScene(cfg.scene);
+  checkOutputsAgainstScene({{"--csv", cfg.csv}, {"--chart", cfg.chart}}, *scene);
 
   // One camera per frame: along the path, or a fixed bookmark.
   std::vector<Camera> cameras;

@@ -78,6 +78,7 @@ int runSingle(Args& a) {
     throw UsageError((e->rfind("unknown technique", 0) == 0 ? "--technique: " : "--set: ") + *e);
 
   std::shared_ptr<Scene> scene = loadScene(sceneName);
+  checkOutputsAgainstScene({{"--json", jsonPath}}, *scene);
   Camera cam = pickCamera(*scene, camera);
   if (orbit != 0.0) cam = orbitCentred(cam, *scene);
   std::vector<Camera> cameras;

@@ -72,6 +72,7 @@ struct RenderConfig {
   int frames = 1;
   std::string camera;
   std::optional<sl::Camera> presetCamera;  ///< a --preset's camera (a later --camera wins)
+  std::string preset;                      ///< the --preset file (an input)
   /// A camera path: the camera a fraction pathAt of the way from its first key to its last
   /// (bench's frames spread over the same span).
   std::string path;
@@ -443,7 +444,8 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
       cfg.light = parseLight(o, a.take(i, o));
     else if (o == "--preset") {
       std::string err;
-      auto p = sl::loadPreset(a.take(i, o), &err);
+      cfg.preset = a.take(i, o);
+      auto p = sl::loadPreset(cfg.preset, &err);
       if (!p) throw UsageError("--preset: " + err);
       if (!p->scene.empty()) cfg.scene = p->scene;
       if (!p->technique.empty()) cfg.technique = p->technique;
@@ -478,15 +480,17 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
 
 int cmdRender(Args& a) {
   RenderConfig cfg = parseRender(a, 1, true);
-  checkOutputs({{"--out", cfg.out},
-                {"--metrics", cfg.metrics},
-                {"--error-image", cfg.errorImage},
-                {"--wrong-pixels", cfg.wrongPixels}},
-               {{"--scene", cfg.scene}});
+  const std::vector<OutputFile> outputs = {{"--out", cfg.out},
+                                           {"--metrics", cfg.metrics},
+                                           {"--error-image", cfg.errorImage},
+                                           {"--wrong-pixels", cfg.wrongPixels}};
+  checkOutputs(outputs, {{"--scene", cfg.scene}, {"--preset", cfg.preset}});
+  const std::shared_ptr<sl::Scene> scene = loadScene(cfg.scene);
+  checkOutputsAgainstScene(outputs, *scene);
   sl::gl::EglContext ctx;
   checkFrameSize(cfg.width, cfg.height);
   sl::Renderer r;
-  configure(r, cfg, loadScene(cfg.scene));
+  configure(r, cfg, scene);
   sl::Renderer::ErrorResult err;
   json j = renderAndMeasure(r, cfg, err, /*showProgress=*/true);
   // view.outside=on: --out is the outside view (what a host shows); the error image and the
@@ -558,7 +562,6 @@ int cmdCompare(Args& a) {
     throw UsageError("--wrong-pixels: a render option (one configuration), not compare's");
   if (base.out.empty()) base.out = "shadowlab-out";
   checkOutputFolder("--out-dir", base.out);
-  if (!montage.empty()) checkOutputs({{"--montage", montage}}, {{"--scene", base.scene}});
   // The configurations: each --technique ID[:KEY=V1,V2...] expanded (as bench does), or every
   // technique at its defaults.
   std::vector<sl::cli::ConfigSpec> specs;
@@ -567,10 +570,32 @@ int cmdCompare(Args& a) {
   const bool all = specs.empty();
   if (all)
     for (const auto& t : sl::Renderer::techniques()) specs.push_back({t.id, {}, t.id});
+  {  // The same configuration listed twice gets its own name (and files).
+    std::map<std::string, int> seen;
+    for (sl::cli::ConfigSpec& c : specs)
+      if (int n = ++seen[c.label]; n > 1) c.label += " #" + std::to_string(n);
+  }
+  // Every file compare writes, checked against each other and the inputs before any work:
+  // per configuration <stem>.png, <stem>.error.png, <stem>.json, then summary.json and the
+  // montage.
+  auto stemOf = [&](const std::string& label) {
+    std::string file = label;
+    for (char& ch : file)
+      if (ch == ' ' || ch == '/' || ch == ':' || ch == '#') ch = '_';
+    return (fs::path(base.out) / file).string();
+  };
+  std::vector<OutputFile> outputs;
+  for (const sl::cli::ConfigSpec& spec : specs)
+    for (const char* ext : {".png", ".error.png", ".json"})
+      outputs.push_back({"--out-dir (" + spec.label + ")", stemOf(spec.label) + ext});
+  outputs.push_back({"--out-dir (summary)", (fs::path(base.out) / "summary.json").string()});
+  if (!montage.empty()) outputs.push_back({"--montage", montage});
+  checkOutputs(outputs, {{"--scene", base.scene}, {"--preset", base.preset}});
+  const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
+  checkOutputsAgainstScene(outputs, *scene);
   sl::gl::EglContext ctx;
   checkFrameSize(base.width, base.height);
   sl::Renderer r;
-  const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
   json summary = json::array();
   std::vector<sl::ui::FigureCell> cells;
   r.setScene(scene);  // the scene's light, or --light's
@@ -633,10 +658,7 @@ int cmdCompare(Args& a) {
       continue;
     }
     j["configuration"] = spec.label;
-    std::string file = spec.label;
-    for (char& ch : file)
-      if (ch == ' ' || ch == '/' || ch == ':') ch = '_';
-    const std::string stem = (fs::path(base.out) / file).string();
+    const std::string stem = stemOf(spec.label);
     writePng(stem + ".png", err.frame.color);
     writePng(stem + ".error.png",
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));

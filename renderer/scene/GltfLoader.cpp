@@ -1483,6 +1483,7 @@ std::string uriProblem(const std::string& uri) {
 struct ExternalFiles {
   std::string prefix;  ///< the scene's directory, ending with '/'
   std::string error;
+  std::vector<std::string> read_;  ///< the files read, in order
 
   void refuse(const std::string& message) {
     if (error.empty()) error = message;
@@ -1513,7 +1514,18 @@ struct ExternalFiles {
     auto& self = *static_cast<ExternalFiles*>(user);
     std::string uri = self.uriOf(path).value_or(path);
     try {
+      // Inside the scene's folder after symbolic links too: a link to a system file is
+      // not the scene's.
+      std::error_code ec;
+      const fs::path folder = fs::weakly_canonical(fs::absolute(self.prefix), ec);
+      const fs::path target = fs::weakly_canonical(fs::absolute(path), ec);
+      const auto [end, at] =
+          std::mismatch(folder.begin(), folder.end(), target.begin(), target.end());
+      if (!ec && end != folder.end() && !end->empty())
+        fail("external file " + quoteInput(uri) +
+             " leads outside the scene's folder (a symbolic link): refused");
       *out = readRegularFile(path, "external file " + quoteInput(uri) + " ");
+      self.read_.push_back(path);
       return true;
     } catch (const LoadFailure& f) {
       self.refuse(f.message);
@@ -1708,6 +1720,8 @@ std::shared_ptr<Scene> loadOrFail(const fs::path& path) {
   auto scene = std::make_shared<Scene>();
   scene->name = path.stem().string();
   scene->sourcePath = path.string();
+  scene->inputFiles.push_back(path.string());
+  for (const std::string& f : files.read_) scene->inputFiles.push_back(f);
   addLines(scene->warnings, warnText);
   Flattener(model, *scene).run();
   return scene;

@@ -88,6 +88,9 @@ Camera cameraFromPose(const glm::vec3& positionM, const glm::quat& rotation, flo
 struct Scene {
   std::string name;        ///< built-in name or file stem
   std::string sourcePath;  ///< file it was loaded from
+  /// Every file loading read: the scene file, then its external buffers and images (outputs
+  /// must not overwrite any of them).
+  std::vector<std::string> inputFiles;
   std::vector<MeshPrimitive> primitives;
   std::vector<Material> materials;
   std::vector<SceneImage> images;

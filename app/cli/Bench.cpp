@@ -152,33 +152,53 @@ std::string passColumn(const std::string& pass) {
   return c + "_ms";
 }
 
-/// Medians over the frames of one configuration.
+/// Medians over the frames of one configuration that rendered; a failed frame is counted
+/// and named, never measured.
 struct ConfigSummary {
   double totalMs = 0;
-  std::vector<double> frameMs;  ///< every frame's total, in the order the frames ran
+  std::vector<double> frameMs;  ///< every frame's total, in the order the frames ran (NaN: failed)
   std::map<std::string, double> passMs;
   std::string timingMethod;
   double texels = 0, bytes = 0;
   double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
   double flickerPct = 0;
-  std::size_t renderErrors = 0, glErrors = 0;
+  std::size_t renderErrors = 0, glErrors = 0;  ///< failed frames; GL errors in all frames
+  std::string failure;  ///< the first failed frame and why ("" when every frame rendered)
+  /// No frame rendered: a failed row, every number empty.
+  bool failed() const { return !failure.empty() && frameMs.size() == renderErrors; }
 };
 
-ConfigSummary summarise(const std::vector<FrameSample>& frames) {
+ConfigSummary summarise(const std::vector<FrameSample>& all) {
   ConfigSummary s;
+  std::vector<const FrameSample*> order;
+  for (const FrameSample& f : all) order.push_back(&f);
+  s.failure = firstFailureText(order);
+  std::vector<FrameSample> frames;  // the frames that rendered: the only ones measured
+  for (const FrameSample& f : all) {
+    s.frameMs.push_back(f.failed() ? std::numeric_limits<double>::quiet_NaN() : f.totalMs);
+    s.renderErrors += f.failed() ? 1 : 0;
+    s.glErrors += f.glErrors.size();
+    if (!f.failed()) frames.push_back(f);
+  }
+  if (frames.empty()) {  // a failed configuration: nothing measured
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    s.totalMs = s.texels = s.bytes = s.covered = nan;
+    s.errorPct = s.falseLitPct = s.falseShadowPct = nan;
+    s.aliasingMean = s.aliasingP95 = s.aliasingMax = s.flickerPct = nan;
+    return s;
+  }
   auto med = [&](auto get) {
     std::vector<double> v;
     for (const FrameSample& f : frames) v.push_back(double(get(f)));
     return median(v);
   };
   s.totalMs = med([](const FrameSample& f) { return f.totalMs; });
-  for (const FrameSample& f : frames) s.frameMs.push_back(f.totalMs);
   std::map<std::string, std::vector<double>> passes;
   for (const FrameSample& f : frames)
     for (const PassTiming& p : f.passes) passes[p.name].push_back(p.ms);
   for (const auto& [name, v] : passes) s.passMs[name] = median(v);
-  s.timingMethod = frames.empty() ? "" : frames.back().timingMethod;
+  s.timingMethod = frames.back().timingMethod;
   s.texels = med([](const FrameSample& f) { return f.texels; });
   s.bytes = med([](const FrameSample& f) { return f.bytes; });
   // The error is measured only on frames with a covered pixel; none: NaN (an empty cell).
@@ -199,11 +219,12 @@ ConfigSummary summarise(const std::vector<FrameSample>& frames) {
   for (const FrameSample& f : frames)
     if (f.flicker) flicker.push_back(f.flicker->pct);
   s.flickerPct = median(flicker);
-  for (const FrameSample& f : frames) {
-    s.renderErrors += f.renderError.empty() ? 0 : 1;
-    s.glErrors += f.glErrors.size();
-  }
   return s;
+}
+
+/// A count as a CSV cell: empty when not measured (NaN).
+std::string count(double v) {
+  return std::isfinite(v) ? std::to_string(std::uint64_t(v)) : std::string();
 }
 
 /// Point labels: per technique, the values of the parameters that vary between its rows
@@ -315,16 +336,14 @@ int cmdBench(Args& a) {
     }
   }
   std::shared_ptr<Scene> scene = loadScene(cfg.scene);
+  checkOutputsAgainstScene({{"--csv", cfg.csv}, {"--chart", cfg.chart}}, *scene);
 
   // One camera per frame: along the path, or a fixed bookmark.
   std::vector<Camera> cameras;
   std::string cameraText;
   if (cfg.camera.empty() && !scene->paths.empty()) {
     const CameraPath& path = pickPath(*scene, cfg.path);
-    for (int f = 0; f < cfg.frames; ++f) {
-      float t = cfg.frames > 1 ? path.durationS() * float(f) / float(cfg.frames - 1) : 0.0f;
-      cameras.push_back(path.sample(t));
-    }
+    for (int f = 0; f < cfg.frames; ++f) cameras.push_back(path.sampleFrame(f, cfg.frames));
     cameraText = "path " + path.name;
   } else {
     if (!cfg.path.empty()) (void)pickPath(*scene, cfg.path);  // names the missing path
@@ -376,7 +395,7 @@ int cmdBench(Args& a) {
         if (!s.renderError.empty())
           std::fprintf(stderr, "\nshadowlab-cli: %s, frame %d: %s\n", configs[i].label.c_str(), f,
                        s.renderError.c_str());
-        timingMethod = s.timingMethod;
+        if (!s.failed()) timingMethod = s.timingMethod;
         samples[i].push_back(std::move(s));
         progress.step("frame " + std::to_string(f + 1) + "/" + std::to_string(cfg.frames) + "  " +
                           configs[i].label,
@@ -400,9 +419,11 @@ int cmdBench(Args& a) {
   // The Pareto fronts against time (`pareto`) and against memory (`pareto_bytes`).
   auto frontAgainst = [&](auto cost) {
     std::vector<CostPoint> costs;
-    std::vector<std::size_t> index;  // configurations with a measured error
+    // Configurations with a measured error and no failed frame (a configuration that fails
+    // some frames is not comparable with one that renders them all).
+    std::vector<std::size_t> index;
     for (std::size_t i = 0; i < sums.size(); ++i)
-      if (std::isfinite(sums[i].errorPct)) {
+      if (std::isfinite(sums[i].errorPct) && sums[i].renderErrors == 0) {
         costs.push_back({cost(sums[i]), sums[i].errorPct});
         index.push_back(i);
       }
@@ -418,7 +439,9 @@ int cmdBench(Args& a) {
          "total_ms_frames";
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
   csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
-         "aliasing_p95,aliasing_max,flicker_pct,pareto,pareto_bytes,render_errors,gl_errors,gl\n";
+         "aliasing_p95,aliasing_max,flicker_pct,pareto,pareto_bytes,render_errors,gl_errors,"
+         "failure,"
+         "gl\n";
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const ConfigSummary& s = sums[i];
     csv << csvField(scene->name) << "," << csvField(cameraText) << ","
@@ -429,12 +452,12 @@ int cmdBench(Args& a) {
       csv << (f ? ";" : "") << number(s.frameMs[f]);
     for (const std::string& p : passNames)
       csv << "," << (s.passMs.count(p) ? number(s.passMs.at(p)) : std::string());
-    csv << "," << std::uint64_t(s.texels) << "," << std::uint64_t(s.bytes) << ","
-        << number(s.errorPct) << "," << number(s.falseLitPct) << "," << number(s.falseShadowPct)
-        << "," << std::uint64_t(s.covered) << "," << number(s.aliasingMean) << ","
-        << number(s.aliasingP95) << "," << number(s.aliasingMax) << "," << number(s.flickerPct)
-        << "," << (frontMs[i] ? 1 : 0) << "," << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors
-        << "," << s.glErrors << "," << csvField(glDescription) << "\n";
+    csv << "," << count(s.texels) << "," << count(s.bytes) << "," << number(s.errorPct) << ","
+        << number(s.falseLitPct) << "," << number(s.falseShadowPct) << "," << count(s.covered)
+        << "," << number(s.aliasingMean) << "," << number(s.aliasingP95) << ","
+        << number(s.aliasingMax) << "," << number(s.flickerPct) << "," << (frontMs[i] ? 1 : 0)
+        << "," << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors << "," << s.glErrors << ","
+        << csvField(s.failure) << "," << csvField(glDescription) << "\n";
   }
   std::string text = csv.str();
   text.pop_back();  // writeText adds the final newline
@@ -448,6 +471,10 @@ int cmdBench(Args& a) {
                         : frontMs[i]                ? "ms"
                         : frontBytes[i]             ? "bytes"
                                                     : "";
+    if (s.failed()) {
+      std::printf("%-34s failed: %s\n", configs[i].label.c_str(), s.failure.c_str());
+      continue;
+    }
     char error[32] = "n/a";
     if (std::isfinite(s.errorPct)) std::snprintf(error, sizeof error, "%.3f", s.errorPct);
     std::printf("%-34s %9.2f %9.3f %9s %9.3f %9.3f %9.4f %9s\n", configs[i].label.c_str(),
@@ -461,13 +488,20 @@ int cmdBench(Args& a) {
   if (!cfg.chart.empty()) {
     std::vector<ChartRow> rows;
     for (std::size_t i = 0; i < configs.size(); ++i)
-      if (std::isfinite(sums[i].errorPct))  // no covered pixel: nothing to plot
+      // No covered pixel: nothing to plot; a failed frame: not comparable (as `chart` reads
+      // the CSV).
+      if (std::isfinite(sums[i].errorPct) && sums[i].renderErrors == 0)
         rows.push_back({configs[i].techniqueId, configs[i].sets, sums[i].totalMs, sums[i].bytes,
                         sums[i].errorPct});
-    if (rows.empty())
-      throw std::runtime_error(cfg.chart +
-                               ": not written: no configuration has a measured error (no "
-                               "covered pixel in any frame); the CSV is written");
+    if (rows.empty()) {
+      std::size_t withFailures = 0;
+      for (const ConfigSummary& s : sums) withFailures += s.renderErrors ? 1 : 0;
+      throw std::runtime_error(
+          cfg.chart + ": not written: no configuration has a measured error (" +
+          (withFailures ? std::to_string(withFailures) + " with failed frames, the others with "
+                        : std::string()) +
+          "no covered pixel in any frame); the CSV is written");
+    }
     ChartSpec spec;
     spec.yScale = cfg.chartY;
     spec.x = cfg.chartX;
@@ -477,8 +511,20 @@ int cmdBench(Args& a) {
                     ", " + glDescription;
     writeChart(rows, spec, cfg.chart);
   }
+  // Failed frames and GL errors fail the run, each configuration named.
   std::size_t bad = 0;
-  for (const ConfigSummary& s : sums) bad += s.renderErrors + s.glErrors;
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    const ConfigSummary& s = sums[i];
+    bad += s.renderErrors + s.glErrors;
+    if (s.failed())
+      std::fprintf(stderr, "shadowlab-cli: %s: failed every frame (%zu): %s\n",
+                   configs[i].label.c_str(), s.renderErrors, s.failure.c_str());
+    else if (s.renderErrors)
+      std::fprintf(stderr,
+                   "shadowlab-cli: %s: %zu of %zu frames failed (left out of the medians and "
+                   "the Pareto fronts), first %s\n",
+                   configs[i].label.c_str(), s.renderErrors, s.frameMs.size(), s.failure.c_str());
+  }
   return bad ? 1 : 0;
 }
 

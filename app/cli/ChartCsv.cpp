@@ -2,6 +2,7 @@
 #include "ChartCsv.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 #include <string_view>
 
@@ -77,9 +78,12 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
   // Memory is read only when charted (a CSV without it still charts against time).
   const std::size_t cBytes = x == ChartX::Bytes ? column("bytes") : cMs;
   auto gl = std::find(header.begin(), header.end(), "gl");
+  // A failed configuration (bench wrote its failure; older CSVs have no such column).
+  auto failureColumn = std::find(header.begin(), header.end(), "failure");
   std::vector<ChartRow> rows;
   std::vector<std::string> first;
   std::size_t unmeasured = 0;  // rows with an empty error_pct (no covered pixel)
+  std::size_t failed = 0;      // rows of a configuration with a failed frame
   while (nextLine()) {
     if (line.empty() || line == "\r") continue;
     if (rows.size() >= kMaxCsvRows)
@@ -89,7 +93,14 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
     if (f.size() != header.size())
       throw UsageError(at() + std::to_string(f.size()) + " fields, the header has " +
                        std::to_string(header.size()));
-    if (first.empty()) first = f;
+    // A configuration that failed frames is not charted: its numbers are not comparable
+    // (or there are none: empty cells).
+    if ((failureColumn != header.end() &&
+         !f[std::size_t(failureColumn - header.begin())].empty()) ||
+        f[cMs].empty()) {
+      ++failed;
+      continue;
+    }
     ChartRow r;
     r.technique = f[cTech];
     if (r.technique.size() > kMaxCsvParamsBytes)
@@ -121,13 +132,19 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
     } catch (const UsageError& e) {
       throw UsageError(at() + e.what());
     }
+    if (first.empty()) first = f;  // the titles come from a charted row
     rows.push_back(std::move(r));
   }
-  if (rows.empty())
-    throw UsageError(csvPath + (unmeasured
-                                    ? ": no row has a measured error_pct (" +
-                                          std::to_string(unmeasured) + " without a covered pixel)"
-                                    : std::string(": no rows")));
+  if (rows.empty()) {
+    std::string why;
+    if (unmeasured) why = std::to_string(unmeasured) + " without a covered pixel";
+    if (failed) why += (why.empty() ? "" : ", ") + std::to_string(failed) + " failed";
+    throw UsageError(csvPath + (why.empty() ? std::string(": no rows")
+                                            : ": no row has a measured error_pct (" + why + ")"));
+  }
+  if (failed)
+    std::fprintf(stderr, "note: %s: %zu failed configuration%s not charted\n", csvPath.c_str(),
+                 failed, failed == 1 ? "" : "s");
   ChartSpec spec;
   spec.x = x;
   spec.title = std::string(chartHeadline(x)) + ": " + first[cScene] + ", " + first[cCamera];

@@ -227,6 +227,15 @@ void checkOutputs(const std::vector<OutputFile>& outputs, const std::vector<Outp
   }
 }
 
+void checkOutputsAgainstScene(const std::vector<OutputFile>& outputs, const Scene& scene) {
+  for (const OutputFile& o : outputs)
+    for (const std::string& in : scene.inputFiles)
+      if (!o.path.empty() && sameFile(in, o.path))
+        throw UsageError(o.option + ": '" + o.path + "' is the same file as '" + in +
+                         "', which the scene " + scene.name +
+                         " loaded (the input would be overwritten)");
+}
+
 void checkOutputFolder(const std::string& option, const std::string& folder) {
   if (auto e = probeFolder(folder)) throw UsageError(option + ": " + *e);
 }

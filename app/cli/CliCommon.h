@@ -70,6 +70,9 @@ struct OutputFile {
 /// takes no new file (a probe file is created and removed). Creates missing folders.
 void checkOutputs(const std::vector<OutputFile>& outputs,
                   const std::vector<OutputFile>& inputs = {});
+/// After the scene loaded: UsageError naming the option when an output is one of the files
+/// the scene read (its file, buffers and images: Scene::inputFiles).
+void checkOutputsAgainstScene(const std::vector<OutputFile>& outputs, const Scene& scene);
 /// A folder that will receive outputs (compare --out-dir): created, and probed as above.
 void checkOutputFolder(const std::string& option, const std::string& folder);
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "CliCommon.h"
+#include "algo/InputFile.h"
 #include "metrics/ErrorMetrics.h"
 
 namespace sl::cli {
@@ -50,6 +51,13 @@ std::vector<std::string> drainGlErrors() {
 
 }  // namespace
 
+std::string firstFailureText(const std::vector<const FrameSample*>& frames) {
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    if (frames[k]->failed())
+      return cutText("frame " + std::to_string(k) + ": " + frames[k]->renderError);
+  return "";
+}
+
 std::string ConfigSpec::paramsText() const {
   std::string out;
   for (const auto& [k, v] : sets) out += (out.empty() ? "" : " ") + k + "=" + v;
@@ -70,6 +78,9 @@ std::optional<std::string> validateConfig(const ConfigSpec& spec) {
     if (!set) return "technique '" + spec.techniqueId + "' has no parameter '" + k + "'";
     if (auto e = set->setFromString(k, v)) return *e;
   }
+  // Values in range that the technique cannot render together (fvsm.grid=3).
+  if (auto e = checkTechniqueParams(*info, own))
+    return "technique '" + spec.techniqueId + "': " + *e;
   return std::nullopt;
 }
 
@@ -168,6 +179,12 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
   collectGlErrors();  // anything since the last frame (set-up) counts against this one
   if (auto e = r.renderFrame(options.width, options.height, 0)) s.renderError = *e;
   collectGlErrors();
+  if (s.failed()) {
+    // Nothing was measured: the renderer drew a neutral frame and its stats, readback and
+    // publication are an older frame's. The next frame has no previous one to compare with.
+    forgetPreviousFrame();
+    return s;
+  }
   const FrameStats& st = r.stats();
   s.totalMs = st.totalMs;
   s.passes = st.passes;

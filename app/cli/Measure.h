@@ -29,8 +29,9 @@ struct ConfigSpec {
   std::string paramsText() const;
 };
 
-/// Checks that the technique exists, every key is a parameter of it (or a shared one) and
-/// every value is in range; the error names the problem.
+/// Checks that the technique exists, every key is a parameter of it (or a shared one),
+/// every value is in range and the values together are ones the technique renders
+/// (TechniqueInfo::checkParams); the error names the problem.
 std::optional<std::string> validateConfig(const ConfigSpec& spec);
 
 /// Parses "ID[:KEY=V1,V2,...]..." (e.g. "uniform:resolution=512,1024:pcf=0,1") into the
@@ -59,7 +60,9 @@ class ReferenceCache {
 
 /// What one frame of one configuration measured.
 struct FrameSample {
-  std::string renderError;  ///< renderFrame's error (a neutral frame was rendered)
+  /// renderFrame's error: the frame failed and measured nothing (every number below stays
+  /// at its default and is never counted; see failed()).
+  std::string renderError;
   std::vector<std::string> glErrors;
   double totalMs = 0.0;
   std::vector<PassTiming> passes;
@@ -75,7 +78,14 @@ struct FrameSample {
   double ex = 1.0;                       ///< principal axis x component (1 without one)
   bool held = true;                      ///< the threshold held the rotation (true without one)
   std::vector<std::string> nonFiniteNumbers;  ///< published numbers that are NaN/inf
+
+  bool failed() const { return !renderError.empty(); }
 };
+
+/// The first failed frame of a run, "frame 3: camera: position, target or up is not finite"
+/// (cut to the 300-character rule), or "" when every frame rendered. `frames` in the order
+/// they ran, numbered from 0.
+std::string firstFailureText(const std::vector<const FrameSample*>& frames);
 
 struct MeasureOptions {
   int width = 640, height = 360;
@@ -95,7 +105,9 @@ class ConfigRunner {
   Renderer& renderer() { return *renderer_; }
 
   /// Renders one frame from `camera` and measures it. `reference` may be null (no error or
-  /// flicker). The mask change and flicker compare with this runner's previous frame.
+  /// flicker). The mask change and flicker compare with this runner's previous frame. A
+  /// frame renderFrame refuses is returned failed (renderError set, nothing read back or
+  /// compared), and the next frame compares with none.
   FrameSample renderAndMeasure(const Camera& camera, const MeasureOptions& options,
                                ReferenceCache* reference);
   /// Forgets the previous frame (no mask change or flicker against it); the renderer's

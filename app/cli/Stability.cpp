@@ -78,6 +78,7 @@ int runSingle(Args& a) {
     throw UsageError((e->rfind("unknown technique", 0) == 0 ? "--technique: " : "--set: ") + *e);
 
   std::shared_ptr<Scene> scene = loadScene(sceneName);
+  checkOutputsAgainstScene({{"--json", jsonPath}}, *scene);
   Camera cam = pickCamera(*scene, camera);
   if (orbit != 0.0) cam = orbitCentred(cam, *scene);
   std::vector<Camera> cameras;
@@ -132,6 +133,9 @@ int runSingle(Args& a) {
       sum.rotationChanges, sum.maxRotationStepDeg, sum.lastRotationChangeFrame,
       sum.maskChangeFrames, sum.maxMaskChangedPct, sum.lastMaskChangeFrame,
       sum.hasRotation ? "" : " [no rotation: reported as 0 deg, e_x 1, held]", jsonPath.c_str());
+  if (sum.failed())
+    std::fprintf(stderr, "shadowlab-cli: %s: %d of %d frames failed (not measured), first %s\n",
+                 spec.label.c_str(), sum.renderErrors, frames, sum.failure.c_str());
   return (sum.renderErrors || sum.glErrors) ? 1 : 0;
 }
 

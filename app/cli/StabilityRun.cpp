@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "algo/InputFile.h"
+
 using nlohmann::json;
 
 namespace sl::cli {
@@ -40,12 +42,20 @@ constexpr double kRotationEpsDeg = 1e-6;  ///< smaller steps are float noise, no
 StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, int warmup) {
   StabilitySummary s;
   std::vector<double> err, fl, fs, cov, am, ap, ax, flick, ms;
-  int referenceFrames = 0, measuredFrames = 0;
+  int referenceFrames = 0, measuredFrames = 0, renderedFrames = 0;
+  std::vector<const FrameSample*> order;
+  for (const StabilityFrame& f : frames) order.push_back(&f.sample);
+  s.failure = firstFailureText(order);
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const FrameSample& f = frames[k].sample;
     s.hasRotation = s.hasRotation || f.hasRotation;
+    // A failed frame, warm-up or not, is counted and measures nothing.
+    s.renderErrors += f.failed() ? 1 : 0;
     if (int(k) < warmup) continue;
     ++s.framesCounted;
+    s.glErrors += int(f.glErrors.size());
+    if (f.failed()) continue;
+    ++renderedFrames;
     const double step = std::abs(frames[k].rotationStepDeg);
     if (step > kRotationEpsDeg) {
       ++s.rotationChanges;
@@ -72,8 +82,6 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
     ax.push_back(f.aliasing.max);
     if (f.flicker) flick.push_back(f.flicker->pct);
     ms.push_back(f.totalMs);
-    s.renderErrors += f.renderError.empty() ? 0 : 1;
-    s.glErrors += int(f.glErrors.size());
     s.nonFiniteNumbers += int(f.nonFiniteNumbers.size());
   }
   if (referenceFrames > 0 && measuredFrames == 0) {
@@ -94,6 +102,14 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
   for (double v : flick) s.flickerPctMax = std::max(s.flickerPctMax, v);
   s.totalMs = median(ms);
   for (double v : ms) s.totalMsMax = std::max(s.totalMsMax, v);
+  if (renderedFrames == 0 && s.framesCounted > 0) {
+    // No counted frame rendered: nothing was measured (null in JSON, "n/a" in text).
+    for (double* v :
+         {&s.maxRotationStepDeg, &s.maxMaskChangedPct, &s.errorPct, &s.falseLitPct,
+          &s.falseShadowPct, &s.covered, &s.aliasingMean, &s.aliasingP95, &s.aliasingMax,
+          &s.flickerPct, &s.flickerPctMean, &s.flickerPctMax, &s.totalMs, &s.totalMsMax})
+      *v = std::numeric_limits<double>::quiet_NaN();
+  }
   return s;
 }
 
@@ -108,6 +124,7 @@ json summaryJson(const StabilitySummary& s) {
       j[k] = v;
   }
   j["has_rotation"] = s.hasRotation;
+  if (s.failed()) j["failure"] = s.failure;
   return j;
 }
 
@@ -119,8 +136,14 @@ std::vector<std::vector<StabilityFrame>> runFrames(
     for (std::size_t i = 0; i < runners.size(); ++i) {
       StabilityFrame fr;
       fr.sample = runners[i]->renderAndMeasure(cameras[f], opts, reference);
-      const double previous = out[i].empty() ? 0.0 : out[i].back().sample.rotationDeg;
-      fr.rotationStepDeg = angleStepDeg(previous, fr.sample.rotationDeg);
+      // The rotation step is from the last frame that rendered; a failed frame has none.
+      double previous = 0.0;
+      for (auto it = out[i].rbegin(); it != out[i].rend(); ++it)
+        if (!it->sample.failed()) {
+          previous = it->sample.rotationDeg;
+          break;
+        }
+      if (!fr.sample.failed()) fr.rotationStepDeg = angleStepDeg(previous, fr.sample.rotationDeg);
       out[i].push_back(std::move(fr));
       progress.step("frame " + std::to_string(f + 1) + "/" + std::to_string(cameras.size()) + "  " +
                         runners[i]->spec().label,
@@ -132,6 +155,11 @@ std::vector<std::vector<StabilityFrame>> runFrames(
 
 json frameJson(std::size_t k, const StabilityFrame& fr) {
   const FrameSample& s = fr.sample;
+  if (s.failed()) {  // measured nothing
+    json j = {{"frame", k}, {"render_error", cutText(s.renderError)}};
+    if (!s.glErrors.empty()) j["gl_errors"] = s.glErrors;
+    return j;
+  }
   json j = {{"frame", k},
             {"rotation_deg", s.rotationDeg},
             {"rotation_step_deg", fr.rotationStepDeg},

@@ -45,14 +45,23 @@ struct StabilitySummary {
   double covered = 0;
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
   double flickerPct = 0, flickerPctMean = 0, flickerPctMax = 0;
-  double totalMs = 0;     ///< median frame
-  double totalMsMax = 0;  ///< the worst frame
-  int renderErrors = 0, glErrors = 0, nonFiniteNumbers = 0;
+  double totalMs = 0;                                        ///< median frame
+  double totalMsMax = 0;                                     ///< the worst frame
+  int renderErrors = 0, glErrors = 0, nonFiniteNumbers = 0;  ///< failed frames: all of them
   bool hasRotation = false;
+  /// The first failed frame and why ("" when every frame rendered). A failed frame is
+  /// counted in render_errors and measures nothing: every other metric is over the frames
+  /// that rendered, and NaN (not measured) when none did.
+  std::string failure;
+  bool failed() const { return !failure.empty(); }
 
   /// The metrics that are NaN when nothing was measured (no covered pixel).
   static bool isErrorMetric(const std::string& name) {
     return name == "error_pct" || name == "false_lit_pct" || name == "false_shadow_pct";
+  }
+  /// The metrics that count what went wrong, still meaningful when frames failed.
+  static bool isFailureCount(const std::string& name) {
+    return name == "render_errors" || name == "gl_errors" || name == "non_finite_numbers";
   }
   /// The metrics by name (the names expectations use).
   std::map<std::string, double> metrics() const {
@@ -81,7 +90,7 @@ struct StabilitySummary {
   }
 };
 
-/// Aggregates the frames with index >= warmup.
+/// Aggregates the frames with index >= warmup; failed frames are counted in every frame.
 StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, int warmup);
 nlohmann::json summaryJson(const StabilitySummary& s);
 nlohmann::json frameJson(std::size_t k, const StabilityFrame& fr);

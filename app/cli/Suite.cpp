@@ -151,7 +151,9 @@ Camera cameraOf(const JsonReader& r, const json& c, const std::string& path) {
   cam.fovYDeg = float(r.number(c, path, "fov_deg", cam.fovYDeg));
   cam.nearM = float(r.number(c, path, "near_m", cam.nearM));
   cam.farM = float(r.number(c, path, "far_m", cam.farM));
-  if (auto e = cam.validate()) r.fail(path, *e);
+  if (auto e = cameraFieldError(cam, {"up", "near_m", "far_m"}))
+    r.fail(jsonPath(path, e->first), e->second);
+  if (auto e = cam.validate()) r.fail(path, withoutCameraPrefix(*e));
   return cam;
 }
 
@@ -221,6 +223,9 @@ SuiteTechnique techniqueOf(const JsonReader& r, const json& t, const std::string
                                                                    : std::string()));
       st.spec.sets.push_back({k, text});
     }
+    // Values in range that the technique cannot render together (fvsm.grid = 3).
+    if (auto e = checkTechniqueParams(*info, own))
+      r.fail(setPath, "technique '" + st.spec.techniqueId + "': " + quoteText(*e));
   }
   if (!onlyTechniques.empty() && std::find(onlyTechniques.begin(), onlyTechniques.end(),
                                            st.spec.techniqueId) == onlyTechniques.end()) {
@@ -422,9 +427,7 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
   std::vector<Camera> cameras;
   if (sc.motion == "path") {
     const CameraPath& path = pickPath(*scene, sc.path);
-    for (int f = 0; f < sc.frames; ++f)
-      cameras.push_back(
-          path.sample(sc.frames > 1 ? path.durationS() * float(f) / float(sc.frames - 1) : 0.0f));
+    for (int f = 0; f < sc.frames; ++f) cameras.push_back(path.sampleFrame(f, sc.frames));
   } else {
     if (sc.motion == "orbit") cam = orbitCentred(cam, *scene);
     for (int f = 0; f < sc.frames; ++f) {
@@ -481,6 +484,9 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       continue;
     }
     const StabilitySummary& s = byLabel.at(t.spec.label);
+    if (s.failed())
+      report << "   " << t.spec.label << ": " << s.renderErrors << " of " << sc.frames
+             << " frames failed, first " << s.failure << "\n";
     char error[32] = "n/a";  // no covered pixel: not measured
     if (std::isfinite(s.errorPct)) std::snprintf(error, sizeof error, "%.3f", s.errorPct);
     std::snprintf(line, sizeof line, "   %-30s %8s %8.3f %9.4f %9.4f %8d %9.4f %8d %8.1f\n",
@@ -507,9 +513,34 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
     caseJson["detail"] = r.detail;
   }
 
+  // A configuration whose frames failed measured nothing there: the case fails, whatever
+  // its expectations say.
+  json failuresJson = json::array();
+  for (const SuiteTechnique* t : ran) {
+    const StabilitySummary& s = byLabel.at(t->spec.label);
+    if (!s.failed()) continue;
+    ExpectationResult r;
+    r.text = t->spec.label + " renders every frame";
+    r.status = "FAIL";
+    r.detail = std::to_string(s.renderErrors) + " of " + std::to_string(sc.frames) +
+               " frames failed, first " + s.failure;
+    count(tally, sc, r, "");
+    failuresJson.push_back({{"technique", t->spec.label}, {"detail", r.detail}});
+  }
+  if (!failuresJson.empty()) caseJson["failed_configurations"] = failuresJson;
+
   // Expectations.
   json expJson = json::array();
   // Why `label`'s `metric` is not checked: not run, or an error metric not measured.
+  // Why `label`'s `metric` cannot pass: frames of it failed (only the failure counts are
+  // still checked as usual).
+  auto failReason = [&](const std::string& label, const std::string& metric) -> std::string {
+    auto it = byLabel.find(label);
+    if (it == byLabel.end() || !it->second.failed() || StabilitySummary::isFailureCount(metric))
+      return "";
+    return label + ": " + std::to_string(it->second.renderErrors) + " of " +
+           std::to_string(sc.frames) + " frames failed, first " + it->second.failure;
+  };
   auto skipReason = [&](const std::string& label, const std::string& metric) -> std::string {
     for (const SuiteTechnique& t : sc.techniques)
       if (t.spec.label == label && !t.skipped.empty()) return t.skipped;
@@ -526,7 +557,12 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       r.text = e.better + " " + e.metric + " " + e.op + " " + e.worse + " " + e.metric;
       std::string sk = skipReason(e.better, e.metric);
       if (sk.empty()) sk = skipReason(e.worse, e.metric);
-      if (!sk.empty()) {
+      std::string failed = failReason(e.better, e.metric);
+      if (failed.empty()) failed = failReason(e.worse, e.metric);
+      if (!failed.empty()) {
+        r.status = "FAIL";
+        r.detail = failed;
+      } else if (!sk.empty()) {
         r.status = "skipped";
         r.detail = sk;
       } else {
@@ -554,7 +590,14 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       }
       std::string got, failedLabels, skippedText, skippedLabels;
       int checked = 0;
+      std::string failedDetail;  // configurations whose frames failed: not measured
       for (const std::string& l : labels) {
+        if (std::string why = failReason(l, e.metric); !why.empty()) {
+          ++checked;
+          failedLabels += (failedLabels.empty() ? "" : ", ") + l;
+          failedDetail += (failedDetail.empty() ? "" : "; ") + why;
+          continue;
+        }
         if (std::string sk = skipReason(l, e.metric); !sk.empty()) {
           if (skippedText.find(sk) == std::string::npos)
             skippedText += (skippedText.empty() ? "" : "; ") + sk;
@@ -572,7 +615,8 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       } else {
         r.status = failedLabels.empty() ? "pass" : "FAIL";
         r.detail =
-            "got " + got +
+            (got.empty() ? "" : "got " + got) + (failedDetail.empty() || got.empty() ? "" : "; ") +
+            failedDetail +
             (failedLabels.empty() || e.technique != "*" ? "" : " (failing: " + failedLabels + ")") +
             (skippedLabels.empty() ? "" : "; not checked: " + skippedLabels);
       }

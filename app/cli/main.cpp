@@ -26,6 +26,7 @@
 #include "Commands.h"
 #include "Measure.h"
 #include "Montage.h"
+#include "algo/InputFile.h"
 #include "algo/metrics/BenchStats.h"
 #include "core/Preset.h"
 #include "core/Renderer.h"
@@ -71,7 +72,10 @@ struct RenderConfig {
   int frames = 1;
   std::string camera;
   std::optional<sl::Camera> presetCamera;  ///< a --preset's camera (a later --camera wins)
-  std::string path;     ///< a camera path: the camera at pathAt of its duration (bench's frames)
+  std::string preset;                      ///< the --preset file (an input)
+  /// A camera path: the camera a fraction pathAt of the way from its first key to its last
+  /// (bench's frames spread over the same span).
+  std::string path;
   double pathAt = 0.0;  ///< 0 = the path's start, 1 = its end
   std::optional<sl::Light> light;
   std::string out, metrics, errorImage, wrongPixels;
@@ -285,9 +289,12 @@ void configure(sl::Renderer& r, const RenderConfig& cfg, const std::shared_ptr<s
     sl::ParamSet& set = r.rendererParams().has(key) ? r.rendererParams() : r.params();
     if (auto e = set.assign(kv)) throw UsageError("--set: " + *e);
   }
+  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r.techniqueId()))
+    if (auto e = sl::checkTechniqueParams(*info, r.params()))
+      throw UsageError("--set: technique '" + r.techniqueId() + "': " + *e);
   if (!cfg.path.empty()) {
     const sl::CameraPath& path = pickPath(*scene, cfg.path);
-    r.setCamera(path.sample(float(cfg.pathAt) * path.durationS()));
+    r.setCamera(path.sampleFraction(float(cfg.pathAt)));
   } else {
     r.setCamera(cfg.presetCamera ? *cfg.presetCamera : pickCamera(*scene, cfg.camera));
   }
@@ -437,7 +444,8 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
       cfg.light = parseLight(o, a.take(i, o));
     else if (o == "--preset") {
       std::string err;
-      auto p = sl::loadPreset(a.take(i, o), &err);
+      cfg.preset = a.take(i, o);
+      auto p = sl::loadPreset(cfg.preset, &err);
       if (!p) throw UsageError("--preset: " + err);
       if (!p->scene.empty()) cfg.scene = p->scene;
       if (!p->technique.empty()) cfg.technique = p->technique;
@@ -472,15 +480,17 @@ RenderConfig parseRender(Args& a, size_t start, bool needOut) {
 
 int cmdRender(Args& a) {
   RenderConfig cfg = parseRender(a, 1, true);
-  checkOutputs({{"--out", cfg.out},
-                {"--metrics", cfg.metrics},
-                {"--error-image", cfg.errorImage},
-                {"--wrong-pixels", cfg.wrongPixels}},
-               {{"--scene", cfg.scene}});
+  const std::vector<OutputFile> outputs = {{"--out", cfg.out},
+                                           {"--metrics", cfg.metrics},
+                                           {"--error-image", cfg.errorImage},
+                                           {"--wrong-pixels", cfg.wrongPixels}};
+  checkOutputs(outputs, {{"--scene", cfg.scene}, {"--preset", cfg.preset}});
+  const std::shared_ptr<sl::Scene> scene = loadScene(cfg.scene);
+  checkOutputsAgainstScene(outputs, *scene);
   sl::gl::EglContext ctx;
   checkFrameSize(cfg.width, cfg.height);
   sl::Renderer r;
-  configure(r, cfg, loadScene(cfg.scene));
+  configure(r, cfg, scene);
   sl::Renderer::ErrorResult err;
   json j = renderAndMeasure(r, cfg, err, /*showProgress=*/true);
   // view.outside=on: --out is the outside view (what a host shows); the error image and the
@@ -552,7 +562,6 @@ int cmdCompare(Args& a) {
     throw UsageError("--wrong-pixels: a render option (one configuration), not compare's");
   if (base.out.empty()) base.out = "shadowlab-out";
   checkOutputFolder("--out-dir", base.out);
-  if (!montage.empty()) checkOutputs({{"--montage", montage}}, {{"--scene", base.scene}});
   // The configurations: each --technique ID[:KEY=V1,V2...] expanded (as bench does), or every
   // technique at its defaults.
   std::vector<sl::cli::ConfigSpec> specs;
@@ -561,14 +570,34 @@ int cmdCompare(Args& a) {
   const bool all = specs.empty();
   if (all)
     for (const auto& t : sl::Renderer::techniques()) specs.push_back({t.id, {}, t.id});
+  {  // The same configuration listed twice gets its own name (and files).
+    std::map<std::string, int> seen;
+    for (sl::cli::ConfigSpec& c : specs)
+      if (int n = ++seen[c.label]; n > 1) c.label += " #" + std::to_string(n);
+  }
+  // Every file compare writes, checked against each other and the inputs before any work:
+  // per configuration <stem>.png, <stem>.error.png, <stem>.json, then summary.json and the
+  // montage.
+  auto stemOf = [&](const std::string& label) {
+    std::string file = label;
+    for (char& ch : file)
+      if (ch == ' ' || ch == '/' || ch == ':' || ch == '#') ch = '_';
+    return (fs::path(base.out) / file).string();
+  };
+  std::vector<OutputFile> outputs;
+  for (const sl::cli::ConfigSpec& spec : specs)
+    for (const char* ext : {".png", ".error.png", ".json"})
+      outputs.push_back({"--out-dir (" + spec.label + ")", stemOf(spec.label) + ext});
+  outputs.push_back({"--out-dir (summary)", (fs::path(base.out) / "summary.json").string()});
+  if (!montage.empty()) outputs.push_back({"--montage", montage});
+  checkOutputs(outputs, {{"--scene", base.scene}, {"--preset", base.preset}});
+  const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
+  checkOutputsAgainstScene(outputs, *scene);
   sl::gl::EglContext ctx;
   checkFrameSize(base.width, base.height);
   sl::Renderer r;
-  const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
   json summary = json::array();
   std::vector<sl::ui::FigureCell> cells;
-  std::printf("%-28s %10s %12s %10s %10s %10s\n", "configuration", "total ms", "texels", "error %",
-              "false lit", "false shd");
   r.setScene(scene);  // the scene's light, or --light's
   if (base.light) r.setLight(*base.light);
   const sl::LightType lightType = r.light().type;
@@ -577,6 +606,29 @@ int cmdCompare(Args& a) {
       if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(spec.techniqueId))
         if (auto e = sl::checkLightSupport(*info, lightType))
           throw UsageError("--technique " + spec.techniqueId + ": " + *e);
+  // --set (and a preset's parameters) apply to every configuration that renders: each must
+  // have the key and take the value, checked before anything renders.
+  for (const sl::cli::ConfigSpec& spec : specs) {
+    const sl::TechniqueInfo* info = sl::Renderer::findTechnique(spec.techniqueId);
+    if (info && sl::checkLightSupport(*info, lightType)) continue;  // skipped below
+    sl::cli::ConfigSpec trial = spec;
+    for (const std::string& kv : base.sets) {
+      auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw UsageError("--set: expected KEY=VALUE, got '" + kv + "'");
+      bool swept = false;  // a --technique sweep's own value wins
+      for (const auto& [k, v] : spec.sets) swept = swept || k == kv.substr(0, eq);
+      if (!swept) trial.sets.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
+    }
+    if (auto e = sl::cli::validateConfig(trial))
+      throw UsageError("--set: " + *e +
+                       (all ? " (compare renders every technique: name the "
+                              "ones to compare with --technique)"
+                            : ""));
+  }
+  std::size_t failed = 0;  // configurations whose frames the renderer refused
+  std::printf("%-28s %10s %12s %10s %10s %10s\n", "configuration", "total ms", "texels", "error %",
+              "false lit", "false shd");
   for (const sl::cli::ConfigSpec& spec : specs) {
     // A technique that cannot render this light (cube: no directional) gets a row saying
     // so, not a wrong picture; the others go on.
@@ -591,12 +643,22 @@ int cmdCompare(Args& a) {
     cfg.frames = std::max(cfg.frames, 3);
     configure(r, cfg, scene);
     sl::Renderer::ErrorResult err;
-    json j = renderAndMeasure(r, cfg, err);
+    json j;
+    try {
+      j = renderAndMeasure(r, cfg, err);
+    } catch (const UsageError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      // A frame the renderer refused measured nothing: a failed row, no image; the others
+      // go on.
+      const std::string why = sl::cutText(e.what());
+      std::printf("%-28s failed: %s\n", spec.label.c_str(), why.c_str());
+      summary.push_back({{"configuration", spec.label}, {"failure", why}});
+      ++failed;
+      continue;
+    }
     j["configuration"] = spec.label;
-    std::string file = spec.label;
-    for (char& ch : file)
-      if (ch == ' ' || ch == '/' || ch == ':') ch = '_';
-    const std::string stem = (fs::path(base.out) / file).string();
+    const std::string stem = stemOf(spec.label);
     writePng(stem + ".png", err.frame.color);
     writePng(stem + ".error.png",
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
@@ -632,7 +694,9 @@ int cmdCompare(Args& a) {
       "wrote images (<configuration>.png, <configuration>.error.png) and metrics (*.json, "
       "summary.json) to %s\n",
       fs::absolute(base.out).string().c_str());
-  if (!montage.empty()) {
+  if (!montage.empty() && cells.empty())
+    std::fprintf(stderr, "note: %s not written: no configuration rendered\n", montage.c_str());
+  if (!montage.empty() && !cells.empty()) {
     char title[256];
     std::snprintf(title, sizeof title,
                   "%s, %dx%d, %s light; below each image its errors against the exact reference "
@@ -645,7 +709,11 @@ int cmdCompare(Args& a) {
     if (auto e = sl::cli::writeMontage(cells, title, columns, inset, montage)) throw UsageError(*e);
     std::printf("wrote the montage %s\n", montage.c_str());
   }
-  return 0;
+  if (failed)
+    std::fprintf(stderr, "shadowlab-cli: %zu configuration%s failed (see \"failure\" in %s)\n",
+                 failed, failed == 1 ? "" : "s",
+                 (fs::path(base.out) / "summary.json").string().c_str());
+  return failed ? 1 : 0;
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -48,10 +50,19 @@ std::optional<std::string> Camera::validate() const {
   if (!finite(position) || !finite(target) || !finite(up))
     return "camera: position, target or up is not finite";
   if (glm::length(target - position) < 1e-6f) return "camera: position equals target";
+  if (!(glm::length(up) > 1e-6f)) return "camera: up is a zero vector";
   if (!(fovYDeg > 1.0f && fovYDeg < 170.0f))
     return "camera: vertical field of view must be in (1, 170) degrees";
-  if (!(nearM > 0.0f) || !(farM > nearM) || !std::isfinite(farM))
-    return "camera: need 0 < near < far (finite)";
+  auto number = [](float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", double(v));
+    return std::string(buf);
+  };
+  if (!(nearM >= kMinNearM))
+    return "camera: near must be at least " + number(kMinNearM) + " m (got " + number(nearM) + ")";
+  if (!(farM > nearM) || !std::isfinite(farM)) return "camera: need 0 < near < far (finite)";
+  if (!(farM <= kMaxFarM))
+    return "camera: far must be at most " + number(kMaxFarM) + " m (got " + number(farM) + ")";
   glm::vec3 f = forward();
   if (glm::length(glm::cross(f, glm::normalize(up))) < 1e-4f)
     return "camera: up vector is parallel to the view direction";

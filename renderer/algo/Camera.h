@@ -38,8 +38,15 @@ struct Camera {
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
   glm::vec3 forward() const;
-  /// An error naming what is wrong (NaN position, eye == target, near >= far, fov out of
-  /// (1, 170) degrees, up parallel to the view direction), or nothing when usable.
+  /// The nearest near plane a frame renders with (float depth: 1e-40 renders nothing).
+  static constexpr float kMinNearM = 1e-6f;
+  /// The farthest far plane (a thousand times the largest scene extent the loader accepts;
+  /// 3e38 leaves nothing on screen).
+  static constexpr float kMaxFarM = 1e8f;
+
+  /// An error naming what is wrong (NaN position, eye == target, a zero up vector, near
+  /// below kMinNearM, far not above near or beyond kMaxFarM, fov out of (1, 170) degrees, up
+  /// parallel to the view direction), or nothing when usable. Each starts "camera: ".
   std::optional<std::string> validate() const;
   /// World-space corners of the view frustum between `nearM` and `farM`
   /// (0-3 near plane, 4-7 far plane).

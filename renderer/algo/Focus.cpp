@@ -178,7 +178,6 @@ std::optional<std::string> fitSpotLight(const Light& light, const Aabb& sceneBou
   float far = 0.0f;
   for (const glm::vec3& c : sceneBounds.corners()) far = std::max(far, glm::dot(c - pos, axis));
   if (light.rangeM > 0.0f) far = std::min(far, light.rangeM);
-  if (!(far > 0.0f)) return "spot light: the scene lies behind the light or beyond its range";
   // Nearest point of the bounds: a point inside the cone at distance r lies at least
   // r cos(outer) along the axis.
   const glm::vec3 nearest = glm::clamp(pos, sceneBounds.min, sceneBounds.max);
@@ -186,7 +185,14 @@ std::optional<std::string> fitSpotLight(const Light& light, const Aabb& sceneBou
   const float cosOuter = std::cos(glm::radians(light.outerConeDeg));
   float near = std::max(0.99f * dist * cosOuter, 1e-3f * far);
   far *= 1.01f;
-  if (!(near < far)) return "spot light: the scene lies behind the light or beyond its range";
+  out.sceneOutside = !(far > 0.0f) || !(near < far);
+  if (out.sceneOutside) {
+    // No point of the scene lies inside the cone within range: every point is shadowed (as
+    // the resolve and the reference say of points outside the cone). Any valid frustum
+    // along the axis draws that; this one holds no geometry.
+    far = light.rangeM > 0.0f ? light.rangeM : 1.0f;
+    near = 1e-3f * far;
+  }
   const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
   const float fov = 2.0f * glm::radians(light.outerConeDeg);
   out.view = glm::lookAt(pos, pos + axis, up);

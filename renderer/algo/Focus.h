@@ -40,6 +40,10 @@ struct LightFit {
   bool perspective = false;            ///< proj is a perspective projection (spot)
   float nearM = 0.0f, farM = 0.0f;     ///< perspective: near and far planes, metres
   std::vector<glm::vec3> focusPoints;  ///< vertices of the focus region (world)
+  /// Spot: no point of the scene bounds lies inside the cone within range (behind the light,
+  /// beyond its range): the frustum is a valid one along the axis, and every point is
+  /// outside the cone, so shadowed.
+  bool sceneOutside = false;
 };
 
 struct FocusSettings {
@@ -65,8 +69,9 @@ std::optional<std::string> fitDirectionalLightToScene(const Aabb& sceneBounds,
 /// field of view of twice the outer cone angle (the cone's bounding square), near and far
 /// fitted to the scene bounds within the light's range. Every point of the scene inside
 /// the cone lies inside the frustum: near is the bounds' distance times cos(cone) (or
-/// 1e-3 far when the light is inside the bounds). Error for a light that is not a valid
-/// spot, or empty bounds, or bounds wholly behind the light or beyond its range.
+/// 1e-3 far when the light is inside the bounds). Bounds wholly behind the light or beyond
+/// its range: a valid frustum with sceneOutside set (the scene is all shadowed). Error for a
+/// light that is not a valid spot, or empty bounds.
 std::optional<std::string> fitSpotLight(const Light& light, const Aabb& sceneBounds, LightFit& out);
 
 }  // namespace sl

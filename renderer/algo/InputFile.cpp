@@ -29,6 +29,15 @@ const char* fileKind(mode_t mode) {
 
 }  // namespace
 
+std::string cutText(std::string text, std::size_t maxBytes) {
+  if (text.size() <= maxBytes) return text;
+  const std::size_t total = text.size();
+  std::size_t n = maxBytes;
+  while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80) --n;
+  text.resize(n);
+  return text + "... (" + std::to_string(total) + " bytes)";
+}
+
 std::string byteLimitText(std::uint64_t bytes) {
   if (bytes >= (std::uint64_t(1) << 20)) return std::to_string(bytes >> 20) + " MiB";
   return std::to_string(bytes) + " bytes";

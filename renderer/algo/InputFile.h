@@ -20,6 +20,13 @@ struct InputFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Text from an input (a name, a title, a message) that reaches a title, a label or a message
+/// is cut to this many bytes.
+inline constexpr std::size_t kMaxMessageBytes = 300;
+
+/// `text` cut to `maxBytes` ("... (N bytes)" after the cut; never inside a UTF-8 sequence).
+std::string cutText(std::string text, std::size_t maxBytes = kMaxMessageBytes);
+
 /// "N MiB" (whole mebibytes, rounded down) or "N bytes" below one MiB.
 std::string byteLimitText(std::uint64_t bytes);
 

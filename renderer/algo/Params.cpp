@@ -151,4 +151,12 @@ std::string ParamSet::format(std::string_view key) const {
   return formatNumber(v);
 }
 
+std::optional<std::string> checkPowerOfTwo(const ParamSet& params, std::string_view key) {
+  const int v = params.getInt(key);
+  if (v > 0 && (v & (v - 1)) == 0) return std::nullopt;
+  const ParamDecl* d = params.find(key);
+  return std::string(key) + " = " + std::to_string(v) + " must be a power of two" +
+         (d ? " (" + describeRange(*d) + ")" : std::string());
+}
+
 }  // namespace sl

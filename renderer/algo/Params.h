@@ -83,4 +83,8 @@ class ParamSet {
   unsigned revision_ = 0;
 };
 
+/// For a technique's checkParams: "KEY = V must be a power of two (RANGE)" when the integer
+/// parameter `key` of `params` is not one, else nothing.
+std::optional<std::string> checkPowerOfTwo(const ParamSet& params, std::string_view key);
+
 }  // namespace sl

@@ -50,6 +50,29 @@ std::string jsonPath(const std::string& parent, std::size_t index) {
   return parent + "[" + std::to_string(index) + "]";
 }
 
+std::optional<std::pair<std::string, std::string>> cameraFieldError(const Camera& cam,
+                                                                    const CameraFieldNames& keys) {
+  auto number = [](float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", double(v));
+    return std::string(buf);
+  };
+  if (std::isfinite(cam.up.x) && std::isfinite(cam.up.y) && std::isfinite(cam.up.z) &&
+      !(glm::length(cam.up) > 1e-6f))
+    return std::pair{keys.up, std::string("a zero vector: the camera has no up direction")};
+  if (!(cam.nearM >= Camera::kMinNearM))
+    return std::pair{keys.near, "must be at least " + number(Camera::kMinNearM) + " m, got " +
+                                    number(cam.nearM)};
+  if (std::isfinite(cam.farM) && !(cam.farM <= Camera::kMaxFarM))
+    return std::pair{keys.far,
+                     "must be at most " + number(Camera::kMaxFarM) + " m, got " + number(cam.farM)};
+  return std::nullopt;
+}
+
+std::string withoutCameraPrefix(const std::string& error) {
+  return error.rfind("camera: ", 0) == 0 ? error.substr(8) : error;
+}
+
 json JsonReader::parseFile() const {
   std::vector<unsigned char> bytes;
   try {

@@ -7,11 +7,15 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include <nlohmann/json.hpp>
+
+#include "algo/Camera.h"
 
 namespace sl {
 
@@ -33,6 +37,18 @@ std::string quoteJson(const nlohmann::json& value, std::size_t maxBytes = 200);
 std::string jsonPath(const std::string& parent, std::string_view key);
 /// "parent[i]".
 std::string jsonPath(const std::string& parent, std::size_t index);
+
+/// The keys a camera object names its up vector, near and far planes with ("up", "near_m",
+/// "far_m" in a suite; "up", "nearM", "farM" in a preset).
+struct CameraFieldNames {
+  std::string up, near, far;
+};
+/// A camera value a reader should refuse naming its field: {key, what} for a zero up vector,
+/// a near plane below Camera::kMinNearM, a far plane beyond Camera::kMaxFarM.
+std::optional<std::pair<std::string, std::string>> cameraFieldError(const Camera& cam,
+                                                                    const CameraFieldNames& keys);
+/// Camera::validate's error without its "camera: " (the reader's path names the camera).
+std::string withoutCameraPrefix(const std::string& error);
 
 /// Typed access to one file's JSON, throwing JsonInputError("FILE: PATH: ...").
 class JsonReader {

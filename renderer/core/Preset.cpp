@@ -155,7 +155,9 @@ Preset parsePreset(const JsonReader& r, const json& j) {
     cam.fovYDeg = float(r.number(*c, "camera", "fovYDeg", cam.fovYDeg));
     cam.nearM = float(r.number(*c, "camera", "nearM", cam.nearM));
     cam.farM = float(r.number(*c, "camera", "farM", cam.farM));
-    if (auto err = cam.validate()) r.fail("camera", *err);
+    if (auto e = cameraFieldError(cam, {"up", "nearM", "farM"}))
+      r.fail("camera." + e->first, e->second);
+    if (auto err = cam.validate()) r.fail("camera", withoutCameraPrefix(*err));
     p.camera = cam;
   }
   if (const json* l = JsonReader::member(j, "light")) {

@@ -328,6 +328,10 @@ std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightTyp
          "a " + std::string(lightTypeName(type)) + " light";
 }
 
+std::optional<std::string> checkTechniqueParams(const TechniqueInfo& info, const ParamSet& params) {
+  return info.checkParams ? info.checkParams(params) : std::nullopt;
+}
+
 Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<RendererState>()) {
   if (epoxy_gl_version() < 45 || !epoxy_is_desktop_gl())
     throw std::runtime_error("ShadowLab needs a desktop OpenGL 4.5 core context; got " +
@@ -840,8 +844,11 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   if (!s.scene || !s.sceneGpu) return neutral("no scene loaded");
   if (auto err = s.camera.validate()) return neutral(*err);
   if (auto err = s.light.validate()) return neutral(*err);
-  if (const TechniqueInfo* info = findTechnique(s.techniqueId))
+  if (const TechniqueInfo* info = findTechnique(s.techniqueId)) {
     if (auto err = checkLightSupport(*info, s.light.type)) return neutral(*err);
+    if (auto err = checkTechniqueParams(*info, params()))
+      return neutral("technique '" + s.techniqueId + "': " + *err);
+  }
 
   {  // What this frame shows; the error overlay is only drawn for a matching reference.
     const Camera& c = s.camera;

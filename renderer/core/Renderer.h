@@ -97,7 +97,15 @@ struct TechniqueInfo {
   std::optional<TileTiming> tileTiming;
   /// The declaration matching `key` (exactly or by pattern); null when not published.
   const PublicationDecl* findPublication(std::string_view key) const;
+  /// Combinations of parameter values the technique cannot render though each value is in
+  /// its declared range (fvsm.grid must be a power of two, a page pool must hold the top of
+  /// the quadtree): an error naming the parameters, their values and what they need; null
+  /// (or unset) when every in-range combination renders. Checked wherever values are set up
+  /// front (the CLI's --set, presets and suites) and by renderFrame.
+  std::function<std::optional<std::string>(const ParamSet&)> checkParams;
 };
+/// `info.checkParams(params)` when the technique declares one, else nothing.
+std::optional<std::string> checkTechniqueParams(const TechniqueInfo& info, const ParamSet& params);
 /// An error like "technique 'uniform' supports: directional, spot; the light is a point
 /// light" when `info` does not support `type`, else nothing.
 std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightType type);

@@ -70,9 +70,6 @@ constexpr std::uint64_t kMaxImagePixels = std::uint64_t(1) << 26;
 constexpr std::uint64_t kMaxTotalImagePixels = std::uint64_t(1) << 26;
 /// Input quoted in a message is cut to this many bytes.
 constexpr std::size_t kMaxQuotedBytes = 120;
-/// A whole message or warning (tinygltf's texts quote input, such as a whole data: URI) is
-/// cut to this many bytes after the file's name.
-constexpr std::size_t kMaxMessageBytes = 300;
 /// How far from the origin (largest |x|, |y| or |z| of the bounds, metres) the geometry may
 /// reach. Positions, shadow maps and depths are floats in world space, and a float's spacing
 /// grows with its magnitude: below 1e5 m (2^16..2^17) it is 2^-7 m, about 8 mm. Measured
@@ -91,6 +88,13 @@ struct LoadFailure {
 
 [[noreturn]] void fail(std::string message) {
   throw LoadFailure{std::move(message)};
+}
+
+/// "2.5 s".
+std::string secondsText(float s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g s", double(s));
+  return buf;
 }
 
 std::string inQuotes(const std::string& s) {
@@ -123,16 +127,6 @@ std::string oneLine(const std::string& text) {
   }
   while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
   return out;
-}
-
-/// `text` cut to `maxBytes` ("... (N bytes)" after the cut; never inside a UTF-8 sequence).
-std::string cutText(std::string text, std::size_t maxBytes = kMaxMessageBytes) {
-  if (text.size() <= maxBytes) return text;
-  const std::size_t total = text.size();
-  std::size_t n = maxBytes;
-  while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80) --n;
-  text.resize(n);
-  return text + "... (" + std::to_string(total) + " bytes)";
 }
 
 void addLines(std::vector<std::string>& to, const std::string& text) {
@@ -1251,6 +1245,10 @@ class Flattener {
       if (!std::isfinite(track.times[k]) || (k > 0 && track.times[k] < track.times[k - 1]))
         fail(label + ": key times must be finite and increasing");
       const float* v = &out[(k * perKey + (cubic ? 1 : 0)) * comps];
+      for (std::size_t c = 0; c < comps; ++c)
+        if (!std::isfinite(v[c]))
+          fail(label + ": key " + std::to_string(k) + " (at " + secondsText(track.times[k]) +
+               ") has a value that is not finite");
       track.values.emplace_back(v[0], v[1], v[2], track.rotation ? v[3] : 0.0f);
     }
     return track;
@@ -1349,6 +1347,11 @@ class Flattener {
       CameraKey key;
       key.timeS = t;
       decomposePose(inst.parentWorld * localMatrix(posed), key.position, key.rotation);
+      const float pose[7] = {key.position.x, key.position.y, key.position.z, key.rotation.x,
+                             key.rotation.y, key.rotation.z, key.rotation.w};
+      if (!std::all_of(std::begin(pose), std::end(pose), [](float v) { return std::isfinite(v); }))
+        fail("camera " + inQuotes(cameraName(inst)) + ": its animated pose at " + secondsText(t) +
+             " is not finite");
       keys.push_back(key);
     }
     return keys;
@@ -1480,6 +1483,7 @@ std::string uriProblem(const std::string& uri) {
 struct ExternalFiles {
   std::string prefix;  ///< the scene's directory, ending with '/'
   std::string error;
+  std::vector<std::string> read_;  ///< the files read, in order
 
   void refuse(const std::string& message) {
     if (error.empty()) error = message;
@@ -1510,7 +1514,18 @@ struct ExternalFiles {
     auto& self = *static_cast<ExternalFiles*>(user);
     std::string uri = self.uriOf(path).value_or(path);
     try {
+      // Inside the scene's folder after symbolic links too: a link to a system file is
+      // not the scene's.
+      std::error_code ec;
+      const fs::path folder = fs::weakly_canonical(fs::absolute(self.prefix), ec);
+      const fs::path target = fs::weakly_canonical(fs::absolute(path), ec);
+      const auto [end, at] =
+          std::mismatch(folder.begin(), folder.end(), target.begin(), target.end());
+      if (!ec && end != folder.end() && !end->empty())
+        fail("external file " + quoteInput(uri) +
+             " leads outside the scene's folder (a symbolic link): refused");
       *out = readRegularFile(path, "external file " + quoteInput(uri) + " ");
+      self.read_.push_back(path);
       return true;
     } catch (const LoadFailure& f) {
       self.refuse(f.message);
@@ -1705,6 +1720,8 @@ std::shared_ptr<Scene> loadOrFail(const fs::path& path) {
   auto scene = std::make_shared<Scene>();
   scene->name = path.stem().string();
   scene->sourcePath = path.string();
+  scene->inputFiles.push_back(path.string());
+  for (const std::string& f : files.read_) scene->inputFiles.push_back(f);
   addLines(scene->warnings, warnText);
   Flattener(model, *scene).run();
   return scene;

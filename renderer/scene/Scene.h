@@ -64,10 +64,19 @@ struct CameraPath {
   float fovYDeg = 50.0f;
   float nearM = 0.1f;
   float farM = 200.0f;
-  float durationS() const { return keys.empty() ? 0.0f : keys.back().timeS; }
+  float durationS() const { return keys.empty() ? 0.0f : keys.back().timeS; }  ///< last key
+  float startS() const { return keys.empty() ? 0.0f : keys.front().timeS; }    ///< first key
   /// Camera at time t (clamped), linear position and slerped rotation. Its target lies
   /// 1 m ahead (a path fixes the view, not an orbit centre).
   Camera sample(float timeS) const;
+  /// The camera a fraction `f` (0..1) of the way from the first key to the last (keys at
+  /// 5-10 s: f = 0.5 samples 7.5 s).
+  Camera sampleFraction(float f) const { return sample(startS() + f * (durationS() - startS())); }
+  /// Frame `frame` of `frames` spread evenly from the first key to the last (one frame: the
+  /// first key).
+  Camera sampleFrame(int frame, int frames) const {
+    return sampleFraction(frames > 1 ? float(frame) / float(frames - 1) : 0.0f);
+  }
 };
 
 /// A ShadowLab camera for a glTF camera pose (the camera looks along its local -z).
@@ -79,6 +88,9 @@ Camera cameraFromPose(const glm::vec3& positionM, const glm::quat& rotation, flo
 struct Scene {
   std::string name;        ///< built-in name or file stem
   std::string sourcePath;  ///< file it was loaded from
+  /// Every file loading read: the scene file, then its external buffers and images (outputs
+  /// must not overwrite any of them).
+  std::vector<std::string> inputFiles;
   std::vector<MeshPrimitive> primitives;
   std::vector<Material> materials;
   std::vector<SceneImage> images;

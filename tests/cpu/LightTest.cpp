@@ -126,9 +126,28 @@ TEST(FitSpotLight, RefusesWhatItCannotFit) {
   box.extend(glm::vec3(1, 1, 1));
   LightFit fit;
   EXPECT_TRUE(fitSpotLight(Light::point({0, 3, 0}), box, fit));
-  EXPECT_TRUE(fitSpotLight(Light::spot({0, 3, 0}, {0, 1, 0}, 30), box, fit));          // looks away
-  EXPECT_TRUE(fitSpotLight(Light::spot({0, 30, 0}, {0, -1, 0}, 30, 0, 5), box, fit));  // range
   EXPECT_TRUE(fitSpotLight(Light::spot({0, 3, 0}, {0, -1, 0}, 30), Aabb{}, fit));
+}
+
+// A spot aimed away from the scene, or whose range ends before it, lights nothing: a valid
+// frustum (the frame renders, all shadowed), not an error.
+TEST(FitSpotLight, SceneOutsideTheConeIsAValidEmptyFit) {
+  Aabb box;
+  box.extend(glm::vec3(-1, 0, -1));
+  box.extend(glm::vec3(1, 1, 1));
+  for (const Light& s : {Light::spot({0, 3, 0}, {0, 1, 0}, 30),               // looks away
+                         Light::spot({0, 30, 0}, {0, -1, 0}, 30, 0, 5),       // range
+                         Light::spot({0, 3, 0}, {0, -1, 0}, 30, 0, 1.5f)}) {  // tiny range
+    LightFit fit;
+    ASSERT_FALSE(fitSpotLight(s, box, fit));
+    EXPECT_TRUE(fit.sceneOutside);
+    EXPECT_GT(fit.nearM, 0.0f);
+    EXPECT_LT(fit.nearM, fit.farM);
+    for (const glm::vec3& c : box.corners()) EXPECT_FALSE(s.illuminates(c));
+  }
+  LightFit fit;
+  ASSERT_FALSE(fitSpotLight(Light::spot({0, 3, 0}, {0, -1, 0}, 30), box, fit));
+  EXPECT_FALSE(fit.sceneOutside);
 }
 
 // ---- the bias model with a perspective matrix ----------------------------------------------

@@ -255,9 +255,16 @@ TEST(Asm, DeclaredPassesAndBadParameters) {
   ASSERT_FALSE(r->params().set("asm.coarse.resolution", 1000));
   auto err = r->renderFrame(96, 64, 0);
   ASSERT_TRUE(err);
-  EXPECT_NE(err->find("asm.coarse.resolution = 1000 must be a power of two from 512"),
-            std::string::npos)
+  EXPECT_NE(err->find("asm.coarse.resolution = 1000 must be a power of two"), std::string::npos)
       << *err;
+  // A page size whose coarsest level is finer than the coarse map names both parameters.
+  ASSERT_FALSE(r->params().set("asm.coarse.resolution", 512));
+  ASSERT_FALSE(r->params().set("page.size", 1024));
+  err = r->renderFrame(96, 64, 0);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("asm.coarse.resolution = 512 must be from 1024"), std::string::npos) << *err;
+  EXPECT_NE(err->find("page.size = 1024"), std::string::npos) << *err;
+  ASSERT_FALSE(r->params().set("page.size", 128));
   ASSERT_FALSE(r->params().set("asm.coarse.resolution", 4096));  // 32 x 32 pages
   ASSERT_FALSE(r->params().set("pool.pages", 1000));
   err = r->renderFrame(96, 64, 0);

@@ -401,7 +401,14 @@ TEST(Fvsm, DeclaredPassesAreTimedAndBadValuesRefused) {
   ASSERT_FALSE(r->params().set("fvsm.grid", 12));
   auto err = r->renderFrame(80, 60, 0);
   ASSERT_TRUE(err);
-  EXPECT_NE(err->find("fvsm.grid must be a power of two"), std::string::npos) << *err;
+  EXPECT_EQ(*err, "technique 'fvsm': fvsm.grid = 12 must be a power of two (1..64)");
+  ASSERT_FALSE(r->params().set("fvsm.grid", 32));
+  ASSERT_FALSE(r->params().set("fvsm.eta0", 23));  // above eta1 = 22: refused before any pass
+  err = r->renderFrame(80, 60, 0);
+  ASSERT_TRUE(err);
+  EXPECT_EQ(*err,
+            "technique 'fvsm': fvsm.eta0 = 23 must be below fvsm.eta1 = 22 (the histogram's "
+            "lower and upper end buckets)");
 }
 
 // What the η histogram saves (§4.3): on diagonal's row (a few SMTMM entries need far more

@@ -374,7 +374,12 @@ TEST(Rmsm, DeclaredPassesAndBadParameters) {
   ASSERT_FALSE(r->params().set("virtual.resolution", 1000));
   const auto err = r->renderFrame(96, 64, 0);
   ASSERT_TRUE(err);
-  EXPECT_NE(err->find("virtual.resolution must be a power of two"), std::string::npos) << *err;
+  EXPECT_NE(err->find("virtual.resolution = 1000 must be a power of two (256..262144)"),
+            std::string::npos)
+      << *err;
+  // The same check, declared with the technique, runs without GL (the CLI's up-front check).
+  EXPECT_EQ("technique 'rmsm': " + checkTechniqueParams(RmsmShadowMap::info(), r->params()).value(),
+            *err);
   // 65536 / 128 = 512 pages a side, cut at 8 levels: the top level has 4 x 4 pages.
   ASSERT_FALSE(r->params().set("virtual.resolution", 65536));
   ASSERT_FALSE(r->params().set("pool.pages", 15));

@@ -32,20 +32,39 @@ std::string iterationPass(const char* what, int i) {
   return std::string("asm ") + what + " " + std::to_string(i);
 }
 
-/// The quadtree level of the coarse map: log2(virtual / coarse), checked.
+/// The quadtree level of the coarse map: log2(virtual / coarse) (checkAsmParams held).
 int coarseLevelOf(const pages::VirtualLayout& layout, int coarseResolution) {
-  const int top = layout.topLevel();
-  const int coarsest = layout.virtualResolution >> top;
-  if (coarseResolution <= 0 || (coarseResolution & (coarseResolution - 1)) != 0 ||
-      coarseResolution < coarsest || coarseResolution > layout.virtualResolution)
-    throw std::runtime_error(
-        "asm: asm.coarse.resolution = " + std::to_string(coarseResolution) +
-        " must be a power of two from " + std::to_string(coarsest) +
-        " (the quadtree's coarsest level for this virtual.resolution and page.size) to " +
-        std::to_string(layout.virtualResolution) + " (virtual.resolution)");
   int level = 0;
   while ((layout.virtualResolution >> level) > coarseResolution) ++level;
   return level;
+}
+
+/// What renderShadows needs of the values together (TechniqueInfo::checkParams): the paged
+/// map's, and a coarse map on a level of the quadtree that the pool holds.
+std::optional<std::string> checkAsmParams(const ParamSet& p) {
+  if (auto e = checkPagedMapParams(p)) return e;
+  const pages::VirtualLayout layout = pagedLayoutOf(p);
+  const int coarse = p.getInt("asm.coarse.resolution");
+  const int coarsest = layout.virtualResolution >> layout.topLevel();
+  if (auto e = checkPowerOfTwo(p, "asm.coarse.resolution")) return e;
+  if (coarse < coarsest || coarse > layout.virtualResolution)
+    return "asm.coarse.resolution = " + std::to_string(coarse) + " must be from " +
+           std::to_string(coarsest) +
+           " (the coarsest level of the quadtree of virtual.resolution = " +
+           std::to_string(layout.virtualResolution) +
+           " in pages of page.size = " + std::to_string(layout.pageSize) + ") to " +
+           std::to_string(layout.virtualResolution) +
+           "; change asm.coarse.resolution, page.size or virtual.resolution";
+  const int level = coarseLevelOf(layout, coarse);
+  const int coarsePages = layout.pagesPerSide(level) * layout.pagesPerSide(level);
+  const int poolPages = p.getInt("pool.pages");
+  if (poolPages < coarsePages)
+    return "pool.pages = " + std::to_string(poolPages) + " cannot hold the " +
+           std::to_string(coarsePages) +
+           " pages of the coarse map (asm.coarse.resolution = " + std::to_string(coarse) +
+           ", page.size = " + std::to_string(layout.pageSize) +
+           "); raise pool.pages or lower asm.coarse.resolution";
+  return std::nullopt;
 }
 
 }  // namespace
@@ -148,6 +167,7 @@ TechniqueInfo AsmShadowMap::info() {
   info.publications[9].what = "Pages the pool holds at most (pool.pages).";
   // The Pages panel's page table, pool and requests, as rmsm's (the cache's states).
   for (PublicationDecl& d : pagedMapPublicationDecls()) info.publications.push_back(std::move(d));
+  info.checkParams = checkAsmParams;
   return info;
 }
 
@@ -158,17 +178,10 @@ AsmShadowMap::AsmShadowMap(const gl::ShaderLibrary& lib)
       compactProgram_(lib, compactProgramDesc()) {}
 
 void AsmShadowMap::renderShadows(FrameContext& ctx) {
-  const pages::VirtualLayout layout{ctx.params.getInt("virtual.resolution"),
-                                    ctx.params.getInt("page.size"), SL_PAGED_LOOKUP_LEVELS};
-  if (const std::string e = layout.validate(); !e.empty()) throw std::runtime_error("asm: " + e);
+  if (auto e = checkAsmParams(ctx.params)) throw std::runtime_error("asm: " + *e);
+  const pages::VirtualLayout layout = pagedLayoutOf(ctx.params);
   const int poolPages = ctx.params.getInt("pool.pages");
   const int coarseLevel = coarseLevelOf(layout, ctx.params.getInt("asm.coarse.resolution"));
-  const int coarsePages = layout.pagesPerSide(coarseLevel) * layout.pagesPerSide(coarseLevel);
-  if (poolPages < coarsePages)
-    throw std::runtime_error("asm: pool.pages = " + std::to_string(poolPages) +
-                             " cannot hold the " + std::to_string(coarsePages) +
-                             " pages of the coarse map; raise pool.pages or lower "
-                             "asm.coarse.resolution");
   map_.ensure(layout, poolPages, layout.topPages(), "asm");
 
   // The whole scene, not the view: pages stay valid while only the camera moves.

@@ -101,7 +101,8 @@ TechniqueInfo CascadedShadowMap::info() {
        .minValue = 0,
        .maxValue = 1,
        .help = "Cut the splits over the view depths the G-buffer actually holds (a min/max "
-               "reduction, read back a frame late behind a fence) instead of the whole view "
+               "reduction of this frame's G-buffer, read back before the fit) instead of the whole "
+               "view "
                "frustum ∩ scene bounds."});
 
   TechniqueInfo info{"cascades", "Cascaded shadow maps",
@@ -110,15 +111,16 @@ TechniqueInfo CascadedShadowMap::info() {
                      "frustum, selected per pixel by view depth. Directional light only.",
                      std::move(p)};
   info.passes = {
+      {"depth range", "Depth range reduction",
+       "Min and max view depth over this frame's G-buffer's covered pixels (a compute "
+       "reduction), read back before the split range is fitted to what the camera really sees "
+       "(depth.fit).",
+       "partitions"},
       {"partition maps", "Partition maps",
        "Cut the visible depth range into k slices (the split scheme), fit one orthographic light "
        "frustum to each slice (stabilised: its bounding sphere, snapped to whole texels) and "
        "render the scene's depth into that slice's layer. Near slices are small: their texels "
        "are small where the camera is close.",
-       "partitions"},
-      {"depth range", "Depth range reduction",
-       "Min and max view depth over the G-buffer's covered pixels (a compute reduction), fenced "
-       "and read back next frame to fit the split range to what the camera really sees.",
        "partitions"},
       PartitionMStats::passDecl(),
   };
@@ -190,18 +192,18 @@ TechniqueInfo CascadedShadowMap::info() {
       {"depth.far", PublicationKind::Number, "Far end of the split range (view depth, m).", "", {}},
       {"depth.fitted",
        PublicationKind::Number,
-       "1 when the split range used last frame's G-buffer depth range.",
+       "1 when the split range used the G-buffer's depth range (depth.fit on, a pixel covered).",
        "",
        {}},
       {"depth.measured.near",
        PublicationKind::Number,
-       "The smallest view depth (m) of last frame's covered G-buffer pixels, as the "
-       "depth-range reduction read it back (depth.fit on; 0 when none yet).",
+       "The smallest view depth (m) of this frame's covered G-buffer pixels, as the "
+       "depth-range reduction read it back (depth.fit on; 0 when none).",
        "",
        {}},
       {"depth.measured.far",
        PublicationKind::Number,
-       "The largest view depth (m) of last frame's covered G-buffer pixels (as "
+       "The largest view depth (m) of this frame's covered G-buffer pixels (as "
        "depth.measured.near).",
        "",
        {}},
@@ -265,8 +267,12 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
   s.warp = ctx.params.getBool("partition.warp");
   s.eta = ctx.params.get("warp.eta");
   if (fitDepth) {
-    // Last frame's range, widened by 5 % each way for this frame's motion; stabilised, held
-    // while it still fits (hysteresis), so the splits do not move with every frame.
+    // This frame's range: the reduction runs over this frame's G-buffer (drawn before the
+    // technique) and is read back at once (a frame late, a moving camera or the sparse
+    // frames of a bench path were fitted to the previous view: ~20 % of the pixels wrong).
+    // Widened by 5 % each way; stabilised, held while it still fits (hysteresis), so the
+    // splits do not move with every frame.
+    reduceDepthRange(ctx);
     if (auto r = readDepthRange()) {
       const glm::dvec2 measured(r->x / 1.05, r->y * 1.05);
       if (s.stabilize) {
@@ -307,7 +313,6 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
       if (ctx.outlines && i + 1 < k) ctx.outlines->splitDepthsM.push_back(float(p.farM));
     }
   }
-  if (fitDepth) reduceDepthRange(ctx);
   mStats_.update(ctx, k);
 
   // Publications: the maps (only when asked), the splits and texel densities (numbers).

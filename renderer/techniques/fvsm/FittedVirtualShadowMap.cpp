@@ -19,9 +19,6 @@ constexpr int kMinTextureLog2 = 4;  ///< the smallest tile side: 16 texels
 /// The FVSM panel's thumbnails (fvsm.camera, fvsm.light.depth): this many texels per axis.
 constexpr int kThumbnail = SL_FVSM_THUMBNAIL;
 
-bool isPowerOfTwo(int v) {
-  return v > 0 && (v & (v - 1)) == 0;
-}
 int log2Of(int v) {
   int l = 0;
   while ((1 << l) < v) ++l;
@@ -30,6 +27,18 @@ int log2Of(int v) {
 
 fvsm::TextureMode textureMode(const ParamSet& p) {
   return fvsm::TextureMode(p.getInt("fvsm.texture.mode"));
+}
+
+/// What renderShadows needs of the values together (TechniqueInfo::checkParams).
+std::optional<std::string> checkFvsmParams(const ParamSet& p) {
+  if (auto e = checkPowerOfTwo(p, "fvsm.grid")) return e;
+  if (auto e = checkPowerOfTwo(p, "fvsm.max_texture")) return e;
+  const int eta0 = p.getInt("fvsm.eta0"), eta1 = p.getInt("fvsm.eta1");
+  if (eta0 >= eta1)
+    return "fvsm.eta0 = " + std::to_string(eta0) +
+           " must be below fvsm.eta1 = " + std::to_string(eta1) +
+           " (the histogram's lower and upper end buckets)";
+  return std::nullopt;
 }
 
 }  // namespace
@@ -261,6 +270,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
   };
   info.tileTiming = TechniqueInfo::TileTiming{"fvsm.tile_ms", "tile depth", "tile apply"};
   info.lights = {LightType::Directional};
+  info.checkParams = checkFvsmParams;
   return info;
 }
 
@@ -276,11 +286,7 @@ FittedVirtualShadowMap::FittedVirtualShadowMap(const gl::ShaderLibrary& lib)
 void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
   const ParamSet& p = ctx.params;
   const int n = p.getInt("fvsm.grid"), tmax = p.getInt("fvsm.max_texture");
-  if (!isPowerOfTwo(n))
-    throw std::runtime_error("fvsm.grid must be a power of two (got " + std::to_string(n) + ")");
-  if (!isPowerOfTwo(tmax))
-    throw std::runtime_error("fvsm.max_texture must be a power of two (got " +
-                             std::to_string(tmax) + ")");
+  if (auto e = checkFvsmParams(p)) throw std::runtime_error(*e);  // renderFrame checked it
   fvsm::HistogramSettings histogram{p.getInt("fvsm.eta0"), p.getInt("fvsm.eta1"),
                                     p.getInt("fvsm.outliers")};
   fvsm::TraversalSettings traversal{log2Of(tmax), std::min(kMinTextureLog2, log2Of(tmax)),

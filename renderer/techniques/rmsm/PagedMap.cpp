@@ -198,6 +198,38 @@ glm::mat4 pageViewProj(const glm::mat4& viewProj, const pages::PageId& p,
   return regionViewProj(viewProj, p.level, p.x, p.y, 1, layout);
 }
 
+pages::VirtualLayout pagedLayoutOf(const ParamSet& params) {
+  return {params.getInt("virtual.resolution"), params.getInt("page.size"), SL_PAGED_LOOKUP_LEVELS};
+}
+
+std::optional<std::string> checkPagedMapParams(const ParamSet& params) {
+  if (auto e = checkPowerOfTwo(params, "page.size")) return e;
+  if (auto e = checkPowerOfTwo(params, "virtual.resolution")) return e;
+  const pages::VirtualLayout layout = pagedLayoutOf(params);
+  const std::string values = "virtual.resolution = " + std::to_string(layout.virtualResolution) +
+                             ", page.size = " + std::to_string(layout.pageSize);
+  if (layout.virtualResolution < layout.pageSize)
+    return "virtual.resolution must be at least page.size (" + values + ")";
+  if (layout.virtualResolution / layout.pageSize > SL_PAGE_MAX_PER_SIDE)
+    return "virtual.resolution / page.size must be at most " +
+           std::to_string(SL_PAGE_MAX_PER_SIDE) + " pages per side (" + values + ": " +
+           std::to_string(layout.virtualResolution / layout.pageSize) + ")";
+  if (const std::string e = layout.validate(); !e.empty()) return e;
+  const int poolPages = params.getInt("pool.pages");
+  if (poolPages < layout.topPages())
+    return "pool.pages = " + std::to_string(poolPages) + " cannot hold the " +
+           std::to_string(layout.topPages()) + " pages of the coarsest level (" + values +
+           ", the quadtree cut at " + std::to_string(SL_PAGED_LOOKUP_LEVELS) +
+           " levels); raise pool.pages or page.size";
+  const int columns = poolColumnsFor(poolPages);
+  if (columns * layout.pageSize > kMaxPoolSide)
+    return "a pool of pool.pages = " + std::to_string(poolPages) +
+           " pages of page.size = " + std::to_string(layout.pageSize) + " is " +
+           std::to_string(columns * layout.pageSize) + " texels wide, more than " +
+           std::to_string(kMaxPoolSide) + "; lower pool.pages or page.size";
+  return std::nullopt;
+}
+
 bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int minPages,
                       const std::string& technique) {
   const int columns = poolColumnsFor(poolPages);

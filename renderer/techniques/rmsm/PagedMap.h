@@ -49,6 +49,15 @@ struct PageViewsFrame {
 /// Columns of a pool's page grid: the smallest square holding `pages`.
 int poolColumnsFor(int pages);
 
+/// The virtual layout of pagedMapParamDecls' values (the quadtree cut at
+/// SL_PAGED_LOOKUP_LEVELS levels).
+pages::VirtualLayout pagedLayoutOf(const ParamSet& params);
+/// What PagedMap::ensure and the layout need of pagedMapParamDecls' values together (a
+/// technique's TechniqueInfo::checkParams): page.size and virtual.resolution powers of two,
+/// at most SL_PAGE_MAX_PER_SIDE pages per side, a pool that holds the quadtree's top level and
+/// fits the largest texture. Each error names the parameters with their values.
+std::optional<std::string> checkPagedMapParams(const ParamSet& params);
+
 class PagedMap {
  public:
   /// (Re)creates the textures for `layout` and a pool of `poolPages` when either changed;

@@ -124,6 +124,7 @@ TechniqueInfo RmsmShadowMap::info() {
            "",
            {}},
       });
+  info.checkParams = checkPagedMapParams;
   return info;
 }
 
@@ -136,9 +137,8 @@ RmsmShadowMap::RmsmShadowMap(const gl::ShaderLibrary& lib)
 
 void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   // One lookup "map" per level (rmsm/lookup.glsl): a deeper tree is cut below its root.
-  const pages::VirtualLayout layout{ctx.params.getInt("virtual.resolution"),
-                                    ctx.params.getInt("page.size"), SL_PAGED_LOOKUP_LEVELS};
-  if (const std::string e = layout.validate(); !e.empty()) throw std::runtime_error("rmsm: " + e);
+  if (auto e = checkPagedMapParams(ctx.params)) throw std::runtime_error("rmsm: " + *e);
+  const pages::VirtualLayout layout = pagedLayoutOf(ctx.params);
   const int poolPages = ctx.params.getInt("pool.pages");
   if (map_.ensure(layout, poolPages, layout.topPages(), "rmsm") || !table_ ||
       pool_->capacity() != poolPages) {

@@ -161,6 +161,7 @@ struct ConfigSummary {
   double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
   double flickerPct = 0;
+  double lightAreaM2 = 0, halfMassX = 0, halfMassY = 0;  ///< NaN when not published
   std::size_t renderErrors = 0, glErrors = 0;
 };
 
@@ -198,6 +199,15 @@ ConfigSummary summarise(const std::vector<FrameSample>& frames) {
   for (const FrameSample& f : frames)
     if (f.flicker) flicker.push_back(f.flicker->pct);
   s.flickerPct = median(flicker);
+  auto medPublished = [&](auto get) {
+    std::vector<double> v;
+    for (const FrameSample& f : frames)
+      if (std::isfinite(get(f))) v.push_back(get(f));
+    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
+  };
+  s.lightAreaM2 = medPublished([](const FrameSample& f) { return f.lightAreaM2; });
+  s.halfMassX = medPublished([](const FrameSample& f) { return f.halfMassX; });
+  s.halfMassY = medPublished([](const FrameSample& f) { return f.halfMassY; });
   for (const FrameSample& f : frames) {
     s.renderErrors += f.renderError.empty() ? 0 : 1;
     s.glErrors += f.glErrors.size();
@@ -344,6 +354,7 @@ int cmdBench(Args& a) {
     MeasureOptions opts;
     opts.width = cfg.width;
     opts.height = cfg.height;
+    opts.publishing = true;  // the published numbers only (light.area, importance.halfmass.*)
     if (cfg.reference && !ShadowReference::available()) {
       std::fprintf(stderr, "note: %s (error columns empty)\n",
                    ShadowReference::unavailableReason());
@@ -417,7 +428,8 @@ int cmdBench(Args& a) {
          "total_ms_frames";
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
   csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
-         "aliasing_p95,aliasing_max,flicker_pct,pareto,pareto_bytes,render_errors,gl_errors,gl\n";
+         "aliasing_p95,aliasing_max,flicker_pct,light_area_m2,halfmass_x,halfmass_y,pareto,pareto_"
+         "bytes,render_errors,gl_errors,gl\n";
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const ConfigSummary& s = sums[i];
     csv << csvField(scene->name) << "," << csvField(cameraText) << ","
@@ -432,6 +444,7 @@ int cmdBench(Args& a) {
         << number(s.errorPct) << "," << number(s.falseLitPct) << "," << number(s.falseShadowPct)
         << "," << std::uint64_t(s.covered) << "," << number(s.aliasingMean) << ","
         << number(s.aliasingP95) << "," << number(s.aliasingMax) << "," << number(s.flickerPct)
+        << "," << number(s.lightAreaM2) << "," << number(s.halfMassX) << "," << number(s.halfMassY)
         << "," << (frontMs[i] ? 1 : 0) << "," << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors
         << "," << s.glErrors << "," << csvField(glDescription) << "\n";
   }

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -75,6 +76,11 @@ struct FrameSample {
   double ex = 1.0;                       ///< principal axis x component (1 without one)
   bool held = true;                      ///< the threshold held the rotation (true without one)
   std::vector<std::string> nonFiniteNumbers;  ///< published numbers that are NaN/inf
+  /// RTW's light frustum area (m^2) and the half-mass widths of its collapsed importance
+  /// (share of the map side); NaN when not published.
+  double lightAreaM2 = std::numeric_limits<double>::quiet_NaN();
+  double halfMassX = std::numeric_limits<double>::quiet_NaN();
+  double halfMassY = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct MeasureOptions {

@@ -162,6 +162,7 @@ struct ConfigSummary {
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
   double flickerPct = 0;
   double lightAreaM2 = 0, halfMassX = 0, halfMassY = 0;  ///< NaN when not published
+  double rotationDeg = 0;  ///< DA-RTW's image-plane angle R (NaN without a rotation)
   std::size_t renderErrors = 0, glErrors = 0;
 };
 
@@ -208,6 +209,9 @@ ConfigSummary summarise(const std::vector<FrameSample>& frames) {
   s.lightAreaM2 = medPublished([](const FrameSample& f) { return f.lightAreaM2; });
   s.halfMassX = medPublished([](const FrameSample& f) { return f.halfMassX; });
   s.halfMassY = medPublished([](const FrameSample& f) { return f.halfMassY; });
+  s.rotationDeg = medPublished([](const FrameSample& f) {
+    return f.hasRotation ? f.rotationDeg : std::numeric_limits<double>::quiet_NaN();
+  });
   for (const FrameSample& f : frames) {
     s.renderErrors += f.renderError.empty() ? 0 : 1;
     s.glErrors += f.glErrors.size();
@@ -428,7 +432,8 @@ int cmdBench(Args& a) {
          "total_ms_frames";
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
   csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
-         "aliasing_p95,aliasing_max,flicker_pct,light_area_m2,halfmass_x,halfmass_y,pareto,pareto_"
+         "aliasing_p95,aliasing_max,flicker_pct,light_area_m2,halfmass_x,halfmass_y,rotation_deg,"
+         "pareto,pareto_"
          "bytes,render_errors,gl_errors,gl\n";
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const ConfigSummary& s = sums[i];
@@ -445,8 +450,9 @@ int cmdBench(Args& a) {
         << "," << std::uint64_t(s.covered) << "," << number(s.aliasingMean) << ","
         << number(s.aliasingP95) << "," << number(s.aliasingMax) << "," << number(s.flickerPct)
         << "," << number(s.lightAreaM2) << "," << number(s.halfMassX) << "," << number(s.halfMassY)
-        << "," << (frontMs[i] ? 1 : 0) << "," << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors
-        << "," << s.glErrors << "," << csvField(glDescription) << "\n";
+        << "," << number(s.rotationDeg) << "," << (frontMs[i] ? 1 : 0) << ","
+        << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors << "," << s.glErrors << ","
+        << csvField(glDescription) << "\n";
   }
   std::string text = csv.str();
   text.pop_back();  // writeText adds the final newline

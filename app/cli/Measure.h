@@ -72,7 +72,7 @@ struct FrameSample {
   std::optional<MaskChange> maskChange;  ///< against this configuration's previous frame
   std::optional<FlickerStats> flicker;   ///< needs the reference of both frames
   bool hasRotation = false;              ///< the technique published "rotation.deg"
-  double rotationDeg = 0.0;              ///< accumulated rotation (0 without one)
+  double rotationDeg = 0.0;              ///< the rotation R_k in degrees (0 without one)
   double ex = 1.0;                       ///< principal axis x component (1 without one)
   bool held = true;                      ///< the threshold held the rotation (true without one)
   std::vector<std::string> nonFiniteNumbers;  ///< published numbers that are NaN/inf

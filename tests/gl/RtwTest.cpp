@@ -173,6 +173,44 @@ TEST(RtwParity, MomentChainMatchesCpu) {
   }
 }
 
+// The poster's source (pca.source = im): the PCA reads the importance map itself, every
+// texel, at any im.resolution (here 512, above the block-max cap): the moment IM equals the
+// published IM exactly, every level of the GPU chain equals the CPU chain of that IM within
+// 1e-5 relative, and the next frame's published moment sums are its top.
+TEST(RtwParity, PosterSourceMomentChainIsTheImsChain) {
+  auto r = rtwRenderer("diagonal", "da-rtw", 512, 512);
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().setFromString("pca.source", "im"));
+  ASSERT_FALSE(r->params().setFromString("importance.stride", "1"));
+  r->requestPublications({"*"});
+  ASSERT_FALSE(r->renderFrame(320, 180, 0));
+  ASSERT_FALSE(r->renderFrame(320, 180, 0));
+  rtw::ImportanceMap full = publishedIm(r->publication());
+  rtw::ImportanceMap im1 = publishedImage(r->publication(), "importance.moments");
+  ASSERT_EQ(im1.width, 512);
+  ASSERT_EQ(im1.values, full.values);
+  std::vector<rtw::MomentLevel> chain = rtw::buildMomentChain(full);
+  const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+  const Publication& pub = r->publication();
+  for (size_t l = 0; l < chain.size(); ++l)
+    for (int c = 0; c < 6; ++c) {
+      const FloatImage& img =
+          pub.images.at("moment." + std::string(ch[c]) + "." + std::to_string(l));
+      ASSERT_EQ(img.width, chain[l].width);
+      for (size_t i = 0; i < img.values.size(); ++i) {
+        float want = chain[l].texels[i][c];
+        ASSERT_NEAR(img.values[i], want, 1e-5f * std::max(1.0f, std::abs(want)))
+            << "level " << l << " channel " << ch[c] << " texel " << i;
+      }
+    }
+  const rtw::MomentTexel top = chain.back().texels[0];
+  const rtw::MomentTexel direct = rtw::momentSumsDirect(full);
+  for (int c = 0; c < 6; ++c)
+    EXPECT_NEAR(top[c], direct[c], 1e-4 * std::max(1.0f, std::abs(direct[c]))) << ch[c];
+  ASSERT_FALSE(r->renderFrame(320, 180, 0));
+  EXPECT_NEAR(r->publication().numbers.at("moment.I"), top[0], 1e-5 * top[0]);
+}
+
 // Memory as the tool reports it, and as it really allocates it. Seed 002 counts 512^2 SM +
 // 512^2 IM + three 1D maps of 512 = 525,824 texels, 0.50 x a uniform 1024^2. ShadowLab's
 // backward analysis scatters straight into the two 1D maps, so the 2D IM exists only while a

@@ -228,12 +228,13 @@ SceneBuilder makeDiagonal() {
 
 // ----------------------------------------------------------------------------------------
 // band-diagonal, band-aligned, blob: where DA-RTW's rotation must win, and where it must not.
-// The only receivers are a thin strip (or a disc) 30 to 60 m from the camera, with short
-// posts on it whose shadows fall across it; nothing else is in view, so the importance
-// is exactly the strip's footprint in the light's image. The sun stands at azimuth 0:
-// the light's image x axis is world +x, its y axis world z foreshortened by sin(el). The
-// strip runs at kBandImageDeg to the image x axis (band-diagonal), along it (band-aligned);
-// the blob is a disc of the same area (isotropic importance). The cameras are the same.
+// The only receivers are a thin strip (or a disc) about 35 m from the camera, with a fence on
+// it (posts and two rails along the strip; posts on the disc); nothing else is in view, so the
+// importance is exactly the strip's footprint in the light's image. The sun stands at
+// azimuth 0: the light's image x axis is world +x, its y axis world z foreshortened by
+// sin(el). The strip runs at 45° to the image x axis (band-diagonal), along it
+// (band-aligned); the blob is a disc of the same area (isotropic importance). The camera
+// stands in the same place relative to the receiver in all three.
 constexpr float kBandSunAzimuthDeg = 0.0f, kBandSunElevationDeg = 65.0f;
 constexpr float kBandLengthM = 40.0f, kBandWidthM = 2.0f;
 
@@ -276,12 +277,19 @@ SceneBuilder makeBand(const std::string& name, float imageDeg, bool blob) {
     const glm::vec3 h = 0.5f * kBandLengthM * along, w = 0.5f * kBandWidthM * across;
     strip.addQuad(centre - h + w, centre + h + w, centre + h - w, centre - h - w,
                   glm::vec2(kBandLengthM, kBandWidthM));
-    // Posts on the sunward edge (+z side): their shadows fall across the strip.
+    // A fence on the sunward half (+z side): posts, and two rails along the strip whose
+    // shadows are edges along it (they need texels across the strip, which only a rotation
+    // that lays the strip along a map axis can concentrate).
+    const glm::vec3 sunward = 0.25f * kBandWidthM * (across.z > 0 ? across : -across);
     for (int i = 0; i < 33; ++i) {
       float t = -0.5f * kBandLengthM + 1.0f + 1.2f * float(i);
-      glm::vec3 edge = centre + t * along + 0.35f * kBandWidthM * (across.z > 0 ? across : -across);
-      posts.addBox(edge + glm::vec3(0.0f, 0.3f, 0.0f), {0.03f, 0.3f, 0.03f});
+      posts.addBox(centre + t * along + sunward + glm::vec3(0.0f, 0.5f, 0.0f),
+                   {0.03f, 0.5f, 0.03f});
     }
+    const float yawDeg = glm::degrees(a);
+    for (float railM : {0.45f, 0.95f})
+      posts.addBox(centre + sunward + glm::vec3(0.0f, railM, 0.0f),
+                   {0.5f * kBandLengthM - 0.5f, 0.04f, 0.04f}, yawDeg);
   }
   b.addNode("receiver", b.addMesh("receiver", strip, ground));
   b.addNode("posts", b.addMesh("posts", posts, post));

@@ -151,6 +151,13 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                "The moment chain: channel I, xI, yI, xxI, yyI, xyI at every level (0 = full).",
                "4 B x 6 x (texels of every level of the chain of the PCA's IM)",
                floats([](const ParamSet& p) { return 6 * momentChainTexels(momentRes(p)); })});
+  d.push_back({"pca.scale.x",
+               K::Number,
+               "Scale of the PCA's x (metres per centred IM unit: the half extent of the frustum "
+               "the moments were taken in; 1 with pca.metric = im-units).",
+               "",
+               {}});
+  d.push_back({"pca.scale.y", K::Number, "Scale of the PCA's y (as pca.scale.x).", "", {}});
   for (const char* n : {"moment.I",
                         "moment.xI",
                         "moment.yI",

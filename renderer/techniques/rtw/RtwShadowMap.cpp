@@ -374,6 +374,9 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   // pca.metric: in metres (the IM's axes span the light frustum's extents) or IM units.
   const bool metres = ctx.params.getInt("pca.metric") == 0;
   rtw::MomentStats stats = rtw::momentsFromTop(t, metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f));
+  const glm::vec2 scale = metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f);
+  publishNumber(ctx, "pca.scale.x", scale.x);
+  publishNumber(ctx, "pca.scale.y", scale.y);
   lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")));
   publishNumber(ctx, "mean.x", stats.meanX);
   publishNumber(ctx, "mean.y", stats.meanY);

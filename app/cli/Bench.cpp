@@ -163,6 +163,7 @@ struct ConfigSummary {
   double flickerPct = 0;
   double lightAreaM2 = 0, halfMassX = 0, halfMassY = 0;  ///< NaN when not published
   double rotationDeg = 0;  ///< DA-RTW's image-plane angle R (NaN without a rotation)
+  double anisotropy = 0;   ///< DA-RTW's (λ1−λ2)/(λ1+λ2) (NaN without one)
   std::size_t renderErrors = 0, glErrors = 0;
 };
 
@@ -209,6 +210,7 @@ ConfigSummary summarise(const std::vector<FrameSample>& frames) {
   s.lightAreaM2 = medPublished([](const FrameSample& f) { return f.lightAreaM2; });
   s.halfMassX = medPublished([](const FrameSample& f) { return f.halfMassX; });
   s.halfMassY = medPublished([](const FrameSample& f) { return f.halfMassY; });
+  s.anisotropy = medPublished([](const FrameSample& f) { return f.anisotropy; });
   s.rotationDeg = medPublished([](const FrameSample& f) {
     return f.hasRotation ? f.rotationDeg : std::numeric_limits<double>::quiet_NaN();
   });
@@ -433,6 +435,7 @@ int cmdBench(Args& a) {
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
   csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
          "aliasing_p95,aliasing_max,flicker_pct,light_area_m2,halfmass_x,halfmass_y,rotation_deg,"
+         "anisotropy,"
          "pareto,pareto_"
          "bytes,render_errors,gl_errors,gl\n";
   for (std::size_t i = 0; i < configs.size(); ++i) {
@@ -450,9 +453,9 @@ int cmdBench(Args& a) {
         << "," << std::uint64_t(s.covered) << "," << number(s.aliasingMean) << ","
         << number(s.aliasingP95) << "," << number(s.aliasingMax) << "," << number(s.flickerPct)
         << "," << number(s.lightAreaM2) << "," << number(s.halfMassX) << "," << number(s.halfMassY)
-        << "," << number(s.rotationDeg) << "," << (frontMs[i] ? 1 : 0) << ","
-        << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors << "," << s.glErrors << ","
-        << csvField(glDescription) << "\n";
+        << "," << number(s.rotationDeg) << "," << number(s.anisotropy) << ","
+        << (frontMs[i] ? 1 : 0) << "," << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors << ","
+        << s.glErrors << "," << csvField(glDescription) << "\n";
   }
   std::string text = csv.str();
   text.pop_back();  // writeText adds the final newline

@@ -186,6 +186,7 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
     s.lightAreaM2 = numberOr("light.area", s.lightAreaM2);
     s.halfMassX = numberOr("importance.halfmass.x", s.halfMassX);
     s.halfMassY = numberOr("importance.halfmass.y", s.halfMassY);
+    s.anisotropy = numberOr("pca.anisotropy", s.anisotropy);
     auto it = numbers.find("rotation.deg");
     if (it != numbers.end()) {
       s.hasRotation = true;

@@ -81,6 +81,7 @@ struct FrameSample {
   double lightAreaM2 = std::numeric_limits<double>::quiet_NaN();
   double halfMassX = std::numeric_limits<double>::quiet_NaN();
   double halfMassY = std::numeric_limits<double>::quiet_NaN();
+  double anisotropy = std::numeric_limits<double>::quiet_NaN();  ///< DA-RTW's (λ1−λ2)/(λ1+λ2)
 };
 
 struct MeasureOptions {

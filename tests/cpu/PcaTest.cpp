@@ -474,5 +474,27 @@ TEST(RtwFocus, RotationInvariantExtentDoesNotChangeWithTheAngle) {
   EXPECT_GT(*hi / *lo, 1.05f);
 }
 
+// pca.min_anisotropy: an axis of an importance rounder than the gate leaves R as it is
+// (tooRound, not a vibration hold); at or above it the poster's update runs.
+TEST(RtwRotation, MinAnisotropyGate) {
+  MomentStats st;
+  st.valid = true;
+  st.ex = std::cos(float(rad(30.0)));
+  st.ey = std::sin(float(rad(30.0)));
+  st.anisotropy = 0.5f;
+  RotationState state;
+  RotationUpdate u = updateRotation(state, st, 0.9999f, 0.6f);
+  EXPECT_TRUE(u.valid);
+  EXPECT_TRUE(u.tooRound);
+  EXPECT_FALSE(u.held);
+  EXPECT_FALSE(u.rotated);
+  EXPECT_EQ(state.angleDeg(), 0.0);
+  u = updateRotation(state, st, 0.9999f, 0.5f);
+  EXPECT_TRUE(u.rotated);
+  EXPECT_NEAR(state.angleDeg(), 30.0, 1e-4);
+  u = updateRotation(state, st, 0.9999f, std::nanf(""));  // NaN: 0, the poster
+  EXPECT_TRUE(u.rotated);
+}
+
 }  // namespace
 }  // namespace sl::rtw

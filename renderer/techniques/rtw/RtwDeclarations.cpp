@@ -140,8 +140,7 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                      " importance: the shortest run of texels holding half its sum, as a share "
                      "of the map's side (small = sharp; after DA-RTW's rotation y lies across "
                      "the principal axis).",
-                 "4 B x 2 x im.resolution",
-                 floats([](const ParamSet& p) { return 2 * imRes(p); })});
+                 "4 B x im.resolution", floats(imRes)});
   if (!da) return d;
   d.push_back({"importance.moments", K::Image,
                "The IM the PCA reads: the IM itself or its block maxima (≤ 128²), by pca.source.",
@@ -175,6 +174,8 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                         "e_x",
                         "e_y",
                         "rotation.held",
+                        "rotation.too_round",
+                        "pca.anisotropy",
                         "rotation.deg",
                         "rotation.step_deg",
                         "rotation.changes",

@@ -31,7 +31,7 @@ for s in "${scenes[@]}"; do
     --technique "da-rtw:$before:light.fit=rotation-invariant" \
     --technique "da-rtw:$before:importance.stride=1" \
     --technique "da-rtw:$before:importance.orientation=0" \
-    --technique "da-rtw:$before:pca.min_anisotropy=0.95" \
+    --technique "da-rtw:$before:pca.min_anisotropy=0.99" \
     --technique "da-rtw:$poster" \
     --csv "$out/ablation-$s.csv" --chart "$out/ablation-$s.png" --chart-y log
 done

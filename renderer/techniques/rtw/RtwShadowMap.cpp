@@ -231,14 +231,14 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
          .label = "Min anisotropy",
          .group = "Rotation",
          .type = ParamType::Float,
-         .defaultValue = 0.95,
+         .defaultValue = 0.99,
          .minValue = 0,
          .maxValue = 1,
          .step = 0.01,
          .help = "Turn only while the importance is thin: (l1 - l2) / (l1 + l2) of its covariance "
                  "at least this; below it R stays as it is. 0 = always, as the poster. Measured: "
-                 "turning pays on a thin diagonal strip (0.995) and costs on wide views (0.2-0.9), "
-                 "see docs/techniques/rtw.md."});
+                 "turning pays on a thin diagonal strip (0.996) and costs on the corridor (0.98) "
+                 "and wider views (0.2-0.7): docs/techniques/rtw.md."});
   }
   std::string name, desc;
   if (id == "rtw-forward") {

@@ -299,6 +299,10 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   if (!pcaValid) {
     stateText = tr("NO AXIS — isotropic or empty IM: R unchanged");
     stateColor = QColor(128, 131, 136);
+  } else if (numberOr(n, "rotation.too_round", 0.0) != 0.0) {
+    stateText = tr("NOT TURNED — anisotropy %1 below pca.min_anisotropy: R unchanged")
+                    .arg(numberOr(n, "pca.anisotropy", 0.0), 0, 'f', 3);
+    stateColor = QColor(110, 110, 150);
   } else if (held) {
     stateText = tr("HELD — e_x > threshold: R_k = R_k−1");
     stateColor = QColor(60, 150, 80);

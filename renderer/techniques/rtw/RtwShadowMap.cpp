@@ -699,9 +699,10 @@ MemoryStats RtwShadowMap::memory() const {
   m.add("1D importance (x, y)", "R32UI", imRes_, 1, 2, 4);
   m.add("1D importance blurred (x, y)", "R32F", imRes_, 1, 2, 4);
   m.add("warp maps (x, y; n+1 edges)", "R32F", imRes_ + 1, 1, 2, 4);
-  if (importance_)
-    m.add(backward() ? "importance map (while a panel shows it)" : "importance map", "R32UI",
-          imRes_, imRes_, 1, 4);
+  if (importance_ && backward())  // backward analysis scatters into the 1D maps: a debug view
+    m.addDebugView("importance map (while a panel shows it)", "R32UI", imRes_, imRes_, 1, 4);
+  else if (importance_)
+    m.add("importance map", "R32UI", imRes_, imRes_, 1, 4);
   if (forwardDepth_) m.add("forward depth", "DEPTH_COMPONENT32F", imRes_, imRes_, 1, 4);
   if (momentIm_) {
     m.add(momentRes_ == imRes_ ? "moment IM (the IM itself)" : "moment IM (block maxima)", "R32UI",
@@ -711,8 +712,8 @@ MemoryStats RtwShadowMap::memory() const {
     m.add("moment chain (6 channels, all levels)", "R32F x6", texels, 1, 6, 4);
   }
   if (uniformMap_)
-    m.add("unwarped contrast map (while a panel shows it)", "DEPTH_COMPONENT32F", smRes_, smRes_, 1,
-          4);
+    m.addDebugView("unwarped contrast map (while a panel shows it)", "DEPTH_COMPONENT32F", smRes_,
+                   smRes_, 1, 4);
   return m;
 }
 

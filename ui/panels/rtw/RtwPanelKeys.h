@@ -59,8 +59,8 @@ inline std::set<std::string> shadowMapPanelKeys() {
 /// Moment mip chain panel: every level image and the sums ("moment.*"), the light
 /// frustum and the renderer's mean and covariance.
 inline std::set<std::string> momentPanelKeys() {
-  return {"moment.*", "light.extent.x", "light.extent.y", "mean.x",
-          "mean.y",   "cov.xx",         "cov.xy",         "cov.yy"};
+  return {"moment.*", "light.extent.x", "light.extent.y", "mean.x",      "mean.y",
+          "cov.xx",   "cov.xy",         "cov.yy",         "pca.scale.x", "pca.scale.y"};
 }
 
 }  // namespace sl::ui::rtw

@@ -1384,6 +1384,12 @@ std::vector<FigureCell> ViewportWidget::figureCells(int dilatePx) {
         std::snprintf(facts, sizeof facts, "%.3g M texels (%.3g MiB), error %.3f %%, %.1f ms",
                       double(st.memory.texels()) / 1e6, mib, e.stats.errorPct, st.totalMs);
       c.facts = facts;
+      if (const std::uint64_t debug = st.memory.debugViewBytes()) {
+        char views[64];
+        std::snprintf(views, sizeof views, "; debug views %.3g MiB",
+                      double(debug) / double(1 << 20));
+        c.facts += views;
+      }
       c.shaded = e.frame.color;
       c.error = sl::makeErrorImage(e.frame.color, e.frame.hardMask, e.referenceMask, dilatePx);
       cells.push_back(std::move(c));

@@ -163,6 +163,9 @@ struct ConfigSummary {
   double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
   double flickerPct = 0;
+  double lightAreaM2 = 0, halfMassX = 0, halfMassY = 0;  ///< NaN when not published
+  double rotationDeg = 0;  ///< DA-RTW's image-plane angle R (NaN without a rotation)
+  double anisotropy = 0;   ///< DA-RTW's (λ1−λ2)/(λ1+λ2) (NaN without one)
   std::size_t renderErrors = 0, glErrors = 0;  ///< failed frames; GL errors in all frames
   std::string failure;  ///< the first failed frame and why ("" when every frame rendered)
   /// No frame rendered: a failed row, every number empty.
@@ -186,6 +189,7 @@ ConfigSummary summarise(const std::vector<FrameSample>& all) {
     s.totalMs = s.texels = s.bytes = s.covered = nan;
     s.errorPct = s.falseLitPct = s.falseShadowPct = nan;
     s.aliasingMean = s.aliasingP95 = s.aliasingMax = s.flickerPct = nan;
+    s.lightAreaM2 = s.halfMassX = s.halfMassY = s.rotationDeg = s.anisotropy = nan;
     return s;
   }
   auto med = [&](auto get) {
@@ -219,6 +223,19 @@ ConfigSummary summarise(const std::vector<FrameSample>& all) {
   for (const FrameSample& f : frames)
     if (f.flicker) flicker.push_back(f.flicker->pct);
   s.flickerPct = median(flicker);
+  auto medPublished = [&](auto get) {
+    std::vector<double> v;
+    for (const FrameSample& f : frames)
+      if (std::isfinite(get(f))) v.push_back(get(f));
+    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
+  };
+  s.lightAreaM2 = medPublished([](const FrameSample& f) { return f.lightAreaM2; });
+  s.halfMassX = medPublished([](const FrameSample& f) { return f.halfMassX; });
+  s.halfMassY = medPublished([](const FrameSample& f) { return f.halfMassY; });
+  s.anisotropy = medPublished([](const FrameSample& f) { return f.anisotropy; });
+  s.rotationDeg = medPublished([](const FrameSample& f) {
+    return f.hasRotation ? f.rotationDeg : std::numeric_limits<double>::quiet_NaN();
+  });
   return s;
 }
 
@@ -364,6 +381,7 @@ int cmdBench(Args& a) {
     MeasureOptions opts;
     opts.width = cfg.width;
     opts.height = cfg.height;
+    opts.publishing = true;  // the published numbers only (light.area, importance.halfmass.*)
     if (cfg.reference && !ShadowReference::available()) {
       std::fprintf(stderr, "note: %s (error columns empty)\n",
                    ShadowReference::unavailableReason());
@@ -439,9 +457,8 @@ int cmdBench(Args& a) {
          "total_ms_frames";
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
   csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
-         "aliasing_p95,aliasing_max,flicker_pct,pareto,pareto_bytes,render_errors,gl_errors,"
-         "failure,"
-         "gl\n";
+         "aliasing_p95,aliasing_max,flicker_pct,light_area_m2,halfmass_x,halfmass_y,rotation_deg,"
+         "anisotropy,pareto,pareto_bytes,render_errors,gl_errors,failure,gl\n";
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const ConfigSummary& s = sums[i];
     csv << csvField(scene->name) << "," << csvField(cameraText) << ","
@@ -455,8 +472,10 @@ int cmdBench(Args& a) {
     csv << "," << count(s.texels) << "," << count(s.bytes) << "," << number(s.errorPct) << ","
         << number(s.falseLitPct) << "," << number(s.falseShadowPct) << "," << count(s.covered)
         << "," << number(s.aliasingMean) << "," << number(s.aliasingP95) << ","
-        << number(s.aliasingMax) << "," << number(s.flickerPct) << "," << (frontMs[i] ? 1 : 0)
-        << "," << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors << "," << s.glErrors << ","
+        << number(s.aliasingMax) << "," << number(s.flickerPct) << "," << number(s.lightAreaM2)
+        << "," << number(s.halfMassX) << "," << number(s.halfMassY) << "," << number(s.rotationDeg)
+        << "," << number(s.anisotropy) << "," << (frontMs[i] ? 1 : 0) << ","
+        << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors << "," << s.glErrors << ","
         << csvField(s.failure) << "," << csvField(glDescription) << "\n";
   }
   std::string text = csv.str();

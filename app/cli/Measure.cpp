@@ -196,6 +196,14 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
     const auto& numbers = r.publication().numbers;
     for (const auto& [k, v] : numbers)
       if (!std::isfinite(v)) s.nonFiniteNumbers.push_back(k);
+    auto numberOr = [&numbers](const char* key, double fallback) {
+      auto n = numbers.find(key);
+      return n == numbers.end() ? fallback : n->second;
+    };
+    s.lightAreaM2 = numberOr("light.area", s.lightAreaM2);
+    s.halfMassX = numberOr("importance.halfmass.x", s.halfMassX);
+    s.halfMassY = numberOr("importance.halfmass.y", s.halfMassY);
+    s.anisotropy = numberOr("pca.anisotropy", s.anisotropy);
     auto it = numbers.find("rotation.deg");
     if (it != numbers.end()) {
       s.hasRotation = true;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -74,10 +75,16 @@ struct FrameSample {
   std::optional<MaskChange> maskChange;  ///< against this configuration's previous frame
   std::optional<FlickerStats> flicker;   ///< needs the reference of both frames
   bool hasRotation = false;              ///< the technique published "rotation.deg"
-  double rotationDeg = 0.0;              ///< accumulated rotation (0 without one)
+  double rotationDeg = 0.0;              ///< the rotation R_k in degrees (0 without one)
   double ex = 1.0;                       ///< principal axis x component (1 without one)
   bool held = true;                      ///< the threshold held the rotation (true without one)
   std::vector<std::string> nonFiniteNumbers;  ///< published numbers that are NaN/inf
+  /// RTW's light frustum area (m^2) and the half-mass widths of its collapsed importance
+  /// (share of the map side); NaN when not published.
+  double lightAreaM2 = std::numeric_limits<double>::quiet_NaN();
+  double halfMassX = std::numeric_limits<double>::quiet_NaN();
+  double halfMassY = std::numeric_limits<double>::quiet_NaN();
+  double anisotropy = std::numeric_limits<double>::quiet_NaN();  ///< DA-RTW's (λ1−λ2)/(λ1+λ2)
 
   bool failed() const { return !renderError.empty(); }
 };

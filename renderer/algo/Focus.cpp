@@ -119,6 +119,23 @@ void fitOrthoAroundFocus(std::vector<glm::vec3> focus, const Aabb& box,
     glm::vec3 q = glm::vec3(view * glm::vec4(p, 1.0f));
     hi.z = std::max(hi.z, q.z);
   }
+  if (settings.extent == FocusExtent::RotationInvariant) {
+    // The bounding circle in the unrotated image plane, then its centre rotated: the
+    // square's side depends only on the focus region, never on the rotation.
+    const glm::mat4 base = lightBaseView(towardsLight);
+    glm::vec2 blo(std::numeric_limits<float>::max()), bhi(-std::numeric_limits<float>::max());
+    for (const glm::vec3& p : focus) {
+      glm::vec2 q = glm::vec2(base * glm::vec4(p, 1.0f));
+      blo = glm::min(blo, q);
+      bhi = glm::max(bhi, q);
+    }
+    const glm::vec2 centre = 0.5f * (blo + bhi);
+    float radius = 0.0f;
+    for (const glm::vec3& p : focus)
+      radius = std::max(radius, glm::length(glm::vec2(base * glm::vec4(p, 1.0f)) - centre));
+    const glm::vec2 c = settings.rotation * centre;
+    lo.x = c.x - radius, hi.x = c.x + radius, lo.y = c.y - radius, hi.y = c.y + radius;
+  }
   glm::vec2 extent(hi.x - lo.x, hi.y - lo.y);
   glm::vec2 grow = glm::max(extent * settings.paddingFraction, glm::vec2(1e-3f));
   lo.x -= grow.x, hi.x += grow.x, lo.y -= grow.y, hi.y += grow.y;

@@ -46,8 +46,22 @@ struct LightFit {
   bool sceneOutside = false;
 };
 
+/// How the light frustum's x/y extent is fitted around the focus region.
+enum class FocusExtent {
+  /// The tightest box in the (rotated) light frame: its area, and the texels per m² of a
+  /// map, change with the rotation.
+  Tight,
+  /// The square around the focus region's bounding circle in the light's image plane
+  /// (centre: the middle of the unrotated box; radius: the farthest focus point from it).
+  /// Rotating the image plane rotates this square about the circle's centre and changes
+  /// nothing else: its side, area and texel density are the same at every angle, and it
+  /// always covers the focus region.
+  RotationInvariant,
+};
+
 struct FocusSettings {
-  glm::mat2 rotation{1.0f};       ///< image-plane rotation (DA-RTW), identity otherwise
+  glm::mat2 rotation{1.0f};  ///< image-plane rotation (DA-RTW), identity otherwise
+  FocusExtent extent = FocusExtent::Tight;
   float paddingFraction = 0.01f;  ///< grow x/y extent by this share on each side
 };
 

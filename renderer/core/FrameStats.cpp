@@ -4,14 +4,29 @@ namespace sl {
 
 std::uint64_t MemoryStats::texels() const {
   std::uint64_t t = 0;
-  for (const ResourceInfo& r : resources) t += r.texels;
+  for (const ResourceInfo& r : resources)
+    if (!r.debugView) t += r.texels;
   return t;
 }
 
 std::uint64_t MemoryStats::bytes() const {
   std::uint64_t b = 0;
-  for (const ResourceInfo& r : resources) b += r.bytes;
+  for (const ResourceInfo& r : resources)
+    if (!r.debugView) b += r.bytes;
   return b;
+}
+
+std::uint64_t MemoryStats::debugViewBytes() const {
+  std::uint64_t b = 0;
+  for (const ResourceInfo& r : resources)
+    if (r.debugView) b += r.bytes;
+  return b;
+}
+
+void MemoryStats::addDebugView(std::string name, std::string format, int width, int height,
+                               int layers, int bytesPerTexel) {
+  add(std::move(name), std::move(format), width, height, layers, bytesPerTexel);
+  resources.back().debugView = true;
 }
 
 void MemoryStats::add(std::string name, std::string format, int width, int height, int layers,

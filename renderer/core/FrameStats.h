@@ -28,14 +28,25 @@ struct ResourceInfo {
   int width = 0, height = 1, layers = 1;
   std::uint64_t texels = 0;
   std::uint64_t bytes = 0;
+  /// Held only while a panel shows it (a debug view): not the technique's memory.
+  bool debugView = false;
 };
 
 struct MemoryStats {
   std::vector<ResourceInfo> resources;  ///< shadow-related resources of the technique
+  /// The technique's memory: every resource but the debug views (the same with or without
+  /// a panel open, so the GUI and the CLI report the same figure).
   std::uint64_t texels() const;
   std::uint64_t bytes() const;
+  /// What is held only for the panels (debug views), reported apart.
+  std::uint64_t debugViewBytes() const;
+  /// Everything allocated: bytes() + debugViewBytes().
+  std::uint64_t allocatedBytes() const { return bytes() + debugViewBytes(); }
   void add(std::string name, std::string format, int width, int height, int layers,
            int bytesPerTexel);
+  /// A resource held only while a panel shows it.
+  void addDebugView(std::string name, std::string format, int width, int height, int layers,
+                    int bytesPerTexel);
 };
 
 struct FrameStats {

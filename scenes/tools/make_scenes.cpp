@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include <glm/gtc/constants.hpp>
+
 #include "SceneBuilder.h"
 #include "Textures.h"
 #include "scene/GltfLoader.h"
@@ -221,6 +223,87 @@ SceneBuilder makeDiagonal() {
     keys.push_back({float(k), {x, 1.6f, -1.2f + sway}, {x + 24.0f, 0.0f, -0.8f}});
   }
   addPath(b, "walk-along-row", 50.0f, 0.1f, 120.0f, keys);
+  return b;
+}
+
+// ----------------------------------------------------------------------------------------
+// band-diagonal, band-aligned, blob: where DA-RTW's rotation must win, and where it must not.
+// The only receivers are a thin strip (or a disc) about 35 m from the camera, with a fence on
+// it (posts and two rails along the strip; posts on the disc); nothing else is in view, so the
+// importance is exactly the strip's footprint in the light's image. The sun stands at
+// azimuth 0: the light's image x axis is world +x, its y axis world z foreshortened by
+// sin(el). The strip runs at 45° to the image x axis (band-diagonal), along it
+// (band-aligned); the blob is a disc of the same area (isotropic importance). The camera
+// stands in the same place relative to the receiver in all three.
+constexpr float kBandSunAzimuthDeg = 0.0f, kBandSunElevationDeg = 65.0f;
+constexpr float kBandLengthM = 40.0f, kBandWidthM = 2.0f;
+
+SceneBuilder makeBand(const std::string& name, float imageDeg, bool blob) {
+  SceneBuilder b(name);
+  int ground = b.addMaterial("ground", {0.74f, 0.70f, 0.58f, 1.0f});
+  int post = b.addMaterial("post", {0.42f, 0.30f, 0.22f, 1.0f});
+  // A ground direction whose image lies at imageDeg: image y = world z * sin(el), so
+  // tan(world angle) = tan(imageDeg) / sin(el); towards -z for a positive image angle
+  // (the image y axis points away from the sun, towards world -z).
+  const float sinEl = std::sin(glm::radians(kBandSunElevationDeg));
+  const float a = std::atan(std::tan(glm::radians(imageDeg)) / sinEl);
+  const glm::vec3 along(std::cos(a), 0.0f, -std::sin(a));
+  const glm::vec3 across(-along.z, 0.0f, along.x);  // horizontal, perpendicular
+  const glm::vec3 centre(0.0f, 0.0f, 0.0f);
+  MeshData strip, posts;
+  if (blob) {
+    // A disc of the strip's area, as a fan of 48 triangles.
+    const float r = std::sqrt(kBandLengthM * kBandWidthM / glm::pi<float>());
+    const int n = 48;
+    for (int i = 0; i < n; ++i) {
+      float t0 = glm::two_pi<float>() * float(i) / float(n);
+      float t1 = glm::two_pi<float>() * float(i + 1) / float(n);
+      glm::vec3 p0 = centre + r * glm::vec3(std::cos(t0), 0.0f, -std::sin(t0));
+      glm::vec3 p1 = centre + r * glm::vec3(std::cos(t1), 0.0f, -std::sin(t1));
+      const auto base = std::uint32_t(strip.positions.size());
+      for (const glm::vec3& q : {centre, p0, p1}) {
+        strip.positions.push_back(q);
+        strip.normals.push_back({0.0f, 1.0f, 0.0f});
+        strip.uvs.push_back({q.x, q.z});
+      }
+      for (std::uint32_t k = 0; k < 3; ++k) strip.indices.push_back(base + k);  // up-facing
+    }
+    for (int i = -4; i <= 4; ++i)
+      for (int j = -4; j <= 4; ++j)
+        if (1.44f * float(i * i + j * j) < (r - 0.5f) * (r - 0.5f))
+          posts.addBox(centre + glm::vec3(1.2f * float(i), 0.3f, 1.2f * float(j)),
+                       {0.03f, 0.3f, 0.03f});
+  } else {
+    const glm::vec3 h = 0.5f * kBandLengthM * along, w = 0.5f * kBandWidthM * across;
+    strip.addQuad(centre - h + w, centre + h + w, centre + h - w, centre - h - w,
+                  glm::vec2(kBandLengthM, kBandWidthM));
+    // A fence on the sunward half (+z side): posts, and two rails along the strip whose
+    // shadows are edges along it (they need texels across the strip, which only a rotation
+    // that lays the strip along a map axis can concentrate).
+    const glm::vec3 sunward = 0.25f * kBandWidthM * (across.z > 0 ? across : -across);
+    for (int i = 0; i < 33; ++i) {
+      float t = -0.5f * kBandLengthM + 1.0f + 1.2f * float(i);
+      posts.addBox(centre + t * along + sunward + glm::vec3(0.0f, 0.5f, 0.0f),
+                   {0.03f, 0.5f, 0.03f});
+    }
+    const float yawDeg = glm::degrees(a);
+    for (float railM : {0.45f, 0.95f})
+      posts.addBox(centre + sunward + glm::vec3(0.0f, railM, 0.0f),
+                   {0.5f * kBandLengthM - 0.5f, 0.04f, 0.04f}, yawDeg);
+  }
+  b.addNode("receiver", b.addMesh("receiver", strip, ground));
+  b.addNode("posts", b.addMesh("posts", posts, post));
+  b.addSun(kBandSunAzimuthDeg, kBandSunElevationDeg);
+  // The camera stands in the same place relative to the receiver in every variant: 30 m
+  // from its middle across the strip, 18 m up (the scene turns with the strip; only the
+  // light meets it at another angle), drifting slowly along it.
+  std::vector<CameraKeyframe> keys;
+  for (int k = 0; k <= 10; ++k) {
+    float s = 0.3f * float(k) - 1.5f;  // 0.3 m/s along the strip
+    glm::vec3 eye = centre - 30.0f * across + s * along + glm::vec3(0.0f, 18.0f, 0.0f);
+    keys.push_back({float(k), eye, centre + s * along});
+  }
+  addPath(b, "far-look", 35.0f, 0.5f, 150.0f, keys);
   return b;
 }
 
@@ -594,6 +677,11 @@ int main(int argc, char** argv) {
     rc |= sl::gen::writeScene(sl::gen::makeOmniRoom(), "omni-room", scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeSpotYard(), "spot-yard", scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeThinPole(), "thin-pole", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeBand("band-diagonal", 45.0f, false), "band-diagonal",
+                              scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeBand("band-aligned", 0.0f, false), "band-aligned",
+                              scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeBand("blob", 0.0f, true), "blob", scenesDir, previewDir);
   }
   if (!fixturesDir.empty()) {
     fs::create_directories(fixturesDir);

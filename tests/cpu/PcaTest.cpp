@@ -2,6 +2,7 @@
 // map, and the image-plane rotation loop with its vibration threshold.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -10,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "algo/Focus.h"
+#include "algo/rtw/Importance.h"
 #include "algo/rtw/Moments.h"
 #include "algo/rtw/Rotation.h"
 
@@ -387,6 +389,111 @@ TEST(RtwRotation, LoopConvergesForAnOffCentreAnisotropicBlob) {
   EXPECT_TRUE(r.updates[0].rotated);
   for (size_t k = 2; k < r.updates.size(); ++k) EXPECT_TRUE(r.updates[k].held) << k;
   EXPECT_LT(axisDiffDeg(r.state.angleDeg(), deg), 0.5) << r.state.angleDeg();
+}
+
+// ---------------------------------------------------------------------------------------
+// The poster's source: the moments of the importance map itself, every texel.
+
+// A hand-made 64^2 IM of five texels on a diagonal (weights 1..5): x̄, ȳ and Σ computed by
+// hand from the five centred texel coordinates equal the chain's over the full IM (1e-6),
+// and its axis is the diagonal's. Reduced to 16^2 block maxima (the block-max source) the
+// same texels land in blocks whose centres are up to 1.5 texels away: the mean moves, so
+// the source changes what the PCA sees.
+TEST(RtwPca, FullImMomentsEqualHandComputedMoments) {
+  const int n = 64;
+  ImportanceMap im(n, n);
+  const int tx[5] = {8, 20, 32, 44, 56}, ty[5] = {10, 21, 33, 45, 54};
+  for (int k = 0; k < 5; ++k) im.at(tx[k], ty[k]) = float(k + 1);
+  double s = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  for (int k = 0; k < 5; ++k) {
+    const double w = k + 1, x = (2.0 * tx[k] + 1 - n) / n, y = (2.0 * ty[k] + 1 - n) / n;
+    s += w, sx += w * x, sy += w * y, sxx += w * x * x, syy += w * y * y, sxy += w * x * y;
+  }
+  const double mx = sx / s, my = sy / s;
+  const double cxx = sxx / s - mx * mx, cyy = syy / s - my * my, cxy = sxy / s - mx * my;
+  const MomentStats st = momentsOf(im);
+  ASSERT_TRUE(st.valid);
+  EXPECT_NEAR(st.sumI, 15.0, 1e-6);
+  EXPECT_NEAR(st.meanX, mx, 1e-6);
+  EXPECT_NEAR(st.meanY, my, 1e-6);
+  EXPECT_NEAR(st.covXX, cxx, 1e-6);
+  EXPECT_NEAR(st.covYY, cyy, 1e-6);
+  EXPECT_NEAR(st.covXY, cxy, 1e-6);
+  const double axisDeg = 0.5 * std::atan2(2 * cxy, cxx - cyy) * 180.0 / kPi;
+  EXPECT_NEAR(st.angleDeg, axisDeg, 1e-3);
+  // The block-max source: 16^2 blocks of 4x4 texels, each its maximum.
+  ImportanceMap blocks(16, 16);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x)
+      blocks.at(x / 4, y / 4) = std::max(blocks.at(x / 4, y / 4), im.at(x, y));
+  const MomentStats sb = momentsOf(blocks);
+  EXPECT_GT(std::fabs(sb.meanY - st.meanY), 1e-3);
+}
+
+// The half-mass width of a 1D map: the shortest run of texels holding half its sum.
+TEST(RtwImportance, HalfMassWidth) {
+  EXPECT_EQ(halfMassWidth({}), 0.0f);
+  EXPECT_EQ(halfMassWidth({0, 0, 0, 0}), 0.0f);
+  EXPECT_FLOAT_EQ(halfMassWidth({1, 1, 1, 1}), 0.5f);
+  EXPECT_FLOAT_EQ(halfMassWidth({0, 0, 10, 0, 0, 0, 0, 0, 0, 0}), 0.1f);
+  EXPECT_FLOAT_EQ(halfMassWidth({1, 0, 0, 0, 0, 0, 0, 4, 4, 1}), 0.2f);  // 8 of 10
+  EXPECT_FLOAT_EQ(halfMassWidth({3, 0, 0, 0, 0, 0, 0, 0, 0, 3}), 0.1f);  // either end alone
+}
+
+// light.fit = rotation-invariant: the rotated frustum has the same side at every angle
+// (its area does not depend on the rotation), covers every focus point, and is never
+// smaller than the tight fit; the tight fit's area changes with the angle.
+TEST(RtwFocus, RotationInvariantExtentDoesNotChangeWithTheAngle) {
+  Camera cam;
+  cam.position = {0, 2, 6};
+  cam.target = {3, 0, -4};
+  cam.farM = 30;
+  const Aabb box{{-20, 0, -20}, {20, 1, 20}};
+  const glm::vec3 L = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+  std::vector<float> tightArea, side;
+  for (double deg : {0.0, 17.0, 45.0, -60.0, 90.0}) {
+    const float c = float(std::cos(rad(deg))), sn = float(std::sin(rad(deg)));
+    FocusSettings fs;
+    fs.rotation = glm::mat2(c, sn, -sn, c);
+    LightFit tight, inv;
+    ASSERT_FALSE(fitDirectionalLight(cam, 16.0f / 9.0f, box, L, fs, tight));
+    fs.extent = FocusExtent::RotationInvariant;
+    ASSERT_FALSE(fitDirectionalLight(cam, 16.0f / 9.0f, box, L, fs, inv));
+    EXPECT_FLOAT_EQ(inv.extentM.x, inv.extentM.y);
+    EXPECT_GE(inv.extentM.x * inv.extentM.y, tight.extentM.x * tight.extentM.y);
+    side.push_back(inv.extentM.x);
+    tightArea.push_back(tight.extentM.x * tight.extentM.y);
+    for (const glm::vec3& p : inv.focusPoints) {
+      glm::vec4 q = inv.viewProj * glm::vec4(p, 1.0f);
+      EXPECT_LE(std::fabs(q.x), 1.0f + 1e-4f);
+      EXPECT_LE(std::fabs(q.y), 1.0f + 1e-4f);
+    }
+  }
+  for (float s : side) EXPECT_NEAR(s, side.front(), 1e-4f * side.front());
+  const auto [lo, hi] = std::minmax_element(tightArea.begin(), tightArea.end());
+  EXPECT_GT(*hi / *lo, 1.05f);
+}
+
+// pca.min_anisotropy: an axis of an importance rounder than the gate leaves R as it is
+// (tooRound, not a vibration hold); at or above it the poster's update runs.
+TEST(RtwRotation, MinAnisotropyGate) {
+  MomentStats st;
+  st.valid = true;
+  st.ex = std::cos(float(rad(30.0)));
+  st.ey = std::sin(float(rad(30.0)));
+  st.anisotropy = 0.5f;
+  RotationState state;
+  RotationUpdate u = updateRotation(state, st, 0.9999f, 0.6f);
+  EXPECT_TRUE(u.valid);
+  EXPECT_TRUE(u.tooRound);
+  EXPECT_FALSE(u.held);
+  EXPECT_FALSE(u.rotated);
+  EXPECT_EQ(state.angleDeg(), 0.0);
+  u = updateRotation(state, st, 0.9999f, 0.5f);
+  EXPECT_TRUE(u.rotated);
+  EXPECT_NEAR(state.angleDeg(), 30.0, 1e-4);
+  u = updateRotation(state, st, 0.9999f, std::nanf(""));  // NaN: 0, the poster
+  EXPECT_TRUE(u.rotated);
 }
 
 }  // namespace

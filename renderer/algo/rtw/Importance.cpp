@@ -93,4 +93,21 @@ std::vector<float> collapseRowsMax(const ImportanceMap& map) {
   return out;
 }
 
+float halfMassWidth(const std::vector<float>& values) {
+  auto mass = [](float v) { return (v > 0.0f && std::isfinite(v)) ? double(v) : 0.0; };
+  double total = 0.0;
+  for (float v : values) total += mass(v);
+  if (!(total > 0.0)) return 0.0f;
+  const double half = 0.5 * total;
+  // Two pointers: for every end, the latest start whose run still holds half the mass.
+  size_t best = values.size(), start = 0;
+  double run = 0.0;
+  for (size_t end = 0; end < values.size(); ++end) {
+    run += mass(values[end]);
+    while (start < end && run - mass(values[start]) >= half) run -= mass(values[start++]);
+    if (run >= half) best = std::min(best, end - start + 1);
+  }
+  return float(double(best) / double(values.size()));
+}
+
 }  // namespace sl::rtw

@@ -116,4 +116,12 @@ std::vector<float> collapseColumnsMax(const ImportanceMap& map);
 /// y map: out[y] = max over x of map.at(x, y). Size height.
 std::vector<float> collapseRowsMax(const ImportanceMap& map);
 
+/// Half-mass width of a 1D importance map (a collapsed x or y map) as a share of its length:
+/// the length of the shortest run of whole texels whose importance sums to at least half of
+/// the map's, divided by values.size(). In (0, 1]; 0 for an empty or all-zero map (values
+/// that are not > 0 or are infinite count as 0). A narrow peak gives a small width: the warp
+/// can give it many texels. This is how "sharp" an importance distribution is along one
+/// shadow-map axis (seed 000's "sharper importance distribution ... for the vertical axis").
+float halfMassWidth(const std::vector<float>& values);
+
 }  // namespace sl::rtw

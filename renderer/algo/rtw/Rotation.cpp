@@ -23,7 +23,8 @@ glm::mat2 lightViewRotation(const RotationState& state) {
   return glm::transpose(state.R);
 }
 
-RotationUpdate updateRotation(RotationState& state, const MomentStats& stats, float threshold) {
+RotationUpdate updateRotation(RotationState& state, const MomentStats& stats, float threshold,
+                              float minAnisotropy) {
   float t = std::isnan(threshold) ? kDefaultHoldThreshold
                                   : std::clamp(threshold, kMinHoldThreshold, kMaxHoldThreshold);
   ++state.frames;
@@ -32,6 +33,11 @@ RotationUpdate updateRotation(RotationState& state, const MomentStats& stats, fl
   u.valid = true;
   u.e_x = stats.ex;
   u.e_y = stats.ey;
+  const float minA = std::isnan(minAnisotropy) ? 0.0f : std::clamp(minAnisotropy, 0.0f, 1.0f);
+  if (stats.anisotropy < minA) {
+    u.tooRound = true;
+    return u;
+  }
   if (stats.ex > t) {
     u.held = true;
     return u;

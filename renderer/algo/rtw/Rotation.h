@@ -47,6 +47,7 @@ struct RotationState {
 struct RotationUpdate {
   bool valid = false;            ///< the stats had a principal axis (MomentStats::valid)
   bool held = false;             ///< valid but e_x > threshold: R_k = R_{k-1} (vibration hold)
+  bool tooRound = false;         ///< valid but anisotropy < minAnisotropy: R_k = R_{k-1} (not held)
   bool rotated = false;          ///< R changed: valid, not held, and e_y != 0
   float e_x = 1.0f, e_y = 0.0f;  ///< the principal axis used ((1, 0) when not valid)
   float stepDeg = 0.0f;          ///< atan2(e_y, e_x) in degrees if rotated, else 0
@@ -56,8 +57,11 @@ struct RotationUpdate {
 /// default). Not valid (all-zero IM, isotropic Σ): R unchanged, never NaN. Held when
 /// e_x > threshold (threshold 1 never holds). Otherwise R = R' R computed in float and
 /// re-orthonormalised: (c, s) = first column / hypot, R = mat2(c, s, -s, c).
+/// minAnisotropy (clamped to [0, 1], NaN -> 0): with (λ1 − λ2) / (λ1 + λ2) below it, R is
+/// left as it is (tooRound; not a vibration hold): an importance that is not elongated has
+/// no direction worth turning the map for. 0 = the poster (every valid axis counts).
 RotationUpdate updateRotation(RotationState& state, const MomentStats& stats,
-                              float threshold = kDefaultHoldThreshold);
+                              float threshold = kDefaultHoldThreshold, float minAnisotropy = 0.0f);
 
 /// transpose(state.R): the rotation to pass as sl::FocusSettings::rotation (light view).
 glm::mat2 lightViewRotation(const RotationState& state);

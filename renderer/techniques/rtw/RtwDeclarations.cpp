@@ -15,7 +15,7 @@ std::uint64_t smRes(const ParamSet& p) {
   return std::uint64_t(p.getInt("resolution"));
 }
 std::uint64_t momentRes(const ParamSet& p) {
-  return std::min<std::uint64_t>(imRes(p), RtwShadowMap::kMomentImMax);
+  return std::uint64_t(RtwShadowMap::momentResolution(p, int(imRes(p))));
 }
 /// Texels of every level of the moment chain of an m x m IM (sizes halve, rounding up).
 std::uint64_t momentChainTexels(std::uint64_t m) {
@@ -64,8 +64,9 @@ std::vector<PassDecl> RtwShadowMap::passDecls(const std::string& id) {
   if (da)
     passes.push_back(
         {"moments", "Moment mip chain",
-         "DA-RTW: the IM's block maxima (at most 128²) into six textures I, xI, yI, x²I, y²I, "
-         "xyI, summed 2×2 per level down to 1×1: the top holds the sums that give the mean and "
+         "DA-RTW: the importance map (pca.source = im) or its block maxima (at most 128², "
+         "block-max) into six textures I, xI, yI, x²I, y²I, xyI, summed 2×2 per level down to 1×1: "
+         "the top holds the sums that give the mean and "
          "covariance of the importance (the next frame's rotation estimate reads it).",
          "moments"});
   if (!backward)
@@ -125,16 +126,37 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                  "Unwarped light coordinate of every warped texel centre.", "4 B x resolution",
                  floats(smRes)});
   }
-  for (const char* n : {"light.extent.x", "light.extent.y"})
-    d.push_back({n, K::Number, "Light frustum width (m).", "", {}});
+  d.push_back({"light.extent.x", K::Number, "Light frustum width (m).", "", {}});
+  d.push_back({"light.extent.y", K::Number, "Light frustum height (m).", "", {}});
+  d.push_back({"light.area",
+               K::Number,
+               "Light frustum area, width x height (m^2): the texels per m^2 of the map are "
+               "resolution^2 / light.area.",
+               "",
+               {}});
+  for (const char* axis : {"x", "y"})
+    d.push_back({"importance.halfmass." + std::string(axis), K::Number,
+                 "Half-mass width of the collapsed " + std::string(axis) +
+                     " importance: the shortest run of texels holding half its sum, as a share "
+                     "of the map's side (small = sharp; after DA-RTW's rotation y lies across "
+                     "the principal axis).",
+                 "4 B x im.resolution", floats(imRes)});
   if (!da) return d;
-  d.push_back({"importance.moments", K::Image, "The block-maxima IM the PCA reads (≤ 128²).",
-               "4 B x min(im.resolution, 128)^2",
+  d.push_back({"importance.moments", K::Image,
+               "The IM the PCA reads: the IM itself or its block maxima (≤ 128²), by pca.source.",
+               "4 B x (im.resolution or min(im.resolution, 128))^2",
                floats([](const ParamSet& p) { return momentRes(p) * momentRes(p); })});
   d.push_back({"moment.*.*", K::ImageSet,
                "The moment chain: channel I, xI, yI, xxI, yyI, xyI at every level (0 = full).",
-               "4 B x 6 x (texels of every level of a min(im.resolution, 128)^2 chain)",
+               "4 B x 6 x (texels of every level of the chain of the PCA's IM)",
                floats([](const ParamSet& p) { return 6 * momentChainTexels(momentRes(p)); })});
+  d.push_back({"pca.scale.x",
+               K::Number,
+               "Scale of the PCA's x (metres per centred IM unit: the half extent of the frustum "
+               "the moments were taken in; 1 with pca.metric = im-units).",
+               "",
+               {}});
+  d.push_back({"pca.scale.y", K::Number, "Scale of the PCA's y (as pca.scale.x).", "", {}});
   for (const char* n : {"moment.I",
                         "moment.xI",
                         "moment.yI",
@@ -152,6 +174,8 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                         "e_x",
                         "e_y",
                         "rotation.held",
+                        "rotation.too_round",
+                        "pca.anisotropy",
                         "rotation.deg",
                         "rotation.step_deg",
                         "rotation.changes",

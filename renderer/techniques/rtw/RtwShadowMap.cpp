@@ -177,8 +177,46 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
                std::to_string(kMaxTessellationLevel) +
                ". Depth is exact whatever the level: this only shapes silhouettes.",
        .uniform = "u_toleranceTexels"});
+  add({.key = "light.fit",
+       .label = "Frustum fit",
+       .group = "Light frustum",
+       .type = ParamType::Enum,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"tight", "rotation-invariant"},
+       .help = "tight: the smallest box around what the camera sees, in the (rotated) light "
+               "frame, so its area and texels per m^2 change with a rotation. "
+               "rotation-invariant: the square around that region's bounding circle; a rotation "
+               "turns it without resizing it (the area is published as light.area)."});
   const bool da = id == "da-rtw";
-  if (da)
+  if (da) {
+    add({.key = "pca.source",
+         .label = "PCA source",
+         .group = "Rotation",
+         .type = ParamType::Enum,
+         .defaultValue = 0,
+         .minValue = 0,
+         .maxValue = 1,
+         .step = 1,
+         .enumNames = {"block-max", "im"},
+         .help = "What the moments are taken of. block-max: a copy of the IM reduced to at most " +
+                 std::to_string(SL_MOMENT_IM_MAX) +
+                 "^2 blocks, each weighted by its most "
+                 "important texel. im: the importance map itself, every texel (the poster)."});
+    add({.key = "pca.metric",
+         .label = "PCA metric",
+         .group = "Rotation",
+         .type = ParamType::Enum,
+         .defaultValue = 1,
+         .minValue = 0,
+         .maxValue = 1,
+         .step = 1,
+         .enumNames = {"metres", "im-units"},
+         .help = "Units of x and y in the covariance. metres: scaled by the light frustum's half "
+                 "extents, so the axis is the one in the world. im-units: centred IM texel "
+                 "coordinates in [-1, 1] (the poster); the same when the frustum is square."});
     add({.key = "pca.threshold",
          .label = "Vibration threshold",
          .group = "Rotation",
@@ -189,6 +227,19 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
          .step = 0.0001,
          .help = "Keep the rotation while e_x > threshold (Tokuyoshi et al. 2014 use 0.9999); 1.0 "
                  "never holds."});
+    add({.key = "pca.min_anisotropy",
+         .label = "Min anisotropy",
+         .group = "Rotation",
+         .type = ParamType::Float,
+         .defaultValue = 0.99,
+         .minValue = 0,
+         .maxValue = 1,
+         .step = 0.01,
+         .help = "Turn only while the importance is thin: (l1 - l2) / (l1 + l2) of its covariance "
+                 "at least this; below it R stays as it is. 0 = always, as the poster. Measured: "
+                 "turning pays on a thin diagonal strip (0.996) and costs on the corridor (0.98) "
+                 "and wider views (0.2-0.7): docs/techniques/rtw.md."});
+  }
   std::string name, desc;
   if (id == "rtw-forward") {
     name = "RTW (forward analysis)";
@@ -220,6 +271,12 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   info.lights = {LightType::Directional};
   info.temporalRotation = id == "da-rtw";
   return info;
+}
+
+int RtwShadowMap::momentResolution(const ParamSet& params, int imRes) {
+  return params.has("pca.source") && params.getInt("pca.source") == 1
+             ? imRes
+             : std::min(imRes, kMomentImMax);
 }
 
 RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
@@ -297,8 +354,9 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx
     importance_ = {};
   }
   if (!ctx.wants("shadow map.uniform")) uniformMap_ = {};
-  // DA-RTW: the PCA's IM, the block maxima of the full IM down to kMomentImMax^2.
-  const int momentRes = std::min(imRes, kMomentImMax);
+  // DA-RTW: the PCA's IM: the IM itself (pca.source = im) or its block maxima down to
+  // kMomentImMax^2. The scatter writes it at its own resolution, so at imRes it is the IM.
+  const int momentRes = momentResolution(ctx.params, imRes);
   if (config_.rotation && (momentRes != momentRes_ || !momentIm_)) {
     momentIm_ = gl::Texture::create2D(GL_R32UI, momentRes, momentRes);
     momentOffsets_.clear();
@@ -325,9 +383,15 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   std::vector<float> top = readFloats(momentBuffer_, size_t(momentOffsets_.back()), 6);
   rtw::MomentTexel t;
   for (int c = 0; c < 6; ++c) t[c] = top[c], lastTop_[c] = top[c];
-  // The angle is measured in metres: the IM's axes span the light frustum's extents.
-  rtw::MomentStats stats = rtw::momentsFromTop(t, 0.5f * momentExtentM_);
-  lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")));
+  // pca.metric: in metres (the IM's axes span the light frustum's extents) or IM units.
+  const bool metres = ctx.params.getInt("pca.metric") == 0;
+  rtw::MomentStats stats = rtw::momentsFromTop(t, metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f));
+  const glm::vec2 scale = metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f);
+  publishNumber(ctx, "pca.scale.x", scale.x);
+  publishNumber(ctx, "pca.scale.y", scale.y);
+  lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")),
+                                    float(ctx.params.get("pca.min_anisotropy")));
+  publishNumber(ctx, "pca.anisotropy", stats.anisotropy);
   publishNumber(ctx, "mean.x", stats.meanX);
   publishNumber(ctx, "mean.y", stats.meanY);
   publishNumber(ctx, "cov.xx", stats.covXX);
@@ -539,6 +603,7 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, "e_x", lastUpdate_.e_x);
     publishNumber(ctx, "e_y", lastUpdate_.e_y);
     publishNumber(ctx, "rotation.held", lastUpdate_.held ? 1 : 0);
+    publishNumber(ctx, "rotation.too_round", lastUpdate_.tooRound ? 1 : 0);
     publishNumber(ctx, "rotation.deg", rotation_.angleDeg());
     publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
     publishNumber(ctx, "rotation.changes", rotation_.changes);
@@ -550,6 +615,7 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
     auto pass = ctx.timer.scope("focus");
     FocusSettings fs;
     if (config_.rotation) fs.rotation = rtw::lightViewRotation(rotation_);
+    if (p.getInt("light.fit") == 1) fs.extent = FocusExtent::RotationInvariant;
     if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
                                        ctx.light.directionalTowards(), fs, fit))
       throw std::runtime_error(*err);
@@ -572,6 +638,13 @@ void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
   const size_t n = size_t(imRes_), sm = size_t(smRes_);
   publishNumber(ctx, "light.extent.x", lastExtentM_.x);
   publishNumber(ctx, "light.extent.y", lastExtentM_.y);
+  publishNumber(ctx, "light.area", double(lastExtentM_.x) * double(lastExtentM_.y));
+  for (int axis = 0; axis < 2; ++axis) {  // reads only the 1D map of an axis asked for
+    const std::string key = axis == 0 ? "importance.halfmass.x" : "importance.halfmass.y";
+    if (ctx.wants(key))
+      publishNumber(ctx, key,
+                    rtw::halfMassWidth(readPublishedFloats(ctx, collapsed_, size_t(axis) * n, n)));
+  }
   if (importance_) publishFloatBits(ctx, "importance", importance_);
   publishCurve(ctx, "inverse.x", inverse_, 0, sm);
   publishCurve(ctx, "inverse.y", inverse_, sm, sm);
@@ -626,19 +699,21 @@ MemoryStats RtwShadowMap::memory() const {
   m.add("1D importance (x, y)", "R32UI", imRes_, 1, 2, 4);
   m.add("1D importance blurred (x, y)", "R32F", imRes_, 1, 2, 4);
   m.add("warp maps (x, y; n+1 edges)", "R32F", imRes_ + 1, 1, 2, 4);
-  if (importance_)
-    m.add(backward() ? "importance map (while a panel shows it)" : "importance map", "R32UI",
-          imRes_, imRes_, 1, 4);
+  if (importance_ && backward())  // backward analysis scatters into the 1D maps: a debug view
+    m.addDebugView("importance map (while a panel shows it)", "R32UI", imRes_, imRes_, 1, 4);
+  else if (importance_)
+    m.add("importance map", "R32UI", imRes_, imRes_, 1, 4);
   if (forwardDepth_) m.add("forward depth", "DEPTH_COMPONENT32F", imRes_, imRes_, 1, 4);
   if (momentIm_) {
-    m.add("moment IM (block maxima)", "R32UI", momentRes_, momentRes_, 1, 4);
+    m.add(momentRes_ == imRes_ ? "moment IM (the IM itself)" : "moment IM (block maxima)", "R32UI",
+          momentRes_, momentRes_, 1, 4);
     int texels = 0;
     for (glm::ivec2 s : momentSizes_) texels += s.x * s.y;
     m.add("moment chain (6 channels, all levels)", "R32F x6", texels, 1, 6, 4);
   }
   if (uniformMap_)
-    m.add("unwarped contrast map (while a panel shows it)", "DEPTH_COMPONENT32F", smRes_, smRes_, 1,
-          4);
+    m.addDebugView("unwarped contrast map (while a panel shows it)", "DEPTH_COMPONENT32F", smRes_,
+                   smRes_, 1, 4);
   return m;
 }
 

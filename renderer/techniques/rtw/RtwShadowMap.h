@@ -25,6 +25,9 @@ class RtwShadowMap : public Technique {
   /// DA-RTW's PCA reads the IM reduced to at most this size (block maxima): seed 000's
   /// moments need the distribution's shape, not 512^2 texels.
   static constexpr int kMomentImMax = SL_MOMENT_IM_MAX;  ///< common/shared_constants.h
+  /// Side of the IM the PCA reads: im.resolution (pca.source = im, the poster) or
+  /// min(im.resolution, kMomentImMax) (block-max).
+  static int momentResolution(const ParamSet& params, int imRes);
   /// The passes of technique `id` in frame order, as timed (RtwDeclarations.cpp).
   static std::vector<PassDecl> passDecls(const std::string& id);
   /// What technique `id` publishes when asked, with the readback cost of each key.

@@ -310,9 +310,11 @@ void TimingPanel::showStats(const sl::FrameStats& stats) {
     for (int c = 2; c < 4; ++c) item->setTextAlignment(c, Qt::AlignRight | Qt::AlignVCenter);
     memory_->addTopLevelItem(item);
   }
-  memoryTotal_->setText(
-      tr("Total: %1 texels, %2")
-          .arg(formatCount(stats.memory.texels()), formatBytes(stats.memory.bytes())));
+  QString total = tr("Technique: %1 texels, %2")
+                      .arg(formatCount(stats.memory.texels()), formatBytes(stats.memory.bytes()));
+  if (const std::uint64_t debug = stats.memory.debugViewBytes())
+    total += tr("; debug views (held while a panel shows them): %1").arg(formatBytes(debug));
+  memoryTotal_->setText(total);
 }
 
 void TimingPanel::setTechnique(const sl::TechniqueInfo* technique) {

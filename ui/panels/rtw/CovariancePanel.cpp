@@ -200,9 +200,11 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
     return;
   }
   showContent(true);
-  // light.extent.* are the light frustum's full widths (m); Σ uses the half-extents.
-  const double sx = 0.5 * numberOr(n, "light.extent.x", 2.0),
-               sy = 0.5 * numberOr(n, "light.extent.y", 2.0);
+  // The scale the renderer's PCA used (pca.scale.*: the half extents of the frustum the
+  // moments were taken in, or 1 in IM units); without it, this frame's half extents.
+  const double sx = numberOr(n, "pca.scale.x", 0.5 * numberOr(n, "light.extent.x", 2.0)),
+               sy = numberOr(n, "pca.scale.y", 0.5 * numberOr(n, "light.extent.y", 2.0));
+  const bool metres = !(n.count("pca.scale.x") && sx == 1.0 && sy == 1.0);
   const sl::rtw::MomentStats s =
       sl::rtw::momentsFromTop(sums, glm::vec2(static_cast<float>(sx), static_cast<float>(sy)));
   threshold_ = numberOr(n, "pca.threshold", threshold_);
@@ -297,6 +299,10 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   if (!pcaValid) {
     stateText = tr("NO AXIS — isotropic or empty IM: R unchanged");
     stateColor = QColor(128, 131, 136);
+  } else if (numberOr(n, "rotation.too_round", 0.0) != 0.0) {
+    stateText = tr("NOT TURNED — anisotropy %1 below pca.min_anisotropy: R unchanged")
+                    .arg(numberOr(n, "pca.anisotropy", 0.0), 0, 'f', 3);
+    stateColor = QColor(110, 110, 150);
   } else if (held) {
     stateText = tr("HELD — e_x > threshold: R_k = R_k−1");
     stateColor = QColor(60, 150, 80);
@@ -317,8 +323,9 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
     return QStringLiteral("<tr><td>%1&nbsp;</td><td align='right'>%2</td></tr>").arg(name, value);
   };
   QString html = QStringLiteral("<table cellspacing='0' cellpadding='1'>");
-  html += row(tr("λ1"), formatValue(s.lambda1) + QStringLiteral(" m²"));
-  html += row(tr("λ2"), formatValue(s.lambda2) + QStringLiteral(" m²"));
+  const QString unit2 = metres ? QStringLiteral(" m²") : QStringLiteral(" (IM units)²");
+  html += row(tr("λ1"), formatValue(s.lambda1) + unit2);
+  html += row(tr("λ2"), formatValue(s.lambda2) + unit2);
   html += row(tr("anisotropy"), QString::number(s.anisotropy, 'f', 3));
   html += row(tr("e_x"), QString::number(ex, 'f', 7));
   html += row(tr("e_y"), QString::number(havePublished ? pubEy : s.ey, 'f', 7));
@@ -330,6 +337,9 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
         row(tr("R turned"), QStringLiteral("%1°").arg(numberOr(n, "rotation.deg", 0.0), 0, 'f', 2));
   if (n.count("rotation.changes"))
     html += row(tr("R changed"), tr("%1×").arg(numberOr(n, "rotation.changes", 0.0)));
+  if (n.count("light.area"))
+    html += row(tr("frustum area"),
+                formatValue(numberOr(n, "light.area", 0.0)) + QStringLiteral(" m²"));
   html += QStringLiteral("</table>");
   numbers_->setText(html);
 

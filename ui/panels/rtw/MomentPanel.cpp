@@ -163,8 +163,13 @@ void MomentPanel::showNumbers() {
     computed_ = {};
     return;
   }
-  const glm::vec2 axisScale(static_cast<float>(0.5 * numberOr(numbers_, "light.extent.x", 2.0)),
-                            static_cast<float>(0.5 * numberOr(numbers_, "light.extent.y", 2.0)));
+  // The scale the renderer's PCA used (pca.scale.*: half extents, or 1 in IM units).
+  const glm::vec2 axisScale(
+      static_cast<float>(
+          numberOr(numbers_, "pca.scale.x", 0.5 * numberOr(numbers_, "light.extent.x", 2.0))),
+      static_cast<float>(
+          numberOr(numbers_, "pca.scale.y", 0.5 * numberOr(numbers_, "light.extent.y", 2.0))));
+  const bool metres = !(axisScale.x == 1.0f && axisScale.y == 1.0f);
   const sl::rtw::MomentStats s = sl::rtw::momentsFromTop(top, axisScale);
   computed_ = {{QStringLiteral("mean.x"), s.meanX},    {QStringLiteral("mean.y"), s.meanY},
                {QStringLiteral("cov.xx"), s.covXX},    {QStringLiteral("cov.xy"), s.covXY},
@@ -202,9 +207,11 @@ void MomentPanel::showNumbers() {
     html += QStringLiteral("</table>");
   }
   html += QStringLiteral("<p style='color:gray'>%1</p>")
-              .arg(tr("x, y: texel centres in [-1, 1]; \u03a3 in metres (scaled by the light "
-                      "frustum's half-extents %1, %2 m).")
-                       .arg(formatValue(axisScale.x), formatValue(axisScale.y)));
+              .arg(metres ? tr("x, y: texel centres in [-1, 1]; \u03a3 in metres (scaled by the "
+                               "light frustum's half-extents %1, %2 m: pca.metric = metres).")
+                                .arg(formatValue(axisScale.x), formatValue(axisScale.y))
+                          : tr("x, y: texel centres in [-1, 1]; \u03a3 in these IM units "
+                               "(pca.metric = im-units, the poster's)."));
   numbersLabel_->setText(html);
 }
 

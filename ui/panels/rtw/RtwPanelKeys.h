@@ -17,12 +17,28 @@ inline std::set<std::string> importancePanelKeys() {
 /// Covariance panel: the IM it draws the ellipses over, the moment sums, the light
 /// frustum and the renderer's PCA and rotation numbers.
 inline std::set<std::string> covariancePanelKeys() {
-  return {"importance",    "moment.I",        "moment.xI",
-          "moment.yI",     "moment.xxI",      "moment.yyI",
-          "moment.xyI",    "light.extent.x",  "light.extent.y",
-          "pca.threshold", "pca.valid",       "e_x",
-          "e_y",           "rotation.held",   "rotation.step_deg",
-          "rotation.deg",  "rotation.changes"};
+  return {"importance",
+          "moment.I",
+          "moment.xI",
+          "moment.yI",
+          "moment.xxI",
+          "moment.yyI",
+          "moment.xyI",
+          "light.extent.x",
+          "light.extent.y",
+          "pca.threshold",
+          "pca.valid",
+          "e_x",
+          "e_y",
+          "rotation.held",
+          "rotation.step_deg",
+          "rotation.deg",
+          "rotation.changes",
+          "light.area",
+          "pca.scale.x",
+          "pca.scale.y",
+          "pca.anisotropy",
+          "rotation.too_round"};
 }
 
 /// Warp functions panel: the 1D maps before and after the blur, the warp maps.
@@ -43,8 +59,8 @@ inline std::set<std::string> shadowMapPanelKeys() {
 /// Moment mip chain panel: every level image and the sums ("moment.*"), the light
 /// frustum and the renderer's mean and covariance.
 inline std::set<std::string> momentPanelKeys() {
-  return {"moment.*", "light.extent.x", "light.extent.y", "mean.x",
-          "mean.y",   "cov.xx",         "cov.xy",         "cov.yy"};
+  return {"moment.*", "light.extent.x", "light.extent.y", "mean.x",      "mean.y",
+          "cov.xx",   "cov.xy",         "cov.yy",         "pca.scale.x", "pca.scale.y"};
 }
 
 }  // namespace sl::ui::rtw

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # DA-RTW against the poster, one deviation at a time: one interleaved `bench` per scene with
 # rtw-backward (also on the rotation-invariant frustum: the poster's area without a rotation),
-# da-rtw at its defaults, da-rtw as it was before the ablation ("before": metric in metres,
-# turning at any anisotropy), "before" with each switch alone set to the poster's choice
+# da-rtw at its defaults, da-rtw turning at any anisotropy ("gate off": metric in metres,
+# pca.min_anisotropy=0), "gate off" with each switch alone set to the poster's choice
 # (and with the anisotropy gate alone), and the poster (scenes/papers/000-da-rtw.json), at
 # 512/1024/2048, 640x360, 4 frames along the scene's path.
 # Usage: scripts/rtw-ablation.sh OUTDIR [SCENE...]   (default: the directional scenes)
@@ -16,7 +16,7 @@ scenes=("$@")
   plane-box thin-pole dueling)
 cli=build/app/shadowlab-cli
 res=resolution=512,1024,2048
-before="$res:pca.metric=metres:pca.min_anisotropy=0"
+gateoff="$res:pca.metric=metres:pca.min_anisotropy=0"
 poster="$res:importance.stride=1:importance.orientation=0:pca.source=im:pca.metric=im-units"
 poster+=":light.fit=rotation-invariant:pca.threshold=0.9999:pca.min_anisotropy=0"
 mkdir -p "$out"
@@ -25,13 +25,13 @@ for s in "${scenes[@]}"; do
     --technique "rtw-backward:$res" \
     --technique "rtw-backward:$res:light.fit=rotation-invariant" \
     --technique "da-rtw:$res" \
-    --technique "da-rtw:$before" \
-    --technique "da-rtw:$before:pca.source=im" \
-    --technique "da-rtw:$before:pca.metric=im-units" \
-    --technique "da-rtw:$before:light.fit=rotation-invariant" \
-    --technique "da-rtw:$before:importance.stride=1" \
-    --technique "da-rtw:$before:importance.orientation=0" \
-    --technique "da-rtw:$before:pca.min_anisotropy=0.99" \
+    --technique "da-rtw:$gateoff" \
+    --technique "da-rtw:$gateoff:pca.source=im" \
+    --technique "da-rtw:$gateoff:pca.metric=im-units" \
+    --technique "da-rtw:$gateoff:light.fit=rotation-invariant" \
+    --technique "da-rtw:$gateoff:importance.stride=1" \
+    --technique "da-rtw:$gateoff:importance.orientation=0" \
+    --technique "da-rtw:$gateoff:pca.min_anisotropy=0.99" \
     --technique "da-rtw:$poster" \
     --csv "$out/ablation-$s.csv" --chart "$out/ablation-$s.png" --chart-y log
 done

@@ -209,14 +209,16 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
          .label = "PCA metric",
          .group = "Rotation",
          .type = ParamType::Enum,
-         .defaultValue = 1,
+         .defaultValue = 0,
          .minValue = 0,
          .maxValue = 1,
          .step = 1,
          .enumNames = {"metres", "im-units"},
          .help = "Units of x and y in the covariance. metres: scaled by the light frustum's half "
-                 "extents, so the axis is the one in the world. im-units: centred IM texel "
-                 "coordinates in [-1, 1] (the poster); the same when the frustum is square."});
+                 "extents, the axis as it lies in the world. im-units: centred IM texel "
+                 "coordinates in [-1, 1] (the poster); with light.fit = tight the frustum's aspect "
+                 "changes with the angle, and measured on diagonal and corridor the rotation then "
+                 "never settles."});
     add({.key = "pca.threshold",
          .label = "Vibration threshold",
          .group = "Rotation",

@@ -1,5 +1,6 @@
 // Shared helpers of the shadowlab-cli commands; see CliCommon.h.
 #include "CliCommon.h"
+#include "algo/InputFile.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -62,8 +63,20 @@ std::pair<int, int> parseSize(const std::string& text) {
           parseInt("--size", text.substr(x + 1), 1, 1 << 16)};
 }
 
+std::optional<std::string> frameMemoryError(int width, int height) {
+  const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * kBytesPerFramePixel;
+  if (bytes <= kMaxFrameBytes) return std::nullopt;
+  char gib[32];
+  std::snprintf(gib, sizeof gib, "%.1f", double(bytes) / double(1u << 30));
+  return std::to_string(width) + "x" + std::to_string(height) + " needs about " + gib + " GiB (~" +
+         std::to_string(kBytesPerFramePixel) +
+         " bytes a pixel: G-buffer, resolve targets, read-backs, reference): over the limit of " +
+         sl::byteLimitText(kMaxFrameBytes) + " (kMaxFrameBytes)";
+}
+
 void checkFrameSize(int width, int height) {
   if (auto e = Renderer::checkFrameSize(width, height)) throw UsageError("--size: " + *e);
+  if (auto e = frameMemoryError(width, height)) throw UsageError("--size: " + *e);
 }
 
 Light parseLight(const std::string& opt, const std::string& v) {

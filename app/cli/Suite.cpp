@@ -738,7 +738,9 @@ int runSuite(const std::string& file, double framesScale,
   // Every selected case's frame size against this GL implementation, before any case runs.
   for (const SuiteCase& c : cases) {
     if (!selected(c)) continue;
-    if (auto e = Renderer::checkFrameSize(c.width, c.height))
+    auto e = Renderer::checkFrameSize(c.width, c.height);
+    if (!e) e = frameMemoryError(c.width, c.height);
+    if (e)
       throw UsageError(c.sizeWhere == "--size" ? "--size: " + *e
                                                : file + ": " + c.sizeWhere + ": " + *e);
   }

@@ -730,7 +730,9 @@ int runSuite(const std::string& file, double framesScale,
     out["skipped"] = tally.skipped;
     out["known_failures"] = tally.xfailed;
     out["unexpected_passes"] = tally.xpassed;
-    writeText(jsonPath, out.dump(2));  // atomic: temp file + rename (CliCommon)
+    writeText(jsonPath,
+              out.dump(2, ' ', false,
+                       json::error_handler_t::replace));  // atomic: temp file + rename (CliCommon)
   };
   save();
 

@@ -496,7 +496,8 @@ int cmdRender(Args& a) {
   // view.outside=on: --out is the outside view (what a host shows); the error image and the
   // metrics stay the main camera's.
   writePng(cfg.out, err.frame.outside.pixels.empty() ? err.frame.color : err.frame.outside);
-  if (!cfg.metrics.empty()) writeText(cfg.metrics, j.dump(2));
+  if (!cfg.metrics.empty())
+    writeText(cfg.metrics, j.dump(2, ' ', false, json::error_handler_t::replace));
   if (!cfg.errorImage.empty())
     writePng(cfg.errorImage,
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
@@ -662,7 +663,7 @@ int cmdCompare(Args& a) {
     writePng(stem + ".png", err.frame.color);
     writePng(stem + ".error.png",
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
-    writeText(stem + ".json", j.dump(2));
+    writeText(stem + ".json", j.dump(2, ' ', false, json::error_handler_t::replace));
     summary.push_back(j);
     const double ms = j["total_ms"].get<double>();
     const auto texels = j["texels"].get<std::uint64_t>();
@@ -689,7 +690,8 @@ int cmdCompare(Args& a) {
            sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask, dilate)});
     }
   }
-  writeText((fs::path(base.out) / "summary.json").string(), summary.dump(2));
+  writeText((fs::path(base.out) / "summary.json").string(),
+            summary.dump(2, ' ', false, json::error_handler_t::replace));
   std::printf(
       "wrote images (<configuration>.png, <configuration>.error.png) and metrics (*.json, "
       "summary.json) to %s\n",

@@ -162,7 +162,9 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   }
   r.requestPublications(numberKeys);
   for (int f = 0; f < cfg.frames; ++f) {
-    if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) throw std::runtime_error(*e);
+    // A refused frame measures nothing: no metrics are written, the frame is named.
+    if (auto e = r.renderFrame(cfg.width, cfg.height, 0))
+      throw std::runtime_error(cfg.frames > 1 ? "frame " + std::to_string(f) + ": " + *e : *e);
     for (const auto& p : r.stats().passes) {
       if (!passMs.count(p.name)) passOrder.push_back(p.name);
       passMs[p.name].push_back(p.ms);

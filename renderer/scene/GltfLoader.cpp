@@ -1177,8 +1177,33 @@ class Flattener {
     } else {
       warn(where + ": yfov out of range, using 50 degrees");
     }
-    if (cam.perspective.znear > 0.0) lens.nearM = float(cam.perspective.znear);
-    if (cam.perspective.zfar > cam.perspective.znear) lens.farM = float(cam.perspective.zfar);
+    // glTF: 0 < znear < zfar (zfar absent: infinite, the far plane then comes from the
+    // scene's bounds). Anything else is said, not silently replaced.
+    const double znear = cam.perspective.znear, zfar = cam.perspective.zfar;
+    auto metres = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g m", v);
+      return std::string(buf);
+    };
+    if (!(znear > 0.0) || !std::isfinite(znear)) {
+      warn(where + ": znear " + metres(znear) + " is not above 0, using " + metres(lens.nearM));
+    } else if (znear < double(Camera::kMinNearM)) {
+      lens.nearM = Camera::kMinNearM;
+      warn(where + ": znear " + metres(znear) + " is below " + metres(Camera::kMinNearM) +
+           ", using that");
+    } else {
+      lens.nearM = float(znear);
+    }
+    if (zfar > double(lens.nearM) && zfar <= double(Camera::kMaxFarM)) {
+      lens.farM = float(zfar);
+    } else if (zfar > double(Camera::kMaxFarM)) {
+      lens.farM = Camera::kMaxFarM;
+      warn(where + ": zfar " + metres(zfar) + " is beyond " + metres(Camera::kMaxFarM) +
+           ", using that");
+    } else if (zfar != 0.0) {
+      warn(where + ": zfar " + metres(zfar) + " is not beyond znear " + metres(lens.nearM) +
+           ", ignored (the far plane comes from the scene's bounds)");
+    }
     return lens;
   }
 

@@ -486,6 +486,13 @@ int cmdRender(Args& a) {
                                            {"--metrics", cfg.metrics},
                                            {"--error-image", cfg.errorImage},
                                            {"--wrong-pixels", cfg.wrongPixels}};
+  // The image formats before any work (a name without an extension failed after the frames).
+  for (const OutputFile& o : {outputs[0], outputs[2]}) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(o.path, ec);
+    if (o.path.empty() || (fs::exists(st) && !fs::is_regular_file(st))) continue;  // /dev/null
+    if (auto e = sl::checkImageFormat(o.path)) throw UsageError(o.option + ": " + *e);
+  }
   checkOutputs(outputs, {{"--scene", cfg.scene}, {"--preset", cfg.preset}});
   const std::shared_ptr<sl::Scene> scene = loadScene(cfg.scene);
   checkOutputsAgainstScene(outputs, *scene);

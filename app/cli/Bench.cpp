@@ -18,6 +18,7 @@
 #include "ChartCsv.h"
 #include "Commands.h"
 #include "Measure.h"
+#include "algo/InputFile.h"
 #include "gl/EglContext.h"
 
 namespace sl::cli {
@@ -361,11 +362,12 @@ int cmdBench(Args& a) {
   if (cfg.camera.empty() && !scene->paths.empty()) {
     const CameraPath& path = pickPath(*scene, cfg.path);
     for (int f = 0; f < cfg.frames; ++f) cameras.push_back(path.sampleFrame(f, cfg.frames));
-    cameraText = "path " + path.name;
+    cameraText = cutText("path " + path.name);  // a glTF animation name: any length
   } else {
     if (!cfg.path.empty()) (void)pickPath(*scene, cfg.path);  // names the missing path
     cameras.assign(std::size_t(cfg.frames), pickCamera(*scene, cfg.camera));
-    cameraText = "camera " + (cfg.camera.empty() ? std::string("(first bookmark)") : cfg.camera);
+    cameraText =
+        cutText("camera " + (cfg.camera.empty() ? std::string("(first bookmark)") : cfg.camera));
   }
 
   std::vector<std::vector<FrameSample>> samples(configs.size());

@@ -7,15 +7,19 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <stdexcept>
+#include <vector>
 
 #include <unistd.h>
 
+#include "algo/InputFile.h"
 #include "algo/metrics/BenchStats.h"
 
 #if SHADOWLAB_CLI_CHARTS
 #include <QApplication>
 #include <QFont>
+#include <QFontMetricsF>
 #include <QGraphicsLayout>
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
@@ -28,6 +32,9 @@
 #endif
 
 namespace sl::cli {
+
+/// A point label or legend entry is cut to this many bytes (a title to kMaxMessageBytes).
+constexpr std::size_t kMaxLabelBytes = 80;
 
 #if SHADOWLAB_CLI_CHARTS
 void ensureOffscreenApplication() {
@@ -47,6 +54,53 @@ void ensureOffscreenApplication() {
   static char* argv[] = {name, nullptr};
   static QApplication app(argc, argv);
 }
+
+/// The rectangles already taken on the chart (markers, placed labels), in a grid of 32-pixel
+/// cells, so that placing n labels costs O(n) (comparing each with every earlier one took
+/// 120 s for 100,000 rows): a cell holding kMaxPerCell rectangles counts as full, and no
+/// label is clear of a full cell.
+class TakenRects {
+ public:
+  TakenRects(double width, double height)
+      : cols_(std::max(1, int(std::ceil(width / kCell)))),
+        rows_(std::max(1, int(std::ceil(height / kCell)))),
+        cells_(std::size_t(cols_) * std::size_t(rows_)) {}
+  void add(const QRectF& r) {
+    forCells(r, [&](Cell& c) {
+      if (c.rects.size() < kMaxPerCell)
+        c.rects.push_back(r);
+      else
+        c.full = true;
+    });
+  }
+  bool clear(const QRectF& r) {
+    bool ok = true;
+    forCells(r, [&](Cell& c) {
+      ok = ok && !c.full;
+      for (std::size_t i = 0; ok && i < c.rects.size(); ++i) ok = !c.rects[i].intersects(r);
+    });
+    return ok;
+  }
+
+ private:
+  static constexpr double kCell = 32.0;
+  static constexpr std::size_t kMaxPerCell = 16;
+  struct Cell {
+    std::vector<QRectF> rects;
+    bool full = false;
+  };
+  template <class F>
+  void forCells(const QRectF& r, F&& f) {
+    auto index = [](double v, int n) { return std::clamp(int(std::floor(v / kCell)), 0, n - 1); };
+    const int x0 = index(r.left(), cols_), x1 = index(r.right(), cols_);
+    const int y0 = index(r.top(), rows_), y1 = index(r.bottom(), rows_);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+        f(cells_[std::size_t(y) * std::size_t(cols_) + std::size_t(x)]);
+  }
+  int cols_, rows_;
+  std::vector<Cell> cells_;
+};
 #endif
 
 std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>& points,
@@ -59,9 +113,10 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
 #else
   ensureOffscreenApplication();
   QChart* chart = new QChart();  // owned by the scene below
+  // Titles and legend entries come from input (a CSV cell, a glTF animation's name): cut.
   chart->setTitle(QString("<b>%1</b><br>%2")
-                      .arg(QString::fromStdString(spec.title).toHtmlEscaped(),
-                           QString::fromStdString(spec.subtitle).toHtmlEscaped()));
+                      .arg(QString::fromStdString(cutText(spec.title)).toHtmlEscaped(),
+                           QString::fromStdString(cutText(spec.subtitle)).toHtmlEscaped()));
   QFont titleFont = chart->titleFont();
   titleFont.setPointSizeF(titleFont.pointSizeF() * 1.15);
   chart->setTitleFont(titleFont);
@@ -103,13 +158,29 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
     if (series.count(p.technique)) continue;
     const std::size_t i = order.size();
     order.push_back(p.technique);
-    std::string name = p.technique;
+    std::string name = cutText(p.technique, kMaxLabelBytes);
     if (i < spec.seriesNotes.size() && !spec.seriesNotes[i].empty())
-      name += " (" + spec.seriesNotes[i] + ")";
+      name += " (" + cutText(spec.seriesNotes[i], kMaxLabelBytes) + ")";
     series[p.technique] = ui::makeTechniqueSeries(i, QString::fromStdString(name));
   }
-  for (const ChartPoint& p : points)
-    if (std::isfinite(p.x) && std::isfinite(p.y)) series[p.technique]->append(at(p));
+  // One marker per technique and 4-pixel cell: markers drawn over one another show nothing
+  // more, and Qt Charts' scatter series slows down with every point (100,000 took 9 s).
+  auto fraction = [](double v, const sl::ChartAxis& a) {
+    return a.log ? (std::log(v) - std::log(a.min)) / (std::log(a.max) - std::log(a.min))
+                 : (v - a.min) / (a.max - a.min);
+  };
+  std::map<std::string, std::set<std::pair<long, long> > > drawn;
+  for (const ChartPoint& p : points) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+    const QPointF v = at(p);
+    const double fx = fraction(v.x(), xPlan), fy = fraction(v.y(), yPlan);
+    const std::pair<long, long> cell =
+        std::isfinite(fx) && std::isfinite(fy)
+            ? std::pair<long, long>(long(std::floor(std::clamp(fx, -1.0, 2.0) * spec.width / 4)),
+                                    long(std::floor(std::clamp(fy, -1.0, 2.0) * spec.height / 4)))
+            : std::pair<long, long>(-1000000, long(drawn[p.technique].size()));
+    if (drawn[p.technique].insert(cell).second) series[p.technique]->append(v);
+  }
   for (const std::string& t : order) {
     chart->addSeries(series[t]);
     series[t]->attachAxis(axisX);
@@ -125,24 +196,20 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
   QCoreApplication::processEvents();
 
   // Point labels (Qt 6.4 has no per-point label text): placed next to each marker on the
-  // first side where it overlaps no other label or marker.
-  std::vector<QRectF> taken;
+  // first side where it overlaps no other label or marker; none free: not drawn.
+  TakenRects taken(spec.width, spec.height);
   for (const ChartPoint& p : points) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
     QPointF c = chart->mapToPosition(at(p), series[p.technique]);
-    taken.push_back(QRectF(c - QPointF(6, 6), QSizeF(12, 12)));
+    taken.add(QRectF(c - QPointF(6, 6), QSizeF(12, 12)));
   }
   QFont labelFont = chart->legend()->font();
   labelFont.setPointSizeF(labelFont.pointSizeF() * 0.9);
+  const QFontMetricsF metrics(labelFont);
   for (const ChartPoint& p : points) {
     if (p.label.empty() || !std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-    auto* text = new QGraphicsSimpleTextItem(QString::fromStdString(p.label), chart);
-    text->setFont(labelFont);
-    text->setBrush(
-        ui::chartTechniqueColor(
-            std::size_t(std::find(order.begin(), order.end(), p.technique) - order.begin()))
-            .darker(150));
-    const QSizeF sz = text->boundingRect().size();
+    const QString label = QString::fromStdString(cutText(p.label, kMaxLabelBytes));
+    const QSizeF sz = metrics.boundingRect(label).size();
     const QPointF c = chart->mapToPosition(at(p), series[p.technique]);
     const QPointF candidates[] = {{c.x() + 8, c.y() - sz.height() / 2},
                                   {c.x() - sz.width() / 2, c.y() - 8 - sz.height()},
@@ -152,19 +219,23 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
                                   {c.x() + 8, c.y() + 6},
                                   {c.x() - 8 - sz.width(), c.y() - 6 - sz.height()},
                                   {c.x() - 8 - sz.width(), c.y() + 6}};
-    QPointF chosen = candidates[0];
+    std::optional<QPointF> chosen;
     for (const QPointF& cand : candidates) {
       QRectF r(cand, sz);
-      if (!chart->plotArea().contains(r)) continue;
-      bool clear = true;
-      for (const QRectF& t : taken) clear = clear && !t.intersects(r);
-      if (clear) {
+      if (chart->plotArea().contains(r) && taken.clear(r)) {
         chosen = cand;
         break;
       }
     }
-    text->setPos(chosen);
-    taken.push_back(QRectF(chosen, sz));
+    if (!chosen) continue;  // no free side: a label over others would hide them
+    auto* text = new QGraphicsSimpleTextItem(label, chart);
+    text->setFont(labelFont);
+    text->setBrush(
+        ui::chartTechniqueColor(
+            std::size_t(std::find(order.begin(), order.end(), p.technique) - order.begin()))
+            .darker(150));
+    text->setPos(*chosen);
+    taken.add(QRectF(*chosen, sz));
   }
 
   QImage image(spec.width, spec.height, QImage::Format_ARGB32_Premultiplied);

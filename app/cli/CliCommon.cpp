@@ -1,5 +1,6 @@
 // Shared helpers of the shadowlab-cli commands; see CliCommon.h.
 #include "CliCommon.h"
+#include "algo/InputFile.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -62,8 +63,20 @@ std::pair<int, int> parseSize(const std::string& text) {
           parseInt("--size", text.substr(x + 1), 1, 1 << 16)};
 }
 
+std::optional<std::string> frameMemoryError(int width, int height) {
+  const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * kBytesPerFramePixel;
+  if (bytes <= kMaxFrameBytes) return std::nullopt;
+  char gib[32];
+  std::snprintf(gib, sizeof gib, "%.1f", double(bytes) / double(1u << 30));
+  return std::to_string(width) + "x" + std::to_string(height) + " needs about " + gib + " GiB (~" +
+         std::to_string(kBytesPerFramePixel) +
+         " bytes a pixel: G-buffer, resolve targets, read-backs, reference): over the limit of " +
+         sl::byteLimitText(kMaxFrameBytes) + " (kMaxFrameBytes)";
+}
+
 void checkFrameSize(int width, int height) {
   if (auto e = Renderer::checkFrameSize(width, height)) throw UsageError("--size: " + *e);
+  if (auto e = frameMemoryError(width, height)) throw UsageError("--size: " + *e);
 }
 
 Light parseLight(const std::string& opt, const std::string& v) {
@@ -202,6 +215,18 @@ std::optional<std::string> writeFile(const std::string& path, const std::string&
 
 }  // namespace
 
+/// True for a FIFO that no process reads now: opening it for writing would block forever.
+bool fifoWithoutReader(const std::string& path) {
+  std::error_code ec;
+  if (fs::status(path, ec).type() != fs::file_type::fifo) return false;
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd >= 0) {
+    ::close(fd);
+    return false;
+  }
+  return errno == ENXIO;
+}
+
 void checkOutputs(const std::vector<OutputFile>& outputs, const std::vector<OutputFile>& inputs) {
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const OutputFile& o = outputs[i];
@@ -218,6 +243,10 @@ void checkOutputs(const std::vector<OutputFile>& outputs, const std::vector<Outp
     const fs::file_status st = fs::status(o.path, ec);
     if (fs::is_directory(st)) throw UsageError(o.option + ": '" + o.path + "' is a folder");
     if (fs::exists(st) && !fs::is_regular_file(st)) {  // a device or pipe: written in place
+      if (fifoWithoutReader(o.path))
+        throw UsageError(o.option + ": '" + o.path +
+                         "' is a FIFO that nothing reads (writing would wait forever): start "
+                         "its reader first");
       if (::access(o.path.c_str(), W_OK) != 0)
         throw UsageError(o.option + ": '" + o.path + "' is not writable (" + std::strerror(errno) +
                          ")");
@@ -252,6 +281,7 @@ void writeAtomically(const std::string& path,
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
   if (fs::exists(st) && !fs::is_regular_file(st)) {  // /dev/null, /dev/stdout, a pipe
+    if (fifoWithoutReader(path)) fail("a FIFO that nothing reads any more: not written", "");
     if (auto e = write(path)) fail(*e, "");
     return;
   }

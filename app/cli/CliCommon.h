@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -42,6 +43,16 @@ std::pair<int, int> parseSize(const std::string& text);  ///< "WxH" for --size
 /// Refuses a frame larger than this OpenGL implementation renders (Renderer::checkFrameSize):
 /// UsageError naming --size and the limit. Needs a current GL context.
 void checkFrameSize(int width, int height);
+/// Memory a frame pixel costs a measuring command, all copies together (G-buffer and resolve
+/// targets, their read-backs, the reference's mask): render --size 8192x8193 took 7.7 GB,
+/// ~115 bytes a pixel.
+inline constexpr std::uint64_t kBytesPerFramePixel = 115;
+/// The frame memory a command may take by that estimate (~37 M pixels, 8192x4608).
+inline constexpr std::uint64_t kMaxFrameBytes = std::uint64_t(4) << 30;
+/// "WxH needs about X GiB ...: over the limit" when width x height exceeds kMaxFrameBytes by
+/// the estimate, else nothing (checkFrameSize and suites check it after the GL limits, before
+/// any frame).
+std::optional<std::string> frameMemoryError(int width, int height);
 /// A --light value, validated: "dir:AZ,EL" or "AZ,EL" (directional, degrees),
 /// "point:X,Y,Z[,RANGE]", "spot:X,Y,Z,DX,DY,DZ,OUTER_DEG[,INNER_DEG[,RANGE]]" (metres,
 /// degrees; range 0 = infinite). UsageError naming the bad field.

@@ -124,7 +124,7 @@ int runSingle(Args& a) {
   j["per_frame"] = perFrame;
   j["summary"] = summaryJson(sum);
   if (withReference) j["reference_evaluations"] = referenceEvaluations;
-  writeText(jsonPath, j.dump(2));
+  writeText(jsonPath, j.dump(2, ' ', false, json::error_handler_t::replace));
   std::printf(
       "%s on %s, %d frames%s: rotation_changes %d (max step %.4g deg, last at frame %d), "
       "mask_change_frames %d (max %.4g%%, last at frame %d)%s -> %s\n",

@@ -346,7 +346,15 @@ std::vector<SuiteCase> parseSuite(const JsonReader& r, const json& root, double 
     sc.path = r.string(c, where, "path", "");
     sc.warmup = r.integer(c, where, "warmup_frames", 0, 0, kMaxFrames);
     const int frames = r.integer(c, where, "frames", 30, 1, kMaxFrames);
-    sc.frames = std::max(sc.warmup + 2, int(std::lround(frames * framesScale)));
+    // Scaled, still bounded: every frame's camera and record is built (10^6 x 100 frames
+    // died in std::bad_alloc).
+    const double scaled = std::round(double(frames) * framesScale);
+    if (scaled > double(kMaxFrames))
+      r.fail(jsonPath(where, "frames"), std::to_string(frames) + " frames x --frames-scale " +
+                                            fmt(framesScale) + " = " + fmt(scaled) +
+                                            " frames, over the limit of " +
+                                            std::to_string(kMaxFrames) + " (kMaxFrames)");
+    sc.frames = std::max(sc.warmup + 2, int(scaled));
     std::tie(sc.width, sc.height) = defSize;
     if (const json* s = JsonReader::member(c, "size")) {
       sc.sizeWhere = jsonPath(where, "size");
@@ -722,7 +730,9 @@ int runSuite(const std::string& file, double framesScale,
     out["skipped"] = tally.skipped;
     out["known_failures"] = tally.xfailed;
     out["unexpected_passes"] = tally.xpassed;
-    writeText(jsonPath, out.dump(2));  // atomic: temp file + rename (CliCommon)
+    writeText(jsonPath,
+              out.dump(2, ' ', false,
+                       json::error_handler_t::replace));  // atomic: temp file + rename (CliCommon)
   };
   save();
 
@@ -730,7 +740,9 @@ int runSuite(const std::string& file, double framesScale,
   // Every selected case's frame size against this GL implementation, before any case runs.
   for (const SuiteCase& c : cases) {
     if (!selected(c)) continue;
-    if (auto e = Renderer::checkFrameSize(c.width, c.height))
+    auto e = Renderer::checkFrameSize(c.width, c.height);
+    if (!e) e = frameMemoryError(c.width, c.height);
+    if (e)
       throw UsageError(c.sizeWhere == "--size" ? "--size: " + *e
                                                : file + ": " + c.sizeWhere + ": " + *e);
   }

@@ -162,7 +162,9 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   }
   r.requestPublications(numberKeys);
   for (int f = 0; f < cfg.frames; ++f) {
-    if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) throw std::runtime_error(*e);
+    // A refused frame measures nothing: no metrics are written, the frame is named.
+    if (auto e = r.renderFrame(cfg.width, cfg.height, 0))
+      throw std::runtime_error(cfg.frames > 1 ? "frame " + std::to_string(f) + ": " + *e : *e);
     for (const auto& p : r.stats().passes) {
       if (!passMs.count(p.name)) passOrder.push_back(p.name);
       passMs[p.name].push_back(p.ms);
@@ -484,6 +486,13 @@ int cmdRender(Args& a) {
                                            {"--metrics", cfg.metrics},
                                            {"--error-image", cfg.errorImage},
                                            {"--wrong-pixels", cfg.wrongPixels}};
+  // The image formats before any work (a name without an extension failed after the frames).
+  for (const OutputFile& o : {outputs[0], outputs[2]}) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(o.path, ec);
+    if (o.path.empty() || (fs::exists(st) && !fs::is_regular_file(st))) continue;  // /dev/null
+    if (auto e = sl::checkImageFormat(o.path)) throw UsageError(o.option + ": " + *e);
+  }
   checkOutputs(outputs, {{"--scene", cfg.scene}, {"--preset", cfg.preset}});
   const std::shared_ptr<sl::Scene> scene = loadScene(cfg.scene);
   checkOutputsAgainstScene(outputs, *scene);
@@ -496,7 +505,8 @@ int cmdRender(Args& a) {
   // view.outside=on: --out is the outside view (what a host shows); the error image and the
   // metrics stay the main camera's.
   writePng(cfg.out, err.frame.outside.pixels.empty() ? err.frame.color : err.frame.outside);
-  if (!cfg.metrics.empty()) writeText(cfg.metrics, j.dump(2));
+  if (!cfg.metrics.empty())
+    writeText(cfg.metrics, j.dump(2, ' ', false, json::error_handler_t::replace));
   if (!cfg.errorImage.empty())
     writePng(cfg.errorImage,
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
@@ -662,7 +672,7 @@ int cmdCompare(Args& a) {
     writePng(stem + ".png", err.frame.color);
     writePng(stem + ".error.png",
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
-    writeText(stem + ".json", j.dump(2));
+    writeText(stem + ".json", j.dump(2, ' ', false, json::error_handler_t::replace));
     summary.push_back(j);
     const double ms = j["total_ms"].get<double>();
     const auto texels = j["texels"].get<std::uint64_t>();
@@ -689,7 +699,8 @@ int cmdCompare(Args& a) {
            sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask, dilate)});
     }
   }
-  writeText((fs::path(base.out) / "summary.json").string(), summary.dump(2));
+  writeText((fs::path(base.out) / "summary.json").string(),
+            summary.dump(2, ' ', false, json::error_handler_t::replace));
   std::printf(
       "wrote images (<configuration>.png, <configuration>.error.png) and metrics (*.json, "
       "summary.json) to %s\n",

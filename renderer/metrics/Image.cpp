@@ -83,6 +83,25 @@ std::optional<std::string> writeImage(const std::filesystem::path& path, const I
 #endif
 }
 
+std::optional<std::string> checkImageFormat(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  if (path.extension().empty() || path.filename() == path.extension())
+    return "'" + name + "' has no extension: name the image format (.png)";
+#if SHADOWLAB_HAVE_OIIO
+  // Finds the writer by the extension without creating the file.
+  if (!OIIO::ImageOutput::create(name)) {
+    (void)OIIO::geterror();  // clear it
+    return "'" + name + "': no image format for '" + path.extension().string() + "' (use .png)";
+  }
+#else
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".png")
+    return "'" + name + "': this build writes PNG only (built with SHADOWLAB_OIIO=OFF)";
+#endif
+  return std::nullopt;
+}
+
 std::optional<ImageRGBA8> readImage(const std::filesystem::path& path, std::string* error) {
   const std::string name = path.string();
   auto fail = [&](const std::string& why) -> std::optional<ImageRGBA8> {

@@ -47,6 +47,9 @@ void flipRowsVertically(std::span<std::uint8_t> data, std::size_t rowBytes, int 
 /// OpenImageIO can write). Creates missing parent directories. Alpha is stored as is
 /// (not premultiplied). Returns an error message naming the path, or nothing on success.
 std::optional<std::string> writeImage(const std::filesystem::path& path, const ImageRGBA8& image);
+/// Whether writeImage can write `path`'s format (by its extension), checked before any work:
+/// an error naming the path ("has no extension ...", "no image format for '.xyz'"), or nothing.
+std::optional<std::string> checkImageFormat(const std::filesystem::path& path);
 
 /// Reads any image OpenImageIO can read and converts it to RGBA8 (the first subimage):
 /// 1 channel -> grey, 2 -> grey + alpha, 3 -> RGB + opaque alpha, >= 4 -> the first four.

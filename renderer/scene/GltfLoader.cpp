@@ -62,6 +62,12 @@ constexpr std::size_t kMaxUriBytes = 4096;
 constexpr std::size_t kMaxNodeInstances = std::size_t(1) << 20;
 /// Triangles in the flattened scene (all instances together).
 constexpr std::size_t kMaxTriangles = std::size_t(1) << 25;
+/// Memory a flattened triangle costs, all copies together (the flattened mesh, GPU buffers, the
+/// reference's BVH): a 1 M-triangle mesh on 8 nodes took 3.9 GB, ~490 bytes a triangle.
+constexpr std::uint64_t kBytesPerTriangle = 490;
+/// The memory the flattened scene may take by that estimate (~8.7 M triangles): refused before
+/// anything is allocated (32 nodes of that mesh, under kMaxTriangles, would have taken ~15 GB).
+constexpr std::uint64_t kMaxSceneBytes = std::uint64_t(4) << 30;
 /// Longest side and pixel count of a decoded image (larger ones are not decoded).
 constexpr int kMaxImageSide = 16384;
 constexpr std::uint64_t kMaxImagePixels = std::uint64_t(1) << 26;
@@ -845,6 +851,16 @@ class Flattener {
       const int mesh = model_.nodes[std::size_t(inst.node)].mesh;
       if (mesh < 0 || std::size_t(mesh) >= perMesh.size()) continue;
       total += perMesh[std::size_t(mesh)];
+      if (total <= kMaxTriangles && std::uint64_t(total) * kBytesPerTriangle > kMaxSceneBytes) {
+        char gib[32];
+        std::snprintf(gib, sizeof gib, "%.1f",
+                      double(std::uint64_t(total) * kBytesPerTriangle) / double(1u << 30));
+        fail("the flattened scene would have " + std::to_string(total) + "+ triangles (" +
+             std::to_string(instances_.size()) +
+             " node instances; a mesh counts once per node that uses it), about " + gib +
+             " GiB at ~" + std::to_string(kBytesPerTriangle) + " bytes a triangle: over the " +
+             "limit of " + byteLimitText(kMaxSceneBytes) + " (kMaxSceneBytes)");
+      }
       if (total > kMaxTriangles)
         fail("the flattened scene would have more than " + std::to_string(kMaxTriangles) +
              " triangles (" + std::to_string(instances_.size()) +
@@ -1161,8 +1177,33 @@ class Flattener {
     } else {
       warn(where + ": yfov out of range, using 50 degrees");
     }
-    if (cam.perspective.znear > 0.0) lens.nearM = float(cam.perspective.znear);
-    if (cam.perspective.zfar > cam.perspective.znear) lens.farM = float(cam.perspective.zfar);
+    // glTF: 0 < znear < zfar (zfar absent: infinite, the far plane then comes from the
+    // scene's bounds). Anything else is said, not silently replaced.
+    const double znear = cam.perspective.znear, zfar = cam.perspective.zfar;
+    auto metres = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g m", v);
+      return std::string(buf);
+    };
+    if (!(znear > 0.0) || !std::isfinite(znear)) {
+      warn(where + ": znear " + metres(znear) + " is not above 0, using " + metres(lens.nearM));
+    } else if (znear < double(Camera::kMinNearM)) {
+      lens.nearM = Camera::kMinNearM;
+      warn(where + ": znear " + metres(znear) + " is below " + metres(Camera::kMinNearM) +
+           ", using that");
+    } else {
+      lens.nearM = float(znear);
+    }
+    if (zfar > double(lens.nearM) && zfar <= double(Camera::kMaxFarM)) {
+      lens.farM = float(zfar);
+    } else if (zfar > double(Camera::kMaxFarM)) {
+      lens.farM = Camera::kMaxFarM;
+      warn(where + ": zfar " + metres(zfar) + " is beyond " + metres(Camera::kMaxFarM) +
+           ", using that");
+    } else if (zfar != 0.0) {
+      warn(where + ": zfar " + metres(zfar) + " is not beyond znear " + metres(lens.nearM) +
+           ", ignored (the far plane comes from the scene's bounds)");
+    }
     return lens;
   }
 

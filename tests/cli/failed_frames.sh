@@ -71,13 +71,13 @@ check "chart notes the failed row" grep -q "1 failed configuration not charted" 
 "$cli" compare --scene "$out/every-frame-fails.gltf" --path dolly --light 30,45 \
   --technique uniform --size 64x36 --out-dir "$out/compare" >"$out/compare.txt" 2>&1
 check "compare: exit 1" test $? -eq 1
-check "compare: the row says failed" grep -q "^uniform  *failed: camera: position equals target" \
+check "compare: the row says failed" grep -q "^uniform  *failed: frame 0: camera: position equals target" \
   "$out/compare.txt"
 check "compare: no image of a failed configuration" test ! -e "$out/compare/uniform.png"
 check "compare: summary.json names the failure" python3 -c '
 import json, sys
 s = json.load(open(sys.argv[1]))
-assert s == [{"configuration": "uniform", "failure": "camera: position equals target"}], s
+assert s == [{"configuration": "uniform", "failure": "frame 0: camera: position equals target"}], s
 ' "$out/compare/summary.json"
 
 # 2. A suite whose orbit overflows on frame 1: the case fails, the frame is named.

@@ -395,12 +395,18 @@ TEST(GltfLoaderLimits, TooManyTrianglesAreRefusedBeforeReading) {
   const std::size_t over = 3 * ((std::size_t(1) << 25) + 1);
   writeFile(dir / "one.gltf", gltfText(R"({"mesh":0})", "0", triangleDataUri(), "", over));
   expectRefused(dir / "one.gltf", {"more than 33554432 triangles", "kMaxTriangles"});
-  // 2^24 + 1 triangles, instanced by two nodes.
+  // 2^24 + 1 triangles, instanced by two nodes: under kMaxTriangles, but ~7.7 GiB by the
+  // memory estimate (~490 bytes a flattened triangle), over kMaxSceneBytes.
   const std::size_t half = 3 * ((std::size_t(1) << 24) + 1);
   writeFile(dir / "two.gltf",
             gltfText(R"({"mesh":0},{"mesh":0})", "0,1", triangleDataUri(), "", half));
-  expectRefused(dir / "two.gltf",
-                {"more than 33554432 triangles", "2 node instances", "kMaxTriangles"});
+  expectRefused(dir / "two.gltf", {"16777217+ triangles (2 node instances", "about 7.7 GiB",
+                                   "over the limit of 4096 MiB (kMaxSceneBytes)"});
+  // 8 M triangles on one node: within both limits, refused only by the buffer it lacks.
+  const std::size_t within = 3 * 8000000;
+  writeFile(dir / "within.gltf", gltfText(R"({"mesh":0})", "0", triangleDataUri(), "", within));
+  const SceneLoadResult r = loadGltf(dir / "within.gltf");
+  EXPECT_EQ(r.error.find("kMaxSceneBytes"), std::string::npos) << r.error;
 }
 
 // ---- many cameras --------------------------------------------------------------------------

@@ -108,7 +108,7 @@ void expand(const std::filesystem::path& root, const std::string& file, const Pr
 ShaderLibrary::ShaderLibrary(std::filesystem::path root) : root_(std::move(root)) {}
 
 std::filesystem::path ShaderLibrary::defaultRoot() {
-  return dataDir("shaders", "SHADOWLAB_SHADER_DIR", SHADOWLAB_SHADER_DIR);
+  return dataDir("shaders", std::getenv("SHADOWLAB_SHADER_DIR"), SHADOWLAB_SHADER_DIR);
 }
 
 std::string ShaderLibrary::preprocess(const std::string& file, const ProgramDesc& desc,

@@ -1,7 +1,6 @@
 // Data folders: environment, installed layout beside the program, or the source tree.
 #include "scene/DataDir.h"
 
-#include <cstdlib>
 #include <string>
 #include <system_error>
 
@@ -34,11 +33,10 @@ std::filesystem::path executableDir() {
   return exe.parent_path();
 }
 
-std::filesystem::path dataDir(std::string_view sub, const char* envName,
+std::filesystem::path dataDir(std::string_view sub, const char* envValue,
                               const std::filesystem::path& compiledIn) {
-  const char* env = envName ? std::getenv(envName) : nullptr;
-  return resolveDataDir(sub, env ? std::string_view(env) : std::string_view(), executableDir(),
-                        SHADOWLAB_DATA_SUBDIR, compiledIn);
+  return resolveDataDir(sub, envValue ? std::string_view(envValue) : std::string_view(),
+                        executableDir(), SHADOWLAB_DATA_SUBDIR, compiledIn);
 }
 
 }  // namespace sl

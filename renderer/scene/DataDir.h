@@ -23,9 +23,9 @@ std::filesystem::path resolveDataDir(std::string_view sub, std::string_view envV
 /// The folder of the running program (/proc/self/exe), or empty when it cannot be read.
 std::filesystem::path executableDir();
 
-/// resolveDataDir for this program: the value of the environment variable `envName`,
-/// executableDir() and the install layout this build was configured with.
-std::filesystem::path dataDir(std::string_view sub, const char* envName,
+/// resolveDataDir for this program: `envValue` (the environment variable's value; null or
+/// empty: unset), executableDir() and the install layout this build was configured with.
+std::filesystem::path dataDir(std::string_view sub, const char* envValue,
                               const std::filesystem::path& compiledIn);
 
 }  // namespace sl

@@ -1793,14 +1793,11 @@ SceneLoadResult loadGltf(const std::filesystem::path& path) {
 }
 
 std::filesystem::path builtinSceneDir(const char* environmentValue) {
-#ifndef SHADOWLAB_SCENE_DIR
-#define SHADOWLAB_SCENE_DIR "scenes"
+#ifdef SHADOWLAB_SCENE_DIR
+  return dataDir("scenes", environmentValue, SHADOWLAB_SCENE_DIR);
+#else
+  return dataDir("scenes", environmentValue, "scenes");
 #endif
-#ifndef SHADOWLAB_DATA_SUBDIR
-#define SHADOWLAB_DATA_SUBDIR "share/shadowlab"
-#endif
-  return resolveDataDir("scenes", environmentValue ? environmentValue : "", executableDir(),
-                        SHADOWLAB_DATA_SUBDIR, SHADOWLAB_SCENE_DIR);
 }
 
 std::filesystem::path builtinSceneDir() {

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # DA-RTW against the poster, one deviation at a time: one interleaved `bench` per scene with
 # rtw-backward (also on the rotation-invariant frustum: the poster's area without a rotation),
-# da-rtw at its defaults, da-rtw turning at any anisotropy ("gate off": metric in metres,
-# pca.min_anisotropy=0), "gate off" with each switch alone set to the poster's choice
-# (and with the anisotropy gate alone), and the poster (scenes/papers/000-da-rtw.json), at
-# 512/1024/2048, 640x360, 4 frames along the scene's path.
+# da-rtw at its defaults, da-rtw turning whatever the importance ("gate off": metric in metres,
+# pca.min_anisotropy=0, pca.min_spread=0), "gate off" with each switch alone set to the
+# poster's choice (and with each of the two gates alone), and the poster
+# (scenes/papers/000-da-rtw.json), at 512/1024/2048, 640x360, 4 frames along the scene's path.
 # Usage: scripts/rtw-ablation.sh OUTDIR [SCENE...]   (default: the directional scenes)
-# Writes OUTDIR/ablation-SCENE.csv and .png (error against time).
+# Writes OUTDIR/ablation-SCENE.csv and .png (error against time), and OUTDIR/ablation.md: the
+# tables of docs/results/rtw-ablation.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: scripts/rtw-ablation.sh OUTDIR [SCENE...]}
@@ -14,11 +15,11 @@ shift
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=(diagonal corridor default band-diagonal band-aligned blob
   plane-box thin-pole dueling)
-cli=build/app/shadowlab-cli
+cli=${SHADOWLAB_CLI:-build/app/shadowlab-cli}  # another build: SHADOWLAB_CLI=path
 res=resolution=512,1024,2048
-gateoff="$res:pca.metric=metres:pca.min_anisotropy=0"
+gateoff="$res:pca.metric=metres:pca.min_anisotropy=0:pca.min_spread=0"
 poster="$res:importance.stride=1:importance.orientation=0:pca.source=im:pca.metric=im-units"
-poster+=":light.fit=rotation-invariant:pca.threshold=0.9999:pca.min_anisotropy=0"
+poster+=":light.fit=rotation-invariant:pca.threshold=0.9999:pca.min_anisotropy=0:pca.min_spread=0"
 mkdir -p "$out"
 for s in "${scenes[@]}"; do
   "$cli" bench --scene "$s" --frames 4 --warmup 1 --size 640x360 \
@@ -31,7 +32,9 @@ for s in "${scenes[@]}"; do
     --technique "da-rtw:$gateoff:light.fit=rotation-invariant" \
     --technique "da-rtw:$gateoff:importance.stride=1" \
     --technique "da-rtw:$gateoff:importance.orientation=0" \
-    --technique "da-rtw:$gateoff:pca.min_anisotropy=0.99" \
+    --technique "da-rtw:$gateoff:pca.min_anisotropy=0.9" \
+    --technique "da-rtw:$gateoff:pca.min_spread=0.05" \
     --technique "da-rtw:$poster" \
     --csv "$out/ablation-$s.csv" --chart "$out/ablation-$s.png" --chart-y log
 done
+python3 "$(dirname "$0")/rtw-ablation-table.py" "$out" "${scenes[@]}" >"$out/ablation.md"

@@ -496,5 +496,41 @@ TEST(RtwRotation, MinAnisotropyGate) {
   EXPECT_TRUE(u.rotated);
 }
 
+// pca.min_spread: a thin, anisotropic importance whose half mass sits in a small share of
+// the map leaves R as it is (tooConcentrated, checked after the anisotropy gate and before
+// the hold); a spread one turns; 0 (or a NaN spread with the gate off) is the poster.
+TEST(RtwRotation, MinSpreadGate) {
+  MomentStats st;
+  st.valid = true;
+  st.ex = std::cos(float(rad(40.0)));
+  st.ey = std::sin(float(rad(40.0)));
+  st.anisotropy = 0.98f;
+  RotationState state;
+  RotationUpdate u = updateRotation(state, st, 0.9999f, 0.9f, 0.006f, 0.05f);
+  EXPECT_TRUE(u.valid);
+  EXPECT_TRUE(u.tooConcentrated);
+  EXPECT_FALSE(u.tooRound);
+  EXPECT_FALSE(u.held);
+  EXPECT_FALSE(u.rotated);
+  EXPECT_EQ(state.angleDeg(), 0.0);
+  // Too round wins over too concentrated: the first gate that stops it is named.
+  u = updateRotation(state, st, 0.9999f, 0.99f, 0.006f, 0.05f);
+  EXPECT_TRUE(u.tooRound);
+  EXPECT_FALSE(u.tooConcentrated);
+  // Spread at the gate: turns.
+  u = updateRotation(state, st, 0.9999f, 0.9f, 0.05f, 0.05f);
+  EXPECT_TRUE(u.rotated);
+  EXPECT_NEAR(state.angleDeg(), 40.0, 1e-4);
+  // Gate off: any spread, even an unmeasured one, turns.
+  state.reset();
+  u = updateRotation(state, st, 0.9999f, 0.0f, std::nanf(""), 0.0f);
+  EXPECT_TRUE(u.rotated);
+  // A NaN spread with the gate on is not a measurement that allows a turn.
+  state.reset();
+  u = updateRotation(state, st, 0.9999f, 0.0f, std::nanf(""), 0.05f);
+  EXPECT_TRUE(u.tooConcentrated);
+  EXPECT_EQ(state.angleDeg(), 0.0);
+}
+
 }  // namespace
 }  // namespace sl::rtw

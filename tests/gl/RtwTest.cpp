@@ -336,8 +336,9 @@ TEST(RtwClaims, DaRtwAlignsThePrincipalAxis) {
   for (const char* t : {"rtw-backward", "da-rtw"}) {
     auto r = rtwRenderer("diagonal", t, 512, 512);
     ASSERT_TRUE(r);
-    if (r->params().has("pca.min_anisotropy")) {  // turn at any anisotropy, in metres
+    if (r->params().has("pca.min_anisotropy")) {  // turn whatever the importance, in metres
       ASSERT_FALSE(r->params().set("pca.min_anisotropy", 0.0));
+      ASSERT_FALSE(r->params().set("pca.min_spread", 0.0));
       ASSERT_FALSE(r->params().setFromString("pca.metric", "metres"));
     }
     const Camera* rowEnd = test::bookmark(*r->scene(), "row-end");
@@ -465,6 +466,7 @@ TEST(DaRtwStability, StaticSceneHoldsRotationAndMask) {
     ASSERT_TRUE(r);
     ASSERT_FALSE(r->params().set("pca.threshold", threshold));
     ASSERT_FALSE(r->params().set("pca.min_anisotropy", 0.0));  // the poster: always turn
+    ASSERT_FALSE(r->params().set("pca.min_spread", 0.0));
     ASSERT_FALSE(r->params().setFromString("pca.metric", "metres"));
     r->requestPublications({"*"});
     int lastChange = -1, changes = 0, maskChangeFrames = 0;

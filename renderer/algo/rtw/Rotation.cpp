@@ -24,7 +24,7 @@ glm::mat2 lightViewRotation(const RotationState& state) {
 }
 
 RotationUpdate updateRotation(RotationState& state, const MomentStats& stats, float threshold,
-                              float minAnisotropy) {
+                              float minAnisotropy, float spread, float minSpread) {
   float t = std::isnan(threshold) ? kDefaultHoldThreshold
                                   : std::clamp(threshold, kMinHoldThreshold, kMaxHoldThreshold);
   ++state.frames;
@@ -36,6 +36,11 @@ RotationUpdate updateRotation(RotationState& state, const MomentStats& stats, fl
   const float minA = std::isnan(minAnisotropy) ? 0.0f : std::clamp(minAnisotropy, 0.0f, 1.0f);
   if (stats.anisotropy < minA) {
     u.tooRound = true;
+    return u;
+  }
+  const float minS = std::isnan(minSpread) ? 0.0f : std::clamp(minSpread, 0.0f, 1.0f);
+  if (minS > 0.0f && !(spread >= minS)) {  // a NaN spread (not measured) does not turn
+    u.tooConcentrated = true;
     return u;
   }
   if (stats.ex > t) {

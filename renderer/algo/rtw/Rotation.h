@@ -48,6 +48,7 @@ struct RotationUpdate {
   bool valid = false;            ///< the stats had a principal axis (MomentStats::valid)
   bool held = false;             ///< valid but e_x > threshold: R_k = R_{k-1} (vibration hold)
   bool tooRound = false;         ///< valid but anisotropy < minAnisotropy: R_k = R_{k-1} (not held)
+  bool tooConcentrated = false;  ///< valid, thin enough, but spread < minSpread: R_k = R_{k-1}
   bool rotated = false;          ///< R changed: valid, not held, and e_y != 0
   float e_x = 1.0f, e_y = 0.0f;  ///< the principal axis used ((1, 0) when not valid)
   float stepDeg = 0.0f;          ///< atan2(e_y, e_x) in degrees if rotated, else 0
@@ -60,8 +61,14 @@ struct RotationUpdate {
 /// minAnisotropy (clamped to [0, 1], NaN -> 0): with (λ1 − λ2) / (λ1 + λ2) below it, R is
 /// left as it is (tooRound; not a vibration hold): an importance that is not elongated has
 /// no direction worth turning the map for. 0 = the poster (every valid axis counts).
+/// minSpread (clamped to [0, 1], NaN -> 0): with `spread` (the wider of the half-mass widths
+/// of the collapsed 1D importance, as a share of the map: rtw::halfMassWidth) below it, R is
+/// left as it is (tooConcentrated): half of the importance sits in a small part of the map,
+/// which the separable warp already gives its texels whatever the angle. Checked after the
+/// anisotropy gate, before the hold.
 RotationUpdate updateRotation(RotationState& state, const MomentStats& stats,
-                              float threshold = kDefaultHoldThreshold, float minAnisotropy = 0.0f);
+                              float threshold = kDefaultHoldThreshold, float minAnisotropy = 0.0f,
+                              float spread = 1.0f, float minSpread = 0.0f);
 
 /// transpose(state.R): the rotation to pass as sl::FocusSettings::rotation (light view).
 glm::mat2 lightViewRotation(const RotationState& state);

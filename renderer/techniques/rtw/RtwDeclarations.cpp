@@ -175,11 +175,15 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                         "e_y",
                         "rotation.held",
                         "rotation.too_round",
+                        "rotation.too_concentrated",
                         "pca.anisotropy",
+                        "pca.spread",
                         "rotation.deg",
                         "rotation.step_deg",
                         "rotation.changes",
-                        "pca.threshold"})
+                        "pca.threshold",
+                        "pca.min_anisotropy",
+                        "pca.min_spread"})
     d.push_back({n, K::Number, "PCA and rotation (the last frame's moments).", "", {}});
   return d;
 }

@@ -233,14 +233,27 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
          .label = "Min anisotropy",
          .group = "Rotation",
          .type = ParamType::Float,
-         .defaultValue = 0.99,
+         .defaultValue = 0.9,
          .minValue = 0,
          .maxValue = 1,
          .step = 0.01,
          .help = "Turn only while the importance is thin: (l1 - l2) / (l1 + l2) of its covariance "
                  "at least this; below it R stays as it is. 0 = always, as the poster. Measured: "
-                 "turning pays on a thin diagonal strip (0.996) and costs on the corridor (0.98) "
-                 "and wider views (0.2-0.7): docs/techniques/rtw.md."});
+                 "turning pays on a thin diagonal strip (0.99-0.997) and costs on wider views "
+                 "(0.1-0.7): docs/techniques/rtw.md."});
+    add({.key = "pca.min_spread",
+         .label = "Min spread",
+         .group = "Rotation",
+         .type = ParamType::Float,
+         .defaultValue = 0.05,
+         .minValue = 0,
+         .maxValue = 1,
+         .step = 0.01,
+         .help = "Turn only while the importance is spread over the map: the wider of the "
+                 "half-mass widths of last frame's 1D importance maps (x, y; share of the map) at "
+                 "least this; below it R stays as it is. 0 = always, as the poster. Half of the "
+                 "importance in a few % of the map is given its texels by the separable warp at "
+                 "any angle (measured on corridor, 0.006: docs/techniques/rtw.md)."});
   }
   std::string name, desc;
   if (id == "rtw-forward") {
@@ -334,6 +347,9 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx
     forwardDepth_ = {};
     momentIm_ = {};
     collapsed_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
+    spread_ = config_.rotation
+                  ? gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw)
+                  : gl::Buffer{};
     blurred_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     warp_ = gl::Buffer::create(GLsizeiptr(2 * (imRes + 1) * sizeof(float)), nullptr, rw);
     warpView_ = gl::Texture::createBufferView(GL_R32F, warp_);
@@ -391,8 +407,15 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   const glm::vec2 scale = metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f);
   publishNumber(ctx, "pca.scale.x", scale.x);
   publishNumber(ctx, "pca.scale.y", scale.y);
+  // The spread gate: the half-mass widths of the 1D maps that frame's warp was built from.
+  const std::vector<float> last = readFloats(spread_, 0, 2 * size_t(imRes_));
+  const float spreadX = rtw::halfMassWidth({last.begin(), last.begin() + imRes_});
+  const float spreadY = rtw::halfMassWidth({last.begin() + imRes_, last.end()});
+  const float spread = std::max(spreadX, spreadY);
+  publishNumber(ctx, "pca.spread", spread);
   lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")),
-                                    float(ctx.params.get("pca.min_anisotropy")));
+                                    float(ctx.params.get("pca.min_anisotropy")), spread,
+                                    float(ctx.params.get("pca.min_spread")));
   publishNumber(ctx, "pca.anisotropy", stats.anisotropy);
   publishNumber(ctx, "mean.x", stats.meanX);
   publishNumber(ctx, "mean.y", stats.meanY);
@@ -451,7 +474,6 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
     glDispatchCompute(groups(dst.x, SL_RTW_MOMENT_GROUP), groups(dst.y, SL_RTW_MOMENT_GROUP), 1);
   }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  momentFence_.place();
   momentExtentM_ = lastExtentM_;
   // The chain itself (level images) and its IM, for the moment panel (debug: blocking),
   // only what is asked for.
@@ -606,10 +628,13 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, "e_y", lastUpdate_.e_y);
     publishNumber(ctx, "rotation.held", lastUpdate_.held ? 1 : 0);
     publishNumber(ctx, "rotation.too_round", lastUpdate_.tooRound ? 1 : 0);
+    publishNumber(ctx, "rotation.too_concentrated", lastUpdate_.tooConcentrated ? 1 : 0);
     publishNumber(ctx, "rotation.deg", rotation_.angleDeg());
     publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
     publishNumber(ctx, "rotation.changes", rotation_.changes);
     publishNumber(ctx, "pca.threshold", p.get("pca.threshold"));
+    publishNumber(ctx, "pca.min_anisotropy", p.get("pca.min_anisotropy"));
+    publishNumber(ctx, "pca.min_spread", p.get("pca.min_spread"));
   }
 
   LightFit fit;
@@ -629,6 +654,14 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
   buildImportance(ctx, fit.viewProj, std::max(fit.extentM.x, fit.extentM.y) / float(imRes_));
   if (config_.rotation) buildMoments(ctx);
   buildWarpMaps(ctx);
+  if (config_.rotation) {
+    // The 1D maps of this frame for the next frame's spread gate, and the fence the next
+    // frame waits on before it reads them and the moment chain's top.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glCopyNamedBufferSubData(collapsed_.id(), spread_.id(), 0, 0,
+                             GLsizeiptr(2 * imRes_ * sizeof(float)));
+    momentFence_.place();
+  }
   {
     auto pass = ctx.timer.scope("warped shadow map");
     renderWarped(ctx, fit.viewProj, true);
@@ -713,6 +746,7 @@ MemoryStats RtwShadowMap::memory() const {
     for (glm::ivec2 s : momentSizes_) texels += s.x * s.y;
     m.add("moment chain (6 channels, all levels)", "R32F x6", texels, 1, 6, 4);
   }
+  if (spread_) m.add("last frame's 1D importance (x, y; the spread gate)", "R32F", imRes_, 1, 2, 4);
   if (uniformMap_)
     m.addDebugView("unwarped contrast map (while a panel shows it)", "DEPTH_COMPONENT32F", smRes_,
                    smRes_, 1, 4);

@@ -67,10 +67,11 @@ class RtwShadowMap : public Technique {
   gl::Texture uniformMap_;  ///< unwarped contrast map, only while a panel shows it
   gl::Framebuffer smFbo_, forwardFbo_, uniformFbo_;
   gl::Buffer collapsed_, blurred_, warp_, inverse_, momentBuffer_;
+  gl::Buffer spread_;  ///< DA-RTW: a copy of the last frame's 1D maps (the spread gate)
   gl::Texture warpView_, inverseView_;  ///< buffer textures over warp_ and inverse_
   gl::Framebuffer scatterFbo_;          ///< no attachments: the backward scatter's pass
   gl::VertexArray emptyVao_;
-  gl::Fence momentFence_;  ///< after the moment chain of the last frame (read a frame late)
+  gl::Fence momentFence_;  ///< after the last frame's moment chain and 1D maps (read a frame late)
   std::vector<int> momentOffsets_;  ///< float offset of each level
   std::vector<glm::ivec2> momentSizes_;
   int smRes_ = 0, imRes_ = 0, momentRes_ = 0;

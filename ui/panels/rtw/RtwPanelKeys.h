@@ -38,7 +38,13 @@ inline std::set<std::string> covariancePanelKeys() {
           "pca.scale.x",
           "pca.scale.y",
           "pca.anisotropy",
-          "rotation.too_round"};
+          "eigen.1",
+          "eigen.2",
+          "pca.spread",
+          "pca.min_anisotropy",
+          "pca.min_spread",
+          "rotation.too_round",
+          "rotation.too_concentrated"};
 }
 
 /// Warp functions panel: the 1D maps before and after the blur, the warp maps.

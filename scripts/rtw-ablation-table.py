@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""The tables of docs/results/rtw-ablation.md from scripts/rtw-ablation.sh's CSVs.
+
+Usage: rtw-ablation-table.py OUTDIR SCENE...   (reads OUTDIR/ablation-SCENE.csv)
+Per scene, one row per configuration: the error at 512, 1024, 2048 (a check mark where it is
+no worse than rtw-backward at the same resolution within 1.05 x + 0.005 points), and at 1024
+the light frustum's area, the collapsed importance's half-mass widths and the rotation.
+"""
+import csv
+import sys
+
+RES = ("512", "1024", "2048")
+
+
+def label(technique, params):
+    rest = [p for p in params.split(";") if p and not p.startswith("resolution=")]
+    gateoff = {"pca.metric=metres", "pca.min_anisotropy=0", "pca.min_spread=0"}
+    poster = gateoff | {"importance.stride=1", "importance.orientation=0", "pca.source=im",
+                        "pca.metric=im-units", "light.fit=rotation-invariant",
+                        "pca.threshold=0.9999"}
+    s = set(rest)
+    if technique == "rtw-backward":
+        return "rtw-backward" + (" " + " ".join(rest) if rest else "")
+    if not rest:
+        return "**da-rtw (defaults)**"
+    if {"pca.source=im", "light.fit=rotation-invariant", "importance.stride=1"} <= s:
+        return "poster (`scenes/papers/000-da-rtw.json`)"
+    if s == gateoff:
+        return "da-rtw, gate off"
+    return "gate off + " + ", ".join(f"`{p}`" for p in rest if p not in gateoff)
+
+
+def main():
+    out, scenes = sys.argv[1], sys.argv[2:]
+    for scene in scenes:
+        rows = list(csv.DictReader(open(f"{out}/ablation-{scene}.csv")))
+        configs = {}
+        path = rows[0]["camera"] if rows else ""
+        for r in rows:
+            params = r["params"].replace(" ", ";")
+            res = next((p.split("=")[1] for p in params.split(";")
+                        if p.startswith("resolution=")), "")
+            key = (r["technique"], ";".join(p for p in params.split(";")
+                                            if not p.startswith("resolution=")))
+            configs.setdefault(key, {})[res] = r
+        base = configs.get(("rtw-backward", ""), {})
+        print(f"**`{scene}`** ({path}):\n")
+        print("| configuration | 512² | 1024² | 2048² | frustum area m² | half-mass x / y | R |")
+        print("|---|---|---|---|---|---|---|")
+        for (tech, params), by in configs.items():
+            cells = []
+            for res in RES:
+                r = by.get(res)
+                if not r or not r["error_pct"]:
+                    cells.append("failed" if r else "")
+                    continue
+                e = float(r["error_pct"])
+                mark = ""
+                if tech != "rtw-backward" and res in base and base[res]["error_pct"]:
+                    b = float(base[res]["error_pct"])
+                    mark = " ✓" if e <= 1.05 * b + 0.005 else " ✗"
+                cells.append(f"{e:.3f}{mark}")
+            r = by.get("1024", {})
+            area = f"{float(r['light_area_m2']):.0f}" if r.get("light_area_m2") else ""
+            hm = (f"{float(r['halfmass_x']):.3f} / {float(r['halfmass_y']):.3f}"
+                  if r.get("halfmass_x") else "")
+            rot = f"{float(r['rotation_deg']):.1f}°" if r.get("rotation_deg") else ""
+            print(f"| {label(tech, params)} | " + " | ".join(cells) + f" | {area} | {hm} | {rot} |")
+        print(f"\n![ablation on {scene}](../images/rtw/ablation-{scene}.png)\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -374,6 +374,24 @@ int cmdList(Args& a) {
   if (format == "markdown") return cmdListMarkdown();
   std::cout << "Scenes (" << sl::builtinSceneDir().string() << "):\n";
   for (const std::string& n : sl::builtinSceneNames()) std::cout << "  " << n << "\n";
+  // The presets that ship: lessons and the papers' methods as written (render --preset FILE).
+  for (const char* folder : {"lessons", "papers"}) {
+    const std::filesystem::path dir = sl::builtinSceneDir() / folder;
+    std::cout << "\nPresets in " << dir.string() << " (render --preset FILE):\n";
+    std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+      if (e.path().extension() == ".json") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+      std::string error;
+      const std::optional<sl::Preset> p = sl::loadPreset(f, &error);
+      std::cout << "  " << f.filename().string() << " - "
+                << (p ? p->title : "cannot be read: " + error);
+      if (p && !p->cases.empty()) std::cout << " (" << p->cases.size() << " cases)";
+      std::cout << "\n";
+    }
+  }
   std::cout << "\nTechniques:\n";
   auto printParams = [](const std::vector<sl::ParamDecl>& decls) {
     for (const auto& d : decls) {

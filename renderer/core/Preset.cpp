@@ -76,20 +76,21 @@ bool isBase64(const std::string& s) {
   return pad <= 2 && s.size() % 4 == 0;
 }
 
-PresetCompare parseCompare(const JsonReader& r, const json& c) {
-  r.onlyKeys(c, "compare", {"technique", "params"});
+PresetCompare parseCompare(const JsonReader& r, const json& c, const std::string& at) {
+  r.onlyKeys(c, at, {"technique", "params"});
   PresetCompare out;
-  out.technique = r.string(c, "compare", "technique", "");
+  out.technique = r.string(c, at, "technique", "");
   const json* params = JsonReader::member(c, "params");
   if (out.technique.empty()) {
     if (params && !params->empty())
-      r.fail("compare.params", "parameters for the split view need \"compare.technique\"");
+      r.fail(jsonPath(at, "params"),
+             "parameters for the split view need \"" + jsonPath(at, "technique") + "\"");
     return out;
   }
-  const TechniqueInfo* info = findTechniqueOrFail(r, out.technique, "compare.technique");
+  const TechniqueInfo* info = findTechniqueOrFail(r, out.technique, jsonPath(at, "technique"));
   // Only the compare technique's own parameters: the shared ones are the main side's.
   ParamSet own(info->params);
-  if (params) out.params = readParams(r, *params, "compare.params", out.technique, {&own});
+  if (params) out.params = readParams(r, *params, jsonPath(at, "params"), out.technique, {&own});
   return out;
 }
 
@@ -124,47 +125,88 @@ PresetLayout parseLayout(const JsonReader& r, const json& l) {
   return out;
 }
 
-Preset parsePreset(const JsonReader& r, const json& j) {
-  r.onlyKeys(j, "",
-             {"title", "explanation", "scene", "technique", "params", "camera", "light", "compare",
-              "layout"});
-  Preset p;
-  p.title = r.string(j, "", "title", "");
-  p.explanation = r.string(j, "", "explanation", "");
-  p.scene = r.string(j, "", "scene", "");
-  p.technique = r.string(j, "", "technique", "");
-  const TechniqueInfo* info =
-      p.technique.empty() ? nullptr : findTechniqueOrFail(r, p.technique, "technique");
-  if (const json* params = JsonReader::member(j, "params")) {
+/// The fields a preset and each of its cases share, at `at` ("" for the preset itself,
+/// "cases[i]"): present ones replace what `p` holds.
+void parseBody(const JsonReader& r, const json& j, const std::string& at, Preset& p) {
+  p.title = r.string(j, at, "title", p.title);
+  p.explanation = r.string(j, at, "explanation", p.explanation);
+  const std::string scene = r.string(j, at, "scene", p.scene);
+  if (scene != p.scene) p.camera.reset(), p.light.reset();  // another scene: its own
+  p.scene = scene;
+  const bool ownTechnique = JsonReader::member(j, "technique") != nullptr;
+  const std::string before = p.technique;
+  p.technique = r.string(j, at, "technique", p.technique);
+  const TechniqueInfo* info = p.technique.empty()
+                                  ? nullptr
+                                  : findTechniqueOrFail(r, p.technique, jsonPath(at, "technique"));
+  const json* params = JsonReader::member(j, "params");
+  if (!at.empty() && ownTechnique && !params && !p.params.empty())
+    r.fail(at,
+           "a case that names its own \"technique\" gives its own \"params\" (the "
+           "preset's are for '" +
+               quoteText(before, 60) + "')");
+  if (params) {
     // With a technique, every key is its parameter (or a shared one) and every value in
     // range; without one the keys apply to the current technique and are checked there.
     std::optional<ParamSet> own, shared;
     if (info) own.emplace(info->params), shared.emplace(rendererParamDecls());
-    p.params = readParams(r, *params, "params", p.technique,
+    p.params = readParams(r, *params, jsonPath(at, "params"), p.technique,
                           {own ? &*own : nullptr, shared ? &*shared : nullptr});
   }
   if (const json* c = JsonReader::member(j, "camera")) {
-    r.onlyKeys(*c, "camera", {"position", "target", "up", "fovYDeg", "nearM", "farM"});
+    const std::string cam_at = jsonPath(at, "camera");
+    r.onlyKeys(*c, cam_at, {"position", "target", "up", "fovYDeg", "nearM", "farM"});
     const json* pos = JsonReader::member(*c, "position");
     const json* target = JsonReader::member(*c, "target");
-    if (!pos || !target) r.fail("camera", "a camera needs \"position\" and \"target\"");
+    if (!pos || !target) r.fail(cam_at, "a camera needs \"position\" and \"target\"");
     Camera cam;
-    cam.position = vec3From(r, *pos, "camera.position");
-    cam.target = vec3From(r, *target, "camera.target");
-    if (const json* up = JsonReader::member(*c, "up")) cam.up = vec3From(r, *up, "camera.up");
-    cam.fovYDeg = float(r.number(*c, "camera", "fovYDeg", cam.fovYDeg));
-    cam.nearM = float(r.number(*c, "camera", "nearM", cam.nearM));
-    cam.farM = float(r.number(*c, "camera", "farM", cam.farM));
+    cam.position = vec3From(r, *pos, jsonPath(cam_at, "position"));
+    cam.target = vec3From(r, *target, jsonPath(cam_at, "target"));
+    if (const json* up = JsonReader::member(*c, "up"))
+      cam.up = vec3From(r, *up, jsonPath(cam_at, "up"));
+    cam.fovYDeg = float(r.number(*c, cam_at, "fovYDeg", cam.fovYDeg));
+    cam.nearM = float(r.number(*c, cam_at, "nearM", cam.nearM));
+    cam.farM = float(r.number(*c, cam_at, "farM", cam.farM));
     if (auto e = cameraFieldError(cam, {"up", "nearM", "farM"}))
-      r.fail("camera." + e->first, e->second);
-    if (auto err = cam.validate()) r.fail("camera", withoutCameraPrefix(*err));
+      r.fail(jsonPath(cam_at, e->first), e->second);
+    if (auto err = cam.validate()) r.fail(cam_at, withoutCameraPrefix(*err));
     p.camera = cam;
   }
   if (const json* l = JsonReader::member(j, "light")) {
-    p.light = readLightJson(r, *l, "light", JsonKeyStyle::CamelCase, false);
+    p.light = readLightJson(r, *l, jsonPath(at, "light"), JsonKeyStyle::CamelCase, false);
   }
-  if (const json* c = JsonReader::member(j, "compare")) p.compare = parseCompare(r, *c);
+  if (const json* c = JsonReader::member(j, "compare"))
+    p.compare = parseCompare(r, *c, jsonPath(at, "compare"));
+}
+
+Preset parsePreset(const JsonReader& r, const json& j) {
+  r.onlyKeys(j, "",
+             {"title", "explanation", "scene", "technique", "params", "camera", "light", "compare",
+              "layout", "cases"});
+  Preset p;
+  parseBody(r, j, "", p);
   if (const json* l = JsonReader::member(j, "layout")) p.layout = parseLayout(r, *l);
+  if (const json* cases = JsonReader::member(j, "cases")) {
+    r.requireArray(*cases, "cases");
+    if (cases->size() < 2 || cases->size() > kMaxPresetCases)
+      r.fail("cases", "expected 2 to " + std::to_string(kMaxPresetCases) + " cases, got " +
+                          std::to_string(cases->size()));
+    for (std::size_t i = 0; i < cases->size(); ++i) {
+      const std::string at = jsonPath("cases", i);
+      const json& c = (*cases)[i];
+      r.requireObject(c, at);
+      r.onlyKeys(
+          c, at,
+          {"title", "explanation", "scene", "technique", "params", "camera", "light", "compare"});
+      for (const char* key : {"title", "explanation"})
+        if (!JsonReader::member(c, key)) r.fail(at, std::string("a case needs \"") + key + "\"");
+      Preset one = p;  // the preset's fields, the case's on top
+      one.cases.clear();
+      one.layout.reset();
+      parseBody(r, c, at, one);
+      p.cases.push_back(std::move(one));
+    }
+  }
   return p;
 }
 
@@ -180,7 +222,8 @@ std::optional<Preset> loadPreset(const std::filesystem::path& path, std::string*
   }
 }
 
-std::string presetToJson(const Preset& p) {
+namespace {
+nlohmann::json toJson(const Preset& p) {
   nlohmann::json j;
   j["title"] = p.title;
   j["explanation"] = p.explanation;
@@ -203,7 +246,14 @@ std::string presetToJson(const Preset& p) {
     j["layout"] = {{"docks", p.layout->docks}, {"state", p.layout->state}};
     if (!p.layout->large.empty()) j["layout"]["large"] = p.layout->large;
   }
-  return j.dump(2);
+  // Each case whole: read back on top of the preset, it gives the same case.
+  for (const Preset& c : p.cases) j["cases"].push_back(toJson(c));
+  return j;
+}
+}  // namespace
+
+std::string presetToJson(const Preset& p) {
+  return toJson(p).dump(2);
 }
 
 }  // namespace sl

@@ -18,6 +18,8 @@ namespace sl {
 /// Limits on a session's layout (the window has ~20 docks; Qt's saved state is ~2 KiB).
 inline constexpr std::size_t kMaxPresetLayoutDocks = 64;
 inline constexpr std::size_t kMaxPresetLayoutStateBytes = 64 * 1024;  ///< base64 text
+/// At most this many cases in one lesson ("cases").
+inline constexpr std::size_t kMaxPresetCases = 8;
 
 /// The split view's right half: its technique ("": the split view is off) and that
 /// technique's own parameter values (the shared view/shading ones are the main side's).
@@ -47,6 +49,13 @@ struct Preset {
   std::optional<Light> light;            ///< core/LightJson: {"type", ...}
   std::optional<PresetCompare> compare;  ///< "compare": {"technique", "params"} (sessions)
   std::optional<PresetLayout> layout;    ///< "layout": {"docks", "state", "large"}
+  /// A lesson told in cases ("cases": 2..kMaxPresetCases objects with "title" and
+  /// "explanation" and any of scene, technique, params, camera, light, compare): each a
+  /// complete preset, this one's fields with the case's on top ("params" replaces, it does
+  /// not merge; a case naming a technique gives its params; a case naming another scene
+  /// starts from that scene's camera and light). Empty: one case, this preset.
+  /// The command line renders the preset itself (the first case should need no overrides).
+  std::vector<Preset> cases;
 };
 
 /// Reads a preset; the error names the file and the problem.

@@ -68,6 +68,8 @@ void expectSame(const Preset& a, const Preset& b) {
   EXPECT_EQ(a.light, b.light);
   EXPECT_EQ(a.compare, b.compare);
   EXPECT_EQ(a.layout, b.layout);
+  ASSERT_EQ(a.cases.size(), b.cases.size());
+  for (std::size_t k = 0; k < a.cases.size(); ++k) expectSame(a.cases[k], b.cases[k]);
 }
 
 std::string loadError(const std::string& name, const std::string& text) {
@@ -178,6 +180,74 @@ TEST(PresetSession, BadLayoutIsRefusedNamingThePath) {
             "layout.size: unknown key 'size' (known: docks, state, large)");
   EXPECT_EQ(loadError("l8.json", R"({"layout": {"docks": ["lesson"], "large": "timing"}})"),
             "layout.large: names 'timing', which \"docks\" does not list");
+}
+
+// A lesson told in cases: each case is the preset with the case's fields on top; params
+// replace, a case in another scene starts from that scene's camera and light.
+TEST(PresetSession, CasesAreThePresetWithTheirFieldsOnTop) {
+  std::string error;
+  const std::optional<Preset> p = loadPreset(writeFile("cases.json", R"({
+    "title": "T", "explanation": "intro", "scene": "band-diagonal", "technique": "da-rtw",
+    "params": {"resolution": 512},
+    "camera": {"position": [1, 2, 3], "target": [0, 0, 0]},
+    "compare": {"technique": "rtw-backward", "params": {"resolution": 512}},
+    "cases": [
+      {"title": "wins", "explanation": "a"},
+      {"title": "does not", "explanation": "b", "scene": "diagonal",
+       "params": {"pca.min_anisotropy": 0}},
+      {"title": "same scene", "explanation": "c", "technique": "uniform",
+       "params": {"resolution": 2048}}]})"),
+                                             &error);
+  ASSERT_TRUE(p) << error;
+  ASSERT_EQ(p->cases.size(), 3u);
+  const Preset& wins = p->cases[0];
+  EXPECT_EQ(wins.title, "wins");
+  EXPECT_EQ(wins.explanation, "a");
+  EXPECT_EQ(wins.scene, "band-diagonal");
+  EXPECT_EQ(wins.params, p->params);
+  ASSERT_TRUE(wins.camera);
+  EXPECT_EQ(wins.compare, p->compare);
+  const Preset& other = p->cases[1];
+  EXPECT_EQ(other.scene, "diagonal");
+  EXPECT_FALSE(other.camera) << "another scene: its own camera";
+  EXPECT_EQ(other.params, (std::map<std::string, std::string>{{"pca.min_anisotropy", "0"}}));
+  EXPECT_EQ(other.technique, "da-rtw");
+  EXPECT_EQ(other.compare, p->compare);
+  const Preset& same = p->cases[2];
+  EXPECT_TRUE(same.camera) << "the same scene keeps the preset's camera";
+  EXPECT_EQ(same.technique, "uniform");
+  for (const Preset& c : p->cases) {
+    EXPECT_FALSE(c.layout);
+    EXPECT_TRUE(c.cases.empty());
+  }
+  // Written and read again: the same cases.
+  const std::optional<Preset> again =
+      loadPreset(writeFile("cases-again.json", presetToJson(*p)), &error);
+  ASSERT_TRUE(again) << error;
+  expectSame(*p, *again);
+}
+
+TEST(PresetSession, BadCasesAreRefusedNamingThePath) {
+  EXPECT_EQ(loadError("k1.json", R"({"cases": [{"title": "a", "explanation": "b"}]})"),
+            "cases: expected 2 to 8 cases, got 1");
+  EXPECT_EQ(loadError("k2.json", R"({"cases": [{"title": "a", "explanation": "b"},
+                                               {"title": "c"}]})"),
+            "cases[1]: a case needs \"explanation\"");
+  EXPECT_EQ(loadError("k3.json", R"({"cases": [{"title": "a", "explanation": "b"},
+                                               {"title": "c", "explanation": "d", "layout": {}}]})"),
+            "cases[1].layout: unknown key 'layout' (known: title, explanation, scene, technique, "
+            "params, camera, light, compare)");
+  EXPECT_EQ(loadError("k4.json", R"({"technique": "da-rtw", "params": {"pca.min_anisotropy": 0},
+    "cases": [{"title": "a", "explanation": "b"},
+              {"title": "c", "explanation": "d", "technique": "uniform"}]})"),
+            "cases[1]: a case that names its own \"technique\" gives its own \"params\" (the "
+            "preset's are for 'da-rtw')");
+  EXPECT_EQ(loadError("k5.json", R"({"technique": "uniform", "cases": [
+    {"title": "a", "explanation": "b"},
+    {"title": "c", "explanation": "d", "params": {"pca.threshold": 1}}]})"),
+            "cases[1].params.pca.threshold: technique 'uniform' has no parameter 'pca.threshold'");
+  EXPECT_EQ(loadError("k6.json", R"({"cases": "two"})"),
+            "cases: expected an array [...], got \"two\"");
 }
 
 }  // namespace

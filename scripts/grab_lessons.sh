@@ -2,7 +2,8 @@
 # Grabs every lesson's window: opens each scenes/lessons/*.json with `shadowlab --lesson NAME`
 # on a private 1920x1080 Xvfb (with --presenter when `shadowlab --help` lists it), lets the
 # lesson settle (a grab waits for the lesson's temporal state) and saves the window as
-# OUTDIR/<lesson>.png. docs/lecturer/lessons.md shows the grabs in docs/images/lessons/.
+# OUTDIR/<lesson>.png; a lesson told in cases also as OUTDIR/<lesson>-case<K>.png for its
+# other cases. docs/lecturer/lessons.md shows the grabs in docs/images/lessons/.
 # usage: scripts/grab_lessons.sh OUTDIR [path/to/shadowlab] [frames before the grab (3)]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,15 +25,20 @@ trap 'rm -rf "$work"; stop_xvfb' EXIT
 fail=0
 for json in "$root"/scenes/lessons/*.json; do
   name=$(basename "$json" .json)
-  rm -rf "${work:?}/$name"
-  if timeout 300 "$app" --lesson "$name" "${extra[@]}" --grab "$work/$name" \
-    --grab-after "$frames" >"$work/$name.log" 2>&1 && [[ -f "$work/$name/window.png" ]]; then
-    cp "$work/$name/window.png" "$out/$name.png"
-    echo "$out/$name.png"
-  else
-    echo "grab_lessons: $name failed:" >&2
-    tail -n 20 "$work/$name.log" >&2
-    fail=1
-  fi
+  cases=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1])).get("cases", [])))' "$json")
+  for k in $(seq 1 $((cases > 1 ? cases : 1))); do
+    shot=$name
+    [[ $k -gt 1 ]] && shot=$name-case$k
+    rm -rf "${work:?}/$shot"
+    if timeout 300 "$app" --lesson "$name" --lesson-case "$k" "${extra[@]}" --grab "$work/$shot" \
+      --grab-after "$frames" >"$work/$shot.log" 2>&1 && [[ -f "$work/$shot/window.png" ]]; then
+      cp "$work/$shot/window.png" "$out/$shot.png"
+      echo "$out/$shot.png"
+    else
+      echo "grab_lessons: $shot failed:" >&2
+      tail -n 20 "$work/$shot.log" >&2
+      fail=1
+    fi
+  done
 done
 exit $fail

@@ -70,6 +70,11 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
                      "04-diagonal-pca) or a preset file. Its scene, technique and parameters "
                      "come first; --scene, --technique and --set then override them."),
       QStringLiteral("N|NAME|FILE"));
+  const QCommandLineOption lessonCase(
+      QStringLiteral("lesson-case"),
+      QStringLiteral("With --lesson: start the lesson's case N (1-based) of a lesson told in "
+                     "cases (Lessons > Next case)."),
+      QStringLiteral("N"), QStringLiteral("1"));
   const QCommandLineOption session(
       QStringLiteral("open-session"),
       QStringLiteral("Open a session saved with File > Save session… (the same as --lesson "
@@ -83,7 +88,8 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
                               QStringLiteral("Run a GUI self-test (%1).").arg(selfTestUsage()),
                               QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
-  parser.addOptions({scene, technique, set, lesson, session, presenter, grab, grabAfter, selfTest});
+  parser.addOptions(
+      {scene, technique, set, lesson, lessonCase, session, presenter, grab, grabAfter, selfTest});
 
   ParsedLaunch out;
   if (!parser.parse(arguments)) {
@@ -123,6 +129,20 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       return out;
     }
     o.lesson = parser.value(session);
+  }
+  if (parser.isSet(lessonCase)) {
+    bool caseOk = false;
+    o.lessonCase = parser.value(lessonCase).toInt(&caseOk);
+    if (!caseOk || o.lessonCase < 1 || o.lessonCase > 8 || o.lesson.isEmpty()) {
+      out.exitCode = 2;
+      out.messageIsError = true;
+      out.message =
+          o.lesson.isEmpty()
+              ? QStringLiteral("--lesson-case: needs --lesson (the lesson it is a case of)")
+              : QStringLiteral("--lesson-case: expected a case number 1..8, got '%1'")
+                    .arg(parser.value(lessonCase));
+      return out;
+    }
   }
   o.selfTest = parser.value(selfTest).section(QLatin1Char('='), 0, 0);
   o.selfTestArgument = parser.value(selfTest).section(QLatin1Char('='), 1);

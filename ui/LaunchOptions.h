@@ -24,6 +24,7 @@ struct LaunchOptions {
   int grabAfterFrames = 5;
   QString
       lesson;  ///< non-empty: start this lesson (number, file base name or path; --open-session)
+  int lessonCase = 1;        ///< --lesson-case: the lesson's case (1-based)
   QString selfTest;          ///< hidden: run this GUI self-test and exit with its result
   QString selfTestArgument;  ///< the part after '=' in --self-test NAME=ARG
   bool presenter = false;    ///< start in presenter mode (PresenterMode.h)

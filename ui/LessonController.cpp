@@ -7,6 +7,7 @@
 
 #include <QAction>
 #include <QCoreApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QMenu>
 #include <QTimer>
@@ -49,6 +50,13 @@ void LessonController::createMenu(QMenu* menu) {
   if (lessons_.empty())
     menu->addAction(tr("(no lessons in %1)").arg(lessonDirectory()))->setEnabled(false);
   menu->addSeparator();
+  QAction* next =
+      menu->addAction(tr("Next &case of the lesson"), this, &LessonController::nextCase);
+  next->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+  next->setShortcutContext(Qt::ApplicationShortcut);
+  next->setToolTip(
+      tr("A lesson told in cases (e.g. where a method wins and where it does not): "
+         "the next one"));
   bannerAction_ = menu->addAction(tr("Show the lesson &banner over the view"));
   bannerAction_->setCheckable(true);
   bannerAction_->setChecked(true);
@@ -58,19 +66,40 @@ void LessonController::createMenu(QMenu* menu) {
   menu->setToolTipsVisible(true);
 }
 
+void LessonController::createPapersMenu(QMenu* menu) {
+  const QDir dir(QDir(lessonDirectory()).filePath(QStringLiteral("../papers")));
+  const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+  for (const QString& file : files) {
+    const QString path = QDir::cleanPath(dir.filePath(file));
+    std::string error;
+    const std::optional<sl::Preset> p = sl::loadPreset(path.toStdString(), &error);
+    if (!p) {
+      std::fprintf(stderr, "shadowlab: paper preset %s\n", error.c_str());
+      continue;
+    }
+    QAction* a = menu->addAction(
+        QString::fromStdString(p->title.empty() ? file.toStdString() : p->title), this,
+        [this, path] { startFile(path, tr("Cannot open the paper preset")); });
+    a->setToolTip(firstParagraph(p->explanation));
+  }
+  if (menu->isEmpty()) menu->addAction(tr("(no presets in %1)").arg(dir.path()))->setEnabled(false);
+  menu->setToolTipsVisible(true);
+}
+
 void LessonController::connectPanel(LessonPanel* panel) {
   connect(panel, &LessonPanel::previousRequested, this, [this] { apply(std::max(0, index_ - 1)); });
   connect(panel, &LessonPanel::nextRequested, this,
           [this] { apply(std::min(static_cast<int>(lessons_.size()) - 1, index_ + 1)); });
   connect(panel, &LessonPanel::restartRequested, this, [this] { apply(index_); });
-  connect(panel, &LessonPanel::lessonChosen, this, &LessonController::apply);
+  connect(panel, &LessonPanel::lessonChosen, this, [this](int index) { apply(index); });
+  connect(panel, &LessonPanel::caseChosen, this, [this](int k) { apply(index_, k); });
   QStringList titles;
   for (const Lesson& l : lessons_) titles << QString::fromStdString(l.preset.title);
   panel->setLessonTitles(titles);
   panel->showLesson(nullptr, -1, static_cast<int>(lessons_.size()));
 }
 
-bool LessonController::start(const QString& lesson) {
+bool LessonController::start(const QString& lesson, int caseIndex) {
   int found = findLesson(lessons_, lesson);
   if (found < 0) {  // a preset outside the lesson folder
     QString error;
@@ -82,7 +111,17 @@ bool LessonController::start(const QString& lesson) {
     lessons_.push_back(std::move(*other));
     found = static_cast<int>(lessons_.size()) - 1;
   }
-  apply(found);
+  const auto cases =
+      static_cast<int>(lessons_[static_cast<std::size_t>(found)].preset.cases.size());
+  if (caseIndex < 0 || caseIndex >= std::max(cases, 1)) {
+    w_.report(tr("lesson '%1' has %2; there is no case %3")
+                  .arg(lesson)
+                  .arg(cases ? tr("%1 cases").arg(cases) : tr("no cases"))
+                  .arg(caseIndex + 1),
+              tr("Cannot open lesson"));
+    return false;
+  }
+  apply(found, caseIndex);
   return true;
 }
 
@@ -113,12 +152,28 @@ bool LessonController::startFile(const QString& path, const QString& dialogTitle
   return true;
 }
 
-void LessonController::apply(int index) {
+const sl::Preset* LessonController::activePreset() const {
+  if (index_ < 0 || index_ >= static_cast<int>(lessons_.size())) return nullptr;
+  const sl::Preset& lesson = lessons_[static_cast<std::size_t>(index_)].preset;
+  if (lesson.cases.empty()) return &lesson;
+  return &lesson.cases[static_cast<std::size_t>(
+      std::clamp(caseIndex_, 0, static_cast<int>(lesson.cases.size()) - 1))];
+}
+
+void LessonController::nextCase() {
+  if (index_ < 0) return;
+  const auto n = static_cast<int>(lessons_[static_cast<std::size_t>(index_)].preset.cases.size());
+  if (n > 0) apply(index_, (caseIndex_ + 1) % n);
+}
+
+void LessonController::apply(int index, int caseIndex) {
   if (index < 0 || index >= static_cast<int>(lessons_.size())) return;
   MainWindow& w = w_;
   w.passes_->stop();
   index_ = index;
-  const sl::Preset& p = lessons_[static_cast<std::size_t>(index)].preset;
+  caseIndex_ = caseIndex;
+  const sl::Preset& lesson = lessons_[static_cast<std::size_t>(index)].preset;
+  const sl::Preset& p = *activePreset();  // the case's (the lesson's layout below)
   QStringList problems;
 
   const QString scene = QString::fromStdString(p.scene);
@@ -156,21 +211,21 @@ void LessonController::apply(int index) {
     w.viewport_->setLight(*p.light);
     w.syncLightControls();
   }
-  if (p.compare) {  // a session: the split view as saved ("" = off)
+  if (p.compare) {  // a session or a lesson's comparison: the split view ("" = off)
     if (auto e = w.viewport_->setSplitTechnique(p.compare->technique, p.compare->params))
       problems << QString::fromStdString(*e);
     else
       w.teaching_->setSplitTechnique(QString::fromStdString(p.compare->technique),
                                      p.compare->params);
   }
-  if (p.layout) w.sessions_->applyLayout(*p.layout, &problems);  // a session: its docks
+  if (lesson.layout) w.sessions_->applyLayout(*lesson.layout, &problems);  // a session: its docks
   w.docks_.resetHistory();
 
   w.lessonPanel_->showLesson(&lessons_[static_cast<std::size_t>(index)], index,
-                             static_cast<int>(lessons_.size()));
+                             static_cast<int>(lessons_.size()), caseIndex_);
   w.lessonPanel_->setNote(problems.join(QLatin1Char('\n')));
   for (const QString& problem : problems) w.report(tr("lesson: %1").arg(problem));
-  if (!p.layout) {
+  if (!lesson.layout) {
     w.lessonDock_->show();
     w.lessonDock_->raise();
   }
@@ -237,6 +292,9 @@ void LessonController::settle() {
     settled_ = *done;
   }
   settling_ = false;
+  // The plots start at the settled state: what the lesson is about (lesson 7's vibration of a
+  // tenth of a degree) is not squeezed under the settling turn's tens of degrees.
+  w.docks_.resetHistory();
   w.updatePublishing();
   w.lessonPanel_->setNote(
       settled_ ? note
@@ -250,12 +308,14 @@ void LessonController::settle() {
 QString LessonController::bannerTitle() const {
   if (index_ < 0 || !bannerAction_ || !bannerAction_->isChecked()) return {};
   const sl::Preset& p = lessons_[static_cast<std::size_t>(index_)].preset;
-  return tr("Lesson %1: %2").arg(index_ + 1).arg(QString::fromStdString(p.title));
+  const QString title = tr("Lesson %1: %2").arg(index_ + 1).arg(QString::fromStdString(p.title));
+  if (p.cases.empty()) return title;
+  return tr("Lesson %1 · %2").arg(index_ + 1).arg(QString::fromStdString(activePreset()->title));
 }
 
 QString LessonController::bannerText() const {
   if (index_ < 0 || !bannerAction_ || !bannerAction_->isChecked()) return {};
-  return firstParagraph(lessons_[static_cast<std::size_t>(index_)].preset.explanation);
+  return firstParagraph(activePreset()->explanation);  // a case's: what this case shows
 }
 
 }  // namespace sl::ui

@@ -24,15 +24,24 @@ class LessonController : public QObject {
 
   /// Fills the Lessons menu (one entry per lesson file, Alt+1..9, the banner toggle).
   void createMenu(QMenu* menu);
+  /// Fills the Papers menu: one entry per preset in scenes/papers (each paper's method as
+  /// written), opened like a lesson (its scene, technique and parameters; its text in the
+  /// Lesson dock).
+  void createPapersMenu(QMenu* menu);
   /// Connects the Lesson dock's buttons (after the dock exists).
   void connectPanel(LessonPanel* panel);
-  /// A lesson by number, base name or preset path; false (reported) when none.
-  bool start(const QString& lesson);
+  /// A lesson by number, base name or preset path, and its case (0-based); false (reported)
+  /// when none, or when the lesson has no such case.
+  bool start(const QString& lesson, int caseIndex = 0);
   /// A preset file (a saved session), read again even when it was opened before; false
   /// (reported under `dialogTitle`, nothing changed) when it cannot be read or its scene
   /// cannot be loaded.
   bool startFile(const QString& path, const QString& dialogTitle);
-  void apply(int index);
+  /// Starts lesson `index`; of a lesson told in cases, case `caseIndex` (0-based; the
+  /// lesson's layout stays the lesson's).
+  void apply(int index, int caseIndex = 0);
+  /// The active lesson's next case (after the last: the first); nothing without cases.
+  void nextCase();
 
   /// Renders until the lesson's temporal state has settled (DA-RTW: a frame whose rotation
   /// estimate leaves R unchanged, at most kMaxSettleFrames), from a fresh temporal state once
@@ -49,6 +58,10 @@ class LessonController : public QObject {
 
   const std::vector<Lesson>& lessons() const { return lessons_; }
   int index() const { return index_; }
+  /// The active case of a lesson told in cases (0 otherwise).
+  int caseIndex() const { return caseIndex_; }
+  /// The preset the active lesson's case applied (the lesson itself without cases).
+  const sl::Preset* activePreset() const;
   /// Banner title and text of the active lesson (empty: none, or the banner is off).
   QString bannerTitle() const;
   QString bannerText() const;
@@ -57,6 +70,7 @@ class LessonController : public QObject {
   MainWindow& w_;
   std::vector<Lesson> lessons_;
   int index_ = -1;
+  int caseIndex_ = 0;
   QAction* bannerAction_ = nullptr;
   bool settling_ = false, settleQueued_ = false, settled_ = true;
   int settleFrames_ = 0;

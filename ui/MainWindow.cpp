@@ -153,8 +153,8 @@ void MainWindow::startGrab(const QString& dir, int frames) {
   grab_->start(dir, frames);
 }
 
-bool MainWindow::startLesson(const QString& lesson) {
-  return lessons_->start(lesson);
+bool MainWindow::startLesson(const QString& lesson, int caseIndex) {
+  return lessons_->start(lesson, caseIndex);
 }
 
 void MainWindow::startSelfTest(const QString& name, const QString& argument) {

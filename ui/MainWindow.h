@@ -76,7 +76,7 @@ class MainWindow : public QMainWindow {
 
   /// Starts a lesson: its 1-based number, its file's base name ("04-diagonal-pca") or a
   /// path to a preset. False (reported) when there is no such lesson or it cannot load.
-  bool startLesson(const QString& lesson);
+  bool startLesson(const QString& lesson, int caseIndex = 0);
 
   /// Runs GUI self-test `name` (params, bad-gltf=FILE, teaching=DIR, charts=DIR) once
   /// the renderer has drawn a frame: prints "ok"/"FAIL" lines, exits 0 (pass) or 1.

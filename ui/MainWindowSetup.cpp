@@ -158,6 +158,7 @@ void MainWindow::createActions() {
 
   QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
   lessons_->createMenu(lessons);
+  lessons_->createPapersMenu(menuBar()->addMenu(tr("&Papers")));
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   QAction* shortcuts = help->addAction(tr("&Keyboard and mouse"), this, &MainWindow::showShortcuts);

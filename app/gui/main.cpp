@@ -107,7 +107,8 @@ int main(int argc, char** argv) {
 
   if (!interactive) {
     // A lesson sets scene, technique and parameters; explicit options then override them.
-    if (!options.lesson.isEmpty() && !window.startLesson(options.lesson)) return 2;
+    if (!options.lesson.isEmpty() && !window.startLesson(options.lesson, options.lessonCase - 1))
+      return 2;
     if (options.lesson.isEmpty() || !options.technique.isEmpty())
       window.setTechnique(QString::fromStdString(technique));
     if ((options.lesson.isEmpty() || !options.scene.isEmpty()) &&
@@ -133,7 +134,7 @@ int main(int argc, char** argv) {
   const QString scene = options.scene.isEmpty() ? window.initialSceneName() : options.scene;
   if (!window.loadScene(scene) && scene != sl::ui::MainWindow::defaultSceneName())
     window.loadScene(sl::ui::MainWindow::defaultSceneName());
-  if (!options.lesson.isEmpty()) window.startLesson(options.lesson);
+  if (!options.lesson.isEmpty()) window.startLesson(options.lesson, options.lessonCase - 1);
   window.show();
   if (options.presenter) window.setPresenterMode(true);
   return QApplication::exec();

@@ -84,6 +84,12 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   followBodyFont(title_, 1.2, true);
   title_->setWordWrap(true);
   layout->addWidget(title_);
+  cases_ = new QWidget;
+  cases_->setObjectName(QStringLiteral("lessonCases"));
+  auto* caseRow = new QHBoxLayout(cases_);
+  caseRow->setContentsMargins(0, 0, 0, 0);
+  cases_->hide();
+  layout->addWidget(cases_);
   text_ = new QTextBrowser;
   text_->setObjectName(QStringLiteral("lessonText"));
   text_->setOpenLinks(false);
@@ -119,8 +125,28 @@ void LessonPanel::setLessonTitles(const QStringList& titles) {
   titles_ = titles;
 }
 
-void LessonPanel::showLesson(const Lesson* lesson, int index, int count) {
+void LessonPanel::showLesson(const Lesson* lesson, int index, int count, int caseIndex) {
   note_->hide();
+  // The case buttons: made again for each lesson (a few at most).
+  for (QPushButton* b : cases_->findChildren<QPushButton*>(QString(), Qt::FindDirectChildrenOnly))
+    delete b;
+  const std::vector<sl::Preset>* cases = lesson ? &lesson->preset.cases : nullptr;
+  if (cases && !cases->empty()) {
+    auto* row = static_cast<QHBoxLayout*>(cases_->layout());
+    for (std::size_t k = 0; k < cases->size(); ++k) {
+      auto* b = new QPushButton(
+          tr("%1 · %2").arg(k + 1).arg(shownMessage(QString::fromStdString((*cases)[k].title))));
+      b->setObjectName(QStringLiteral("lessonCase%1").arg(k + 1));
+      b->setCheckable(true);
+      b->setChecked(int(k) == caseIndex);
+      b->setToolTip(tr("Case %1 of this lesson: its scene, view, technique and comparison "
+                       "(Ctrl+Shift+N: the next case)")
+                        .arg(k + 1));
+      connect(b, &QPushButton::clicked, this, [this, k] { Q_EMIT caseChosen(int(k)); });
+      row->addWidget(b);
+    }
+  }
+  cases_->setVisible(cases && !cases->empty());
   if (!lesson) {
     title_->setText(tr("Lessons"));
     QString html =
@@ -142,19 +168,33 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count) {
                       .arg(index + 1)
                       .arg(count)
                       .arg(shownMessage(QString::fromStdString(lesson->preset.title))));
-  // Explanations are plain text; blank lines separate paragraphs.
+  // Explanations are plain text; blank lines separate paragraphs. A lesson told in cases:
+  // its own text, then the case's under the case's title.
   QString html;
-  for (const QString& para :
-       QString::fromStdString(lesson->preset.explanation).split(QStringLiteral("\n\n")))
-    html += QStringLiteral("<p>%1</p>")
-                .arg(para.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>")));
+  auto paragraphs = [&html](const std::string& text) {
+    for (const QString& para : QString::fromStdString(text).split(QStringLiteral("\n\n")))
+      html += QStringLiteral("<p>%1</p>")
+                  .arg(para.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>")));
+  };
+  paragraphs(lesson->preset.explanation);
+  const bool hasCase = cases && caseIndex >= 0 && caseIndex < int(cases->size());
+  const sl::Preset& shown = hasCase ? (*cases)[std::size_t(caseIndex)] : lesson->preset;
+  if (hasCase) {
+    html += QStringLiteral("<h3>%1</h3>")
+                .arg(tr("Case %1 of %2: %3")
+                         .arg(caseIndex + 1)
+                         .arg(cases->size())
+                         .arg(QString::fromStdString(shown.title))
+                         .toHtmlEscaped());
+    paragraphs(shown.explanation);
+  }
   html += QStringLiteral("<p style='color:gray'>%1</p>")
               .arg(tr("Scene %1 · technique %2")
-                       .arg(QString::fromStdString(lesson->preset.scene),
-                            QString::fromStdString(lesson->preset.technique))
+                       .arg(QString::fromStdString(shown.scene),
+                            QString::fromStdString(shown.technique))
                        .toHtmlEscaped());
   // The passes of the lesson's technique, from their declaration: what ] steps through.
-  if (const sl::TechniqueInfo* t = sl::Renderer::findTechnique(lesson->preset.technique)) {
+  if (const sl::TechniqueInfo* t = sl::Renderer::findTechnique(shown.technique)) {
     QStringList titles;
     for (const sl::PassDecl& pass : sl::framePassDecls(*t))
       titles << QString::fromStdString(pass.title).toHtmlEscaped();

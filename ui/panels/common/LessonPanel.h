@@ -43,8 +43,9 @@ class LessonPanel : public QWidget {
  public:
   explicit LessonPanel(QWidget* parent = nullptr);
 
-  /// Shows lesson `index` of `count` (null: the list of lessons to choose from).
-  void showLesson(const Lesson* lesson, int index, int count);
+  /// Shows lesson `index` of `count` (null: the list of lessons to choose from), and of a
+  /// lesson told in cases, case `caseIndex` (its buttons above the text).
+  void showLesson(const Lesson* lesson, int index, int count, int caseIndex = 0);
   /// The list shown when no lesson is active.
   void setLessonTitles(const QStringList& titles);
   /// A line under the explanation (e.g. a parameter the lesson could not apply).
@@ -57,9 +58,11 @@ class LessonPanel : public QWidget {
   void nextRequested();
   void restartRequested();
   void lessonChosen(int index);
+  void caseChosen(int caseIndex);
 
  private:
   QLabel* title_ = nullptr;
+  QWidget* cases_ = nullptr;  ///< one checkable button per case (hidden without cases)
   QTextBrowser* text_ = nullptr;
   QLabel* note_ = nullptr;
   QPushButton* previous_ = nullptr;

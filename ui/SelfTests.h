@@ -138,7 +138,10 @@ class SelfTests : public QObject {
   void claimProjective(const QString& text);
   void claimTessellation(const QString& text);
   void claimRtw();
-  void claimPca(const QString& text);
+  void claimPca(int lessonIndex);
+  void claimPcaCase(const sl::Preset& lessonCase, int caseNumber);
+  /// The Covariance panel's readouts against the renderer's publication of the same frame.
+  void checkCovarianceReadouts(const QString& where);
   void claimVibration(const QString& text);
   // Lessons 5 and 8-12 (SelfTestsLessons.cpp): each changes one thing the lesson's text names
   // (technique, Warp eta, split scheme, tessellation, resolution) and measures the main view.

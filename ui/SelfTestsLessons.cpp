@@ -25,6 +25,7 @@
 #include "SelfTests.h"
 #include "ViewportWidget.h"
 #include "panels/common/PanelKit.h"
+#include "panels/rtw/CovariancePanel.h"
 #include "panels/rtw/RtwSettle.h"
 
 namespace sl::ui {
@@ -88,7 +89,7 @@ bool SelfTests::lessonClaims(const QString& dir) {
   else if (name.endsWith(QLatin1String("rtw-warping")))
     claimRtw();
   else if (name.endsWith(QLatin1String("diagonal-pca")))
-    claimPca(text);
+    claimPca(index);
   else if (name.endsWith(QLatin1String("vibration-threshold")))
     claimVibration(text);
   else if (name.endsWith(QLatin1String("forward-vs-backward")))
@@ -293,25 +294,107 @@ void SelfTests::claimRtw() {
             .arg(split.value_or(-1), 0, 'f', 3));
 }
 
-void SelfTests::claimPca(const QString& text) {
-  const double angle = stated(text, QStringLiteral("settles at ([\\x{2212}-]?\\d+(?:\\.\\d+)?)°"));
-  check(std::isfinite(angle), tr("the text states the settled angle"));
+void SelfTests::claimPca(int lessonIndex) {
+  const sl::Preset& lesson = w_.lessons_->lessons()[static_cast<std::size_t>(lessonIndex)].preset;
+  check(lesson.cases.size() == 2,
+        tr("the lesson is told in two cases (rotation wins; it does not): %1")
+            .arg(lesson.cases.size()));
+  for (std::size_t k = 0; k < lesson.cases.size(); ++k) {
+    // The first case is the one the lesson opens with; the next as Ctrl+Shift+N applies it.
+    if (k > 0) w_.lessons_->nextCase();
+    check(w_.lessons_->caseIndex() == int(k) && !w_.lessons_->settling(),
+          tr("case %1 applied and settled").arg(k + 1));
+    claimPcaCase(lesson.cases[k], int(k) + 1);
+  }
+}
+
+void SelfTests::checkCovarianceReadouts(const QString& where) {
   PublicationPanel* covariance = nullptr;
   for (const PublicationDocks::Dock& d : w_.docks_.docks())
     if (d.entry.id == QLatin1String("covariance")) covariance = d.panel;
-  // Once per process: tests/gui/lesson_claims.sh starts the app twice for this lesson.
-  const double got =
-      rtwsettle::angleDeg(w_.viewport_->renderer()->publication()).value_or(std::nan(""));
+  sl::Renderer* r = w_.viewport_->renderer();
+  auto drawn = [covariance] { return covariance ? covariance->drawnValues() : QJsonObject(); };
+  if (drawn().value(QStringLiteral("frame")).toDouble(-1) != double(r->publication().frameIndex))
+    w_.waitForFrames(1);  // the panel shows the frame the window drew last
+  const QStringList problems = CovariancePanel::readoutProblems(drawn(), r->publication());
+  check(covariance && problems.isEmpty(),
+        tr("%1: every Covariance readout agrees with the renderer's publication%2")
+            .arg(where, problems.isEmpty()
+                            ? QString()
+                            : QStringLiteral(": ") + problems.join(QStringLiteral("; "))));
+}
+
+void SelfTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
+  const QString text = QString::fromStdString(c.explanation);
+  std::printf("     case %d: %s\n", caseNumber, c.title.c_str());
+  const double angle = stated(text, QStringLiteral("settles at ([\\x{2212}-]?\\d+(?:\\.\\d+)?)°"));
+  check(std::isfinite(angle), tr("case %1: the text states the settled angle").arg(caseNumber));
+  sl::Renderer* r = w_.viewport_->renderer();
+  const sl::Publication& pub = r->publication();
+  const double got = rtwsettle::angleDeg(pub).value_or(std::nan(""));
   check(w_.lessons_->settled() && std::abs(got - angle) <= 2.0,
-        tr("R settles at %1° within %2 frames (stated %3° ± 2°)")
+        tr("case %1: R settles at %2° within %3 frames (stated %4° ± 2°)")
+            .arg(caseNumber)
             .arg(got, 0, 'f', 2)
             .arg(w_.lessons_->settleFrames())
             .arg(angle));
   std::printf("metric rotation_deg=%.3f\n", got);
+  PublicationPanel* covariance = nullptr;
+  for (const PublicationDocks::Dock& d : w_.docks_.docks())
+    if (d.entry.id == QLatin1String("covariance")) covariance = d.panel;
   // Complete when it opens: the panel already shows the settled state (axis along x).
   const QJsonObject drawn = covariance ? covariance->drawnValues() : QJsonObject();
   const double ex = drawn.value(QLatin1String(rtwsettle::kExKey)).toDouble(0.0);
-  check(ex > 0.999, tr("Covariance shows e_x = %1 when the lesson opens").arg(ex));
+  check(ex > 0.999, tr("case %1: Covariance shows e_x = %2").arg(caseNumber).arg(ex));
+  checkCovarianceReadouts(tr("case %1").arg(caseNumber));
+
+  // The split view at the same texels: DA-RTW on the left, rtw-backward on the right.
+  w_.waitForFrames(2);
+  const auto main = w_.viewport_->computeErrorNow();
+  w_.waitForFrames(1);
+  const auto split = w_.viewport_->splitErrorPct();
+  const auto splitParams = w_.viewport_->splitParams();
+  const QString splitRes = QString::fromStdString(
+      splitParams.count("resolution") ? splitParams.at("resolution") : std::string("default"));
+  const int mainRes = r->params().getInt("resolution");
+  check(w_.viewport_->splitTechnique() == "rtw-backward" && splitRes.toInt() == mainRes,
+        tr("case %1: the split view compares rtw-backward at the same %2 x %2 texels (right: %3)")
+            .arg(caseNumber)
+            .arg(mainRes)
+            .arg(splitRes));
+  const QString halves = tr("left (%1) %2 %, right (rtw-backward) %3 %")
+                             .arg(QString::fromStdString(w_.viewport_->techniqueId()))
+                             .arg(main.value_or(-1), 0, 'f', 3)
+                             .arg(split.value_or(-1), 0, 'f', 3);
+  const double atMost = stated(
+      text, QStringLiteral("at most (\\d+(?:\\.\\d+)?) times the right half's wrong pixels"));
+  const bool noFewer = text.contains(QStringLiteral("no fewer wrong pixels than the right half"));
+  check(std::isfinite(atMost) != noFewer,
+        tr("case %1: the text states one comparison of the halves").arg(caseNumber));
+  if (std::isfinite(atMost))
+    check(main && split && *main <= atMost * *split,
+          tr("case %1: rotation wins: %2 (at most %3 x the right)")
+              .arg(caseNumber)
+              .arg(halves)
+              .arg(atMost));
+  if (noFewer)
+    check(
+        main && split && *main >= *split,
+        tr("case %1: rotation does not win: %2 (the left no better)").arg(caseNumber).arg(halves));
+  // A case that says the defaults would not turn: the importance is under the default gate.
+  const double gate = stated(
+      text, QStringLiteral("defaults leave it unturned \\(pca.min_anisotropy (\\d\\.\\d+)\\)"));
+  if (std::isfinite(gate)) {
+    const sl::ParamDecl* decl = r->params().find("pca.min_anisotropy");
+    const auto n = pub.numbers.find("pca.anisotropy");
+    check(decl && std::abs(decl->defaultValue - gate) < 1e-9 && n != pub.numbers.end() &&
+              n->second < gate,
+          tr("case %1: the anisotropy %2 is under the default gate %3 (stated %4)")
+              .arg(caseNumber)
+              .arg(n != pub.numbers.end() ? n->second : -1.0, 0, 'f', 3)
+              .arg(decl ? decl->defaultValue : -1.0)
+              .arg(gate));
+  }
 }
 
 void SelfTests::claimVibration(const QString& text) {
@@ -356,6 +439,16 @@ void SelfTests::claimVibration(const QString& text) {
     return s.join(QStringLiteral(", "));
   };
   const std::vector<std::size_t> shimmer = changedPerFrame(8);
+  checkCovarianceReadouts(tr("threshold %1").arg(threshold));
+  // The vibration is visible in the angle plot: its history starts at the settled state, so
+  // the plot's range is the vibration's (a tenth of a degree), not the settling turn's.
+  const QJsonObject plotted = covariance ? covariance->drawnValues() : QJsonObject();
+  const double span = plotted.value(QStringLiteral("history.angle_max_deg")).toDouble() -
+                      plotted.value(QStringLiteral("history.angle_min_deg")).toDouble();
+  check(span > 1e-4 && span < 2.0,
+        tr("the angle plot spans %1° over %2 frames: the vibration fills it")
+            .arg(span, 0, 'g', 3)
+            .arg(plotted.value(QStringLiteral("history.frames")).toInt()));
   std::size_t total = 0;
   for (std::size_t c : shimmer) total += c;
   check(double(total) >= pixels, tr("threshold %1: %2 pixels change per frame, %3 in 8 frames (at "

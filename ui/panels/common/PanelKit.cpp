@@ -227,6 +227,14 @@ void ImageView::setImage(const QImage& image, int texelsW, int texelsH) {
   update();
 }
 
+void ImageView::setDisplayAspect(double aspect) {
+  const double a = std::isfinite(aspect) && aspect > 0.0 ? aspect : 0.0;
+  if (a == displayAspect_) return;
+  displayAspect_ = a;
+  resetZoom();
+  update();
+}
+
 void ImageView::clearImage(const QString& placeholder) {
   image_ = QImage();
   texelsW_ = texelsH_ = 0;
@@ -296,7 +304,7 @@ QRectF ImageView::viewArea() const {
 QRectF ImageView::imageRect() const {
   const QRectF area = viewArea();
   if (texelsW_ <= 0 || texelsH_ <= 0 || area.width() <= 0 || area.height() <= 0) return {};
-  const double aspect = double(texelsW_) / double(texelsH_);
+  const double aspect = displayAspect_ > 0.0 ? displayAspect_ : double(texelsW_) / double(texelsH_);
   double w = area.width(), h = w / aspect;
   if (h > area.height()) h = area.height(), w = h * aspect;
   w *= zoom_;

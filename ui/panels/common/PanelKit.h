@@ -83,6 +83,9 @@ class ImageView : public QWidget {
 
   /// `image` shows a texelsW x texelsH grid (the image may be larger or smaller).
   void setImage(const QImage& image, int texelsW, int texelsH);
+  /// Width / height the image is drawn at (0: its texels' aspect), e.g. the light frustum's
+  /// shape in metres for a square map over a rectangular frustum.
+  void setDisplayAspect(double aspect);
   void clearImage(const QString& placeholder);
   bool hasImage() const { return !image_.isNull(); }
   QSize texelSize() const { return {texelsW_, texelsH_}; }
@@ -128,6 +131,7 @@ class ImageView : public QWidget {
 
   QImage image_;
   int texelsW_ = 0, texelsH_ = 0;
+  double displayAspect_ = 0.0;
   QString placeholder_;
   QString caption_;
   std::function<QString(int, int)> reader_;

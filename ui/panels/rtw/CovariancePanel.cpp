@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
@@ -141,10 +142,66 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   view_ = new ImageView;
   view_->setObjectName(QStringLiteral("covarianceView"));
   middle->addWidget(view_, 3);
-  numbers_ = new QLabel;
-  numbers_->setTextFormat(Qt::RichText);
-  numbers_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-  numbers_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  // The numbers, each defined in its tooltip (the same text on its name and its value).
+  numbers_ = new QWidget;
+  numbers_->setObjectName(QStringLiteral("covarianceNumbers"));
+  auto* grid = new QGridLayout(numbers_);
+  grid->setContentsMargins(0, 0, 0, 0);
+  grid->setVerticalSpacing(1);
+  const struct {
+    const char* key;
+    const char* name;
+    const char* help;
+  } rows[] = {
+      {"lambda1", "λ1",
+       "The larger eigenvalue of the importance's covariance Σ: the variance along the principal "
+       "axis (m², or IM units² with pca.metric im-units). Computed here from the published moment "
+       "sums of the last frame's importance, the ones that chose this frame's turn."},
+      {"lambda2", "λ2", "The smaller eigenvalue of Σ: the variance across the principal axis."},
+      {"anisotropy", "anisotropy",
+       "(λ1 − λ2) / (λ1 + λ2), as the renderer's gate read it: 0 round, 1 a line. Below "
+       "pca.min_anisotropy the importance is too round to turn for."},
+      {"spread", "spread",
+       "The wider of the half-mass widths of the last frame's two 1D importance maps (share of "
+       "the map: the shortest run of texels holding half the importance). Below pca.min_spread "
+       "the importance is too concentrated to turn for: the separable warp already gives it "
+       "its texels."},
+      {"e_x", "e_x",
+       "x component of the unit principal axis e the renderer used this frame, in the last "
+       "frame's rotated light frame. e_x > threshold: the axis already lies along the map's x "
+       "axis and R is held."},
+      {"e_y", "e_y", "y component of e (its sign gives the turn's direction)."},
+      {"axis_panel", "axis (panel)",
+       "atan2(e_y, e_x) of the axis this panel computed from the published moment sums: the "
+       "orange line. Equal to the renderer's unless the sums and the renderer disagree."},
+      {"axis_renderer", "axis (renderer)",
+       "atan2(e_y, e_x) of the axis the renderer used this frame: the turn it makes when it turns "
+       "(R' = [[e_x, −e_y], [e_y, e_x]])."},
+      {"turn", "turn this frame",
+       "By how much R turned this frame: the renderer's axis angle when it turned, 0 when it was "
+       "held, not turned by a gate, or there was no axis."},
+      {"r_total", "R turned",
+       "The angle of R, the rotation of the light's image plane from the unrotated light frame, "
+       "after this frame's turn: R_k = R' R_k−1, summed over every turn since the last reset "
+       "(Ctrl+T)."},
+      {"changes", "R changed", "How many frames turned R since the last reset."},
+      {"area", "frustum area",
+       "The area of the light frustum this frame's map covers, in m² (light.fit: tight re-fits it "
+       "in the rotated frame, so it changes with the angle; rotation-invariant keeps it)."},
+  };
+  int line = 0;
+  for (const auto& r : rows) {
+    Row row{new QLabel(tr(r.name)), new QLabel};
+    row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    row.value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    row.value->setObjectName(QStringLiteral("covariance_%1").arg(QLatin1String(r.key)));
+    for (QLabel* l : {row.name, row.value}) l->setToolTip(tr(r.help));
+    grid->addWidget(row.name, line, 0);
+    grid->addWidget(row.value, line, 1);
+    ++line;
+    rows_[QLatin1String(r.key)] = row;
+  }
+  grid->setRowStretch(line, 1);
   middle->addWidget(numbers_, 2);
   outer->addLayout(middle, 3);
   auto* plots = new QHBoxLayout;
@@ -218,7 +275,8 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   const double publishedDeg = std::atan2(pubEy, pubEx) * 180.0 / kPi;
   const bool held = numberOr(n, "rotation.held", 0.0) != 0.0;
   const bool pcaValid = n.count("pca.valid") ? n.at("pca.valid") != 0.0 : s.valid;
-  drawn_ = {{QStringLiteral("source"), source},
+  drawn_ = {{QStringLiteral("frame"), double(pub.frameIndex)},
+            {QStringLiteral("source"), source},
             {QStringLiteral("valid"), s.valid},
             {QStringLiteral("axis_deg"), axisDeg},
             {QStringLiteral("axis_image_deg"), imageDeg},
@@ -288,60 +346,88 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
     p.setBrush(QColor(255, 160, 40));
     p.drawEllipse(toWidget(mx, my), 3.5, 3.5);
   });
-  view_->setCaption(tr("1σ, 2σ and the principal axis (orange)"));
+  // In metres the map is drawn at the frustum's shape, so the ellipse and the axis look as
+  // they lie in the world (and as λ1, λ2 and the angle say); in IM units as the square IM.
+  view_->setDisplayAspect(metres ? sx / std::max(sy, 1e-12) : 0.0);
+  view_->setCaption(
+      metres ? tr("1σ, 2σ, axis; %1 × %2 m").arg(2.0 * sx, 0, 'f', 1).arg(2.0 * sy, 0, 'f', 1)
+             : tr("1σ, 2σ, axis; IM units"));
   view_->setToolTip(
       tr("Computed from the %1: the moments' mean and covariance (Tokuyoshi et al. 2014)")
           .arg(source));
 
-  // State, gauge and numbers.
-  QString stateText;
+  // State, gauge and numbers. The state names what the renderer did with R this frame and,
+  // when it left R as it was, which rule stopped it.
+  QString stateText, stateKey;
   QColor stateColor;
-  if (!pcaValid) {
-    stateText = tr("NO AXIS — isotropic or empty IM: R unchanged");
-    stateColor = QColor(128, 131, 136);
-  } else if (numberOr(n, "rotation.too_round", 0.0) != 0.0) {
-    stateText = tr("NOT TURNED — anisotropy %1 below pca.min_anisotropy: R unchanged")
-                    .arg(numberOr(n, "pca.anisotropy", 0.0), 0, 'f', 3);
-    stateColor = QColor(110, 110, 150);
-  } else if (held) {
-    stateText = tr("HELD — e_x > threshold: R_k = R_k−1");
-    stateColor = QColor(60, 150, 80);
-  } else if (n.count("rotation.held")) {
-    stateText = tr("ROTATED by %1°").arg(numberOr(n, "rotation.step_deg", 0.0), 0, 'f', 3);
-    stateColor = QColor(200, 110, 30);
-  } else {
+  const double stepDeg = numberOr(n, "rotation.step_deg", 0.0);
+  if (!n.count("rotation.held")) {
+    stateKey = QStringLiteral("none");
     stateText = tr("no rotation published (not DA-RTW)");
     stateColor = QColor(90, 94, 100);
+  } else if (!pcaValid) {
+    stateKey = QStringLiteral("no_axis");
+    stateText = tr("NO AXIS — isotropic or empty importance: R kept");
+    stateColor = QColor(128, 131, 136);
+  } else if (numberOr(n, "rotation.too_round", 0.0) != 0.0) {
+    stateKey = QStringLiteral("too_round");
+    stateText = tr("NOT TURNED — too round: anisotropy %1 < %2")
+                    .arg(numberOr(n, "pca.anisotropy", 0.0), 0, 'f', 3)
+                    .arg(numberOr(n, "pca.min_anisotropy", 0.0), 0, 'f', 2);
+    stateColor = QColor(110, 110, 150);
+  } else if (numberOr(n, "rotation.too_concentrated", 0.0) != 0.0) {
+    stateKey = QStringLiteral("too_concentrated");
+    stateText = tr("NOT TURNED — too concentrated: spread %1 < %2")
+                    .arg(numberOr(n, "pca.spread", 0.0), 0, 'f', 3)
+                    .arg(numberOr(n, "pca.min_spread", 0.0), 0, 'f', 2);
+    stateColor = QColor(110, 110, 150);
+  } else if (held) {
+    stateKey = QStringLiteral("held");
+    stateText = tr("HELD — e_x > threshold: R_k = R_k−1");
+    stateColor = QColor(60, 150, 80);
+  } else if (stepDeg != 0.0) {
+    stateKey = QStringLiteral("turned");
+    stateText = tr("TURNED by %1° this frame").arg(stepDeg, 0, 'f', 3);
+    stateColor = QColor(200, 110, 30);
+  } else {
+    stateKey = QStringLiteral("unchanged");
+    stateText = tr("UNCHANGED — the axis is exactly x (e_y = 0)");
+    stateColor = QColor(90, 94, 100);
   }
+  drawn_[QStringLiteral("state")] = stateKey;
+  drawn_[QStringLiteral("step_deg")] = stepDeg;
+  drawn_[QStringLiteral("published_axis_deg")] = havePublished ? publishedDeg : axisDeg;
   state_->setText(stateText);
   state_->setStyleSheet(
       QStringLiteral("background:%1;color:white;border-radius:4px;").arg(stateColor.name()));
   const double ex = havePublished ? pubEx : s.ex;
   gauge_->set(ex, threshold_, pcaValid);
 
-  auto row = [](const QString& name, const QString& value) {
-    return QStringLiteral("<tr><td>%1&nbsp;</td><td align='right'>%2</td></tr>").arg(name, value);
-  };
-  QString html = QStringLiteral("<table cellspacing='0' cellpadding='1'>");
   const QString unit2 = metres ? QStringLiteral(" m²") : QStringLiteral(" (IM units)²");
-  html += row(tr("λ1"), formatValue(s.lambda1) + unit2);
-  html += row(tr("λ2"), formatValue(s.lambda2) + unit2);
-  html += row(tr("anisotropy"), QString::number(s.anisotropy, 'f', 3));
-  html += row(tr("e_x"), QString::number(ex, 'f', 7));
-  html += row(tr("e_y"), QString::number(havePublished ? pubEy : s.ey, 'f', 7));
-  html += row(tr("axis (panel)"), QStringLiteral("%1°").arg(axisDeg, 0, 'f', 3));
-  if (havePublished)
-    html += row(tr("axis (renderer)"), QStringLiteral("%1°").arg(publishedDeg, 0, 'f', 3));
-  if (n.count("rotation.deg"))
-    html +=
-        row(tr("R turned"), QStringLiteral("%1°").arg(numberOr(n, "rotation.deg", 0.0), 0, 'f', 2));
-  if (n.count("rotation.changes"))
-    html += row(tr("R changed"), tr("%1×").arg(numberOr(n, "rotation.changes", 0.0)));
-  if (n.count("light.area"))
-    html += row(tr("frustum area"),
-                formatValue(numberOr(n, "light.area", 0.0)) + QStringLiteral(" m²"));
-  html += QStringLiteral("</table>");
-  numbers_->setText(html);
+  const double anisotropy = numberOr(n, "pca.anisotropy", s.anisotropy);
+  setRow(QStringLiteral("lambda1"), formatValue(s.lambda1) + unit2);
+  setRow(QStringLiteral("lambda2"), formatValue(s.lambda2) + unit2);
+  setRow(QStringLiteral("anisotropy"), QString::number(anisotropy, 'f', 3));
+  setRow(QStringLiteral("spread"), n.count("pca.spread")
+                                       ? QString::number(numberOr(n, "pca.spread", 0.0), 'f', 3)
+                                       : QString());
+  setRow(QStringLiteral("e_x"), QString::number(ex, 'f', 7));
+  setRow(QStringLiteral("e_y"), QString::number(havePublished ? pubEy : s.ey, 'f', 7));
+  setRow(QStringLiteral("axis_panel"), QStringLiteral("%1°").arg(axisDeg, 0, 'f', 3));
+  setRow(QStringLiteral("axis_renderer"),
+         havePublished ? QStringLiteral("%1°").arg(publishedDeg, 0, 'f', 3) : QString());
+  setRow(QStringLiteral("turn"),
+         n.count("rotation.step_deg") ? QStringLiteral("%1°").arg(stepDeg, 0, 'f', 3) : QString());
+  setRow(QStringLiteral("r_total"),
+         n.count("rotation.deg")
+             ? QStringLiteral("%1°").arg(numberOr(n, "rotation.deg", 0.0), 0, 'f', 3)
+             : QString());
+  setRow(QStringLiteral("changes"), n.count("rotation.changes")
+                                        ? tr("%1×").arg(numberOr(n, "rotation.changes", 0.0))
+                                        : QString());
+  setRow(QStringLiteral("area"),
+         n.count("light.area") ? formatValue(numberOr(n, "light.area", 0.0)) + QStringLiteral(" m²")
+                               : QString());
 
   // History.
   // A frame shown again (e.g. while paused) replaces its sample; an older one (a new
@@ -350,7 +436,21 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   if (!history_.empty() && pub.frameIndex == history_.back().frame) history_.pop_back();
   history_.push_back({pub.frameIndex, numberOr(n, "rotation.deg", axisDeg), ex, held});
   while (history_.size() > kHistoryFrames) history_.pop_front();
+  double lo = history_.front().angleDeg, hi = lo;
+  for (const Sample& h : history_) lo = std::min(lo, h.angleDeg), hi = std::max(hi, h.angleDeg);
+  drawn_[QStringLiteral("history.frames")] = int(history_.size());
+  drawn_[QStringLiteral("history.angle_min_deg")] = lo;
+  drawn_[QStringLiteral("history.angle_max_deg")] = hi;
   updateHistoryPlots();
+}
+
+void CovariancePanel::setRow(const QString& key, const QString& value) {
+  const auto it = rows_.find(key);
+  if (it == rows_.end()) return;
+  it->second.value->setText(value);
+  it->second.name->setVisible(!value.isEmpty());
+  it->second.value->setVisible(!value.isEmpty());
+  drawn_[QStringLiteral("shown.") + key] = value;
 }
 
 void CovariancePanel::updateHistoryPlots() {
@@ -371,6 +471,50 @@ void CovariancePanel::highlightPass(const QString& passId) {
   const bool on = passId == QLatin1String("rotation estimate");
   view_->setHighlighted(on);
   exPlot_->setHighlighted(on);
+}
+
+QStringList CovariancePanel::readoutProblems(const QJsonObject& drawn, const sl::Publication& pub) {
+  QStringList out;
+  const auto& n = pub.numbers;
+  auto num = [&n](const char* key) { return numberOr(n, key, std::nan("")); };
+  auto shown = [&drawn](const char* key) {
+    return drawn.value(QStringLiteral("shown.") + QLatin1String(key)).toString();
+  };
+  auto expect = [&out](bool ok, const QString& what) {
+    if (!ok) out << what;
+  };
+  const double frame = drawn.value(QStringLiteral("frame")).toDouble(-1);
+  expect(frame == double(pub.frameIndex),
+         QStringLiteral("shows frame %1, published %2").arg(frame).arg(pub.frameIndex));
+  const QString rTotal = QStringLiteral("%1°").arg(num("rotation.deg"), 0, 'f', 3);
+  expect(shown("r_total") == rTotal,
+         QStringLiteral("R turned %1, published %2").arg(shown("r_total"), rTotal));
+  const QString turn = QStringLiteral("%1°").arg(num("rotation.step_deg"), 0, 'f', 3);
+  expect(shown("turn") == turn,
+         QStringLiteral("turn this frame %1, published %2").arg(shown("turn"), turn));
+  const QString ex = QString::number(num("e_x"), 'f', 7);
+  expect(shown("e_x") == ex, QStringLiteral("e_x %1, published %2").arg(shown("e_x"), ex));
+  const double axisDiff =
+      drawn.value(QStringLiteral("axis_minus_published_deg")).toDouble(std::nan(""));
+  expect(std::abs(axisDiff) < 0.05,
+         QStringLiteral("the axis drawn is %1° from the renderer's").arg(axisDiff));
+  const double eig = drawn.value(QStringLiteral("eigen.1")).toDouble(std::nan(""));
+  expect(std::abs(eig - num("eigen.1")) <= 1e-3 * std::abs(eig),
+         QStringLiteral("λ1 %1, published %2").arg(eig).arg(num("eigen.1")));
+  // The state names what the renderer did: its flags, and the turn it made.
+  const QString state = drawn.value(QStringLiteral("state")).toString();
+  const QString expected = num("pca.valid") == 0            ? QStringLiteral("no_axis")
+                           : num("rotation.too_round") != 0 ? QStringLiteral("too_round")
+                           : num("rotation.too_concentrated") != 0
+                               ? QStringLiteral("too_concentrated")
+                           : num("rotation.held") != 0     ? QStringLiteral("held")
+                           : num("rotation.step_deg") != 0 ? QStringLiteral("turned")
+                                                           : QStringLiteral("unchanged");
+  expect(state == expected, QStringLiteral("state %1, the renderer's %2").arg(state, expected));
+  const double axis = drawn.value(QStringLiteral("published_axis_deg")).toDouble();
+  expect(state != QLatin1String("turned") || std::abs(num("rotation.step_deg") - axis) < 1e-3,
+         QStringLiteral("turned %1° along an axis at %2°").arg(num("rotation.step_deg")).arg(axis));
+  return out;
 }
 
 QJsonObject CovariancePanel::drawnValues() const {

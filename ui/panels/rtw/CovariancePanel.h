@@ -5,6 +5,10 @@
 #pragma once
 
 #include <deque>
+#include <map>
+
+#include <QString>
+#include <QStringList>
 
 #include "panels/common/PanelKit.h"
 #include "panels/rtw/RtwPanelKeys.h"
@@ -29,14 +33,27 @@ class CovariancePanel : public PublicationPanel {
   /// same line's angle in the IM's texel grid, eigenvalues, "source".
   QJsonObject drawnValues() const override;
   void resetHistory() override;
+  /// What in `drawn` (drawnValues() of a frame) disagrees with the renderer's publication of
+  /// that frame: the frame, R turned, the turn, e_x as shown, the axis drawn, λ1, and the state
+  /// against the renderer's flags. Empty: every readout agrees.
+  static QStringList readoutProblems(const QJsonObject& drawn, const sl::Publication& pub);
 
   static constexpr std::size_t kHistoryFrames = 240;
 
  private:
   void updateHistoryPlots();
 
+  /// One row of the numbers beside the image: its name and value labels (the tooltip of
+  /// both defines the number), hidden while the frame does not publish it.
+  struct Row {
+    QLabel* name = nullptr;
+    QLabel* value = nullptr;
+  };
+  void setRow(const QString& key, const QString& value);
+
   ImageView* view_ = nullptr;
-  QLabel* numbers_ = nullptr;
+  QWidget* numbers_ = nullptr;
+  std::map<QString, Row> rows_;
   QLabel* state_ = nullptr;
   ThresholdGauge* gauge_ = nullptr;
   PlotWidget* anglePlot_ = nullptr;

@@ -3,9 +3,9 @@
 // mirrors line by line in float): one invocation per entry, sampling the pixel at the centre
 // of the entry's block. Linear eye depth is read from the eye-space depth buffer (step 1,
 // virtual-tiled/eye_depth.comp); the pixel's footprint is the parallelogram P ± a ± b built
-// from the smaller depth step towards its neighbours, each corner an eye-space position by
-// eq. 1 (virtual-tiled/eye_depth.glsl: eyeDepthAt, eyePosition), projected into the virtual
-// map's uv.
+// from the signed depth step towards the neighbour nearer in depth, each corner an eye-space
+// position by eq. 1 (virtual-tiled/eye_depth.glsl: eyeDepthAt, eyePosition), projected into
+// the virtual map's uv.
 #include "common/shared_constants.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = SL_IMAGE_FVSM_SMTMM) writeonly uniform image2D o_smtmm;
@@ -21,18 +21,22 @@ vec2 toSmUv(vec3 e) {
   return c.xy / c.w;
 }
 
-// The smaller |dz| towards the two neighbours along `step`; 0 when neither has a surface.
-float smallerDepthStep(ivec2 p, ivec2 step, float z) {
-  float best = -1.0;
+// sl::fvsm signedDepthStep: the depth step along +step towards whichever neighbour is nearer
+// in depth (zn - z to the next pixel, z - zn from the previous: negative where the depth
+// falls); 0 when neither has a surface; a tie keeps the previous pixel's.
+float signedDepthStep(ivec2 p, ivec2 step, float z) {
+  bool found = false;
+  float best = 0.0;
   for (int s = -1; s <= 1; s += 2) {
     ivec2 q = p + s * step;
     if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_frameSize))) continue;
     float zn = eyeDepthAt(q);
     if (zn <= 0.0) continue;
-    float d = abs(zn - z);
-    if (best < 0.0 || d < best) best = d;
+    float d = float(s) * (zn - z);
+    if (!found || abs(d) < abs(best)) best = d;
+    found = true;
   }
-  return best < 0.0 ? 0.0 : best;
+  return best;
 }
 
 // sl::fvsm::quantiseNeedLog2.
@@ -60,8 +64,8 @@ void main() {
     imageStore(o_smtmm, entry, empty);
     return;
   }
-  float dzX = smallerDepthStep(pixel, ivec2(1, 0), z);
-  float dzY = smallerDepthStep(pixel, ivec2(0, 1), z);
+  float dzX = signedDepthStep(pixel, ivec2(1, 0), z);  // signed: the footprint tilts with
+  float dzY = signedDepthStep(pixel, ivec2(0, 1), z);  // the receiver
   vec3 a = 0.5 * (eyePosition(centre + vec2(0.5, 0.0), z + 0.5 * dzX) -
                   eyePosition(centre - vec2(0.5, 0.0), z - 0.5 * dzX));
   vec3 b = 0.5 * (eyePosition(centre + vec2(0.0, 0.5), z + 0.5 * dzY) -

@@ -4,6 +4,7 @@
 // all exact, on grids small enough to work out by hand (the numbers are in the comments).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -122,6 +123,131 @@ TEST(FvsmSmtmm, DepthSlopeSeenFromTheSide) {
   ASSERT_TRUE(e.covered);
   EXPECT_EQ(e.smUv, glm::dvec2(7.0 / 64.0, 0.5 - 0.125 * 7.0 / 64.0));
   EXPECT_EQ(e.needLog2, glm::ivec2(7, 7));
+}
+
+// A plane receiver seen by the 8 x 8 frame: the eye depth of every pixel centre (the ray
+// d (ndc tanHalfFov, −1) meets the plane n · (e − e0) = 0), and the exact footprint of pixel
+// `pixel`: its four corners' rays meeting the plane.
+struct PlaneReceiver {
+  glm::dvec3 normal, point;
+  double depthAt(const EyeDepthView& v, glm::dvec2 pixel) const {
+    const glm::dvec3 dir = eyePosition(v, pixel, 1.0);
+    return glm::dot(normal, point) / glm::dot(normal, dir);
+  }
+  std::vector<float> depthBuffer(const EyeDepthView& v) const {
+    std::vector<float> d(std::size_t(v.width) * std::size_t(v.height));
+    for (int y = 0; y < v.height; ++y)
+      for (int x = 0; x < v.width; ++x)
+        d[std::size_t(y) * std::size_t(v.width) + std::size_t(x)] =
+            float(depthAt(v, glm::dvec2(x, y) + 0.5));
+    return d;
+  }
+  /// The corners c₋₋, c₋₊, c₊₋, c₊₊ (x first) of the pixel's footprint on the plane.
+  std::array<glm::dvec3, 4> footprint(const EyeDepthView& v, glm::ivec2 pixel) const {
+    std::array<glm::dvec3, 4> c;
+    for (int i = 0; i < 4; ++i) {
+      const glm::dvec2 corner = glm::dvec2(pixel) + glm::dvec2(i / 2, i % 2);
+      c[std::size_t(i)] = eyePosition(v, corner, depthAt(v, corner));
+    }
+    return c;
+  }
+};
+
+/// A light straight above the plane (looking along −normal): SM u along the plane's x
+/// direction, v across it, centred on `centre` and scaled per axis so that the exact
+/// footprint's half extent (`measure`) is 2^−7.5 uv along both axes: an estimate within a
+/// factor √2 of it needs 2^8 texels per axis of the whole map, one off by more does not.
+glm::dmat4 lightAbove(const PlaneReceiver& plane, const std::array<glm::dvec3, 4>& exact,
+                      glm::dvec3 centre, FootprintMeasure measure) {
+  const glm::dvec3 n = glm::normalize(plane.normal);
+  const glm::dvec3 u = glm::normalize(glm::dvec3(1, 0, 0) - n * n.x), v = glm::cross(n, u);
+  glm::dvec2 sm[4];
+  for (int i = 0; i < 4; ++i)
+    sm[i] = {glm::dot(u, exact[std::size_t(i)]), glm::dot(v, exact[std::size_t(i)])};
+  const glm::dvec2 a = 0.25 * (sm[2] + sm[3] - sm[0] - sm[1]),
+                   b = 0.25 * (sm[1] + sm[3] - sm[0] - sm[2]);
+  glm::dvec2 half = footprintHalfExtent(a, b, measure);
+  if (measure == FootprintMeasure::Box) {
+    const glm::dvec2 lo = glm::min(glm::min(sm[0], sm[1]), glm::min(sm[2], sm[3]));
+    const glm::dvec2 hi = glm::max(glm::max(sm[0], sm[1]), glm::max(sm[2], sm[3]));
+    half = 0.5 * (hi - lo);
+  }
+  const glm::dvec2 scale = std::exp2(-7.5) / half;
+  glm::dmat4 m(0.0);
+  for (int k = 0; k < 3; ++k) {
+    m[k][0] = scale.x * u[k];
+    m[k][1] = scale.y * v[k];
+  }
+  m[3][0] = 0.5 - scale.x * glm::dot(u, centre);
+  m[3][1] = 0.5 - scale.y * glm::dot(v, centre);
+  m[3][3] = 1.0;
+  return m;
+}
+
+// The SMTMM builds the pixel's footprint from the smaller depth step towards its neighbours
+// (§4.3) with its sign: a receiver whose depth falls along +x is sheared the other way from
+// one whose depth rises. Three planes through (0, 0, −8 m) tilted by atan(1/2) (falling
+// along +x, rising along +x, falling along the diagonal x + y), each seen from straight
+// above by the light, scaled so that the exact footprint of pixel (3, 3) needs 8 texels per
+// axis with a margin of a factor √2 either way: the entry asks for 8 with both measures.
+// Measured before the sign was kept: the falling planes' footprints came out about half as
+// long along their slope (need 9).
+TEST(FvsmSmtmm, TheDepthSlopesSignShearsTheFootprint) {
+  const struct {
+    const char* name;
+    glm::dvec3 normal;
+  } planes[] = {{"falling along +x", {-0.5, 0.0, 1.0}},
+                {"rising along +x", {0.5, 0.0, 1.0}},
+                {"falling along x + y", {-0.5, -0.5, 1.0}}};
+  for (const auto& p : planes) {
+    for (const FootprintMeasure measure : {FootprintMeasure::Box, FootprintMeasure::Chord}) {
+      SCOPED_TRACE(std::string(p.name) + ", " + footprintMeasureName(measure));
+      const PlaneReceiver plane{p.normal, {0.0, 0.0, -8.0}};
+      std::vector<float> d;
+      EyeDepthView view = frame8(d);
+      d = plane.depthBuffer(view);
+      view.eyeDepthM = d;
+      const glm::ivec2 pixel(3, 3);
+      const glm::dvec3 centre = eyePosition(view, glm::dvec2(pixel) + 0.5, view.depthAt(3, 3));
+      const glm::dmat4 light = lightAbove(plane, plane.footprint(view, pixel), centre, measure);
+      const SmtmmEntry e = smtmmEntry(view, pixel, light, measure);
+      ASSERT_TRUE(e.covered);
+      EXPECT_EQ(e.needLog2, glm::ivec2(8, 8));
+    }
+  }
+}
+
+// Mirroring the frame and the light in x turns a depth falling along +x into one rising
+// along +x and changes no need: the entry of pixel (3, 3) on the falling plane equals that
+// of pixel (4, 3) on its mirror image (the same rays with x negated), for both measures.
+TEST(FvsmSmtmm, MirroringTheFrameChangesNoNeed) {
+  const PlaneReceiver falling{{-0.5, 0.0, 1.0}, {0.0, 0.0, -8.0}};
+  const PlaneReceiver rising{{0.5, 0.0, 1.0}, {0.0, 0.0, -8.0}};
+  std::vector<float> none;
+  EyeDepthView view = frame8(none);
+  const std::vector<float> dFalling = falling.depthBuffer(view), dRising = rising.depthBuffer(view);
+  // A light looking down the plane's slope at 45°: u = (x_e − z_e) / 16 + 1/2, v = y_e / 16
+  // + 1/2; its mirror image negates x_e.
+  glm::dmat4 light(0.0), mirrored(0.0);
+  light[0][0] = 1.0 / 16.0;
+  light[2][0] = -1.0 / 16.0;
+  light[1][1] = 1.0 / 16.0;
+  light[3][0] = 0.5 - 8.0 / 16.0;
+  light[3][1] = 0.5;
+  light[3][3] = 1.0;
+  mirrored = light;
+  mirrored[0][0] = -light[0][0];
+  for (const FootprintMeasure measure : {FootprintMeasure::Box, FootprintMeasure::Chord}) {
+    SCOPED_TRACE(footprintMeasureName(measure));
+    view.eyeDepthM = dFalling;
+    const SmtmmEntry a = smtmmEntry(view, {3, 3}, light, measure);
+    view.eyeDepthM = dRising;
+    const SmtmmEntry b = smtmmEntry(view, {4, 3}, mirrored, measure);
+    ASSERT_TRUE(a.covered && b.covered);
+    EXPECT_NEAR(a.smUv.x, b.smUv.x, 1e-12);
+    EXPECT_NEAR(a.smUv.y, b.smUv.y, 1e-12);
+    EXPECT_EQ(a.needLog2, b.needLog2);
+  }
 }
 
 TEST(FvsmSmtmm, FootprintBoxAndChordAlongAnAxisAreEqual) {

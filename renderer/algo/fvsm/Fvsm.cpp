@@ -24,19 +24,23 @@ glm::dvec2 projectToSmUv(const glm::dmat4& eyeToSmUv, const glm::dvec3& eye) {
   return glm::dvec2(c) / c.w;
 }
 
-/// The smaller |Δz| towards the two neighbours along one screen axis; 0 when neither has
-/// a surface.
-double smallerDepthStep(const EyeDepthView& view, glm::ivec2 pixel, glm::ivec2 step, double z) {
-  double best = -1.0;
+/// The depth step along +`step` (m per pixel) towards whichever neighbour is nearer in
+/// depth: zn − z towards the next pixel, z − zn from the previous one, so that a depth
+/// falling along +step is negative; 0 when neither neighbour has a surface. On a tie the
+/// previous pixel's step is kept.
+double signedDepthStep(const EyeDepthView& view, glm::ivec2 pixel, glm::ivec2 step, double z) {
+  bool found = false;
+  double best = 0.0;
   for (int s : {-1, 1}) {
     const glm::ivec2 q = pixel + s * step;
     if (q.x < 0 || q.y < 0 || q.x >= view.width || q.y >= view.height) continue;
     const double zn = view.depthAt(q.x, q.y);
     if (zn <= 0.0) continue;
-    const double d = std::abs(zn - z);
-    if (best < 0.0 || d < best) best = d;
+    const double d = double(s) * (zn - z);
+    if (!found || std::abs(d) < std::abs(best)) best = d;
+    found = true;
   }
-  return best < 0.0 ? 0.0 : best;
+  return best;
 }
 
 }  // namespace
@@ -80,8 +84,9 @@ SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dma
   const glm::dvec2 uv = projectToSmUv(eyeToSmUv, p);
   if (uv.x < 0.0 || uv.y < 0.0 || uv.x > 1.0 || uv.y > 1.0) return e;
 
-  const double dzX = smallerDepthStep(view, pixel, {1, 0}, z);
-  const double dzY = smallerDepthStep(view, pixel, {0, 1}, z);
+  // Signed: the footprint tilts with the receiver, towards the camera where it falls.
+  const double dzX = signedDepthStep(view, pixel, {1, 0}, z);
+  const double dzY = signedDepthStep(view, pixel, {0, 1}, z);
   const glm::dvec3 a = 0.5 * (eyePosition(view, centre + glm::dvec2(0.5, 0.0), z + 0.5 * dzX) -
                               eyePosition(view, centre - glm::dvec2(0.5, 0.0), z - 0.5 * dzX));
   const glm::dvec3 b = 0.5 * (eyePosition(view, centre + glm::dvec2(0.0, 0.5), z + 0.5 * dzY) -

@@ -82,8 +82,10 @@ const char* footprintMeasureName(FootprintMeasure measure);
 glm::dvec2 footprintHalfExtent(glm::dvec2 a, glm::dvec2 b, FootprintMeasure measure);
 
 /// The entry of the pixel whose centre is at `pixel` (integer coordinates) — §4.3: the
-/// smaller |Δz| towards the left/right and towards the lower/upper neighbour (neighbours
-/// without a surface or outside the frame are ignored; none: Δz = 0), the pixel's footprint
+/// depth step Δz_x towards whichever of the left/right neighbours has the smaller |Δz|,
+/// with its sign along +x (zn − z to the right, z − zn from the left: negative where the
+/// depth falls along +x), likewise Δz_y (neighbours without a surface or outside the frame
+/// are ignored; none: Δz = 0; a tie keeps the left/lower one), the pixel's footprint
 /// as the parallelogram P ± a ± b with a = (P(x + ½, z + Δz_x / 2) − P(x − ½, z − Δz_x / 2)) / 2
 /// and b likewise along y, its four corners through `eyeToSmUv` (eye space → SM uv in
 /// x, y; w divided), and their half extents per SM axis (`measure`; the SM half edges are

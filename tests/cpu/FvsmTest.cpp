@@ -349,6 +349,44 @@ SmtmmEntry entry(double u, double v, int needX, int needY) {
   return {true, {u, v}, {needX, needY}};
 }
 
+// The paper's 4-byte entry (fvsm.smtmm.entry = 4-byte): the SM position as the column and row
+// of 256 that hold it, the needs exact, empty as need bytes 255.
+TEST(FvsmSmtmm, TheFourByteEntryPacksColumnRowAndNeeds) {
+  EXPECT_EQ(entryBytes(EntryFormat::Float16Byte), 16);
+  EXPECT_EQ(entryBytes(EntryFormat::Packed4Byte), 4);
+  // u = 0.3 → column floor(76.8) = 76 (0x4c), v = 0.75 → row 192 (0xc0), needs 17 and 24.
+  EXPECT_EQ(packSmtmmEntry(entry(0.3, 0.75, 17, 24)), 0x1811c04cu);
+  EXPECT_EQ(unpackSmtmmEntry(0x1811c04cu), entry(76.5 / 256.0, 192.5 / 256.0, 17, 24));
+  EXPECT_EQ(packSmtmmEntry(entry(0.0, 1.0, 0, 0)), 0x0000ff00u);  // uv = 1: the last row
+  EXPECT_EQ(packSmtmmEntry(SmtmmEntry{}), 0xffff0000u);
+  EXPECT_EQ(unpackSmtmmEntry(0xffff0000u), SmtmmEntry{});
+  EXPECT_THROW(unpackSmtmmEntry(0x19000000u), std::invalid_argument);  // need 25 > the cap
+  for (int need = 0; need <= kMaxNeedLog2; ++need)
+    EXPECT_EQ(unpackSmtmmEntry(packSmtmmEntry(entry(0.5, 0.5, need, kMaxNeedLog2 - need))).needLog2,
+              glm::ivec2(need, kMaxNeedLog2 - need));
+}
+
+// What the 4-byte entry loses is where inside its column the pixel looks (the read-back u is
+// within 1/512 of the float's), never the grid cell: at every grid size n = 1 … 256, u on
+// both sides of every column border (k / 256 ± 1e-9), 0 and 1 fall in the same cell.
+TEST(FvsmSmtmm, TheFourByteEntryKeepsEveryGridCell) {
+  std::vector<double> us = {0.0, 1.0, 0.5, 1.0 / 3.0};
+  for (int k = 1; k < 256; ++k)
+    us.insert(us.end(), {k / 256.0 - 1e-9, k / 256.0, k / 256.0 + 1e-9});
+  int checked = 0;
+  for (const double u : us) {
+    const SmtmmEntry e = entry(u, 1.0 - u, 9, 9);
+    const SmtmmEntry back = unpackSmtmmEntry(packSmtmmEntry(e));
+    EXPECT_LE(std::abs(back.smUv.x - u), 1.0 / 512.0) << u;
+    EXPECT_LE(std::abs(back.smUv.y - (1.0 - u)), 1.0 / 512.0) << u;
+    for (int n = 1; n <= 256; n *= 2) {
+      EXPECT_EQ(gridCellOf(back.smUv, n), gridCellOf(e.smUv, n)) << "u " << u << ", n " << n;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 9 * (4 + 3 * 255));
+}
+
 /// 4 x 2 entries into a 2 x 2 grid (η0 = 17, η1 = 22: buckets ≤17, 18, 19, 20, 21, ≥22).
 std::vector<SmtmmEntry> handGrid() {
   return {entry(0.1, 0.1, 5, 6), entry(0.2, 0.3, 18, 3), entry(0.7, 0.2, 4, 4),

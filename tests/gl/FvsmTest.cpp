@@ -135,6 +135,57 @@ TEST(Fvsm, SmtmmMatchesTheCpuReferenceOnSlopesAlongX) {
   }
 }
 
+// The paper's 4-byte entry (fvsm.smtmm.entry = 4-byte) against the 16-byte one on the same
+// frame: every entry is exactly sl::fvsm::packSmtmmEntry of the float entry, read back as
+// its column's centre (the same GPU floats; floor(256 uv) is exact in float as in double),
+// so the kd leaves and the shadow are the same, pixel for pixel; memory() lists the SMTMM
+// at 4 bytes per entry against 16 (every byte: MemoryIsExact).
+TEST(Fvsm, TheFourByteEntryIsThePackedFloatEntry) {
+  struct Run {
+    FloatImage smtmm;
+    std::vector<float> leaves;
+    std::vector<std::uint8_t> hardMask;
+    std::uint64_t smtmmBytes = 0;
+  };
+  const auto run = [](int entry) {
+    Run out;
+    auto r = fvsmRenderer(
+        {{"fvsm.max_texture", 256}, {"fvsm.fallback.resolution", 64}, {"fvsm.smtmm.entry", entry}});
+    EXPECT_TRUE(r);
+    if (!r) return out;
+    r->requestPublications({"fvsm.smtmm", "fvsm.tiles.list"});
+    EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    out.smtmm = r->publication().images.at("fvsm.smtmm");
+    out.leaves = r->publication().curves.at("fvsm.tiles.list");
+    out.hardMask = r->readback().hardMask;
+    for (const ResourceInfo& res : r->stats().memory.resources)
+      if (res.name == "SMTMM") out.smtmmBytes = res.bytes;
+    test::expectNoGlErrors(*r);
+    return out;
+  };
+  const Run floats = run(SL_FVSM_ENTRY_16_BYTE), bytes = run(SL_FVSM_ENTRY_4_BYTE);
+  ASSERT_EQ(floats.smtmm.values.size(), std::size_t(40 * 30 * 4));
+  ASSERT_EQ(bytes.smtmm.values.size(), floats.smtmm.values.size());
+  EXPECT_EQ(floats.smtmmBytes, 16u * 40u * 30u);
+  EXPECT_EQ(bytes.smtmmBytes, 4u * 40u * 30u);
+  int covered = 0;
+  for (std::size_t i = 0; i < floats.smtmm.values.size(); i += 4) {
+    const float* f = &floats.smtmm.values[i];
+    const float* b = &bytes.smtmm.values[i];
+    fvsm::SmtmmEntry e;
+    if (f[2] >= 0.0f) e = {true, glm::dvec2(f[0], f[1]), glm::ivec2(int(f[2]), int(f[3]))};
+    covered += e.covered ? 1 : 0;
+    const fvsm::SmtmmEntry packed = fvsm::unpackSmtmmEntry(fvsm::packSmtmmEntry(e));
+    const float expected[4] = {float(packed.smUv.x), float(packed.smUv.y),
+                               packed.covered ? float(packed.needLog2.x) : -1.0f,
+                               packed.covered ? float(packed.needLog2.y) : -1.0f};
+    for (int c = 0; c < 4; ++c) ASSERT_EQ(b[c], expected[c]) << "entry " << i / 4 << "." << c;
+  }
+  EXPECT_GT(covered, 600);
+  EXPECT_EQ(bytes.leaves, floats.leaves);
+  EXPECT_EQ(bytes.hardMask, floats.hardMask);
+}
+
 double errorOf(const std::string& technique, const Sets& sets) {
   auto r = test::makeRenderer("plane-box", technique);
   if (!r) return -1.0;
@@ -266,7 +317,7 @@ TEST(Fvsm, TheOverlapFixesTheSeamsAndNothingElse) {
 }
 
 // memory() lists every byte (the eye-space depth buffer, the SMTMM, every tile texture
-// allocated so far, the fallback) in each texture mode.
+// allocated so far, the fallback) in each texture mode, with either SMTMM entry.
 TEST(Fvsm, MemoryIsExact) {
   auto r = test::makeRenderer("plane-box", "uniform");
   ASSERT_TRUE(r);
@@ -276,13 +327,16 @@ TEST(Fvsm, MemoryIsExact) {
   ASSERT_FALSE(r->params().set("fvsm.max_texture", 128));
   ASSERT_FALSE(r->params().set("fvsm.fallback.resolution", 64));
   r->requestPublications({"fvsm.*"});
-  for (int mode = 0; mode < fvsm::kTextureModes; ++mode) {
-    SCOPED_TRACE(mode);
-    ASSERT_FALSE(r->params().set("fvsm.texture.mode", mode));
-    ASSERT_FALSE(r->renderFrame(80, 60, 0));
-    const MemoryStats& m = r->stats().memory;
-    EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
-    EXPECT_GE(r->publication().numbers.at("fvsm.tiles"), 1.0);
+  for (const int entry : {SL_FVSM_ENTRY_16_BYTE, SL_FVSM_ENTRY_4_BYTE}) {
+    for (int mode = 0; mode < fvsm::kTextureModes; ++mode) {
+      SCOPED_TRACE("texture mode " + std::to_string(mode) + ", entry " + std::to_string(entry));
+      ASSERT_FALSE(r->params().set("fvsm.smtmm.entry", entry));
+      ASSERT_FALSE(r->params().set("fvsm.texture.mode", mode));
+      ASSERT_FALSE(r->renderFrame(80, 60, 0));
+      const MemoryStats& m = r->stats().memory;
+      EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
+      EXPECT_GE(r->publication().numbers.at("fvsm.tiles"), 1.0);
+    }
   }
   test::expectNoGlErrors(*r);
 }

@@ -110,6 +110,33 @@ SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dma
   return e;
 }
 
+int entryBytes(EntryFormat format) {
+  return format == EntryFormat::Packed4Byte ? 4 : 16;
+}
+
+std::uint32_t packSmtmmEntry(const SmtmmEntry& e) {
+  if (!e.covered) return (SL_FVSM_ENTRY_EMPTY << 16) | (SL_FVSM_ENTRY_EMPTY << 24);
+  const auto column = [](double uv) {
+    return std::uint32_t(std::clamp(std::floor(uv * 256.0), 0.0, 255.0));
+  };
+  const auto need = [](int n) { return std::uint32_t(std::clamp(n, 0, kMaxNeedLog2)); };
+  return column(e.smUv.x) | (column(e.smUv.y) << 8) | (need(e.needLog2.x) << 16) |
+         (need(e.needLog2.y) << 24);
+}
+
+SmtmmEntry unpackSmtmmEntry(std::uint32_t packed) {
+  const auto byte = [&](int k) { return (packed >> (8 * k)) & 0xffu; };
+  SmtmmEntry e;
+  if (byte(2) == SL_FVSM_ENTRY_EMPTY && byte(3) == SL_FVSM_ENTRY_EMPTY) return e;
+  if (byte(2) > std::uint32_t(kMaxNeedLog2) || byte(3) > std::uint32_t(kMaxNeedLog2))
+    throw std::invalid_argument("fvsm: a 4-byte SMTMM entry with a need byte above " +
+                                std::to_string(kMaxNeedLog2));
+  e.covered = true;
+  e.smUv = (glm::dvec2(byte(0), byte(1)) + 0.5) / 256.0;
+  e.needLog2 = glm::ivec2(int(byte(2)), int(byte(3)));
+  return e;
+}
+
 glm::ivec2 smtmmSamplePixel(glm::ivec2 entry, glm::ivec2 smtmmSize, glm::ivec2 frameSize) {
   const glm::dvec2 p = (glm::dvec2(entry) + 0.5) * glm::dvec2(frameSize) / glm::dvec2(smtmmSize);
   return glm::min(glm::ivec2(glm::floor(p)), frameSize - 1);

@@ -93,6 +93,28 @@ glm::dvec2 footprintHalfExtent(glm::dvec2 a, glm::dvec2 b, FootprintMeasure meas
 SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dmat4& eyeToSmUv,
                       FootprintMeasure measure = FootprintMeasure::Box);
 
+/// How an SMTMM entry is stored on the GPU and read back (fvsm.smtmm.entry). `Float16Byte`:
+/// four floats, SM u and v as computed. `Packed4Byte`: the paper's 4 bytes (§4.3) — the SM
+/// position as the column and row of 256 that hold it, min(floor(256 uv), 255) per axis, and
+/// the two needs, integers in [0, kMaxNeedLog2] and so exact. What it loses: where inside
+/// its 1/256 column the pixel looks (read back as the column's centre, (k + ½) / 256, within
+/// 1/512 of the float). The grid does not lose it: for n ≤ 256 a cell is floor(n uv) =
+/// column >> (8 − log2 n), so every entry lands in the same cell, and the tiles are the same.
+/// (The paper leaves the conversion to the hardware's [0, 1] → byte rounding, round(255 uv),
+/// which moves entries within half a step of a cell border into the next cell.)
+enum class EntryFormat : int {
+  Float16Byte = SL_FVSM_ENTRY_16_BYTE,
+  Packed4Byte = SL_FVSM_ENTRY_4_BYTE
+};
+/// Bytes per entry of a format: 16 or 4.
+int entryBytes(EntryFormat format);
+/// The 4-byte entry: byte 0 (lowest) the u column, 1 the v row, 2 need u, 3 need v; an entry
+/// that is not covered has both need bytes SL_FVSM_ENTRY_EMPTY (255) and position 0.
+std::uint32_t packSmtmmEntry(const SmtmmEntry& e);
+/// The inverse, the position read back as the column's centre; throws
+/// std::invalid_argument for a need byte above kMaxNeedLog2 that is not the empty marker.
+SmtmmEntry unpackSmtmmEntry(std::uint32_t packed);
+
 /// The SMTMM of `n` x `m` entries (row-major, row 0 at the bottom): entry (i, j) is the
 /// entry of the pixel at the centre of its block, (floor((i + ½) W / n), floor((j + ½) H / m)).
 glm::ivec2 smtmmSamplePixel(glm::ivec2 entry, glm::ivec2 smtmmSize, glm::ivec2 frameSize);

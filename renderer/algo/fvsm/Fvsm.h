@@ -276,10 +276,13 @@ struct TileTexture {
 TileTexture tileTexture(TextureMode mode, glm::ivec2 textureLog2, int maxTextureLog2,
                         int borderTexels);
 
-/// Texels of every texture a mode can need, the paper's bounds (border b = 0): SubRect
-/// t_max²; PowerOfTwo the series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max²);
-/// ExactSize every w x h with both sides powers of two in [2^min, t_max] ((2 t_max − 2^min)²,
-/// the bound of allocating every shape; a frame allocates only the shapes it uses). A border
+/// Texels of every texture a mode can need (border b = 0): SubRect t_max² and PowerOfTwo the
+/// series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max²) — the paper's bounds (§4.10);
+/// ExactSize every w x h with both sides powers of two in [2^min, t_max], each its own
+/// texture ((2 t_max − 2^min)², about 4 t_max²: the tool's bound of allocating every shape; a
+/// frame allocates only the shapes it uses). The paper's bound for exact sizes is 8/3 t_max²
+/// (its series counts t_max² and the two half-size rectangles per level) and its results
+/// call it 4/3 of the other two; neither is this function's. A border
 /// adds 2b to every side: (t_max + 2b)², sum of (2^k + 2b)², (2 t_max − 2^min + 2b L)² for L
 /// sizes.
 std::uint64_t textureModeBoundTexels(TextureMode mode, int maxTextureLog2, int minTextureLog2,

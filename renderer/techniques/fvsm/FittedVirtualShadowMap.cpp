@@ -59,9 +59,10 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .step = 1,
        .help = "ξ: subtracted from every log2 resolution need before the traversal (Giegl & "
                "Wimmer §4.9): each step halves the texels per axis everywhere. Large ξ: one "
-               "ordinary shadow map; below 0: finer than the SMTMM's sub-pixel need (default "
-               "−3: with the 32 x 32 grid, fewer wrong pixels than the 16 x 16 x 4096² brute "
-               "force on diagonal and corridor: docs/techniques/fvsm.md)."},
+               "ordinary shadow map. The paper uses 0 … 5 (0: the sub-pixel need, 5 about one "
+               "ordinary map in its scene); the default −3 is the tool's: 8 times the texels per "
+               "axis of the paper's 0 (with the 32 x 32 grid, fewer wrong pixels than the 16 x "
+               "16 x 4096² brute force on diagonal and corridor: docs/techniques/fvsm.md)."},
       {.key = "fvsm.texture.mode",
        .label = "Tile textures",
        .group = "FVSM",
@@ -71,9 +72,11 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .maxValue = 2,
        .step = 1,
        .enumNames = {"sub-rectangle", "power-of-two", "exact"},
-       .help = "Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture, of "
-               "the smallest square of a power-of-two series (≤ 4/3 t_max², the paper's "
-               "recommendation), or a texture of exactly its size."},
+       .help = "Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture "
+               "(t_max²), of the smallest square of a power-of-two series (< 4/3 t_max², the "
+               "paper's recommendation and the default), or a texture of exactly its size (the "
+               "paper counts 8/3 t_max² for these; the tool allocates each w x h the frame "
+               "uses, up to (2 t_max − 16)²)."},
       {.key = "fvsm.overlap",
        .label = "Tile overlap",
        .group = "FVSM",
@@ -143,7 +146,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .maxValue = SL_FVSM_MAX_NEED_LOG2 - 1,
        .step = 1,
        .help = "Lower end bucket of each tile's need histogram (log2): needs up to η0 are "
-               "never discarded as outliers."},
+               "never discarded as outliers (the paper: 17)."},
       {.key = "fvsm.eta1",
        .label = "Histogram η1",
        .group = "FVSM",
@@ -152,7 +155,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .minValue = 1,
        .maxValue = SL_FVSM_MAX_NEED_LOG2,
        .step = 1,
-       .help = "Upper end bucket (log2): needs from η1 up are counted together."},
+       .help = "Upper end bucket (log2): needs from η1 up are counted together (the paper: "
+               "22)."},
       {.key = "fvsm.outliers",
        .label = "Outlier entries",
        .group = "FVSM",
@@ -162,7 +166,9 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .maxValue = 4096,
        .step = 1,
        .help = "Per tile, at most this many SMTMM entries needing more than η0 are discarded "
-               "(highest needs first, whole buckets); 0 keeps the plain maximum."},
+               "(highest needs first, whole buckets); 0 (the default) keeps the plain maximum. "
+               "The paper discards \"a very few\" outlier pixels per cell with this histogram "
+               "(§4.4) without saying how many; the default turns that off."},
       {.key = "fvsm.screen_rect",
        .label = "Apply in screen rectangles",
        .group = "FVSM",
@@ -183,10 +189,11 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .step = 1,
        .enumNames = {"box", "chord"},
        .help = "How a pixel's footprint in the light's map becomes a need per SM axis: the half "
-               "sides of its axis-aligned bounding box (box), or the half length of its chord "
-               "through the pixel along each axis (chord; equal for footprints along an axis, "
-               "much shorter for thin footprints along a diagonal of the map, which the box "
-               "undersamples).",
+               "sides of its axis-aligned bounding box (box: the paper's, §4.3), or the half "
+               "length of its chord through the pixel along each axis (chord, the tool's "
+               "default; equal for footprints along an axis, much shorter for thin footprints "
+               "along a diagonal of the map, which the box undersamples). Both keep the sign of "
+               "the depth step the footprint is built from.",
        .uniform = "u_footprint"},
       {.key = "fvsm.fallback.resolution",
        .label = "Fallback map",
@@ -197,7 +204,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .maxValue = 8192,
        .step = 16,
        .help = "Pixels no tile reached (the SMTMM samples one pixel per block) are shadowed "
-               "with one map of this size over the whole fit."},
+               "with one map of this size over the whole fit (the tool's; the paper has none)."},
   };
   appendTileBiasParams(params);
   TechniqueInfo info{
@@ -206,7 +213,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
       "looks and how many texels it needs per axis; on the CPU, a tile grid with outlier "
       "rejection, its max pyramid and a kd-tree traversal choose tiles that each fit the "
       "max texture size; each is rendered at its need and applied only inside its screen "
-      "rectangle.",
+      "rectangle. The virtual map is the focused, unwarped light frustum (the paper's results "
+      "all warp it with LiSPSM).",
       std::move(params)};
   info.passes = {
       EyeDepthBuffer::passDecl(),

@@ -61,8 +61,9 @@ TechniqueInfo FittedVirtualShadowMap::info() {
                "Wimmer §4.9): each step halves the texels per axis everywhere. Large ξ: one "
                "ordinary shadow map. The paper uses 0 … 5 (0: the sub-pixel need, 5 about one "
                "ordinary map in its scene); the default −3 is the tool's: 8 times the texels per "
-               "axis of the paper's 0 (with the 32 x 32 grid, fewer wrong pixels than the 16 x "
-               "16 x 4096² brute force on diagonal and corridor: docs/techniques/fvsm.md)."},
+               "axis of the paper's 0 (with the 32 x 32 grid, about the 16 x 16 x 4096² brute "
+               "force's wrong pixels on diagonal and fewer on corridor: "
+               "docs/techniques/fvsm.md)."},
       {.key = "fvsm.texture.mode",
        .label = "Tile textures",
        .group = "FVSM",

@@ -157,7 +157,13 @@
 // fvsm.need.footprint: a footprint's half extent per SM axis (sl::fvsm::FootprintMeasure)
 #define SL_FVSM_FOOTPRINT_BOX 0
 #define SL_FVSM_FOOTPRINT_CHORD 1
-#define SL_IMAGE_FVSM_SMTMM 0  // rgba32f: (sm u, sm v, need log2 u, need log2 v); need -1: empty
+// The SMTMM's image: rgba32f (sm u, sm v, need log2 u, need log2 v; need -1: empty), or with
+// the 4-byte entry (fvsm.smtmm.entry, sl::fvsm::EntryFormat) r32ui, one byte each from the
+// lowest: u column, v row (of 256), need log2 u, need log2 v (SL_FVSM_ENTRY_EMPTY: empty)
+#define SL_IMAGE_FVSM_SMTMM 0
+#define SL_FVSM_ENTRY_16_BYTE 0
+#define SL_FVSM_ENTRY_4_BYTE 1
+#define SL_FVSM_ENTRY_EMPTY 255u
 // r32f: the FVSM panel's camera thumbnail (fvsm.camera: unshadowed N.L grey, -1 without a
 // surface, -2 outside the frame), written only while the panel asks for it
 #define SL_IMAGE_FVSM_CAMERA 1

@@ -4,6 +4,7 @@
 // all exact, on grids small enough to work out by hand (the numbers are in the comments).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -124,6 +125,131 @@ TEST(FvsmSmtmm, DepthSlopeSeenFromTheSide) {
   EXPECT_EQ(e.needLog2, glm::ivec2(7, 7));
 }
 
+// A plane receiver seen by the 8 x 8 frame: the eye depth of every pixel centre (the ray
+// d (ndc tanHalfFov, −1) meets the plane n · (e − e0) = 0), and the exact footprint of pixel
+// `pixel`: its four corners' rays meeting the plane.
+struct PlaneReceiver {
+  glm::dvec3 normal, point;
+  double depthAt(const EyeDepthView& v, glm::dvec2 pixel) const {
+    const glm::dvec3 dir = eyePosition(v, pixel, 1.0);
+    return glm::dot(normal, point) / glm::dot(normal, dir);
+  }
+  std::vector<float> depthBuffer(const EyeDepthView& v) const {
+    std::vector<float> d(std::size_t(v.width) * std::size_t(v.height));
+    for (int y = 0; y < v.height; ++y)
+      for (int x = 0; x < v.width; ++x)
+        d[std::size_t(y) * std::size_t(v.width) + std::size_t(x)] =
+            float(depthAt(v, glm::dvec2(x, y) + 0.5));
+    return d;
+  }
+  /// The corners c₋₋, c₋₊, c₊₋, c₊₊ (x first) of the pixel's footprint on the plane.
+  std::array<glm::dvec3, 4> footprint(const EyeDepthView& v, glm::ivec2 pixel) const {
+    std::array<glm::dvec3, 4> c;
+    for (int i = 0; i < 4; ++i) {
+      const glm::dvec2 corner = glm::dvec2(pixel) + glm::dvec2(i / 2, i % 2);
+      c[std::size_t(i)] = eyePosition(v, corner, depthAt(v, corner));
+    }
+    return c;
+  }
+};
+
+/// A light straight above the plane (looking along −normal): SM u along the plane's x
+/// direction, v across it, centred on `centre` and scaled per axis so that the exact
+/// footprint's half extent (`measure`) is 2^−7.5 uv along both axes: an estimate within a
+/// factor √2 of it needs 2^8 texels per axis of the whole map, one off by more does not.
+glm::dmat4 lightAbove(const PlaneReceiver& plane, const std::array<glm::dvec3, 4>& exact,
+                      glm::dvec3 centre, FootprintMeasure measure) {
+  const glm::dvec3 n = glm::normalize(plane.normal);
+  const glm::dvec3 u = glm::normalize(glm::dvec3(1, 0, 0) - n * n.x), v = glm::cross(n, u);
+  glm::dvec2 sm[4];
+  for (int i = 0; i < 4; ++i)
+    sm[i] = {glm::dot(u, exact[std::size_t(i)]), glm::dot(v, exact[std::size_t(i)])};
+  const glm::dvec2 a = 0.25 * (sm[2] + sm[3] - sm[0] - sm[1]),
+                   b = 0.25 * (sm[1] + sm[3] - sm[0] - sm[2]);
+  glm::dvec2 half = footprintHalfExtent(a, b, measure);
+  if (measure == FootprintMeasure::Box) {
+    const glm::dvec2 lo = glm::min(glm::min(sm[0], sm[1]), glm::min(sm[2], sm[3]));
+    const glm::dvec2 hi = glm::max(glm::max(sm[0], sm[1]), glm::max(sm[2], sm[3]));
+    half = 0.5 * (hi - lo);
+  }
+  const glm::dvec2 scale = std::exp2(-7.5) / half;
+  glm::dmat4 m(0.0);
+  for (int k = 0; k < 3; ++k) {
+    m[k][0] = scale.x * u[k];
+    m[k][1] = scale.y * v[k];
+  }
+  m[3][0] = 0.5 - scale.x * glm::dot(u, centre);
+  m[3][1] = 0.5 - scale.y * glm::dot(v, centre);
+  m[3][3] = 1.0;
+  return m;
+}
+
+// The SMTMM builds the pixel's footprint from the smaller depth step towards its neighbours
+// (§4.3) with its sign: a receiver whose depth falls along +x is sheared the other way from
+// one whose depth rises. Three planes through (0, 0, −8 m) tilted by atan(1/2) (falling
+// along +x, rising along +x, falling along the diagonal x + y), each seen from straight
+// above by the light, scaled so that the exact footprint of pixel (3, 3) needs 8 texels per
+// axis with a margin of a factor √2 either way: the entry asks for 8 with both measures.
+// Measured before the sign was kept: the falling planes' footprints came out about half as
+// long along their slope (need 9).
+TEST(FvsmSmtmm, TheDepthSlopesSignShearsTheFootprint) {
+  const struct {
+    const char* name;
+    glm::dvec3 normal;
+  } planes[] = {{"falling along +x", {-0.5, 0.0, 1.0}},
+                {"rising along +x", {0.5, 0.0, 1.0}},
+                {"falling along x + y", {-0.5, -0.5, 1.0}}};
+  for (const auto& p : planes) {
+    for (const FootprintMeasure measure : {FootprintMeasure::Box, FootprintMeasure::Chord}) {
+      SCOPED_TRACE(std::string(p.name) + ", " + footprintMeasureName(measure));
+      const PlaneReceiver plane{p.normal, {0.0, 0.0, -8.0}};
+      std::vector<float> d;
+      EyeDepthView view = frame8(d);
+      d = plane.depthBuffer(view);
+      view.eyeDepthM = d;
+      const glm::ivec2 pixel(3, 3);
+      const glm::dvec3 centre = eyePosition(view, glm::dvec2(pixel) + 0.5, view.depthAt(3, 3));
+      const glm::dmat4 light = lightAbove(plane, plane.footprint(view, pixel), centre, measure);
+      const SmtmmEntry e = smtmmEntry(view, pixel, light, measure);
+      ASSERT_TRUE(e.covered);
+      EXPECT_EQ(e.needLog2, glm::ivec2(8, 8));
+    }
+  }
+}
+
+// Mirroring the frame and the light in x turns a depth falling along +x into one rising
+// along +x and changes no need: the entry of pixel (3, 3) on the falling plane equals that
+// of pixel (4, 3) on its mirror image (the same rays with x negated), for both measures.
+TEST(FvsmSmtmm, MirroringTheFrameChangesNoNeed) {
+  const PlaneReceiver falling{{-0.5, 0.0, 1.0}, {0.0, 0.0, -8.0}};
+  const PlaneReceiver rising{{0.5, 0.0, 1.0}, {0.0, 0.0, -8.0}};
+  std::vector<float> none;
+  EyeDepthView view = frame8(none);
+  const std::vector<float> dFalling = falling.depthBuffer(view), dRising = rising.depthBuffer(view);
+  // A light looking down the plane's slope at 45°: u = (x_e − z_e) / 16 + 1/2, v = y_e / 16
+  // + 1/2; its mirror image negates x_e.
+  glm::dmat4 light(0.0), mirrored(0.0);
+  light[0][0] = 1.0 / 16.0;
+  light[2][0] = -1.0 / 16.0;
+  light[1][1] = 1.0 / 16.0;
+  light[3][0] = 0.5 - 8.0 / 16.0;
+  light[3][1] = 0.5;
+  light[3][3] = 1.0;
+  mirrored = light;
+  mirrored[0][0] = -light[0][0];
+  for (const FootprintMeasure measure : {FootprintMeasure::Box, FootprintMeasure::Chord}) {
+    SCOPED_TRACE(footprintMeasureName(measure));
+    view.eyeDepthM = dFalling;
+    const SmtmmEntry a = smtmmEntry(view, {3, 3}, light, measure);
+    view.eyeDepthM = dRising;
+    const SmtmmEntry b = smtmmEntry(view, {4, 3}, mirrored, measure);
+    ASSERT_TRUE(a.covered && b.covered);
+    EXPECT_NEAR(a.smUv.x, b.smUv.x, 1e-12);
+    EXPECT_NEAR(a.smUv.y, b.smUv.y, 1e-12);
+    EXPECT_EQ(a.needLog2, b.needLog2);
+  }
+}
+
 TEST(FvsmSmtmm, FootprintBoxAndChordAlongAnAxisAreEqual) {
   // Half edges (1/4, 0) and (0, 1/2): box = chord = (1/4, 1/2) (det 1/8 over 1/2 and 1/4).
   const glm::dvec2 a(0.25, 0.0), b(0.0, 0.5);
@@ -221,6 +347,44 @@ TEST(FvsmSmtmm, BuildSamplesTheCentreOfEachBlock) {
 
 SmtmmEntry entry(double u, double v, int needX, int needY) {
   return {true, {u, v}, {needX, needY}};
+}
+
+// The paper's 4-byte entry (fvsm.smtmm.entry = 4-byte): the SM position as the column and row
+// of 256 that hold it, the needs exact, empty as need bytes 255.
+TEST(FvsmSmtmm, TheFourByteEntryPacksColumnRowAndNeeds) {
+  EXPECT_EQ(entryBytes(EntryFormat::Float16Byte), 16);
+  EXPECT_EQ(entryBytes(EntryFormat::Packed4Byte), 4);
+  // u = 0.3 → column floor(76.8) = 76 (0x4c), v = 0.75 → row 192 (0xc0), needs 17 and 24.
+  EXPECT_EQ(packSmtmmEntry(entry(0.3, 0.75, 17, 24)), 0x1811c04cu);
+  EXPECT_EQ(unpackSmtmmEntry(0x1811c04cu), entry(76.5 / 256.0, 192.5 / 256.0, 17, 24));
+  EXPECT_EQ(packSmtmmEntry(entry(0.0, 1.0, 0, 0)), 0x0000ff00u);  // uv = 1: the last row
+  EXPECT_EQ(packSmtmmEntry(SmtmmEntry{}), 0xffff0000u);
+  EXPECT_EQ(unpackSmtmmEntry(0xffff0000u), SmtmmEntry{});
+  EXPECT_THROW(unpackSmtmmEntry(0x19000000u), std::invalid_argument);  // need 25 > the cap
+  for (int need = 0; need <= kMaxNeedLog2; ++need)
+    EXPECT_EQ(unpackSmtmmEntry(packSmtmmEntry(entry(0.5, 0.5, need, kMaxNeedLog2 - need))).needLog2,
+              glm::ivec2(need, kMaxNeedLog2 - need));
+}
+
+// What the 4-byte entry loses is where inside its column the pixel looks (the read-back u is
+// within 1/512 of the float's), never the grid cell: at every grid size n = 1 … 256, u on
+// both sides of every column border (k / 256 ± 1e-9), 0 and 1 fall in the same cell.
+TEST(FvsmSmtmm, TheFourByteEntryKeepsEveryGridCell) {
+  std::vector<double> us = {0.0, 1.0, 0.5, 1.0 / 3.0};
+  for (int k = 1; k < 256; ++k)
+    us.insert(us.end(), {k / 256.0 - 1e-9, k / 256.0, k / 256.0 + 1e-9});
+  int checked = 0;
+  for (const double u : us) {
+    const SmtmmEntry e = entry(u, 1.0 - u, 9, 9);
+    const SmtmmEntry back = unpackSmtmmEntry(packSmtmmEntry(e));
+    EXPECT_LE(std::abs(back.smUv.x - u), 1.0 / 512.0) << u;
+    EXPECT_LE(std::abs(back.smUv.y - (1.0 - u)), 1.0 / 512.0) << u;
+    for (int n = 1; n <= 256; n *= 2) {
+      EXPECT_EQ(gridCellOf(back.smUv, n), gridCellOf(e.smUv, n)) << "u " << u << ", n " << n;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 9 * (4 + 3 * 255));
 }
 
 /// 4 x 2 entries into a 2 x 2 grid (η0 = 17, η1 = 22: buckets ≤17, 18, 19, 20, 21, ≥22).

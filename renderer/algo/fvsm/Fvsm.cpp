@@ -24,19 +24,23 @@ glm::dvec2 projectToSmUv(const glm::dmat4& eyeToSmUv, const glm::dvec3& eye) {
   return glm::dvec2(c) / c.w;
 }
 
-/// The smaller |Δz| towards the two neighbours along one screen axis; 0 when neither has
-/// a surface.
-double smallerDepthStep(const EyeDepthView& view, glm::ivec2 pixel, glm::ivec2 step, double z) {
-  double best = -1.0;
+/// The depth step along +`step` (m per pixel) towards whichever neighbour is nearer in
+/// depth: zn − z towards the next pixel, z − zn from the previous one, so that a depth
+/// falling along +step is negative; 0 when neither neighbour has a surface. On a tie the
+/// previous pixel's step is kept.
+double signedDepthStep(const EyeDepthView& view, glm::ivec2 pixel, glm::ivec2 step, double z) {
+  bool found = false;
+  double best = 0.0;
   for (int s : {-1, 1}) {
     const glm::ivec2 q = pixel + s * step;
     if (q.x < 0 || q.y < 0 || q.x >= view.width || q.y >= view.height) continue;
     const double zn = view.depthAt(q.x, q.y);
     if (zn <= 0.0) continue;
-    const double d = std::abs(zn - z);
-    if (best < 0.0 || d < best) best = d;
+    const double d = double(s) * (zn - z);
+    if (!found || std::abs(d) < std::abs(best)) best = d;
+    found = true;
   }
-  return best < 0.0 ? 0.0 : best;
+  return best;
 }
 
 }  // namespace
@@ -80,8 +84,9 @@ SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dma
   const glm::dvec2 uv = projectToSmUv(eyeToSmUv, p);
   if (uv.x < 0.0 || uv.y < 0.0 || uv.x > 1.0 || uv.y > 1.0) return e;
 
-  const double dzX = smallerDepthStep(view, pixel, {1, 0}, z);
-  const double dzY = smallerDepthStep(view, pixel, {0, 1}, z);
+  // Signed: the footprint tilts with the receiver, towards the camera where it falls.
+  const double dzX = signedDepthStep(view, pixel, {1, 0}, z);
+  const double dzY = signedDepthStep(view, pixel, {0, 1}, z);
   const glm::dvec3 a = 0.5 * (eyePosition(view, centre + glm::dvec2(0.5, 0.0), z + 0.5 * dzX) -
                               eyePosition(view, centre - glm::dvec2(0.5, 0.0), z - 0.5 * dzX));
   const glm::dvec3 b = 0.5 * (eyePosition(view, centre + glm::dvec2(0.0, 0.5), z + 0.5 * dzY) -
@@ -102,6 +107,33 @@ SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dma
   e.covered = true;
   e.smUv = uv;
   e.needLog2 = {quantiseNeedLog2(half.x), quantiseNeedLog2(half.y)};
+  return e;
+}
+
+int entryBytes(EntryFormat format) {
+  return format == EntryFormat::Packed4Byte ? 4 : 16;
+}
+
+std::uint32_t packSmtmmEntry(const SmtmmEntry& e) {
+  if (!e.covered) return (SL_FVSM_ENTRY_EMPTY << 16) | (SL_FVSM_ENTRY_EMPTY << 24);
+  const auto column = [](double uv) {
+    return std::uint32_t(std::clamp(std::floor(uv * 256.0), 0.0, 255.0));
+  };
+  const auto need = [](int n) { return std::uint32_t(std::clamp(n, 0, kMaxNeedLog2)); };
+  return column(e.smUv.x) | (column(e.smUv.y) << 8) | (need(e.needLog2.x) << 16) |
+         (need(e.needLog2.y) << 24);
+}
+
+SmtmmEntry unpackSmtmmEntry(std::uint32_t packed) {
+  const auto byte = [&](int k) { return (packed >> (8 * k)) & 0xffu; };
+  SmtmmEntry e;
+  if (byte(2) == SL_FVSM_ENTRY_EMPTY && byte(3) == SL_FVSM_ENTRY_EMPTY) return e;
+  if (byte(2) > std::uint32_t(kMaxNeedLog2) || byte(3) > std::uint32_t(kMaxNeedLog2))
+    throw std::invalid_argument("fvsm: a 4-byte SMTMM entry with a need byte above " +
+                                std::to_string(kMaxNeedLog2));
+  e.covered = true;
+  e.smUv = (glm::dvec2(byte(0), byte(1)) + 0.5) / 256.0;
+  e.needLog2 = glm::ivec2(int(byte(2)), int(byte(3)));
   return e;
 }
 

@@ -82,14 +82,38 @@ const char* footprintMeasureName(FootprintMeasure measure);
 glm::dvec2 footprintHalfExtent(glm::dvec2 a, glm::dvec2 b, FootprintMeasure measure);
 
 /// The entry of the pixel whose centre is at `pixel` (integer coordinates) — §4.3: the
-/// smaller |Δz| towards the left/right and towards the lower/upper neighbour (neighbours
-/// without a surface or outside the frame are ignored; none: Δz = 0), the pixel's footprint
+/// depth step Δz_x towards whichever of the left/right neighbours has the smaller |Δz|,
+/// with its sign along +x (zn − z to the right, z − zn from the left: negative where the
+/// depth falls along +x), likewise Δz_y (neighbours without a surface or outside the frame
+/// are ignored; none: Δz = 0; a tie keeps the left/lower one), the pixel's footprint
 /// as the parallelogram P ± a ± b with a = (P(x + ½, z + Δz_x / 2) − P(x − ½, z − Δz_x / 2)) / 2
 /// and b likewise along y, its four corners through `eyeToSmUv` (eye space → SM uv in
 /// x, y; w divided), and their half extents per SM axis (`measure`; the SM half edges are
 /// a' = (c₊₊ + c₊₋ − c₋₊ − c₋₋) / 4, b' likewise).
 SmtmmEntry smtmmEntry(const EyeDepthView& view, glm::ivec2 pixel, const glm::dmat4& eyeToSmUv,
                       FootprintMeasure measure = FootprintMeasure::Box);
+
+/// How an SMTMM entry is stored on the GPU and read back (fvsm.smtmm.entry). `Float16Byte`:
+/// four floats, SM u and v as computed. `Packed4Byte`: the paper's 4 bytes (§4.3) — the SM
+/// position as the column and row of 256 that hold it, min(floor(256 uv), 255) per axis, and
+/// the two needs, integers in [0, kMaxNeedLog2] and so exact. What it loses: where inside
+/// its 1/256 column the pixel looks (read back as the column's centre, (k + ½) / 256, within
+/// 1/512 of the float). The grid does not lose it: for n ≤ 256 a cell is floor(n uv) =
+/// column >> (8 − log2 n), so every entry lands in the same cell, and the tiles are the same.
+/// (The paper leaves the conversion to the hardware's [0, 1] → byte rounding, round(255 uv),
+/// which moves entries within half a step of a cell border into the next cell.)
+enum class EntryFormat : int {
+  Float16Byte = SL_FVSM_ENTRY_16_BYTE,
+  Packed4Byte = SL_FVSM_ENTRY_4_BYTE
+};
+/// Bytes per entry of a format: 16 or 4.
+int entryBytes(EntryFormat format);
+/// The 4-byte entry: byte 0 (lowest) the u column, 1 the v row, 2 need u, 3 need v; an entry
+/// that is not covered has both need bytes SL_FVSM_ENTRY_EMPTY (255) and position 0.
+std::uint32_t packSmtmmEntry(const SmtmmEntry& e);
+/// The inverse, the position read back as the column's centre; throws
+/// std::invalid_argument for a need byte above kMaxNeedLog2 that is not the empty marker.
+SmtmmEntry unpackSmtmmEntry(std::uint32_t packed);
 
 /// The SMTMM of `n` x `m` entries (row-major, row 0 at the bottom): entry (i, j) is the
 /// entry of the pixel at the centre of its block, (floor((i + ½) W / n), floor((j + ½) H / m)).
@@ -252,10 +276,13 @@ struct TileTexture {
 TileTexture tileTexture(TextureMode mode, glm::ivec2 textureLog2, int maxTextureLog2,
                         int borderTexels);
 
-/// Texels of every texture a mode can need, the paper's bounds (border b = 0): SubRect
-/// t_max²; PowerOfTwo the series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max²);
-/// ExactSize every w x h with both sides powers of two in [2^min, t_max] ((2 t_max − 2^min)²,
-/// the bound of allocating every shape; a frame allocates only the shapes it uses). A border
+/// Texels of every texture a mode can need (border b = 0): SubRect t_max² and PowerOfTwo the
+/// series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max²) — the paper's bounds (§4.10);
+/// ExactSize every w x h with both sides powers of two in [2^min, t_max], each its own
+/// texture ((2 t_max − 2^min)², about 4 t_max²: the tool's bound of allocating every shape; a
+/// frame allocates only the shapes it uses). The paper's bound for exact sizes is 8/3 t_max²
+/// (its series counts t_max² and the two half-size rectangles per level) and its results
+/// call it 4/3 of the other two; neither is this function's. A border
 /// adds 2b to every side: (t_max + 2b)², sum of (2^k + 2b)², (2 t_max − 2^min + 2b L)² for L
 /// sizes.
 std::uint64_t textureModeBoundTexels(TextureMode mode, int maxTextureLog2, int minTextureLog2,

@@ -29,6 +29,10 @@ fvsm::TextureMode textureMode(const ParamSet& p) {
   return fvsm::TextureMode(p.getInt("fvsm.texture.mode"));
 }
 
+fvsm::EntryFormat entryFormat(const ParamSet& p) {
+  return fvsm::EntryFormat(p.getInt("fvsm.smtmm.entry"));
+}
+
 /// What renderShadows needs of the values together (TechniqueInfo::checkParams).
 std::optional<std::string> checkFvsmParams(const ParamSet& p) {
   if (auto e = checkPowerOfTwo(p, "fvsm.grid")) return e;
@@ -55,9 +59,11 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .step = 1,
        .help = "ξ: subtracted from every log2 resolution need before the traversal (Giegl & "
                "Wimmer §4.9): each step halves the texels per axis everywhere. Large ξ: one "
-               "ordinary shadow map; below 0: finer than the SMTMM's sub-pixel need (default "
-               "−3: with the 32 x 32 grid, fewer wrong pixels than the 16 x 16 x 4096² brute "
-               "force on diagonal and corridor: docs/techniques/fvsm.md)."},
+               "ordinary shadow map. The paper uses 0 … 5 (0: the sub-pixel need, 5 about one "
+               "ordinary map in its scene); the default −3 is the tool's: 8 times the texels per "
+               "axis of the paper's 0 (with the 32 x 32 grid, about the 16 x 16 x 4096² brute "
+               "force's wrong pixels on diagonal and fewer on corridor: "
+               "docs/techniques/fvsm.md)."},
       {.key = "fvsm.texture.mode",
        .label = "Tile textures",
        .group = "FVSM",
@@ -67,9 +73,11 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .maxValue = 2,
        .step = 1,
        .enumNames = {"sub-rectangle", "power-of-two", "exact"},
-       .help = "Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture, of "
-               "the smallest square of a power-of-two series (≤ 4/3 t_max², the paper's "
-               "recommendation), or a texture of exactly its size."},
+       .help = "Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture "
+               "(t_max²), of the smallest square of a power-of-two series (< 4/3 t_max², the "
+               "paper's recommendation and the default), or a texture of exactly its size (the "
+               "paper counts 8/3 t_max² for these; the tool allocates each w x h the frame "
+               "uses, up to (2 t_max − 16)²)."},
       {.key = "fvsm.overlap",
        .label = "Tile overlap",
        .group = "FVSM",
@@ -116,6 +124,20 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .step = 1,
        .help = "The SMTMM has frame / divisor entries per axis (the paper: 256² for a 1024² "
                "frame), each sampling the pixel at the centre of its block."},
+      {.key = "fvsm.smtmm.entry",
+       .label = "SMTMM entry",
+       .group = "FVSM",
+       .type = ParamType::Enum,
+       .defaultValue = SL_FVSM_ENTRY_16_BYTE,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"16-byte", "4-byte"},
+       .help = "How an SMTMM entry is stored and read back: four floats (16-byte, the tool's "
+               "default), or the paper's 4 bytes (4-byte): the SM position as the column and "
+               "row of 256 holding it, and the two needs. It loses where inside its 1/256 "
+               "column a pixel looks, which changes no grid cell (n ≤ 256) and so no tile; "
+               "the SMTMM and its read-back are a quarter of the bytes."},
       {.key = "fvsm.eta0",
        .label = "Histogram η0",
        .group = "FVSM",
@@ -125,7 +147,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .maxValue = SL_FVSM_MAX_NEED_LOG2 - 1,
        .step = 1,
        .help = "Lower end bucket of each tile's need histogram (log2): needs up to η0 are "
-               "never discarded as outliers."},
+               "never discarded as outliers (the paper: 17)."},
       {.key = "fvsm.eta1",
        .label = "Histogram η1",
        .group = "FVSM",
@@ -134,7 +156,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .minValue = 1,
        .maxValue = SL_FVSM_MAX_NEED_LOG2,
        .step = 1,
-       .help = "Upper end bucket (log2): needs from η1 up are counted together."},
+       .help = "Upper end bucket (log2): needs from η1 up are counted together (the paper: "
+               "22)."},
       {.key = "fvsm.outliers",
        .label = "Outlier entries",
        .group = "FVSM",
@@ -144,7 +167,9 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .maxValue = 4096,
        .step = 1,
        .help = "Per tile, at most this many SMTMM entries needing more than η0 are discarded "
-               "(highest needs first, whole buckets); 0 keeps the plain maximum."},
+               "(highest needs first, whole buckets); 0 (the default) keeps the plain maximum. "
+               "The paper discards \"a very few\" outlier pixels per cell with this histogram "
+               "(§4.4) without saying how many; the default turns that off."},
       {.key = "fvsm.screen_rect",
        .label = "Apply in screen rectangles",
        .group = "FVSM",
@@ -165,10 +190,11 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .step = 1,
        .enumNames = {"box", "chord"},
        .help = "How a pixel's footprint in the light's map becomes a need per SM axis: the half "
-               "sides of its axis-aligned bounding box (box), or the half length of its chord "
-               "through the pixel along each axis (chord; equal for footprints along an axis, "
-               "much shorter for thin footprints along a diagonal of the map, which the box "
-               "undersamples).",
+               "sides of its axis-aligned bounding box (box: the paper's, §4.3), or the half "
+               "length of its chord through the pixel along each axis (chord, the tool's "
+               "default; equal for footprints along an axis, much shorter for thin footprints "
+               "along a diagonal of the map, which the box undersamples). Both keep the sign of "
+               "the depth step the footprint is built from.",
        .uniform = "u_footprint"},
       {.key = "fvsm.fallback.resolution",
        .label = "Fallback map",
@@ -179,7 +205,7 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .maxValue = 8192,
        .step = 16,
        .help = "Pixels no tile reached (the SMTMM samples one pixel per block) are shadowed "
-               "with one map of this size over the whole fit."},
+               "with one map of this size over the whole fit (the tool's; the paper has none)."},
   };
   appendTileBiasParams(params);
   TechniqueInfo info{
@@ -188,7 +214,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
       "looks and how many texels it needs per axis; on the CPU, a tile grid with outlier "
       "rejection, its max pyramid and a kd-tree traversal choose tiles that each fit the "
       "max texture size; each is rendered at its need and applied only inside its screen "
-      "rectangle.",
+      "rectangle. The virtual map is the focused, unwarped light frustum (the paper's results "
+      "all warp it with LiSPSM).",
       std::move(params)};
   info.passes = {
       EyeDepthBuffer::passDecl(),
@@ -230,7 +257,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
   info.publications = {
       {"fvsm.smtmm", PublicationKind::Image,
        "the SMTMM, 4 channels per entry: SM u, SM v, log2 need along u, along v (−1: no "
-       "surface); row 0 at the bottom",
+       "surface); row 0 at the bottom (with the 4-byte entry, u and v are the centres of "
+       "their 1/256 columns)",
        "0 B (read back for the grid anyway)", [](const ParamSet&) { return std::uint64_t(0); }},
       number("fvsm.tiles", "kd-tree leaves rendered this frame"),
       number("fvsm.tiles.unmet", "leaves whose need exceeded the max texture at the finest level"),
@@ -278,6 +306,10 @@ FittedVirtualShadowMap::FittedVirtualShadowMap(const gl::ShaderLibrary& lib)
     : depth_(lib),
       apply_(lib, applyTileProgramDesc()),
       smtmm_(lib, {"fvsm/smtmm", {{GL_COMPUTE_SHADER, "fvsm/smtmm.comp"}}, {}, {}}),
+      smtmmPacked_(lib, {"fvsm/smtmm (4-byte entry)",
+                         {{GL_COMPUTE_SHADER, "fvsm/smtmm.comp"}},
+                         {},
+                         {"SL_FVSM_PACKED_ENTRY"}}),
       cameraThumb_(
           lib,
           {"fvsm/camera_thumbnail", {{GL_COMPUTE_SHADER, "fvsm/camera_thumbnail.comp"}}, {}, {}}),
@@ -302,8 +334,11 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     auto pass = ctx.timer.scope("eye depth");
     eyeDepth_.update(ctx.gPosition, ctx.width, ctx.height, ctx.cameraView, ctx.cameraProj);
   }
-  std::vector<glm::vec4> raw;
-  {  // 2. The SMTMM, read back.
+  const fvsm::EntryFormat format = entryFormat(p);
+  const bool packed = format == fvsm::EntryFormat::Packed4Byte;
+  std::vector<glm::vec4> raw;            // 16-byte entries
+  std::vector<std::uint32_t> rawPacked;  // 4-byte entries
+  {                                      // 2. The SMTMM, read back.
     auto pass = ctx.timer.scope("smtmm");
     LightFit fit;
     if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
@@ -315,25 +350,34 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     const int divisor = p.getInt("fvsm.smtmm.divisor");
     frameSize_ = {ctx.width, ctx.height};
     smtmmSize_ = (frameSize_ + divisor - 1) / divisor;
+    const GLenum texFormat = packed ? GL_R32UI : GL_RGBA32F;
     if (!smtmmTexture_ || smtmmTexture_.width() != smtmmSize_.x ||
-        smtmmTexture_.height() != smtmmSize_.y) {
-      smtmmTexture_ = gl::Texture::create2D(GL_RGBA32F, smtmmSize_.x, smtmmSize_.y);
+        smtmmTexture_.height() != smtmmSize_.y || smtmmTexture_.format() != texFormat) {
+      smtmmTexture_ = gl::Texture::create2D(texFormat, smtmmSize_.x, smtmmSize_.y);
     }
     glm::mat4 uvFromClip(1.0f);
     uvFromClip[0][0] = uvFromClip[1][1] = 0.5f;
     uvFromClip[3][0] = uvFromClip[3][1] = 0.5f;
-    smtmm_.use();
-    smtmm_.set("u_frameSize", frameSize_);
-    smtmm_.set("u_smtmmSize", smtmmSize_);
-    smtmm_.set("u_eyeToSmUv", uvFromClip * full_.lightViewProj * glm::inverse(ctx.cameraView));
-    eyeDepth_.bind(smtmm_);
+    gl::Program& program = packed ? smtmmPacked_ : smtmm_;
+    program.use();
+    program.set("u_frameSize", frameSize_);
+    program.set("u_smtmmSize", smtmmSize_);
+    program.set("u_eyeToSmUv", uvFromClip * full_.lightViewProj * glm::inverse(ctx.cameraView));
+    eyeDepth_.bind(program);
     glBindImageTexture(SL_IMAGE_FVSM_SMTMM, smtmmTexture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                       GL_RGBA32F);
+                       texFormat);
     glDispatchCompute(GLuint((smtmmSize_.x + 7) / 8), GLuint((smtmmSize_.y + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    raw.resize(std::size_t(smtmmSize_.x) * std::size_t(smtmmSize_.y));
-    glGetTextureImage(smtmmTexture_.id(), 0, GL_RGBA, GL_FLOAT,
-                      GLsizei(raw.size() * sizeof(glm::vec4)), raw.data());
+    const std::size_t count = std::size_t(smtmmSize_.x) * std::size_t(smtmmSize_.y);
+    if (packed) {
+      rawPacked.resize(count);
+      glGetTextureImage(smtmmTexture_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                        GLsizei(count * sizeof(std::uint32_t)), rawPacked.data());
+    } else {
+      raw.resize(count);
+      glGetTextureImage(smtmmTexture_.id(), 0, GL_RGBA, GL_FLOAT,
+                        GLsizei(count * sizeof(glm::vec4)), raw.data());
+    }
   }
   if (ctx.wants("fvsm.camera")) {  // the panel's camera image
     if (!cameraTexture_) cameraTexture_ = gl::Texture::create2D(GL_R32F, kThumbnail, kThumbnail);
@@ -355,20 +399,16 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     renderDepth(ctx, depth_, lightThumb_.fbo.id(), kThumbnail, kThumbnail, full_.lightViewProj);
     publishDepth(ctx, "fvsm.light.depth", lightThumb_.texture);
   }
-  if (ctx.wants("fvsm.smtmm")) {  // read back anyway: publishing it costs no readback
-    FloatImage img{smtmmSize_.x, smtmmSize_.y, 4, {}};
-    img.values.reserve(raw.size() * 4);
-    for (const glm::vec4& e : raw) img.values.insert(img.values.end(), {e.x, e.y, e.z, e.w});
-    ctx.publication->images["fvsm.smtmm"] = std::move(img);
-  }
   fvsm::TileGrid grid;
+  std::vector<fvsm::SmtmmEntry> entries(std::max(raw.size(), rawPacked.size()));
   {  // 3. The tile grid with its histograms (CPU).
     auto pass = ctx.timer.scope("fvsm grid");
-    std::vector<fvsm::SmtmmEntry> entries(raw.size());
     for (std::size_t i = 0; i < raw.size(); ++i) {
       if (raw[i].z < 0.0f) continue;
       entries[i] = {true, glm::dvec2(raw[i].x, raw[i].y), glm::ivec2(raw[i].z, raw[i].w)};
     }
+    for (std::size_t i = 0; i < rawPacked.size(); ++i)
+      entries[i] = fvsm::unpackSmtmmEntry(rawPacked[i]);
     grid = fvsm::accumulateGrid(entries, smtmmSize_, n, histogram);
     const auto publishCells = [&](const char* key, int channels, std::vector<float> values) {
       if (ctx.wants(key))
@@ -381,6 +421,19 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
                    fvsm::gridHistogramChannels(grid, histogram));
     publishNumber(ctx, "fvsm.histogram.eta0", double(histogram.eta0));
     publishNumber(ctx, "fvsm.histogram.eta1", double(histogram.eta1));
+  }
+  if (ctx.wants("fvsm.smtmm")) {  // read back anyway: publishing it costs no readback
+    FloatImage img{smtmmSize_.x, smtmmSize_.y, 4, {}};
+    img.values.reserve(entries.size() * 4);
+    for (const fvsm::SmtmmEntry& e : entries) {
+      if (!e.covered) {
+        img.values.insert(img.values.end(), {0.0f, 0.0f, -1.0f, -1.0f});
+        continue;
+      }
+      img.values.insert(img.values.end(), {float(e.smUv.x), float(e.smUv.y), float(e.needLog2.x),
+                                           float(e.needLog2.y)});
+    }
+    ctx.publication->images["fvsm.smtmm"] = std::move(img);
   }
   fvsm::Pyramid pyramid;
   {  // 4. The max pyramid (CPU).
@@ -490,6 +543,7 @@ std::optional<std::string> FittedVirtualShadowMap::reloadShaders(const gl::Shade
   if (auto e = apply_.rebuild(lib)) return e;
   if (auto e = cameraThumb_.rebuild(lib)) return e;
   if (auto e = eyeDepth_.reloadShaders(lib)) return e;
+  if (auto e = smtmmPacked_.rebuild(lib)) return e;
   return smtmm_.rebuild(lib);
 }
 

@@ -27,7 +27,7 @@ class FittedVirtualShadowMap : public Technique {
   void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override;
   std::vector<const gl::Program*> programs() const override {
     std::vector<const gl::Program*> p = depth_.programs();
-    p.insert(p.end(), {&apply_, &smtmm_, &cameraThumb_, &eyeDepth_.program()});
+    p.insert(p.end(), {&apply_, &smtmm_, &smtmmPacked_, &cameraThumb_, &eyeDepth_.program()});
     return p;
   }
   MemoryStats memory() const override;
@@ -43,6 +43,7 @@ class FittedVirtualShadowMap : public Technique {
   DepthProgram depth_;
   gl::Program apply_;
   gl::Program smtmm_;
+  gl::Program smtmmPacked_;  ///< the same pass writing the paper's 4-byte entry
   gl::Program cameraThumb_;
   EyeDepthBuffer eyeDepth_;  ///< this frame's (the outside view's during its resolve)
   gl::Texture smtmmTexture_;

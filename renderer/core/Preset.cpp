@@ -1,6 +1,7 @@
 #include "core/Preset.h"
 
 #include <algorithm>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -131,6 +132,13 @@ Preset parsePreset(const JsonReader& r, const json& j) {
   Preset p;
   p.title = r.string(j, "", "title", "");
   p.explanation = r.string(j, "", "explanation", "");
+  for (const auto& [key, text, limit, limitName] :
+       {std::tuple{"title", &p.title, kMaxPresetTitleBytes, "kMaxPresetTitleBytes"},
+        std::tuple{"explanation", &p.explanation, kMaxPresetExplanationBytes,
+                   "kMaxPresetExplanationBytes"}})
+    if (text->size() > limit)
+      r.fail(key, "a text of " + std::to_string(text->size()) + " bytes, over the limit of " +
+                      std::to_string(limit) + " (" + limitName + ")");
   p.scene = r.string(j, "", "scene", "");
   p.technique = r.string(j, "", "technique", "");
   const TechniqueInfo* info =
@@ -157,7 +165,7 @@ Preset parsePreset(const JsonReader& r, const json& j) {
     cam.farM = float(r.number(*c, "camera", "farM", cam.farM));
     if (auto e = cameraFieldError(cam, {"up", "nearM", "farM"}))
       r.fail("camera." + e->first, e->second);
-    if (auto err = cam.validate()) r.fail("camera", withoutCameraPrefix(*err));
+    if (auto err = cam.validate()) r.fail("camera", Camera::withoutPrefix(*err));
     p.camera = cam;
   }
   if (const json* l = JsonReader::member(j, "light")) {

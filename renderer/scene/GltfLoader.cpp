@@ -1288,7 +1288,7 @@ class Flattener {
       bookmark.name = cameraName(inst);
       bookmark.camera = cameraFromPose(position, rotation, lens->fovYDeg, lens->nearM, far, dist);
       if (auto problem = bookmark.camera.validate()) {
-        warn("camera " + inQuotes(bookmark.name) + " ignored: " + *problem);
+        warn("camera " + inQuotes(bookmark.name) + " ignored: " + Camera::withoutPrefix(*problem));
         continue;
       }
       scene_.cameras.push_back(std::move(bookmark));

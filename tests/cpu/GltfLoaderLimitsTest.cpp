@@ -284,9 +284,8 @@ TEST(GltfLoaderLimits, BracketsInsideStringsDoNotCount) {
   EXPECT_TRUE(r) << r.error;
 }
 
-TEST(GltfLoaderLimits, DeepJsonInAGlbChunkIsRefused) {
-  fs::path dir = outDir("deep-glb");
-  std::string json = R"({"asset":{"version":"2.0"},"extras":)" + deepArray(100000) + "}";
+/// A .glb of one JSON chunk (padded to 4 bytes), its header declaring exactly that.
+std::string glbOf(std::string json) {
   while (json.size() % 4) json += ' ';
   std::string glb = "glTF";
   auto u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
@@ -294,8 +293,13 @@ TEST(GltfLoaderLimits, DeepJsonInAGlbChunkIsRefused) {
   u32(std::uint32_t(20 + json.size()));
   u32(std::uint32_t(json.size()));
   u32(0x4E4F534Au);
-  glb += json;
-  writeFile(dir / "deep.glb", glb);
+  return glb + json;
+}
+
+TEST(GltfLoaderLimits, DeepJsonInAGlbChunkIsRefused) {
+  fs::path dir = outDir("deep-glb");
+  writeFile(dir / "deep.glb",
+            glbOf(R"({"asset":{"version":"2.0"},"extras":)" + deepArray(100000) + "}"));
   expectRefused(dir / "deep.glb", {"the JSON chunk is nested deeper than 256", "kMaxJsonDepth"});
 }
 
@@ -401,26 +405,37 @@ TEST(GltfLoaderLimits, NodeTransformsGltfForbidsAreRefused) {
   EXPECT_FLOAT_EQ(r.scene->primitives[0].positions[1].x, 1.0f);  // the identity rotation
 }
 
+// A camera the loader cannot use is named once: "camera 'far' ignored: position, target or
+// up is not finite", not "... ignored: camera: position ...".
+TEST(GltfLoaderLimits, IgnoredCamerasAreNamedOnce) {
+  fs::path dir = outDir("far-camera");
+  writeFile(dir / "far.gltf", gltfText(R"({"mesh":0},{"translation":[1e308,0,0],"children":[2]},)"
+                                       R"({"camera":0,"translation":[1e308,0,0]})",
+                                       "0,1", triangleDataUri(),
+                                       R"(,"cameras":[{"name":"far","type":"perspective",)"
+                                       R"("perspective":{"yfov":0.8,"znear":0.1}}])"));
+  SceneLoadResult r = loadGltf(dir / "far.gltf");
+  ASSERT_TRUE(r) << r.error;
+  EXPECT_TRUE(r.scene->cameras.empty());
+  std::string warning;
+  for (const std::string& w : r.scene->warnings)
+    if (w.find("camera 'far'") != std::string::npos) warning = w;
+  EXPECT_NE(warning.find("camera 'far' ignored: position, target or up is not finite"),
+            std::string::npos)
+      << warning;
+  EXPECT_EQ(warning.find("camera: "), std::string::npos) << warning;
+}
+
 TEST(GltfLoaderLimits, BytesAfterAGlbsDeclaredLengthAreRefused) {
   fs::path dir = outDir("glb-trailing");
-  std::string json = gltfText(R"({"mesh":0})", "0");
-  while (json.size() % 4) json += ' ';
-  auto glb = [&](std::size_t trailing) {
-    std::string out = "glTF";
-    auto u32 = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-    u32(2);
-    u32(std::uint32_t(20 + json.size()));
-    u32(std::uint32_t(json.size()));
-    u32(0x4E4F534Au);
-    return out + json + std::string(trailing, '\0');
-  };
-  writeFile(dir / "exact.glb", glb(0));
+  const std::string exact = glbOf(gltfText(R"({"mesh":0})", "0"));
+  writeFile(dir / "exact.glb", exact);
   SceneLoadResult r = loadGltf(dir / "exact.glb");
   EXPECT_TRUE(r) << r.error;
-  writeFile(dir / "trailing.glb", glb(8));
+  writeFile(dir / "trailing.glb", exact + std::string(8, '\0'));
   expectRefused(dir / "trailing.glb",
-                {"malformed .glb: the header declares " + std::to_string(20 + json.size()) +
-                 " bytes but the file has " + std::to_string(28 + json.size()) +
+                {"malformed .glb: the header declares " + std::to_string(exact.size()) +
+                 " bytes but the file has " + std::to_string(exact.size() + 8) +
                  " (8 bytes after the declared end)"});
 }
 

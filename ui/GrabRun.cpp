@@ -14,12 +14,14 @@
 #include "LessonController.h"
 #include "MainWindow.h"
 #include "ViewportWidget.h"
+#include "core/JsonNumber.h"
 
 namespace sl::ui {
 
 namespace {
 constexpr int kGrabTickMs = 30;
 constexpr qint64 kGrabTimeoutMs = 120000;
+constexpr qsizetype kMaxNotedProblems = 20;
 
 void printErr(const QString& line) {
   std::fprintf(stderr, "shadowlab: %s\n", line.toLocal8Bit().constData());
@@ -35,14 +37,14 @@ GrabRun::GrabRun(MainWindow& window) : QObject(&window), w_(window) {
 void GrabRun::start(const QString& dir, int frames) {
   dir_ = dir;
   frames_ = frames;
-  problems_.clear();
   clock_.start();
   timer_.start();
   w_.updatePublishing();
 }
 
 void GrabRun::noteProblem(const QString& message) {
-  if (timer_.isActive()) problems_ << message;
+  // Kept from the window's start (problems before the grab count too), each once, bounded.
+  if (problems_.size() < kMaxNotedProblems && !problems_.contains(message)) problems_ << message;
 }
 
 void GrabRun::tick() {
@@ -88,7 +90,7 @@ void GrabRun::finish() {
     }
   }
   std::fflush(stdout);
-  for (const QString& problem : problems_) failures << tr("while rendering: %1").arg(problem);
+  for (const QString& problem : problems_) failures << tr("grab failed: %1").arg(problem);
   for (const QString& f : failures) printErr(f);
   QCoreApplication::exit(failures.isEmpty() ? 0 : 1);
 }
@@ -132,7 +134,10 @@ QJsonObject GrabRun::publicationJson() const {
   o[QStringLiteral("published_technique")] = QString::fromStdString(pub.techniqueId);
   o[QStringLiteral("scene")] = w_.sceneSpec_;
   QJsonObject numbers;
-  for (const auto& [key, value] : pub.numbers) numbers[QString::fromStdString(key)] = value;
+  for (const auto& [key, value] : pub.numbers)  // JSON has no inf or NaN: named (JsonNumber.h)
+    numbers[QString::fromStdString(key)] =
+        sl::nonFiniteName(value) ? QJsonValue(QString::fromLatin1(sl::nonFiniteName(value)))
+                                 : QJsonValue(value);
   o[QStringLiteral("numbers")] = numbers;
   QJsonObject images;
   for (const auto& [key, image] : pub.images)

@@ -25,7 +25,9 @@ class GrabRun : public QObject {
   /// A frame was drawn with the renderer bound.
   void countFrame() { ++framesRendered_; }
   void resetFrameCount() { framesRendered_ = 0; }
-  /// A problem while the grab renders (reported at the end, fails the run).
+  /// A problem of a scripted run, from the window's start on (a lesson's scene that does not
+  /// load, a light the technique refuses, a frame that fails): repeated at the end, and the
+  /// grab exits 1.
   void noteProblem(const QString& message);
   void stop() { timer_.stop(); }
 

@@ -417,8 +417,7 @@ void MainWindow::onFrameRendered() {
 }
 
 void MainWindow::onRenderProblem(const QString& message) {
-  grab_->noteProblem(message);
-  report(message);
+  report(message);  // a grab notes it
 }
 
 void MainWindow::onInitializationFailed(const QString& message) {
@@ -534,6 +533,9 @@ void MainWindow::showStatus(const QString& message, int timeoutMs) {
 
 void MainWindow::report(const QString& message, const QString& dialogTitle) {
   printErr(message);
+  // A scripted run fails on any problem, also one reported before its grab started (a
+  // lesson's scene that does not load, a light the technique refuses).
+  if (!interactive_ && grab_) grab_->noteProblem(message);
   showStatus(message);
   lastProblemClock_.start();
   if (!dialogs_ || dialogTitle.isEmpty()) return;

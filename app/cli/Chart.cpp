@@ -13,11 +13,14 @@
 
 #include <unistd.h>
 
+#include "CliCommon.h"
 #include "algo/InputFile.h"
 #include "algo/metrics/BenchStats.h"
 
 #if SHADOWLAB_CLI_CHARTS
 #include <QApplication>
+#include <QBuffer>
+#include <QByteArray>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QGraphicsLayout>
@@ -37,6 +40,14 @@ namespace sl::cli {
 constexpr std::size_t kMaxLabelBytes = 80;
 
 #if SHADOWLAB_CLI_CHARTS
+std::optional<std::string> savePng(const QImage& image, const std::string& path) {
+  QByteArray png;
+  QBuffer buffer(&png);
+  buffer.open(QIODevice::WriteOnly);
+  if (!image.save(&buffer, "PNG")) return path + ": cannot encode the image as PNG";
+  return writeFile(path, png.toStdString());
+}
+
 void ensureOffscreenApplication() {
   if (QCoreApplication::instance()) return;
   setenv("QT_QPA_PLATFORM", "offscreen", 1);
@@ -249,8 +260,7 @@ std::optional<std::string> writeSpeedAccuracyChart(const std::vector<ChartPoint>
   }
   const std::filesystem::path out(pngPath);
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-  if (!image.save(QString::fromStdString(pngPath), "PNG")) return "chart: cannot write " + pngPath;
-  return std::nullopt;
+  return savePng(image, pngPath);
 #endif
 }
 

@@ -10,6 +10,8 @@
 
 #include "algo/metrics/BenchStats.h"
 
+class QImage;
+
 namespace sl::cli {
 
 struct ChartPoint {
@@ -35,6 +37,9 @@ struct ChartSpec {
 /// A QApplication on the offscreen platform (Qt Charts draws with widgets' fonts and
 /// styles). Made once, on first use, after any GL work has its own EGL context.
 void ensureOffscreenApplication();
+/// `image` as a PNG at `path` through writeFile: QImage::save reports no failed write (a full
+/// disk, /dev/full), writeFile checks every one. An error naming `path` or nothing.
+std::optional<std::string> savePng(const QImage& image, const std::string& path);
 #endif
 
 /// Renders the chart to `pngPath`. Returns an error when it cannot (no Qt Charts in this

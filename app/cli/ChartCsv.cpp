@@ -84,6 +84,7 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
   std::vector<std::string> first;
   std::size_t unmeasured = 0;  // rows with an empty error_pct (no covered pixel)
   std::size_t failed = 0;      // rows of a configuration with a failed frame
+  std::string failedNames;     // "uniform resolution=512", listed apart (bounded)
   while (nextLine()) {
     if (line.empty() || line == "\r") continue;
     if (rows.size() >= kMaxCsvRows)
@@ -98,7 +99,9 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
     if ((failureColumn != header.end() &&
          !f[std::size_t(failureColumn - header.begin())].empty()) ||
         f[cMs].empty()) {
-      ++failed;
+      if (++failed <= 3)
+        failedNames += (failedNames.empty() ? "" : ", ") + cutText(f[cTech], 40) +
+                       (f[cParams].empty() ? "" : " " + cutText(f[cParams], 60));
       continue;
     }
     ChartRow r;
@@ -121,14 +124,16 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
       r.params.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
     }
     try {
-      r.totalMs = parseDouble("total_ms", f[cMs], -1e300, 1e300);
-      r.bytes = parseDouble("bytes", f[cBytes], -1e300, 1e300);
+      // A time, a size and a percentage: out of their ranges they are no measurement (a chart
+      // drew them anyway, at a negative time or 150 % error).
+      r.totalMs = parseDouble("total_ms", f[cMs], 0, 1e300);
+      r.bytes = parseDouble("bytes", f[cBytes], 0, 1e300);
       // An empty error cell: bench measured nothing (no covered pixel); not plotted.
       if (f[cErr].empty()) {
         ++unmeasured;
         continue;
       }
-      r.errorPct = parseDouble("error_pct", f[cErr], -1e300, 1e300);
+      r.errorPct = parseDouble("error_pct", f[cErr], 0, 100);
     } catch (const UsageError& e) {
       throw UsageError(at() + e.what());
     }
@@ -143,8 +148,9 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
                                             : ": no row has a measured error_pct (" + why + ")"));
   }
   if (failed)
-    std::fprintf(stderr, "note: %s: %zu failed configuration%s not charted\n", csvPath.c_str(),
-                 failed, failed == 1 ? "" : "s");
+    std::fprintf(stderr, "note: %s: %zu failed configuration%s not charted: %s%s\n",
+                 csvPath.c_str(), failed, failed == 1 ? "" : "s", failedNames.c_str(),
+                 failed > 3 ? ", ..." : "");
   ChartSpec spec;
   spec.x = x;
   spec.title = std::string(chartHeadline(x)) + ": " + first[cScene] + ", " + first[cCamera];

@@ -201,7 +201,8 @@ std::optional<std::string> probeFolder(const fs::path& folder) {
   return std::nullopt;
 }
 
-/// Writes `text` to `path` (created or truncated); an error naming `path` or nothing.
+}  // namespace
+
 std::optional<std::string> writeFile(const std::string& path, const std::string& text) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) return path + ": cannot write (" + std::strerror(errno) + ")";
@@ -212,8 +213,6 @@ std::optional<std::string> writeFile(const std::string& path, const std::string&
   if (!ok) return path + ": cannot write (" + std::strerror(err) + ")";
   return std::nullopt;
 }
-
-}  // namespace
 
 /// True for a FIFO that no process reads now: opening it for writing would block forever.
 bool fifoWithoutReader(const std::string& path) {

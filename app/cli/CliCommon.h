@@ -93,6 +93,9 @@ void checkOutputFolder(const std::string& option, const std::string& folder);
 /// throws std::runtime_error (exit 1) naming `path`; no partial file is left behind.
 void writeAtomically(const std::string& path,
                      const std::function<std::optional<std::string>(const std::string&)>& write);
+/// Writes `bytes` to `path` (created or truncated), every write, flush and close checked; an
+/// error naming `path` ("p: cannot write (No space left on device)") or nothing.
+std::optional<std::string> writeFile(const std::string& path, const std::string& bytes);
 /// Text (plus a newline) and PNG through writeAtomically (parent folders are created).
 void writeText(const std::string& path, const std::string& text);
 void writePng(const std::string& path, const ImageRGBA8& img);

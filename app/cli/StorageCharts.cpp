@@ -17,15 +17,6 @@
 
 namespace sl::cli {
 
-#if SHADOWLAB_CLI_CHARTS
-namespace {
-std::optional<std::string> save(const QImage& image, const std::string& pngPath) {
-  if (!image.save(QString::fromStdString(pngPath), "PNG")) return "cannot write " + pngPath;
-  return std::nullopt;
-}
-}  // namespace
-#endif
-
 std::optional<std::string> writeEtaChart(const partition::EtaCurve& c, const std::string& pngPath) {
   if (c.eta.empty()) return "eta chart: no points";
 #if !SHADOWLAB_CLI_CHARTS
@@ -46,7 +37,7 @@ std::optional<std::string> writeEtaChart(const partition::EtaCurve& c, const std
   painter.setRenderHint(QPainter::TextAntialiasing);
   scene.render(&painter, QRectF(0, 0, w, h), QRectF(0, 0, w, h));
   painter.end();
-  return save(image, pngPath);
+  return savePng(image, pngPath);
 #endif
 }
 
@@ -103,7 +94,7 @@ std::optional<std::string> writeHemisphereChart(const partition::HemisphereFigur
   g.drawText(QRect(bx - 20, by + bh + 6, 110, 40), Qt::AlignHCenter | Qt::TextWordWrap,
              "S (log10 colour)");
   g.end();
-  return save(image, pngPath);
+  return savePng(image, pngPath);
 #endif
 }
 

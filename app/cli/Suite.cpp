@@ -153,7 +153,7 @@ Camera cameraOf(const JsonReader& r, const json& c, const std::string& path) {
   cam.farM = float(r.number(c, path, "far_m", cam.farM));
   if (auto e = cameraFieldError(cam, {"up", "near_m", "far_m"}))
     r.fail(jsonPath(path, e->first), e->second);
-  if (auto e = cam.validate()) r.fail(path, withoutCameraPrefix(*e));
+  if (auto e = cam.validate()) r.fail(path, Camera::withoutPrefix(*e));
   return cam;
 }
 
@@ -271,6 +271,10 @@ Expectation expectationOf(const JsonReader& r, const json& e, const std::string&
                "{technique, metric, op, value} or {better, worse, metric})");
     x.better = labelAt("better", false);
     x.worse = labelAt("worse", false);
+    if (x.better == x.worse)
+      r.fail(jsonPath(path, "worse"), "names '" + quoteText(x.worse, 60) +
+                                          "' as \"better\" does: it would compare a technique "
+                                          "with itself, which checks nothing");
     x.op = "<";
   } else {
     for (const char* k : {"technique", "op", "value"})
@@ -295,6 +299,12 @@ Expectation expectationOf(const JsonReader& r, const json& e, const std::string&
         r.fail(jsonPath(p, i), "names '" + quoteText(l, 60) + "', which the case does not run");
       x.except.push_back(l);
     }
+    if (x.except.size() >= labels.size() &&
+        std::all_of(labels.begin(), labels.end(), [&](const std::string& l) {
+          return std::find(x.except.begin(), x.except.end(), l) != x.except.end();
+        }))
+      r.fail(p, "leaves \"*\" no technique to check (the case runs: " + boundedLabels(labels) +
+                    "): the expectation would check nothing");
   }
   x.why = r.string(e, path, "why", "");
   x.xfail = r.string(e, path, "xfail", "");
@@ -379,6 +389,10 @@ std::vector<SuiteCase> parseSuite(const JsonReader& r, const json& root, double 
     if (const json* expect = JsonReader::member(c, "expect")) {
       const std::string ep = jsonPath(where, "expect");
       r.requireArray(*expect, ep);
+      if (expect->empty())
+        r.fail(ep,
+               "an empty list checks nothing (leave \"expect\" out for a case that only "
+               "reports its table)");
       for (std::size_t ei = 0; ei < expect->size(); ++ei)
         sc.expect.push_back(expectationOf(r, (*expect)[ei], jsonPath(ep, ei), labels));
     }

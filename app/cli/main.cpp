@@ -26,6 +26,7 @@
 #include "Commands.h"
 #include "Measure.h"
 #include "Montage.h"
+#include "core/JsonNumber.h"
 #include "algo/InputFile.h"
 #include "algo/metrics/BenchStats.h"
 #include "core/Preset.h"
@@ -202,7 +203,7 @@ json renderAndMeasure(sl::Renderer& r, const RenderConfig& cfg, sl::Renderer::Er
   j["texels"] = st.memory.texels();
   j["bytes"] = st.memory.bytes();
   json published = json::object();  // the last frame's
-  for (const auto& [k, v] : r.publication().numbers) published[k] = v;
+  for (const auto& [k, v] : r.publication().numbers) published[k] = sl::jsonNumber(v);
   j["published"] = published;
   json curves = json::object();  // the last frame's, those --publish asked for
   for (const auto& [k, v] : r.publication().curves) curves[k] = v;
@@ -581,6 +582,8 @@ int cmdCompare(Args& a) {
       rest.rest.push_back(o);
   }
   RenderConfig base = parseRender(rest, 1, false);
+  if (!montage.empty())
+    if (auto e = sl::cli::montageUnavailable()) throw UsageError(*e);
   if (!base.reference)
     throw UsageError(sl::ShadowReference::available()
                          ? "--no-reference: compare draws error images; it needs the ray-traced "
@@ -735,7 +738,7 @@ int cmdCompare(Args& a) {
                   : lightType == sl::LightType::Spot      ? "spot"
                                                           : "point",
                   dilate);
-    if (auto e = sl::cli::writeMontage(cells, title, columns, inset, montage)) throw UsageError(*e);
+    sl::cli::writeMontage(cells, title, columns, inset, montage);  // a write error: exit 1
     std::printf("wrote the montage %s\n", montage.c_str());
   }
   if (failed)

@@ -43,6 +43,10 @@ glm::vec3 Camera::forward() const {
   return glm::normalize(target - position);
 }
 
+std::string Camera::withoutPrefix(const std::string& error) {
+  return error.rfind("camera: ", 0) == 0 ? error.substr(8) : error;
+}
+
 std::optional<std::string> Camera::validate() const {
   auto finite = [](const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -48,6 +48,9 @@ struct Camera {
   /// below kMinNearM, far not above near or beyond kMaxFarM, fov out of (1, 170) degrees, up
   /// parallel to the view direction), or nothing when usable. Each starts "camera: ".
   std::optional<std::string> validate() const;
+  /// validate()'s error without its "camera: ", for a message whose own words already name
+  /// the camera ("camera 'tracker' ignored: ...", a JSON path "camera: ...").
+  static std::string withoutPrefix(const std::string& error);
   /// World-space corners of the view frustum between `nearM` and `farM`
   /// (0-3 near plane, 4-7 far plane).
   std::array<glm::vec3, 8> frustumCorners(float aspect, float nearM, float farM) const;

@@ -142,8 +142,14 @@ std::optional<std::string> Light::validate() const {
   if (type == LightType::Point) return std::nullopt;
   if (!finite(direction)) return "spot light: direction is not finite";
   if (!(glm::length(direction) > 1e-6f)) return "spot light: direction is zero";
-  if (!std::isfinite(outerConeDeg) || !(outerConeDeg > 0.0f && outerConeDeg < 90.0f))
-    return "spot light: outer cone angle must be in (0, 90) degrees";
+  if (!std::isfinite(outerConeDeg) || !(outerConeDeg > 0.0f && outerConeDeg <= kMaxSpotConeDeg)) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "spot light: outer cone angle must be in (0, %g] degrees, got %.7g "
+                  "(kMaxSpotConeDeg: one perspective shadow map covers less than a half-space)",
+                  double(kMaxSpotConeDeg), double(outerConeDeg));
+    return std::string(buf);
+  }
   if (!std::isfinite(innerConeDeg) || innerConeDeg < 0.0f)
     return "spot light: inner cone angle must be >= 0 degrees";
   if (innerConeDeg > outerConeDeg)

@@ -159,11 +159,23 @@ std::uint64_t declaredPublicationBytes(const TechniqueInfo& technique, const Par
   return bytes;
 }
 
+std::pair<int, int> publishedImageSize(int width, int height) {
+  const int n = (std::max(width, height) + kMaxPublishedImageSide - 1) / kMaxPublishedImageSide;
+  if (n <= 1) return {width, height};
+  return {(width + n - 1) / n, (height + n - 1) / n};
+}
+
+std::uint64_t publishedImageBytes(int width, int height) {
+  const auto [w, h] = publishedImageSize(width, height);
+  return 4 * std::uint64_t(w) * std::uint64_t(h);
+}
+
 PublicationDecl shadowMapPublicationDecl() {
-  return {"shadow map", PublicationKind::Image, "The shadow map as rendered (depth 0..1).",
-          "4 B x resolution^2", [](const ParamSet& p) {
-            const std::uint64_t r = std::uint64_t(p.getInt("resolution"));
-            return 4 * r * r;
+  return {"shadow map", PublicationKind::Image,
+          "The shadow map as rendered (depth 0..1; nearest-sampled to at most 2048 per side).",
+          "4 B x min(resolution, 2048)^2", [](const ParamSet& p) {
+            const int r = p.getInt("resolution");
+            return publishedImageBytes(r, r);
           }};
 }
 

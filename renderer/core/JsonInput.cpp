@@ -69,9 +69,64 @@ std::optional<std::pair<std::string, std::string>> cameraFieldError(const Camera
   return std::nullopt;
 }
 
-std::string withoutCameraPrefix(const std::string& error) {
-  return error.rfind("camera: ", 0) == 0 ? error.substr(8) : error;
-}
+namespace {
+
+/// Follows the JSON path while a SAX parse runs, so that a number the parser cannot hold
+/// (1e999) is named by where it is, not only by "not valid JSON".
+class PathTracker : public nlohmann::json_sax<json> {
+ public:
+  std::string failedToken;  ///< set by parse_error: the token the parser stopped at
+  /// The path of the value being read ("cases[0].frames"; "" at the top level).
+  std::string path() const {
+    std::string p;
+    for (const Level& l : levels_) p = l.array ? jsonPath(p, l.index) : jsonPath(p, l.key);
+    return p;
+  }
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override { return open(false); }
+  bool key(string_t& k) override {
+    levels_.back().key = k;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string& token,
+                   const nlohmann::detail::exception&) override {
+    failedToken = token;
+    return false;
+  }
+
+ private:
+  struct Level {
+    bool array = false;
+    std::size_t index = 0;  ///< arrays: the element being read
+    std::string key;        ///< objects: the member being read
+  };
+  std::vector<Level> levels_;
+
+  bool value() {  // a value ended: an array moves on to its next element
+    if (!levels_.empty() && levels_.back().array) ++levels_.back().index;
+    return true;
+  }
+  bool open(bool array) {
+    levels_.push_back({array, 0, {}});
+    return true;
+  }
+  bool close() {
+    levels_.pop_back();
+    return value();
+  }
+};
+
+}  // namespace
 
 json JsonReader::parseFile() const {
   std::vector<unsigned char> bytes;
@@ -95,7 +150,19 @@ json JsonReader::parseFile() const {
     std::string what = e.what();
     if (auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
     throw JsonInputError(file_ + ": not valid JSON: " + quoteText(what));
-  } catch (const json::exception& e) {
+  } catch (const json::out_of_range& e) {
+    // 406: a number beyond what a double holds ("1e999"); named with its path.
+    PathTracker tracker;
+    json::sax_parse(bytes.begin(), bytes.end(), &tracker, json::input_format_t::json,
+                    /*strict=*/true, /*ignore_comments=*/true);
+    if (e.id == 406 && !tracker.failedToken.empty()) {
+      const std::string where = tracker.path();
+      throw JsonInputError(file_ + ": " + (where.empty() ? std::string("top level") : where) +
+                           ": the number " + quoteText(tracker.failedToken, 60) +
+                           " is out of range (beyond +-1.8e308, the largest a double holds)");
+    }
+    throw JsonInputError(file_ + ": not valid JSON");
+  } catch (const json::exception&) {
     throw JsonInputError(file_ + ": not valid JSON");
   }
 }

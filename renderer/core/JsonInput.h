@@ -47,8 +47,6 @@ struct CameraFieldNames {
 /// a near plane below Camera::kMinNearM, a far plane beyond Camera::kMaxFarM.
 std::optional<std::pair<std::string, std::string>> cameraFieldError(const Camera& cam,
                                                                     const CameraFieldNames& keys);
-/// Camera::validate's error without its "camera: " (the reader's path names the camera).
-std::string withoutCameraPrefix(const std::string& error);
 
 /// Typed access to one file's JSON, throwing JsonInputError("FILE: PATH: ...").
 class JsonReader {

@@ -1,6 +1,7 @@
 #include "core/Preset.h"
 
 #include <algorithm>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -130,6 +131,14 @@ PresetLayout parseLayout(const JsonReader& r, const json& l) {
 void parseBody(const JsonReader& r, const json& j, const std::string& at, Preset& p) {
   p.title = r.string(j, at, "title", p.title);
   p.explanation = r.string(j, at, "explanation", p.explanation);
+  for (const auto& [key, text, limit, limitName] :
+       {std::tuple{"title", &p.title, kMaxPresetTitleBytes, "kMaxPresetTitleBytes"},
+        std::tuple{"explanation", &p.explanation, kMaxPresetExplanationBytes,
+                   "kMaxPresetExplanationBytes"}})
+    if (text->size() > limit)
+      r.fail(jsonPath(at, key), "a text of " + std::to_string(text->size()) +
+                                    " bytes, over the limit of " + std::to_string(limit) + " (" +
+                                    limitName + ")");
   const std::string scene = r.string(j, at, "scene", p.scene);
   if (scene != p.scene) p.camera.reset(), p.light.reset();  // another scene: its own
   p.scene = scene;
@@ -169,7 +178,7 @@ void parseBody(const JsonReader& r, const json& j, const std::string& at, Preset
     cam.farM = float(r.number(*c, cam_at, "farM", cam.farM));
     if (auto e = cameraFieldError(cam, {"up", "nearM", "farM"}))
       r.fail(jsonPath(cam_at, e->first), e->second);
-    if (auto err = cam.validate()) r.fail(cam_at, withoutCameraPrefix(*err));
+    if (auto err = cam.validate()) r.fail(cam_at, Camera::withoutPrefix(*err));
     p.camera = cam;
   }
   if (const json* l = JsonReader::member(j, "light")) {

@@ -20,6 +20,11 @@ inline constexpr std::size_t kMaxPresetLayoutDocks = 64;
 inline constexpr std::size_t kMaxPresetLayoutStateBytes = 64 * 1024;  ///< base64 text
 /// At most this many cases in one lesson ("cases").
 inline constexpr std::size_t kMaxPresetCases = 8;
+/// Limits on a lesson's text: the title reaches the window's menus and banner (the 300-byte
+/// rule of every text that reaches a title, kMaxMessageBytes); the explanation is laid out in
+/// the Lesson dock (the longest lesson's is ~2 KiB; one of 1 MB blocked the window 140 s).
+inline constexpr std::size_t kMaxPresetTitleBytes = 300;
+inline constexpr std::size_t kMaxPresetExplanationBytes = 16 * 1024;
 
 /// The split view's right half: its technique ("": the split view is off) and that
 /// technique's own parameter values (the shared view/shading ones are the main side's).

@@ -22,18 +22,44 @@ FloatImage readImage(FrameContext& ctx, const gl::Texture& texture, GLenum forma
   ctx.publication->readbackBytes += bytes;
   return img;
 }
+/// A depth texture (or one layer of an array) as a float image of at most
+/// kMaxPublishedImageSide per side: a larger one is blitted nearest-sampled into a temporary
+/// depth texture of publishedImageSize and that is read back (a 16384² map read whole took
+/// 1 GiB for one panel).
+FloatImage readDepth(FrameContext& ctx, const gl::Texture& depth, int layer) {
+  const int w = depth.width(), h = depth.height();
+  const auto [sw, sh] = publishedImageSize(w, h);
+  if (sw == w && sh == h) return readImage(ctx, depth, GL_DEPTH_COMPONENT, GL_FLOAT, layer);
+  const gl::Texture small = gl::Texture::create2D(depth.format(), sw, sh);
+  gl::Framebuffer from = gl::Framebuffer::create(), to = gl::Framebuffer::create();
+  if (layer < 0)
+    from.attach(GL_DEPTH_ATTACHMENT, depth);
+  else
+    from.attachLayer(GL_DEPTH_ATTACHMENT, depth, layer);
+  to.attach(GL_DEPTH_ATTACHMENT, small);
+  for (const gl::Framebuffer* f : {&from, &to}) {
+    glNamedFramebufferDrawBuffer(f->id(), GL_NONE);
+    glNamedFramebufferReadBuffer(f->id(), GL_NONE);
+  }
+  glBlitNamedFramebuffer(from.id(), to.id(), 0, 0, w, h, 0, 0, sw, sh, GL_DEPTH_BUFFER_BIT,
+                         GL_NEAREST);
+  FloatImage img = readImage(ctx, small, GL_DEPTH_COMPONENT, GL_FLOAT);
+  img.sourceWidth = w;
+  img.sourceHeight = h;
+  return img;
+}
 }  // namespace
 
 bool publishDepthLayer(FrameContext& ctx, const std::string& key, const gl::Texture& depth,
                        int layer) {
   if (!ctx.wants(key)) return false;
-  ctx.publication->images[key] = readImage(ctx, depth, GL_DEPTH_COMPONENT, GL_FLOAT, layer);
+  ctx.publication->images[key] = readDepth(ctx, depth, layer);
   return true;
 }
 
 bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& depth) {
   if (!ctx.wants(key)) return false;
-  ctx.publication->images[key] = readImage(ctx, depth, GL_DEPTH_COMPONENT, GL_FLOAT);
+  ctx.publication->images[key] = readDepth(ctx, depth, -1);
   return true;
 }
 

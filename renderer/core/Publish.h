@@ -11,9 +11,12 @@
 
 namespace sl {
 
-/// A depth texture as a float image (0..1). False (nothing read) when not requested.
+/// A depth texture as a float image (0..1). False (nothing read) when not requested. A map
+/// larger than kMaxPublishedImageSide per side is published nearest-sampled to
+/// publishedImageSize (FloatImage::sourceWidth/sourceHeight give the map's own size).
 bool publishDepth(FrameContext& ctx, const std::string& key, const gl::Texture& depth);
-/// One layer of a depth array texture (cascades, faces) as a float image (0..1).
+/// One layer of a depth array texture (cascades, faces) as a float image (0..1), bounded the
+/// same way.
 bool publishDepthLayer(FrameContext& ctx, const std::string& key, const gl::Texture& depth,
                        int layer);
 /// The red channel of a colour texture (R32F, or the first channel of any float-readable

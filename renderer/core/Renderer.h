@@ -141,7 +141,19 @@ std::vector<ParamDecl> rendererParamDecls();
 struct FloatImage {
   int width = 0, height = 0, channels = 1;
   std::vector<float> values;
+  /// The texture's size when the image is a downsampled view of it (a map larger than
+  /// kMaxPublishedImageSide per side); 0 when the image is the texture.
+  int sourceWidth = 0, sourceHeight = 0;
 };
+
+/// The largest side of an image a technique publishes from a texture: a larger map is read
+/// back nearest-sampled (every n-th texel, n the smallest integer that brings both sides within
+/// this), so a panel of a 16384² map reads 16 MiB, not 1 GiB.
+inline constexpr int kMaxPublishedImageSide = 2048;
+/// {width, height} of the image published from a width x height texture.
+std::pair<int, int> publishedImageSize(int width, int height);
+/// The bytes of one float per texel of that image (what publishing it reads back).
+std::uint64_t publishedImageBytes(int width, int height);
 
 /// Debug data a technique publishes each frame, only the keys requested
 /// (Renderer::requestPublications): images, curves and numbers. Each technique declares its

@@ -759,6 +759,54 @@ class Flattener {
     return "node " + std::to_string(index) + (n.name.empty() ? "" : " " + quoteInput(n.name));
   }
 
+  /// glTF's rules for a node's transform, which the flattening relies on: a matrix
+  /// decomposes into translation, rotation and scale (affine: last row 0, 0, 0, 1), a
+  /// rotation is a unit quaternion, every value is finite. A zero or non-finite quaternion and
+  /// a projective matrix are refused; a rotation of another length is normalised with a warning.
+  void checkNodeTransform(int index) {
+    const tinygltf::Node& node = model_.nodes[std::size_t(index)];
+    auto allFinite = [](const std::vector<double>& v) {
+      return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+    };
+    auto listed = [](const std::vector<double>& v) {
+      std::string text;
+      for (double x : v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.6g", x);
+        text += (text.empty() ? "" : ", ") + std::string(buf);
+      }
+      return text;
+    };
+    const std::pair<const char*, const std::vector<double>*> fields[] = {
+        {"matrix", &node.matrix},
+        {"translation", &node.translation},
+        {"rotation", &node.rotation},
+        {"scale", &node.scale}};
+    for (const auto& [name, values] : fields)
+      if (!allFinite(*values))
+        fail(nodeLabel(index) + ": " + name + " has a value that is not finite");
+    if (node.matrix.size() == 16) {
+      const std::vector<double>& m = node.matrix;  // column-major: the last row is 3, 7, 11, 15
+      const std::vector<double> lastRow{m[3], m[7], m[11], m[15]};
+      if (std::abs(m[3]) > 1e-6 || std::abs(m[7]) > 1e-6 || std::abs(m[11]) > 1e-6 ||
+          std::abs(m[15] - 1.0) > 1e-6)
+        fail(nodeLabel(index) + ": matrix is not affine (its last row is " + listed(lastRow) +
+             ", not 0, 0, 0, 1): glTF requires a node matrix to decompose into translation, "
+             "rotation and scale");
+    }
+    if (node.rotation.size() == 4) {
+      const double len = glm::length(
+          glm::dvec4(node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]));
+      if (!(len > 1e-12))
+        fail(nodeLabel(index) + ": rotation (" + listed(node.rotation) +
+             ") is not a unit quaternion (length 0): glTF requires a unit quaternion");
+      if (std::abs(len - 1.0) > 1e-3)
+        warnOnce("rotation length", nodeLabel(index) + ": rotation of length " + listed({len}) +
+                                        " normalised (glTF requires unit quaternions; other "
+                                        "nodes like it are not listed)");
+    }
+  }
+
   /// Depth-first, parents before children (the order a recursive walk gives), with an
   /// explicit stack so that a chain of a million nodes cannot overflow the call stack. glTF
   /// requires the hierarchy to be a set of disjoint trees: a node reached a second time (a
@@ -795,6 +843,7 @@ class Flattener {
              " node instances in the scene: refused (kMaxNodeInstances)");
       parentOf[std::size_t(index)] = parent;
       onPath[std::size_t(index)] = true;
+      checkNodeTransform(index);
       NodeInstance inst;
       inst.node = index;
       inst.parentWorld = parentWorld;
@@ -1107,11 +1156,16 @@ class Flattener {
           light.direction = -glm::vec3(towards / len);
           light.outerConeDeg = float(glm::degrees(gl.spot.outerConeAngle));
           light.innerConeDeg = float(glm::degrees(gl.spot.innerConeAngle));
-          if (light.outerConeDeg >= 89.0f && light.outerConeDeg <= 90.0f) {
-            warn(label + ": outer cone angle " + std::to_string(light.outerConeDeg) +
-                 " degrees narrowed to 89 (one perspective shadow map covers less than a "
+          // glTF allows up to 90 degrees; every light ShadowLab renders stays within
+          // kMaxSpotConeDeg (Light::validate refuses wider cones from other inputs).
+          if (light.outerConeDeg > kMaxSpotConeDeg && light.outerConeDeg <= 90.0f) {
+            char angle[32];
+            std::snprintf(angle, sizeof angle, "%.7g", double(light.outerConeDeg));
+            warn(label + ": outer cone angle " + angle + " degrees narrowed to " +
+                 std::to_string(int(kMaxSpotConeDeg)) +
+                 " (kMaxSpotConeDeg: one perspective shadow map covers less than a "
                  "half-space)");
-            light.outerConeDeg = 89.0f;
+            light.outerConeDeg = kMaxSpotConeDeg;
             light.innerConeDeg = std::min(light.innerConeDeg, light.outerConeDeg);
           }
         }
@@ -1234,7 +1288,7 @@ class Flattener {
       bookmark.name = cameraName(inst);
       bookmark.camera = cameraFromPose(position, rotation, lens->fovYDeg, lens->nearM, far, dist);
       if (auto problem = bookmark.camera.validate()) {
-        warn("camera " + inQuotes(bookmark.name) + " ignored: " + *problem);
+        warn("camera " + inQuotes(bookmark.name) + " ignored: " + Camera::withoutPrefix(*problem));
         continue;
       }
       scene_.cameras.push_back(std::move(bookmark));
@@ -1682,6 +1736,10 @@ void checkGlbHeader(const std::vector<unsigned char>& bytes) {
   if (length > size)
     fail("truncated .glb: the header declares " + std::to_string(length) +
          " bytes but the file has " + std::to_string(size));
+  if (length < size)
+    fail("malformed .glb: the header declares " + std::to_string(length) +
+         " bytes but the file has " + std::to_string(size) + " (" + std::to_string(size - length) +
+         " bytes after the declared end)");
   if (length < 20) fail("truncated .glb: no JSON chunk");
   std::uint32_t jsonLength = readU32(bytes, 12), jsonType = readU32(bytes, 16);
   if (jsonType != 0x4E4F534Au) fail("malformed .glb: the first chunk is not JSON");

@@ -3,7 +3,8 @@
 # ID:KEY=V syntax) with --set, --camera and --light for all; --montage writes one labelled PNG
 # (each configuration's image above its error image, error pixels dilated for print,
 # configuration / texels / error / time under each, an optional zoom inset). A technique that cannot render the
-# light, or an unknown one, is refused naming it; nothing is written.
+# light, or an unknown one, is refused naming it; nothing is written. The montage is written
+# atomically, and a write error exits 1 naming the file.
 set -uo pipefail
 cli=$1 out=$3/compare_montage
 here=$(cd "$(dirname "$0")" && pwd)
@@ -47,5 +48,21 @@ err=$("$cli" compare --scene corridor --technique uniform --size 64x36 --out-dir
   --montage "$out/refused.png" --inset 0.9,0.1,0.2,0.2 2>&1 >/dev/null); rc=$?
 [ $rc = 2 ] && grep -q "inside the image" <<<"$err" && ok "inset outside the image: exit 2: $err" || bad "inset: exit $rc: $err"
 [ ! -e "$out/refused.png" ] && [ -z "$(ls -A "$out/refused" 2>/dev/null)" ] && ok "nothing written by a refused run" || bad "a refused run wrote $(ls "$out/refused")"
+# The montage is written like every output: a temporary file in its folder, renamed into place
+# (an existing montage is replaced by another file, not overwritten in place; no temporary file
+# is left); a write error exits 1 with one line naming the file, not 2 (bad input).
+mkdir -p "$out/again"
+echo "an older montage" >"$out/again/montage.png"
+before=$(stat -c %i "$out/again/montage.png")
+"$cli" compare --scene corridor --technique uniform --size 64x36 --out-dir "$out/again/cmp" \
+  --montage "$out/again/montage.png" >/dev/null 2>&1 || bad "second montage: exit $?"
+[ "$(stat -c %i "$out/again/montage.png")" != "$before" ] && head -c 4 "$out/again/montage.png" | grep -q PNG &&
+  ok "the montage replaced by a rename" || bad "the montage was rewritten in place"
+[ -z "$(ls -A "$out/again" | grep -v '^montage.png$\|^cmp$')" ] && ok "no temporary file left" ||
+  bad "left in the folder: $(ls -A "$out/again")"
+err=$("$cli" compare --scene corridor --technique uniform --size 64x36 --out-dir "$out/full" \
+  --montage /dev/full 2>&1 >/dev/null); rc=$?
+[ $rc = 1 ] && [ "$(wc -l <<<"$err")" = 1 ] && grep -qF "shadowlab-cli: /dev/full: cannot write (No space left on device)" <<<"$err" &&
+  ok "a montage write error: exit 1 naming the file: $err" || bad "montage to /dev/full: exit $rc: $err"
 [ $fail = 0 ] && echo PASS
 exit $fail

@@ -65,7 +65,11 @@ w.writerows(failed + good)
 PY
 "$cli" chart --csv "$out/mixed.csv" --chart "$out/mixed.png" >/dev/null 2>"$out/chart-mixed.stderr"
 check "chart of a mixed CSV: exit 0" test $? -eq 0
-check "chart notes the failed row" grep -q "1 failed configuration not charted" "$out/chart-mixed.stderr"
+check "chart lists the failed row apart, naming it" grep -q "1 failed configuration not charted: uniform$" "$out/chart-mixed.stderr"
+# A chart the disk cannot hold is a write error (exit 1 naming the file), not a silent success.
+"$cli" chart --csv "$out/mixed.csv" --chart /dev/full >/dev/null 2>"$out/chart-full.stderr"
+check "chart to a full disk: exit 1" test $? -eq 1
+check "chart to a full disk: names the file" grep -qF "/dev/full: cannot write (No space left on device)" "$out/chart-full.stderr"
 
 # compare: a configuration that fails is a row saying so (no image), the others go on, exit 1.
 "$cli" compare --scene "$out/every-frame-fails.gltf" --path dolly --light 30,45 \

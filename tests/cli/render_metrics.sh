@@ -23,3 +23,16 @@ assert m["error_pct"] < 0.5, f"error_pct {m['error_pct']}"
 assert abs(m["error_pct"] - m["false_lit_pct"] - m["false_shadow_pct"]) < 1e-9
 print(f"ok: error_pct={m['error_pct']:.4f} total_ms={m['total_ms']:.1f} ({m['timing_method']})")
 PY
+
+# A published number that is not finite is named, never null (which reads as "not measured"):
+# lispsm falls back to the orthographic map with the sun at 5 degrees on corridor, n' infinite.
+"$cli" render --scene corridor --technique lispsm --light 0,5 --size 64x36 \
+  --out "$out/fallback.png" --metrics "$out/fallback.json" >/dev/null
+python3 - "$out/fallback.json" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))["published"]
+assert p["warp.fallback"] == 1, p
+assert p["warp.n_prime"] == "inf", p
+assert all(v is not None for v in p.values()), p
+print("ok: warp.n_prime", p["warp.n_prime"], "on a fallback")
+PY

@@ -284,9 +284,8 @@ TEST(GltfLoaderLimits, BracketsInsideStringsDoNotCount) {
   EXPECT_TRUE(r) << r.error;
 }
 
-TEST(GltfLoaderLimits, DeepJsonInAGlbChunkIsRefused) {
-  fs::path dir = outDir("deep-glb");
-  std::string json = R"({"asset":{"version":"2.0"},"extras":)" + deepArray(100000) + "}";
+/// A .glb of one JSON chunk (padded to 4 bytes), its header declaring exactly that.
+std::string glbOf(std::string json) {
   while (json.size() % 4) json += ' ';
   std::string glb = "glTF";
   auto u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
@@ -294,8 +293,13 @@ TEST(GltfLoaderLimits, DeepJsonInAGlbChunkIsRefused) {
   u32(std::uint32_t(20 + json.size()));
   u32(std::uint32_t(json.size()));
   u32(0x4E4F534Au);
-  glb += json;
-  writeFile(dir / "deep.glb", glb);
+  return glb + json;
+}
+
+TEST(GltfLoaderLimits, DeepJsonInAGlbChunkIsRefused) {
+  fs::path dir = outDir("deep-glb");
+  writeFile(dir / "deep.glb",
+            glbOf(R"({"asset":{"version":"2.0"},"extras":)" + deepArray(100000) + "}"));
   expectRefused(dir / "deep.glb", {"the JSON chunk is nested deeper than 256", "kMaxJsonDepth"});
 }
 
@@ -373,6 +377,92 @@ TEST(GltfLoaderLimits, OutOfRangeChildIsNamed) {
 
 // 2^20 + 1 nodes are 2^20 + 1 JSON objects: refused before parsing (kMaxJsonContainers,
 // 2^18), so kMaxNodeInstances (a hierarchy is a tree: one instance per node) stays a backstop.
+// What glTF requires of a node's transform: a matrix that decomposes into TRS (affine), a
+// unit quaternion. A projective matrix or a zero quaternion was flattened silently (the zero
+// one as no rotation); a quaternion of another length is normalised, with a warning.
+TEST(GltfLoaderLimits, NodeTransformsGltfForbidsAreRefused) {
+  fs::path dir = outDir("node-transforms");
+  writeFile(
+      dir / "projective.gltf",
+      gltfText(R"({"mesh":0,"name":"p","matrix":[1,0,0,0, 0,1,0,0, 0,0,1,0.5, 0,0,0,1]})", "0"));
+  expectRefused(dir / "projective.gltf",
+                {"node 0 'p': matrix is not affine (its last row is 0, 0, 0.5, 1, not 0, 0, 0, "
+                 "1): glTF requires a node matrix to decompose into translation, rotation and "
+                 "scale"});
+  writeFile(dir / "zero-quaternion.gltf",
+            gltfText(R"({"children":[1]},{"mesh":0,"rotation":[0,0,0,0]})", "0"));
+  expectRefused(dir / "zero-quaternion.gltf",
+                {"node 1: rotation (0, 0, 0, 0) is not a unit quaternion (length 0): glTF "
+                 "requires a unit quaternion"});
+
+  writeFile(dir / "long-quaternion.gltf", gltfText(R"({"mesh":0,"rotation":[0,0,0,2]})", "0"));
+  SceneLoadResult r = loadGltf(dir / "long-quaternion.gltf");
+  ASSERT_TRUE(r) << r.error;
+  bool warned = false;
+  for (const std::string& w : r.scene->warnings)
+    warned = warned || w.find("node 0: rotation of length 2 normalised") != std::string::npos;
+  EXPECT_TRUE(warned);
+  EXPECT_FLOAT_EQ(r.scene->primitives[0].positions[1].x, 1.0f);  // the identity rotation
+}
+
+// A camera the loader cannot use is named once: "camera 'far' ignored: position, target or
+// up is not finite", not "... ignored: camera: position ...".
+TEST(GltfLoaderLimits, IgnoredCamerasAreNamedOnce) {
+  fs::path dir = outDir("far-camera");
+  writeFile(dir / "far.gltf", gltfText(R"({"mesh":0},{"translation":[1e308,0,0],"children":[2]},)"
+                                       R"({"camera":0,"translation":[1e308,0,0]})",
+                                       "0,1", triangleDataUri(),
+                                       R"(,"cameras":[{"name":"far","type":"perspective",)"
+                                       R"("perspective":{"yfov":0.8,"znear":0.1}}])"));
+  SceneLoadResult r = loadGltf(dir / "far.gltf");
+  ASSERT_TRUE(r) << r.error;
+  EXPECT_TRUE(r.scene->cameras.empty());
+  std::string warning;
+  for (const std::string& w : r.scene->warnings)
+    if (w.find("camera 'far'") != std::string::npos) warning = w;
+  EXPECT_NE(warning.find("camera 'far' ignored: position, target or up is not finite"),
+            std::string::npos)
+      << warning;
+  EXPECT_EQ(warning.find("camera: "), std::string::npos) << warning;
+}
+
+TEST(GltfLoaderLimits, BytesAfterAGlbsDeclaredLengthAreRefused) {
+  fs::path dir = outDir("glb-trailing");
+  const std::string exact = glbOf(gltfText(R"({"mesh":0})", "0"));
+  writeFile(dir / "exact.glb", exact);
+  SceneLoadResult r = loadGltf(dir / "exact.glb");
+  EXPECT_TRUE(r) << r.error;
+  writeFile(dir / "trailing.glb", exact + std::string(8, '\0'));
+  expectRefused(dir / "trailing.glb",
+                {"malformed .glb: the header declares " + std::to_string(exact.size()) +
+                 " bytes but the file has " + std::to_string(exact.size() + 8) +
+                 " (8 bytes after the declared end)"});
+}
+
+// glTF allows spot cones up to 90 degrees; ShadowLab renders none wider than kMaxSpotConeDeg
+// (Light::validate), so the loader narrows them and says so.
+TEST(GltfLoaderLimits, SpotConesWiderThanTheLimitAreNarrowed) {
+  fs::path dir = outDir("wide-spot");
+  const std::string lights =
+      R"(,"extensionsUsed":["KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":)"
+      R"({"lights":[{"name":"lamp","type":"spot","spot":{"outerConeAngle":1.5707946}}]}})";
+  writeFile(dir / "wide.gltf", gltfText(R"({"mesh":0},{"name":"lamp-node","translation":[0,3,0],)"
+                                        R"("rotation":[-0.7071068,0,0,0.7071068],)"
+                                        R"("extensions":{"KHR_lights_punctual":{"light":0}}})",
+                                        "0,1", triangleDataUri(), lights));
+  SceneLoadResult r = loadGltf(dir / "wide.gltf");
+  ASSERT_TRUE(r) << r.error;
+  ASSERT_TRUE(r.scene->light);
+  EXPECT_EQ(r.scene->light->outerConeDeg, kMaxSpotConeDeg);
+  EXPECT_FALSE(r.scene->light->validate());
+  bool warned = false;
+  for (const std::string& w : r.scene->warnings)
+    warned = warned || w.find(
+                           "spot light 'lamp': outer cone angle 89.9999 degrees narrowed to "
+                           "89 (kMaxSpotConeDeg") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 TEST(GltfLoaderLimits, TooManyNodesAreRefusedBeforeParsing) {
   fs::path dir = outDir("instances");
   const std::size_t count = (std::size_t(1) << 20) + 1;

@@ -77,7 +77,19 @@ TEST(Light, ValidateNamesWhatIsWrong) {
   EXPECT_NE(err(Light::spot({0, 1, 0}, {0, -1, 0}, 30, 40)).find("inner cone"), std::string::npos);
   EXPECT_NE(err(Light::spot({0, 1, 0}, {0, -1, 0}, 30, -1)).find("inner cone"), std::string::npos);
   EXPECT_NE(err(Light::spot({0, 1, 0}, {0, -1, 0}, 30, 0, -2)).find("range"), std::string::npos);
-  EXPECT_FALSE(Light::spot({0, 1, 0}, {0, -1, 0}, 89.9f, 89.9f, 3).validate());
+  EXPECT_FALSE(Light::spot({0, 1, 0}, {0, -1, 0}, kMaxSpotConeDeg, kMaxSpotConeDeg, 3).validate());
+}
+
+// One rule for every entry point (--light, presets, suites, the GUI): no cone wider than
+// kMaxSpotConeDeg; the glTF loader narrows its (legal) wider cones to it instead.
+TEST(Light, SpotConesWiderThanTheLimitAreRefusedNamingIt) {
+  const std::string e =
+      Light::spot({0, 1, 0}, {0, -1, 0}, 89.9999f).validate().value_or("accepted");
+  EXPECT_EQ(e,
+            "spot light: outer cone angle must be in (0, 89] degrees, got 89.9999 "
+            "(kMaxSpotConeDeg: one perspective shadow map covers less than a half-space)");
+  EXPECT_TRUE(
+      Light::spot({0, 1, 0}, {0, -1, 0}, std::nextafter(kMaxSpotConeDeg, 90.0f)).validate());
 }
 
 TEST(Light, DescribeAndTypeNames) {

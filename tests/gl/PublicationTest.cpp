@@ -152,5 +152,61 @@ TEST(Publication, EveryPublishedKeyIsDeclaredAndEveryPassIsTimed) {
   }
 }
 
+// A map larger than kMaxPublishedImageSide per side is published as a nearest-sampled view of
+// at most that (a panel of a 16384² map read back 1 GiB, the GUI took 4.6 GB): the image says
+// the map's own size, the bytes read are the view's and match the declared cost, and the view
+// holds the map's depths (the same range as the map at its published size).
+TEST(Publication, LargeMapsArePublishedDownsampled) {
+  EXPECT_EQ(publishedImageSize(2048, 2048), std::make_pair(2048, 2048));
+  EXPECT_EQ(publishedImageSize(4096, 4096), std::make_pair(2048, 2048));
+  EXPECT_EQ(publishedImageSize(16384, 16384), std::make_pair(2048, 2048));
+  EXPECT_EQ(publishedImageSize(6000, 100), std::make_pair(2000, 34));
+  EXPECT_EQ(publishedImageBytes(16384, 16384), 4ull * 2048 * 2048);
+
+  for (const char* technique : {"uniform", "cascades"}) {
+    SCOPED_TRACE(technique);
+    auto r = test::makeRenderer("plane-box", technique);
+    ASSERT_TRUE(r);
+    const TechniqueInfo& info = *Renderer::findTechnique(technique);
+    const std::set<std::string> keys{technique == std::string("uniform") ? "shadow map"
+                                                                         : "partition.*.map"};
+    ASSERT_FALSE(r->params().set("resolution", 2048));
+    r->requestPublications(keys);
+    ASSERT_FALSE(r->renderFrame(160, 90, 0));
+    std::vector<std::pair<float, float>> fullRange;  // per map: min and max depth below 1
+    for (const auto& [key, image] : r->publication().images) {
+      EXPECT_EQ(image.width, 2048);
+      EXPECT_EQ(image.sourceWidth, 0);
+      float lo = 1, hi = 0;
+      for (float v : image.values)
+        if (v < 1) lo = std::min(lo, v), hi = std::max(hi, v);
+      fullRange.push_back({lo, hi});
+    }
+
+    ASSERT_FALSE(r->params().set("resolution", 8192));
+    ASSERT_FALSE(r->renderFrame(160, 90, 0));
+    const Publication& pub = r->publication();
+    ASSERT_EQ(pub.images.size(), fullRange.size());
+    std::size_t i = 0;
+    for (const auto& [key, image] : pub.images) {
+      SCOPED_TRACE(key);
+      EXPECT_EQ(image.width, 2048);
+      EXPECT_EQ(image.height, 2048);
+      EXPECT_EQ(image.sourceWidth, 8192);
+      EXPECT_EQ(image.sourceHeight, 8192);
+      float lo = 1, hi = 0;
+      for (float v : image.values)
+        if (v < 1) lo = std::min(lo, v), hi = std::max(hi, v);
+      EXPECT_NEAR(lo, fullRange[i].first, 2e-3f);  // the same scene seen at the same depths
+      EXPECT_NEAR(hi, fullRange[i].second, 2e-3f);
+      ++i;
+    }
+    EXPECT_EQ(r->stats().publicationBytes, heldBytes(pub));
+    EXPECT_EQ(r->stats().publicationBytes, declaredPublicationBytes(info, r->params(), keys));
+    EXPECT_EQ(r->stats().publicationBytes, 4ull * 2048 * 2048 * pub.images.size());
+    test::expectNoGlErrors(*r);
+  }
+}
+
 }  // namespace
 }  // namespace sl

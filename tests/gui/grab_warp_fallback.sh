@@ -4,7 +4,8 @@
 # panel says "Fallback to the uniform map" with the algorithm's cause, η and n' read as unused,
 # and the Storage factor panel marks the scheme's fallback; on corridor (light from the side)
 # the same technique warps: no fallback, η 0 and n' > 0 drawn. Both times the Storage factor
-# panel draws its η mark and the predicted m next to the frame's measured m.
+# panel draws its η mark and the predicted m next to the frame's measured m. published.json
+# names the fallback's infinite n' "inf" (JSON has no infinity; null would read as unmeasured).
 # usage: grab_warp_fallback.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1
@@ -36,6 +37,9 @@ p, s = d["perspective"], d["storage"]
 assert p["fallback"] is True, p
 assert "square" in p["cause"] and "uniform" in p["cause"], p
 assert s["fallback"] is True and s["scheme"].startswith("one warp, eta 0"), s
+# The fallback's n' is infinite: named in published.json, never null ("not measured").
+n = json.load(open(f"{out}/dueling/published.json"))["numbers"]
+assert n["warp.n_prime"] == "inf", n.get("warp.n_prime")
 c = panels("corridor")
 q, t = c["perspective"], c["storage"]
 assert q["fallback"] is False and q["eta"] == 0 and q["n_prime"] > 0, q

@@ -2,7 +2,8 @@
 # The GUI never shows 0 % for an error it did not measure: a view that sees only sky (no
 # covered pixel) and a light the technique refuses (the frame fails) are grabbed; the status
 # line reads "error n/a (...)" and the grab's published.json has error_pct null with the reason
-# (and frame_failure for the failed frame), never 0.
+# (and frame_failure for the failed frame), never 0. The refused light is a problem of the
+# grab: it exits 1 (it exited 0); the sky is not: 0.
 # usage: unmeasured_error.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1 data=$2
@@ -16,8 +17,11 @@ for case in sky refused-light; do
   rc=0
   timeout 300 "$app" --lesson "$data/presets/unmeasured-$case.json" --grab "$out/$case" \
     --grab-after 3 >"$out/$case.stdout" 2>"$out/$case.stderr" || rc=$?
-  # A refused light is a problem the grab reports (non-zero exit is allowed); the grab's
-  # files must be there either way.
+  # A refused light is a problem the grab reports: it exits 1 (the sky is no problem: 0); the
+  # grab's files are there either way.
+  want=0
+  [[ $case == refused-light ]] && want=1
+  [[ $rc -eq $want ]] || { echo "FAIL: $case: exit $rc, expected $want"; cat "$out/$case.stderr"; exit 1; }
   [[ -s "$out/$case/published.json" ]] ||
     { echo "FAIL: $case: no published.json (exit $rc)"; cat "$out/$case.stderr"; exit 1; }
   python3 - "$case" "$out/$case/published.json" <<'PY'

@@ -127,10 +127,10 @@ TechniqueInfo CascadedShadowMap::info() {
   info.publications = {
       {"partition.*.map", PublicationKind::ImageSet,
        "Every partition's depth map as rendered (depth 0..1), i = 0..k-1.",
-       "4 B x resolution^2 x partitions",
+       "4 B x min(resolution, 2048)^2 x partitions",
        [](const ParamSet& ps) {
-         const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
-         return 4 * r * r * std::uint64_t(ps.getInt("partitions"));
+         const int r = ps.getInt("resolution");
+         return publishedImageBytes(r, r) * std::uint64_t(ps.getInt("partitions"));
        }},
       PartitionMStats::publicationDecl([](const ParamSet& ps) { return ps.getInt("partitions"); }),
       {"partition.count", PublicationKind::Number, "k, the number of partitions.", "", {}},

@@ -62,10 +62,10 @@ TechniqueInfo CubeShadowMap::info() {
        "Every rendered face's map: the distance from the light along each texel centre's ray, "
        "(d - cube.near_m) / (cube.far_m - cube.near_m), 1 = nothing; i = face 0..5 (+x, -x, "
        "+y, -y, +z, -z).",
-       "4 B x resolution^2 x faces (6 for a point light)",
+       "4 B x min(resolution, 2048)^2 x faces (6 for a point light)",
        [](const ParamSet& ps) {
-         const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
-         return 4 * r * r * 6;
+         const int r = ps.getInt("resolution");
+         return publishedImageBytes(r, r) * 6;
        }},
       {"cube.faces",
        PublicationKind::Number,

@@ -75,10 +75,10 @@ TechniqueInfo DualParaboloidShadowMap::info() {
   info.publications = {
       {"half.*.map", PublicationKind::ImageSet,
        "Each hemisphere's map (window depth = distance / far), i = 0 (along dp.axis), 1.",
-       "4 B x resolution^2 x hemispheres (2 for a point light)",
+       "4 B x min(resolution, 2048)^2 x hemispheres (2 for a point light)",
        [](const ParamSet& ps) {
-         const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
-         return 4 * r * r * 2;
+         const int r = ps.getInt("resolution");
+         return publishedImageBytes(r, r) * 2;
        }},
       {"dp.far_m", PublicationKind::Number, "The depth range's far end (m).", "", {}},
   };

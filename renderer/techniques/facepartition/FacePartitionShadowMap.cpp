@@ -90,10 +90,10 @@ TechniqueInfo FacePartitionShadowMap::info() {
        "Every face slot's depth map as rendered (depth 0..1, warped; 1 everywhere when the slot "
        "is unused), i = 5 s + f for depth slice s and f = 0 near, 1 -x, 2 +x, 3 -y (bottom), "
        "4 +y (top).",
-       "4 B x resolution^2 x 5 x face.zsplits",
+       "4 B x min(resolution, 2048)^2 x 5 x face.zsplits",
        [](const ParamSet& ps) {
-         const std::uint64_t r = std::uint64_t(ps.getInt("resolution"));
-         return 4 * r * r * std::uint64_t(mapsFor(ps));
+         const int r = ps.getInt("resolution");
+         return publishedImageBytes(r, r) * std::uint64_t(mapsFor(ps));
        }},
       PartitionMStats::publicationDecl(mapsFor),
       number("partition.count", "Number of face slots (5 x face.zsplits)."),

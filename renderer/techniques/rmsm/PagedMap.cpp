@@ -115,13 +115,14 @@ std::vector<PublicationDecl> pagedMapPublicationDecls() {
        {}},
       {"pages.pool.depth", PublicationKind::Image,
        "The physical pool's depth texture as rendered (0..1), pages side by side.",
-       "4 B x pool texels (ceil(sqrt(pool.pages)) columns of page.size^2)",
+       "4 B x pool texels (ceil(sqrt(pool.pages)) columns of page.size^2; nearest-sampled to "
+       "at most 2048 per side)",
        [](const ParamSet& ps) {
-         const std::uint64_t pages = std::uint64_t(ps.getInt("pool.pages"));
-         const std::uint64_t cols = std::uint64_t(poolColumnsFor(int(pages)));
-         const std::uint64_t rows = (pages + cols - 1) / cols;
-         const std::uint64_t side = std::uint64_t(ps.getInt("page.size"));
-         return 4 * cols * rows * side * side;
+         const int pages = ps.getInt("pool.pages");
+         const int cols = poolColumnsFor(pages);
+         const int rows = (pages + cols - 1) / cols;
+         const int side = ps.getInt("page.size");
+         return publishedImageBytes(cols * side, rows * side);
        }},
       {"pages.pool.columns", PublicationKind::Number, "Pages per row of the pool.", "", {}},
       {"pages.requests.compacted",

@@ -106,8 +106,9 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
   d.back().what = "The warped shadow map as rendered (depth 0..1).";
   d.push_back({"shadow map.uniform", K::Image,
                "An unwarped map of the same size, for contrast (rendered only while asked for).",
-               "4 B x resolution^2",
-               floats([](const ParamSet& p) { return smRes(p) * smRes(p); })});
+               "4 B x min(resolution, 2048)^2", [](const ParamSet& p) {
+                 return publishedImageBytes(int(smRes(p)), int(smRes(p)));
+               }});
   d.push_back({"importance", K::Image,
                "The 2D importance map before the collapse (backward analysis builds it only "
                "while asked for).",

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
@@ -76,6 +77,18 @@ ShadowMapPanel::ShadowMapPanel(QWidget* parent) : PublicationPanel(parent) {
   setContent(content);
 }
 
+namespace {
+/// "2048×2048", or "16384×16384 (shown at 2048×2048)" for a map published downsampled.
+QString mapSizeText(const sl::FloatImage& image) {
+  const QString shown = QStringLiteral("%1×%2").arg(image.width).arg(image.height);
+  if (image.sourceWidth <= 0) return shown;
+  return QCoreApplication::translate("ShadowMapPanel", "%1×%2 (shown at %3)")
+      .arg(image.sourceWidth)
+      .arg(image.sourceHeight)
+      .arg(shown);
+}
+}  // namespace
+
 void ShadowMapPanel::showPublication(const sl::Publication& pub) {
   auto sm = pub.images.find("shadow map");
   if (sm == pub.images.end() || sm->second.width <= 0) {
@@ -93,19 +106,16 @@ void ShadowMapPanel::showPublication(const sl::Publication& pub) {
   warpY_ = curve("warp.y");
   const bool warped = warpX_.size() >= 2 || warpY_.size() >= 2;
   showDepth(warped_, sm->second,
-            warped ? tr("Warped shadow map %1×%2 (as rendered), warp grid")
-                         .arg(sm->second.width)
-                         .arg(sm->second.height)
-                   : tr("Shadow map %1×%2").arg(sm->second.width).arg(sm->second.height));
+            (warped ? tr("Warped shadow map %1 (as rendered), warp grid") : tr("Shadow map %1"))
+                .arg(mapSizeText(sm->second)));
   auto uni = pub.images.find("shadow map.uniform");
   // A map that does not warp takes the whole panel (a projector's big panel): no empty
   // "unwarped" half beside it.
   uniform_->setVisible(warped || (uni != pub.images.end() && uni->second.width > 0));
   if (uni != pub.images.end() && uni->second.width > 0) {
     showDepth(uniform_, uni->second,
-              tr("Unwarped (uniform) map %1×%2, warped texel grid pulled back")
-                  .arg(uni->second.width)
-                  .arg(uni->second.height));
+              tr("Unwarped (uniform) map %1, warped texel grid pulled back")
+                  .arg(mapSizeText(uni->second)));
   } else {
     uniform_->clearImage(warped ? tr("This technique publishes no unwarped map for contrast.")
                                 : tr("This technique does not warp: its map is the uniform "
@@ -122,6 +132,8 @@ void ShadowMapPanel::showPublication(const sl::Publication& pub) {
                              "the warped one)."));
   drawn_ = {{QStringLiteral("width"), sm->second.width},
             {QStringLiteral("height"), sm->second.height},
+            {QStringLiteral("map_width"),
+             sm->second.sourceWidth ? sm->second.sourceWidth : sm->second.width},
             {QStringLiteral("warped"), warped},
             {QStringLiteral("uniform_published"), uni != pub.images.end()}};
   updateOverlays();

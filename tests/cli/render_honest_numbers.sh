@@ -36,9 +36,11 @@ check "rtw-backward: no rotation_settled" \
 check "da-rtw differs from rtw-backward" \
   bash -c "! cmp -s '$out/da-rtw.png' '$out/rtw-backward.png'"
 # The measured frames run without publishing: da-rtw holds its documented resources only
-# (rtw-backward's + the moment IM and its chain), not the panels' 2D IM.
-check "da-rtw bytes = rtw-backward bytes + moments" test \
-  "$(( $(field "$out/da-rtw.json" bytes) - $(field "$out/rtw-backward.json" bytes) ))" == 589816
+# (rtw-backward's + the moment IM and its chain + the last frame's two 512-texel 1D maps of the
+# spread gate), not the panels' 2D IM.
+check "da-rtw bytes = rtw-backward bytes + moments + spread gate" test \
+  "$(( $(field "$out/da-rtw.json" bytes) - $(field "$out/rtw-backward.json" bytes) ))" == \
+  $((589816 + 2 * 512 * 4))
 
 # pca.threshold=1 never holds: the warm-up stops at its cap and says so on stderr.
 err=$("$cli" render --scene diagonal --technique da-rtw --set pca.threshold=1 \

@@ -284,6 +284,41 @@ TEST(Pages, SuperpagesBinPagesByLevelAndBlock) {
   EXPECT_THROW(binSuperpages(pages, layout, 100), std::invalid_argument);
 }
 
+// The pool of a byte budget: the most pages that fit, every slot of its texture used.
+TEST(Pages, PoolFitsTheBytesItIsGiven) {
+  const std::uint64_t page = 4ull * 128 * 128;  // a 128² DEPTH_COMPONENT32F page: 64 KiB
+  // Uniform 2048²'s 16 MiB: 256 pages, the squarest shape.
+  auto fit = fitPoolToBytes(16ull << 20, page, 128, 16);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->pages(), 256);
+  EXPECT_EQ(fit->columns, 16);
+  fit = fitPoolToBytes((11ull << 20) - 1, page, 128, 16);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->pages(), 175);  // 11 MiB is 176 pages; one byte less leaves 175 = 25 x 7
+  EXPECT_EQ(fit->columns * fit->rows, 175);
+  EXPECT_LE(fit->columns, 128);
+  EXPECT_GE(fit->columns, fit->rows);
+  // A prime count of pages beyond one row: the next smaller product (c * r <= 131, c <= 16).
+  fit = fitPoolToBytes(131 * page, page, 16, 1);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->pages(), 130);  // 13 x 10
+  // The texture's side caps it: at most 4 x 4 pages.
+  fit = fitPoolToBytes(100 * page, page, 4, 1);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->pages(), 16);
+  // Every budget: never more bytes than given, never more than a few pages left over (at most
+  // 8 of up to 2000: the product of two sides of at most 128 nearest below the count).
+  for (std::uint64_t pages = 16; pages < 2000; pages += 7) {
+    const std::uint64_t bytes = pages * page + 12345;
+    fit = fitPoolToBytes(bytes, page, 128, 16);
+    ASSERT_TRUE(fit) << pages;
+    EXPECT_LE(std::uint64_t(fit->pages()) * page, bytes) << pages;
+    EXPECT_LE(pages - std::uint64_t(fit->pages()), 8u) << pages;
+  }
+  EXPECT_FALSE(fitPoolToBytes(15 * page, page, 128, 16));  // the top level does not fit
+  EXPECT_THROW(fitPoolToBytes(page, 0, 128, 1), std::invalid_argument);
+}
+
 TEST(Pages, PanelViewsOfOneFrame) {
   // The exhaustion case above: 5 requests, a pool of 3 -> root, (2,0,0), (1,3,3).
   PagePool pool(3);

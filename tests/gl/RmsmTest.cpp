@@ -345,6 +345,54 @@ TEST(Rmsm, MemoryIsExact) {
   test::expectNoGlErrors(*r);
 }
 
+// pool.budget: memory() — pool, page table, request image and list, sort buffers, superpage
+// target — never exceeds the budget and leaves less than a few pages of it, frame after frame,
+// at two view sizes and both render paths; every byte is what the GL wrappers allocated; the
+// pool is what the Pages panel publishes. A budget that cannot hold the top level names itself.
+TEST(Rmsm, BudgetHoldsTheWholeMemory) {
+  auto r = test::makeRenderer("diagonal", "uniform");
+  ASSERT_TRUE(r);
+  r->requestPublications({"pages.pool"});
+  const std::uint64_t page = 4ull * 128 * 128;
+  for (auto [budget, render, w, h] : {std::tuple{16777216, 1, 320, 180},
+                                      {16777216, 1, 160, 90},
+                                      {16777216, 0, 320, 180},
+                                      {8000000, 1, 320, 180},
+                                      {8000000, 0, 160, 90}}) {
+    SCOPED_TRACE(testing::Message() << budget << " " << render << " " << w << "x" << h);
+    // The renderer's own targets follow the view's size: counted apart at this size.
+    ASSERT_FALSE(r->setTechnique("uniform"));
+    ASSERT_FALSE(r->renderFrame(w, h, 0));
+    const std::uint64_t before = gl::allocatedBytes() - r->stats().memory.bytes();
+    ASSERT_FALSE(r->setTechnique("rmsm"));
+    ASSERT_FALSE(r->params().set("pool.budget", budget));
+    ASSERT_FALSE(r->params().set("rmsm.render", render));
+    for (int frame = 0; frame < 2; ++frame) {
+      ASSERT_FALSE(r->renderFrame(w, h, 0));
+      const MemoryStats& m = r->stats().memory;
+      EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
+      EXPECT_LE(m.bytes(), std::uint64_t(budget));
+      EXPECT_LT(std::uint64_t(budget) - m.bytes(), 4 * page);
+      std::uint64_t pool = 0, superpage = 0;
+      for (const ResourceInfo& res : m.resources) {
+        if (res.name == "page pool") pool = res.bytes;
+        if (res.name == "superpage target") superpage = res.bytes;
+      }
+      EXPECT_EQ(pool, std::uint64_t(r->publication().numbers.at("pages.pool")) * page);
+      EXPECT_EQ(superpage, render == RmsmShadowMap::kRenderSuperpages ? 4ull << 20 : 0u);
+    }
+  }
+  // 65536² in 128² pages: the top level's 16 pages (1 MiB) and the 1.4 MiB page table.
+  ASSERT_FALSE(r->params().set("pool.budget", 2000000));
+  const auto err = r->renderFrame(160, 90, 0);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("pool.budget = 2000000 bytes cannot hold the 16 pages of the coarsest "
+                      "level (1048576 bytes)"),
+            std::string::npos)
+      << *err;
+  test::expectNoGlErrors(*r);
+}
+
 // Every declared pass of each rmsm.render value is timed (superpages: "rmsm superpages" and
 // "rmsm copy"; pages: "rmsm pages"), the other value's are not; bad parameters name themselves.
 TEST(Rmsm, DeclaredPassesAndBadParameters) {

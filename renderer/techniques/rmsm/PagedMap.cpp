@@ -14,8 +14,6 @@
 namespace sl {
 
 namespace {
-/// The largest pool texture side ShadowLab asks for (GL 4.5 guarantees 16384 on llvmpipe).
-constexpr int kMaxPoolSide = 16384;
 
 /// (Re)creates a DEPTH_COMPONENT32F texture of width x height and its depth-only framebuffer.
 void createDepthTarget(gl::Texture& texture, gl::Framebuffer& fbo, int width, int height,
@@ -223,28 +221,28 @@ std::optional<std::string> checkPagedMapParams(const ParamSet& params) {
            ", the quadtree cut at " + std::to_string(SL_PAGED_LOOKUP_LEVELS) +
            " levels); raise pool.pages or page.size";
   const int columns = poolColumnsFor(poolPages);
-  if (columns * layout.pageSize > kMaxPoolSide)
+  if (columns * layout.pageSize > kMaxPoolSideTexels)
     return "a pool of pool.pages = " + std::to_string(poolPages) +
            " pages of page.size = " + std::to_string(layout.pageSize) + " is " +
            std::to_string(columns * layout.pageSize) + " texels wide, more than " +
-           std::to_string(kMaxPoolSide) + "; lower pool.pages or page.size";
+           std::to_string(kMaxPoolSideTexels) + "; lower pool.pages or page.size";
   return std::nullopt;
 }
 
 bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int minPages,
-                      const std::string& technique) {
-  const int columns = poolColumnsFor(poolPages);
+                      const std::string& technique, int poolColumns) {
+  const int columns = poolColumns > 0 ? poolColumns : poolColumnsFor(poolPages);
   const int rows = (poolPages + columns - 1) / columns;
   if (poolPages < minPages)
     throw std::runtime_error(
         technique + ": pool.pages = " + std::to_string(poolPages) + " cannot hold the " +
         std::to_string(minPages) + " pages of the coarsest level (the quadtree is cut at " +
         std::to_string(SL_PAGED_LOOKUP_LEVELS) + " levels); raise pool.pages or page.size");
-  if (columns * layout.pageSize > kMaxPoolSide)
+  if (columns * layout.pageSize > kMaxPoolSideTexels)
     throw std::runtime_error(technique + ": a pool of " + std::to_string(poolPages) + " pages of " +
                              std::to_string(layout.pageSize) + "² is " +
                              std::to_string(columns * layout.pageSize) +
-                             " texels wide, more than " + std::to_string(kMaxPoolSide) +
+                             " texels wide, more than " + std::to_string(kMaxPoolSideTexels) +
                              "; lower pool.pages or page.size");
   bool changed = false;
   if (!pageTable_ || layout_.virtualResolution != layout.virtualResolution ||
@@ -254,7 +252,8 @@ bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int min
     pageTable_ = gl::Texture::create2D(GL_R32UI, n, n, layout_.levels());
     changed = true;
   }
-  if (!poolMap_ || poolPages_ != poolPages || poolMap_.width() != columns * layout_.pageSize) {
+  if (!poolMap_ || poolPages_ != poolPages || poolMap_.width() != columns * layout_.pageSize ||
+      poolMap_.height() != rows * layout_.pageSize) {
     poolPages_ = poolPages;
     poolColumns_ = columns;
     createDepthTarget(poolMap_, poolFbo_, columns * layout_.pageSize, rows * layout_.pageSize,
@@ -376,6 +375,18 @@ void PagedMap::addMemory(MemoryStats& m) const {
     for (int l = 0; l < layout_.levels(); ++l)
       m.add("page table level " + std::to_string(l), "R32UI", layout_.pagesPerSide(l),
             layout_.pagesPerSide(l), 1, 4);
+}
+
+std::uint64_t PagedMap::poolBytes() const {
+  return poolMap_ ? std::uint64_t(poolMap_.width()) * std::uint64_t(poolMap_.height()) *
+                        std::uint64_t(gl::bytesPerTexel(poolMap_.format()))
+                  : 0;
+}
+
+std::uint64_t PagedMap::superpageBytes() const {
+  return superpage_ ? std::uint64_t(superpage_.width()) * std::uint64_t(superpage_.height()) *
+                          std::uint64_t(gl::bytesPerTexel(superpage_.format()))
+                    : 0;
 }
 
 }  // namespace sl

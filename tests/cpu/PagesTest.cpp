@@ -236,6 +236,39 @@ TEST(Pages, PixelRequestsUseForwardThenBackwardDifferences) {
   EXPECT_THROW(pixelRequests(px, 3, 2, kSmall), std::invalid_argument);
 }
 
+// A silhouette: pixels 0-1 of each row on a near plane, 2-3 on a plane 5 m behind it, far
+// apart in light uv. Pixel 1's right neighbour is on the far plane: the neighbour's step asks
+// for the coarsest level, the same-surface step (back to pixel 0) for the finest.
+TEST(Pages, SameSurfaceDerivativesDoNotStepAcrossASilhouette) {
+  const int w = 4, h = 2;
+  std::vector<PixelUv> px(w * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool near = x < 2;
+      PixelUv& p = px[std::size_t(y) * w + x];
+      p.covered = true;
+      p.position = glm::vec3(0.01f * float(x), 0.01f * float(y), near ? 0.0f : -5.0f);
+      p.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+      p.st = glm::vec2((near ? 0.1f : 0.6f) + 0.001f * float(x), 0.1f + 0.001f * float(y));
+    }
+  EXPECT_TRUE(sameSurface(px[0], px[1]));
+  EXPECT_FALSE(sameSurface(px[1], px[2]));  // 5 m off the plane over 1 cm
+  PixelUv tilted = px[0];
+  tilted.position = px[1].position;
+  tilted.normal = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));  // a crease: normals 45° apart
+  EXPECT_FALSE(sameSurface(px[0], tilted));
+  const auto neighbour = pixelRequests(px, w, h, kSmall, 0, Derivatives::Neighbour);
+  const auto same = pixelRequests(px, w, h, kSmall, 0, Derivatives::SameSurface);
+  for (int y = 0; y < h; ++y) {
+    const std::size_t i = std::size_t(y) * w + 1;
+    EXPECT_EQ(unpackPage(neighbour[i]).level, kSmall.topLevel()) << y;
+    EXPECT_EQ(unpackPage(same[i]).level, 0) << y;
+    // Elsewhere both step within one surface: the same keys.
+    for (int x : {0, 2, 3})
+      EXPECT_EQ(same[std::size_t(y) * w + x], neighbour[std::size_t(y) * w + x]);
+  }
+}
+
 TEST(Pages, DedupKeepsARequestOnlyWhenLeftAndLowerNeighboursDiffer) {
   const PageKey A = key(0, 0, 0), B = key(0, 1, 0), C = key(1, 1, 1), D = key(2, 0, 0);
   const PageKey N = kNoPage;

@@ -119,6 +119,54 @@ TEST(Rmsm, RequestsCompactionAndPageTableMatchTheCpuReference) {
   test::expectNoGlErrors(*r);
 }
 
+// lod.derivatives = same-surface: the GPU's per-pixel requests against pixelRequests with
+// the read-back positions and normals (the same tolerance as above), and the silhouettes of
+// plane-box (box against floor) ask for finer pages than with the neighbour's step.
+TEST(Rmsm, SameSurfaceRequestsMatchTheCpuReference) {
+  auto r = makeProbe("plane-box");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("virtual.resolution", 4096));
+  ASSERT_FALSE(r->params().set("lod.derivatives", SL_RMSM_DERIVATIVES_SAME_SURFACE));
+  const int w = 160, h = 90;
+  ASSERT_FALSE(r->renderFrame(w, h, 0));
+  ASSERT_TRUE(g_probe);
+  const RmsmShadowMap& t = *g_probe;
+  const FrameReadback fr = r->readback();
+  std::vector<pages::PixelUv> px(std::size_t(w) * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t from = std::size_t(h - 1 - y) * w + x;
+      const glm::vec4 P = fr.positions[from];
+      pages::PixelUv& p = px[std::size_t(y) * w + x];
+      p.covered = P.w > 0.0f;
+      p.position = glm::vec3(P);
+      p.normal = glm::vec3(fr.normals[from]);
+      const glm::vec4 c = t.lightViewProj() * glm::vec4(glm::vec3(P), 1.0f);
+      p.st = glm::vec2(c) / c.w * 0.5f + 0.5f;
+    }
+  const auto cpu = pages::pixelRequests(px, w, h, t.layout(), 1, pages::Derivatives::SameSurface);
+  const auto neighbour = pages::pixelRequests(px, w, h, t.layout(), 1);
+  const std::vector<std::uint32_t> gpu = readR32ui(t.requestImage());
+  ASSERT_EQ(gpu.size(), cpu.size());
+  int covered = 0, differ = 0, finer = 0, coarser = 0;
+  for (std::size_t i = 0; i < cpu.size(); ++i) {
+    covered += cpu[i] != pages::kNoPage;
+    differ += cpu[i] != gpu[i];
+    if (cpu[i] == pages::kNoPage) continue;
+    const int a = pages::unpackPage(cpu[i]).level, b = pages::unpackPage(neighbour[i]).level;
+    finer += a < b;
+    coarser += a > b;
+  }
+  std::printf(
+      "same-surface requests: %d covered, %d differ from the CPU, %d finer and %d "
+      "coarser than the neighbour's step\n",
+      covered, differ, finer, coarser);
+  EXPECT_GT(covered, w * h / 4);
+  EXPECT_LE(differ, covered / 200);
+  EXPECT_GT(finer, 0);
+  test::expectNoGlErrors(*r);
+}
+
 // The GPU's sort and unique (bitonic sort, unique, second sort) against std::sort +
 // std::unique of the same read-back compacted list: exact, on three scenes at three sizes and
 // LOD biases (list lengths 57 to 770, none a power of two: the padding is exercised).

@@ -63,10 +63,12 @@ std::vector<ParamDecl> pagedMapParamDecls() {
       .minValue = 0,
       .maxValue = 6,
       .step = 1,
-      .help = "Each pixel asks for the page this many levels finer than its footprint needs "
-              "(0: resolution-matched, one texel per pixel; 1: 2 x 2 texels per pixel...), "
-              "filling a pool that matching alone leaves mostly empty (the default pool holds "
-              "4.5 texels per pixel of a 1280 x 720 view).",
+      .help = "Each pixel asks for the page this many levels finer than its footprint needs. "
+              "0 is the paper (l = log2 sqrt(A), resolution matching: one to four texels per "
+              "pixel, the level floored); 1 (the tool's default) 2 x 2 times that, 2 4 x 4...: "
+              "it fills a pool that matching alone leaves mostly empty (the default pool holds "
+              "4.5 texels per pixel of a 1280 x 720 view) and is the more accurate at uniform "
+              "2048²'s bytes (docs/techniques/rmsm.md).",
       .uniform = "u_rmsmLodBias"});
   p.push_back(ParamDecl{
       .key = "pool.pages",
@@ -78,7 +80,8 @@ std::vector<ParamDecl> pagedMapParamDecls() {
       .maxValue = 4096,
       .step = 1,
       .help = "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform 2048² "
-              "map). When a frame asks for more, pages of the finest requested level move to their "
+              "map; the paper gives no size). When a frame asks for more, pages of the finest "
+              "requested level move to their "
               "parents, sibling group by sibling group, until they fit (counted in "
               "pages.coarsened).",
       .memoryKnob = true});

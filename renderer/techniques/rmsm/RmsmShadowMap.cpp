@@ -51,9 +51,28 @@ TechniqueInfo RmsmShadowMap::info() {
               std::to_string(SL_RMSM_SUPERPAGE) +
               "² blocks of one level; each block is "
               "rendered once into a superpage target, then its pages are copied into their "
-              "pool slots (one scene draw per superpage). pages: one scene draw per allocated "
-              "page, straight into its slot (the default: on llvmpipe superpages made the frame "
-              "1.4-2.1x slower: docs/techniques/rmsm.md)."});
+              "pool slots (one scene draw per superpage): the paper's pipeline. pages (the "
+              "tool's default): one scene draw per allocated page, straight into its slot, no "
+              "superpage target (its 4 MiB count in memory() and so in pool.budget; on "
+              "llvmpipe superpages made the frame 1.4-2.1x slower: docs/techniques/rmsm.md)."});
+  p.push_back(ParamDecl{
+      .key = "lod.derivatives",
+      .label = "LOD derivatives",
+      .group = "Pages",
+      .type = ParamType::Enum,
+      .defaultValue = SL_RMSM_DERIVATIVES_NEIGHBOUR,
+      .minValue = 0,
+      .maxValue = 1,
+      .step = 1,
+      .enumNames = {"neighbour", "same-surface"},
+      .help = "Where dX and dY of the LOD come from (G-buffer finite differences). neighbour "
+              "(the tool's default): the right / upper pixel, else the left / lower one, on "
+              "whatever surface it lies: at a silhouette the step jumps to another surface and "
+              "asks for a far coarser page. same-surface (the paper's reading: the derivatives "
+              "of the rasterised (s, t), taken within the pixel's own triangle): the first of "
+              "the two that lies on the pixel's surface (its offset within 0.1 of the tangent "
+              "plane, normals within 25.8 degrees), else as neighbour.",
+      .uniform = "u_rmsmDerivatives"});
 
   p.push_back(ParamDecl{
       .key = "pool.budget",
@@ -237,6 +256,7 @@ void RmsmShadowMap::requestPages(FrameContext& ctx) {
   requestProgram_.use();
   map_.setLayoutUniforms(requestProgram_, view_.lightViewProj);
   glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
   glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      GL_R32UI);
   glDispatchCompute(gx, gy, 1);

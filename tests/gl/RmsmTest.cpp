@@ -49,6 +49,25 @@ std::vector<std::uint32_t> readR32ui(const gl::Texture& t, int level = 0) {
   return out;
 }
 
+// The read-back G-buffer as pixelRequests' input: rows bottom-up like the GPU image (the
+// readback's row 0 is the top), light uv through the virtual map's matrix.
+std::vector<pages::PixelUv> pixelUvsOf(const FrameReadback& fr, const glm::mat4& lightViewProj,
+                                       int w, int h) {
+  std::vector<pages::PixelUv> px(std::size_t(w) * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t from = std::size_t(h - 1 - y) * w + x;
+      const glm::vec4 P = fr.positions[from];
+      pages::PixelUv& p = px[std::size_t(y) * w + x];
+      p.covered = P.w > 0.0f;
+      p.position = glm::vec3(P);
+      p.normal = glm::vec3(fr.normals[from]);
+      const glm::vec4 c = lightViewProj * glm::vec4(glm::vec3(P), 1.0f);
+      p.st = glm::vec2(c) / c.w * 0.5f + 0.5f;
+    }
+  return px;
+}
+
 // Requests from the G-buffer on the GPU against algo/pages::pixelRequests on the read-back
 // positions; the GPU's dedup + compaction against the CPU's on the GPU's own request image
 // (exact: the same input); the page table's mip chain against PageTable::finalised (exact).
@@ -63,16 +82,7 @@ TEST(Rmsm, RequestsCompactionAndPageTableMatchTheCpuReference) {
   const RmsmShadowMap& t = *g_probe;
   const FrameReadback fr = r->readback();
 
-  // CPU requests: rows bottom-up like the GPU image (the readback's row 0 is the top).
-  std::vector<pages::PixelUv> px(std::size_t(w) * h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const glm::vec4 P = fr.positions[std::size_t(h - 1 - y) * w + x];
-      pages::PixelUv& p = px[std::size_t(y) * w + x];
-      p.covered = P.w > 0.0f;
-      const glm::vec4 c = t.lightViewProj() * glm::vec4(glm::vec3(P), 1.0f);
-      p.st = glm::vec2(c) / c.w * 0.5f + 0.5f;
-    }
+  const std::vector<pages::PixelUv> px = pixelUvsOf(fr, t.lightViewProj(), w, h);
   const std::vector<pages::PageKey> cpu = pages::pixelRequests(px, w, h, t.layout(), 1);
   const std::vector<std::uint32_t> gpu = readR32ui(t.requestImage());
   ASSERT_EQ(gpu.size(), cpu.size());
@@ -132,18 +142,7 @@ TEST(Rmsm, SameSurfaceRequestsMatchTheCpuReference) {
   ASSERT_TRUE(g_probe);
   const RmsmShadowMap& t = *g_probe;
   const FrameReadback fr = r->readback();
-  std::vector<pages::PixelUv> px(std::size_t(w) * h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::size_t from = std::size_t(h - 1 - y) * w + x;
-      const glm::vec4 P = fr.positions[from];
-      pages::PixelUv& p = px[std::size_t(y) * w + x];
-      p.covered = P.w > 0.0f;
-      p.position = glm::vec3(P);
-      p.normal = glm::vec3(fr.normals[from]);
-      const glm::vec4 c = t.lightViewProj() * glm::vec4(glm::vec3(P), 1.0f);
-      p.st = glm::vec2(c) / c.w * 0.5f + 0.5f;
-    }
+  const std::vector<pages::PixelUv> px = pixelUvsOf(fr, t.lightViewProj(), w, h);
   const auto cpu = pages::pixelRequests(px, w, h, t.layout(), 1, pages::Derivatives::SameSurface);
   const auto neighbour = pages::pixelRequests(px, w, h, t.layout(), 1);
   const std::vector<std::uint32_t> gpu = readR32ui(t.requestImage());

@@ -136,6 +136,13 @@
 // Side in texels of an RMSM superpage (Lefohn et al. 2007): rmsm.render = superpages renders
 // each 1024² block of one level holding allocated pages once, then copies its pages to the pool.
 #define SL_RMSM_SUPERPAGE 1024
+// lod.derivatives: the neighbour a pixel's screen derivative steps to (sl::pages::Derivatives).
+#define SL_RMSM_DERIVATIVES_NEIGHBOUR 0
+#define SL_RMSM_DERIVATIVES_SAME_SURFACE 1
+// same-surface: a neighbour lies on the pixel's surface when its offset leaves the pixel's
+// tangent plane by at most this fraction of its length and its normal is within acos(this).
+#define SL_RMSM_SAME_SURFACE_PLANE 0.1
+#define SL_RMSM_SAME_SURFACE_NORMAL_COS 0.9
 // Adaptive shadow maps (asm): the shadow-test pass writes per pixel (mask, served page key,
 // refine key) into an rgba32ui image; the edge pass turns it into one key per pixel in the
 // RMSM request image (SL_RMSM_IMAGE_REQUESTS), compacted by rmsm/compact.comp. A key with

@@ -236,6 +236,39 @@ TEST(Pages, PixelRequestsUseForwardThenBackwardDifferences) {
   EXPECT_THROW(pixelRequests(px, 3, 2, kSmall), std::invalid_argument);
 }
 
+// A silhouette: pixels 0-1 of each row on a near plane, 2-3 on a plane 5 m behind it, far
+// apart in light uv. Pixel 1's right neighbour is on the far plane: the neighbour's step asks
+// for the coarsest level, the same-surface step (back to pixel 0) for the finest.
+TEST(Pages, SameSurfaceDerivativesDoNotStepAcrossASilhouette) {
+  const int w = 4, h = 2;
+  std::vector<PixelUv> px(w * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool near = x < 2;
+      PixelUv& p = px[std::size_t(y) * w + x];
+      p.covered = true;
+      p.position = glm::vec3(0.01f * float(x), 0.01f * float(y), near ? 0.0f : -5.0f);
+      p.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+      p.st = glm::vec2((near ? 0.1f : 0.6f) + 0.001f * float(x), 0.1f + 0.001f * float(y));
+    }
+  EXPECT_TRUE(sameSurface(px[0], px[1]));
+  EXPECT_FALSE(sameSurface(px[1], px[2]));  // 5 m off the plane over 1 cm
+  PixelUv tilted = px[0];
+  tilted.position = px[1].position;
+  tilted.normal = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));  // a crease: normals 45° apart
+  EXPECT_FALSE(sameSurface(px[0], tilted));
+  const auto neighbour = pixelRequests(px, w, h, kSmall, 0, Derivatives::Neighbour);
+  const auto same = pixelRequests(px, w, h, kSmall, 0, Derivatives::SameSurface);
+  for (int y = 0; y < h; ++y) {
+    const std::size_t i = std::size_t(y) * w + 1;
+    EXPECT_EQ(unpackPage(neighbour[i]).level, kSmall.topLevel()) << y;
+    EXPECT_EQ(unpackPage(same[i]).level, 0) << y;
+    // Elsewhere both step within one surface: the same keys.
+    for (int x : {0, 2, 3})
+      EXPECT_EQ(same[std::size_t(y) * w + x], neighbour[std::size_t(y) * w + x]);
+  }
+}
+
 TEST(Pages, DedupKeepsARequestOnlyWhenLeftAndLowerNeighboursDiffer) {
   const PageKey A = key(0, 0, 0), B = key(0, 1, 0), C = key(1, 1, 1), D = key(2, 0, 0);
   const PageKey N = kNoPage;
@@ -282,6 +315,41 @@ TEST(Pages, SuperpagesBinPagesByLevelAndBlock) {
   EXPECT_EQ((PageId{s[3].level, s[3].x, s[3].y}), (PageId{1, 0, 0}));
   EXPECT_EQ(s[3].pagesPerSide, 8);
   EXPECT_THROW(binSuperpages(pages, layout, 100), std::invalid_argument);
+}
+
+// The pool of a byte budget: the most pages that fit, every slot of its texture used.
+TEST(Pages, PoolFitsTheBytesItIsGiven) {
+  const std::uint64_t page = 4ull * 128 * 128;  // a 128² DEPTH_COMPONENT32F page: 64 KiB
+  // Uniform 2048²'s 16 MiB: 256 pages, the squarest shape.
+  auto fit = fitPoolToBytes(16ull << 20, page, 128, 16);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->pages(), 256);
+  EXPECT_EQ(fit->columns, 16);
+  fit = fitPoolToBytes((11ull << 20) - 1, page, 128, 16);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->pages(), 175);  // 11 MiB is 176 pages; one byte less leaves 175 = 25 x 7
+  EXPECT_EQ(fit->columns * fit->rows, 175);
+  EXPECT_LE(fit->columns, 128);
+  EXPECT_GE(fit->columns, fit->rows);
+  // A prime count of pages beyond one row: the next smaller product (c * r <= 131, c <= 16).
+  fit = fitPoolToBytes(131 * page, page, 16, 1);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->pages(), 130);  // 13 x 10
+  // The texture's side caps it: at most 4 x 4 pages.
+  fit = fitPoolToBytes(100 * page, page, 4, 1);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->pages(), 16);
+  // Every budget: never more bytes than given, never more than a few pages left over (at most
+  // 8 of up to 2000: the product of two sides of at most 128 nearest below the count).
+  for (std::uint64_t pages = 16; pages < 2000; pages += 7) {
+    const std::uint64_t bytes = pages * page + 12345;
+    fit = fitPoolToBytes(bytes, page, 128, 16);
+    ASSERT_TRUE(fit) << pages;
+    EXPECT_LE(std::uint64_t(fit->pages()) * page, bytes) << pages;
+    EXPECT_LE(pages - std::uint64_t(fit->pages()), 8u) << pages;
+  }
+  EXPECT_FALSE(fitPoolToBytes(15 * page, page, 128, 16));  // the top level does not fit
+  EXPECT_THROW(fitPoolToBytes(page, 0, 128, 1), std::invalid_argument);
 }
 
 TEST(Pages, PanelViewsOfOneFrame) {

@@ -49,6 +49,25 @@ std::vector<std::uint32_t> readR32ui(const gl::Texture& t, int level = 0) {
   return out;
 }
 
+// The read-back G-buffer as pixelRequests' input: rows bottom-up like the GPU image (the
+// readback's row 0 is the top), light uv through the virtual map's matrix.
+std::vector<pages::PixelUv> pixelUvsOf(const FrameReadback& fr, const glm::mat4& lightViewProj,
+                                       int w, int h) {
+  std::vector<pages::PixelUv> px(std::size_t(w) * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t from = std::size_t(h - 1 - y) * w + x;
+      const glm::vec4 P = fr.positions[from];
+      pages::PixelUv& p = px[std::size_t(y) * w + x];
+      p.covered = P.w > 0.0f;
+      p.position = glm::vec3(P);
+      p.normal = glm::vec3(fr.normals[from]);
+      const glm::vec4 c = lightViewProj * glm::vec4(glm::vec3(P), 1.0f);
+      p.st = glm::vec2(c) / c.w * 0.5f + 0.5f;
+    }
+  return px;
+}
+
 // Requests from the G-buffer on the GPU against algo/pages::pixelRequests on the read-back
 // positions; the GPU's dedup + compaction against the CPU's on the GPU's own request image
 // (exact: the same input); the page table's mip chain against PageTable::finalised (exact).
@@ -63,16 +82,7 @@ TEST(Rmsm, RequestsCompactionAndPageTableMatchTheCpuReference) {
   const RmsmShadowMap& t = *g_probe;
   const FrameReadback fr = r->readback();
 
-  // CPU requests: rows bottom-up like the GPU image (the readback's row 0 is the top).
-  std::vector<pages::PixelUv> px(std::size_t(w) * h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const glm::vec4 P = fr.positions[std::size_t(h - 1 - y) * w + x];
-      pages::PixelUv& p = px[std::size_t(y) * w + x];
-      p.covered = P.w > 0.0f;
-      const glm::vec4 c = t.lightViewProj() * glm::vec4(glm::vec3(P), 1.0f);
-      p.st = glm::vec2(c) / c.w * 0.5f + 0.5f;
-    }
+  const std::vector<pages::PixelUv> px = pixelUvsOf(fr, t.lightViewProj(), w, h);
   const std::vector<pages::PageKey> cpu = pages::pixelRequests(px, w, h, t.layout(), 1);
   const std::vector<std::uint32_t> gpu = readR32ui(t.requestImage());
   ASSERT_EQ(gpu.size(), cpu.size());
@@ -116,6 +126,43 @@ TEST(Rmsm, RequestsCompactionAndPageTableMatchTheCpuReference) {
     at += level.size();
   }
   EXPECT_EQ(at, table.size());
+  test::expectNoGlErrors(*r);
+}
+
+// lod.derivatives = same-surface: the GPU's per-pixel requests against pixelRequests with
+// the read-back positions and normals (the same tolerance as above), and the silhouettes of
+// plane-box (box against floor) ask for finer pages than with the neighbour's step.
+TEST(Rmsm, SameSurfaceRequestsMatchTheCpuReference) {
+  auto r = makeProbe("plane-box");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("virtual.resolution", 4096));
+  ASSERT_FALSE(r->params().set("lod.derivatives", SL_RMSM_DERIVATIVES_SAME_SURFACE));
+  const int w = 160, h = 90;
+  ASSERT_FALSE(r->renderFrame(w, h, 0));
+  ASSERT_TRUE(g_probe);
+  const RmsmShadowMap& t = *g_probe;
+  const FrameReadback fr = r->readback();
+  const std::vector<pages::PixelUv> px = pixelUvsOf(fr, t.lightViewProj(), w, h);
+  const auto cpu = pages::pixelRequests(px, w, h, t.layout(), 1, pages::Derivatives::SameSurface);
+  const auto neighbour = pages::pixelRequests(px, w, h, t.layout(), 1);
+  const std::vector<std::uint32_t> gpu = readR32ui(t.requestImage());
+  ASSERT_EQ(gpu.size(), cpu.size());
+  int covered = 0, differ = 0, finer = 0, coarser = 0;
+  for (std::size_t i = 0; i < cpu.size(); ++i) {
+    covered += cpu[i] != pages::kNoPage;
+    differ += cpu[i] != gpu[i];
+    if (cpu[i] == pages::kNoPage) continue;
+    const int a = pages::unpackPage(cpu[i]).level, b = pages::unpackPage(neighbour[i]).level;
+    finer += a < b;
+    coarser += a > b;
+  }
+  std::printf(
+      "same-surface requests: %d covered, %d differ from the CPU, %d finer and %d "
+      "coarser than the neighbour's step\n",
+      covered, differ, finer, coarser);
+  EXPECT_GT(covered, w * h / 4);
+  EXPECT_LE(differ, covered / 200);
+  EXPECT_GT(finer, 0);
   test::expectNoGlErrors(*r);
 }
 
@@ -342,6 +389,54 @@ TEST(Rmsm, MemoryIsExact) {
                              4ull * 160 * 90 + 4ull * (1 + 160 * 90) + superpage + 2 * sortKeys +
                              4);
   }
+  test::expectNoGlErrors(*r);
+}
+
+// pool.budget: memory() — pool, page table, request image and list, sort buffers, superpage
+// target — never exceeds the budget and leaves less than a few pages of it, frame after frame,
+// at two view sizes and both render paths; every byte is what the GL wrappers allocated; the
+// pool is what the Pages panel publishes. A budget that cannot hold the top level names itself.
+TEST(Rmsm, BudgetHoldsTheWholeMemory) {
+  auto r = test::makeRenderer("diagonal", "uniform");
+  ASSERT_TRUE(r);
+  r->requestPublications({"pages.pool"});
+  const std::uint64_t page = 4ull * 128 * 128;
+  for (auto [budget, render, w, h] : {std::tuple{16777216, 1, 320, 180},
+                                      {16777216, 1, 160, 90},
+                                      {16777216, 0, 320, 180},
+                                      {8000000, 1, 320, 180},
+                                      {8000000, 0, 160, 90}}) {
+    SCOPED_TRACE(testing::Message() << budget << " " << render << " " << w << "x" << h);
+    // The renderer's own targets follow the view's size: counted apart at this size.
+    ASSERT_FALSE(r->setTechnique("uniform"));
+    ASSERT_FALSE(r->renderFrame(w, h, 0));
+    const std::uint64_t before = gl::allocatedBytes() - r->stats().memory.bytes();
+    ASSERT_FALSE(r->setTechnique("rmsm"));
+    ASSERT_FALSE(r->params().set("pool.budget", budget));
+    ASSERT_FALSE(r->params().set("rmsm.render", render));
+    for (int frame = 0; frame < 2; ++frame) {
+      ASSERT_FALSE(r->renderFrame(w, h, 0));
+      const MemoryStats& m = r->stats().memory;
+      EXPECT_EQ(m.bytes(), gl::allocatedBytes() - before) << "memory() must list every byte";
+      EXPECT_LE(m.bytes(), std::uint64_t(budget));
+      EXPECT_LT(std::uint64_t(budget) - m.bytes(), 4 * page);
+      std::uint64_t pool = 0, superpage = 0;
+      for (const ResourceInfo& res : m.resources) {
+        if (res.name == "page pool") pool = res.bytes;
+        if (res.name == "superpage target") superpage = res.bytes;
+      }
+      EXPECT_EQ(pool, std::uint64_t(r->publication().numbers.at("pages.pool")) * page);
+      EXPECT_EQ(superpage, render == RmsmShadowMap::kRenderSuperpages ? 4ull << 20 : 0u);
+    }
+  }
+  // 65536² in 128² pages: the top level's 16 pages (1 MiB) and the 1.4 MiB page table.
+  ASSERT_FALSE(r->params().set("pool.budget", 2000000));
+  const auto err = r->renderFrame(160, 90, 0);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->find("pool.budget = 2000000 bytes cannot hold the 16 pages of the coarsest "
+                      "level (1048576 bytes)"),
+            std::string::npos)
+      << *err;
   test::expectNoGlErrors(*r);
 }
 

@@ -36,16 +36,31 @@ void checkSize(std::size_t size, int width, int height) {
                                 std::to_string(height) + " image");
 }
 
-// The step to the neighbour at +1 along one axis, or from the one at -1, or zero.
-glm::vec2 screenStep(const PixelUv& here, const PixelUv* next, const PixelUv* prev) {
-  if (next && next->covered) return next->st - here.st;
-  if (prev && prev->covered) return here.st - prev->st;
+// The step to the neighbour at +1 along one axis, or from the one at -1, or zero; with
+// same-surface derivatives, first the one of them on the pixel's surface.
+glm::vec2 screenStep(const PixelUv& here, const PixelUv* next, const PixelUv* prev,
+                     Derivatives derivatives) {
+  const bool nextOk = next && next->covered, prevOk = prev && prev->covered;
+  if (derivatives == Derivatives::SameSurface) {
+    if (nextOk && sameSurface(here, *next)) return next->st - here.st;
+    if (prevOk && sameSurface(here, *prev)) return here.st - prev->st;
+  }
+  if (nextOk) return next->st - here.st;
+  if (prevOk) return here.st - prev->st;
   return glm::vec2(0.0f);
 }
 }  // namespace
 
+bool sameSurface(const PixelUv& here, const PixelUv& other) {
+  const glm::vec3 d = other.position - here.position;
+  const float offPlane = std::abs(glm::dot(d, here.normal));
+  return offPlane <= float(SL_RMSM_SAME_SURFACE_PLANE) * glm::length(d) &&
+         glm::dot(here.normal, other.normal) >= float(SL_RMSM_SAME_SURFACE_NORMAL_COS);
+}
+
 std::vector<PageKey> pixelRequests(std::span<const PixelUv> pixels, int width, int height,
-                                   const VirtualLayout& layout, int lodBias) {
+                                   const VirtualLayout& layout, int lodBias,
+                                   Derivatives derivatives) {
   checkSize(pixels.size(), width, height);
   std::vector<PageKey> out(pixels.size(), kNoPage);
   auto at = [&](int x, int y) -> const PixelUv* {
@@ -56,8 +71,8 @@ std::vector<PageKey> pixelRequests(std::span<const PixelUv> pixels, int width, i
     for (int x = 0; x < width; ++x) {
       const PixelUv& p = *at(x, y);
       if (!p.covered) continue;
-      const glm::vec2 dX = screenStep(p, at(x + 1, y), at(x - 1, y));
-      const glm::vec2 dY = screenStep(p, at(x, y + 1), at(x, y - 1));
+      const glm::vec2 dX = screenStep(p, at(x + 1, y), at(x - 1, y), derivatives);
+      const glm::vec2 dY = screenStep(p, at(x, y + 1), at(x, y - 1), derivatives);
       out[static_cast<std::size_t>(y) * width + x] =
           requestPage(p.st, requestLevel(dX, dY, layout, lodBias), layout);
     }

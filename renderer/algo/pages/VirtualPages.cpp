@@ -290,4 +290,25 @@ std::vector<Superpage> binSuperpages(std::span<const PageId> pages, const Virtua
   return out;
 }
 
+std::optional<PoolShape> fitPoolToBytes(std::uint64_t bytes, std::uint64_t pageBytes,
+                                        int maxPagesPerSide, int minPages) {
+  if (pageBytes == 0 || maxPagesPerSide < 1)
+    throw std::invalid_argument("fitPoolToBytes: pageBytes and maxPagesPerSide must be positive");
+  const std::uint64_t side = std::uint64_t(maxPagesPerSide);
+  const std::uint64_t most = std::min(bytes / pageBytes, side * side);
+  if (most < std::uint64_t(std::max(minPages, 1))) return std::nullopt;
+  // Every row count r: the most columns c <= side with c * r <= most; the largest product
+  // wins, the squarest (fewest columns) among equals.
+  PoolShape best;
+  for (std::uint64_t r = 1; r <= side && r <= most; ++r) {
+    const std::uint64_t c = std::min(side, most / r);
+    if (c < r) break;
+    const auto pages = c * r;
+    if (pages > std::uint64_t(best.pages()) ||
+        (pages == std::uint64_t(best.pages()) && int(c) < best.columns))
+      best = {int(c), int(r)};
+  }
+  return best;
+}
+
 }  // namespace sl::pages

@@ -135,4 +135,17 @@ struct Superpage {
 std::vector<Superpage> binSuperpages(std::span<const PageId> pages, const VirtualLayout& layout,
                                      int superpageSize = 1024);
 
+/// A pool texture's shape: `columns` x `rows` pages, every slot used (pages = columns * rows).
+struct PoolShape {
+  int columns = 0, rows = 0;
+  int pages() const { return columns * rows; }
+};
+/// The pool of the most pages of `pageBytes` each that fits in `bytes`, its texture at most
+/// `maxPagesPerSide` pages a side (columns >= rows, the squarest shape of that many pages).
+/// Nothing when not even `minPages` fit. The pool's bytes are then pages() * pageBytes <=
+/// bytes, the rest less than a few pages (pages() is the largest product columns * rows of
+/// sides <= maxPagesPerSide that does not exceed bytes / pageBytes).
+std::optional<PoolShape> fitPoolToBytes(std::uint64_t bytes, std::uint64_t pageBytes,
+                                        int maxPagesPerSide, int minPages);
+
 }  // namespace sl::pages

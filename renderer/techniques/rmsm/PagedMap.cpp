@@ -14,8 +14,6 @@
 namespace sl {
 
 namespace {
-/// The largest pool texture side ShadowLab asks for (GL 4.5 guarantees 16384 on llvmpipe).
-constexpr int kMaxPoolSide = 16384;
 
 /// (Re)creates a DEPTH_COMPONENT32F texture of width x height and its depth-only framebuffer.
 void createDepthTarget(gl::Texture& texture, gl::Framebuffer& fbo, int width, int height,
@@ -65,10 +63,12 @@ std::vector<ParamDecl> pagedMapParamDecls() {
       .minValue = 0,
       .maxValue = 6,
       .step = 1,
-      .help = "Each pixel asks for the page this many levels finer than its footprint needs "
-              "(0: resolution-matched, one texel per pixel; 1: 2 x 2 texels per pixel...), "
-              "filling a pool that matching alone leaves mostly empty (the default pool holds "
-              "4.5 texels per pixel of a 1280 x 720 view).",
+      .help = "Each pixel asks for the page this many levels finer than its footprint needs. "
+              "0 is the paper (l = log2 sqrt(A), resolution matching: one to four texels per "
+              "pixel, the level floored); 1 (the tool's default) 2 x 2 times that, 2 4 x 4...: "
+              "it fills a pool that matching alone leaves mostly empty (the default pool holds "
+              "4.5 texels per pixel of a 1280 x 720 view) and is the more accurate at uniform "
+              "2048²'s bytes (docs/techniques/rmsm.md).",
       .uniform = "u_rmsmLodBias"});
   p.push_back(ParamDecl{
       .key = "pool.pages",
@@ -80,7 +80,8 @@ std::vector<ParamDecl> pagedMapParamDecls() {
       .maxValue = 4096,
       .step = 1,
       .help = "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform 2048² "
-              "map). When a frame asks for more, pages of the finest requested level move to their "
+              "map; the paper gives no size). When a frame asks for more, pages of the finest "
+              "requested level move to their "
               "parents, sibling group by sibling group, until they fit (counted in "
               "pages.coarsened).",
       .memoryKnob = true});
@@ -223,28 +224,28 @@ std::optional<std::string> checkPagedMapParams(const ParamSet& params) {
            ", the quadtree cut at " + std::to_string(SL_PAGED_LOOKUP_LEVELS) +
            " levels); raise pool.pages or page.size";
   const int columns = poolColumnsFor(poolPages);
-  if (columns * layout.pageSize > kMaxPoolSide)
+  if (columns * layout.pageSize > kMaxPoolSideTexels)
     return "a pool of pool.pages = " + std::to_string(poolPages) +
            " pages of page.size = " + std::to_string(layout.pageSize) + " is " +
            std::to_string(columns * layout.pageSize) + " texels wide, more than " +
-           std::to_string(kMaxPoolSide) + "; lower pool.pages or page.size";
+           std::to_string(kMaxPoolSideTexels) + "; lower pool.pages or page.size";
   return std::nullopt;
 }
 
 bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int minPages,
-                      const std::string& technique) {
-  const int columns = poolColumnsFor(poolPages);
+                      const std::string& technique, int poolColumns) {
+  const int columns = poolColumns > 0 ? poolColumns : poolColumnsFor(poolPages);
   const int rows = (poolPages + columns - 1) / columns;
   if (poolPages < minPages)
     throw std::runtime_error(
         technique + ": pool.pages = " + std::to_string(poolPages) + " cannot hold the " +
         std::to_string(minPages) + " pages of the coarsest level (the quadtree is cut at " +
         std::to_string(SL_PAGED_LOOKUP_LEVELS) + " levels); raise pool.pages or page.size");
-  if (columns * layout.pageSize > kMaxPoolSide)
+  if (columns * layout.pageSize > kMaxPoolSideTexels)
     throw std::runtime_error(technique + ": a pool of " + std::to_string(poolPages) + " pages of " +
                              std::to_string(layout.pageSize) + "² is " +
                              std::to_string(columns * layout.pageSize) +
-                             " texels wide, more than " + std::to_string(kMaxPoolSide) +
+                             " texels wide, more than " + std::to_string(kMaxPoolSideTexels) +
                              "; lower pool.pages or page.size");
   bool changed = false;
   if (!pageTable_ || layout_.virtualResolution != layout.virtualResolution ||
@@ -254,7 +255,8 @@ bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int min
     pageTable_ = gl::Texture::create2D(GL_R32UI, n, n, layout_.levels());
     changed = true;
   }
-  if (!poolMap_ || poolPages_ != poolPages || poolMap_.width() != columns * layout_.pageSize) {
+  if (!poolMap_ || poolPages_ != poolPages || poolMap_.width() != columns * layout_.pageSize ||
+      poolMap_.height() != rows * layout_.pageSize) {
     poolPages_ = poolPages;
     poolColumns_ = columns;
     createDepthTarget(poolMap_, poolFbo_, columns * layout_.pageSize, rows * layout_.pageSize,
@@ -376,6 +378,18 @@ void PagedMap::addMemory(MemoryStats& m) const {
     for (int l = 0; l < layout_.levels(); ++l)
       m.add("page table level " + std::to_string(l), "R32UI", layout_.pagesPerSide(l),
             layout_.pagesPerSide(l), 1, 4);
+}
+
+std::uint64_t PagedMap::poolBytes() const {
+  return poolMap_ ? std::uint64_t(poolMap_.width()) * std::uint64_t(poolMap_.height()) *
+                        std::uint64_t(gl::bytesPerTexel(poolMap_.format()))
+                  : 0;
+}
+
+std::uint64_t PagedMap::superpageBytes() const {
+  return superpage_ ? std::uint64_t(superpage_.width()) * std::uint64_t(superpage_.height()) *
+                          std::uint64_t(gl::bytesPerTexel(superpage_.format()))
+                    : 0;
 }
 
 }  // namespace sl

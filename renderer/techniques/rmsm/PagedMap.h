@@ -46,6 +46,9 @@ struct PageViewsFrame {
   int allocated = 0;                               ///< pool slots in use after the frame
 };
 
+/// The largest pool texture side ShadowLab asks for (GL 4.5 guarantees 16384 on llvmpipe).
+inline constexpr int kMaxPoolSideTexels = 16384;
+
 /// Columns of a pool's page grid: the smallest square holding `pages`.
 int poolColumnsFor(int pages);
 
@@ -64,8 +67,10 @@ class PagedMap {
   /// true when it did (the CPU side starts over too). Throws std::runtime_error, prefixed with
   /// `technique`, for a pool smaller than `minPages` (what the technique must always hold) or
   /// wider than the largest texture ShadowLab asks for.
+  /// `columns` > 0 gives the pool's pages per row (pool.budget: pages::fitPoolToBytes), else
+  /// poolColumnsFor(poolPages).
   bool ensure(const pages::VirtualLayout& layout, int poolPages, int minPages,
-              const std::string& technique);
+              const std::string& technique, int columns = 0);
   const pages::VirtualLayout& layout() const { return layout_; }
   int poolColumns() const { return poolColumns_; }
   const gl::Texture& poolTexture() const { return poolMap_; }
@@ -106,6 +111,10 @@ class PagedMap {
   std::vector<int> pageGrid() const;
   /// The pool's, the page table's and the superpage target's bytes.
   void addMemory(MemoryStats& m) const;
+  /// The pool texture's bytes (0 before ensure).
+  std::uint64_t poolBytes() const;
+  /// The superpage target's bytes while it exists (0 otherwise).
+  std::uint64_t superpageBytes() const;
 
  private:
   pages::VirtualLayout layout_;

@@ -51,9 +51,44 @@ TechniqueInfo RmsmShadowMap::info() {
               std::to_string(SL_RMSM_SUPERPAGE) +
               "² blocks of one level; each block is "
               "rendered once into a superpage target, then its pages are copied into their "
-              "pool slots (one scene draw per superpage). pages: one scene draw per allocated "
-              "page, straight into its slot (the default: on llvmpipe superpages made the frame "
-              "1.4-2.1x slower: docs/techniques/rmsm.md)."});
+              "pool slots (one scene draw per superpage): the paper's pipeline. pages (the "
+              "tool's default): one scene draw per allocated page, straight into its slot, no "
+              "superpage target (its 4 MiB count in memory() and so in pool.budget; on "
+              "llvmpipe superpages made the frame 1.4-2.1x slower: docs/techniques/rmsm.md)."});
+  p.push_back(ParamDecl{
+      .key = "lod.derivatives",
+      .label = "LOD derivatives",
+      .group = "Pages",
+      .type = ParamType::Enum,
+      .defaultValue = SL_RMSM_DERIVATIVES_NEIGHBOUR,
+      .minValue = 0,
+      .maxValue = 1,
+      .step = 1,
+      .enumNames = {"neighbour", "same-surface"},
+      .help = "Where dX and dY of the LOD come from (G-buffer finite differences). neighbour "
+              "(the tool's default): the right / upper pixel, else the left / lower one, on "
+              "whatever surface it lies: at a silhouette the step jumps to another surface and "
+              "asks for a far coarser page. same-surface (the paper's reading: the derivatives "
+              "of the rasterised (s, t), taken within the pixel's own triangle): the first of "
+              "the two that lies on the pixel's surface (its offset within 0.1 of the tangent "
+              "plane, normals within 25.8 degrees), else as neighbour.",
+      .uniform = "u_rmsmDerivatives"});
+
+  p.push_back(ParamDecl{
+      .key = "pool.budget",
+      .label = "Memory budget (bytes)",
+      .group = "Pages",
+      .type = ParamType::Int,
+      .defaultValue = 0,
+      .minValue = 0,
+      .maxValue = 1073741824,
+      .step = 1048576,
+      .help = "0: the pool holds pool.pages. Otherwise the technique's whole memory in bytes "
+              "(memory(): the pool, the page table, the per-pixel request image, the request "
+              "list, the sort's buffers, the superpage target): each frame, after the sort, the "
+              "pool gets the most pages that fit in what the rest leaves, and pool.pages is "
+              "ignored (16777216: uniform 2048²'s DEPTH_COMPONENT32F map). The paper gives no "
+              "pool size; this compares it at another technique's bytes."});
 
   TechniqueInfo info{"rmsm", "Resolution-matched shadow map",
                      "Lefohn, Sengupta, Owens 2007: every camera pixel asks for the page of a "
@@ -139,12 +174,14 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   // One lookup "map" per level (rmsm/lookup.glsl): a deeper tree is cut below its root.
   if (auto e = checkPagedMapParams(ctx.params)) throw std::runtime_error("rmsm: " + *e);
   const pages::VirtualLayout layout = pagedLayoutOf(ctx.params);
-  const int poolPages = ctx.params.getInt("pool.pages");
-  if (map_.ensure(layout, poolPages, layout.topPages(), "rmsm") || !table_ ||
-      pool_->capacity() != poolPages) {
-    layout_ = layout;
-    table_ = std::make_unique<pages::PageTable>(layout_);
-    pool_ = std::make_unique<pages::PagePool>(poolPages);
+  const auto budget = std::uint64_t(ctx.params.get("pool.budget"));
+  if (budget == 0) {
+    budgetPool_ = {};
+    ensurePool(layout, ctx.params.getInt("pool.pages"), 0);
+  } else if (budgetPool_.pages() > 0) {
+    ensurePool(layout, budgetPool_.pages(), budgetPool_.columns);  // last frame's fit
+  } else {
+    ensurePool(layout, layout.topPages(), 0);  // refitted below, once the sort's size is known
   }
 
   LightFit fit;
@@ -156,6 +193,7 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
 
   requestPages(ctx);
   sortUnique(ctx);
+  if (budget > 0) fitPoolToBudget(layout, budget, ctx.params.getInt("rmsm.render"));
   allocate(ctx);
   renderPages(ctx);
 
@@ -163,13 +201,47 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "pages.superpages", double(last_.superpages.size()));
   publishNumber(ctx, "pages.scene_draws", last_.sceneDraws);
   publishNumber(ctx, "pages.render_texels", double(last_.renderTexels));
-  map_.publish(ctx,
-               {.table = table_.get(),
-                .levelStates = [&](int l) { return pages::levelStates(*table_, last_.unique, l); },
-                .requests = last_.compacted,
-                .poolLevels = [&] { return pages::poolLevels(last_.allocation, poolPages); },
-                .requested = last_.allocation.requested,
-                .allocated = int(last_.allocation.pages.size())});
+  map_.publish(
+      ctx, {.table = table_.get(),
+            .levelStates = [&](int l) { return pages::levelStates(*table_, last_.unique, l); },
+            .requests = last_.compacted,
+            .poolLevels = [&] { return pages::poolLevels(last_.allocation, pool_->capacity()); },
+            .requested = last_.allocation.requested,
+            .allocated = int(last_.allocation.pages.size())});
+}
+
+void RmsmShadowMap::ensurePool(const pages::VirtualLayout& layout, int poolPages, int columns) {
+  if (map_.ensure(layout, poolPages, layout.topPages(), "rmsm", columns) || !table_ ||
+      pool_->capacity() != poolPages) {
+    layout_ = layout;
+    table_ = std::make_unique<pages::PageTable>(layout_);
+    pool_ = std::make_unique<pages::PagePool>(poolPages);
+  }
+}
+
+void RmsmShadowMap::fitPoolToBudget(const pages::VirtualLayout& layout, std::uint64_t budget,
+                                    int render) {
+  // Everything but the pool, as memory() will list it after the render step: the superpage
+  // target exists exactly while rmsm.render = superpages.
+  const std::uint64_t side = std::uint64_t(std::min(SL_RMSM_SUPERPAGE, layout.virtualResolution));
+  const std::uint64_t superpage = render == kRenderSuperpages ? 4 * side * side : 0;
+  const std::uint64_t rest =
+      memory().bytes() - map_.poolBytes() - map_.superpageBytes() + superpage;
+  const std::uint64_t pageBytes = 4ull * std::uint64_t(layout.pageSize) * layout.pageSize;
+  const std::optional<pages::PoolShape> shape =
+      budget > rest ? pages::fitPoolToBytes(budget - rest, pageBytes,
+                                            kMaxPoolSideTexels / layout.pageSize, layout.topPages())
+                    : std::nullopt;
+  if (!shape)
+    throw std::runtime_error(
+        "rmsm: pool.budget = " + std::to_string(budget) + " bytes cannot hold the " +
+        std::to_string(layout.topPages()) + " pages of the coarsest level (" +
+        std::to_string(std::uint64_t(layout.topPages()) * pageBytes) + " bytes) beside the " +
+        std::to_string(rest) +
+        " bytes of the page table, request and sort buffers and superpage target; raise "
+        "pool.budget");
+  budgetPool_ = *shape;
+  ensurePool(layout, shape->pages(), shape->columns);
 }
 
 void RmsmShadowMap::requestPages(FrameContext& ctx) {
@@ -184,6 +256,7 @@ void RmsmShadowMap::requestPages(FrameContext& ctx) {
   requestProgram_.use();
   map_.setLayoutUniforms(requestProgram_, view_.lightViewProj);
   glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
   glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      GL_R32UI);
   glDispatchCompute(gx, gy, 1);

@@ -59,6 +59,11 @@ class RmsmShadowMap : public Technique {
   const glm::mat4& lightViewProj() const { return view_.lightViewProj; }  ///< the virtual map's
 
  private:
+  /// The pool of `poolPages` (`columns` per row, 0: the squarest) and its CPU side.
+  void ensurePool(const pages::VirtualLayout& layout, int poolPages, int columns);
+  /// pool.budget: the pool of the most pages that fit in `budget` bytes beside every other
+  /// buffer memory() lists this frame (after the sort, whose buffers follow the list's length).
+  void fitPoolToBudget(const pages::VirtualLayout& layout, std::uint64_t budget, int render);
   void requestPages(FrameContext& ctx);
   /// The compacted list sorted and made unique on the GPU (rmsm/sort.comp, rmsm/unique.comp;
   /// reference pages::sortUnique).
@@ -83,6 +88,7 @@ class RmsmShadowMap : public Technique {
   std::uint32_t compactedCount_ = 0;  ///< the compacted list's length (clamped), sortUnique
   DepthMapView view_;
   FrameResult last_;
+  pages::PoolShape budgetPool_;  ///< pool.budget's fit of the last frame (empty: none)
 };
 
 }  // namespace sl

@@ -152,6 +152,12 @@ QJsonObject GrabRun::publicationJson() const {
   o[QStringLiteral("requested")] = requested;
   o[QStringLiteral("publication_bytes")] = static_cast<qint64>(r->stats().publicationBytes);
   o[QStringLiteral("panels")] = w_.docks_.drawnValues();
+  o[QStringLiteral("placeholders")] = w_.docks_.placeholders();
+  // The docks a user sees: open, and not a tab behind another or off the window.
+  QJsonArray inView;
+  for (const QDockWidget* dock : w_.findChildren<QDockWidget*>())
+    if (dock->isVisible() && !dock->visibleRegion().isEmpty()) inView.append(dock->objectName());
+  o[QStringLiteral("docks_in_view")] = inView;
   o[QStringLiteral("frame_ms")] = r->stats().totalMs;
   // Never 0 for a frame that measured nothing: null, and why.
   if (auto error = viewport->errorPct())

@@ -25,7 +25,8 @@ constexpr const char* kSelfTests[] = {"params",
                                       "live-error[=DIR]",
                                       "adaptive-resolution[=DIR]",
                                       "no-freeze[=DIR]",
-                                      "storage-click[=DIR]"};
+                                      "storage-click[=DIR]",
+                                      "panels"};
 
 QString selfTestUsage() {
   QStringList all;
@@ -51,8 +52,10 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   const QCommandLineOption scene(QStringLiteral("scene"),
                                  QStringLiteral("Built-in scene name or .gltf/.glb file."),
                                  QStringLiteral("NAME|FILE"));
-  const QCommandLineOption technique(QStringLiteral("technique"), QStringLiteral("Technique id."),
-                                     QStringLiteral("ID"));
+  const QCommandLineOption technique(
+      QStringLiteral("technique"),
+      QStringLiteral("Technique id (default: da-rtw, or the last one used)."),
+      QStringLiteral("ID"));
   const QCommandLineOption set(
       QStringLiteral("set"),
       QStringLiteral("Set a parameter (repeatable), e.g. --set resolution=2048."),
@@ -187,6 +190,9 @@ std::optional<std::string> assignParameter(sl::ParamSet& technique, sl::ParamSet
 }
 
 std::string defaultTechniqueId() {
+  // DA-RTW: the technique whose importance, moments, covariance and warp every RTW panel
+  // draws, so that the first screen shows what the tool is about.
+  if (sl::Renderer::findTechnique(kFirstScreenTechnique)) return kFirstScreenTechnique;
   const auto& all = sl::Renderer::techniques();
   return all.empty() ? std::string() : all.front().id;
 }

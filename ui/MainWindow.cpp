@@ -53,7 +53,9 @@ namespace sl::ui {
 namespace {
 const QString kOpenItem = QStringLiteral("\x01open");  ///< data of the "Open…" scene item
 constexpr int kStatusMessageMs = 10000;
-constexpr int kSettingsVersion = 2;  ///< 2: the debug panels (older layouts are not restored)
+/// 2: the debug panels; 3: each technique's panels side by side (older layouts are not
+/// restored).
+constexpr int kSettingsVersion = 3;
 
 bool isGltfFile(const QString& path) {
   const QString suffix = QFileInfo(path).suffix().toLower();
@@ -91,7 +93,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   setWindowTitle(QStringLiteral("ShadowLab"));
   setAcceptDrops(true);
   setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
-  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+  // The bottom panels reach under the right column: a technique's panels side by side.
+  setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
   setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
   setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
   setCorner(Qt::TopLeftCorner, Qt::LeftDockWidgetArea);
@@ -170,6 +173,8 @@ void MainWindow::restoreSettings() {
   if (settings.value(QStringLiteral("window/version")).toInt() != kSettingsVersion) return;
   restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
   restoreState(settings.value(QStringLiteral("window/state")).toByteArray(), kSettingsVersion);
+  for (const QString& id : settings.value(QStringLiteral("window/openedByHand")).toStringList())
+    docks_.setOpenedByHand(id, true);
 }
 
 void MainWindow::saveSettings() {
@@ -178,6 +183,9 @@ void MainWindow::saveSettings() {
   settings.setValue(QStringLiteral("window/version"), kSettingsVersion);
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState(kSettingsVersion));
+  QStringList byHand;
+  for (const QString& id : docks_.openedByHand()) byHand << id;
+  settings.setValue(QStringLiteral("window/openedByHand"), byHand);
   if (!sceneSpec_.isEmpty()) settings.setValue(QStringLiteral("scene/last"), sceneSpec_);
   if (!viewport_->techniqueId().empty())
     settings.setValue(QStringLiteral("technique/last"),
@@ -323,8 +331,11 @@ void MainWindow::setTechnique(const QString& id) {
     docks_.resetHistory();
     if (rendererBound_) rebuildParamPanel();
     passes_->stop();
-    if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id.toStdString()))
+    if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id.toStdString())) {
+      // The technique's own panels; presenter mode keeps its one big panel.
+      if (!presenter_->active()) docks_.showOnlyFor(*info);
       docks_.raiseFor(*info);
+    }
   }
   syncTechniqueCombo();
   updateTitle();

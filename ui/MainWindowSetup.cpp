@@ -2,6 +2,8 @@
 // main toolbar (scene, technique, camera), the docks (Parameters, Timing, the
 // publication panels of panels/PanelRegistry.h, Lesson, Light, Charts), the status bar and
 // the default layout. MainWindow.cpp has the window's behaviour.
+#include <algorithm>
+
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -15,6 +17,7 @@
 #include <QToolBar>
 #include <QToolButton>
 
+#include "LaunchOptions.h"
 #include "LessonController.h"
 #include "MainWindow.h"
 #include "PassStepper.h"
@@ -34,10 +37,19 @@
 namespace sl::ui {
 
 namespace {
+/// Some technique feeds `panel` and every panel of `row` (they belong side by side).
+bool feedsTogether(const std::vector<const PublicationPanel*>& row, const PublicationPanel& panel) {
+  for (const sl::TechniqueInfo& t : sl::Renderer::techniques())
+    if (panel.describes(t) &&
+        std::all_of(row.begin(), row.end(), [&](const auto* p) { return p->describes(t); }))
+      return true;
+  return false;
+}
+
 const QString kOpenItem = QStringLiteral("\x01open");  ///< data of the "Open…" scene item
 constexpr QSize kDefaultWindowSize(1600, 1000);
 constexpr int kDefaultParamDockWidth = 390;
-constexpr int kDefaultLeftDockWidth = 440;
+constexpr int kDefaultLeftDockWidth = 400;
 constexpr int kDefaultBottomDockHeight = 300;
 const QString kOverlayKey = QStringLiteral("view.overlay");
 }  // namespace
@@ -127,8 +139,11 @@ void MainWindow::createActions() {
   presenter_->createActions(view);
   QMenu* panels = view->addMenu(tr("&Panels"));
   panels->setObjectName(QStringLiteral("panelsMenu"));
-  QAction* defaultLayout =
-      view->addAction(tr("&Default layout"), this, [this] { applyDefaultLayout(); });
+  QAction* defaultLayout = view->addAction(tr("&Default layout"), this, [this] {
+    for (const PublicationDocks::Dock& d : docks_.docks())
+      docks_.setOpenedByHand(d.entry.id, false);
+    applyDefaultLayout();
+  });
 
   QMenu* frame = menuBar()->addMenu(tr("F&rame"));
   pauseAction_ = frame->addAction(tr("&Pause"));
@@ -330,7 +345,11 @@ void MainWindow::applyDefaultLayout() {
   QSize size = kDefaultWindowSize;
   if (screen) size = size.boundedTo(screen->availableGeometry().size());
   // Right: Parameters | Lesson | Charts, the Light under them. Left: the registry's left
-  // panels, one over the other. Bottom: its bottom panels tabbed, then Timing.
+  // panels, one over the other. Bottom, under the view and the right column: its first
+  // bottom panel and those a technique feeds together with the panels beside it, side by
+  // side (RTW's warp functions, shadow map, moment chain); the others tabbed behind the
+  // first, Timing behind the last. A technique shows only the panels it feeds
+  // (PublicationDocks::showOnlyFor), so no row or tab is empty.
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {
     dock->setFloating(false);
     dock->show();
@@ -342,7 +361,9 @@ void MainWindow::applyDefaultLayout() {
   tabifyDockWidget(paramDock_, lessonDock_);
   addDockWidget(Qt::RightDockWidgetArea, chartsDock_);
   tabifyDockWidget(lessonDock_, chartsDock_);
-  QDockWidget *leftFirst = nullptr, *leftLast = nullptr, *bottomFirst = nullptr;
+  QDockWidget *leftFirst = nullptr, *leftLast = nullptr, *bottomFirst = nullptr,
+              *bottomLast = nullptr;
+  std::vector<const PublicationPanel*> row;  ///< the bottom row's panels, left to right
   for (const PublicationDocks::Dock& d : docks_.docks()) {
     addDockWidget(d.entry.area, d.dock);
     if (d.entry.area == Qt::LeftDockWidgetArea) {
@@ -350,16 +371,29 @@ void MainWindow::applyDefaultLayout() {
       if (!leftFirst) leftFirst = d.dock;
       leftLast = d.dock;
     } else if (d.entry.area == Qt::BottomDockWidgetArea) {
-      if (bottomFirst)
+      if (!bottomFirst) {
+        bottomFirst = bottomLast = d.dock;
+        row.push_back(d.panel);
+      } else if (feedsTogether(row, *d.panel)) {
+        splitDockWidget(bottomLast, d.dock, Qt::Horizontal);
+        bottomLast = d.dock;
+        row.push_back(d.panel);
+      } else {
         tabifyDockWidget(bottomFirst, d.dock);
-      else
-        bottomFirst = d.dock;
+      }
     }
   }
   addDockWidget(Qt::BottomDockWidgetArea, timingDock_);
-  if (bottomFirst) tabifyDockWidget(bottomFirst, timingDock_);
+  if (bottomLast) tabifyDockWidget(bottomLast, timingDock_);
+  // The technique's own panels only (the first screen's while the window is being built:
+  // the window's size then fits them).
+  const std::string technique =
+      viewport_->techniqueId().empty() ? defaultTechniqueId() : viewport_->techniqueId();
+  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(technique)) {
+    docks_.showOnlyFor(*info);
+    docks_.raiseFor(*info);
+  }
   paramDock_->raise();
-  if (bottomFirst) bottomFirst->raise();
   // Last: while the docks moved, a stale minimum may have widened the window; settle the
   // layout first, or the pending activation would undo the resize.
   layout()->invalidate();
@@ -369,6 +403,13 @@ void MainWindow::applyDefaultLayout() {
     resizeDocks({paramDock_, leftFirst}, {kDefaultParamDockWidth, kDefaultLeftDockWidth},
                 Qt::Horizontal);
   if (bottomFirst) resizeDocks({bottomFirst}, {kDefaultBottomDockHeight}, Qt::Vertical);
+  // The bottom row's panels share its width.
+  QList<QDockWidget*> shown;
+  for (const PublicationDocks::Dock& d : docks_.docks())
+    if (std::find(row.begin(), row.end(), d.panel) != row.end() && !d.dock->isHidden())
+      shown << d.dock;
+  if (shown.size() > 1)
+    resizeDocks(shown, QList<int>(shown.size(), width() / int(shown.size())), Qt::Horizontal);
 }
 
 QDockWidget* MainWindow::addPanelDock(QWidget* panel, const QString& title, const QString& name,
@@ -440,6 +481,9 @@ void MainWindow::createPanelDocks() {
     commandActions_ << toggle;
   }
   for (const PublicationDocks::Dock& d : docks_.docks()) {
+    // Opened by hand (View > Panels, its shortcut): it stays through technique switches.
+    connect(d.dock->toggleViewAction(), &QAction::triggered, this,
+            [this, id = d.entry.id](bool open) { docks_.setOpenedByHand(id, open); });
     connect(d.dock, &QDockWidget::visibilityChanged, this, [this, p = d.panel](bool visible) {
       updatePublishing();
       if (!visible || !viewport_ || !viewport_->renderer()) return;  // (window being destroyed)

@@ -44,17 +44,25 @@ void PublicationDocks::resetHistory() const {
   for (const Dock& d : docks_) d.panel->resetHistory();
 }
 
-namespace {
-/// The panel draws something the technique itself declares (not only the renderer's keys).
-bool showsTechnique(const PublicationPanel& panel, const sl::TechniqueInfo& info) {
-  for (const std::string& key : panel.observedKeys()) {
-    if (info.findPublication(key)) return true;
-    for (const sl::PublicationDecl& d : info.publications)  // a pattern against a pattern
-      if (sl::publicationKeyMatches(key, d.key)) return true;
+void PublicationDocks::showOnlyFor(const sl::TechniqueInfo& info) {
+  for (const Dock& d : docks_) {
+    // Open: not closed (a tab behind another is open, moved out of sight by the layout).
+    // Not the toggle action: it follows only once the window has been shown.
+    const bool open = !d.dock->isHidden();
+    if (!open) openedByHand_.erase(d.entry.id);  // closed since (its title bar's button)
+    const bool describes = d.panel->describes(info);
+    const bool show = describes || openedByHand_.contains(d.entry.id);
+    if (open != show) d.dock->setVisible(show);
+    if (describes) d.dock->raise();  // in front of its tab group (e.g. of Timing)
   }
-  return false;
 }
-}  // namespace
+
+void PublicationDocks::setOpenedByHand(const QString& id, bool open) {
+  if (open)
+    openedByHand_.insert(id);
+  else
+    openedByHand_.erase(id);
+}
 
 void PublicationDocks::raiseFor(const sl::TechniqueInfo& info) const {
   const Dock *front = nullptr, *first = nullptr;
@@ -62,15 +70,15 @@ void PublicationDocks::raiseFor(const sl::TechniqueInfo& info) const {
     if (d.entry.area != Qt::BottomDockWidgetArea || d.dock->isFloating() || d.dock->isHidden())
       continue;
     if (!d.dock->visibleRegion().isEmpty()) front = &d;  // the tab in front of its group
-    if (!first && showsTechnique(*d.panel, info)) first = &d;
+    if (!first && d.panel->describes(info)) first = &d;
   }
-  if (first && (!front || !showsTechnique(*front->panel, info))) first->dock->raise();
+  if (first && (!front || !front->panel->describes(info))) first->dock->raise();
 }
 
 QDockWidget* PublicationDocks::firstShowing(const sl::TechniqueInfo& info) const {
   QDockWidget* hiddenOne = nullptr;
   for (const Dock& d : docks_) {
-    if (!showsTechnique(*d.panel, info)) continue;
+    if (!d.panel->describes(info)) continue;
     if (!d.dock->isHidden()) return d.dock;
     if (!hiddenOne) hiddenOne = d.dock;
   }
@@ -94,6 +102,14 @@ QJsonObject PublicationDocks::drawnValues() const {
   QJsonObject panels;
   for (const Dock& d : docks_) panels[d.dock->objectName()] = d.panel->drawnValues();
   return panels;
+}
+
+QJsonObject PublicationDocks::placeholders() const {
+  QJsonObject shown;
+  for (const Dock& d : docks_)
+    if (const QString text = d.panel->placeholderShown(); !text.isEmpty())
+      shown[d.dock->objectName()] = text;
+  return shown;
 }
 
 }  // namespace sl::ui

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <QJsonObject>
+#include <QString>
 
 #include "panels/PanelRegistry.h"
 
@@ -39,6 +40,15 @@ class PublicationDocks {
   /// Hands the last publication to the visible panels (`all`: to every panel).
   void feed(const sl::Renderer& renderer, bool all) const;
 
+  /// After a technique switch: the docks whose panel describes `info` (its own panel
+  /// family) are shown and brought in front of their tab group, the others hidden, except
+  /// those opened by hand that are still open.
+  void showOnlyFor(const sl::TechniqueInfo& info);
+  /// The user opened (`open`) or closed dock `id` from View > Panels: an opened one stays
+  /// through technique switches until it is closed.
+  void setOpenedByHand(const QString& id, bool open);
+  const std::set<QString>& openedByHand() const { return openedByHand_; }
+
   /// After a technique switch: when the front bottom tab shows nothing `info` publishes (an
   /// RTW warp panel for `cube`), the first bottom tab that does comes to the front.
   void raiseFor(const sl::TechniqueInfo& info) const;
@@ -53,9 +63,12 @@ class PublicationDocks {
   bool probeWanted() const;
   /// What each panel drew, by dock name (for --grab's published.json).
   QJsonObject drawnValues() const;
+  /// The placeholder text of each panel that shows one instead of data, by dock name.
+  QJsonObject placeholders() const;
 
  private:
   std::vector<Dock> docks_;
+  std::set<QString> openedByHand_;
 };
 
 }  // namespace sl::ui

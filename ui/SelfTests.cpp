@@ -144,6 +144,8 @@ void SelfTests::run() {
     ran = noFreeze(argument_);
   else if (name_ == QLatin1String("storage-click"))
     ran = storageClick(argument_);
+  else if (name_ == QLatin1String("panels"))
+    ran = panelsFollowTechnique();
   else if (name_ == QLatin1String("bad-session"))
     ran = badSession(argument_);
   else

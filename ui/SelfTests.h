@@ -123,6 +123,11 @@ class SelfTests : public QObject {
   /// camera, from algo/partition), the status bar says so, the panel re-analyses with the
   /// mark under the click; a click outside the disk keeps the light. PNGs into DIR.
   bool storageClick(const QString& dir);
+  /// panels (SelfTestsPanels.cpp, started without --technique): the window opens on DA-RTW
+  /// with its panels open and filled; a switch shows the new technique's panels and closes
+  /// the ones it does not feed, except one opened by hand from View > Panels, which stays
+  /// until it is closed; no panel in view shows its "publishes no ..." placeholder.
+  bool panelsFollowTechnique();
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
   /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;

@@ -10,7 +10,7 @@ namespace sl::ui {
 std::vector<PanelEntry> analysisPanels() {
   return {
       {QStringLiteral("storage"),
-       QCoreApplication::translate("sl::ui::MainWindow", "Storage factor"), Qt::RightDockWidgetArea,
+       QCoreApplication::translate("sl::ui::MainWindow", "Storage factor"), Qt::LeftDockWidgetArea,
        [] { return new StoragePanel; }, QKeySequence(Qt::CTRL | Qt::Key_0)},
   };
 }

@@ -30,6 +30,8 @@ class StoragePanel : public PublicationPanel {
   ~StoragePanel() override;
 
   std::set<std::string> observedKeys() const override { return analysis::storagePanelKeys(); }
+  /// Every frame has its keys: it describes the techniques whose scheme it analyses.
+  bool describes(const sl::TechniqueInfo& info) const override { return analysesScheme(info); }
   void showPublication(const sl::Publication& publication) override;
   /// A click on the hemisphere emits lightChosen (PublicationPanel) with that direction.
   /// "scheme", "s", "mx", "mz" (the current light), "predicted_m_x", "predicted_m_z"

@@ -87,4 +87,15 @@ void schemeFromDeclarations(const sl::TechniqueInfo* info, const FrameValue& par
   out.schemeLabel = buf;
 }
 
+bool analysesScheme(const sl::TechniqueInfo& info) {
+  if (std::find(info.lights.begin(), info.lights.end(), sl::LightType::Directional) ==
+      info.lights.end())
+    return false;
+  const bool declared = std::any_of(info.params.begin(), info.params.end(), [](const auto& d) {
+    return d.key == "partitions" || d.key == "warp.eta";
+  });
+  return info.id == "uniform" || declared || info.findPublication("warp.eta") ||
+         info.findPublication("faces.front");
+}
+
 }  // namespace sl::ui

@@ -35,4 +35,10 @@ using FrameValue = std::function<std::optional<double>(const std::string& key)>;
 void schemeFromDeclarations(const sl::TechniqueInfo* info, const FrameValue& param,
                             const FrameValue& published, StorageInputs& out);
 
+/// Whether the analysis models technique `info`'s own scheme (for a directional light):
+/// `uniform`, one warp (a "warp.eta" parameter or publication), cascades (a "partitions"
+/// parameter), face partitions (publishes "faces.front"). Others (RTW, paged and fitted
+/// virtual maps) are analysed as if uniform, which says nothing about them. Pure.
+bool analysesScheme(const sl::TechniqueInfo& info);
+
 }  // namespace sl::ui

@@ -722,6 +722,19 @@ PublicationPanel::PublicationPanel(QWidget* parent) : QWidget(parent) {
   placeholder_->setText(tr("No frame yet."));
 }
 
+bool PublicationPanel::describes(const sl::TechniqueInfo& info) const {
+  for (const std::string& key : observedKeys()) {
+    if (info.findPublication(key)) return true;
+    for (const sl::PublicationDecl& d : info.publications)  // a pattern against a pattern
+      if (sl::publicationKeyMatches(key, d.key)) return true;
+  }
+  return false;
+}
+
+QString PublicationPanel::placeholderShown() const {
+  return stack_->currentIndex() == 0 ? placeholder_->text() : QString();
+}
+
 void PublicationPanel::setContent(QWidget* content) {
   stack_->addWidget(content);
 }

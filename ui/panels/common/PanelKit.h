@@ -228,6 +228,12 @@ class PublicationPanel : public QWidget {
   virtual void showPublication(const sl::Publication& publication) = 0;
   /// Pass stepping: emphasise what shows pass `passId` ("" = nothing).
   virtual void highlightPass(const QString& passId) { (void)passId; }
+  /// Whether the panel has something to say about technique `info`: by default, it draws a
+  /// key the technique itself declares (not only the renderer's keys every frame has). The
+  /// window shows such panels and hides the others when the technique changes.
+  virtual bool describes(const sl::TechniqueInfo& info) const;
+  /// The placeholder's text while the panel shows it instead of its content, else empty.
+  QString placeholderShown() const;
   /// Values the panel computed or drew (for --grab's published.json).
   virtual QJsonObject drawnValues() const { return {}; }
   /// Forgets accumulated history (new scene or technique).

@@ -25,7 +25,7 @@ std::vector<PanelEntry> rtwPanels() {
       entry<CovariancePanel>("covariance", "Covariance", Qt::LeftDockWidgetArea),
       entry<WarpPanel>("warp", "Warp functions", Qt::BottomDockWidgetArea),
       entry<ShadowMapPanel>("shadowmap", "Shadow map", Qt::BottomDockWidgetArea),
-      entry<MomentPanel>("moments", "Moment mip chain", Qt::BottomDockWidgetArea),
+      entry<MomentPanel>("moments", "Moment mip chain", Qt::LeftDockWidgetArea),
   };
 }
 

@@ -14,8 +14,14 @@ flat in vec3 f_s;
 flat in vec3 f_t;
 flat in float f_valid;
 uniform int u_smRes;
+uniform int u_interpolatedDepth;  // warp.depth = interpolated: the rasteriser's depth
 
 void main() {
+  if (u_interpolatedDepth != 0) {  // linear in warped space between the tessellated vertices
+    if (materialAlphaRejectsLevel0(v_uv)) discard;
+    gl_FragDepth = gl_FragCoord.z;  // the shader writes gl_FragDepth: every path must
+    return;
+  }
   vec2 d = inverseWarpCentre(ivec2(gl_FragCoord.xy), u_smRes) - f_origin.xy;
   bool plane = f_valid > 0.5;
   vec2 uv = plane ? vec2(f_s.x + dot(f_s.yz, d), f_t.x + dot(f_t.yz, d)) : v_uv;

@@ -95,6 +95,21 @@ std::vector<LightTriangle> randomTriangles(int count, std::uint64_t seed) {
   return tris;
 }
 
+/// The plane of the covering-triangle tests: window depth at light uv (u, v).
+double plane(double u, double v) {
+  return 0.3 + 0.25 * u + 0.15 * v;
+}
+
+/// One triangle of that plane covering the whole map, its vertices outside (0, 1)^2.
+LightTriangle coveringPlaneTriangle() {
+  LightTriangle big;
+  const glm::dvec2 corners[3] = {{-1.0, -1.0}, {3.0, -1.0}, {-1.0, 3.0}};
+  for (int k = 0; k < 3; ++k)
+    big.v[size_t(k)] = glm::vec3(float(corners[k].x), float(corners[k].y),
+                                 float(plane(corners[k].x, corners[k].y)));
+  return big;
+}
+
 // ---------------------------------------------------------------------------------------
 
 TEST(WarpedRaster, InverseTableOfTheIdentityIsTheTexelCentre) {
@@ -143,13 +158,7 @@ TEST(WarpedRaster, IdentityWarpEqualsAPlainRasteriser) {
 // gives the plane at the WARPED centre) is off by more than 0.01 here.
 TEST(WarpedRaster, CoveringPlaneIsThePlaneAtTheInverseWarpedCentre) {
   const WarpMaps maps = strongWarp();
-  auto plane = [](double u, double v) { return 0.3 + 0.25 * u + 0.15 * v; };
-  LightTriangle big;
-  const glm::dvec2 corners[3] = {{-1.0, -1.0}, {3.0, -1.0}, {-1.0, 3.0}};
-  for (int k = 0; k < 3; ++k)
-    big.v[size_t(k)] = glm::vec3(float(corners[k].x), float(corners[k].y),
-                                 float(plane(corners[k].x, corners[k].y)));
-  const std::vector<LightTriangle> tris{big};
+  const std::vector<LightTriangle> tris{coveringPlaneTriangle()};
   for (int res : {128, 256}) {
     WarpedRaster r = rasterizeWarped(maps, res, tris);
     std::vector<float> tx = inverseWarpTable(maps.x, res), ty = inverseWarpTable(maps.y, res);
@@ -164,6 +173,72 @@ TEST(WarpedRaster, CoveringPlaneIsThePlaneAtTheInverseWarpedCentre) {
       }
     EXPECT_GT(maxLinearError, 0.01) << "the warp is not strong enough to test anything";
   }
+}
+
+// Seed 002's interpolated map of the same covering triangle: its vertices lie outside
+// (0, 1), where the warp is the identity, so the warped triangle is the triangle itself and
+// linear interpolation in warped space gives the plane at the WARPED texel centre (not at
+// the inverse-warped one, as the exact map does): the error is the warp's displacement
+// times the plane's gradient, > 0.01 here.
+TEST(WarpedRaster, InterpolatedDepthIsThePlaneAtTheWarpedCentre) {
+  const WarpMaps maps = strongWarp();
+  const std::vector<LightTriangle> tris{coveringPlaneTriangle()};
+  const int res = 128;
+  const WarpedRaster interp = rasterizeWarpedInterpolated(maps, res, tris);
+  const WarpedRaster exact = rasterizeWarped(maps, res, tris);
+  ASSERT_EQ(interp.size, res);
+  double maxOff = 0.0;
+  for (int j = 0; j < res; ++j)
+    for (int i = 0; i < res; ++i) {
+      const size_t t = size_t(j) * size_t(res) + size_t(i);
+      ASSERT_EQ(interp.triangle[t], 0) << i << "," << j;
+      EXPECT_NEAR(interp.depth[t], plane((i + 0.5) / res, (j + 0.5) / res), 1e-6) << i << "," << j;
+      maxOff = std::max(maxOff, std::abs(double(interp.depth[t]) - double(exact.depth[t])));
+    }
+  EXPECT_GT(maxOff, 0.01);
+}
+
+// With no warp the interpolated map is an ordinary rasteriser, like the exact one.
+TEST(WarpedRaster, InterpolatedWithoutAWarpEqualsAPlainRasteriser) {
+  std::vector<LightTriangle> tris = randomTriangles(60, 11);
+  for (int res : {64, 100}) {
+    const WarpedRaster r = rasterizeWarpedInterpolated(WarpMaps{}, res, tris);
+    const Plain p = plainRaster(res, tris);
+    size_t coverageDiffers = 0;
+    for (size_t t = 0; t < p.depth.size(); ++t) {
+      if ((r.triangle[t] >= 0) != (p.tri[t] >= 0)) {
+        ++coverageDiffers;
+        continue;
+      }
+      EXPECT_NEAR(r.depth[t], p.depth[t], 1e-6f) << "res " << res << " texel " << t;
+    }
+    EXPECT_EQ(coverageDiffers, 0u) << "res " << res;
+  }
+  EXPECT_EQ(rasterizeWarpedInterpolated(WarpMaps{}, 0, tris).size, 0);
+}
+
+// A small triangle in the warped map: its vertices move by the warp, its edges stay
+// straight between them (coverage of the warped triangle, not of the bent one).
+TEST(WarpedRaster, InterpolatedCoverageIsTheWarpedStraightTriangle) {
+  const WarpMaps maps = strongWarp();
+  const LightTriangle t{
+      {glm::vec3(0.2f, 0.55f, 0.4f), glm::vec3(0.9f, 0.6f, 0.5f), glm::vec3(0.25f, 0.75f, 0.6f)}};
+  LightTriangle warped = t;
+  for (glm::vec3& p : warped.v) {
+    const glm::vec2 w = warpUv(maps, glm::vec2(p));
+    p = glm::vec3(w, p.z);
+  }
+  const int res = 96;
+  const WarpedRaster r = rasterizeWarpedInterpolated(maps, res, std::vector<LightTriangle>{t});
+  const Plain p = plainRaster(res, {warped});
+  size_t covered = 0;
+  for (size_t k = 0; k < p.depth.size(); ++k) {
+    EXPECT_EQ(r.triangle[k] >= 0, p.tri[k] >= 0) << k;
+    if (p.tri[k] < 0) continue;
+    ++covered;
+    EXPECT_NEAR(r.depth[k], p.depth[k], 1e-6f) << k;
+  }
+  EXPECT_GT(covered, 100u);
 }
 
 // warpCoordinate(table[i]) is the texel centre (Warp.h: round trip to 1e-6), for strong

@@ -24,6 +24,20 @@ void indicesInRange(const std::vector<float>& table, double lo, double hi, std::
     if (double(table[i]) >= lo && double(table[i]) <= hi) out.push_back(i);
 }
 
+/// Writes the plane of triangle k at light uv (u, v) into texel t of r when it covers the
+/// point, lies within GL's near / far clip and is nearer than best[t] (ties keep the first).
+void keepNearest(WarpedRaster& r, std::vector<double>& best, size_t t, const LightTriangle& tri,
+                 size_t k, double u, double v) {
+  double z;
+  if (!lightTrianglePlaneAt(tri, u, v, z)) return;
+  if (!(z >= 0.0 && z <= 1.0)) return;  // GL's near / far clipping
+  if (z < best[t]) {
+    best[t] = z;
+    r.depth[t] = static_cast<float>(z);
+    r.triangle[t] = static_cast<int>(k);
+  }
+}
+
 }  // namespace
 
 glm::vec3 lightSpaceOf(const glm::mat4& lightViewProj, glm::vec3 worldP) {
@@ -100,17 +114,9 @@ WarpedRaster rasterizeWarped(const WarpMaps& maps, int smRes, std::span<const Li
     if (cols.empty()) continue;
     indicesInRange(r.tableY, v0, v1, rows);
     for (int j : rows)
-      for (int i : cols) {
-        double z;
-        if (!lightTrianglePlaneAt(tri, r.tableX[size_t(i)], r.tableY[size_t(j)], z)) continue;
-        if (!(z >= 0.0 && z <= 1.0)) continue;  // GL's near / far clipping
-        const size_t t = size_t(j) * n + size_t(i);
-        if (z < best[t]) {
-          best[t] = z;
-          r.depth[t] = static_cast<float>(z);
-          r.triangle[t] = static_cast<int>(k);
-        }
-      }
+      for (int i : cols)
+        keepNearest(r, best, size_t(j) * n + size_t(i), tri, k, r.tableX[size_t(i)],
+                    r.tableY[size_t(j)]);
   }
   return r;
 }
@@ -118,6 +124,45 @@ WarpedRaster rasterizeWarped(const WarpMaps& maps, int smRes, std::span<const Li
 std::vector<float> rasterizeWarpedDepth(const WarpMaps& maps, int smRes,
                                         std::span<const LightTriangle> tris) {
   return rasterizeWarped(maps, smRes, tris).depth;
+}
+
+WarpedRaster rasterizeWarpedInterpolated(const WarpMaps& maps, int smRes,
+                                         std::span<const LightTriangle> tris) {
+  WarpedRaster r;
+  if (smRes < 1) return r;
+  r.size = smRes;
+  const size_t n = static_cast<size_t>(smRes);
+  r.depth.assign(n * n, 1.0f);
+  r.triangle.assign(n * n, -1);
+  std::vector<double> best(n * n, 2.0);
+  const double res = double(smRes);
+  for (size_t k = 0; k < tris.size(); ++k) {
+    LightTriangle warped = tris[k];
+    for (glm::vec3& p : warped.v) {
+      const glm::vec2 w = warpUv(maps, glm::vec2(p));
+      p.x = w.x;
+      p.y = w.y;
+    }
+    const double area = lightTriangleArea2(warped);
+    if (!(std::abs(area) >= 1e-12)) continue;
+    double u0 = warped.v[0].x, u1 = u0, v0 = warped.v[0].y, v1 = v0;
+    for (const glm::vec3& p : warped.v) {
+      u0 = std::min(u0, double(p.x));
+      u1 = std::max(u1, double(p.x));
+      v0 = std::min(v0, double(p.y));
+      v1 = std::max(v1, double(p.y));
+    }
+    // Texel centres (i + 0.5) / smRes within the bounding box, clamped to the map.
+    const int i0 = std::max(0, int(std::ceil(u0 * res - 0.5)));
+    const int i1 = std::min(smRes - 1, int(std::floor(u1 * res - 0.5)));
+    const int j0 = std::max(0, int(std::ceil(v0 * res - 0.5)));
+    const int j1 = std::min(smRes - 1, int(std::floor(v1 * res - 0.5)));
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i)
+        keepNearest(r, best, size_t(j) * n + size_t(i), warped, k, (double(i) + 0.5) / res,
+                    (double(j) + 0.5) / res);
+  }
+  return r;
 }
 
 glm::vec3 warpedLookup(const WarpMaps& maps, const glm::mat4& lightViewProj, glm::vec3 worldP) {

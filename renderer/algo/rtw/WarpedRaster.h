@@ -100,6 +100,19 @@ WarpedRaster rasterizeWarped(const WarpMaps& maps, int smRes, std::span<const Li
 std::vector<float> rasterizeWarpedDepth(const WarpMaps& maps, int smRes,
                                         std::span<const LightTriangle> tris);
 
+/// The warped map as seed 002 renders it (warp.depth = interpolated, shaders/rtw/
+/// warped_vertex.*): each vertex moved by the warp, (u', v') = warpUv(maps, (u, v)) in float
+/// as the vertex shader does, the triangle rasterised with straight edges in WARPED space
+/// and z interpolated linearly there. Texel (i, j) is covered when its centre
+/// ((i + 0.5) / smRes, (j + 0.5) / smRes) lies inside the warped triangle (edges inclusive,
+/// orient as above on the warped uv, |area| < 1e-12 covers nothing); z = the barycentric mix
+/// of the vertices' z at that centre; outside [0, 1] not written; the nearest wins (ties
+/// keep the first). Double arithmetic from the float warped vertices. tableX / tableY are
+/// left empty. Against rasterizeWarped, the depth is wrong by about |grad z| times how far
+/// the warp bends the triangle, and silhouettes are the warped straight edges.
+WarpedRaster rasterizeWarpedInterpolated(const WarpMaps& maps, int smRes,
+                                         std::span<const LightTriangle> tris);
+
 /// The lookup coordinate of a world point, without bias: (warpUv(maps, uv), z) with
 /// (uv, z) = lightSpaceOf(lightViewProj, worldP). Mirrors lookup.glsl's shadowLookupCoord
 /// for a zero normal offset.

@@ -175,8 +175,35 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
        .help = "Tessellation level from the warped edge: how far the warp bends it from a straight "
                "line, in texels; level = ceil(sqrt(bend / tolerance)), at most " +
                std::to_string(kMaxTessellationLevel) +
-               ". Depth is exact whatever the level: this only shapes silhouettes.",
+               ". With warp.depth = exact, depth is exact whatever the level: this only shapes "
+               "silhouettes.",
        .uniform = "u_toleranceTexels"});
+  add({.key = "warp.depth",
+       .label = "Warped depth",
+       .group = "Warp",
+       .type = ParamType::Enum,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"exact", "interpolated"},
+       .help = "exact: each texel holds its triangle's depth plane at the texel's unwarped "
+               "centre. interpolated: depth interpolated linearly between the warped vertices, "
+               "as seed 002 renders RTW; wrong inside long triangles (acne, leaks). With "
+               "tessellation off, the vertex shader warps the vertices and no tessellation "
+               "stage runs: the seed's pass.",
+       .uniform = "u_interpolatedDepth"});
+  add({.key = "warp.split",
+       .label = "Split long triangles",
+       .group = "Warp",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .help = "Render the warped map from the scene's triangles split to edges of at most 1/32 "
+               "of its diagonal, so tessellation can bend every edge; off: the triangles as "
+               "loaded, as seed 002 renders them."});
   add({.key = "light.fit",
        .label = "Frustum fit",
        .group = "Light frustum",
@@ -317,6 +344,11 @@ RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
                      {GL_FRAGMENT_SHADER, "rtw/warped_exact.frag"}},
                     {},
                     {}}),
+      warpedVertex_(lib, {"rtw/warped_vertex",
+                          {{GL_VERTEX_SHADER, "rtw/warped_vertex.vert"},
+                           {GL_FRAGMENT_SHADER, "rtw/warped_vertex.frag"}},
+                          {},
+                          {}}),
       moments_(lib, compute("rtw/moments.comp")),
       momentsLevel1_(lib, compute("rtw/moments_level1.comp")),
       momentsReduce_(lib, compute("rtw/moments_reduce.comp")),
@@ -607,16 +639,29 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
   const ParamSet& p = ctx.params;
   gl::Framebuffer& fbo = warp ? smFbo_ : uniformFbo_;
   beginDepthPass(fbo.id(), smRes_, smRes_);
+  const SceneGpu::Geometry geometry = p.getInt("warp.split") != 0
+                                          ? SceneGpu::Geometry::SplitLongTriangles
+                                          : SceneGpu::Geometry::AsLoaded;
+  if (p.getInt("warp.depth") == 1 && (p.getInt("tessellation") == 0 || !warp)) {
+    // Seed 002's pass: warped in the vertex shader, depth interpolated by the rasteriser.
+    warpedVertex_.use();
+    bindWarpTextures(warpedVertex_, SL_UNIT_MATERIAL + 1);
+    warpedVertex_.set("u_lightViewProj", lightViewProj);
+    warpedVertex_.set("u_warpN", imRes_);
+    warpedVertex_.set("u_warpOn", warp ? 1 : 0);
+    ctx.sceneGpu.draw(warpedVertex_, SL_UNIT_MATERIAL, false, geometry);
+    return;
+  }
   warped_.use();
   bindWarpTextures(warped_, SL_UNIT_MATERIAL + 1);
   warped_.set("u_lightViewProj", lightViewProj);
   warped_.set("u_warpN", imRes_);
   warped_.set("u_warpOn", warp ? 1 : 0);
   warped_.set("u_smRes", smRes_);
-  bindParams(warped_, p);                 // tessellation, tessellation.tolerance
+  bindParams(warped_, p);                 // tessellation, tessellation.tolerance, warp.depth
   if (!warp) warped_.set("u_tessOn", 0);  // the unwarped contrast map: no bending
   warped_.set("u_smSize", glm::vec2(float(smRes_)));
-  ctx.sceneGpu.draw(warped_, SL_UNIT_MATERIAL, true, SceneGpu::Geometry::SplitLongTriangles);
+  ctx.sceneGpu.draw(warped_, SL_UNIT_MATERIAL, true, geometry);
 }
 
 void RtwShadowMap::renderShadows(FrameContext& ctx) {
@@ -722,8 +767,8 @@ void RtwShadowMap::bindWarpTextures(const gl::Program& prog, int unit) const {
 }
 
 std::vector<const gl::Program*> RtwShadowMap::programs() const {
-  return {&backward_,    &forward_, &collapse_, &blur_,          &scanWarp_,
-          &inverseWarp_, &warped_,  &moments_,  &momentsLevel1_, &momentsReduce_};
+  return {&backward_, &forward_,      &collapse_, &blur_,          &scanWarp_,     &inverseWarp_,
+          &warped_,   &warpedVertex_, &moments_,  &momentsLevel1_, &momentsReduce_};
 }
 
 MemoryStats RtwShadowMap::memory() const {
@@ -756,7 +801,7 @@ MemoryStats RtwShadowMap::memory() const {
 std::optional<std::string> RtwShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
   std::string errors;
   for (gl::Program* prog : {&backward_, &forward_, &collapse_, &blur_, &scanWarp_, &inverseWarp_,
-                            &warped_, &moments_, &momentsLevel1_, &momentsReduce_})
+                            &warped_, &warpedVertex_, &moments_, &momentsLevel1_, &momentsReduce_})
     if (auto e = prog->rebuild(lib)) errors += (errors.empty() ? "" : "\n") + *e;
   if (errors.empty()) return std::nullopt;
   return errors;

@@ -57,8 +57,9 @@ class RtwShadowMap : public Technique {
   void bindWarpTextures(const gl::Program& prog, int unit) const;
 
   Config config_;
-  gl::Program backward_, forward_, collapse_, blur_, scanWarp_, inverseWarp_, warped_, moments_,
-      momentsLevel1_, momentsReduce_;
+  gl::Program backward_, forward_, collapse_, blur_, scanWarp_, inverseWarp_, warped_,
+      warpedVertex_,  ///< warp.depth = interpolated without tessellation: seed 002's pass
+      moments_, momentsLevel1_, momentsReduce_;
   gl::Texture shadowMap_;
   /// The 2D importance map: the forward/hybrid render target; for backward analysis (which
   /// scatters straight into the 1D maps) made only while a panel shows it.

@@ -189,7 +189,7 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
        .enumNames = {"exact", "interpolated"},
        .help = "exact: each texel holds its triangle's depth plane at the texel's unwarped "
                "centre. interpolated: depth interpolated linearly between the warped vertices, "
-               "as seed 002 renders RTW; wrong inside long triangles (acne, leaks). With "
+               "as Rosen (2012) renders RTW; wrong inside long triangles (acne, leaks). With "
                "tessellation off, the vertex shader warps the vertices and no tessellation "
                "stage runs: the seed's pass.",
        .uniform = "u_interpolatedDepth"});
@@ -203,7 +203,7 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
        .step = 1,
        .help = "Render the warped map from the scene's triangles split to edges of at most 1/32 "
                "of its diagonal, so tessellation can bend every edge; off: the triangles as "
-               "loaded, as seed 002 renders them."});
+               "loaded, as Rosen (2012) renders them."});
   add({.key = "light.fit",
        .label = "Frustum fit",
        .group = "Light frustum",

@@ -15,6 +15,7 @@
 
 #include "GlSupport.h"
 #include "MessageText.h"
+#include "algo/MemoryMatch.h"
 #include "common/shared_constants.h"
 #include "metrics/ErrorMetrics.h"
 
@@ -592,68 +593,30 @@ std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std:
   const int h = static_cast<int>(std::lround(height() * dpr));
   const int halfW = w - w / 2;
   if (halfW < kMinDrawnPx || h < kMinDrawnPx) return fail("the view is too small to measure");
-  const long long step = std::max<long long>(1, std::llround(decl->step));
-  const long long lo = std::llround(decl->minValue), hi = std::llround(decl->maxValue);
-  std::string problem;
   makeCurrent();
   split->setCamera(camera_);
   split->setLight(light_);
-  // The bytes at `value`: one frame of the right half (its size, this camera and light).
-  auto bytesAt = [&](long long value) -> std::optional<std::uint64_t> {
-    if (auto e = params.set(decl->key, double(value))) {
-      problem = *e;
-      return std::nullopt;
-    }
-    ++match.framesMeasured;
-    if (auto e = split->renderFrame(halfW, h, defaultFramebufferObject())) {
-      problem = *e;
-      return std::nullopt;
-    }
-    return split->stats().memory.bytes();
-  };
-  // Both searches below run over the value grid lo, lo + step, ..., lo + last * step for the
-  // first index >= `from` where `holds` is true, `holds` being false below it and true from it
-  // on: indices doubled (never a map far larger than needed), then bisected. last + 1: none.
-  const long long last = (hi - lo) / step;
-  auto firstWhere = [&](long long from, auto&& holds) {
-    if (holds(from)) return from;
-    long long no = from, yes = last + 1;
-    for (long long k = 1; from + k <= last; k *= 2) {
-      if (holds(from + k)) {
-        yes = from + k;
-        break;
-      }
-      no = from + k;
-    }
-    if (yes == last + 1 && no < last && holds(last)) yes = last;
-    while (yes <= last && yes - no > 1) {
-      const long long mid = no + (yes - no) / 2;
-      (holds(mid) ? yes : no) = mid;
-    }
-    return yes;
-  };
-  // The smallest value the technique accepts (rmsm refuses a pool smaller than its coarsest
-  // level), then the first one over the main technique's bytes.
-  const long long accepted = firstWhere(0, [&](long long k) {
-    problem.clear();
-    return bytesAt(lo + k * step).has_value();
-  });
-  long long a = accepted;
-  if (accepted <= last) {
-    problem.clear();
-    const long long over = firstWhere(accepted, [&](long long k) {
-      const auto bytes = bytesAt(lo + k * step);
-      return !bytes || *bytes > match.mainBytes;
-    });
-    match.belowMinimum = over == accepted;
-    a = match.belowMinimum ? accepted : over - 1;
-  }
-  match.value = lo + a * step;
-  const auto finalBytes = problem.empty() ? bytesAt(match.value) : std::nullopt;
+  // The bytes at a value: one frame of the right half (its size, this camera and light).
+  const sl::MemoryMatchResult m = sl::matchMemory(
+      std::llround(decl->minValue), std::llround(decl->maxValue), std::llround(decl->step),
+      match.mainBytes, [&](long long value, std::string& problem) -> std::optional<std::uint64_t> {
+        if (auto e = params.set(decl->key, double(value))) {
+          problem = *e;
+          return std::nullopt;
+        }
+        if (auto e = split->renderFrame(halfW, h, defaultFramebufferObject())) {
+          problem = *e;
+          return std::nullopt;
+        }
+        return split->stats().memory.bytes();
+      });
+  match.framesMeasured = m.evaluations;
+  match.value = m.value;
+  match.belowMinimum = m.belowMinimum;
   split->resetTemporalState();
   doneCurrent();
-  if (!finalBytes) return fail("split view: " + problem);
-  match.splitBytes = *finalBytes;
+  if (!m.ok()) return fail("split view: " + m.problem);
+  match.splitBytes = m.bytes;
   splitParams_[decl->key] = params.format(decl->key);
   lastSplitParamRevision_ = ~0u;  // the next frame notices the change
   update();

@@ -139,6 +139,14 @@ QJsonObject GrabRun::publicationJson() const {
         sl::nonFiniteName(value) ? QJsonValue(QString::fromLatin1(sl::nonFiniteName(value)))
                                  : QJsonValue(value);
   o[QStringLiteral("numbers")] = numbers;
+  // The parameters this frame rendered with, as the Parameters dock shows them (the
+  // technique's own and the shared ones): what a preset or lesson set can be checked here.
+  QJsonObject params;
+  sl::Renderer* live = w_.viewport_->renderer();  // the parameter sets are reached non-const
+  for (const sl::ParamSet* set : {&live->params(), &live->rendererParams()})
+    for (const sl::ParamDecl& d : set->decls())
+      params[QString::fromStdString(d.key)] = QString::fromStdString(set->format(d.key));
+  o[QStringLiteral("params")] = params;
   QJsonObject images;
   for (const auto& [key, image] : pub.images)
     images[QString::fromStdString(key)] = QJsonArray{image.width, image.height, image.channels};

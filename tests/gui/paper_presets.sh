@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Every preset in scenes/papers (each paper's method as written) opens in the GUI as the
 # Papers menu opens it (the same loader as --lesson FILE): the window renders the preset's
-# scene with its technique, and every parameter of the preset that the technique publishes
-# as a number (DA-RTW's gates, for one) has the preset's value in published.json, not the
-# default. A preset whose parameters were dropped fails here.
+# scene with its technique, and every parameter of the preset has the preset's value in the
+# frame the window rendered (published.json's "params", as the Parameters dock shows them;
+# DA-RTW's gates also as published numbers). A preset whose parameters were dropped fails.
 # usage: paper_presets.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1
@@ -39,20 +39,37 @@ for key in ("scene", "technique"):
         print(f"FAIL: {name}: {key} {pub.get(key)!r}, the preset says {preset[key]!r}")
         ok = False
 numbers = pub.get("numbers", {})
+params = pub.get("params", {})
+
+
+def same(got, want):
+    """Numbers as numbers (512 == 512.0), on/off as 1/0, names as text."""
+    names = {"on": 1.0, "off": 0.0, "true": 1.0, "false": 0.0}
+    try:
+        g = names.get(str(got), None)
+        g = float(got) if g is None else g
+        w = names.get(str(want), None)
+        w = float(want) if w is None else w
+        return abs(g - w) <= 1e-6 * max(1.0, abs(w))
+    except ValueError:
+        return str(got) == str(want)
+
+
 checked = 0
 for key, value in preset.get("params", {}).items():
-    if key not in numbers:
-        continue
-    try:
-        want = float(value)
-    except ValueError:
+    if key not in params:
+        print(f"FAIL: {name}: the window has no parameter {key}")
+        ok = False
         continue
     checked += 1
-    if abs(numbers[key] - want) > 1e-6 * max(1.0, abs(want)):
-        print(f"FAIL: {name}: {key} = {numbers[key]} in the window, the preset says {value}")
+    if not same(params[key], value):
+        print(f"FAIL: {name}: {key} = {params[key]} in the window, the preset says {value}")
         ok = False
-print(f"{name}: {preset['technique']} on {preset['scene']}, {checked} published parameters "
-      f"as the preset sets them, error {pub.get('error_pct')}")
+    if key in numbers and not same(numbers[key], value):
+        print(f"FAIL: {name}: {key} published as {numbers[key]}, the preset says {value}")
+        ok = False
+print(f"{name}: {preset['technique']} on {preset['scene']}, {checked} parameters as the preset "
+      f"sets them, error {pub.get('error_pct')}")
 sys.exit(0 if ok else 1)
 PY
   python3 "$here/pngstats.py" --min-colors 32 --min-stddev 8 "$dir/viewport.png" || fail=1

@@ -144,11 +144,16 @@
 #define SL_RMSM_SAME_SURFACE_PLANE 0.1
 #define SL_RMSM_SAME_SURFACE_NORMAL_COS 0.9
 // Adaptive shadow maps (asm): the shadow-test pass writes per pixel (mask, served page key,
-// refine key) into an rgba32ui image; the edge pass turns it into one key per pixel in the
+// refine key, map edge) into an rgba32ui image; the edge pass turns it into one key per pixel in the
 // RMSM request image (SL_RMSM_IMAGE_REQUESTS), compacted by rmsm/compact.comp. A key with
 // SL_ASM_TOUCH_BIT is no request: the pixel used that page (the cache's LRU).
 #define SL_ASM_IMAGE_TESTED 1
 #define SL_ASM_TOUCH_BIT 0x80000000u
+// asm.edge (sl::adaptive::EdgeTest): what makes a pixel an edge pixel. SCREEN: its shadow mask
+// differs from a 4-neighbour's; MAP: the shadow-map texel it reads lies on a shadow edge of
+// the map (Fernando et al. 2001: the depth tests at that texel and its 4 neighbours differ).
+#define SL_ASM_EDGE_SCREEN 0
+#define SL_ASM_EDGE_MAP 1
 
 // --- The tiled techniques' eye-space depth buffer (virtual-tiled and fvsm: Giegl & Wimmer
 // 2007 §3.2; techniques/virtual-tiled EyeDepthBuffer, shaders/virtual-tiled/eye_depth.*): r32f,

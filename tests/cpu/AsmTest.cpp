@@ -1,7 +1,8 @@
 // algo/asm (adaptive shadow maps, Fernando et al. 2001): the refine key, edge finding on a
 // hand-made shadow image, the page cache's coarse map, refinement iterations that stop,
 // budget, cache hits, least-recently-used eviction and invalidation, the Pages panel's states of
-// the cache. Exact expectations.
+// the cache; the paper's edge test (a texel on a shadow edge of the map) and the terminator it
+// does not refine. Exact expectations.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -26,6 +27,83 @@ TEST(AsmRefineKey, OnlyWhenTheServingPageIsCoarserThanTheLod) {
   EXPECT_EQ(refineKey({0.3f, 0.6f}, 1, 1, kSmall), kNoPage);  // fine enough already
   EXPECT_EQ(refineKey({0.3f, 0.6f}, 2, 1, kSmall), kNoPage);
   EXPECT_EQ(refineKey({1.5f, 0.6f}, 0, 3, kSmall), kNoPage);  // outside the map
+}
+
+// The paper's edge test (Fernando et al. 2001) on an 8² map: the left half holds an occluder
+// at depth 0.3, the right half the receiver plane itself. A receiver at depth 0.5 is on a
+// shadow edge of the map only at the two texel columns where the occluder ends.
+TEST(AsmMapEdges, TexelOnAShadowEdgeOfTheMap) {
+  std::vector<float> depth(64);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) depth[std::size_t(y * 8 + x)] = x < 4 ? 0.3f : 0.5f;
+  const DepthGrid map{depth, 8};
+  auto edgeAt = [&](int x, float bias) {
+    MapReceiver r;
+    r.uv = {(float(x) + 0.5f) / 8.0f, 0.5f};
+    r.z = 0.5f;
+    r.bias = bias;
+    return mapTexelOnShadowEdge(map, r);
+  };
+  const bool want[8] = {false, false, false, true, true, false, false, false};
+  for (int x = 0; x < 8; ++x) EXPECT_EQ(edgeAt(x, 0.0f), want[x]) << "texel " << x;
+  // A receiver in front of the occluder sees no shadow, so no edge either.
+  for (int x = 0; x < 8; ++x) EXPECT_FALSE(edgeAt(x, 0.25f)) << "texel " << x;
+  // The neighbours are clamped to the map at its border.
+  MapReceiver corner;
+  corner.uv = {0.0f, 0.0f};
+  corner.z = 0.5f;
+  EXPECT_FALSE(mapTexelOnShadowEdge(map, corner));
+  EXPECT_THROW(mapTexelOnShadowEdge({depth, 7}, corner), std::invalid_argument);
+  EXPECT_THROW(mapTexelOnShadowEdge({{}, 0}, corner), std::invalid_argument);
+}
+
+// A terminator: one tilted surface, unoccluded, whose right half faces away from the light
+// (the resolve counts those pixels shadowed). The screen-mask test refines along the
+// terminator; the paper's test, which compares depths in the map only, requests nothing.
+TEST(AsmMapEdges, ATerminatorIsNoEdgeOfTheMap) {
+  const int n = 16;
+  std::vector<float> depth(std::size_t(n * n));
+  auto plane = [](glm::vec2 uv) { return 0.4f + 0.2f * uv.x + 0.05f * uv.y; };
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x)
+      depth[std::size_t(y * n + x)] = plane((glm::vec2(x, y) + 0.5f) / float(n));
+  const DepthGrid map{depth, n};
+  const int w = 8, h = 4;
+  std::vector<TestedPixel> px(std::size_t(w * h));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      MapReceiver r;
+      r.uv = {(float(x) + 0.3f) / float(w), (float(y) + 0.6f) / float(h)};
+      r.z = plane(r.uv);
+      r.gradient = {0.2f, 0.05f};
+      r.bias = 1e-5f;
+      TestedPixel& p = px[std::size_t(y * w + x)];
+      p.mask = x < w / 2 ? SL_MASK_LIT : SL_MASK_SHADOWED;  // back-facing on the right
+      p.served = packPage({3, 0, 0});
+      p.refine = packPage({0, x, y});
+      p.mapEdge = mapTexelOnShadowEdge(map, r) ? 1u : 0u;
+      EXPECT_EQ(p.mapEdge, 0u) << x << ", " << y;
+    }
+  int screenRequests = 0;
+  for (PageKey k : findEdges(px, w, h, EdgeTest::ScreenMask))
+    screenRequests += k != kNoPage && (k & kTouchBit) == 0;
+  EXPECT_EQ(screenRequests, 2 * h);  // the two columns either side of the terminator
+  for (PageKey k : findEdges(px, w, h, EdgeTest::MapTexel))
+    EXPECT_EQ(k, packPage({3, 0, 0}) | kTouchBit);
+}
+
+// With EdgeTest::MapTexel only mapEdge counts, not the masks of the neighbours.
+TEST(AsmMapEdges, FindEdgesReadsTheMapEdgeFlag) {
+  std::vector<TestedPixel> px(3);
+  for (int i = 0; i < 3; ++i)
+    px[std::size_t(i)] = {SL_MASK_LIT, packPage({3, 0, 0}), packPage({0, i, 0}), 0u};
+  px[1].mapEdge = 1u;
+  px[2].mask = SL_MASK_SHADOWED;
+  const PageKey touch = packPage({3, 0, 0}) | kTouchBit;
+  EXPECT_EQ(findEdges(px, 3, 1, EdgeTest::MapTexel),
+            (std::vector<PageKey>{touch, packPage({0, 1, 0}), touch}));
+  EXPECT_EQ(findEdges(px, 3, 1, EdgeTest::ScreenMask),
+            (std::vector<PageKey>{touch, packPage({0, 1, 0}), packPage({0, 2, 0})}));
 }
 
 // A 4 x 3 image (row 0 at the bottom): lit on the left, shadowed on the right, one empty

@@ -3,7 +3,8 @@
 // the shadow test pass agreeing with the resolve once the quadtree converged, the page cache
 // (camera moves keep pages, a light change or a new scene drops them and no stale page is
 // used), exact memory, declared passes == timed passes, bad parameters, the Pages panel's
-// publications (the CPU cache's states).
+// publications (the CPU cache's states); the paper's map-texel edge test against its CPU
+// reference, the paper's loop until no request and the cap that says what it left.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -51,7 +52,8 @@ std::vector<std::uint32_t> readUint(const gl::Texture& t, GLenum format, int cha
 std::vector<adaptive::TestedPixel> readTested(const AsmShadowMap& t) {
   const std::vector<std::uint32_t> raw = readUint(t.testedImage(), GL_RGBA_INTEGER, 4);
   std::vector<adaptive::TestedPixel> px(raw.size() / 4);
-  for (std::size_t i = 0; i < px.size(); ++i) px[i] = {raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]};
+  for (std::size_t i = 0; i < px.size(); ++i)
+    px[i] = {raw[4 * i], raw[4 * i + 1], raw[4 * i + 2], raw[4 * i + 3]};
   return px;
 }
 
@@ -99,6 +101,110 @@ TEST(Asm, EdgeFindingMatchesTheCpuReference) {
   ASSERT_EQ(t.lastFrame().iterations.size(), 1u);
   EXPECT_GT(t.lastFrame().iterations[0].allocated.size(), 0u);
   test::expectNoGlErrors(*r);
+}
+
+// The paper's edge test (asm.edge = map-texel) from the coarse map: the GPU's per-pixel keys
+// are findEdges(MapTexel) of its own shadow test (exact), and its map-edge flag is the CPU's
+// mapTexelOnShadowEdge of the coarse map read back from the pool, for the receiver
+// receiverInMap gives of the G-buffer's point and normal: at most 0.5 % of the covered pixels
+// may differ (float rounding of the receiver's plane right at a texel's depth).
+TEST(Asm, MapEdgeTestMatchesTheCpuReference) {
+  auto r = makeProbe("plane-box");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("virtual.resolution", 16384));
+  ASSERT_FALSE(r->params().set("asm.iterations", 1));
+  ASSERT_FALSE(r->params().set("asm.edge", SL_ASM_EDGE_MAP));
+  const int w = 160, h = 90;
+  ASSERT_FALSE(r->renderFrame(w, h, 0));
+  ASSERT_TRUE(g_probe);
+  const AsmShadowMap& t = *g_probe;
+  const std::vector<adaptive::TestedPixel> tested = readTested(t);
+  EXPECT_EQ(readUint(t.requestImage(), GL_RED_INTEGER, 1),
+            adaptive::findEdges(tested, w, h, adaptive::EdgeTest::MapTexel));
+
+  // The coarse level of the virtual map, from its pages in the pool.
+  const adaptive::PageCache& cache = *t.cache();
+  const pages::VirtualLayout& layout = cache.layout();
+  const int level = cache.coarseLevel(), ps = layout.pageSize;
+  const int n = layout.virtualResolution >> level;
+  const gl::Texture& pool = t.pagedMap().poolTexture();
+  std::vector<float> poolDepth(std::size_t(pool.width()) * pool.height());
+  glGetTextureImage(pool.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(poolDepth.size() * 4),
+                    poolDepth.data());
+  std::vector<float> depth(std::size_t(n) * n);
+  const int columns = t.pagedMap().poolColumns();
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const int slot = cache.table().slot({level, x / ps, y / ps});
+      ASSERT_GE(slot, 0);
+      const int px = (slot % columns) * ps + x % ps, py = (slot / columns) * ps + y % ps;
+      depth[std::size_t(y) * n + x] = poolDepth[std::size_t(py) * pool.width() + px];
+    }
+  const adaptive::DepthGrid grid{depth, n};
+
+  const DepthMapView& v = t.mapView();
+  const DepthMapFrame frame{v.lightViewProj, v.extentM, v.depthPerMAtUnitW(), v.extentWPower,
+                            v.depthWPower};
+  const ShadowBiasSettings bias{float(r->params().get("bias.normal")),
+                                float(r->params().get("bias.slope")),
+                                float(r->params().get("bias.constant"))};
+  const glm::vec3 towards = r->light().directionalTowards();
+  const FrameReadback fr = r->readback();
+  int covered = 0, gpuEdges = 0, differ = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const adaptive::TestedPixel& p = tested[std::size_t(y) * w + x];
+      if (p.mask == SL_MASK_EMPTY) continue;
+      ASSERT_EQ(pages::unpackPage(p.served).level, level);
+      const std::size_t i = std::size_t(h - 1 - y) * w + x;
+      const MapReceiver rc =
+          receiverInMap(frame, glm::vec3(fr.positions[i]), glm::vec3(fr.normals[i]), towards,
+                        glm::vec2(1.0f / float(n)), bias);
+      const bool cpu = adaptive::mapTexelOnShadowEdge(grid, rc);
+      ++covered;
+      gpuEdges += p.mapEdge != 0;
+      differ += cpu != (p.mapEdge != 0);
+    }
+  std::printf("%d covered, %d on a shadow edge of the coarse map, %d differ from the CPU\n",
+              covered, gpuEdges, differ);
+  EXPECT_GT(gpuEdges, 10);
+  EXPECT_LT(gpuEdges, covered / 4);
+  EXPECT_LE(differ, covered / 200);
+  test::expectNoGlErrors(*r);
+}
+
+// asm.loop = until-done: the paper's loop runs until no page is requested and says it
+// converged; a cap publishes why it stopped and the pages still requested (0 exactly when the
+// loop had in fact converged); the tool's per-frame budget publishes what it deferred.
+TEST(Asm, UntilDoneConvergesAndAStoppedLoopSaysWhatItLeft) {
+  const int w = 320, h = 180;
+  auto frame = [&](int loop, int cap, int perFrame) {
+    auto r = makeProbe("plane-box");
+    EXPECT_TRUE(r);
+    EXPECT_FALSE(r->params().set("pool.pages", 1024));
+    EXPECT_FALSE(r->params().set("asm.edge", SL_ASM_EDGE_MAP));
+    EXPECT_FALSE(r->params().set("asm.loop", loop));
+    EXPECT_FALSE(r->params().set("asm.iterations.cap", cap));
+    EXPECT_FALSE(r->params().set("asm.pages.per.frame", perFrame));
+    r->requestPublications({"asm.*"});
+    EXPECT_FALSE(r->renderFrame(w, h, 0));
+    test::expectNoGlErrors(*r);
+    return r->publication().numbers;
+  };
+  const auto done = frame(1, 16, 1);  // until-done ignores the per-frame budget
+  std::printf("until done: %.0f iterations, %.0f new, stop %.0f\n", done.at("asm.iterations.run"),
+              done.at("asm.new"), done.at("asm.stop"));
+  EXPECT_EQ(done.at("asm.stop"), double(AsmShadowMap::kConverged));
+  EXPECT_EQ(done.at("asm.requests.left"), 0.0);
+  EXPECT_GT(done.at("asm.new"), 1.0);
+  const auto capped = frame(1, 1, 64);
+  EXPECT_EQ(capped.at("asm.iterations.run"), 1.0);
+  EXPECT_EQ(capped.at("asm.stop") == double(AsmShadowMap::kIterationCap),
+            capped.at("asm.requests.left") > 0.0);
+  const auto budget = frame(0, 16, 1);
+  EXPECT_EQ(budget.at("asm.new"), 1.0);
+  EXPECT_EQ(budget.at("asm.stop"), double(AsmShadowMap::kBudget));
+  EXPECT_EQ(budget.at("asm.requests.left"), done.at("asm.new") - 1.0);
 }
 
 // Frames until the cache stops growing: then the last iteration's shadow test saw the final

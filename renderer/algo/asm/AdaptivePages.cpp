@@ -17,7 +17,28 @@ PageKey refineKey(glm::vec2 st, int neededLevel, int servedLevel,
   return pages::requestPage(st, neededLevel, layout);
 }
 
-std::vector<PageKey> findEdges(std::span<const TestedPixel> pixels, int width, int height) {
+bool mapTexelOnShadowEdge(const DepthGrid& map, const MapReceiver& receiver) {
+  if (map.size <= 0 || map.depth.size() != std::size_t(map.size) * std::size_t(map.size))
+    throw std::invalid_argument("mapTexelOnShadowEdge: " + std::to_string(map.depth.size()) +
+                                " depths for a " + std::to_string(map.size) + "² map");
+  const float n = float(map.size);
+  const glm::ivec2 texel =
+      glm::clamp(glm::ivec2(glm::floor(receiver.uv * n)), glm::ivec2(0), glm::ivec2(map.size - 1));
+  auto litAt = [&](glm::ivec2 offset) {
+    const glm::ivec2 t = glm::clamp(texel + offset, glm::ivec2(0), glm::ivec2(map.size - 1));
+    const glm::vec2 centre = (glm::vec2(t) + 0.5f) / n;
+    const float z =
+        receiverDepthAt(receiver.uv, receiver.z, receiver.gradient, centre) - receiver.bias;
+    return z <= map.depth[std::size_t(t.y) * std::size_t(map.size) + std::size_t(t.x)];
+  };
+  const bool centre = litAt({0, 0});
+  for (glm::ivec2 o : {glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)})
+    if (litAt(o) != centre) return true;
+  return false;
+}
+
+std::vector<PageKey> findEdges(std::span<const TestedPixel> pixels, int width, int height,
+                               EdgeTest test) {
   if (pixels.size() != std::size_t(width) * std::size_t(height))
     throw std::invalid_argument("findEdges: " + std::to_string(pixels.size()) + " pixels for a " +
                                 std::to_string(width) + " x " + std::to_string(height) + " image");
@@ -29,10 +50,10 @@ std::vector<PageKey> findEdges(std::span<const TestedPixel> pixels, int width, i
     for (int x = 0; x < width; ++x) {
       const TestedPixel& p = at(x, y);
       if (p.mask == SL_MASK_EMPTY) continue;
-      bool edge = false;
+      bool edge = test == EdgeTest::MapTexel && p.mapEdge != 0;
       const int nx[4] = {x - 1, x + 1, x, x};
       const int ny[4] = {y, y, y - 1, y + 1};
-      for (int i = 0; i < 4; ++i) {
+      for (int i = 0; i < 4 && test == EdgeTest::ScreenMask; ++i) {
         if (nx[i] < 0 || ny[i] < 0 || nx[i] >= width || ny[i] >= height) continue;
         const std::uint32_t m = at(nx[i], ny[i]).mask;
         edge = edge || (m != SL_MASK_EMPTY && m != p.mask);

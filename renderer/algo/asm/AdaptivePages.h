@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "algo/ShadowBias.h"
 #include "algo/pages/VirtualPages.h"
 #include "common/shared_constants.h"
 
@@ -27,23 +28,52 @@ inline constexpr int kMaxIterations = 4;
 /// A key with this bit is no request: the pixel used (touched) that allocated page.
 inline constexpr PageKey kTouchBit = SL_ASM_TOUCH_BIT;
 
+/// What makes a camera pixel an edge pixel (asm.edge; SL_ASM_EDGE_*).
+enum class EdgeTest : int {
+  /// Its shadow mask differs from a 4-neighbour's in the camera image (the tool's test: it
+  /// also fires at a terminator, where a pixel facing away from the light counts as shadowed).
+  ScreenMask = SL_ASM_EDGE_SCREEN,
+  /// The shadow-map texel its test reads lies on a shadow edge of the map (Fernando et al.
+  /// 2001): the pixel's depth tests at that texel and its 4 neighbours do not all agree.
+  MapTexel = SL_ASM_EDGE_MAP,
+};
+
 /// What the shadow-test pass (shaders/asm/test.comp) writes per camera pixel.
 struct TestedPixel {
   std::uint32_t mask = SL_MASK_EMPTY;  ///< SL_MASK_LIT / SL_MASK_SHADOWED / SL_MASK_EMPTY
   PageKey served = pages::kNoPage;     ///< the allocated page whose depth the test read
   PageKey refine = pages::kNoPage;     ///< the page at the pixel's LOD when finer than served
+  std::uint32_t mapEdge = 0;           ///< 1: the texel it read lies on a shadow edge of the map
 };
+
+/// One level of a depth map as a plain grid: `size` x `size` window depths at texel centres,
+/// row by row (v up), light uv [0, 1]^2.
+struct DepthGrid {
+  std::span<const float> depth;
+  int size = 0;
+};
+
+/// The paper's edge test (Fernando et al. 2001) for one receiver: the hard depth test of
+/// `receiver` (receiverInMap: its plane evaluated at each texel centre, less its bias, against
+/// the stored depth) at the texel holding receiver.uv and at its 4 neighbours (clamped to the
+/// map, as depthMapTexelTest clamps); true when they do not all agree. A receiver whose
+/// neighbourhood is its own surface (a terminator: back-facing but not occluded) is no edge.
+/// GLSL: the map-edge loop of shaders/asm/test.comp. Throws std::invalid_argument when the
+/// grid's size does not match its depths.
+bool mapTexelOnShadowEdge(const DepthGrid& map, const MapReceiver& receiver);
 
 /// The page at `neededLevel` holding light uv `st` when the page serving the pixel is coarser
 /// (servedLevel > neededLevel), else kNoPage ("page not in ASM" of the lecture).
 PageKey refineKey(glm::vec2 st, int neededLevel, int servedLevel,
                   const pages::VirtualLayout& layout);
 
-/// Edge finding, per pixel (row by row): a covered pixel whose mask differs from a covered
-/// 4-neighbour's lies on a shadow edge; an edge pixel with a refine key asks for that page;
+/// Edge finding, per pixel (row by row): with EdgeTest::ScreenMask a covered pixel whose mask
+/// differs from a covered 4-neighbour's lies on a shadow edge, with EdgeTest::MapTexel a
+/// covered pixel whose mapEdge is set; an edge pixel with a refine key asks for that page;
 /// every other covered pixel touches its served page (served | kTouchBit); an uncovered pixel
 /// gives kNoPage. The result goes through pages::dedupRequests / compactRequests like RMSM's.
-std::vector<PageKey> findEdges(std::span<const TestedPixel> pixels, int width, int height);
+std::vector<PageKey> findEdges(std::span<const TestedPixel> pixels, int width, int height,
+                               EdgeTest test = EdgeTest::ScreenMask);
 
 /// What one refinement step did.
 struct Refinement {

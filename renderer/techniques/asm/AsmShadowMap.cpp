@@ -4,6 +4,8 @@
 #include "AsmShadowMap.h"
 
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "algo/Focus.h"
@@ -117,6 +119,47 @@ TechniqueInfo AsmShadowMap::info() {
        .help = "New pages rendered per frame at most (the coarse map after an invalidation "
                "aside); the rest waits for the next frames (asm.deferred)."});
 
+  add({.key = "asm.edge",
+       .label = "Edge test",
+       .group = "ASM",
+       .type = ParamType::Enum,
+       .defaultValue = SL_ASM_EDGE_SCREEN,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"screen-mask", "map-texel"},
+       .help = "What makes a camera pixel an edge pixel that asks for a finer page. "
+               "screen-mask (the tool's): its shadow mask differs from a 4-neighbour's in the "
+               "camera image; unlike the paper it also fires at a terminator, where a pixel "
+               "facing away from the light counts as shadowed. map-texel (Fernando et al. "
+               "2001): the shadow-map texel it reads lies on a shadow edge of the map, the "
+               "pixel's depth tests at that texel and its 4 neighbours disagreeing."});
+  add({.key = "asm.loop",
+       .label = "Refinement loop",
+       .group = "ASM",
+       .type = ParamType::Enum,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"budget", "until-done"},
+       .help = "budget (the tool's): at most asm.iterations iterations and "
+               "asm.pages.per.frame new pages a frame, the rest waiting for later frames. "
+               "until-done (Fernando et al. 2001): iterate until no page is requested, with no "
+               "page budget, stopped only by asm.iterations.cap (asm.stop, asm.requests.left "
+               "say when the cap stopped it and what it left) or a full pool."});
+  add({.key = "asm.iterations.cap",
+       .label = "Iteration cap",
+       .group = "ASM",
+       .type = ParamType::Int,
+       .defaultValue = 16,
+       .minValue = 1,
+       .maxValue = 64,
+       .step = 1,
+       .help = "With asm.loop = until-done, the most iterations a frame runs (the paper has "
+               "no cap); when it stops a loop still refining, the frame publishes asm.stop = 1 "
+               "and the pages still requested (asm.requests.left)."});
+
   TechniqueInfo info{"asm", "Adaptive shadow map",
                      "Fernando, Fernandez, Bala, Greenberg 2001: a quadtree of shadow-map pages "
                      "refined where camera pixels lie on shadow edges, starting from a coarse "
@@ -148,9 +191,16 @@ TechniqueInfo AsmShadowMap::info() {
                            "pages are not rendered again.",
                            "pages"});
   }
-  for (const char* key :
-       {"asm.iterations.run", "asm.requests", "asm.new", "asm.hits", "asm.evicted", "asm.refused",
-        "asm.deferred", "asm.cached", "asm.invalidations", "asm.pool"}) {
+  info.passes.push_back(
+      {"asm more", "Further iterations",
+       "With asm.loop = until-done: every iteration after the " +
+           std::to_string(adaptive::kMaxIterations) +
+           "th (edge finding, allocation, pages), and when the cap stops a loop still refining, "
+           "one more edge finding that counts the requests left. Otherwise empty.",
+       "pages"});
+  for (const char* key : {"asm.iterations.run", "asm.requests", "asm.new", "asm.hits",
+                          "asm.evicted", "asm.refused", "asm.deferred", "asm.cached",
+                          "asm.invalidations", "asm.pool", "asm.stop", "asm.requests.left"}) {
     info.publications.push_back({key, PublicationKind::Number, "", "", {}});
   }
   info.publications[0].what =
@@ -165,6 +215,13 @@ TechniqueInfo AsmShadowMap::info() {
   info.publications[7].what = "Pages the pool holds after this frame (coarse map included).";
   info.publications[8].what = "Times the cache was dropped since the technique was made.";
   info.publications[9].what = "Pages the pool holds at most (pool.pages).";
+  info.publications[10].what =
+      "Why the refinement loop stopped: 0 no new page requested (converged, the paper's end), "
+      "1 the iteration cap (asm.iterations, or asm.iterations.cap with asm.loop = until-done), "
+      "2 the per-frame page budget, 3 the pool held only pages used this frame.";
+  info.publications[11].what =
+      "Distinct pages still requested and not held when the loop stopped (0 when it "
+      "converged; with asm.loop = budget, a cap stop counts only the last iteration's).";
   // The Pages panel's page table, pool and requests, as rmsm's (the cache's states).
   for (PublicationDecl& d : pagedMapPublicationDecls()) info.publications.push_back(std::move(d));
   info.checkParams = checkAsmParams;
@@ -225,8 +282,11 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
     requests_ = gl::Texture::create2D(GL_R32UI, w, h);
     requestList_ = gl::Buffer::create(GLsizeiptr(4) * (1 + GLsizeiptr(w) * h), nullptr);
   }
-  int budget = ctx.params.getInt("asm.pages.per.frame");
-  const int iterations = ctx.params.getInt("asm.iterations");
+  const bool untilDone = ctx.params.getInt("asm.loop") == 1;
+  int budget =
+      untilDone ? std::numeric_limits<int>::max() : ctx.params.getInt("asm.pages.per.frame");
+  const int iterations =
+      untilDone ? ctx.params.getInt("asm.iterations.cap") : ctx.params.getInt("asm.iterations");
   bool going = true;
   for (int i = 1; i <= adaptive::kMaxIterations; ++i) {
     if (going && i <= iterations) {
@@ -235,6 +295,33 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
       // Every declared pass is timed every frame: the iterations not run are empty.
       for (const char* what : {"edges", "allocate", "pages"}) {
         auto pass = ctx.timer.scope(iterationPass(what, i));
+      }
+    }
+  }
+  {
+    auto pass = ctx.timer.scope("asm more");
+    for (int i = adaptive::kMaxIterations + 1; going && i <= iterations; ++i)
+      going = iterate(ctx, i, budget);
+    const adaptive::Refinement& r = last_.iterations.back();
+    last_.requestsLeft = r.refused + r.deferred;
+    if (r.refused > 0)
+      last_.stop = kPoolFull;
+    else if (r.deferred > 0 || budget <= 0)
+      last_.stop = kBudget;
+    else if (r.allocated.empty())
+      last_.stop = kConverged;
+    else {
+      last_.stop = kIterationCap;
+      if (untilDone) {
+        // The cap stopped a loop that was still refining: one more edge finding says how many
+        // pages it would still have asked for.
+        findEdges(ctx);
+        last_.requestsLeft = 0;
+        for (pages::PageKey k : pages::sortUnique(readCompacted()))
+          if (k != pages::kNoPage && (k & adaptive::kTouchBit) == 0 &&
+              cache_->table().slot(pages::unpackPage(k)) < 0)
+            ++last_.requestsLeft;
+        if (last_.requestsLeft == 0) last_.stop = kConverged;  // the cap was not needed
       }
     }
   }
@@ -256,6 +343,8 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "asm.cached", cache_->pool().usedCount());
   publishNumber(ctx, "asm.invalidations", cache_->invalidations());
   publishNumber(ctx, "asm.pool", poolPages);
+  publishNumber(ctx, "asm.stop", last_.stop);
+  publishNumber(ctx, "asm.requests.left", last_.requestsLeft);
   last_.requested = pages::sortUnique(last_.requestKeys);
   map_.publish(ctx,
                {.table = &cache_->table(),
@@ -282,6 +371,7 @@ void AsmShadowMap::findEdges(FrameContext& ctx) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   // Edges: one key per pixel.
   edgesProgram_.use();
+  edgesProgram_.set("u_edgeTest", ctx.params.getInt("asm.edge"));
   glBindImageTexture(SL_ASM_IMAGE_TESTED, tested_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32UI);
   glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      GL_R32UI);
@@ -298,35 +388,38 @@ void AsmShadowMap::findEdges(FrameContext& ctx) {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
+std::vector<pages::PageKey> AsmShadowMap::readCompacted() const {
+  std::uint32_t count = 0;
+  glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
+  const std::size_t capacity = std::size_t(requestList_.size() / 4 - 1);
+  std::vector<pages::PageKey> keys(std::min<std::size_t>(count, capacity), 0u);
+  if (!keys.empty())
+    glGetNamedBufferSubData(requestList_.id(), 4, GLsizeiptr(4 * keys.size()), keys.data());
+  return keys;
+}
+
 bool AsmShadowMap::iterate(FrameContext& ctx, int iteration, int& budget) {
-  {
-    auto pass = ctx.timer.scope(iterationPass("edges", iteration));
-    findEdges(ctx);
-  }
+  // Iterations past the declared ones run inside the caller's "asm more" pass.
+  const bool timed = iteration <= adaptive::kMaxIterations;
+  std::optional<gl::GpuTimer::Scope> pass;
+  if (timed) pass.emplace(ctx.timer, iterationPass("edges", iteration));
+  findEdges(ctx);
+  pass.reset();
   adaptive::Refinement r;
-  {
-    auto pass = ctx.timer.scope(iterationPass("allocate", iteration));
-    std::uint32_t count = 0;
-    glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
-    const std::size_t capacity = std::size_t(requestList_.size() / 4 - 1);
-    last_.compacted.assign(std::min<std::size_t>(count, capacity), 0u);
-    if (!last_.compacted.empty())
-      glGetNamedBufferSubData(requestList_.id(), 4, GLsizeiptr(4 * last_.compacted.size()),
-                              last_.compacted.data());
-    last_.unique = pages::sortUnique(last_.compacted);
-    last_.uniquePerIteration.push_back(last_.unique);
-    for (pages::PageKey k : last_.compacted)
-      if (k != pages::kNoPage && (k & adaptive::kTouchBit) == 0) last_.requestKeys.push_back(k);
-    r = cache_->refine(last_.unique, budget);
-    budget -= int(r.allocated.size());
-    if (!r.allocated.empty()) map_.uploadTable(cache_->table());
-  }
-  {
-    auto pass = ctx.timer.scope(iterationPass("pages", iteration));
-    if (!r.allocated.empty())
-      map_.renderPages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, r.allocated, r.slots,
-                       false);
-  }
+  if (timed) pass.emplace(ctx.timer, iterationPass("allocate", iteration));
+  last_.compacted = readCompacted();
+  last_.unique = pages::sortUnique(last_.compacted);
+  last_.uniquePerIteration.push_back(last_.unique);
+  for (pages::PageKey k : last_.compacted)
+    if (k != pages::kNoPage && (k & adaptive::kTouchBit) == 0) last_.requestKeys.push_back(k);
+  r = cache_->refine(last_.unique, budget);
+  budget -= int(r.allocated.size());
+  if (!r.allocated.empty()) map_.uploadTable(cache_->table());
+  pass.reset();
+  if (timed) pass.emplace(ctx.timer, iterationPass("pages", iteration));
+  if (!r.allocated.empty())
+    map_.renderPages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, r.allocated, r.slots, false);
+  pass.reset();
   last_.newPages += int(r.allocated.size());
   const bool progressed = !r.allocated.empty() && budget > 0;
   last_.iterations.push_back(std::move(r));

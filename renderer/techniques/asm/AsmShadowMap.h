@@ -5,7 +5,10 @@
 // asm.iterations times: shadow test + edge finding (compute: a pixel on a shadow edge whose
 // page is coarser than its LOD asks for the page at its LOD) → dedup + compaction (RMSM's
 // pass) → read back, sort, unique, allocate in the page cache (algo/asm: LRU eviction) → render
-// the new pages, until no request is left or asm.pages.per.frame new pages were rendered.
+// the new pages, until no request is left or asm.pages.per.frame new pages were rendered
+// (asm.loop = until-done: the paper's loop, until no page is requested, capped by
+// asm.iterations.cap and publishing what the cap left). asm.edge picks the edge test: the
+// screen-space shadow mask (the tool's) or a texel on a shadow edge of the map (the paper's).
 // Pages are kept between frames; a change of the light or the geometry drops them all.
 // Directional only.
 #pragma once
@@ -54,7 +57,16 @@ class AsmShadowMap : public Technique {
     /// Pages panel's heat map and pending pages.
     std::vector<pages::PageKey> requestKeys, requested;
     int newPages = 0;  ///< rendered this frame (coarse map aside)
+    /// Why the loop stopped (Stop), and the distinct pages still requested then and not
+    /// held: the last iteration's refused and deferred requests, or, when the iteration cap
+    /// stopped a loop that was still allocating with asm.loop = until-done, the requests of
+    /// one more edge-finding pass (its pages not allocated).
+    int stop = 0;
+    int requestsLeft = 0;
   };
+  /// FrameResult::stop (asm.stop): no new page was requested (the paper's end of the loop),
+  /// the iteration cap, the per-frame page budget, the pool (only pages used this frame).
+  enum Stop : int { kConverged = 0, kIterationCap = 1, kBudget = 2, kPoolFull = 3 };
   const FrameResult& lastFrame() const { return last_; }
   const adaptive::PageCache* cache() const { return cache_.get(); }
   /// The last iteration's shadow test (rgba32ui: mask, served key, refine key) and its
@@ -63,11 +75,16 @@ class AsmShadowMap : public Technique {
   const gl::Texture& requestImage() const { return requests_; }
   const gl::Texture& pageTableTexture() const { return map_.pageTableTexture(); }
   const glm::mat4& lightViewProj() const { return view_.lightViewProj; }
+  const DepthMapView& mapView() const { return view_; }
+  const PagedMap& pagedMap() const { return map_; }
 
  private:
-  /// One iteration; false when it allocated nothing (the loop stops).
+  /// One iteration; false when it allocated nothing (the loop stops). Iterations beyond
+  /// adaptive::kMaxIterations are not timed on their own (the caller's "asm more" pass).
   bool iterate(FrameContext& ctx, int iteration, int& budget);
   void findEdges(FrameContext& ctx);
+  /// The compacted request list findEdges wrote (count clamped to the list's capacity).
+  std::vector<pages::PageKey> readCompacted() const;
 
   DepthProgram depthProgram_;
   gl::Program testProgram_, edgesProgram_, compactProgram_;

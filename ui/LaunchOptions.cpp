@@ -26,7 +26,8 @@ constexpr const char* kSelfTests[] = {"params",
                                       "adaptive-resolution[=DIR]",
                                       "no-freeze[=DIR]",
                                       "storage-click[=DIR]",
-                                      "panels"};
+                                      "panels",
+                                      "course[=DIR]"};
 
 QString selfTestUsage() {
   QStringList all;
@@ -78,6 +79,12 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       QStringLiteral("With --lesson: start the lesson's case N (1-based) of a lesson told in "
                      "cases (Lessons > Next case)."),
       QStringLiteral("N"), QStringLiteral("1"));
+  const QCommandLineOption course(
+      QStringLiteral("course"),
+      QStringLiteral("Start a course (scenes/courses.json: 90 or 45 minutes) at its first "
+                     "lesson; Next in the Lesson dock (Alt+PgDown) opens the course's next "
+                     "lesson."),
+      QStringLiteral("NAME"));
   const QCommandLineOption session(
       QStringLiteral("open-session"),
       QStringLiteral("Open a session saved with File > Save session… (the same as --lesson "
@@ -91,8 +98,8 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
                               QStringLiteral("Run a GUI self-test (%1).").arg(selfTestUsage()),
                               QStringLiteral("NAME[=ARG]"));
   selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
-  parser.addOptions(
-      {scene, technique, set, lesson, lessonCase, session, presenter, grab, grabAfter, selfTest});
+  parser.addOptions({scene, technique, set, lesson, lessonCase, course, session, presenter, grab,
+                     grabAfter, selfTest});
 
   ParsedLaunch out;
   if (!parser.parse(arguments)) {
@@ -132,6 +139,15 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       return out;
     }
     o.lesson = parser.value(session);
+  }
+  if (parser.isSet(course)) {
+    if (!o.lesson.isEmpty()) {
+      out.exitCode = 2;
+      out.messageIsError = true;
+      out.message = QStringLiteral("--course and --lesson (or --open-session): give one of them");
+      return out;
+    }
+    o.course = parser.value(course);
   }
   if (parser.isSet(lessonCase)) {
     bool caseOk = false;

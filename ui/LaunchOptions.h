@@ -1,5 +1,5 @@
 // The GUI's command line: `shadowlab [--scene NAME|FILE] [--technique ID]
-// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--open-session FILE] [--presenter]
+// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--course NAME] [--open-session FILE] [--presenter]
 // [--grab DIR --grab-after N]`
 // (and the hidden
 // `--self-test NAME[=ARG]` used by tests/gui), and the GL-free checks of the
@@ -24,8 +24,9 @@ struct LaunchOptions {
   int grabAfterFrames = 5;
   QString
       lesson;  ///< non-empty: start this lesson (number, file base name or path; --open-session)
-  int lessonCase = 1;        ///< --lesson-case: the lesson's case (1-based)
-  QString selfTest;          ///< hidden: run this GUI self-test and exit with its result
+  QString course;      ///< non-empty: start this course (scenes/courses.json) at its first lesson
+  int lessonCase = 1;  ///< --lesson-case: the lesson's case (1-based)
+  QString selfTest;    ///< hidden: run this GUI self-test and exit with its result
   QString selfTestArgument;  ///< the part after '=' in --self-test NAME=ARG
   bool presenter = false;    ///< start in presenter mode (PresenterMode.h)
   bool grab() const { return !grabDir.isEmpty(); }

@@ -9,6 +9,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QMenu>
 #include <QTimer>
 
@@ -50,6 +51,34 @@ void LessonController::createMenu(QMenu* menu) {
   if (lessons_.empty())
     menu->addAction(tr("(no lessons in %1)").arg(lessonDirectory()))->setEnabled(false);
   menu->addSeparator();
+  // Courses: the lessons in a class's order, Alt+PgDown / Alt+PgUp (or the Lesson dock's
+  // Next / Previous) stepping through them.
+  if (std::optional<std::vector<sl::Course>> courses = loadCourseFile(&courseError_)) {
+    courses_ = std::move(*courses);
+  } else {
+    std::fprintf(stderr, "shadowlab: course file %s\n", qPrintable(courseError_));
+    menu->addAction(tr("(courses: %1)").arg(courseError_))->setEnabled(false);
+  }
+  for (const sl::Course& c : courses_) {
+    const QString name = QString::fromStdString(c.name);
+    QAction* a = menu->addAction(tr("Course: %1 minutes").arg(c.minutes), this,
+                                 [this, name] { startCourse(name); });
+    a->setToolTip(tr("%1 lessons in about %2 minutes, in the course's order (Alt+PgDown: the "
+                     "course's next lesson)")
+                      .arg(c.lessons.size())
+                      .arg(c.plannedMinutes()));
+  }
+  if (!courses_.empty()) {
+    QAction* next =
+        menu->addAction(tr("Next lesson of the course"), this, [this] { stepLesson(1); });
+    next->setShortcut(QKeySequence(Qt::ALT | Qt::Key_PageDown));
+    next->setShortcutContext(Qt::ApplicationShortcut);
+    QAction* previous =
+        menu->addAction(tr("Previous lesson of the course"), this, [this] { stepLesson(-1); });
+    previous->setShortcut(QKeySequence(Qt::ALT | Qt::Key_PageUp));
+    previous->setShortcutContext(Qt::ApplicationShortcut);
+    menu->addSeparator();
+  }
   QAction* next =
       menu->addAction(tr("Next &case of the lesson"), this, &LessonController::nextCase);
   next->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
@@ -87,9 +116,8 @@ void LessonController::createPapersMenu(QMenu* menu) {
 }
 
 void LessonController::connectPanel(LessonPanel* panel) {
-  connect(panel, &LessonPanel::previousRequested, this, [this] { apply(std::max(0, index_ - 1)); });
-  connect(panel, &LessonPanel::nextRequested, this,
-          [this] { apply(std::min(static_cast<int>(lessons_.size()) - 1, index_ + 1)); });
+  connect(panel, &LessonPanel::previousRequested, this, [this] { stepLesson(-1); });
+  connect(panel, &LessonPanel::nextRequested, this, [this] { stepLesson(1); });
   connect(panel, &LessonPanel::restartRequested, this, [this] { apply(index_); });
   connect(panel, &LessonPanel::lessonChosen, this, [this](int index) { apply(index); });
   connect(panel, &LessonPanel::caseChosen, this, [this](int k) { apply(index_, k); });
@@ -152,6 +180,60 @@ bool LessonController::startFile(const QString& path, const QString& dialogTitle
   return true;
 }
 
+bool LessonController::startCourse(const QString& name) {
+  const sl::Course* course = sl::findCourse(courses_, name.toStdString());
+  if (!course) {
+    w_.report(courseError_.isEmpty()
+                  ? QString::fromStdString(sl::unknownCourseMessage(courses_, name.toStdString()))
+                  : courseError_,
+              tr("Cannot start the course"));
+    return false;
+  }
+  const int first = findLesson(lessons_, QString::fromStdString(course->lessons.front().lesson));
+  if (first < 0) {  // listed, but refused when the lessons were read (reported then)
+    w_.report(tr("course %1: its lesson '%2' could not be read")
+                  .arg(name, QString::fromStdString(course->lessons.front().lesson)),
+              tr("Cannot start the course"));
+    return false;
+  }
+  course_ = static_cast<int>(course - courses_.data());
+  coursePosition_ = 0;
+  apply(first);
+  return true;
+}
+
+const sl::Course* LessonController::activeCourse() const {
+  return course_ >= 0 ? &courses_[static_cast<std::size_t>(course_)] : nullptr;
+}
+
+void LessonController::stepLesson(int step) {
+  const sl::Course* course = activeCourse();
+  if (!course) {
+    apply(std::clamp(index_ + step, 0, static_cast<int>(lessons_.size()) - 1));
+    return;
+  }
+  const int to = coursePosition_ + step;
+  if (to < 0 || to >= static_cast<int>(course->lessons.size())) return;
+  const QString file = QString::fromStdString(course->lessons[static_cast<std::size_t>(to)].lesson);
+  const int index = findLesson(lessons_, file);
+  if (index < 0) {
+    w_.report(tr("the course's lesson '%1' could not be read").arg(file));
+    return;
+  }
+  coursePosition_ = to;
+  apply(index);
+}
+
+QString LessonController::courseLine() const {
+  const sl::Course* course = activeCourse();
+  if (!course || coursePosition_ < 0) return {};
+  return tr("Course %1 min: %2 of %3 · ~%4 min")
+      .arg(course->minutes)
+      .arg(coursePosition_ + 1)
+      .arg(course->lessons.size())
+      .arg(course->lessons[static_cast<std::size_t>(coursePosition_)].minutes);
+}
+
 const sl::Preset* LessonController::activePreset() const {
   if (index_ < 0 || index_ >= static_cast<int>(lessons_.size())) return nullptr;
   const sl::Preset& lesson = lessons_[static_cast<std::size_t>(index_)].preset;
@@ -172,6 +254,18 @@ void LessonController::apply(int index, int caseIndex) {
   w.passes_->stop();
   index_ = index;
   caseIndex_ = caseIndex;
+  if (const sl::Course* course = activeCourse()) {  // still in the course: where in it
+    const std::string file =
+        QFileInfo(lessons_[static_cast<std::size_t>(index)].path).fileName().toStdString();
+    const auto at = std::find_if(course->lessons.begin(), course->lessons.end(),
+                                 [&file](const sl::CourseLesson& l) { return l.lesson == file; });
+    if (at == course->lessons.end()) {
+      course_ = -1;  // a lesson outside the course ends it
+      coursePosition_ = -1;
+    } else {
+      coursePosition_ = static_cast<int>(at - course->lessons.begin());
+    }
+  }
   const sl::Preset& lesson = lessons_[static_cast<std::size_t>(index)].preset;
   const sl::Preset& p = *activePreset();  // the case's (the lesson's layout below)
   QStringList problems;
@@ -223,6 +317,13 @@ void LessonController::apply(int index, int caseIndex) {
 
   w.lessonPanel_->showLesson(&lessons_[static_cast<std::size_t>(index)], index,
                              static_cast<int>(lessons_.size()), caseIndex_);
+  if (const sl::Course* course = activeCourse())
+    w.lessonPanel_->setCourse(
+        courseLine(),
+        QString::fromStdString(course->lessons[static_cast<std::size_t>(coursePosition_)].thread),
+        coursePosition_ > 0, coursePosition_ + 1 < static_cast<int>(course->lessons.size()));
+  else
+    w.lessonPanel_->setCourse({}, {}, false, false);
   w.lessonPanel_->setNote(problems.join(QLatin1Char('\n')));
   for (const QString& problem : problems) w.report(tr("lesson: %1").arg(problem));
   if (!lesson.layout) {

@@ -1,5 +1,6 @@
 // Lessons: the Lessons menu, starting a lesson (its scene, technique, parameters, camera and
-// light), the Lesson dock's previous / next / restart, and the lesson banner over the view.
+// light), the Lesson dock's previous / next / restart, the lesson banner over the view, and
+// courses (scenes/courses.json): lessons in a course's order, Next going to its next one.
 #pragma once
 
 #include <vector>
@@ -40,6 +41,20 @@ class LessonController : public QObject {
   /// Starts lesson `index`; of a lesson told in cases, case `caseIndex` (0-based; the
   /// lesson's layout stays the lesson's).
   void apply(int index, int caseIndex = 0);
+  /// Starts course `name` (scenes/courses.json) at its first lesson; false (reported) when
+  /// there is no such course or the course file is bad.
+  bool startCourse(const QString& name);
+  /// In a course: its lesson `step` places on (1: the next, -1: the previous); otherwise the
+  /// lesson folder's. Nothing past either end.
+  void stepLesson(int step);
+  const std::vector<sl::Course>& courses() const { return courses_; }
+  /// The active course (nullptr: none; opening a lesson that is not in it ends it) and the
+  /// active lesson's place in it (0-based).
+  const sl::Course* activeCourse() const;
+  int coursePosition() const { return coursePosition_; }
+  /// "Course 45 min: 3 of 7 · ~8 min" (empty outside a course).
+  QString courseLine() const;
+
   /// The active lesson's next case (after the last: the first); nothing without cases.
   void nextCase();
 
@@ -71,6 +86,10 @@ class LessonController : public QObject {
   std::vector<Lesson> lessons_;
   int index_ = -1;
   int caseIndex_ = 0;
+  std::vector<sl::Course> courses_;
+  QString courseError_;  ///< the course file's problem (no courses then)
+  int course_ = -1;      ///< index into courses_, -1: no course
+  int coursePosition_ = -1;
   QAction* bannerAction_ = nullptr;
   bool settling_ = false, settleQueued_ = false, settled_ = true;
   int settleFrames_ = 0;

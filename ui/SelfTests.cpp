@@ -146,6 +146,8 @@ void SelfTests::run() {
     ran = storageClick(argument_);
   else if (name_ == QLatin1String("panels"))
     ran = panelsFollowTechnique();
+  else if (name_ == QLatin1String("course"))
+    ran = course(argument_);
   else if (name_ == QLatin1String("bad-session"))
     ran = badSession(argument_);
   else

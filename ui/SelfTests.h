@@ -2,9 +2,9 @@
 // params, bad-gltf=FILE[,FILE…], bad-session=FILE[,FILE…], teaching=DIR, charts=DIR,
 // split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check
 // (SelfTestsSession.cpp), presenter[=DIR], split-params[=DIR] (SelfTestsPresenter.cpp),
-// lesson-claims[=DIR] (SelfTestsLessons.cpp). They act as a user would and check what the renderer
-// and the window did; each check prints "ok   ..." or "FAIL
-// ...".
+// lesson-claims[=DIR] (SelfTestsLessons.cpp), course[=DIR] (SelfTestsCourse.cpp). They act as a
+// user would and check what the renderer and the window did; each check prints "ok   ..." or
+// "FAIL ...".
 #pragma once
 
 #include <cstdint>
@@ -128,6 +128,11 @@ class SelfTests : public QObject {
   /// the ones it does not feed, except one opened by hand from View > Panels, which stays
   /// until it is closed; no panel in view shows its "publishes no ..." placeholder.
   bool panelsFollowTechnique();
+  /// course[=DIR] (started with --course NAME): Next in the Lesson dock opens each of the
+  /// course's lessons in its order, the dock shows "Course N min: K of M · ~T min" and the
+  /// lesson's sentence; Next is off at the last, Previous goes back one, and a lesson outside
+  /// the course ends it. The Lesson dock at each lesson is saved to DIR.
+  bool course(const QString& dir);
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
   /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;

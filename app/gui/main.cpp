@@ -1,10 +1,11 @@
 // shadowlab: the interactive GUI. `shadowlab [--scene NAME|FILE] [--technique ID]
-// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--grab DIR --grab-after N]`; see
+// [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--course NAME] [--grab DIR --grab-after N]`; see
 // ui/MainWindow.h and ui/LaunchOptions.h (also for the hidden --self-test).
 // Exit codes: 0 ok, 1 runtime failure (no GL 4.5, scene not loadable, grab failed),
 // 2 bad command line (unknown option, technique or parameter, value out of range).
 #include <cstdio>
 #include <optional>
+#include <vector>
 
 #include <QApplication>
 #include <QMessageBox>
@@ -12,9 +13,11 @@
 
 #include "GlSupport.h"
 #include "LaunchOptions.h"
+#include "LessonController.h"
 #include "panels/common/LessonPanel.h"
 #include "MainWindow.h"
 #include "Theme.h"
+#include "core/Course.h"
 #include "core/Renderer.h"
 
 namespace {
@@ -73,10 +76,34 @@ int main(int argc, char** argv) {
   // GL-free checks first: a typo must not cost a window (grab runs stop here; interactive
   // runs report the same problems in the status bar once the window is up).
   // A lesson brings its technique (the one --set is checked against when none is given).
-  std::string lessonTechnique;
-  if (!options.lesson.isEmpty()) {
+  // A course starts at its first lesson (its file, course file and name checked here).
+  QString firstLesson = options.lesson;
+  if (!options.course.isEmpty()) {
     QString error;
-    const std::optional<sl::ui::Lesson> lesson = sl::ui::resolveLesson(options.lesson, &error);
+    const std::optional<std::vector<sl::Course>> courses = sl::ui::loadCourseFile(&error);
+    if (!courses) {
+      printErr(error);
+      return 2;
+    }
+    const sl::Course* course = sl::findCourse(*courses, options.course.toStdString());
+    if (!course) {
+      printErr(
+          QString::fromStdString(sl::unknownCourseMessage(*courses, options.course.toStdString())));
+      return 2;
+    }
+    firstLesson = QString::fromStdString(course->lessons.front().lesson);
+  }
+  const bool startsLesson = !firstLesson.isEmpty();
+  // A course: through the window's LessonController (a child of the window).
+  auto startLesson = [&options](sl::ui::MainWindow& w) {
+    return options.course.isEmpty()
+               ? w.startLesson(options.lesson, options.lessonCase - 1)
+               : w.findChild<sl::ui::LessonController*>()->startCourse(options.course);
+  };
+  std::string lessonTechnique;
+  if (startsLesson) {
+    QString error;
+    const std::optional<sl::ui::Lesson> lesson = sl::ui::resolveLesson(firstLesson, &error);
     if (!lesson) {
       printErr(error);
       return 2;
@@ -107,11 +134,10 @@ int main(int argc, char** argv) {
 
   if (!interactive) {
     // A lesson sets scene, technique and parameters; explicit options then override them.
-    if (!options.lesson.isEmpty() && !window.startLesson(options.lesson, options.lessonCase - 1))
-      return 2;
-    if (options.lesson.isEmpty() || !options.technique.isEmpty())
+    if (startsLesson && !startLesson(window)) return 2;
+    if (!startsLesson || !options.technique.isEmpty())
       window.setTechnique(QString::fromStdString(technique));
-    if ((options.lesson.isEmpty() || !options.scene.isEmpty()) &&
+    if ((!startsLesson || !options.scene.isEmpty()) &&
         !window.loadScene(options.scene.isEmpty() ? window.initialSceneName() : options.scene))
       return 1;
     window.show();
@@ -134,7 +160,7 @@ int main(int argc, char** argv) {
   const QString scene = options.scene.isEmpty() ? window.initialSceneName() : options.scene;
   if (!window.loadScene(scene) && scene != sl::ui::MainWindow::defaultSceneName())
     window.loadScene(sl::ui::MainWindow::defaultSceneName());
-  if (!options.lesson.isEmpty()) window.startLesson(options.lesson, options.lessonCase - 1);
+  if (startsLesson) startLesson(window);
   window.show();
   if (options.presenter) window.setPresenterMode(true);
   return QApplication::exec();

@@ -25,6 +25,19 @@ QString lessonDirectory() {
       .filePath(QStringLiteral("lessons"));
 }
 
+QString courseFilePath() {
+  return QString::fromStdString(sl::courseFile(sl::builtinSceneDir()).string());
+}
+
+std::optional<std::vector<sl::Course>> loadCourseFile(QString* error) {
+  const QString path = courseFilePath();
+  if (!QFileInfo::exists(path)) return std::vector<sl::Course>{};
+  std::string message;
+  auto courses = sl::loadCourses(path.toStdString(), lessonDirectory().toStdString(), &message);
+  if (!courses && error) *error = QString::fromStdString(message);
+  return courses;
+}
+
 std::vector<Lesson> loadLessons(QStringList* errors) {
   std::vector<Lesson> out;
   const QDir dir(lessonDirectory());
@@ -79,6 +92,18 @@ std::optional<Lesson> resolveLesson(const QString& spec, QString* error) {
 LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(8, 6, 8, 8);
+  course_ = new QLabel;
+  course_->setObjectName(QStringLiteral("lessonCourse"));
+  followBodyFont(course_, 1.0, true);
+  course_->setWordWrap(true);
+  course_->hide();
+  layout->addWidget(course_);
+  thread_ = new QLabel;
+  thread_->setObjectName(QStringLiteral("lessonCourseThread"));
+  thread_->setWordWrap(true);
+  thread_->setForegroundRole(QPalette::PlaceholderText);
+  thread_->hide();
+  layout->addWidget(thread_);
   title_ = new QLabel;
   title_->setObjectName(QStringLiteral("lessonTitle"));
   followBodyFont(title_, 1.2, true);
@@ -110,6 +135,8 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   restart_ = new QPushButton(tr("Restart"));
   restart_->setToolTip(tr("Apply the lesson's scene, camera, light and parameters again"));
   next_ = new QPushButton(tr("Next ▶"));
+  previous_->setObjectName(QStringLiteral("lessonPrevious"));
+  next_->setObjectName(QStringLiteral("lessonNext"));
   connect(previous_, &QPushButton::clicked, this, &LessonPanel::previousRequested);
   connect(next_, &QPushButton::clicked, this, &LessonPanel::nextRequested);
   connect(restart_, &QPushButton::clicked, this, &LessonPanel::restartRequested);
@@ -206,6 +233,21 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count, int cas
   previous_->setEnabled(index > 0);
   next_->setEnabled(index + 1 < count);
   restart_->setEnabled(true);
+}
+
+void LessonPanel::setCourse(const QString& position, const QString& thread, bool hasPrevious,
+                            bool hasNext) {
+  course_->setText(position);
+  course_->setVisible(!position.isEmpty());
+  thread_->setText(thread);
+  thread_->setVisible(!position.isEmpty() && !thread.isEmpty());
+  if (position.isEmpty()) return;
+  previous_->setEnabled(hasPrevious);
+  next_->setEnabled(hasNext);
+}
+
+QString LessonPanel::courseLine() const {
+  return course_->isHidden() ? QString() : course_->text();
 }
 
 void LessonPanel::setNote(const QString& note) {

@@ -11,6 +11,7 @@
 #include <QStringList>
 #include <QWidget>
 
+#include "core/Course.h"
 #include "core/Preset.h"
 
 class QLabel;
@@ -33,6 +34,13 @@ std::vector<Lesson> loadLessons(QStringList* errors);
 /// ("04-diagonal-pca"), a file name or a path of one of them; -1 when none matches.
 int findLesson(const std::vector<Lesson>& lessons, const QString& spec);
 
+/// The course file: <built-in scene dir>/courses.json.
+QString courseFilePath();
+/// The courses of courseFilePath(), checked against lessonDirectory(); nothing (and `error`
+/// set to one line naming the file, the entry and what is wrong) when the file is bad. No
+/// file: no courses.
+std::optional<std::vector<sl::Course>> loadCourseFile(QString* error);
+
 /// A lesson given on the command line: one of loadLessons() or a preset file elsewhere.
 /// Nothing (and `error` set, naming the known lessons) when it cannot be found or read.
 std::optional<Lesson> resolveLesson(const QString& spec, QString* error);
@@ -50,6 +58,12 @@ class LessonPanel : public QWidget {
   void setLessonTitles(const QStringList& titles);
   /// A line under the explanation (e.g. a parameter the lesson could not apply).
   void setNote(const QString& note);
+  /// The course line above the title ("Course 45 min: 3 of 7 · ~8 min") and the sentence
+  /// that connects the lesson to the course; an empty `position` hides both. `hasPrevious`
+  /// and `hasNext` then enable Previous and Next (the course's, not the lesson folder's).
+  void setCourse(const QString& position, const QString& thread, bool hasPrevious, bool hasNext);
+  /// The course line as shown (empty: no course).
+  QString courseLine() const;
   /// The note as set (unelided).
   QString note() const { return noteText_; }
 
@@ -61,6 +75,8 @@ class LessonPanel : public QWidget {
   void caseChosen(int caseIndex);
 
  private:
+  QLabel* course_ = nullptr;  ///< the course position (hidden outside a course)
+  QLabel* thread_ = nullptr;  ///< why this lesson comes here in the course
   QLabel* title_ = nullptr;
   QWidget* cases_ = nullptr;  ///< one checkable button per case (hidden without cases)
   QTextBrowser* text_ = nullptr;

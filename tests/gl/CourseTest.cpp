@@ -1,0 +1,104 @@
+// scenes/courses.json: every course lists lessons that exist, each once, within its minutes;
+// and a bad course file is refused with one line naming the file, the entry and the problem.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "core/Course.h"
+#include "core/Preset.h"
+
+namespace sl {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScenes = fs::path(SHADOWLAB_TEST_DATA) / ".." / ".." / "scenes";
+const fs::path kLessons = kScenes / "lessons";
+
+fs::path writeCourses(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::path(SHADOWLAB_TEST_OUT) / "gl" / "courses";
+  fs::create_directories(dir);
+  const fs::path path = dir / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string loadError(const std::string& name, const std::string& text) {
+  const fs::path path = writeCourses(name, text);
+  std::string error;
+  EXPECT_FALSE(loadCourses(path, kLessons, &error)) << name;
+  const std::string prefix = path.string() + ": ";
+  EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
+  return error.substr(std::min(error.size(), prefix.size()));
+}
+
+TEST(Courses, TheCourseFileListsLessonsThatExistOnceWithinTheCourseLength) {
+  std::string error;
+  const auto courses = loadCourses(courseFile(kScenes), kLessons, &error);
+  ASSERT_TRUE(courses) << error;
+  ASSERT_NE(findCourse(*courses, "90"), nullptr);
+  ASSERT_NE(findCourse(*courses, "45"), nullptr);
+  EXPECT_EQ(findCourse(*courses, "90")->minutes, 90);
+  EXPECT_EQ(findCourse(*courses, "45")->minutes, 45);
+  for (const Course& c : *courses) {
+    SCOPED_TRACE("course " + c.name);
+    EXPECT_LE(c.plannedMinutes(), c.minutes);
+    std::set<std::string> seen;
+    for (const CourseLesson& l : c.lessons) {
+      EXPECT_TRUE(seen.insert(l.lesson).second) << l.lesson << " listed twice";
+      std::string presetError;
+      EXPECT_TRUE(loadPreset(kLessons / l.lesson, &presetError)) << presetError;
+      EXPECT_GE(l.minutes, 1) << l.lesson;
+      EXPECT_FALSE(l.thread.empty()) << l.lesson << ": no sentence";
+    }
+  }
+  // The long class has every lesson, the short one a part of them.
+  std::size_t lessonFiles = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(kLessons))
+    lessonFiles += e.path().extension() == ".json";
+  EXPECT_EQ(findCourse(*courses, "90")->lessons.size(), lessonFiles);
+  EXPECT_LT(findCourse(*courses, "45")->lessons.size(), lessonFiles);
+}
+
+TEST(Courses, BadCourseFilesAreRefusedNamingTheEntry) {
+  EXPECT_EQ(loadError("missing.json",
+                      R"({"courses": [{"name": "45", "minutes": 45, "lessons": [
+                          {"lesson": "01-perspective-aliasing.json", "minutes": 5},
+                          {"lesson": "99-nothing.json", "minutes": 5}]}]})"),
+            "courses[0].lessons[1].lesson: no lesson '99-nothing.json' in " + kLessons.string());
+  EXPECT_EQ(loadError("twice.json",
+                      R"({"courses": [{"name": "45", "minutes": 45, "lessons": [
+                          {"lesson": "01-perspective-aliasing.json", "minutes": 5},
+                          {"lesson": "01-perspective-aliasing.json", "minutes": 5}]}]})"),
+            "courses[0].lessons[1].lesson: '01-perspective-aliasing.json' is listed twice in "
+            "this course");
+  EXPECT_EQ(loadError("long.json",
+                      R"({"courses": [{"name": "10", "minutes": 10, "lessons": [
+                          {"lesson": "01-perspective-aliasing.json", "minutes": 6},
+                          {"lesson": "02-projective-aliasing.json", "minutes": 5}]}]})"),
+            "courses[0].lessons: the lessons take 11 minutes, more than the course's 10");
+  EXPECT_EQ(loadError("names.json",
+                      R"({"courses": [
+                          {"name": "a", "minutes": 9, "lessons": [
+                            {"lesson": "01-perspective-aliasing.json", "minutes": 5}]},
+                          {"name": "a", "minutes": 9, "lessons": [
+                            {"lesson": "02-projective-aliasing.json", "minutes": 5}]}]})"),
+            "courses[1].name: a second course called 'a'");
+  EXPECT_EQ(loadError("outside.json",
+                      R"({"courses": [{"name": "a", "minutes": 9, "lessons": [
+                          {"lesson": "../courses.json", "minutes": 5}]}]})"),
+            "courses[0].lessons[0].lesson: no lesson '../courses.json' in " + kLessons.string());
+  EXPECT_EQ(loadError("key.json", R"({"courses": [{"name": "a", "length": 9}]})"),
+            "courses[0].length: unknown key 'length' (known: name, minutes, lessons)");
+}
+
+TEST(Courses, UnknownCourseNamesTheKnownOnes) {
+  const std::vector<Course> courses{{"90", 90, {}}, {"45", 45, {}}};
+  EXPECT_EQ(unknownCourseMessage(courses, "30"), "unknown course '30' (known: 90, 45)");
+}
+
+}  // namespace
+}  // namespace sl

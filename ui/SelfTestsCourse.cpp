@@ -1,0 +1,82 @@
+// The `course` self-test (see SelfTests.h): a course started with --course, stepped through
+// with the Lesson dock's Next as a lecturer would.
+#include <QDir>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QPushButton>
+
+#include "LessonController.h"
+#include "MainWindow.h"
+#include "SelfTests.h"
+
+namespace sl::ui {
+
+bool SelfTests::course(const QString& dir) {
+  LessonController& lessons = *w_.lessons_;
+  const sl::Course* course = lessons.activeCourse();
+  check(course != nullptr, tr("--course started a course"));
+  if (!course) return false;
+  auto* next = w_.lessonPanel_->findChild<QPushButton*>(QStringLiteral("lessonNext"));
+  auto* previous = w_.lessonPanel_->findChild<QPushButton*>(QStringLiteral("lessonPrevious"));
+  auto* thread = w_.lessonPanel_->findChild<QLabel*>(QStringLiteral("lessonCourseThread"));
+  check(next && previous && thread, tr("the Lesson dock has Next, Previous and the course line"));
+  if (!next || !previous || !thread) return false;
+  if (!dir.isEmpty()) QDir().mkpath(dir);
+  auto activeFile = [&lessons] {
+    return lessons.index() < 0
+               ? QString()
+               : QFileInfo(lessons.lessons()[static_cast<std::size_t>(lessons.index())].path)
+                     .fileName();
+  };
+  const int count = static_cast<int>(course->lessons.size());
+  for (int k = 0; k < count; ++k) {
+    const sl::CourseLesson& want = course->lessons[static_cast<std::size_t>(k)];
+    if (k > 0) next->click();  // opens the lesson and lets it settle before it returns
+    const QString file = QString::fromStdString(want.lesson);
+    check(activeFile() == file,
+          tr("lesson %1 of the course is %2 (opened: %3)").arg(k + 1).arg(file, activeFile()));
+    const QString line = QStringLiteral("Course %1 min: %2 of %3 · ~%4 min")
+                             .arg(course->minutes)
+                             .arg(k + 1)
+                             .arg(count)
+                             .arg(want.minutes);
+    check(w_.lessonPanel_->courseLine() == line && !w_.lessonDock_->isHidden(),
+          tr("the Lesson dock shows \"%1\" (shown: \"%2\")")
+              .arg(line, w_.lessonPanel_->courseLine()));
+    check(thread->isVisibleTo(w_.lessonPanel_) &&
+              thread->text() == QString::fromStdString(want.thread),
+          tr("%1: the dock shows the course's sentence for it").arg(file));
+    check(next->isEnabled() == (k + 1 < count) && previous->isEnabled() == (k > 0),
+          tr("%1: Next %2, Previous %3")
+              .arg(file, next->isEnabled() ? tr("on") : tr("off"),
+                   previous->isEnabled() ? tr("on") : tr("off")));
+    if (!dir.isEmpty())
+      w_.lessonDock_->grab().save(QDir(dir).filePath(QStringLiteral("course-%1.png").arg(k + 1)));
+  }
+  lessons.stepLesson(1);  // past the last: stays
+  check(lessons.coursePosition() == count - 1,
+        tr("the course's next lesson after the last: none, the last stays open"));
+  previous->click();
+  check(count < 2 ||
+            (lessons.coursePosition() == count - 2 &&
+             activeFile() == QString::fromStdString(
+                                 course->lessons[static_cast<std::size_t>(count - 2)].lesson)),
+        tr("Previous opens the course's lesson before the last"));
+  // A lesson outside the course (chosen from the Lessons menu) ends the course.
+  int outside = -1;
+  for (std::size_t i = 0; i < lessons.lessons().size() && outside < 0; ++i) {
+    const std::string name = QFileInfo(lessons.lessons()[i].path).fileName().toStdString();
+    bool listed = false;
+    for (const sl::CourseLesson& l : course->lessons) listed = listed || l.lesson == name;
+    if (!listed) outside = static_cast<int>(i);
+  }
+  if (outside >= 0) {
+    lessons.apply(outside);
+    check(!lessons.activeCourse() && w_.lessonPanel_->courseLine().isEmpty() && thread->isHidden(),
+          tr("a lesson outside the course ends it (the dock's course line is gone)"));
+  }
+  return true;
+}
+
+}  // namespace sl::ui

@@ -2,10 +2,14 @@
 // and a bad course file is refused with one line naming the file, the entry and the problem.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "core/Course.h"
 #include "core/Preset.h"
@@ -61,6 +65,51 @@ TEST(Courses, TheCourseFileListsLessonsThatExistOnceWithinTheCourseLength) {
     lessonFiles += e.path().extension() == ".json";
   EXPECT_EQ(findCourse(*courses, "90")->lessons.size(), lessonFiles);
   EXPECT_LT(findCourse(*courses, "45")->lessons.size(), lessonFiles);
+}
+
+// docs/lecturer/courses.md shows each course as a table ("| # | minutes | time | N. title |
+// thread |"): the same lessons (by their number in the Lessons menu, the sorted file order), in
+// the same order, with the same minutes and sentences as scenes/courses.json.
+TEST(Courses, TheLecturerPageShowsTheCourseFile) {
+  std::string error;
+  const auto courses = loadCourses(courseFile(kScenes), kLessons, &error);
+  ASSERT_TRUE(courses) << error;
+  std::vector<std::string> files;
+  for (const fs::directory_entry& e : fs::directory_iterator(kLessons))
+    if (e.path().extension() == ".json") files.push_back(e.path().filename().string());
+  std::sort(files.begin(), files.end());
+  std::ifstream page(kScenes / ".." / "docs" / "lecturer" / "courses.md");
+  ASSERT_TRUE(page) << "docs/lecturer/courses.md";
+  std::map<std::string, std::vector<CourseLesson>> shown;  // course name -> its table's rows
+  std::string line, current;
+  while (std::getline(page, line)) {
+    if (line.rfind("## The ", 0) == 0 && line.find("-minute class") != std::string::npos) {
+      current = line.substr(7, line.find('-') - 7);
+      continue;
+    }
+    if (line.rfind("## ", 0) == 0) current.clear();
+    if (current.empty() || line.rfind("| ", 0) != 0 || line.rfind("| #", 0) == 0) continue;
+    std::vector<std::string> cells;
+    std::size_t at = 1;
+    for (std::size_t bar; (bar = line.find(" |", at)) != std::string::npos; at = bar + 2)
+      cells.push_back(line.substr(at + 1, bar - at - 1));
+    ASSERT_GE(cells.size(), 5u) << line;
+    const int number = std::atoi(cells[3].c_str());
+    ASSERT_TRUE(number >= 1 && number <= int(files.size())) << line;
+    shown[current].push_back(
+        {files[std::size_t(number - 1)], std::atoi(cells[1].c_str()), cells[4]});
+  }
+  for (const Course& c : *courses) {
+    SCOPED_TRACE("course " + c.name);
+    const std::vector<CourseLesson>& rows = shown[c.name];
+    ASSERT_EQ(rows.size(), c.lessons.size())
+        << "the page's table of the " << c.name << "-minute class";
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      EXPECT_EQ(rows[k].lesson, c.lessons[k].lesson) << "row " << k + 1;
+      EXPECT_EQ(rows[k].minutes, c.lessons[k].minutes) << "row " << k + 1;
+      EXPECT_EQ(rows[k].thread, c.lessons[k].thread) << "row " << k + 1;
+    }
+  }
 }
 
 TEST(Courses, BadCourseFilesAreRefusedNamingTheEntry) {

@@ -15,9 +15,6 @@ RES = ("512", "1024", "2048")
 def label(technique, params):
     rest = [p for p in params.split(";") if p and not p.startswith("resolution=")]
     gateoff = {"pca.metric=metres", "pca.min_anisotropy=0", "pca.min_spread=0"}
-    poster = gateoff | {"importance.stride=1", "importance.orientation=0", "pca.source=im",
-                        "pca.metric=im-units", "light.fit=rotation-invariant",
-                        "pca.threshold=0.9999"}
     s = set(rest)
     if technique == "rtw-backward":
         return "rtw-backward" + (" " + " ".join(rest) if rest else "")

@@ -129,6 +129,23 @@ rtw::ImportanceMap publishedImage(const Publication& pub, const std::string& key
   return im;
 }
 
+/// Every level and channel of the published GPU moment chain equals `chain` (the CPU
+/// reference) within 1e-5 relative.
+void expectPublishedChain(const Publication& pub, const std::vector<rtw::MomentLevel>& chain) {
+  const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
+  for (size_t l = 0; l < chain.size(); ++l)
+    for (int c = 0; c < 6; ++c) {
+      const FloatImage& img =
+          pub.images.at("moment." + std::string(ch[c]) + "." + std::to_string(l));
+      ASSERT_EQ(img.width, chain[l].width);
+      for (size_t i = 0; i < img.values.size(); ++i) {
+        float want = chain[l].texels[i][c];
+        ASSERT_NEAR(img.values[i], want, 1e-5f * std::max(1.0f, std::abs(want)))
+            << "level " << l << " channel " << ch[c] << " texel " << i;
+      }
+    }
+}
+
 // DA-RTW's moment chain (mip chain of sums down to 1x1) equals the CPU chain of the frame's
 // moment IM within 1e-5 relative (summation order identical), for an IM below the moment
 // IM's cap (n = 100: the moment IM is the IM) and above it (n = 512: block maxima, 128^2).
@@ -152,19 +169,7 @@ TEST(RtwParity, MomentChainMatchesCpu) {
         ASSERT_EQ(im1.at(x, y), m) << "moment IM texel " << x << "," << y;
       }
     std::vector<rtw::MomentLevel> chain = rtw::buildMomentChain(im1);
-    const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
-    const Publication& pub = r->publication();
-    for (size_t l = 0; l < chain.size(); ++l)
-      for (int c = 0; c < 6; ++c) {
-        const FloatImage& img =
-            pub.images.at("moment." + std::string(ch[c]) + "." + std::to_string(l));
-        ASSERT_EQ(img.width, chain[l].width);
-        for (size_t i = 0; i < img.values.size(); ++i) {
-          float want = chain[l].texels[i][c];
-          ASSERT_NEAR(img.values[i], want, 1e-5f * std::max(1.0f, std::abs(want)))
-              << "level " << l << " channel " << ch[c] << " texel " << i;
-        }
-      }
+    ASSERT_NO_FATAL_FAILURE(expectPublishedChain(r->publication(), chain));
     rtw::MomentStats st = rtw::momentsFromTop(chain.back().texels[0]);
     EXPECT_TRUE(st.valid);
     // The numbers of the NEXT frame's rotation are this chain's top (read a frame late).
@@ -191,19 +196,8 @@ TEST(RtwParity, PosterSourceMomentChainIsTheImsChain) {
   ASSERT_EQ(im1.width, 512);
   ASSERT_EQ(im1.values, full.values);
   std::vector<rtw::MomentLevel> chain = rtw::buildMomentChain(full);
+  ASSERT_NO_FATAL_FAILURE(expectPublishedChain(r->publication(), chain));
   const char* ch[6] = {"I", "xI", "yI", "xxI", "yyI", "xyI"};
-  const Publication& pub = r->publication();
-  for (size_t l = 0; l < chain.size(); ++l)
-    for (int c = 0; c < 6; ++c) {
-      const FloatImage& img =
-          pub.images.at("moment." + std::string(ch[c]) + "." + std::to_string(l));
-      ASSERT_EQ(img.width, chain[l].width);
-      for (size_t i = 0; i < img.values.size(); ++i) {
-        float want = chain[l].texels[i][c];
-        ASSERT_NEAR(img.values[i], want, 1e-5f * std::max(1.0f, std::abs(want)))
-            << "level " << l << " channel " << ch[c] << " texel " << i;
-      }
-    }
   const rtw::MomentTexel top = chain.back().texels[0];
   const rtw::MomentTexel direct = rtw::momentSumsDirect(full);
   for (int c = 0; c < 6; ++c)

@@ -435,8 +435,8 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   for (int c = 0; c < 6; ++c) t[c] = top[c], lastTop_[c] = top[c];
   // pca.metric: in metres (the IM's axes span the light frustum's extents) or IM units.
   const bool metres = ctx.params.getInt("pca.metric") == 0;
-  rtw::MomentStats stats = rtw::momentsFromTop(t, metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f));
   const glm::vec2 scale = metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f);
+  rtw::MomentStats stats = rtw::momentsFromTop(t, scale);
   publishNumber(ctx, "pca.scale.x", scale.x);
   publishNumber(ctx, "pca.scale.y", scale.y);
   // The spread gate: the half-mass widths of the 1D maps that frame's warp was built from.

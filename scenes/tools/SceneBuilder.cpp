@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 
 namespace sl::gen {
@@ -105,6 +106,31 @@ void MeshData::append(const MeshData& other) {
   normals.insert(normals.end(), other.normals.begin(), other.normals.end());
   uvs.insert(uvs.end(), other.uvs.begin(), other.uvs.end());
   for (std::uint32_t i : other.indices) indices.push_back(base + i);
+}
+
+void addSurface(MeshData& m, int nu, int nv, const std::function<glm::vec3(float, float)>& p,
+                const glm::vec3* flatNormal) {
+  const auto base = std::uint32_t(m.positions.size());
+  const float h = 1e-3f;
+  for (int j = 0; j <= nv; ++j) {
+    for (int i = 0; i <= nu; ++i) {
+      const float u = float(i) / float(nu), v = float(j) / float(nv);
+      glm::vec3 du = p(std::min(u + h, 1.0f), v) - p(std::max(u - h, 0.0f), v);
+      glm::vec3 dv = p(u, std::min(v + h, 1.0f)) - p(u, std::max(v - h, 0.0f));
+      glm::vec3 n = glm::cross(du, dv);
+      const float len = glm::length(n);
+      m.positions.push_back(p(u, v));
+      m.normals.push_back(flatNormal   ? *flatNormal
+                          : len > 0.0f ? n / len
+                                       : glm::vec3(0.0f, 1.0f, 0.0f));
+      m.uvs.emplace_back(u, v);
+    }
+  }
+  auto at = [&](int i, int j) { return base + std::uint32_t(j * (nu + 1) + i); };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i)
+      m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j),
+                                         at(i + 1, j + 1), at(i, j + 1)});
 }
 
 glm::quat rotationWithZAxis(const glm::vec3& zIn) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,12 @@ struct MeshData {
   void addSphere(const glm::vec3& center, float radiusM, int slices, int stacks);
   void append(const MeshData& other);
 };
+
+/// A (nu x nv)-quad parametric surface p(u, v), u, v in [0, 1], sharing vertices;
+/// counter-clockwise faces on the side of cross(dp/du, dp/dv), the normals' side: by central
+/// differences, or `flatNormal` for a planar surface (with corners where it degenerates).
+void addSurface(MeshData& m, int nu, int nv, const std::function<glm::vec3(float, float)>& p,
+                const glm::vec3* flatNormal = nullptr);
 
 /// Rotation whose local +z axis points along `z` (local +y stays as close to world +y as it
 /// can): the node rotation of a light shining along -z, or of a camera looking along -z.

@@ -23,6 +23,11 @@ namespace sl::gen {
 int writeFixtures(const std::filesystem::path& dir);
 int writePreviews(const Scene& scene, const std::filesystem::path& dir);
 SceneBuilder makeSponzaClass(std::size_t targetTriangles);
+// Defined in make_real_content.cpp.
+SceneBuilder makeHelmet();
+SceneBuilder makeSunroom();
+SceneBuilder makeFigure();
+SceneBuilder makeCar();
 
 namespace {
 
@@ -628,19 +633,21 @@ int main(int argc, char** argv) {
     } else if (arg == "--preview") {
       previewDir = value();
     } else {
-      std::fprintf(stderr,
-                   "usage: %s [--scenes DIR] [--fixtures DIR] [--preview DIR]\n"
-                   "       %s --sponza-class OUT.glb [--triangles N]\n"
-                   "  --scenes DIR    write the built-in scenes (plane-box, diagonal, corridor, "
-                   "default, dueling, spot-box, point-box, omni-room, spot-yard, thin-pole) as "
-                   "DIR/<name>.gltf\n"
-                   "  --fixtures DIR  write the loader's test fixtures into DIR\n"
-                   "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n"
-                   "  --sponza-class OUT.glb  write a generated atrium for timings (floor, two "
-                   "storeys of arcades, walls, drapes, an open roof, a sun, camera 'atrium') with "
-                   "at most --triangles N triangles (default %ld, as the Crytek Sponza of the "
-                   "DA-RTW poster); .gltf writes JSON\n",
-                   argv[0], argv[0], kSponzaDefaultTriangles);
+      std::fprintf(
+          stderr,
+          "usage: %s [--scenes DIR] [--fixtures DIR] [--preview DIR]\n"
+          "       %s --sponza-class OUT.glb [--triangles N]\n"
+          "  --scenes DIR    write the built-in scenes (plane-box, diagonal, corridor, "
+          "default, dueling, spot-box, point-box, omni-room, spot-yard, thin-pole, band-diagonal, "
+          "band-aligned, blob; real content: helmet, sunroom, figure, car) as "
+          "DIR/<name>.gltf\n"
+          "  --fixtures DIR  write the loader's test fixtures into DIR\n"
+          "  --preview DIR   also ray-trace a PNG of every camera bookmark into DIR\n"
+          "  --sponza-class OUT.glb  write a generated atrium for timings (floor, two "
+          "storeys of arcades, walls, drapes, an open roof, a sun, camera 'atrium') with "
+          "at most --triangles N triangles (default %ld, as the Crytek Sponza of the "
+          "DA-RTW poster); .gltf writes JSON\n",
+          argv[0], argv[0], kSponzaDefaultTriangles);
       return 2;
     }
   }
@@ -682,6 +689,10 @@ int main(int argc, char** argv) {
     rc |= sl::gen::writeScene(sl::gen::makeBand("band-aligned", 0.0f, false), "band-aligned",
                               scenesDir, previewDir);
     rc |= sl::gen::writeScene(sl::gen::makeBand("blob", 0.0f, true), "blob", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeHelmet(), "helmet", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeSunroom(), "sunroom", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeFigure(), "figure", scenesDir, previewDir);
+    rc |= sl::gen::writeScene(sl::gen::makeCar(), "car", scenesDir, previewDir);
   }
   if (!fixturesDir.empty()) {
     fs::create_directories(fixturesDir);

@@ -39,34 +39,6 @@ Tessellation tessellationAt(float scale) {
   return {level(32.0f, 6), level(16.0f, 1), level(48.0f, 4), level(24.0f, 2), level(40.0f, 2)};
 }
 
-/// A (nu x nv)-quad parametric surface p(u, v), u, v in [0, 1], sharing vertices;
-/// counter-clockwise faces on the side of cross(dp/du, dp/dv), the normals' side: by central
-/// differences, or `flatNormal` for a planar surface (with corners where it degenerates).
-void addSurface(MeshData& m, int nu, int nv, const std::function<glm::vec3(float, float)>& p,
-                const glm::vec3* flatNormal = nullptr) {
-  const auto base = std::uint32_t(m.positions.size());
-  const float h = 1e-3f;
-  for (int j = 0; j <= nv; ++j) {
-    for (int i = 0; i <= nu; ++i) {
-      const float u = float(i) / float(nu), v = float(j) / float(nv);
-      glm::vec3 du = p(std::min(u + h, 1.0f), v) - p(std::max(u - h, 0.0f), v);
-      glm::vec3 dv = p(u, std::min(v + h, 1.0f)) - p(u, std::max(v - h, 0.0f));
-      glm::vec3 n = glm::cross(du, dv);
-      const float len = glm::length(n);
-      m.positions.push_back(p(u, v));
-      m.normals.push_back(flatNormal   ? *flatNormal
-                          : len > 0.0f ? n / len
-                                       : glm::vec3(0.0f, 1.0f, 0.0f));
-      m.uvs.emplace_back(u, v);
-    }
-  }
-  auto at = [&](int i, int j) { return base + std::uint32_t(j * (nu + 1) + i); };
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i)
-      m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j),
-                                         at(i + 1, j + 1), at(i, j + 1)});
-}
-
 /// A fluted column with entasis standing on `base`, `heightM` tall, with a square plinth and
 /// capital.
 void addColumn(MeshData& m, const glm::vec3& base, float heightM, const Tessellation& t) {

@@ -124,6 +124,67 @@ TEST(CascadeFit, StabilisedExtentIgnoresTurnsAndBoundsSnapToTexels) {
   }
 }
 
+// A small scene seen whole from inside (a 6 x 3 x 5 m room, the camera's far plane at 30 m):
+// the deep slices' bounding spheres are far wider than the room. Clamped, every such slice
+// covers exactly the room's light-space square (the same for any camera: stable) and its
+// texels are finer; the near slice, smaller than the room, keeps its sphere; unclamped, the
+// spheres as before. Every slice ∩ room stays inside its map either way.
+TEST(CascadeFit, StabilisedSliceWiderThanTheSceneCoversTheScene) {
+  const Aabb room = box({-3, 0, -2.5}, {3, 3, 2.5});
+  Camera cam;
+  cam.position = {-2.6f, 1.7f, -2.1f};
+  cam.target = {0.1f, 0.5f, 0.7f};
+  cam.nearM = 0.05f;
+  cam.farM = 30.0f;
+  cam.fovYDeg = 60.0f;
+  CascadeSettings s;
+  s.partitions = 4;
+  s.resolution = 1024;
+  CascadeFit clamped, sphere, turned;
+  ASSERT_FALSE(fitCascades(cam, 16.0f / 9.0f, room, kLight, s, clamped));
+  Camera other = cam;
+  other.look(23.0f, -4.0f);
+  other.position += glm::vec3(0.4f, 0.0f, 0.3f);
+  ASSERT_FALSE(fitCascades(other, 16.0f / 9.0f, room, kLight, s, turned));
+  s.clampToScene = false;
+  ASSERT_FALSE(fitCascades(cam, 16.0f / 9.0f, room, kLight, s, sphere));
+  int clampedParts = 0;
+  for (size_t i = 0; i < clamped.parts.size(); ++i) {
+    const CascadePart &c = clamped.parts[i], &o = sphere.parts[i];
+    EXPECT_FALSE(o.sceneClamped);
+    if (c.sceneClamped) {
+      ++clampedParts;
+      EXPECT_LT(c.texelM, o.texelM) << i;
+      // The room's corners span the map along its larger side exactly.
+      double lo = 1e9, hi = -1e9;
+      for (const glm::vec3& q : room.corners()) {
+        const glm::vec4 p = c.viewProj * glm::vec4(q, 1.0f);
+        EXPECT_LE(std::abs(p.x), 1.0f + 1e-3f) << i;
+        EXPECT_LE(std::abs(p.y), 1.0f + 1e-3f) << i;
+        lo = std::min({lo, double(p.x), double(p.y)});
+        hi = std::max({hi, double(p.x), double(p.y)});
+      }
+      EXPECT_GT(hi - lo, 1.9) << i;
+      // Camera-free: a turned and moved camera whose slice is clamped gets the same map.
+      if (turned.parts[i].sceneClamped) {
+        EXPECT_DOUBLE_EQ(turned.parts[i].extentM.x, c.extentM.x);
+        EXPECT_NEAR(orthoLeft(turned.parts[i].proj), orthoLeft(c.proj), 1e-9);
+      }
+    } else {
+      EXPECT_DOUBLE_EQ(c.extentM.x, o.extentM.x) << i;
+    }
+    const auto pts = intersectFrustumWithBox(
+        cam.frustumCorners(16.0f / 9.0f, float(c.nearM), float(c.farM)), room);
+    for (const glm::vec3& q : pts) {
+      const glm::vec4 p = c.viewProj * glm::vec4(q, 1.0f);
+      EXPECT_LE(std::abs(p.x), 1.0f + 1e-4f) << i;
+      EXPECT_LE(std::abs(p.y), 1.0f + 1e-4f) << i;
+    }
+  }
+  EXPECT_GE(clampedParts, 2);
+  EXPECT_FALSE(clamped.parts.front().sceneClamped);
+}
+
 TEST(CascadeFit, MeasuredDepthRangeNarrowsTheSplits) {
   const Aabb scene = box({-20, 0, -300}, {20, 10, 5});
   CascadeSettings s;

@@ -206,6 +206,26 @@ std::optional<std::string> fitCascades(const Camera& camera, float aspect, const
       StableOrtho o;
       if (auto e = stabilizeCascade(frustum, p.nearM, p.farM, L, s.resolution, quantum, 0.0, o))
         return e;
+      if (s.clampToScene) {
+        // The whole scene's square in the same camera-free light basis: when the slice's
+        // sphere is wider, cover the scene instead. It does not depend on the camera, so
+        // it is as stable as the sphere (and finer: a small scene in a deep slice).
+        glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-lo);
+        for (const glm::vec3& c : box.corners()) {
+          const glm::dvec2 q(glm::dot(glm::dvec3(c), o.right), glm::dot(glm::dvec3(c), o.up));
+          lo = glm::min(lo, q);
+          hi = glm::max(hi, q);
+        }
+        const double side = std::max(hi.x - lo.x, hi.y - lo.y);
+        if (side < o.extentM) {
+          const glm::dvec2 centre = 0.5 * (lo + hi);
+          o.extentM = side;
+          o.texelM = side / s.resolution;
+          o.minXY = centre - 0.5 * side;
+          o.maxXY = centre + 0.5 * side;
+          p.sceneClamped = true;
+        }
+      }
       // Casters anywhere in the scene between the light and the slice.
       o.zMax = std::max(o.zMax, boxTowardsLight + 1e-3 * (o.zMax - o.zMin));
       o.proj = glm::mat4(glm::ortho(o.minXY.x, o.maxXY.x, o.minXY.y, o.maxXY.y, -o.zMax, -o.zMin));

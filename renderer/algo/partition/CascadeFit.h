@@ -28,6 +28,10 @@ struct CascadeSettings {
   /// Stabilised: the split range quantised to 1/8 octave, each frustum the slice's bounding
   /// sphere (extent quantised, centre snapped to whole texels). Else fitted tightly.
   bool stabilize = true;
+  /// Stabilised only: a slice whose bounding sphere is wider than the scene's light-space
+  /// square covers that square instead (camera-free, so as stable; finer in a small scene
+  /// seen whole, e.g. a room or one model). False: the sphere always.
+  bool clampToScene = true;
   /// View-depth range of the visible surfaces (e.g. last frame's G-buffer min/max); the
   /// split range is clipped to it. Unset: view frustum ∩ scene bounds only.
   std::optional<glm::dvec2> visibleDepthM;
@@ -47,6 +51,9 @@ struct CascadePart {
   double texelM = 0.0;  ///< the larger texel side, metres (warped: at clip w = 1)
   /// CascadeSettings::warp: the partition's warp as fitted (its fallback and cause, n').
   std::optional<warp::WarpFit> warpFit;
+  /// Stabilised and CascadeSettings::clampToScene: the map covers the scene's square, not
+  /// the slice's (wider) bounding sphere.
+  bool sceneClamped = false;
   bool warped() const { return warpFit && warpFit->warped(); }
   /// The 12 edges of the partition's slice of the view frustum in its map's uv (0..1 =
   /// the map), clipped to the map's w > 0 side: 4 values (u0, v0, u1, v1) per segment.

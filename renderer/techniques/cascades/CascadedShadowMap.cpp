@@ -79,6 +79,19 @@ TechniqueInfo CascadedShadowMap::info() {
                "Unwarped partitions only: with partition.warp a warped map is fitted tightly "
                "(its texels change size along the warp, so no whole-texel step holds them "
                "still); a partition whose warp falls back to uniform is stabilised."});
+  add({.key = "stabilize.scene",
+       .label = "Stabilised: clamp to scene",
+       .group = "Cascades",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .minValue = 0,
+       .maxValue = 1,
+       .help = "With stabilize: a slice whose bounding sphere is wider than the whole scene "
+               "seen from the light covers the scene's light-space square instead (it does not "
+               "move with the camera, so it is as stable). The tool's addition to the "
+               "bounding-sphere fit, which alone spends a deep slice's texels outside a small "
+               "scene seen whole (a room, one model): docs/results/real-content.md. Off: the "
+               "sphere always."});
   add({.key = "partition.warp",
        .label = "Warp partitions",
        .group = "Cascades",
@@ -155,6 +168,12 @@ TechniqueInfo CascadedShadowMap::info() {
        "",
        {}},
       {"partition.*.texels", PublicationKind::Number, "Partition i's texel count.", "", {}},
+      {"partition.*.scene_clamped",
+       PublicationKind::Number,
+       "1 when stabilised partition i covers the scene's light-space square because its "
+       "slice's bounding sphere is wider (stabilize.scene), else 0.",
+       "",
+       {}},
       {"partition.*.warped",
        PublicationKind::Number,
        "1 when partition i's map is warped (partition.warp on and no fallback), else 0.",
@@ -264,6 +283,7 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
   s.lambda = ctx.params.get("split.lambda");
   s.resolution = res;
   s.stabilize = ctx.params.getBool("stabilize");
+  s.clampToScene = ctx.params.getBool("stabilize.scene");
   s.warp = ctx.params.getBool("partition.warp");
   s.eta = ctx.params.get("warp.eta");
   if (fitDepth) {
@@ -332,6 +352,7 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     publishNumber(ctx, key + ".texels_per_m", p.texelM > 0.0 ? 1.0 / p.texelM : 0.0);
     publishNumber(ctx, key + ".texels", double(res) * double(res));
     publishNumber(ctx, key + ".warped", p.warped() ? 1.0 : 0.0);
+    publishNumber(ctx, key + ".scene_clamped", p.sceneClamped ? 1.0 : 0.0);
     publishNumber(ctx, key + ".warp.fallback_cause",
                   p.warpFit ? double(int(p.warpFit->fallbackCause)) : 0.0);
     publishNumber(ctx, key + ".warp.n_prime", p.warped() ? p.warpFit->nPrime : 0.0);

@@ -55,13 +55,15 @@ TechniqueInfo SphericalShadowMap::info() {
                .defaultValue = 1,
                .minValue = 0,
                .maxValue = 1,
-               .help = "Draw each triangle over its image's longitude-latitude bounds (copied "
-                       "across the seam, every longitude where it holds a pole) and keep a "
-                       "texel where the texel's own ray hits the triangle: edges follow their "
-                       "true curves. Off: the three vertices mapped and joined by straight "
-                       "lines in the map (the per-vertex mapping of a projection): long "
-                       "triangles' shadows take the wrong shape and a triangle around a pole "
-                       "is lost (depth stays exact per texel)."});
+               .help = "The tool's change to the lecture's environment-map recipe (map each "
+                       "vertex, let the rasteriser join them): draw each triangle over its "
+                       "image's longitude-latitude bounds (copied across the seam, every "
+                       "longitude where it holds a pole) and keep a texel where the texel's "
+                       "own ray hits the triangle, so edges follow their true curves. Off: the "
+                       "recipe as given, the three vertices mapped and joined by straight lines "
+                       "in the map (copied across the seam): long triangles' shadows take the "
+                       "wrong shape and a triangle around a pole is lost (depth stays exact per "
+                       "texel)."});
   TechniqueInfo info{"spherical", "Spherical (lat-long) shadow map",
                      "Omni-directional shadows in one latitude-longitude map, the spherical "
                      "parameterisation the omni-light lecture slides list beside the cube and "

@@ -6,10 +6,12 @@
 // the cube's and the dual paraboloid's; memory exact, point and spot.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "GlTestEnv.h"
 #include "algo/omni/LatLongMapping.h"
 #include "algo/omni/OmniMapping.h"
+#include "common/shared_constants.h"
 #include "gl/Gl.h"
 
 namespace sl {
@@ -216,6 +218,122 @@ TEST(Spherical, AtEqualMemoryErrorIsComparableToCubeAndParaboloid) {
       "%.3f %%, spherical %.3f %%\n",
       mean[0], mean[1], mean[2]);
   EXPECT_LT(mean[2], 1.5 * std::min(mean[0], mean[1]));
+}
+
+/// An 8 m floor (y = 0) under a point light at (0, 1, 0) and one roof polygon at y = 0.5
+/// (a fan over `roofXz`, x and z in metres): its shadow on the floor is the polygon doubled
+/// about the point under the light (the south pole with sph.axis y).
+std::shared_ptr<Scene> floorWithRoof(const std::vector<glm::vec2>& roofXz) {
+  auto s = std::make_shared<Scene>();
+  s->name = "floor-with-roof";
+  Material dark;
+  dark.baseColorFactor = {0.25f, 0.25f, 0.25f, 1.0f};
+  s->materials.push_back(dark);
+  MeshPrimitive floor;
+  floor.positions = {{-4, 0, -4}, {4, 0, -4}, {4, 0, 4}, {-4, 0, 4}};
+  floor.normals.assign(4, glm::vec3(0, 1, 0));
+  floor.indices = {0, 2, 1, 0, 3, 2};
+  floor.material = 0;
+  s->primitives.push_back(floor);
+  MeshPrimitive roof;
+  for (const glm::vec2& p : roofXz) roof.positions.push_back({p.x, 0.5f, p.y});
+  roof.normals.assign(roofXz.size(), glm::vec3(0, 1, 0));
+  for (std::uint32_t i = 1; i + 1 < roofXz.size(); ++i)
+    roof.indices.insert(roof.indices.end(), {0, i, i + 1});
+  roof.material = 0;
+  s->primitives.push_back(roof);
+  s->bounds.min = {-4.0f, 0.0f, -4.0f};
+  s->bounds.max = {4.0f, 0.5f, 4.0f};
+  return s;
+}
+
+TEST(Spherical, PcfReachesAcrossTheSeamAndOverThePole) {
+  // 64-high map, pole axis y: the seam is the floor's half-line z = 0, x < 0 (longitude
+  // 180°: the last column, then column 0), the south pole the point under the light.
+  // Seam: a roof wedge between longitudes 180° - 0.5 rad and 180° - 1 texel (its edges are
+  // meridians: they project onto themselves) shadows column W - 2 and beyond; floor pixels
+  // in column 0 within 0.45 texel of the seam are lit under a hard lookup, and PCF radius 2
+  // must darken them (5 of 25 taps wrap to column W - 2; clamped taps would all be lit).
+  // Pole: a roof over x > 0.005 m shadows the bottom rows' texels on the x > 0 side; floor
+  // pixels in row 0 (r < 0.045 m) on the x < 0 side (x < -0.3 r) are lit hard, and PCF's
+  // taps beyond row 0 land half way round (rows 0 and 1 at the opposite longitude), in that
+  // shadow. Away from any shadow (3 texels and more) PCF equals the hard lookup exactly (no
+  // acne from the wrapped taps).
+  const double dLon = M_PI / 64.0;
+  auto lonXz = [](double lon, double r) {  // frame x = +x, y = -z: longitude atan2(-z, x)
+    return glm::vec2(float(r * std::cos(lon)), float(-r * std::sin(lon)));
+  };
+  struct Case {
+    const char* name;
+    std::vector<glm::vec2> roof;
+    glm::vec3 look;
+    std::function<bool(const glm::vec4&)> nearSeam, farFromShadow;
+  };
+  const std::vector<Case> cases = {
+      {"seam",
+       {lonXz(M_PI - 0.5, 0.3), lonXz(M_PI - 0.5, 1.5), lonXz(M_PI - dLon, 1.5),
+        lonXz(M_PI - dLon, 0.3)},
+       {-1.0f, 0.0f, 0.05f},
+       [&](const glm::vec4& P) {
+         const double lon = std::atan2(-double(P.z), double(P.x)), r = std::hypot(P.x, P.z);
+         return lon < -M_PI + 0.45 * dLon && r > 0.9 && r < 1.1;
+       },
+       [&](const glm::vec4& P) {
+         const double lon = std::atan2(-double(P.z), double(P.x));
+         return lon > -M_PI + 3.0 * dLon && lon < -M_PI / 2.0;
+       }},
+      {"pole",
+       {{0.005f, -1.0f}, {2.0f, -1.0f}, {2.0f, 1.0f}, {0.005f, 1.0f}},
+       {-0.08f, 0.0f, 0.0f},
+       [](const glm::vec4& P) {
+         const float r = std::hypot(P.x, P.z);
+         return r < 0.045f && P.x < -0.3f * r && P.x < -0.003f;
+       },
+       [](const glm::vec4& P) { return P.x < -0.16f; }},
+  };
+  test::eglContext().makeCurrent();
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    Renderer r;
+    r.setScene(floorWithRoof(c.roof));
+    ASSERT_FALSE(r.setTechnique("spherical"));
+    r.setLight(Light::point({0.0f, 1.0f, 0.0f}));
+    ASSERT_FALSE(r.params().set("resolution", 64));
+    Camera cam;  // under the roof, straight down
+    cam.position = c.look + glm::vec3(0.0f, 0.4f, 0.0f);
+    cam.target = c.look;
+    cam.up = {1.0f, 0.0f, 0.0f};
+    cam.fovYDeg = 40.0f;
+    cam.nearM = 0.01f;
+    cam.farM = 5.0f;
+    r.setCamera(cam);
+    auto render = [&](int pcf) {
+      EXPECT_FALSE(r.params().set("pcf", pcf));
+      EXPECT_FALSE(r.renderFrame(256, 256, 0));
+      return r.readback();
+    };
+    const FrameReadback hard = render(0), soft = render(2);
+    auto grey = [&](const FrameReadback& f, std::size_t i) {
+      return int(f.color.pixels[i * 4 + 1]);
+    };
+    int darkened = 0, litCompared = 0;
+    for (std::size_t i = 0; i < soft.positions.size(); ++i) {
+      const glm::vec4 P = soft.positions[i];
+      if (P.w <= 0.0f || P.y > 0.01f) continue;  // the floor only
+      if (c.farFromShadow(P)) {
+        EXPECT_EQ(grey(soft, i), grey(hard, i)) << "P " << P.x << ", " << P.z;
+        ++litCompared;
+      }
+      if (c.nearSeam(P) && hard.hardMask[i] == SL_MASK_LIT) {
+        EXPECT_LT(grey(soft, i), grey(hard, i) - 4) << "P " << P.x << ", " << P.z;
+        ++darkened;
+      }
+    }
+    std::printf("[ spherical ] pcf %s: %d darkened, %d compared\n", c.name, darkened, litCompared);
+    EXPECT_GT(litCompared, 500);
+    EXPECT_GT(darkened, 20);
+    test::expectNoGlErrors(r);
+  }
 }
 
 TEST(Spherical, MemoryIsExactForPointAndSpot) {

@@ -10,6 +10,7 @@
 #include "techniques/perspective/PerspectiveShadowMap.h"
 #include "techniques/rmsm/RmsmShadowMap.h"
 #include "techniques/rtw/RtwShadowMap.h"
+#include "techniques/spherical/SphericalShadowMap.h"
 #include "techniques/uniform/UniformShadowMap.h"
 #include "techniques/virtual-tiled/VirtualTiledShadowMap.h"
 
@@ -53,6 +54,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       entry<FacePartitionShadowMap>(),
       entry<CubeShadowMap>(),
       entry<DualParaboloidShadowMap>(),
+      entry<SphericalShadowMap>(),
       entry<RmsmShadowMap>(),
       entry<AsmShadowMap>(),
       entry<VirtualTiledShadowMap>(),

@@ -103,7 +103,8 @@ TEST_P(OmniGridOverlay, LinesFollowTheSelectedMapsUv) {
       "seam quads (%zu changed)\n",
       GetParam().technique, far, farChanged, on, onChanged, seamQuads, seamChanged);
   // 4 bookmarks of 256x192 (measured: cube 94445 off / 33885 on the lines, 4489 of 4532 seam
-  // quads changed; paraboloid 132613 / 19084, 1102 of 1148).
+  // quads changed; paraboloid 132613 / 19084, 1102 of 1148; lat-long 132531 / 19933, 2739 of
+  // 2764).
   EXPECT_GT(far, 50000u);
   EXPECT_EQ(farChanged, 0u) << "no grid line there, but the overlay changed it: " << firstWrong;
   EXPECT_GT(on, 10000u);
@@ -115,11 +116,13 @@ TEST_P(OmniGridOverlay, LinesFollowTheSelectedMapsUv) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Omni, OmniGridOverlay,
-                         ::testing::Values(GridCase{"cube", 512},
-                                           GridCase{"dual-paraboloid", 1024}),
+                         ::testing::Values(GridCase{"cube", 512}, GridCase{"dual-paraboloid", 1024},
+                                           GridCase{"spherical", 1024}),
                          [](const auto& p) {
-                           return std::string(p.param.technique) == "cube" ? "Cube"
-                                                                           : "DualParaboloid";
+                           const std::string id = p.param.technique;
+                           return id == "cube"        ? "Cube"
+                                  : id == "spherical" ? "Spherical"
+                                                      : "DualParaboloid";
                          });
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "panels/perspective/PerspectivePanels.h"
 #include "panels/partition/PartitionPanels.h"
 #include "panels/rtw/RtwPanels.h"
+#include "panels/spherical/SphericalPanels.h"
 
 namespace sl::ui {
 
@@ -20,6 +21,7 @@ const std::vector<PanelEntry>& publicationPanels() {
              perspectivePanels(),
              partitionPanels(),
              omniPanels(),
+             sphericalPanels(),
              pagesPanels(),
              fvsmPanels(),
          })

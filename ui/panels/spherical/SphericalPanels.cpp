@@ -1,0 +1,18 @@
+// The spherical panel family's entries for the registry (ui/panels/PanelRegistry.cpp).
+#include "panels/spherical/SphericalPanels.h"
+
+#include <QCoreApplication>
+
+#include "panels/spherical/SphericalMapPanel.h"
+
+namespace sl::ui {
+
+std::vector<PanelEntry> sphericalPanels() {
+  return {
+      {QStringLiteral("spherical"),
+       QCoreApplication::translate("sl::ui::MainWindow", "Spherical map"), Qt::BottomDockWidgetArea,
+       [] { return new SphericalMapPanel; }},
+  };
+}
+
+}  // namespace sl::ui

@@ -196,6 +196,21 @@ TechniqueInfo FittedVirtualShadowMap::info() {
                "along a diagonal of the map, which the box undersamples). Both keep the sign of "
                "the depth step the footprint is built from.",
        .uniform = "u_footprint"},
+      {.key = "fvsm.warp",
+       .label = "Virtual map warp",
+       .group = "FVSM",
+       .type = ParamType::Enum,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"none", "lispsm"},
+       .help = "The virtual map the tiles cut: the focused light frustum, unwarped (none, the "
+               "tool's default), or warped by LiSPSM (Wimmer et al. 2004; n' = n + sqrt(f n), "
+               "fitted around view frustum ∩ scene as `lispsm` fits it), which every result of "
+               "Giegl & Wimmer uses. Each tile is the warped frustum cropped to its uv "
+               "rectangle; the SMTMM's positions and needs are in the warped map. When LiSPSM "
+               "falls back (the light nearly along the view), the map is the unwarped one."},
       {.key = "fvsm.fallback.resolution",
        .label = "Fallback map",
        .group = "FVSM",
@@ -214,8 +229,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
       "looks and how many texels it needs per axis; on the CPU, a tile grid with outlier "
       "rejection, its max pyramid and a kd-tree traversal choose tiles that each fit the "
       "max texture size; each is rendered at its need and applied only inside its screen "
-      "rectangle. The virtual map is the focused, unwarped light frustum (the paper's results "
-      "all warp it with LiSPSM).",
+      "rectangle. The virtual map is the focused light frustum, unwarped by default or warped "
+      "by LiSPSM (fvsm.warp), as in all the paper's results.",
       std::move(params)};
   info.passes = {
       EyeDepthBuffer::passDecl(),
@@ -261,6 +276,9 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        "their 1/256 columns)",
        "0 B (read back for the grid anyway)", [](const ParamSet&) { return std::uint64_t(0); }},
       number("fvsm.tiles", "kd-tree leaves rendered this frame"),
+      number("fvsm.warped",
+             "1 when the virtual map is LiSPSM-warped this frame (fvsm.warp = "
+             "lispsm and no fallback), else 0"),
       number("fvsm.tiles.unmet", "leaves whose need exceeded the max texture at the finest level"),
       number("fvsm.need_log2.u", "log2 texels the whole map needs along u (after ξ, outliers)"),
       number("fvsm.need_log2.v", "log2 texels the whole map needs along v (after ξ, outliers)"),
@@ -345,7 +363,8 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
                                        ctx.light.directionalTowards(), FocusSettings{}, fit)) {
       throw std::runtime_error(*err);
     }
-    full_ = depthMapView(fit);
+    full_ = focusedMapView(ctx, fit, p.getInt("fvsm.warp") == 1);
+    publishNumber(ctx, "fvsm.warped", full_.perspective ? 1.0 : 0.0);
     ctx.addOutline(full_.lightViewProj, OutlineRole::LightMap);
     const int divisor = p.getInt("fvsm.smtmm.divisor");
     frameSize_ = {ctx.width, ctx.height};

@@ -48,7 +48,7 @@ void expectSmtmmMatchesTheCpuReference(fvsm::FootprintMeasure measure, float rol
     rolled.up = std::cos(a) * up + std::sin(a) * right;
     r->setCamera(rolled);
   }
-  r->requestPublications({"fvsm.smtmm"});
+  r->requestPublications({"fvsm.smtmm", "fvsm.warped"});
   const int w = 160, h = 120;
   ASSERT_FALSE(r->renderFrame(w, h, 0));
   const FrameReadback rb = r->readback();

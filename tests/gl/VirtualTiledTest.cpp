@@ -79,6 +79,7 @@ TEST(VirtualTiled, LispsmTilesMatchLispsmAtTheSameVirtualResolution) {
   auto lispsm = test::makeRenderer("plane-box", "lispsm");
   ASSERT_TRUE(lispsm);
   EXPECT_FALSE(lispsm->params().set("resolution", 512));
+  lispsm->requestPublications({"warp.fallback"});
   ASSERT_FALSE(lispsm->renderFrame(160, 120, 0));
   ASSERT_EQ(lispsm->publication().numbers.at("warp.fallback"), 0.0) << "the warp is used";
   const FrameReadback warped = lispsm->readback();

@@ -76,8 +76,9 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .help = "Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture "
                "(t_max²), of the smallest square of a power-of-two series (< 4/3 t_max², the "
                "paper's recommendation and the default), or a texture of exactly its size (the "
-               "paper counts 8/3 t_max² for these; the tool allocates each w x h the frame "
-               "uses, up to (2 t_max − 16)²)."},
+               "paper sums 2 · 4/3 t_max² for these, counting per level the square and the two "
+               "half-size rectangles only; the tool allocates each w x h the frame uses, up to "
+               "(2 t_max − 16)²)."},
       {.key = "fvsm.overlap",
        .label = "Tile overlap",
        .group = "FVSM",

@@ -215,6 +215,67 @@ TEST(Fvsm, TheFourByteEntryIsThePackedFloatEntry) {
   EXPECT_EQ(bytes.hardMask, floats.hardMask);
 }
 
+// §3.1's multi-pass shadowing (fvsm.apply = multi-pass) against deferred shadowing on the same
+// frame: the scene rasterised per leaf with depth EQUAL gives the positions the G-buffer
+// holds, not rebuilt ones, so the hard masks agree but for pixels on a shadow edge where the
+// two positions' float rounding parts; the same pixels are covered, each leaf's pixels are its
+// own (the map index), and memory() adds the pre-pass's depth, 4 bytes a pixel. Unwarped and
+// LiSPSM-warped.
+TEST(Fvsm, MultiPassShadowsAsDeferredShadowing) {
+  for (const double warp : {0.0, 1.0}) {
+    SCOPED_TRACE(warp);
+    struct Run {
+      FrameReadback frame;
+      double error = 0.0;
+      std::uint64_t passDepthBytes = 0;
+      double tiles = 0.0;
+    };
+    const auto run = [&](double apply) {
+      Run out;
+      auto r = fvsmRenderer({{"fvsm.max_texture", 256},
+                             {"fvsm.fallback.resolution", 64},
+                             {"fvsm.xi", 0},
+                             {"fvsm.warp", warp},
+                             {"fvsm.apply", apply}});
+      EXPECT_TRUE(r);
+      if (!r) return out;
+      r->requestPublications({"fvsm.tiles"});
+      EXPECT_FALSE(r->renderFrame(160, 120, 0));
+      out.frame = r->readback();
+      out.error = r->computeError().stats.errorPct;
+      out.tiles = r->publication().numbers.at("fvsm.tiles");
+      for (const ResourceInfo& res : r->stats().memory.resources)
+        if (res.name == "multi-pass depth") out.passDepthBytes = res.bytes;
+      test::expectNoGlErrors(*r);
+      return out;
+    };
+    const Run deferred = run(0.0), multi = run(1.0);
+    ASSERT_EQ(deferred.frame.hardMask.size(), multi.frame.hardMask.size());
+    std::size_t covered = 0, differ = 0, sameMap = 0;
+    for (std::size_t i = 0; i < deferred.frame.hardMask.size(); ++i) {
+      ASSERT_EQ(deferred.frame.hardMask[i] == SL_MASK_EMPTY,
+                multi.frame.hardMask[i] == SL_MASK_EMPTY)
+          << "pixel " << i;
+      if (deferred.frame.hardMask[i] == SL_MASK_EMPTY) continue;
+      ++covered;
+      if (deferred.frame.hardMask[i] != multi.frame.hardMask[i]) ++differ;
+      if (deferred.frame.mapIndex[i] == multi.frame.mapIndex[i]) ++sameMap;
+    }
+    std::printf(
+        "multi-pass (%s, %g leaves): %zu of %zu covered pixels differ from deferred, %zu "
+        "with the same leaf; error %.4f %% against %.4f %%\n",
+        warp > 0.0 ? "LiSPSM" : "unwarped", multi.tiles, differ, covered, sameMap, multi.error,
+        deferred.error);
+    EXPECT_GT(covered, 5000u);
+    EXPECT_GT(multi.tiles, 1.0) << "several leaves, several passes";
+    EXPECT_LE(double(differ), 0.002 * double(covered));
+    EXPECT_GE(double(sameMap), 0.99 * double(covered));
+    EXPECT_NEAR(multi.error, deferred.error, 0.05);
+    EXPECT_EQ(deferred.passDepthBytes, 0u);
+    EXPECT_EQ(multi.passDepthBytes, 4u * 160u * 120u);
+  }
+}
+
 double errorOf(const std::string& technique, const Sets& sets) {
   auto r = test::makeRenderer("plane-box", technique);
   if (!r) return -1.0;

@@ -3,8 +3,11 @@
 // (shaders/fvsm/smtmm.comp), read back; the tile grid, its max pyramid and the
 // kd-tree traversal on the CPU with the reference itself (algo/fvsm); then every kd leaf is
 // rendered at the resolution it needs and applied by deferred shadowing inside its screen
-// rectangle (shaders/virtual-tiled/apply_tile.comp, shared with `virtual-tiled`). Pixels no
-// leaf reached (the SMTMM samples one pixel per block) get a fallback map over the whole fit.
+// rectangle (shaders/virtual-tiled/apply_tile.comp, shared with `virtual-tiled`), or by
+// multi-pass shadowing (§3.1, fvsm.apply; shaders/fvsm/multipass.frag). Pixels no leaf
+// reached (the SMTMM samples one pixel per block) get a fallback map over the whole fit. The
+// virtual map is the focused orthographic fit or its LiSPSM warp (fvsm.warp), the leaves its
+// crops (core/ShadowPass focusedMapView, subRectView).
 #pragma once
 
 #include <map>

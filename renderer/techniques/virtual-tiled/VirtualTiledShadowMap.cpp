@@ -1,6 +1,6 @@
 // Brute-force virtual tiled shadow map (VirtualTiledShadowMap.h): n x n tiles of one
-// focused orthographic frustum, each rendered into one reused texture and applied by a
-// deferred compute pass before the next.
+// focused frustum (orthographic or LiSPSM-warped), each rendered into one reused texture and
+// applied by a deferred compute pass before the next.
 #include "VirtualTiledShadowMap.h"
 
 #include <algorithm>

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "algo/warp/PerspectiveWarp.h"
 #include "common/shared_constants.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
@@ -65,18 +66,22 @@ void renderDepth(const SceneGpu& scene, const DepthProgram& program, GLuint fram
 }
 
 DepthMapView subRectView(const DepthMapView& full, glm::dvec2 uvMin, glm::dvec2 uvMax) {
-  // uv' = (uv − uvMin) / size with uv = (clip + 1) / 2: clip' = clip / size + (1 − 2 uvMin) /
-  // size − 1 (times w for the shift).
-  const glm::dvec2 size = uvMax - uvMin;
-  glm::mat4 s(1.0f);
-  s[0][0] = float(1.0 / size.x);
-  s[1][1] = float(1.0 / size.y);
-  s[3][0] = float((1.0 - 2.0 * uvMin.x) / size.x - 1.0);
-  s[3][1] = float((1.0 - 2.0 * uvMin.y) / size.y - 1.0);
   DepthMapView v = full;
-  v.lightViewProj = s * full.lightViewProj;
-  v.extentM = full.extentM * glm::vec2(size);
+  v.lightViewProj = glm::mat4(warp::uvRectCrop(uvMin, uvMax)) * full.lightViewProj;
+  v.extentM = full.extentM * glm::vec2(uvMax - uvMin);
   return v;
+}
+
+DepthMapView focusedMapView(const FrameContext& ctx, const LightFit& fit, bool lispsm) {
+  if (!lispsm) return depthMapView(fit);
+  warp::WarpSettings settings;
+  settings.kind = warp::WarpKind::Lispsm;
+  warp::WarpFit warpFit;
+  if (auto err =
+          warp::fitFocusedWarp(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                               glm::dvec3(ctx.light.directionalTowards()), settings, warpFit))
+    throw std::runtime_error(*err);
+  return warpFit.warped() ? depthMapView(warpFit.mapFrame()) : depthMapView(fit);
 }
 
 float DepthMapView::depthPerMAtUnitW() const {

@@ -83,13 +83,20 @@ struct DepthMapView {
 /// The view of one map covering this frame's fit.
 DepthMapView depthMapView(const LightFit& fit);
 /// The map covering only light uv [uvMin, uvMax] of `full` (a tile of a virtual map; uv
-/// may leave [0, 1] for an overlap): clip' = s clip with s scaling and shifting x and y, so
-/// it holds for orthographic and perspective matrices (the shift is times w); the same
-/// depth, extentM times the rectangle's size.
+/// may leave [0, 1] for an overlap): clip' = s clip with s = warp::uvRectCrop (scaling and
+/// shifting x and y, the shift times w, so it holds for orthographic and perspective
+/// matrices: a LiSPSM-warped map's tiles); the same depth, extentM times the rectangle's
+/// size.
 DepthMapView subRectView(const DepthMapView& full, glm::dvec2 uvMin, glm::dvec2 uvMax);
 /// The view of a map rendered through a light-space warp (sl::DepthMapFrame: PSM, LiSPSM,
 /// TSM, warped cascades): perspective, its own w powers and depth per metre.
 DepthMapView depthMapView(const DepthMapFrame& frame);
+/// A directional light's focused map: `fit` itself (orthographic), or with `lispsm` the
+/// LiSPSM warp around view frustum ∩ scene (algo/warp fitFocusedWarp: what `lispsm` renders,
+/// n' = n'_LiSPSM) — the virtual map of fvsm and virtual-tiled with their warp = lispsm
+/// (Giegl & Wimmer 2007 use it in all their results). Where LiSPSM falls back to uniform
+/// (the light nearly along the view), `fit`. Throws std::runtime_error with the fit's error.
+DepthMapView focusedMapView(const FrameContext& ctx, const LightFit& fit, bool lispsm);
 /// Sets the per-map uniforms of common/depth_map_test.glsl (u_map*[i] for map i). The
 /// maps' textures and the shared parameters (bias.*, pcf: bindParams) are bound elsewhere.
 /// Throws std::logic_error for more than SL_MAX_DEPTH_MAPS maps.

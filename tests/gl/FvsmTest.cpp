@@ -9,6 +9,7 @@
 #include "GlTestEnv.h"
 #include "algo/Focus.h"
 #include "algo/fvsm/Fvsm.h"
+#include "algo/warp/PerspectiveWarp.h"
 #include "gl/Gl.h"
 
 namespace sl {
@@ -30,11 +31,13 @@ std::unique_ptr<Renderer> fvsmRenderer(const Sets& sets) {
 // view axis (its up towards its right) so that the ground's depth, which rises up the
 // screen at 0°, falls along +x at 90°, rises along +x at −90° and falls along the diagonal
 // at 135°; `depthAlongX` is the sign the mean depth step along +x must have (0: any).
+// `lispsm`: the virtual map warped by LiSPSM (fvsm.warp), the CPU's fit warp::fitFocusedWarp.
 void expectSmtmmMatchesTheCpuReference(fvsm::FootprintMeasure measure, float rollDeg = 0.0f,
-                                       int depthAlongX = 0) {
+                                       int depthAlongX = 0, bool lispsm = false) {
   auto r = fvsmRenderer({{"fvsm.max_texture", 256},
                          {"fvsm.fallback.resolution", 64},
-                         {"fvsm.need.footprint", double(int(measure))}});
+                         {"fvsm.need.footprint", double(int(measure))},
+                         {"fvsm.warp", lispsm ? 1.0 : 0.0}});
   ASSERT_TRUE(r);
   if (rollDeg != 0.0f) {
     Camera rolled = r->camera();
@@ -45,7 +48,7 @@ void expectSmtmmMatchesTheCpuReference(fvsm::FootprintMeasure measure, float rol
     rolled.up = std::cos(a) * up + std::sin(a) * right;
     r->setCamera(rolled);
   }
-  r->requestPublications({"fvsm.smtmm"});
+  r->requestPublications({"fvsm.smtmm", "fvsm.warped"});
   const int w = 160, h = 120;
   ASSERT_FALSE(r->renderFrame(w, h, 0));
   const FrameReadback rb = r->readback();
@@ -88,7 +91,21 @@ void expectSmtmmMatchesTheCpuReference(fvsm::FootprintMeasure measure, float rol
   glm::dmat4 uvFromClip(1.0);
   uvFromClip[0][0] = uvFromClip[1][1] = 0.5;
   uvFromClip[3][0] = uvFromClip[3][1] = 0.5;
-  const glm::dmat4 eyeToSmUv = uvFromClip * glm::dmat4(fit.viewProj) * glm::inverse(view);
+  glm::mat4 lightViewProj = fit.viewProj;
+  if (lispsm) {
+    warp::WarpSettings settings;
+    settings.kind = warp::WarpKind::Lispsm;
+    warp::WarpFit warpFit;
+    ASSERT_FALSE(warp::fitFocusedWarp(cam, aspect, r->scene()->bounds,
+                                      glm::dvec3(r->light().directionalTowards()), settings,
+                                      warpFit));
+    ASSERT_TRUE(warpFit.warped()) << warpFit.fallbackReason;
+    EXPECT_EQ(r->publication().numbers.at("fvsm.warped"), 1.0);
+    lightViewProj = warpFit.mapFrame().viewProj;
+  } else {
+    EXPECT_EQ(r->publication().numbers.at("fvsm.warped"), 0.0);
+  }
+  const glm::dmat4 eyeToSmUv = uvFromClip * glm::dmat4(lightViewProj) * glm::inverse(view);
   const auto cpu = fvsm::buildSmtmm(ev, {40, 30}, eyeToSmUv, measure);
 
   std::size_t covered = 0, equal = 0;
@@ -104,9 +121,10 @@ void expectSmtmmMatchesTheCpuReference(fvsm::FootprintMeasure measure, float rol
     if (int(g[2]) == cpu[i].needLog2.x && int(g[3]) == cpu[i].needLog2.y) ++equal;
   }
   std::printf(
-      "SMTMM parity (%s, camera rolled %g deg): %zu covered entries, %zu with equal "
+      "SMTMM parity (%s, %s, camera rolled %g deg): %zu covered entries, %zu with equal "
       "needs\n",
-      fvsm::footprintMeasureName(measure), double(rollDeg), covered, equal);
+      fvsm::footprintMeasureName(measure), lispsm ? "LiSPSM" : "unwarped", double(rollDeg), covered,
+      equal);
   EXPECT_GT(covered, 600u);
   EXPECT_GE(double(equal), 0.98 * double(covered));
   test::expectNoGlErrors(*r);
@@ -118,6 +136,17 @@ TEST(Fvsm, SmtmmMatchesTheCpuReferenceBox) {
 
 TEST(Fvsm, SmtmmMatchesTheCpuReferenceChord) {
   expectSmtmmMatchesTheCpuReference(fvsm::FootprintMeasure::Chord);
+}
+
+// The LiSPSM-warped virtual map (fvsm.warp = lispsm, as the paper's results): the GPU's
+// SMTMM in the warped map against the CPU reference through the same focused warp.
+TEST(Fvsm, SmtmmMatchesTheCpuReferenceInTheLispsmMap) {
+  for (const fvsm::FootprintMeasure m :
+       {fvsm::FootprintMeasure::Box, fvsm::FootprintMeasure::Chord}) {
+    SCOPED_TRACE(fvsm::footprintMeasureName(m));
+    expectSmtmmMatchesTheCpuReference(m, 0.0f, 0, true);
+    expectSmtmmMatchesTheCpuReference(m, 90.0f, -1, true);
+  }
 }
 
 // The footprint keeps the depth slope's sign on the GPU as on the CPU: the ground with its
@@ -184,6 +213,67 @@ TEST(Fvsm, TheFourByteEntryIsThePackedFloatEntry) {
   EXPECT_GT(covered, 600);
   EXPECT_EQ(bytes.leaves, floats.leaves);
   EXPECT_EQ(bytes.hardMask, floats.hardMask);
+}
+
+// §3.1's multi-pass shadowing (fvsm.apply = multi-pass) against deferred shadowing on the same
+// frame: the scene rasterised per leaf with depth EQUAL gives the positions the G-buffer
+// holds, not rebuilt ones, so the hard masks agree but for pixels on a shadow edge where the
+// two positions' float rounding parts; the same pixels are covered, each leaf's pixels are its
+// own (the map index), and memory() adds the pre-pass's depth, 4 bytes a pixel. Unwarped and
+// LiSPSM-warped.
+TEST(Fvsm, MultiPassShadowsAsDeferredShadowing) {
+  for (const double warp : {0.0, 1.0}) {
+    SCOPED_TRACE(warp);
+    struct Run {
+      FrameReadback frame;
+      double error = 0.0;
+      std::uint64_t passDepthBytes = 0;
+      double tiles = 0.0;
+    };
+    const auto run = [&](double apply) {
+      Run out;
+      auto r = fvsmRenderer({{"fvsm.max_texture", 256},
+                             {"fvsm.fallback.resolution", 64},
+                             {"fvsm.xi", 0},
+                             {"fvsm.warp", warp},
+                             {"fvsm.apply", apply}});
+      EXPECT_TRUE(r);
+      if (!r) return out;
+      r->requestPublications({"fvsm.tiles"});
+      EXPECT_FALSE(r->renderFrame(160, 120, 0));
+      out.frame = r->readback();
+      out.error = r->computeError().stats.errorPct;
+      out.tiles = r->publication().numbers.at("fvsm.tiles");
+      for (const ResourceInfo& res : r->stats().memory.resources)
+        if (res.name == "multi-pass depth") out.passDepthBytes = res.bytes;
+      test::expectNoGlErrors(*r);
+      return out;
+    };
+    const Run deferred = run(0.0), multi = run(1.0);
+    ASSERT_EQ(deferred.frame.hardMask.size(), multi.frame.hardMask.size());
+    std::size_t covered = 0, differ = 0, sameMap = 0;
+    for (std::size_t i = 0; i < deferred.frame.hardMask.size(); ++i) {
+      ASSERT_EQ(deferred.frame.hardMask[i] == SL_MASK_EMPTY,
+                multi.frame.hardMask[i] == SL_MASK_EMPTY)
+          << "pixel " << i;
+      if (deferred.frame.hardMask[i] == SL_MASK_EMPTY) continue;
+      ++covered;
+      if (deferred.frame.hardMask[i] != multi.frame.hardMask[i]) ++differ;
+      if (deferred.frame.mapIndex[i] == multi.frame.mapIndex[i]) ++sameMap;
+    }
+    std::printf(
+        "multi-pass (%s, %g leaves): %zu of %zu covered pixels differ from deferred, %zu "
+        "with the same leaf; error %.4f %% against %.4f %%\n",
+        warp > 0.0 ? "LiSPSM" : "unwarped", multi.tiles, differ, covered, sameMap, multi.error,
+        deferred.error);
+    EXPECT_GT(covered, 5000u);
+    EXPECT_GT(multi.tiles, 1.0) << "several leaves, several passes";
+    EXPECT_LE(double(differ), 0.002 * double(covered));
+    EXPECT_GE(double(sameMap), 0.99 * double(covered));
+    EXPECT_NEAR(multi.error, deferred.error, 0.05);
+    EXPECT_EQ(deferred.passDepthBytes, 0u);
+    EXPECT_EQ(multi.passDepthBytes, 4u * 160u * 120u);
+  }
 }
 
 double errorOf(const std::string& technique, const Sets& sets) {

@@ -72,6 +72,46 @@ TEST(VirtualTiled, MatchesUniformAtTheSameVirtualResolution) {
   EXPECT_GT(maps.size(), 3u) << "the map index is the tile";
 }
 
+// With tile.warp = lispsm the 4 x 4 tiles of 128² are the LiSPSM 512² map of `lispsm` cut
+// in 16: each tile the warp's frustum cropped to its uv square (warp::uvRectCrop), so the hard
+// masks agree but for the few pixels whose normal offset crosses a tile edge, as unwarped.
+TEST(VirtualTiled, LispsmTilesMatchLispsmAtTheSameVirtualResolution) {
+  auto lispsm = test::makeRenderer("plane-box", "lispsm");
+  ASSERT_TRUE(lispsm);
+  EXPECT_FALSE(lispsm->params().set("resolution", 512));
+  lispsm->requestPublications({"warp.fallback"});
+  ASSERT_FALSE(lispsm->renderFrame(160, 120, 0));
+  ASSERT_EQ(lispsm->publication().numbers.at("warp.fallback"), 0.0) << "the warp is used";
+  const FrameReadback warped = lispsm->readback();
+  const double warpedError = lispsm->computeError().stats.errorPct;
+  const Rendered tiled =
+      render("virtual-tiled", {{"tiles", 4}, {"tile.resolution", 128}, {"tile.warp", 1}});
+  const Rendered unwarped = render("virtual-tiled", {{"tiles", 4}, {"tile.resolution", 128}});
+  ASSERT_EQ(tiled.frame.hardMask.size(), warped.hardMask.size());
+  std::size_t covered = 0, differ = 0, differUnwarped = 0, mPixels = 0, mClose = 0;
+  for (std::size_t i = 0; i < warped.hardMask.size(); ++i) {
+    if (warped.hardMask[i] == SL_MASK_EMPTY) continue;
+    ++covered;
+    if (tiled.frame.hardMask[i] != warped.hardMask[i]) ++differ;
+    if (unwarped.frame.hardMask[i] != warped.hardMask[i]) ++differUnwarped;
+    if (warped.aliasing[i] > 0.0f && tiled.frame.aliasing[i] > 0.0f) {
+      ++mPixels;
+      if (std::abs(tiled.frame.aliasing[i] / warped.aliasing[i] - 1.0f) <= 0.05f) ++mClose;
+    }
+  }
+  std::printf(
+      "plane-box 160x120: virtual-tiled 4x4x128^2 LiSPSM %.3f %% (unwarped %.3f %%), lispsm "
+      "512^2 %.3f %%; %zu of %zu pixels differ from lispsm (unwarped tiles: %zu); m within 5 "
+      "%%: %zu of %zu\n",
+      tiled.errorPct, unwarped.errorPct, warpedError, differ, covered, differUnwarped, mClose,
+      mPixels);
+  EXPECT_GT(covered, 5000u);
+  EXPECT_LE(double(differ), 0.005 * double(covered));
+  EXPECT_LT(differ, differUnwarped) << "the warp is what makes the tiles lispsm's";
+  EXPECT_GE(double(mClose), 0.99 * double(mPixels));
+  EXPECT_NEAR(tiled.errorPct, warpedError, 0.25);
+}
+
 // memory() lists the one tile texture (tile.resolution² depths, whatever the tile count) and
 // the eye-space depth buffer (one float per pixel).
 TEST(VirtualTiled, MemoryIsOneTile) {

@@ -277,12 +277,14 @@ TileTexture tileTexture(TextureMode mode, glm::ivec2 textureLog2, int maxTexture
                         int borderTexels);
 
 /// Texels of every texture a mode can need (border b = 0): SubRect t_max² and PowerOfTwo the
-/// series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max²) — the paper's bounds (§4.10);
-/// ExactSize every w x h with both sides powers of two in [2^min, t_max], each its own
+/// series from t_max² down to (2^minTextureLog2)² (< 4/3 t_max², the sum the paper derives,
+/// §4.10); ExactSize every w x h with both sides powers of two in [2^min, t_max], each its own
 /// texture ((2 t_max − 2^min)², about 4 t_max²: the tool's bound of allocating every shape; a
-/// frame allocates only the shapes it uses). The paper's bound for exact sizes is 8/3 t_max²
-/// (its series counts t_max² and the two half-size rectangles per level) and its results
-/// call it 4/3 of the other two; neither is this function's. A border
+/// frame allocates only the shapes it uses). The paper's sum for exact sizes, 2 · 4/3 t_max²,
+/// counts per level only the square and the two rectangles halved along one axis, not the
+/// thinner shapes the traversal can ask for (t_max x t_max/4, …), so it is no bound; its
+/// results call the third mode's memory 4/3 of the other two's, which its sums do not give.
+/// Neither is this function's. A border
 /// adds 2b to every side: (t_max + 2b)², sum of (2^k + 2b)², (2 t_max − 2^min + 2b L)² for L
 /// sizes.
 std::uint64_t textureModeBoundTexels(TextureMode mode, int maxTextureLog2, int minTextureLog2,

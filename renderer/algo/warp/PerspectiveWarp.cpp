@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "algo/Focus.h"
+
 namespace sl::warp {
 
 namespace {
@@ -336,6 +338,40 @@ std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm:
   fit.lightProj = glm::mat4(proj);
   out = std::move(fit);
   return std::nullopt;
+}
+
+FocusedBody focusedBody(const Camera& camera, double aspect, const Aabb& sceneBounds) {
+  FocusedBody f;
+  const std::vector<glm::vec3> inside = intersectFrustumWithBox(
+      camera.frustumCorners(float(aspect), camera.nearM, camera.farM), sceneBounds);
+  const auto box = sceneBounds.corners();
+  if (inside.empty())
+    f.body.assign(box.begin(), box.end());
+  else
+    f.body.assign(inside.begin(), inside.end());
+  f.depthOnly.assign(box.begin(), box.end());
+  f.view = ViewFrustum::fromCamera(camera, aspect).clippedToBody(f.body);
+  return f;
+}
+
+std::optional<std::string> fitFocusedWarp(const Camera& camera, double aspect,
+                                          const Aabb& sceneBounds, const glm::dvec3& towardsLight,
+                                          WarpSettings settings, WarpFit& out) {
+  FocusedBody f = focusedBody(camera, aspect, sceneBounds);
+  settings.depthOnly = std::move(f.depthOnly);
+  return fitWarp(f.view, f.body, towardsLight, settings, out);
+}
+
+glm::dmat4 uvRectCrop(const glm::dvec2& uvMin, const glm::dvec2& uvMax) {
+  // uv' = (uv − uvMin) / size with uv = (clip / w + 1) / 2: clip' = clip / size +
+  // w ((1 − 2 uvMin) / size − 1).
+  const glm::dvec2 size = uvMax - uvMin;
+  glm::dmat4 s(1.0);
+  s[0][0] = 1.0 / size.x;
+  s[1][1] = 1.0 / size.y;
+  s[3][0] = (1.0 - 2.0 * uvMin.x) / size.x - 1.0;
+  s[3][1] = (1.0 - 2.0 * uvMin.y) / size.y - 1.0;
+  return s;
 }
 
 }  // namespace sl::warp

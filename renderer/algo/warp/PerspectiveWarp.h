@@ -148,6 +148,31 @@ std::optional<std::string> fitWarp(const ViewFrustum& view, std::span<const glm:
                                    const glm::dvec3& towardsLight, const WarpSettings& settings,
                                    WarpFit& out);
 
+/// The body a focused warp is fitted around (LiSPSM's focusing, Wimmer et al. 2004; what
+/// psm, lispsm and tsm fit): the camera's view frustum ∩ the scene's bounds (the whole box
+/// when the camera sees none of it), the frustum clipped to the body's view-depth range, and
+/// the box's corners as depth-only points (every caster between the light and the body).
+struct FocusedBody {
+  ViewFrustum view;
+  std::vector<glm::dvec3> body;
+  std::vector<glm::dvec3> depthOnly;
+};
+FocusedBody focusedBody(const Camera& camera, double aspect, const Aabb& sceneBounds);
+
+/// fitWarp around focusedBody(camera, aspect, sceneBounds) with `settings` (its depthOnly
+/// set to the body's): the warp psm, lispsm and tsm render, and the virtual map of fvsm and
+/// virtual-tiled with their warp = lispsm (Giegl & Wimmer 2007 use LiSPSM with focusing).
+std::optional<std::string> fitFocusedWarp(const Camera& camera, double aspect,
+                                          const Aabb& sceneBounds, const glm::dvec3& towardsLight,
+                                          WarpSettings settings, WarpFit& out);
+
+/// The crop of a map's clip space onto its uv rectangle [uvMin, uvMax] (a tile of a virtual
+/// map; uv may leave [0, 1] for an overlap): clip' = crop * clip scales and shifts x and y
+/// (the shift times w, so that it holds for orthographic and perspective maps alike) so
+/// that uv' = (uv − uvMin) / (uvMax − uvMin); z and w are kept. A tile of a LiSPSM-warped
+/// virtual map is the warp's own frustum cropped, its matrix crop * the warp's.
+glm::dmat4 uvRectCrop(const glm::dvec2& uvMin, const glm::dvec2& uvMax);
+
 /// True when `towardsLight` or its opposite lies inside the view frustum's pyramid: seen
 /// from the light, the near face projects inside the far face (a square, not a trapezoid).
 bool frustumLooksSquare(const ViewFrustum& view, const glm::dvec3& towardsLight);

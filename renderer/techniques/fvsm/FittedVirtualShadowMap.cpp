@@ -8,7 +8,9 @@
 
 #include "algo/Focus.h"
 #include "common/shared_constants.h"
+#include "core/LightBinding.h"
 #include "core/Publish.h"
+#include "core/SceneGpu.h"
 #include "techniques/virtual-tiled/VirtualTiledShadowMap.h"
 
 namespace sl {
@@ -76,8 +78,9 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        .help = "Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture "
                "(t_max²), of the smallest square of a power-of-two series (< 4/3 t_max², the "
                "paper's recommendation and the default), or a texture of exactly its size (the "
-               "paper counts 8/3 t_max² for these; the tool allocates each w x h the frame "
-               "uses, up to (2 t_max − 16)²)."},
+               "paper sums 2 · 4/3 t_max² for these, counting per level the square and the two "
+               "half-size rectangles only; the tool allocates each w x h the frame uses, up to "
+               "(2 t_max − 16)²)."},
       {.key = "fvsm.overlap",
        .label = "Tile overlap",
        .group = "FVSM",
@@ -196,6 +199,36 @@ TechniqueInfo FittedVirtualShadowMap::info() {
                "along a diagonal of the map, which the box undersamples). Both keep the sign of "
                "the depth step the footprint is built from.",
        .uniform = "u_footprint"},
+      {.key = "fvsm.warp",
+       .label = "Virtual map warp",
+       .group = "FVSM",
+       .type = ParamType::Enum,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"none", "lispsm"},
+       .help = "The virtual map the tiles cut: the focused light frustum, unwarped (none, the "
+               "tool's default), or warped by LiSPSM (Wimmer et al. 2004; n' = n + sqrt(f n), "
+               "fitted around view frustum ∩ scene as `lispsm` fits it), which every result of "
+               "Giegl & Wimmer uses. Each tile is the warped frustum cropped to its uv "
+               "rectangle; the SMTMM's positions and needs are in the warped map. When LiSPSM "
+               "falls back (the light nearly along the view), the map is the unwarped one."},
+      {.key = "fvsm.apply",
+       .label = "Apply tiles by",
+       .group = "FVSM",
+       .type = ParamType::Enum,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"deferred", "multi-pass"},
+       .help = "How each kd leaf shadows the scene (Giegl & Wimmer §3): deferred shadowing, a "
+               "compute pass rebuilding each pixel's position from the eye-space depth buffer "
+               "(deferred, the default and what the paper's results use), or multi-pass "
+               "shadowing (§3.1): the scene rasterised again per leaf inside its screen "
+               "rectangle, depth test EQUAL, only the leaf's own fragments written. The tool's "
+               "first pass is a depth-only pre-pass, where the paper's also shades."},
       {.key = "fvsm.fallback.resolution",
        .label = "Fallback map",
        .group = "FVSM",
@@ -214,8 +247,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
       "looks and how many texels it needs per axis; on the CPU, a tile grid with outlier "
       "rejection, its max pyramid and a kd-tree traversal choose tiles that each fit the "
       "max texture size; each is rendered at its need and applied only inside its screen "
-      "rectangle. The virtual map is the focused, unwarped light frustum (the paper's results "
-      "all warp it with LiSPSM).",
+      "rectangle. The virtual map is the focused light frustum, unwarped by default or warped "
+      "by LiSPSM (fvsm.warp), as in all the paper's results.",
       std::move(params)};
   info.passes = {
       EyeDepthBuffer::passDecl(),
@@ -246,7 +279,8 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        "", true},
       {"tile apply", "Deferred shadowing (all tiles)",
        "Each leaf applied to the pixels of its screen rectangle whose light uv falls in it, "
-       "their world positions rebuilt from the eye-space depth buffer (eq. 1). The time is "
+       "their world positions rebuilt from the eye-space depth buffer (eq. 1), or with "
+       "fvsm.apply = multi-pass the scene rasterised again (§3.1). The time is "
        "the sum over the tiles (per tile: fvsm.tile_ms).",
        "", true},
       {"fallback", "Fallback map", "Pixels no leaf reached: one map over the whole fit.", "", true},
@@ -261,6 +295,9 @@ TechniqueInfo FittedVirtualShadowMap::info() {
        "their 1/256 columns)",
        "0 B (read back for the grid anyway)", [](const ParamSet&) { return std::uint64_t(0); }},
       number("fvsm.tiles", "kd-tree leaves rendered this frame"),
+      number("fvsm.warped",
+             "1 when the virtual map is LiSPSM-warped this frame (fvsm.warp = "
+             "lispsm and no fallback), else 0"),
       number("fvsm.tiles.unmet", "leaves whose need exceeded the max texture at the finest level"),
       number("fvsm.need_log2.u", "log2 texels the whole map needs along u (after ξ, outliers)"),
       number("fvsm.need_log2.v", "log2 texels the whole map needs along v (after ξ, outliers)"),
@@ -313,6 +350,11 @@ FittedVirtualShadowMap::FittedVirtualShadowMap(const gl::ShaderLibrary& lib)
       cameraThumb_(
           lib,
           {"fvsm/camera_thumbnail", {{GL_COMPUTE_SHADER, "fvsm/camera_thumbnail.comp"}}, {}, {}}),
+      multiPass_(lib, {"fvsm/multipass",
+                       {{GL_VERTEX_SHADER, "common/gbuffer.vert"},
+                        {GL_FRAGMENT_SHADER, "fvsm/multipass.frag"}},
+                       {},
+                       {}}),
       eyeDepth_(lib) {}
 
 void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
@@ -345,7 +387,8 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
                                        ctx.light.directionalTowards(), FocusSettings{}, fit)) {
       throw std::runtime_error(*err);
     }
-    full_ = depthMapView(fit);
+    full_ = focusedMapView(ctx, fit, p.getInt("fvsm.warp") == 1);
+    publishNumber(ctx, "fvsm.warped", full_.perspective ? 1.0 : 0.0);
     ctx.addOutline(full_.lightViewProj, OutlineRole::LightMap);
     const int divisor = p.getInt("fvsm.smtmm.divisor");
     frameSize_ = {ctx.width, ctx.height};
@@ -484,6 +527,39 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
   const bool rects = params.getBool("fvsm.screen_rect") && t.mainCamera &&
                      frameSize_ == glm::ivec2(t.width, t.height);
   clearResolveTargets(t);
+  const bool multiPass = params.getInt("fvsm.apply") == 1;
+  gl::Framebuffer passes;  // multi-pass: the resolve targets and the pre-pass's depth
+  const glm::mat4 viewProj = t.cameraProj * t.cameraView;
+  const glm::vec3 eye = glm::vec3(glm::inverse(t.cameraView)[3]);
+  if (multiPass) {
+    if (t.timer) t.timer->begin("tile apply");
+    if (!passDepth_ || passDepth_.width() != t.width || passDepth_.height() != t.height)
+      passDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, t.width, t.height);
+    passes = gl::Framebuffer::create();
+    const gl::Texture* targets[5] = {&t.hard, &t.filtered, &t.aliasing, &t.texel, &t.mapIndex};
+    for (int i = 0; i < 5; ++i) passes.attach(GLenum(GL_COLOR_ATTACHMENT0 + i), *targets[i]);
+    passes.attach(GL_DEPTH_ATTACHMENT, passDepth_);
+    passes.setDrawBuffers(5);
+    passes.checkComplete("fvsm multi-pass");
+    // The first pass: the scene's depth only, with the very program of the tile passes (the
+    // same positions, so that EQUAL holds).
+    glBindFramebuffer(GL_FRAMEBUFFER, passes.id());
+    glViewport(0, 0, t.width, t.height);
+    glEnable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(passes.id(), GL_DEPTH, 0, &one);
+    multiPass_.use();
+    multiPass_.set("u_viewProj", viewProj);
+    multiPass_.set("u_cameraPos", eye);
+    multiPass_.set("u_depthOnly", 1);
+    t.sceneGpu->draw(multiPass_, SL_UNIT_MATERIAL);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
   for (std::size_t k = 0; k < tiles_.size(); ++k) {
     const fvsm::Tile& tile = tiles_[k];
     const fvsm::TileTexture tex = fvsm::tileTexture(mode, tile.textureLog2, maxLog2, overlap);
@@ -502,6 +578,12 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
     tileApplyRange(tile.uvMin(), tile.uvMax(), applyLo, applyHi);
     glm::ivec2 rectMin(0), rectMax(t.width, t.height);
     if (rects) fvsm::tileScreenRectPixels(tile.screen, smtmmSize_, frameSize_, 1, rectMin, rectMax);
+    if (multiPass) {
+      applyTileMultiPass(t, passes, view, target.texture, tex.viewport, applyLo, applyHi,
+                         glm::vec2(glm::dvec2(tex.viewport) / (hi - lo)), rectMin, rectMax,
+                         unsigned(k) & 255u, viewProj, eye);
+      continue;
+    }
     applyTile(
         apply_, t, eyeDepth_,
         {full_, view, target.texture, tex.viewport, applyLo, applyHi,
@@ -523,6 +605,43 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
   endTiles(t);
 }
 
+void FittedVirtualShadowMap::applyTileMultiPass(
+    const ResolveTargets& t, const gl::Framebuffer& passes, const DepthMapView& tile,
+    const gl::Texture& texture, glm::ivec2 texels, glm::dvec2 uvMin, glm::dvec2 uvMax,
+    glm::vec2 texelsPerFullUv, glm::ivec2 rectMin, glm::ivec2 rectMax, unsigned mapIndex,
+    const glm::mat4& viewProj, glm::vec3 eye) {
+  const glm::ivec2 size = glm::max(rectMax - rectMin, glm::ivec2(0));
+  if (size.x == 0 || size.y == 0) return;
+  glBindFramebuffer(GL_FRAMEBUFFER, passes.id());
+  glViewport(0, 0, t.width, t.height);
+  glEnable(GL_SCISSOR_TEST);  // the leaf's screen rectangle
+  glScissor(rectMin.x, rectMin.y, size.x, size.y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_EQUAL);
+  glDepthMask(GL_FALSE);
+  multiPass_.use();
+  bindLight(multiPass_, t.light);
+  multiPass_.set("u_viewProj", viewProj);
+  multiPass_.set("u_cameraPos", eye);
+  multiPass_.set("u_depthOnly", 0);
+  multiPass_.set("u_fullViewProj", full_.lightViewProj);
+  multiPass_.set("u_tileUvMin", glm::vec2(uvMin));
+  multiPass_.set("u_tileUvMax", glm::vec2(uvMax));
+  multiPass_.set("u_texelsPerFullUv", texelsPerFullUv);
+  multiPass_.set("u_mapIndex", mapIndex);
+  multiPass_.set("u_clampToTile", 0);
+  multiPass_.set("u_tileTexels", texels);
+  bindDepthLookup(multiPass_, std::span(&tile, 1));
+  glBindTextureUnit(SL_UNIT_LOOKUP_FIRST, texture.id());
+  multiPass_.set("u_shadowMap", SL_UNIT_LOOKUP_FIRST);
+  t.sceneGpu->draw(multiPass_, SL_UNIT_MATERIAL);
+  glDisable(GL_SCISSOR_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
 MemoryStats FittedVirtualShadowMap::memory() const {
   MemoryStats m;
   if (smtmmTexture_)
@@ -530,6 +649,9 @@ MemoryStats FittedVirtualShadowMap::memory() const {
           smtmmTexture_.height(), 1, gl::bytesPerTexel(smtmmTexture_.format()));
   for (const auto& [size, target] : targets_) target.addMemory(m, "tile texture");
   eyeDepth_.addMemory(m);
+  if (passDepth_)
+    m.add("multi-pass depth", gl::formatName(passDepth_.format()), passDepth_.width(),
+          passDepth_.height(), 1, gl::bytesPerTexel(passDepth_.format()));
   if (cameraTexture_)
     m.add("camera thumbnail (panel)", gl::formatName(cameraTexture_.format()),
           cameraTexture_.width(), cameraTexture_.height(), 1,
@@ -544,6 +666,7 @@ std::optional<std::string> FittedVirtualShadowMap::reloadShaders(const gl::Shade
   if (auto e = cameraThumb_.rebuild(lib)) return e;
   if (auto e = eyeDepth_.reloadShaders(lib)) return e;
   if (auto e = smtmmPacked_.rebuild(lib)) return e;
+  if (auto e = multiPass_.rebuild(lib)) return e;
   return smtmm_.rebuild(lib);
 }
 

@@ -141,12 +141,8 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
   DepthMapView mapView;
   {
     auto pass = ctx.timer.scope("warp");
-    // The body: view frustum ∩ scene bounds (the whole scene when the camera sees none of it).
-    std::vector<glm::vec3> focus = intersectFrustumWithBox(
-        ctx.camera.frustumCorners(ctx.aspect, ctx.camera.nearM, ctx.camera.farM), ctx.scene.bounds);
-    const auto box = ctx.scene.bounds.corners();
-    if (focus.empty()) focus.assign(box.begin(), box.end());
-    std::vector<glm::dvec3> body(focus.begin(), focus.end());
+    // The body: view frustum ∩ scene bounds (the whole scene when the camera sees none of it),
+    // every caster toward the light widening the depth range (warp::focusedBody).
     warp::WarpSettings settings;
     if (kind_ == Kind::Tsm) {
       settings.kind = warp::WarpKind::Tsm;
@@ -155,10 +151,8 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
       settings.kind = warp::WarpKind::Eta;
       settings.eta = ctx.params.get("warp.eta");
     }
-    settings.depthOnly.assign(box.begin(), box.end());  // every caster toward the light
-    const warp::ViewFrustum view =
-        warp::ViewFrustum::fromCamera(ctx.camera, ctx.aspect).clippedToBody(body);
-    if (auto err = warp::fitWarp(view, body, glm::dvec3(towards), settings, fit_))
+    if (auto err = warp::fitFocusedWarp(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                        glm::dvec3(towards), settings, fit_))
       throw std::runtime_error(*err);
 
     if (fit_.uniform) {

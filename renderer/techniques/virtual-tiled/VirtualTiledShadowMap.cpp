@@ -1,6 +1,6 @@
 // Brute-force virtual tiled shadow map (VirtualTiledShadowMap.h): n x n tiles of one
-// focused orthographic frustum, each rendered into one reused texture and applied by a
-// deferred compute pass before the next.
+// focused frustum (orthographic or LiSPSM-warped), each rendered into one reused texture and
+// applied by a deferred compute pass before the next.
 #include "VirtualTiledShadowMap.h"
 
 #include <algorithm>
@@ -37,11 +37,26 @@ TechniqueInfo VirtualTiledShadowMap::info() {
        .help = "Width and height of every tile's depth texture in texels (one texture, reused "
                "by every tile).",
        .memoryKnob = true},
+      {.key = "tile.warp",
+       .label = "Virtual map warp",
+       .group = "Virtual map",
+       .type = ParamType::Enum,
+       .defaultValue = 0,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"none", "lispsm"},
+       .help = "The virtual map the n x n tiles cut: the focused light frustum, unwarped (none, "
+               "the tool's default), or warped by LiSPSM (Wimmer et al. 2004, fitted as `lispsm` "
+               "fits it), which Giegl & Wimmer's brute force uses; each tile is the warped "
+               "frustum cropped to its uv square. LiSPSM's fallback (the light nearly along the "
+               "view) keeps the unwarped map."},
   };
   appendTileBiasParams(params);
   TechniqueInfo info{"virtual-tiled", "Virtual tiled shadow map (brute force)",
                      "The brute-force baseline of fitted virtual shadow maps (Giegl & Wimmer "
-                     "2007): n x n tiles of the focused light frustum, every tile rendered at "
+                     "2007): n x n tiles of the focused light frustum (LiSPSM-warped with "
+                     "tile.warp, as the paper's), every tile rendered at "
                      "the full tile resolution and applied by deferred shadowing over the "
                      "whole screen. Quality of an (n x resolution)² map, at n² times the cost.",
                      std::move(params)};
@@ -89,7 +104,7 @@ void VirtualTiledShadowMap::renderShadows(FrameContext& ctx) {
                                      ctx.light.directionalTowards(), FocusSettings{}, fit)) {
     throw std::runtime_error(*err);
   }
-  full_ = depthMapView(fit);
+  full_ = focusedMapView(ctx, fit, ctx.params.getInt("tile.warp") == 1);
   ctx.addOutline(full_.lightViewProj, OutlineRole::LightMap);
 }
 

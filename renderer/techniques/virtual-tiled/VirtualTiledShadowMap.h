@@ -1,5 +1,6 @@
 // Brute-force virtual tiled shadow map (Giegl & Wimmer, GI 2007, §3.2; docs/techniques.md §6):
-// the light's focused orthographic frustum cut into n x n tiles, each rendered at
+// the light's focused frustum (orthographic, or LiSPSM-warped with tile.warp as the paper's)
+// cut into n x n tiles, each rendered at
 // tile.resolution (16 x 16 x 4096² = a 65536² virtual map) into ONE reused depth texture and
 // applied at once by deferred shadowing: a compute pass over the screen rebuilds each pixel's
 // world position from the eye-space depth buffer (eq. 1, EyeDepthBuffer.h) and shadows the

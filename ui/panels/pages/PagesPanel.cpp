@@ -114,7 +114,8 @@ std::set<std::string> PagesPanel::observedKeys() const {
           "pages.requested",   "pages.allocated",  "pages.coarsened",
           "pages.pool",        "pages.superpages", "pages.requests.compacted",
           "pages.scene_draws", "asm.new",          "asm.hits",
-          "asm.evicted"};
+          "asm.evicted",       "asm.stop",         "asm.requests.left",
+          "asm.iterations.run"};
 }
 
 void PagesPanel::showPublication(const sl::Publication& pub) {
@@ -197,10 +198,36 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
                        .arg(number("pages.scene_draws")) +
                    legendText({PS::Requested, PS::Fallback, PS::Coarsened, PS::Empty}) +
                    QStringLiteral("."));
+  // ASM's refinement loop: why it stopped this frame, and how often the iteration cap stopped
+  // it over the frames kept (a cap is never silent, even once later frames have converged).
+  const double stop = number("asm.stop"), left = number("asm.requests.left");
+  const bool capStop = cache && stop == 1.0;
   if (!history_.empty() && double(pub.frameIndex) <= history_.back().frame) history_.clear();
   history_.push_back({double(pub.frameIndex), allocated, requested, pool, double(count(PS::New)),
-                      double(count(PS::Evicted))});
+                      double(count(PS::Evicted)), capStop ? 1.0 : 0.0});
   while (history_.size() > kHistory) history_.pop_front();
+  int capStops = 0;
+  for (const FrameUse& f : history_) capStops += f.capStop != 0.0;
+  if (cache && stop >= 0.0) {
+    QString why;
+    if (stop == 0.0)
+      why = tr("converged (no page requested)");
+    else if (stop == 1.0)
+      why = tr("<b><font color=\"#e04030\">stopped by the iteration cap: %1 pages still "
+               "requested</font></b>")
+                .arg(left);
+    else if (stop == 2.0)
+      why = tr("the per-frame page budget was spent: %1 requests wait").arg(left);
+    else
+      why = tr("the pool held only pages used this frame: %1 requests refused").arg(left);
+    QString line =
+        tr("<br>Refinement loop: %1 iterations, %2.").arg(number("asm.iterations.run")).arg(why);
+    if (capStops > 0)
+      line += tr(" The iteration cap stopped it in <b>%1 of the last %2 frames</b>.")
+                  .arg(capStops)
+                  .arg(history_.size());
+    info_->setText(info_->text() + line);
+  }
   PlotWidget::Series used{cache ? tr("held") : tr("allocated"), {}, QColor(60, 190, 90)};
   PlotWidget::Series asked{tr("unique pages requested"), {}, QColor(230, 60, 50)};
   PlotWidget::Series fresh{tr("allocated this frame"), {}, QColor(kStates[int(PS::New)].colour)};
@@ -225,6 +252,9 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
             {QStringLiteral("pool"), pool},
             {QStringLiteral("coarsened"), coarsened},
             {QStringLiteral("cache"), cache},
+            {QStringLiteral("loop_stop"), cache ? stop : -1.0},
+            {QStringLiteral("loop_requests_left"), cache ? left : -1.0},
+            {QStringLiteral("cap_stops"), capStops},
             {QStringLiteral("cells"), drawnCells}};
   redraw();
 }

@@ -254,9 +254,13 @@ TEST(Asm, TheIterationCapPresetStopsTheLoopVisibly) {
   EXPECT_EQ(free[0].at("asm.requests.left"), 0.0);
   EXPECT_GT(free[0].at("asm.iterations.run"), cap);
   EXPECT_GT(free[0].at("asm.new"), capped[0].at("asm.new"));
-  // A still camera: the next frames go on from the cached pages until converged.
+  EXPECT_EQ(capped[0].at("asm.cap.stops"), 1.0);
+  EXPECT_EQ(free[0].at("asm.cap.stops"), 0.0);
+  // A still camera: the next frames go on from the cached pages until converged, and the
+  // frame the cap stopped stays counted.
   EXPECT_EQ(capped.back().at("asm.stop"), double(AsmShadowMap::kConverged));
   EXPECT_EQ(capped.back().at("asm.requests.left"), 0.0);
+  EXPECT_EQ(capped.back().at("asm.cap.stops"), 1.0);
 }
 
 // Frames until the cache stops growing: then the last iteration's shadow test saw the final

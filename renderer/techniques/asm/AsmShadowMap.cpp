@@ -220,7 +220,7 @@ TechniqueInfo AsmShadowMap::info() {
   for (const char* key :
        {"asm.iterations.run", "asm.requests", "asm.new", "asm.hits", "asm.evicted", "asm.refused",
         "asm.deferred", "asm.cached", "asm.invalidations", "asm.pool", "asm.stop",
-        "asm.requests.left", "asm.superpages", "asm.scene_draws"}) {
+        "asm.requests.left", "asm.superpages", "asm.scene_draws", "asm.cap.stops"}) {
     info.publications.push_back({key, PublicationKind::Number, "", "", {}});
   }
   info.publications[0].what =
@@ -247,6 +247,9 @@ TechniqueInfo AsmShadowMap::info() {
   info.publications[13].what =
       "Scene draws of the iterations' render steps this frame (coarse map aside): one per "
       "superpage, or one per new page.";
+  info.publications[14].what =
+      "Frames since the page cache was last dropped whose loop the iteration cap stopped "
+      "(asm.stop 1): a cap stop stays visible after later frames converged.";
   // The Pages panel's page table, pool and requests, as rmsm's (the cache's states).
   for (PublicationDecl& d : pagedMapPublicationDecls()) info.publications.push_back(std::move(d));
   info.checkParams = checkAsmParams;
@@ -297,6 +300,7 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
       map_.uploadTable(cache_->table());
       map_.renderPages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, coarse, slots, true);
       last_.invalidated = true;
+      capStops_ = 0;
       last_.coarsePages = int(coarse.size());
     }
   }
@@ -372,6 +376,8 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "asm.pool", poolPages);
   publishNumber(ctx, "asm.stop", last_.stop);
   publishNumber(ctx, "asm.requests.left", last_.requestsLeft);
+  if (last_.stop == kIterationCap) ++capStops_;
+  publishNumber(ctx, "asm.cap.stops", capStops_);
   publishNumber(ctx, "asm.superpages", last_.superpages);
   publishNumber(ctx, "asm.scene_draws", last_.sceneDraws);
   last_.requested = pages::sortUnique(last_.requestKeys);

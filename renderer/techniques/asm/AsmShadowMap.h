@@ -112,6 +112,7 @@ class AsmShadowMap : public Technique {
   DepthMapView view_;
   FrameResult last_;
   bool superpages_ = false;  ///< this frame's asm.render = superpages
+  int capStops_ = 0;         ///< frames since the last invalidation that the iteration cap stopped
 };
 
 }  // namespace sl

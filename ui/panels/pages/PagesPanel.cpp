@@ -109,13 +109,13 @@ PagesPanel::PagesPanel(QWidget* parent) : PublicationPanel(parent) {
 
 std::set<std::string> PagesPanel::observedKeys() const {
   // asm.*: the cache's own counts, shown next to the cells the table draws.
-  return {"pages.table.*",     "pages.served",     "pages.requests.heat",
-          "pages.pool.levels", "pages.pool.depth", "pages.pool.columns",
-          "pages.requested",   "pages.allocated",  "pages.coarsened",
-          "pages.pool",        "pages.superpages", "pages.requests.compacted",
-          "pages.scene_draws", "asm.new",          "asm.hits",
-          "asm.evicted",       "asm.stop",         "asm.requests.left",
-          "asm.iterations.run"};
+  return {"pages.table.*",      "pages.served",     "pages.requests.heat",
+          "pages.pool.levels",  "pages.pool.depth", "pages.pool.columns",
+          "pages.requested",    "pages.allocated",  "pages.coarsened",
+          "pages.pool",         "pages.superpages", "pages.requests.compacted",
+          "pages.scene_draws",  "asm.new",          "asm.hits",
+          "asm.evicted",        "asm.stop",         "asm.requests.left",
+          "asm.iterations.run", "asm.cap.stops"};
 }
 
 void PagesPanel::showPublication(const sl::Publication& pub) {
@@ -198,16 +198,15 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
                        .arg(number("pages.scene_draws")) +
                    legendText({PS::Requested, PS::Fallback, PS::Coarsened, PS::Empty}) +
                    QStringLiteral("."));
-  // ASM's refinement loop: why it stopped this frame, and how often the iteration cap stopped
-  // it over the frames kept (a cap is never silent, even once later frames have converged).
-  const double stop = number("asm.stop"), left = number("asm.requests.left");
-  const bool capStop = cache && stop == 1.0;
   if (!history_.empty() && double(pub.frameIndex) <= history_.back().frame) history_.clear();
   history_.push_back({double(pub.frameIndex), allocated, requested, pool, double(count(PS::New)),
-                      double(count(PS::Evicted)), capStop ? 1.0 : 0.0});
+                      double(count(PS::Evicted))});
   while (history_.size() > kHistory) history_.pop_front();
-  int capStops = 0;
-  for (const FrameUse& f : history_) capStops += f.capStop != 0.0;
+  // ASM's refinement loop: why it stopped this frame, and in how many frames since the pages
+  // were last dropped the iteration cap stopped it (never silent, even once later frames, or
+  // frames before this panel opened, converged).
+  const double stop = number("asm.stop"), left = number("asm.requests.left");
+  const double capStops = cache ? number("asm.cap.stops") : -1.0;
   if (cache && stop >= 0.0) {
     QString why;
     if (stop == 0.0)
@@ -223,9 +222,9 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
     QString line =
         tr("<br>Refinement loop: %1 iterations, %2.").arg(number("asm.iterations.run")).arg(why);
     if (capStops > 0)
-      line += tr(" The iteration cap stopped it in <b>%1 of the last %2 frames</b>.")
-                  .arg(capStops)
-                  .arg(history_.size());
+      line += tr(" <b>The iteration cap stopped it in %1 frames</b> since the pages were last "
+                 "dropped.")
+                  .arg(capStops);
     info_->setText(info_->text() + line);
   }
   PlotWidget::Series used{cache ? tr("held") : tr("allocated"), {}, QColor(60, 190, 90)};

@@ -41,7 +41,6 @@ class PagesPanel : public PublicationPanel {
   QLabel* info_ = nullptr;
   struct FrameUse {
     double frame, allocated, requested, pool, fresh, evicted;
-    double capStop = 0;  ///< 1: ASM's iteration cap stopped the refinement loop
   };
   std::deque<FrameUse> history_;                  ///< the last kHistory frames published
   std::map<std::string, sl::FloatImage> images_;  ///< the last frame's pages.* images

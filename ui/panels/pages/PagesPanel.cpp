@@ -219,11 +219,11 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
       why = tr("the per-frame page budget was spent: %1 requests wait").arg(left);
     else
       why = tr("the pool held only pages used this frame: %1 requests refused").arg(left);
-    QString line =
-        tr("<br>Refinement loop: %1 iterations, %2.").arg(number("asm.iterations.run")).arg(why);
+    QString line = tr("<br>Refinement loop this frame: iterations run %1; %2.")
+                       .arg(number("asm.iterations.run"))
+                       .arg(why);
     if (capStops > 0)
-      line += tr(" <b>The iteration cap stopped it in %1 frames</b> since the pages were last "
-                 "dropped.")
+      line += tr(" <b>Frames the iteration cap stopped since the pages were last dropped: %1</b>.")
                   .arg(capStops);
     info_->setText(info_->text() + line);
   }

@@ -175,7 +175,8 @@ TechniqueInfo AsmShadowMap::info() {
        .step = 1,
        .help = "With asm.loop = until-done, the most iterations a frame runs (the paper has "
                "no cap); when it stops a loop still refining, the frame publishes asm.stop = 1 "
-               "and the pages still requested (asm.requests.left)."});
+               "and the pages still requested (asm.requests.left), and asm.cap.stops counts "
+               "it until the pages are next dropped."});
 
   TechniqueInfo info{"asm", "Adaptive shadow map",
                      "Fernando, Fernandez, Bala, Greenberg 2001: a quadtree of shadow-map pages "

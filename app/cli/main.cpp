@@ -532,6 +532,17 @@ int cmdRender(Args& a) {
   if (!cfg.wrongPixels.empty()) writeText(cfg.wrongPixels, wrongPixelsCsv(err));
   if (std::string w = describeWarmup(j); !w.empty())
     std::fprintf(w.rfind("note:", 0) == 0 ? stderr : stdout, "%s\n", w.c_str());
+  // ASM's refinement loop stopped by its iteration cap is never silent (the metrics JSON has
+  // asm.cap.stops, asm.stop and asm.requests.left too).
+  if (const json& pub = j["published"]; pub.contains("asm.cap.stops") &&
+                                        pub["asm.cap.stops"].is_number() &&
+                                        pub["asm.cap.stops"].get<double>() > 0.0)
+    std::fprintf(stderr,
+                 "note: asm: the iteration cap stopped the refinement loop in %g of the frames "
+                 "rendered (published asm.cap.stops); the last frame: asm.stop %g, %g pages "
+                 "still requested (asm.requests.left)\n",
+                 pub["asm.cap.stops"].get<double>(), pub.value("asm.stop", 0.0),
+                 pub.value("asm.requests.left", 0.0));
   std::printf("%s on %s: %.2f ms (%s), %llu texels, %s -> %s\n", r.techniqueId().c_str(),
               r.scene()->name.c_str(), j["total_ms"].get<double>(), r.stats().timingMethod.c_str(),
               (unsigned long long)r.stats().memory.texels(),

@@ -204,6 +204,55 @@ TEST(AsmCache, RefineStopsAndCountsHits) {
   EXPECT_EQ(r.deferred, 2);
 }
 
+// asm.render = superpages (the lecture's loop: "allocate new page in quadtree, bin requests
+// into superpages, render shadow data into superpages, copy"): what an iteration bins is what it
+// allocated, each new page in exactly one superpage, the block of its level holding it; pages
+// cached by an earlier iteration are not binned again, so a superpage can hold only some of
+// its block's pages.
+TEST(AsmCache, SuperpagesBinOnlyTheNewPagesOfAnIteration) {
+  // 4096² in 128² pages: 32, 16, 8, 4, 2, 1 pages a side; a 1024² superpage is 8 x 8 pages.
+  const pages::VirtualLayout layout{.virtualResolution = 4096, .pageSize = 128};
+  PageCache c(layout, 64, 3);  // coarse level 3: 4 x 4 pages
+  std::vector<int> slots;
+  EXPECT_EQ(c.invalidate(slots).size(), 16u);
+  c.beginFrame();
+  // Iteration 1: two pages of level 0 in different blocks, one of level 1, one touch.
+  std::vector<PageKey> keys =
+      pages::sortUnique(std::vector<PageKey>{packPage({0, 1, 1}), packPage({0, 9, 2}),
+                                             packPage({1, 3, 0}), packPage({3, 0, 0}) | kTouchBit});
+  Refinement r = c.refine(keys, 100);
+  ASSERT_EQ(r.allocated.size(), 3u);
+  std::vector<pages::Superpage> bins = pages::binSuperpages(r.allocated, layout, 1024);
+  ASSERT_EQ(bins.size(), 3u);  // level 0 blocks (0, 0) and (1, 0); level 1 block (0, 0)
+  int binned = 0;
+  for (const pages::Superpage& s : bins) {
+    EXPECT_EQ(s.pagesPerSide, 8);
+    for (const PageId& p : s.pages) {
+      ++binned;
+      EXPECT_EQ(p.level, s.level);
+      EXPECT_EQ(p.x / 8, s.x);
+      EXPECT_EQ(p.y / 8, s.y);
+      EXPECT_GE(c.table().slot(p), 16);  // allocated, past the coarse map's slots
+    }
+  }
+  EXPECT_EQ(binned, 3);
+  // Iteration 2: the same pages again (now cached) plus one new page in iteration 1's first
+  // block: only the new page is binned, alone in that block's superpage.
+  keys = pages::sortUnique(std::vector<PageKey>{packPage({0, 1, 1}), packPage({0, 9, 2}),
+                                                packPage({1, 3, 0}), packPage({0, 2, 1})});
+  r = c.refine(keys, 100);
+  EXPECT_EQ(r.alreadyCached, 3);
+  ASSERT_EQ(r.allocated, (std::vector<PageId>{{0, 2, 1}}));
+  bins = pages::binSuperpages(r.allocated, layout, 1024);
+  ASSERT_EQ(bins.size(), 1u);
+  EXPECT_EQ((PageId{bins[0].level, bins[0].x, bins[0].y}), (PageId{0, 0, 0}));
+  EXPECT_EQ(bins[0].pages, (std::vector<PageId>{{0, 2, 1}}));
+  // Nothing new: nothing to bin, and the loop stops.
+  r = c.refine(keys, 100);
+  EXPECT_TRUE(r.allocated.empty());
+  EXPECT_TRUE(pages::binSuperpages(r.allocated, layout, 1024).empty());
+}
+
 // A full pool evicts the least recently used page not used this frame (never the coarse map),
 // lowest slot among equals; when every page was used this frame the request is refused.
 TEST(AsmCache, EvictsLeastRecentlyUsedAndRefusesWhenAllInUse) {

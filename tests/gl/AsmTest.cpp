@@ -9,12 +9,16 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
 
 #include "GlTestEnv.h"
 #include "algo/asm/AdaptivePages.h"
 #include "algo/pages/PageRequests.h"
 #include "algo/pages/PageViews.h"
 #include "common/shared_constants.h"
+#include "core/Preset.h"
 #include "core/Technique.h"
 #include "gl/Gl.h"
 #include "techniques/asm/AsmShadowMap.h"
@@ -207,6 +211,58 @@ TEST(Asm, UntilDoneConvergesAndAStoppedLoopSaysWhatItLeft) {
   EXPECT_EQ(budget.at("asm.requests.left"), done.at("asm.new") - 1.0);
 }
 
+// The iteration-cap preset (scenes/papers/001-asm-iteration-cap.json) as a user opens it: its
+// first frame stops at the cap with pages still requested, published (asm.stop 1,
+// asm.requests.left > 0); the same view with a cap high enough converges in more iterations
+// than the preset allows, so the cap is what stopped it; a still camera then converges over
+// the next frames (the cache keeps the pages), each published.
+TEST(Asm, TheIterationCapPresetStopsTheLoopVisibly) {
+  std::string error;
+  const auto preset = loadPreset(std::filesystem::path(SHADOWLAB_TEST_DATA) / ".." / ".." /
+                                     "scenes" / "papers" / "001-asm-iteration-cap.json",
+                                 &error);
+  ASSERT_TRUE(preset) << error;
+  auto frame = [&](int cap, int frames) {
+    auto r = test::makeRenderer(preset->scene, preset->technique);
+    EXPECT_TRUE(r);
+    for (const auto& [key, value] : preset->params)
+      EXPECT_FALSE(r->params().setFromString(key, value)) << key;
+    if (cap > 0) {
+      EXPECT_FALSE(r->params().set("asm.iterations.cap", cap));
+    }
+    r->requestPublications({"asm.*"});
+    std::vector<std::map<std::string, double>> out;
+    for (int f = 0; f < frames; ++f) {
+      EXPECT_FALSE(r->renderFrame(320, 180, 0));
+      out.push_back(r->publication().numbers);
+    }
+    test::expectNoGlErrors(*r);
+    return out;
+  };
+  const auto capped = frame(0, 3);
+  const double cap = std::stod(preset->params.at("asm.iterations.cap"));
+  std::printf(
+      "preset: %.0f iterations, %.0f new, stop %.0f, %.0f left; frames 2, 3: stop %.0f, "
+      "%.0f\n",
+      capped[0].at("asm.iterations.run"), capped[0].at("asm.new"), capped[0].at("asm.stop"),
+      capped[0].at("asm.requests.left"), capped[1].at("asm.stop"), capped[2].at("asm.stop"));
+  EXPECT_EQ(capped[0].at("asm.iterations.run"), cap);
+  EXPECT_EQ(capped[0].at("asm.stop"), double(AsmShadowMap::kIterationCap));
+  EXPECT_GT(capped[0].at("asm.requests.left"), 0.0);
+  const auto free = frame(64, 1);
+  EXPECT_EQ(free[0].at("asm.stop"), double(AsmShadowMap::kConverged));
+  EXPECT_EQ(free[0].at("asm.requests.left"), 0.0);
+  EXPECT_GT(free[0].at("asm.iterations.run"), cap);
+  EXPECT_GT(free[0].at("asm.new"), capped[0].at("asm.new"));
+  EXPECT_EQ(capped[0].at("asm.cap.stops"), 1.0);
+  EXPECT_EQ(free[0].at("asm.cap.stops"), 0.0);
+  // A still camera: the next frames go on from the cached pages until converged, and the
+  // frame the cap stopped stays counted.
+  EXPECT_EQ(capped.back().at("asm.stop"), double(AsmShadowMap::kConverged));
+  EXPECT_EQ(capped.back().at("asm.requests.left"), 0.0);
+  EXPECT_EQ(capped.back().at("asm.cap.stops"), 1.0);
+}
+
 // Frames until the cache stops growing: then the last iteration's shadow test saw the final
 // quadtree, and its mask is the resolve's hard mask (the same lookup in compute).
 TEST(Asm, ConvergesAndTheShadowTestIsTheResolves) {
@@ -346,6 +402,106 @@ TEST(Asm, MemoryIsExact) {
                              16ull * 160 * 90 + 4ull * 160 * 90 + 4ull * (1 + 160 * 90));
   }
   test::expectNoGlErrors(*r);
+}
+
+std::vector<float> readDepth(const gl::Texture& t) {
+  std::vector<float> out(std::size_t(t.width()) * t.height());
+  glGetTextureImage(t.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(out.size() * 4), out.data());
+  return out;
+}
+
+// asm.render = superpages (the lecture's loop: bin, render superpages, copy into the quadtree)
+// against page by page: the same frame allocates the same pages into the same slots in every
+// iteration, the pools hold the same depths up to float rounding of the rasterised positions
+// (as rmsm's Rmsm.SuperpagesFillThePoolLikePageByPage), the error is the same; superpages draw
+// the scene fewer times; memory() lists the superpage target and equals what was allocated.
+TEST(Asm, SuperpagesFillThePoolLikePageByPage) {
+  auto frame = [&](int render, AsmShadowMap*& probe) {
+    auto r = makeProbe("plane-box");
+    EXPECT_TRUE(r);
+    probe = g_probe;
+    for (auto [key, value] :
+         std::initializer_list<std::pair<const char*, double>>{{"virtual.resolution", 16384},
+                                                               {"page.size", 64},
+                                                               {"pool.pages", 256},
+                                                               {"asm.coarse.resolution", 512},
+                                                               {"asm.edge", SL_ASM_EDGE_MAP},
+                                                               {"asm.loop", 1},
+                                                               {"asm.render", render}})
+      EXPECT_FALSE(r->params().set(key, value)) << key;
+    r->requestPublications({"asm.*"});
+    EXPECT_FALSE(r->renderFrame(160, 90, 0));
+    return r;
+  };
+  AsmShadowMap *pagesProbe = nullptr, *superProbe = nullptr;
+  const std::uint64_t before = gl::allocatedBytes();
+  auto pagesR = frame(AsmShadowMap::kRenderPages, pagesProbe);
+  const std::uint64_t pagesBytes = gl::allocatedBytes() - before;
+  auto superR = frame(AsmShadowMap::kRenderSuperpages, superProbe);
+  const std::uint64_t superBytes = gl::allocatedBytes() - before - pagesBytes;
+  ASSERT_TRUE(pagesProbe && superProbe && pagesR && superR);
+  const AsmShadowMap::FrameResult &p = pagesProbe->lastFrame(), &s = superProbe->lastFrame();
+  ASSERT_EQ(s.uniquePerIteration, p.uniquePerIteration);
+  ASSERT_EQ(s.iterations.size(), p.iterations.size());
+  for (std::size_t i = 0; i < s.iterations.size(); ++i) {
+    EXPECT_EQ(s.iterations[i].allocated, p.iterations[i].allocated);
+    EXPECT_EQ(s.iterations[i].slots, p.iterations[i].slots);
+  }
+  const std::vector<float> pagesPool = readDepth(pagesProbe->pagedMap().poolTexture());
+  const std::vector<float> superPool = readDepth(superProbe->pagedMap().poolTexture());
+  ASSERT_EQ(superPool.size(), pagesPool.size());
+  const int W = pagesProbe->pagedMap().poolTexture().width();
+  const int H = int(pagesPool.size() / std::size_t(W));
+  auto at = [&](int u, int v) { return pagesPool[std::size_t(v) * W + u]; };
+  int over = 0, overSlope = 0, rendered = 0;
+  for (std::size_t i = 0; i < superPool.size(); ++i) {
+    rendered += pagesPool[i] < 1.0f;
+    const float d = std::abs(superPool[i] - pagesPool[i]);
+    if (d <= 1e-6f) continue;
+    ++over;
+    const int x = int(i % std::size_t(W)), y = int(i / std::size_t(W));
+    float g = 0.0f;
+    if (x > 0) g = std::max(g, std::abs(at(x, y) - at(x - 1, y)));
+    if (x + 1 < W) g = std::max(g, std::abs(at(x + 1, y) - at(x, y)));
+    if (y > 0) g = std::max(g, std::abs(at(x, y) - at(x, y - 1)));
+    if (y + 1 < H) g = std::max(g, std::abs(at(x, y + 1) - at(x, y)));
+    overSlope += d > 1e-6f + 1e-4f * g;
+  }
+  const double pagesError = pagesR->computeError().stats.errorPct;
+  const double superError = superR->computeError().stats.errorPct;
+  std::printf(
+      "%zu iterations, %d new pages: %d superpages (%d scene draws, page by page %d); "
+      "%d texels rendered, %d off by more than 1e-6; error %.4f %% (page by page %.4f "
+      "%%)\n",
+      s.iterations.size(), s.newPages, s.superpages, s.sceneDraws, p.sceneDraws, rendered, over,
+      superError, pagesError);
+  EXPECT_GT(s.iterations.size(), 1u);
+  EXPECT_EQ(p.superpages, 0);
+  EXPECT_EQ(p.sceneDraws, p.newPages);
+  EXPECT_EQ(s.sceneDraws, s.superpages);
+  EXPECT_GT(s.superpages, 0);
+  EXPECT_LT(s.superpages, s.newPages);
+  EXPECT_EQ(pagesR->publication().numbers.at("asm.superpages"), 0.0);
+  EXPECT_EQ(superR->publication().numbers.at("asm.superpages"), double(s.superpages));
+  EXPECT_EQ(superR->publication().numbers.at("asm.scene_draws"), double(s.sceneDraws));
+  // The scene covers much of the pages held (the coarse map's 8 x 8 and the new ones).
+  EXPECT_GT(rendered, (64 + s.newPages) * 64 * 64 / 4);
+  EXPECT_EQ(overSlope, 0);
+  EXPECT_LE(over, rendered / 10000);
+  EXPECT_EQ(superError, pagesError);
+  // memory(): the superpage target (1024² DEPTH_COMPONENT32F) is there only with superpages,
+  // and each renderer's memory() is what it allocated beyond the other's.
+  auto target = [](const MemoryStats& m) {
+    std::uint64_t b = 0;
+    for (const ResourceInfo& res : m.resources)
+      if (res.name == "superpage target") b = res.bytes;
+    return b;
+  };
+  EXPECT_EQ(target(pagesR->stats().memory), 0u);
+  EXPECT_EQ(target(superR->stats().memory), 4ull << 20);
+  EXPECT_EQ(superR->stats().memory.bytes(), pagesR->stats().memory.bytes() + (4ull << 20));
+  EXPECT_EQ(superBytes, pagesBytes + (4ull << 20)) << "memory() must list every byte";
+  test::expectNoGlErrors(*superR);
 }
 
 // Every declared pass is timed, in declaration order (iterations not run are empty passes);

@@ -394,7 +394,8 @@ TEST(Rmsm, MemoryIsExact) {
 
 // pool.budget: memory() — pool, page table, request image and list, sort buffers, superpage
 // target — never exceeds the budget and leaves less than a few pages of it, frame after frame,
-// at two view sizes and both render paths; every byte is what the GL wrappers allocated; the
+// at budgets from uniform 1024²'s to uniform 4096²'s total bytes, two view sizes and both render
+// paths; every byte is what the GL wrappers allocated; the
 // pool is what the Pages panel publishes. A budget that cannot hold the top level names itself.
 TEST(Rmsm, BudgetHoldsTheWholeMemory) {
   auto r = test::makeRenderer("diagonal", "uniform");
@@ -405,7 +406,12 @@ TEST(Rmsm, BudgetHoldsTheWholeMemory) {
                                       {16777216, 1, 160, 90},
                                       {16777216, 0, 320, 180},
                                       {8000000, 1, 320, 180},
-                                      {8000000, 0, 160, 90}}) {
+                                      {8000000, 0, 160, 90},
+                                      // the total bytes of uniform 1024² and 4096² maps
+                                      {4194304, 1, 320, 180},
+                                      {4194304, 1, 160, 90},
+                                      {67108864, 1, 320, 180},
+                                      {67108864, 0, 160, 90}}) {
     SCOPED_TRACE(testing::Message() << budget << " " << render << " " << w << "x" << h);
     // The renderer's own targets follow the view's size: counted apart at this size.
     ASSERT_FALSE(r->setTechnique("uniform"));
@@ -429,6 +435,13 @@ TEST(Rmsm, BudgetHoldsTheWholeMemory) {
       EXPECT_EQ(superpage, render == RmsmShadowMap::kRenderSuperpages ? 4ull << 20 : 0u);
     }
   }
+  // Uniform 1024²'s 4 MiB cannot also hold the 4 MiB superpage target: refused, named.
+  ASSERT_FALSE(r->params().set("rmsm.render", RmsmShadowMap::kRenderSuperpages));
+  ASSERT_FALSE(r->params().set("pool.budget", 4194304));
+  const auto small = r->renderFrame(160, 90, 0);
+  ASSERT_TRUE(small);
+  EXPECT_NE(small->find("pool.budget = 4194304 bytes cannot hold"), std::string::npos) << *small;
+  EXPECT_NE(small->find("superpage target"), std::string::npos) << *small;
   // 65536² in 128² pages: the top level's 16 pages (1 MiB) and the 1.4 MiB page table.
   ASSERT_FALSE(r->params().set("pool.budget", 2000000));
   const auto err = r->renderFrame(160, 90, 0);

@@ -56,3 +56,25 @@ assert c["requested"] == c["fallback"] == c["coarsened"] == 0, c  # rmsm's state
 print("ok: pages panel (asm): %d new, %d cached used, %d unused, %d evicted, %d waiting" %
       (c["new"], c["cached_hit"], c["cached_idle"], c["evicted"], c["requested_waiting"]))
 PY
+
+# The iteration-cap preset (ASM's loop stopped by asm.iterations.cap 1 on diagonal): the cap
+# stopped the first frame's loop; frames later (the cache converged since) the Pages panel still
+# shows how many frames it stopped, and this frame's loop, as published.
+rc=0
+timeout 300 "$app" --lesson "$here/../../scenes/papers/001-asm-iteration-cap.json" \
+  --grab "$out/asm-cap" --grab-after 1 >"$out/asm-cap.stdout" 2>"$out/asm-cap.stderr" || rc=$?
+if [[ $rc -ne 0 ]]; then
+  echo "FAIL: shadowlab (asm-cap) exited with $rc; stderr:"
+  cat "$out/asm-cap.stderr"
+  exit 1
+fi
+python3 - "$out" <<'PY'
+import json, sys
+j = json.load(open(f"{sys.argv[1]}/asm-cap/published.json"))
+p, n = j["panels"]["pages"], j["numbers"]
+assert n["asm.cap.stops"] >= 1 and n["param.asm.iterations.cap"] == 1, n
+assert p["cap_stops"] == n["asm.cap.stops"], (p, n)
+assert p["loop_stop"] == n["asm.stop"] and p["loop_requests_left"] == n["asm.requests.left"], (p, n)
+print("ok: pages panel (asm, iteration cap): the cap stopped %d frames; this frame stop %d, "
+      "%d pages still requested" % (n["asm.cap.stops"], n["asm.stop"], n["asm.requests.left"]))
+PY

@@ -148,6 +148,23 @@ TechniqueInfo AsmShadowMap::info() {
                "until-done (Fernando et al. 2001): iterate until no page is requested, with no "
                "page budget, stopped only by asm.iterations.cap (asm.stop, asm.requests.left "
                "say when the cap stopped it and what it left) or a full pool."});
+  add({.key = "asm.render",
+       .label = "Render",
+       .group = "ASM",
+       .type = ParamType::Enum,
+       .defaultValue = kRenderPages,
+       .minValue = 0,
+       .maxValue = 1,
+       .step = 1,
+       .enumNames = {"superpages", "pages"},
+       .help = "How an iteration renders its new pages. superpages (the lecture's ASM loop: "
+               "'bin requests into superpages, render shadow data into superpages, copy shadow "
+               "data from superpage to quadtree'): the new pages are binned into " +
+               std::to_string(SL_RMSM_SUPERPAGE) +
+               "² blocks of one level, each block is rendered once into a superpage target "
+               "and its new pages are copied into their pool slots (one scene draw per "
+               "superpage; the target's 4 MiB count in memory()). pages (the tool's default): "
+               "one scene draw per new page, straight into its slot, no superpage target."});
   add({.key = "asm.iterations.cap",
        .label = "Iteration cap",
        .group = "ASM",
@@ -158,7 +175,8 @@ TechniqueInfo AsmShadowMap::info() {
        .step = 1,
        .help = "With asm.loop = until-done, the most iterations a frame runs (the paper has "
                "no cap); when it stops a loop still refining, the frame publishes asm.stop = 1 "
-               "and the pages still requested (asm.requests.left)."});
+               "and the pages still requested (asm.requests.left), and asm.cap.stops counts "
+               "it until the pages are next dropped."});
 
   TechniqueInfo info{"asm", "Adaptive shadow map",
                      "Fernando, Fernandez, Bala, Greenberg 2001: a quadtree of shadow-map pages "
@@ -186,10 +204,12 @@ TechniqueInfo AsmShadowMap::info() {
          "evict the least recently used page no pixel used this frame; at most "
          "asm.pages.per.frame per frame; the page table is uploaded.",
          "pages"});
-    info.passes.push_back({iterationPass("pages", i), "Iteration " + n + ": render pages",
-                           "The new pages' exact depth into their pool slots; the cached "
-                           "pages are not rendered again.",
-                           "pages"});
+    info.passes.push_back(
+        {iterationPass("pages", i), "Iteration " + n + ": render pages",
+         "The new pages' exact depth into their pool slots (asm.render = pages: one draw per "
+         "page; superpages: one draw per superpage holding new pages, then the pages copied "
+         "into their slots); the cached pages are not rendered again.",
+         "pages"});
   }
   info.passes.push_back(
       {"asm more", "Further iterations",
@@ -198,9 +218,10 @@ TechniqueInfo AsmShadowMap::info() {
            "th (edge finding, allocation, pages), and when the cap stops a loop still refining, "
            "one more edge finding that counts the requests left. Otherwise empty.",
        "pages"});
-  for (const char* key : {"asm.iterations.run", "asm.requests", "asm.new", "asm.hits",
-                          "asm.evicted", "asm.refused", "asm.deferred", "asm.cached",
-                          "asm.invalidations", "asm.pool", "asm.stop", "asm.requests.left"}) {
+  for (const char* key :
+       {"asm.iterations.run", "asm.requests", "asm.new", "asm.hits", "asm.evicted", "asm.refused",
+        "asm.deferred", "asm.cached", "asm.invalidations", "asm.pool", "asm.stop",
+        "asm.requests.left", "asm.superpages", "asm.scene_draws", "asm.cap.stops"}) {
     info.publications.push_back({key, PublicationKind::Number, "", "", {}});
   }
   info.publications[0].what =
@@ -222,6 +243,14 @@ TechniqueInfo AsmShadowMap::info() {
   info.publications[11].what =
       "Distinct pages still requested and not held when the loop stopped (0 when it "
       "converged; with asm.loop = budget, a cap stop counts only the last iteration's).";
+  info.publications[12].what =
+      "Superpages rendered this frame, all iterations (asm.render = superpages; 0 with pages).";
+  info.publications[13].what =
+      "Scene draws of the iterations' render steps this frame (coarse map aside): one per "
+      "superpage, or one per new page.";
+  info.publications[14].what =
+      "Frames since the page cache was last dropped whose loop the iteration cap stopped "
+      "(asm.stop 1): a cap stop stays visible after later frames converged.";
   // The Pages panel's page table, pool and requests, as rmsm's (the cache's states).
   for (PublicationDecl& d : pagedMapPublicationDecls()) info.publications.push_back(std::move(d));
   info.checkParams = checkAsmParams;
@@ -272,6 +301,7 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
       map_.uploadTable(cache_->table());
       map_.renderPages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, coarse, slots, true);
       last_.invalidated = true;
+      capStops_ = 0;
       last_.coarsePages = int(coarse.size());
     }
   }
@@ -282,6 +312,8 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
     requests_ = gl::Texture::create2D(GL_R32UI, w, h);
     requestList_ = gl::Buffer::create(GLsizeiptr(4) * (1 + GLsizeiptr(w) * h), nullptr);
   }
+  superpages_ = ctx.params.getInt("asm.render") == kRenderSuperpages;
+  if (!superpages_) map_.releaseSuperpageTarget();
   const bool untilDone = ctx.params.getInt("asm.loop") == 1;
   int budget =
       untilDone ? std::numeric_limits<int>::max() : ctx.params.getInt("asm.pages.per.frame");
@@ -345,6 +377,10 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "asm.pool", poolPages);
   publishNumber(ctx, "asm.stop", last_.stop);
   publishNumber(ctx, "asm.requests.left", last_.requestsLeft);
+  if (last_.stop == kIterationCap) ++capStops_;
+  publishNumber(ctx, "asm.cap.stops", capStops_);
+  publishNumber(ctx, "asm.superpages", last_.superpages);
+  publishNumber(ctx, "asm.scene_draws", last_.sceneDraws);
   last_.requested = pages::sortUnique(last_.requestKeys);
   map_.publish(ctx,
                {.table = &cache_->table(),
@@ -417,8 +453,21 @@ bool AsmShadowMap::iterate(FrameContext& ctx, int iteration, int& budget) {
   if (!r.allocated.empty()) map_.uploadTable(cache_->table());
   pass.reset();
   if (timed) pass.emplace(ctx.timer, iterationPass("pages", iteration));
-  if (!r.allocated.empty())
-    map_.renderPages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, r.allocated, r.slots, false);
+  if (!r.allocated.empty()) {
+    if (superpages_) {
+      // The lecture's loop: bin the new pages into superpages, render each, copy its pages.
+      const std::vector<pages::Superpage> bins =
+          pages::binSuperpages(r.allocated, cache_->layout(), SL_RMSM_SUPERPAGE);
+      map_.renderSuperpages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, bins, cache_->table(),
+                            SL_RMSM_SUPERPAGE, false, nullptr, {}, {});
+      last_.superpages += int(bins.size());
+      last_.sceneDraws += int(bins.size());
+    } else {
+      map_.renderPages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, r.allocated, r.slots,
+                       false);
+      last_.sceneDraws += int(r.allocated.size());
+    }
+  }
   pass.reset();
   last_.newPages += int(r.allocated.size());
   const bool progressed = !r.allocated.empty() && budget > 0;

@@ -7,7 +7,8 @@
 // pass) → read back, sort, unique, allocate in the page cache (algo/asm: LRU eviction) → render
 // the new pages, until no request is left or asm.pages.per.frame new pages were rendered
 // (asm.loop = until-done: the paper's loop, until no page is requested, capped by
-// asm.iterations.cap and publishing what the cap left). asm.edge picks the edge test: the
+// asm.iterations.cap and publishing what the cap left; asm.render = superpages renders them as
+// the lecture's loop does, binned into superpages). asm.edge picks the edge test: the
 // screen-space shadow mask (the tool's) or a texel on a shadow edge of the map (the paper's).
 // Pages are kept between frames; a change of the light or the geometry drops them all.
 // Directional only.
@@ -63,7 +64,13 @@ class AsmShadowMap : public Technique {
     /// one more edge-finding pass (its pages not allocated).
     int stop = 0;
     int requestsLeft = 0;
+    /// asm.render = superpages: superpages rendered, all iterations (0 with pages); the
+    /// iterations' scene draws (one per superpage or per new page; coarse map aside).
+    int superpages = 0;
+    int sceneDraws = 0;
   };
+  /// asm.render: rmsm.render's values, the same order.
+  static constexpr int kRenderSuperpages = 0, kRenderPages = 1;
   /// FrameResult::stop (asm.stop): no new page was requested (the paper's end of the loop),
   /// the iteration cap, the per-frame page budget, the pool (only pages used this frame).
   enum Stop : int { kConverged = 0, kIterationCap = 1, kBudget = 2, kPoolFull = 3 };
@@ -104,6 +111,8 @@ class AsmShadowMap : public Technique {
   gl::Buffer requestList_;  ///< count + one key per pixel
   DepthMapView view_;
   FrameResult last_;
+  bool superpages_ = false;  ///< this frame's asm.render = superpages
+  int capStops_ = 0;         ///< frames since the last invalidation that the iteration cap stopped
 };
 
 }  // namespace sl

@@ -2,6 +2,7 @@
 #include "PagedMap.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -304,16 +305,19 @@ std::int64_t PagedMap::renderSuperpages(const DepthProgram& depth, const SceneGp
                                         const glm::mat4& viewProj,
                                         std::span<const pages::Superpage> superpages,
                                         const pages::PageTable& table, int superpageSize,
-                                        gl::GpuTimer& timer, const std::string& renderPass,
+                                        bool clearPool, gl::GpuTimer* timer,
+                                        const std::string& renderPass,
                                         const std::string& copyPass) {
   const int ps = layout_.pageSize;
   const int side = std::min(superpageSize, layout_.virtualResolution);
   if (!superpage_ || superpage_.width() != side) {
-    createDepthTarget(superpage_, superpageFbo_, side, side, "rmsm superpage target");
+    createDepthTarget(superpage_, superpageFbo_, side, side, "superpage target");
   }
-  {
+  using Scope = std::optional<gl::GpuTimer::Scope>;  // empty: the caller times the step
+  if (clearPool) {
     // Free slots hold 1 (far) as on the page-by-page path: the pools are then equal.
-    auto pass = timer.scope(renderPass);
+    Scope pass;
+    if (timer) pass.emplace(*timer, renderPass);
     const float one = 1.0f;
     glClearNamedFramebufferfv(poolFbo_.id(), GL_DEPTH, 0, &one);
   }
@@ -324,13 +328,15 @@ std::int64_t PagedMap::renderSuperpages(const DepthProgram& depth, const SceneGp
     texels += std::int64_t(blockPages * ps) * (blockPages * ps);
     const int x0 = s.x * s.pagesPerSide, y0 = s.y * s.pagesPerSide;
     {
-      auto pass = timer.scope(renderPass);
+      Scope pass;
+      if (timer) pass.emplace(*timer, renderPass);
       beginDepthPass(superpageFbo_.id(), blockPages * ps, blockPages * ps, true);
       depth.use();
       depth.set("u_lightViewProj", regionViewProj(viewProj, s.level, x0, y0, blockPages, layout_));
       depth.draw(scene);
     }
-    auto pass = timer.scope(copyPass);
+    Scope pass;
+    if (timer) pass.emplace(*timer, copyPass);
     for (const pages::PageId& p : s.pages) {
       const int slot = table.slot(p);
       if (slot < 0) throw std::logic_error("renderSuperpages: a page without a slot");

@@ -84,17 +84,20 @@ class PagedMap {
   void renderPages(const DepthProgram& depth, const SceneGpu& scene, const glm::mat4& viewProj,
                    std::span<const pages::PageId> pageIds, std::span<const int> slots,
                    bool clearPool);
-  /// Lefohn et al.'s render step: the pool cleared, then per superpage (its level's block of
-  /// `superpageSize`² texels, or the whole level when smaller) one depth pass of `viewProj`
-  /// cropped to the block (regionViewProj) into the superpage target (timed as `renderPass`),
-  /// then each of its pages copied (glCopyImageSubData) to its slot in `table` (`copyPass`).
-  /// Creates the target of min(superpageSize, virtual.resolution)² texels on first use.
-  /// Returns the texels the superpages' viewports cover (each cleared and rasterised).
+  /// The lecture's render step (Lefohn et al.; the same steps in its ASM loop): the pool
+  /// cleared when `clearPool` (rmsm renders every page every frame; asm keeps its cached
+  /// pages, and each copied page overwrites its whole slot), then per superpage (its level's
+  /// block of `superpageSize`² texels, or the whole level when smaller) one depth pass of
+  /// `viewProj` cropped to the block (regionViewProj) into the superpage target (timed as
+  /// `renderPass`), then each of its pages copied (glCopyImageSubData) to its slot in `table`
+  /// (`copyPass`). With `timer` null the caller times the whole step. Creates the target of
+  /// min(superpageSize, virtual.resolution)² texels on first use. Returns the texels the
+  /// superpages' viewports cover (each cleared and rasterised).
   std::int64_t renderSuperpages(const DepthProgram& depth, const SceneGpu& scene,
                                 const glm::mat4& viewProj,
                                 std::span<const pages::Superpage> superpages,
-                                const pages::PageTable& table, int superpageSize,
-                                gl::GpuTimer& timer, const std::string& renderPass,
+                                const pages::PageTable& table, int superpageSize, bool clearPool,
+                                gl::GpuTimer* timer, const std::string& renderPass,
                                 const std::string& copyPass);
   /// Frees the superpage target (the page-by-page path does not need it).
   void releaseSuperpageTarget();

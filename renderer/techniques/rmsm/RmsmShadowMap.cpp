@@ -346,8 +346,8 @@ void RmsmShadowMap::allocate(FrameContext& ctx) {
 void RmsmShadowMap::renderPages(FrameContext& ctx) {
   if (ctx.params.getInt("rmsm.render") == kRenderSuperpages) {
     last_.renderTexels = map_.renderSuperpages(depthProgram_, ctx.sceneGpu, view_.lightViewProj,
-                                               last_.superpages, *table_, SL_RMSM_SUPERPAGE,
-                                               ctx.timer, "rmsm superpages", "rmsm copy");
+                                               last_.superpages, *table_, SL_RMSM_SUPERPAGE, true,
+                                               &ctx.timer, "rmsm superpages", "rmsm copy");
     last_.sceneDraws = int(last_.superpages.size());
     return;
   }

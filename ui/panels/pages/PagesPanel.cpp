@@ -109,12 +109,13 @@ PagesPanel::PagesPanel(QWidget* parent) : PublicationPanel(parent) {
 
 std::set<std::string> PagesPanel::observedKeys() const {
   // asm.*: the cache's own counts, shown next to the cells the table draws.
-  return {"pages.table.*",     "pages.served",     "pages.requests.heat",
-          "pages.pool.levels", "pages.pool.depth", "pages.pool.columns",
-          "pages.requested",   "pages.allocated",  "pages.coarsened",
-          "pages.pool",        "pages.superpages", "pages.requests.compacted",
-          "pages.scene_draws", "asm.new",          "asm.hits",
-          "asm.evicted"};
+  return {"pages.table.*",      "pages.served",     "pages.requests.heat",
+          "pages.pool.levels",  "pages.pool.depth", "pages.pool.columns",
+          "pages.requested",    "pages.allocated",  "pages.coarsened",
+          "pages.pool",         "pages.superpages", "pages.requests.compacted",
+          "pages.scene_draws",  "asm.new",          "asm.hits",
+          "asm.evicted",        "asm.stop",         "asm.requests.left",
+          "asm.iterations.run", "asm.cap.stops"};
 }
 
 void PagesPanel::showPublication(const sl::Publication& pub) {
@@ -201,6 +202,31 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
   history_.push_back({double(pub.frameIndex), allocated, requested, pool, double(count(PS::New)),
                       double(count(PS::Evicted))});
   while (history_.size() > kHistory) history_.pop_front();
+  // ASM's refinement loop: why it stopped this frame, and in how many frames since the pages
+  // were last dropped the iteration cap stopped it (never silent, even once later frames, or
+  // frames before this panel opened, converged).
+  const double stop = number("asm.stop"), left = number("asm.requests.left");
+  const double capStops = cache ? number("asm.cap.stops") : -1.0;
+  if (cache && stop >= 0.0) {
+    QString why;
+    if (stop == 0.0)
+      why = tr("converged (no page requested)");
+    else if (stop == 1.0)
+      why = tr("<b><font color=\"#e04030\">stopped by the iteration cap: %1 pages still "
+               "requested</font></b>")
+                .arg(left);
+    else if (stop == 2.0)
+      why = tr("the per-frame page budget was spent: %1 requests wait").arg(left);
+    else
+      why = tr("the pool held only pages used this frame: %1 requests refused").arg(left);
+    QString line = tr("<br>Refinement loop this frame: iterations run %1; %2.")
+                       .arg(number("asm.iterations.run"))
+                       .arg(why);
+    if (capStops > 0)
+      line += tr(" <b>Frames the iteration cap stopped since the pages were last dropped: %1</b>.")
+                  .arg(capStops);
+    info_->setText(info_->text() + line);
+  }
   PlotWidget::Series used{cache ? tr("held") : tr("allocated"), {}, QColor(60, 190, 90)};
   PlotWidget::Series asked{tr("unique pages requested"), {}, QColor(230, 60, 50)};
   PlotWidget::Series fresh{tr("allocated this frame"), {}, QColor(kStates[int(PS::New)].colour)};
@@ -225,6 +251,9 @@ void PagesPanel::showPublication(const sl::Publication& pub) {
             {QStringLiteral("pool"), pool},
             {QStringLiteral("coarsened"), coarsened},
             {QStringLiteral("cache"), cache},
+            {QStringLiteral("loop_stop"), cache ? stop : -1.0},
+            {QStringLiteral("loop_requests_left"), cache ? left : -1.0},
+            {QStringLiteral("cap_stops"), capStops},
             {QStringLiteral("cells"), drawnCells}};
   redraw();
 }

@@ -176,7 +176,7 @@ std::optional<std::string> fitPostPerspective(const ViewFrustum& view,
     return std::nullopt;
   };
 
-  if (glm::length(glm::cross(L, fwd)) < 1e-9)
+  if (glm::length(glm::cross(L, fwd)) < 1e-5)  // float lights and cameras: within 2 arc s
     return fallBack(
         "psm: the light is exactly along the view axis: its post-perspective map would be the "
         "orthographic map along that axis (no warp), so the uniform map is used");

@@ -248,38 +248,43 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
   map_.render(ctx, ctx.params.getInt("resolution"), mapView, /*outline=*/!fit_.warped());
 }
 
+std::optional<std::string> PerspectiveShadowMap::fitPostPerspectiveFor(
+    const Scene& scene, const Camera& camera, float aspect, glm::vec3 towards,
+    const ParamSet& params, warp::PsmFit& out) {
+  // Receivers: view frustum ∩ scene bounds with the near plane pushed to the nearest scene
+  // part in view (the whole scene when the camera sees none of it); casters: those points
+  // and where their rays towards the light leave the bounds.
+  const warp::ViewFrustum view = warp::ViewFrustum::fromCamera(camera, aspect);
+  double nearM = params.get("psm.near");
+  if (nearM <= 0.0) {
+    std::vector<Aabb> boxes;
+    for (const MeshPrimitive& prim : scene.primitives) {
+      Aabb b;
+      for (const glm::vec3& p : prim.positions) b.extend(p);
+      boxes.push_back(b);
+    }
+    nearM = warp::nearestDepthInView(view, boxes).value_or(camera.nearM);
+  }
+  nearM = std::clamp(nearM, double(camera.nearM), double(camera.farM));
+  std::vector<glm::vec3> focus = intersectFrustumWithBox(
+      camera.frustumCorners(aspect, float(nearM), camera.farM), scene.bounds);
+  const auto box = scene.bounds.corners();
+  if (focus.empty()) focus.assign(box.begin(), box.end());
+  const std::vector<glm::dvec3> body(focus.begin(), focus.end());
+  const std::vector<glm::dvec3> casters = warp::castersTowardsLight(
+      body, glm::dvec3(towards), glm::dvec3(scene.bounds.min), glm::dvec3(scene.bounds.max));
+  warp::PsmSettings settings;
+  settings.extraSlideM = params.get("psm.slide");
+  return warp::fitPostPerspective(view, body, casters, glm::dvec3(towards), settings, out);
+}
+
 void PerspectiveShadowMap::renderPostPerspective(FrameContext& ctx) {
   const glm::vec3 towards = ctx.light.directionalTowards();
   DepthMapView mapView;
   {
     auto pass = ctx.timer.scope("warp");
-    // Receivers: view frustum ∩ scene bounds with the near plane pushed to the nearest scene
-    // part in view (the whole scene when the camera sees none of it); casters: those points
-    // and where their rays towards the light leave the bounds.
-    const warp::ViewFrustum view = warp::ViewFrustum::fromCamera(ctx.camera, ctx.aspect);
-    double nearM = ctx.params.get("psm.near");
-    if (nearM <= 0.0) {
-      std::vector<Aabb> boxes;
-      for (const MeshPrimitive& prim : ctx.scene.primitives) {
-        Aabb b;
-        for (const glm::vec3& p : prim.positions) b.extend(p);
-        boxes.push_back(b);
-      }
-      nearM = warp::nearestDepthInView(view, boxes).value_or(ctx.camera.nearM);
-    }
-    nearM = std::clamp(nearM, double(ctx.camera.nearM), double(ctx.camera.farM));
-    std::vector<glm::vec3> focus = intersectFrustumWithBox(
-        ctx.camera.frustumCorners(ctx.aspect, float(nearM), ctx.camera.farM), ctx.scene.bounds);
-    const auto box = ctx.scene.bounds.corners();
-    if (focus.empty()) focus.assign(box.begin(), box.end());
-    const std::vector<glm::dvec3> body(focus.begin(), focus.end());
-    const std::vector<glm::dvec3> casters =
-        warp::castersTowardsLight(body, glm::dvec3(towards), glm::dvec3(ctx.scene.bounds.min),
-                                  glm::dvec3(ctx.scene.bounds.max));
-    warp::PsmSettings settings;
-    settings.extraSlideM = ctx.params.get("psm.slide");
     if (auto err =
-            warp::fitPostPerspective(view, body, casters, glm::dvec3(towards), settings, psmFit_))
+            fitPostPerspectiveFor(ctx.scene, ctx.camera, ctx.aspect, towards, ctx.params, psmFit_))
       throw std::runtime_error(*err);
     if (psmFit_.uniform()) {
       LightFit uniformFit;

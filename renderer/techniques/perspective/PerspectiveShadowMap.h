@@ -35,6 +35,12 @@ class PerspectiveShadowMap : public SingleDepthMapTechnique {
   const warp::WarpFit& lastFit() const { return fit_; }
   /// psm with psm.method = post-perspective: the last frame's Stamminger-Drettakis fit.
   const warp::PsmFit& lastPsmFit() const { return psmFit_; }
+  /// The post-perspective fit psm renders for this scene, camera and light with `params`
+  /// (psm's psm.near, psm.slide): receivers, casters, the pushed near plane.
+  static std::optional<std::string> fitPostPerspectiveFor(const Scene& scene, const Camera& camera,
+                                                          float aspect, glm::vec3 towards,
+                                                          const ParamSet& params,
+                                                          warp::PsmFit& out);
 
  private:
   void renderPostPerspective(FrameContext& ctx);

@@ -23,7 +23,8 @@ ParamDecl warpEtaDecl(double defaultEta) {
           .step = 0.05,
           .help =
               "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), "
-              "1 PSM (n' = n). Shared by psm, lispsm (which differ only in the default) and "
+              "1 their light-space PSM (n' = n). Shared by psm with psm.method = lispsm-eta1, "
+              "lispsm (which differ only in the default) and "
               "cascades with partition.warp (per partition: n and f of its slice) and "
               "face-partition (one warp per face); tsm derives it from warp.focus and publishes "
               "it (warp.eta)."};

@@ -53,11 +53,25 @@ TechniqueInfo FacePartitionShadowMap::info() {
                .minValue = 1,
                .maxValue = partition::kMaxFaceZSplits,
                .step = 1,
-               .help = "k: the view frustum (clipped to the scene) is first cut into k slices "
-                       "at the log split z_i = n (f/n)^(i/k), as cascades do, and each slice "
-                       "is face-partitioned on its own: one warped map per (slice, face), 5 k "
-                       "maps (Lloyd et al. 2006's combined scheme). 1: face partitioning "
-                       "alone."});
+               .help = "k: face partitions combined with z-partitioning at the log split "
+                       "z_i = n (f/n)^(i/k) of the view frustum clipped to the scene (Lloyd et "
+                       "al. 2006's combined scheme), nested as face.nesting says: one warped "
+                       "map per (slice, face), 5 k maps. 1: face partitioning alone."});
+  p.push_back({.key = "face.nesting",
+               .label = "Nesting",
+               .group = "Face partitions",
+               .type = ParamType::Enum,
+               .defaultValue = 0,
+               .minValue = 0,
+               .maxValue = 1,
+               .step = 1,
+               .enumNames = {"faces-first", "zsplits-first"},
+               .help = "faces-first (the paper: the view frustum's face partitions, each then "
+                       "cut along its length at the split depths; every slice selects by the "
+                       "whole frustum's faces) or zsplits-first (the tool's earlier order: the "
+                       "frustum cut into slices first, each slice face-partitioned along its "
+                       "own faces, so every slice has its own near-face map). Only matters for "
+                       "face.zsplits > 1."});
   TechniqueInfo info{
       "face-partition", "Face-partitioned shadow maps",
       "Lloyd et al. 2006 §5.1: the view frustum split along its faces as seen from the light "
@@ -146,7 +160,9 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
     partition::FacePartitionFit fit;
     if (auto err = partition::fitFacePartitions(
             ctx.camera, ctx.aspect, ctx.scene.bounds, glm::dvec3(ctx.light.directionalTowards()),
-            ctx.params.get("warp.eta"), fit, ctx.params.getInt("face.zsplits")))
+            ctx.params.get("warp.eta"), fit, ctx.params.getInt("face.zsplits"),
+            ctx.params.getInt("face.nesting") == 0 ? partition::FaceNesting::FacesFirst
+                                                   : partition::FaceNesting::ZSplitsFirst))
       throw std::runtime_error(*err);
     fit_ = std::move(fit);
     views_.assign(std::size_t(fit_.slots()), DepthMapView{});

@@ -260,7 +260,6 @@ TEST(FacePartitionFit, BadInputIsNamed) {
   }
 }
 
-
 // Faces first (the paper's nesting): every slice selects with the whole frustum's faces, so
 // a point takes the face of face partitioning alone (k = 1) and the slice of its view depth;
 // every part lies inside its slice's depth range and inside its face's partition of the

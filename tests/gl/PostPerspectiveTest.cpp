@@ -9,6 +9,7 @@
 
 #include "GlTestEnv.h"
 #include "algo/warp/PostPerspective.h"
+#include "panels/analysis/StorageScheme.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
 
 namespace sl {
@@ -128,6 +129,26 @@ TEST(PostPerspective, BeatsTheLightSpaceEtaOneReadingOnDefault) {
   EXPECT_LT(pp.errorPct * 4.0, eta1.errorPct);
   EXPECT_LT(pp.errorPct, 2.0 * lispsm.errorPct);
   EXPECT_GT(unpushed.errorPct, 4.0 * pp.errorPct);
+}
+
+// The Storage factor panel cannot analyse the post-perspective map (Lloyd et al. §4.4): it
+// analyses their eta = 1 stand-in and says so; for lispsm-eta1 that is the map itself.
+TEST(PostPerspective, StoragePanelSaysThePostPerspectiveMapIsNotAnalysed) {
+  for (double method : {0.0, 1.0}) {
+    ui::StorageInputs in;
+    ui::schemeFromDeclarations(
+        Renderer::findTechnique("psm"),
+        [&](const std::string& key) {
+          return key == "psm.method" ? std::optional<double>(method)
+                 : key == "warp.eta" ? std::optional<double>(1.0)
+                                     : std::optional<double>();
+        },
+        [](const std::string&) { return std::optional<double>(); }, in);
+    EXPECT_EQ(in.settings.scheme, partition::Scheme::Eta);
+    EXPECT_EQ(in.settings.eta, 1.0);
+    EXPECT_EQ(in.schemeLabel.find("not analysed") != std::string::npos, method == 0.0)
+        << in.schemeLabel;
+  }
 }
 
 }  // namespace sl

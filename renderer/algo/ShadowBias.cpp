@@ -60,12 +60,54 @@ glm::vec4 mapUvzw(const DepthMapFrame& map, glm::vec3 P) {
   return glm::vec4(glm::vec3(c) / w * 0.5f + 0.5f, w);
 }
 
+namespace {
+
+/// d(clip xyz / w) / dP along world direction d (the quotient rule on the map's matrix).
+glm::vec3 ndcDerivative(const glm::mat4& M, const glm::vec4& h, glm::vec3 d) {
+  const glm::vec4 dh = M * glm::vec4(d, 0.0f);
+  return (glm::vec3(dh) * h.w - glm::vec3(h) * dh.w) / (h.w * h.w);
+}
+
+/// Two unit vectors perpendicular to unit `l` and to each other.
+void perpendicularPair(glm::vec3 l, glm::vec3& e1, glm::vec3& e2) {
+  const glm::vec3 a = std::abs(l.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
+  e1 = glm::normalize(a - glm::dot(a, l) * l);
+  e2 = glm::cross(l, e1);
+}
+
+}  // namespace
+
+glm::vec2 projectiveMetresPerUv(const glm::mat4& M, glm::vec3 P, glm::vec3 towardsLight) {
+  const glm::vec4 h = M * glm::vec4(P, 1.0f);
+  glm::vec3 e1, e2;
+  perpendicularPair(glm::normalize(towardsLight), e1, e2);
+  // uv = 0.5 ndc + 0.5: J's columns are d(uv)/d(e1), d(uv)/d(e2).
+  const glm::vec2 a = 0.5f * glm::vec2(ndcDerivative(M, h, e1));
+  const glm::vec2 b = 0.5f * glm::vec2(ndcDerivative(M, h, e2));
+  const float det = a.x * b.y - b.x * a.y;
+  if (!(std::abs(det) > 0.0f)) return glm::vec2(0.0f);
+  // J^-1 = [b.y, -b.x; -a.y, a.x] / det: its columns are metres (in e1, e2) per unit u, v.
+  return glm::vec2(glm::length(glm::vec2(b.y, -a.y)), glm::length(glm::vec2(-b.x, a.x))) /
+         std::abs(det);
+}
+
+float projectiveDepthPerM(const glm::mat4& M, glm::vec3 P, glm::vec3 towardsLight) {
+  const glm::vec4 h = M * glm::vec4(P, 1.0f);
+  return std::abs(0.5f * ndcDerivative(M, h, glm::normalize(towardsLight)).z);
+}
+
 MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
                           glm::vec3 towardsLight, glm::vec2 localTexelUv,
                           const ShadowBiasSettings& s) {
   const float w = mapUvzw(map, P).w;
-  const float texelM = std::max(localTexelUv.x * map.extentM.x * std::pow(w, map.extentWPower.x),
-                                localTexelUv.y * map.extentM.y * std::pow(w, map.extentWPower.y));
+  float texelM = 0.0f;
+  if (map.projective) {
+    const glm::vec2 perUv = projectiveMetresPerUv(map.viewProj, P, towardsLight);
+    texelM = std::max(localTexelUv.x * perUv.x, localTexelUv.y * perUv.y);
+  } else {
+    texelM = std::max(localTexelUv.x * map.extentM.x * std::pow(w, map.extentWPower.x),
+                      localTexelUv.y * map.extentM.y * std::pow(w, map.extentWPower.y));
+  }
   const float cosL = std::clamp(glm::dot(N, towardsLight), -1.0f, 1.0f);
   const float sinL = std::sqrt(std::max(1.0f - cosL * cosL, 0.0f));
   const glm::vec3 offset = P + N * (s.normalTexels * texelM * sinL);
@@ -75,7 +117,8 @@ MapReceiver receiverInMap(const DepthMapFrame& map, glm::vec3 P, glm::vec3 N,
   r.z = uvz.z;
   r.gradient = receiverDepthGradient(lightPlaneMatrix(map.viewProj), N, P);
   r.bias = shadowDepthBias(s, r.gradient, localTexelUv, texelM,
-                           windowDepthPerM(map.depthPerM, w, map.depthWPower));
+                           map.projective ? projectiveDepthPerM(map.viewProj, P, towardsLight)
+                                          : windowDepthPerM(map.depthPerM, w, map.depthWPower));
   return r;
 }
 

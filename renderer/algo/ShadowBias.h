@@ -76,7 +76,20 @@ struct DepthMapFrame {
   /// p = (1, 2), q = 1. Orthographic: w = 1, the powers do not matter.
   glm::vec2 extentWPower{1.0f};
   float depthWPower = 2.0f;
+  /// A general projective map (the post-perspective PSM: the camera's projection composed
+  /// with the light's): metres per uv and depth per metre are taken from the matrix's
+  /// derivatives at the point (projectiveMetresPerUv, projectiveDepthPerM) instead of
+  /// extentM / depthPerM and the w powers, which it ignores.
+  bool projective = false;
 };
+
+/// Metres per unit of light u and v at world point P of a projective map whose light rays
+/// run along `towardsLight` (uv is constant along them): the 2x2 derivative of uv across the
+/// light (two unit directions perpendicular to it), inverted; the lengths of its columns.
+/// For an orthographic map this is the extent of its uv, for a perspective one extent x w.
+glm::vec2 projectiveMetresPerUv(const glm::mat4& viewProj, glm::vec3 P, glm::vec3 towardsLight);
+/// |d(window depth) / d(metre along the light)| at P of a projective map.
+float projectiveDepthPerM(const glm::mat4& viewProj, glm::vec3 P, glm::vec3 towardsLight);
 
 /// World point P in `map`: xyz = light uv and window depth (after the divide by clip w),
 /// w = clip w (1 for an orthographic map; kept >= 1e-6 behind a perspective light, where

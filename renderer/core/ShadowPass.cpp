@@ -108,6 +108,7 @@ DepthMapView depthMapView(const DepthMapFrame& frame) {
   v.extentWPower = frame.extentWPower;
   v.depthPerMOverride = frame.depthPerM;
   v.depthWPower = frame.depthWPower;
+  v.projective = frame.projective;
   return v;
 }
 
@@ -127,6 +128,7 @@ void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> m
     resolve.set(("u_mapDepthPerM" + at).c_str(), m.depthPerMAtUnitW());
     resolve.set(("u_mapExtentWPower" + at).c_str(), m.extentWPower);
     resolve.set(("u_mapDepthWPower" + at).c_str(), m.depthWPower);
+    resolve.set(("u_mapProjective" + at).c_str(), m.projective ? 1 : 0);
   }
 }
 

@@ -77,6 +77,9 @@ struct DepthMapView {
   /// How metres per uv and depth per metre scale with clip w (sl::DepthMapFrame).
   glm::vec2 extentWPower{1.0f};
   float depthWPower = 2.0f;
+  /// A general projective map (sl::DepthMapFrame::projective): local texel and depth per
+  /// metre from the matrix's derivatives at the receiver.
+  bool projective = false;
   /// Window depth per metre along the light at clip w = 1 (sl::depthPerMAtUnitW).
   float depthPerMAtUnitW() const;
 };

@@ -64,6 +64,10 @@ uniform float u_mapDepthPerM[SL_MAX_DEPTH_MAPS];  // window depth per metre at c
 // extent * w^p, depth per metre = depthPerM / w^q; spot (1, 1; 2), light-space warp (1, 2; 1).
 uniform vec2 u_mapExtentWPower[SL_MAX_DEPTH_MAPS];
 uniform float u_mapDepthWPower[SL_MAX_DEPTH_MAPS];
+// 1: a general projective map (the post-perspective PSM): metres per uv and depth per metre
+// from the matrix's derivatives at the point, across and along the light (the four arrays
+// above are ignored). CPU: sl::projectiveMetresPerUv, sl::projectiveDepthPerM.
+uniform int u_mapProjective[SL_MAX_DEPTH_MAPS];
 // The shared parameters (shadowMapParamDecls).
 uniform int u_pcfRadius;        // pcf
 uniform float u_biasNormal;     // bias.normal, local texels
@@ -113,6 +117,46 @@ float localTexelM(int map, vec2 t, float w) {
   return max(t.x * scale.x, t.y * scale.y);
 }
 
+// d(ndc) / dP along world direction d at clip position h of a projective map.
+vec3 mapNdcDerivative(int map, vec4 h, vec3 d) {
+  vec4 dh = u_mapViewProj[map] * vec4(d, 0.0);
+  return (dh.xyz * h.w - h.xyz * dh.w) / (h.w * h.w);
+}
+
+// Metres per unit light u, v at P of a projective map: d(uv) across the light (two unit
+// directions perpendicular to it), inverted. CPU: sl::projectiveMetresPerUv.
+vec2 projectiveMetresPerUv(int map, vec3 P) {
+  vec3 l = normalize(towardsLight(P));
+  vec3 a0 = abs(l.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 0.0, 1.0);
+  vec3 e1 = normalize(a0 - dot(a0, l) * l);
+  vec3 e2 = cross(l, e1);
+  vec4 h = u_mapViewProj[map] * vec4(P, 1.0);
+  vec2 a = 0.5 * mapNdcDerivative(map, h, e1).xy;
+  vec2 b = 0.5 * mapNdcDerivative(map, h, e2).xy;
+  float det = a.x * b.y - b.x * a.y;
+  if (!(abs(det) > 0.0)) return vec2(0.0);
+  return vec2(length(vec2(b.y, -a.y)), length(vec2(-b.x, a.x))) / abs(det);
+}
+
+// Largest local texel of the map at P (light uv c.xy, clip w c.w), in metres.
+float localTexelMAt(int map, vec2 t, vec4 c, vec3 P) {
+  if (u_mapProjective[map] != 0) {
+    vec2 perUv = projectiveMetresPerUv(map, P);
+    return max(t.x * perUv.x, t.y * perUv.y);
+  }
+  return localTexelM(map, t, c.w);
+}
+
+// Window depth per metre along the light at P (sl::windowDepthPerM; projective:
+// sl::projectiveDepthPerM).
+float depthPerMAt(int map, float w, vec3 P) {
+  if (u_mapProjective[map] != 0) {
+    vec4 h = u_mapViewProj[map] * vec4(P, 1.0);
+    return abs(0.5 * mapNdcDerivative(map, h, normalize(towardsLight(P))).z);
+  }
+  return u_mapDepthPerM[map] / pow(w, u_mapDepthWPower[map]);
+}
+
 // CPU: sl::receiverInMap. The map is selected for P; the normal offset is that map's local
 // texel; the offset receiver is selected again (it may cross into a neighbouring map, whose
 // local texel then sets the slope term).
@@ -120,7 +164,7 @@ ShadowCoord shadowLookupCoord(vec3 P, vec3 N) {
   int map = selectShadowMap(P);
   vec4 c = mapUvzw(map, P);
   vec2 t = localTexelLightUv(map, c.xy);
-  float texelM = localTexelM(map, t, c.w);
+  float texelM = localTexelMAt(map, t, c, P);
   float cosL = clamp(dot(N, towardsLight(P)), -1.0, 1.0);
   float sinL = sqrt(max(1.0 - cosL * cosL, 0.0));
   vec3 Po = P + N * (u_biasNormal * texelM * sinL);
@@ -129,14 +173,14 @@ ShadowCoord shadowLookupCoord(vec3 P, vec3 N) {
     map = offsetMap;
     c = mapUvzw(map, Po);
     t = localTexelLightUv(map, c.xy);
-    texelM = localTexelM(map, t, c.w);
+    texelM = localTexelMAt(map, t, c, Po);
   }  // else the offset moved the point by under a texel: same local texel size and w
   vec3 uvz = mapUvzw(map, Po).xyz;
   g_receiverUv = uvz.xy;
   g_receiverZ = uvz.z;
   g_receiverDz = receiverDepthGradient(map, N, P);
   // Window depth per metre at the receiver (sl::windowDepthPerM): falls with w^q.
-  float depthPerM = u_mapDepthPerM[map] / pow(c.w, u_mapDepthWPower[map]);
+  float depthPerM = depthPerMAt(map, c.w, P);
   // Capped at a slope of 10 (84 degrees from the light) so grazing receivers do not leak.
   float slope = min(abs(g_receiverDz.x) * t.x + abs(g_receiverDz.y) * t.y,
                     10.0 * texelM * depthPerM);

@@ -5,6 +5,7 @@
 // analysis' face+cascades, and the messages for bad input.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 #include <set>
 
@@ -130,7 +131,7 @@ TEST(FacePartitionFit, AnalysisFacePartitioningLowersStorageWhenFrustaDuel) {
   }
 }
 
-// The combined scheme (face.zsplits = k): the clipped frustum cut at the log split
+// The combined scheme (face.zsplits = k), slices first: the clipped frustum cut at the log split
 // z_i = n (f/n)^(i/k) exactly (Splits.h), every part inside its slice's depth range, in the
 // slot of its (slice, face); with a scene box around the whole frustum (no clipping) the
 // rendered parts are the analysis' Scheme::FaceCascades parts (the same bodies, the same
@@ -143,7 +144,8 @@ TEST(FacePartitionFit, ZSplitsAreTheAnalysedFaceCascades) {
     for (int k : {2, 3, 4}) {
       SCOPED_TRACE(k);
       FacePartitionFit fit;
-      ASSERT_FALSE(fitFacePartitions(lookingDownMinusZ(), kAspect, huge, l, 0.0, fit, k));
+      ASSERT_FALSE(fitFacePartitions(lookingDownMinusZ(), kAspect, huge, l, 0.0, fit, k,
+                                     FaceNesting::ZSplitsFirst));
       const warp::ViewFrustum& v = fit.view;
       EXPECT_EQ(fit.splits, splitDistances(SplitScheme::Log, v.nearM, v.farM, k));
       EXPECT_EQ(fit.slots(), 5 * k);
@@ -196,7 +198,8 @@ TEST(FacePartitionFit, ZSplitSelectionIsTheSliceThenTheExitFace) {
   const Aabb box = groundBox();
   for (const glm::dvec3& l : {towards(180, 14), towards(0, 14), towards(120, 40)}) {
     FacePartitionFit fit;
-    ASSERT_FALSE(fitFacePartitions(lookingDownMinusZ(), kAspect, box, l, 0.0, fit, 3));
+    ASSERT_FALSE(fitFacePartitions(lookingDownMinusZ(), kAspect, box, l, 0.0, fit, 3,
+                                   FaceNesting::ZSplitsFirst));
     const warp::ViewFrustum& v = fit.view;
     std::set<int> used;
     int tested = 0;
@@ -254,6 +257,64 @@ TEST(FacePartitionFit, BadInputIsNamed) {
     EXPECT_NE(e->find("face.zsplits must be in 1..4 (got " + std::to_string(k) + ")"),
               std::string::npos)
         << *e;
+  }
+}
+
+// Faces first (the paper's nesting): every slice selects with the whole frustum's faces, so
+// a point takes the face of face partitioning alone (k = 1) and the slice of its view depth;
+// every part lies inside its slice's depth range and inside its face's partition of the
+// whole frustum.
+TEST(FacePartitionFit, FacesFirstCutsEachFacePartitionAlongItsLength) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), w(0.0, 1.0);
+  const Aabb box = groundBox();
+  for (const glm::dvec3& l : {towards(180, 14), towards(0, 14), towards(120, 40)}) {
+    FacePartitionFit one, fit, zFirst;
+    ASSERT_FALSE(fitFacePartitions(lookingDownMinusZ(), kAspect, box, l, 0.0, one, 1));
+    ASSERT_FALSE(fitFacePartitions(lookingDownMinusZ(), kAspect, box, l, 0.0, fit, 3,
+                                   FaceNesting::FacesFirst));
+    ASSERT_FALSE(fitFacePartitions(lookingDownMinusZ(), kAspect, box, l, 0.0, zFirst, 3,
+                                   FaceNesting::ZSplitsFirst));
+    EXPECT_EQ(fit.splits, zFirst.splits);
+    for (int s = 0; s < 3; ++s)
+      for (int f = 0; f < 6; ++f)
+        EXPECT_EQ(fit.selection.planes[std::size_t(6 * s + f)],
+                  one.selection.planes[std::size_t(f)]);
+    for (const FacePart& p : fit.parts) {
+      EXPECT_GE(p.nearM, fit.splits[std::size_t(p.slice)] - 1e-9 * fit.view.farM);
+      EXPECT_LE(p.farM, fit.splits[std::size_t(p.slice) + 1] + 1e-9 * fit.view.farM);
+      if (p.face < 0) continue;
+      for (const glm::dvec3& q : p.body) {  // inside its face's partition of the whole frustum
+        double gap = 0.0;
+        const int whole = selectFacePartition(one.selection, q, &gap);
+        if (gap > 1e-6 * fit.view.farM) {
+          EXPECT_EQ(whole, faceSlot(p.face));
+        }
+      }
+    }
+    const warp::ViewFrustum& v = fit.view;
+    int tested = 0, differs = 0;
+    for (int i = 0; i < 2000; ++i) {
+      const double z = v.nearM + (v.farM - v.nearM) * w(rng);
+      const glm::dvec3 p = v.eye + z * v.forward + u(rng) * z * v.tanHalfX() * v.right() +
+                           u(rng) * z * v.tanHalfY() * v.up;
+      if (glm::any(glm::lessThan(p, glm::dvec3(box.min))) ||
+          glm::any(glm::greaterThan(p, glm::dvec3(box.max))))
+        continue;
+      double gap = 0.0, gapOne = 0.0;
+      const int map = selectFacePartition(fit.selection, p, &gap);
+      const int face = selectFacePartition(one.selection, p, &gapOne);
+      if (gap < 1e-9 * v.farM || gapOne < 1e-9 * v.farM) continue;
+      ++tested;
+      int slice = 0;
+      while (slice < 2 && z > fit.splits[std::size_t(slice) + 1]) ++slice;
+      EXPECT_EQ(map / kFaceSlots, slice);
+      EXPECT_EQ(map % kFaceSlots, face);
+      differs += selectFacePartition(zFirst.selection, p) != map;
+    }
+    EXPECT_GT(tested, 100);
+    std::printf("light (%.2f %.2f %.2f): %d points, %d served by another map slices-first\n", l.x,
+                l.y, l.z, tested, differs);
   }
 }
 

@@ -129,9 +129,10 @@ TEST(FacePartition, SelectionOnGpuMatchesTheCpuMirror) {
       ASSERT_FALSE(r->renderFrame(320, 180, 0));
       const FrameReadback fr = r->readback();
       partition::FacePartitionFit fit;
-      ASSERT_FALSE(
-          partition::fitFacePartitions(r->camera(), double(320.0f / 180.0f), r->scene()->bounds,
-                                       glm::dvec3(light.directionalTowards()), 0.0, fit, zsplits));
+      ASSERT_FALSE(partition::fitFacePartitions(r->camera(), double(320.0f / 180.0f),
+                                                r->scene()->bounds,
+                                                glm::dvec3(light.directionalTowards()), 0.0, fit,
+                                                zsplits, partition::FaceNesting::FacesFirst));
       std::size_t covered = 0, mismatched = 0, far = 0;
       std::set<int> used, slices;
       for (std::size_t i = 0; i < fr.positions.size(); ++i) {

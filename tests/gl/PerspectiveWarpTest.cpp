@@ -29,6 +29,11 @@ Measured measure(Renderer& r, const std::string& technique, int res,
   Measured m;
   EXPECT_FALSE(r.setTechnique(technique));
   EXPECT_FALSE(r.params().set("resolution", res));
+  // This file tests the light-space warps: psm as Lloyd et al.'s eta = 1 reading (its
+  // post-perspective map, the default, has PostPerspectiveTest).
+  if (technique == "psm") {
+    EXPECT_FALSE(r.params().set("psm.method", 1.0));
+  }
   for (const auto& [k, v] : set) EXPECT_FALSE(r.params().set(k, v)) << k;
   r.requestPublications({"warp.*"});
   EXPECT_FALSE(r.renderFrame(320, 180, 0));

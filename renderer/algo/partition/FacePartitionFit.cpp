@@ -52,7 +52,8 @@ int selectFacePartition(const FaceSelection& sel, const glm::dvec3& p, double* s
 std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect,
                                              const Aabb& sceneBounds,
                                              const glm::dvec3& towardsLight, double eta,
-                                             FacePartitionFit& out, int zSplits) {
+                                             FacePartitionFit& out, int zSplits,
+                                             FaceNesting nesting) {
   if (!sceneBounds.valid()) return "face partitions: the scene bounds are empty";
   if (!(eta >= -1.0 && eta <= 1.0)) return "face partitions: warp.eta must be in [-1, 1]";
   if (zSplits < 1 || zSplits > kMaxFaceZSplits)
@@ -104,10 +105,15 @@ std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect
   fit.selection.partitionOfFace.assign(6 * std::size_t(zSplits), -1);
   for (int s = 0; s < zSplits; ++s) {
     const double a = fit.splits[std::size_t(s)], b = fit.splits[std::size_t(s) + 1];
-    const std::array<glm::dvec4, 6> planes = frustumFacePlanes(fit.view, a, b);
+    // Faces first: the whole frustum's faces (and selection planes), bodies cut to the slice.
+    const bool facesFirst = nesting == FaceNesting::FacesFirst && zSplits > 1;
+    const double fa = facesFirst ? fit.view.nearM : a, fb = facesFirst ? fit.view.farM : b;
+    const std::array<glm::dvec4, 6> planes = frustumFacePlanes(fit.view, fa, fb);
     std::copy(planes.begin(), planes.end(), fit.selection.planes.begin() + 6 * s);
     const std::size_t first = fit.parts.size();
-    for (FacePartition& f : facePartitions(fit.view, a, b, y, clipMin, clipMax)) {
+    const std::optional<glm::dvec2> slab =
+        facesFirst ? std::optional<glm::dvec2>(glm::dvec2(a, b)) : std::nullopt;
+    for (FacePartition& f : facePartitions(fit.view, fa, fb, y, clipMin, clipMax, slab)) {
       FacePart part;
       part.face = f.face;
       part.slice = s;

@@ -82,12 +82,25 @@ struct FacePartitionFit {
 /// near face, which has no side edges, along the view vector, uniform where that looks
 /// square). `zSplits` = k > 1 first cuts the clipped frustum into k slices at the log split
 /// z_i = n (f/n)^(i/k) (splitDistances) and partitions each slice along its own faces (their
-/// combined scheme; StorageFactor's Scheme::FaceCascades is its analysis); k = 1 is face
+/// combined scheme; StorageFactor's Scheme::FaceCascades is its analysis), or (`nesting`
+/// FacesFirst, the paper's order) partitions the whole frustum along its faces and cuts each
+/// face partition at the same split depths; k = 1 is face
 /// partitioning alone. Scene-bound corners widen every map's depth range (casters). An error
 /// names the input (empty bounds, a bad camera, eta or zSplits out of range).
+/// How face partitions and depth slices nest when zSplits > 1.
+enum class FaceNesting {
+  /// The faces of the whole (clipped) frustum, then each face partition cut along its length
+  /// at the log split: Lloyd et al.'s "the view frustum or its face partitions along their
+  /// length". Every slice selects with the whole frustum's planes.
+  FacesFirst,
+  /// The frustum cut into depth slices first, then each slice face-partitioned along its
+  /// own faces (each slice has its own near face partition).
+  ZSplitsFirst,
+};
 std::optional<std::string> fitFacePartitions(const Camera& camera, double aspect,
                                              const Aabb& sceneBounds,
                                              const glm::dvec3& towardsLight, double eta,
-                                             FacePartitionFit& out, int zSplits = 1);
+                                             FacePartitionFit& out, int zSplits = 1,
+                                             FaceNesting nesting = FaceNesting::FacesFirst);
 
 }  // namespace sl::partition

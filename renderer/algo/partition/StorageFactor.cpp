@@ -121,7 +121,8 @@ std::array<glm::dvec4, 6> frustumFacePlanes(const ViewFrustum& view, double a, d
 std::vector<FacePartition> facePartitions(const ViewFrustum& view, double a, double b,
                                           const glm::dvec3& towardsLight,
                                           const std::optional<glm::dvec3>& clipMin,
-                                          const std::optional<glm::dvec3>& clipMax) {
+                                          const std::optional<glm::dvec3>& clipMax,
+                                          const std::optional<glm::dvec2>& depthSlab) {
   const std::array<glm::dvec3, 8> c = view.corners(a, b);
   const glm::dvec3 y = glm::normalize(towardsLight);
   const double scale = std::max(b, glm::length(c[7] - c[0]));
@@ -139,6 +140,11 @@ std::vector<FacePartition> facePartitions(const ViewFrustum& view, double a, dou
       frustum.push_back({n, (*clipMax)[axis]});
       frustum.push_back({-n, -(*clipMin)[axis]});
     }
+  if (depthSlab) {
+    const double e = glm::dot(view.forward, view.eye);
+    frustum.push_back({view.forward, depthSlab->y + e});
+    frustum.push_back({-view.forward, -(depthSlab->x + e)});
+  }
   // Front faces (towards the light) when v . y < 0, back faces otherwise (§5.1).
   const bool front = glm::dot(view.forward, y) < 0.0;
   std::vector<FacePartition> out;

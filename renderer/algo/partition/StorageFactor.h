@@ -90,10 +90,14 @@ std::array<glm::dvec4, 6> frustumFacePlanes(const warp::ViewFrustum& view, doubl
                                             double sliceFar);
 /// `clipMin`/`clipMax`, when given, also clip every partition's body to that box (the
 /// scene's bounds: a map need not cover empty space).
+/// `depthSlab`, when given, clips every body to view depths [x, y] while the faces stay
+/// those of the slice [sliceNear, sliceFar]: the faces of the whole frustum, then each face's
+/// part of one depth slice (faces first, Lloyd et al.'s nesting).
 std::vector<FacePartition> facePartitions(const warp::ViewFrustum& view, double sliceNear,
                                           double sliceFar, const glm::dvec3& towardsLight,
                                           const std::optional<glm::dvec3>& clipMin = {},
-                                          const std::optional<glm::dvec3>& clipMax = {});
+                                          const std::optional<glm::dvec3>& clipMax = {},
+                                          const std::optional<glm::dvec2>& depthSlab = {});
 
 /// Closed forms for the overhead light (light space aligned with the view, §4.1), res = 1.
 namespace overhead {

@@ -53,25 +53,42 @@ TechniqueInfo FacePartitionShadowMap::info() {
                .minValue = 1,
                .maxValue = partition::kMaxFaceZSplits,
                .step = 1,
-               .help = "k: the view frustum (clipped to the scene) is first cut into k slices "
-                       "at the log split z_i = n (f/n)^(i/k), as cascades do, and each slice "
-                       "is face-partitioned on its own: one warped map per (slice, face), 5 k "
-                       "maps (Lloyd et al. 2006's combined scheme). 1: face partitioning "
-                       "alone."});
+               .help = "k: face partitions combined with z-partitioning at the log split "
+                       "z_i = n (f/n)^(i/k) of the view frustum clipped to the scene (Lloyd et "
+                       "al. 2006's combined scheme), nested as face.nesting says: one warped "
+                       "map per (slice, face), 5 k maps. 1: face partitioning alone."});
+  p.push_back({.key = "face.nesting",
+               .label = "Nesting",
+               .group = "Face partitions",
+               .type = ParamType::Enum,
+               .defaultValue = 0,
+               .minValue = 0,
+               .maxValue = 1,
+               .step = 1,
+               .enumNames = {"faces-first", "zsplits-first"},
+               .help = "faces-first (the paper: the view frustum's face partitions, each then "
+                       "cut along its length at the split depths; every slice selects by the "
+                       "whole frustum's faces) or zsplits-first (slices first: the "
+                       "frustum cut into slices first, each slice face-partitioned along its "
+                       "own faces, so every slice has its own near-face map). Only matters for "
+                       "face.zsplits > 1. Measured at 3 slices of 1024^2 (error faces-first / "
+                       "zsplits-first): corridor 0.172 / 0.168 %, diagonal 0.079 / 0.062 %, "
+                       "default 0.435 / 0.281 %: slices first is the better one there."});
   TechniqueInfo info{
       "face-partition", "Face-partitioned shadow maps",
       "Lloyd et al. 2006 §5.1: the view frustum split along its faces as seen from the light "
       "(front faces when v . y < 0, back faces otherwise), each part warped with LiSPSM along "
       "the bisector of its projected side edges, one map each; warping works even where the "
-      "frustum looks square from the light (dueling frusta). With face.zsplits > 1 the frustum "
-      "is first z-partitioned (log split) and every slice face-partitioned (their combined "
-      "scheme). Directional light only.",
+      "frustum looks square from the light (dueling frusta). With face.zsplits > 1 every face "
+      "partition is also cut along its length at the log split (their combined scheme; "
+      "face.nesting zsplits-first slices the frustum first). Directional light only.",
       std::move(p)};
   info.passes = {
       {"face fit", "Fit the face partitions",
-       "Clip the view frustum to the scene, cut it into face.zsplits slices at the log split, "
-       "take each slice's faces towards the light (light behind the viewer) or away from it "
-       "(light in front), and fit one warp per face: light-space z along the bisector of the "
+       "Clip the view frustum to the scene, take its faces towards the light (light behind "
+       "the viewer) or away from it (light in front), cut each face partition (faces-first) "
+       "or the frustum (zsplits-first) into face.zsplits slices at the log split, and fit one "
+       "warp per (slice, face): light-space z along the bisector of the "
        "face's two side edges projected perpendicular to the light, n' from warp.eta (0 = "
        "LiSPSM). The near face has no side edges: it warps along the view vector, or stays "
        "uniform where the frustum looks square.",
@@ -146,7 +163,9 @@ void FacePartitionShadowMap::renderShadows(FrameContext& ctx) {
     partition::FacePartitionFit fit;
     if (auto err = partition::fitFacePartitions(
             ctx.camera, ctx.aspect, ctx.scene.bounds, glm::dvec3(ctx.light.directionalTowards()),
-            ctx.params.get("warp.eta"), fit, ctx.params.getInt("face.zsplits")))
+            ctx.params.get("warp.eta"), fit, ctx.params.getInt("face.zsplits"),
+            ctx.params.getInt("face.nesting") == 0 ? partition::FaceNesting::FacesFirst
+                                                   : partition::FaceNesting::ZSplitsFirst))
       throw std::runtime_error(*err);
     fit_ = std::move(fit);
     views_.assign(std::size_t(fit_.slots()), DepthMapView{});

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "algo/Focus.h"
+#include "algo/warp/PostPerspective.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
 
@@ -22,7 +23,8 @@ ParamDecl warpEtaDecl(double defaultEta) {
           .step = 0.05,
           .help =
               "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), "
-              "1 PSM (n' = n). Shared by psm, lispsm (which differ only in the default) and "
+              "1 their light-space PSM (n' = n). Shared by psm with psm.method = lispsm-eta1, "
+              "lispsm (which differ only in the default) and "
               "cascades with partition.warp (per partition: n and f of its slice) and "
               "face-partition (one warp per face); tsm derives it from warp.focus and publishes "
               "it (warp.eta)."};
@@ -54,10 +56,53 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
   if (id == "psm") {
     name = "Perspective shadow map (PSM)";
     description =
-        "Stamminger and Drettakis 2002 in the light space of Lloyd et al. 2006: one depth map "
-        "warped by a perspective along light-space z with n' = n (warp.eta = 1); the "
-        "singularity clamped (Kozlov).";
+        "Stamminger and Drettakis 2002 as they wrote it (psm.method = post-perspective): the "
+        "scene and the light taken into the camera's post-perspective space, where the light is "
+        "a point (in front of the viewer), a point beyond infinity with its projection inverted "
+        "(behind) or directional (across), the virtual camera slid back over casters behind "
+        "the viewer (Kozlov 2004); or Lloyd et al.'s light-space reading, eta = 1 "
+        "(psm.method = lispsm-eta1).";
     params.insert(params.begin(), warpEtaDecl(1.0));
+    params.insert(
+        params.begin(),
+        {.key = "psm.method",
+         .label = "PSM method",
+         .group = "Warp",
+         .type = ParamType::Enum,
+         .defaultValue = 0,
+         .minValue = 0,
+         .maxValue = 1,
+         .step = 1,
+         .enumNames = {"post-perspective", "lispsm-eta1"},
+         .help = "post-perspective: Stamminger and Drettakis' PSM, the shadow map fitted in the "
+                 "camera's post-perspective space (the paper). lispsm-eta1: Lloyd et al.'s "
+                 "light-space warp with n' = n (warp.eta, default 1), their stand-in for PSM "
+                 "with an overhead light; warp.eta is read only by this method."});
+    params.insert(params.begin() + 2,
+                  {.key = "psm.slide",
+                   .label = "PSM extra slide-back",
+                   .group = "Warp",
+                   .type = ParamType::Float,
+                   .defaultValue = 0.0,
+                   .minValue = 0.0,
+                   .maxValue = 1000.0,
+                   .step = 0.5,
+                   .help = "post-perspective only: metres the virtual camera moves back beyond "
+                           "what the casters behind the viewer need (the paper: 0; Kozlov's "
+                           "remedy for texels crowded at the near plane, a weaker warp)."});
+    params.insert(params.begin() + 3,
+                  {.key = "psm.near",
+                   .label = "PSM near plane",
+                   .group = "Warp",
+                   .type = ParamType::Float,
+                   .defaultValue = 0.0,
+                   .minValue = 0.0,
+                   .maxValue = 1000.0,
+                   .step = 0.1,
+                   .help = "post-perspective only: 0 = the near plane pushed to the nearest "
+                           "scene part in view (each primitive's bounding box against the view "
+                           "frustum: the paper pushes it as far as the scene allows); > 0 = at "
+                           "this many metres instead (receivers nearer than it lose resolution)."});
   } else if (id == "lispsm") {
     name = "Light space perspective shadow map (LiSPSM)";
     description =
@@ -102,6 +147,19 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
        "why: 0 none, 1 light behind the viewer, 2 light in front, 3 TSM focus beyond its line, "
        "4 degenerate",
        "", nullptr}};
+  if (id == "psm") {
+    info.publications.push_back(
+        {"psm.case", PublicationKind::Number,
+         "post-perspective: what the light became, 0 point (in front), 1 inverted (behind), 2 "
+         "directional (across), 3 uniform (along the view axis); -1 for lispsm-eta1",
+         "", nullptr});
+    info.publications.push_back({"psm.slide_back", PublicationKind::Number,
+                                 "post-perspective: metres the virtual camera slid back", "",
+                                 nullptr});
+    info.publications.push_back({"psm.near_m", PublicationKind::Number,
+                                 "post-perspective: the near plane, metres from the real eye", "",
+                                 nullptr});
+  }
   info.lights = {LightType::Directional};
   return info;
 }
@@ -137,6 +195,10 @@ void addWarpOutlines(const warp::WarpFit& fit, FrameOutlines& out, int map) {
 }
 
 void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
+  if (kind_ == Kind::Psm && ctx.params.getInt("psm.method") == 0) {
+    renderPostPerspective(ctx);
+    return;
+  }
   const glm::vec3 towards = ctx.light.directionalTowards();
   DepthMapView mapView;
   {
@@ -170,10 +232,79 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "warp.eta", fit_.eta);
   publishNumber(ctx, "warp.fallback", fit_.fallback ? 1.0 : 0.0);
   publishNumber(ctx, "warp.fallback_cause", double(int(fit_.fallbackCause)));
+  if (kind_ == Kind::Psm) {
+    publishNumber(ctx, "psm.case", -1.0);
+    publishNumber(ctx, "psm.slide_back", 0.0);
+    publishNumber(ctx, "psm.near_m", 0.0);
+  }
 
   if (fit_.warped() && ctx.outlines) addWarpOutlines(fit_, *ctx.outlines);
   auto pass = ctx.timer.scope("shadow map");
   map_.render(ctx, ctx.params.getInt("resolution"), mapView, /*outline=*/!fit_.warped());
+}
+
+std::optional<std::string> PerspectiveShadowMap::fitPostPerspectiveFor(
+    const Scene& scene, const Camera& camera, float aspect, glm::vec3 towards,
+    const ParamSet& params, warp::PsmFit& out) {
+  // Receivers: view frustum ∩ scene bounds with the near plane pushed to the nearest scene
+  // part in view (the whole scene when the camera sees none of it); casters: those points
+  // and where their rays towards the light leave the bounds.
+  const warp::ViewFrustum view = warp::ViewFrustum::fromCamera(camera, aspect);
+  double nearM = params.get("psm.near");
+  if (nearM <= 0.0) {
+    std::vector<Aabb> boxes;
+    for (const MeshPrimitive& prim : scene.primitives) {
+      Aabb b;
+      for (const glm::vec3& p : prim.positions) b.extend(p);
+      boxes.push_back(b);
+    }
+    nearM = warp::nearestDepthInView(view, boxes).value_or(camera.nearM);
+  }
+  nearM = std::clamp(nearM, double(camera.nearM), double(camera.farM));
+  std::vector<glm::vec3> focus = intersectFrustumWithBox(
+      camera.frustumCorners(aspect, float(nearM), camera.farM), scene.bounds);
+  const auto box = scene.bounds.corners();
+  if (focus.empty()) focus.assign(box.begin(), box.end());
+  const std::vector<glm::dvec3> body(focus.begin(), focus.end());
+  const std::vector<glm::dvec3> casters = warp::castersTowardsLight(
+      body, glm::dvec3(towards), glm::dvec3(scene.bounds.min), glm::dvec3(scene.bounds.max));
+  warp::PsmSettings settings;
+  settings.extraSlideM = params.get("psm.slide");
+  return warp::fitPostPerspective(view, body, casters, glm::dvec3(towards), settings, out);
+}
+
+void PerspectiveShadowMap::renderPostPerspective(FrameContext& ctx) {
+  const glm::vec3 towards = ctx.light.directionalTowards();
+  DepthMapView mapView;
+  {
+    auto pass = ctx.timer.scope("warp");
+    if (auto err =
+            fitPostPerspectiveFor(ctx.scene, ctx.camera, ctx.aspect, towards, ctx.params, psmFit_))
+      throw std::runtime_error(*err);
+    if (psmFit_.uniform()) {
+      LightFit uniformFit;
+      if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
+                                         FocusSettings{}, uniformFit))
+        throw std::runtime_error(*err);
+      mapView = depthMapView(uniformFit);
+    } else {
+      mapView = depthMapView(psmFit_.mapFrame());
+    }
+  }
+  // The light-space analysis does not describe this map: no n' or eta is published, the
+  // fallback only where the post-perspective map is replaced by the uniform one.
+  fit_ = warp::WarpFit{};
+  fit_.uniform = psmFit_.uniform();
+  fit_.fallback = psmFit_.uniform();
+  fit_.fallbackReason = psmFit_.reason;
+  publishNumber(ctx, "warp.fallback", psmFit_.uniform() ? 1.0 : 0.0);
+  publishNumber(ctx, "warp.fallback_cause",
+                psmFit_.uniform() ? double(int(warp::FallbackCause::Degenerate)) : 0.0);
+  publishNumber(ctx, "psm.case", double(int(psmFit_.lightCase)));
+  publishNumber(ctx, "psm.slide_back", psmFit_.slideBackM);
+  publishNumber(ctx, "psm.near_m", psmFit_.nearM - psmFit_.slideBackM);
+  auto pass = ctx.timer.scope("shadow map");
+  map_.render(ctx, ctx.params.getInt("resolution"), mapView, /*outline=*/psmFit_.uniform());
 }
 
 }  // namespace sl

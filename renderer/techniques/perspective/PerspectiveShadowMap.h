@@ -6,6 +6,7 @@
 #include <string>
 
 #include "algo/warp/PerspectiveWarp.h"
+#include "algo/warp/PostPerspective.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 
@@ -32,10 +33,21 @@ class PerspectiveShadowMap : public SingleDepthMapTechnique {
 
   /// The last frame's warp (n', eta, the fallback and its reason, the PSM clamp note).
   const warp::WarpFit& lastFit() const { return fit_; }
+  /// psm with psm.method = post-perspective: the last frame's Stamminger-Drettakis fit.
+  const warp::PsmFit& lastPsmFit() const { return psmFit_; }
+  /// The post-perspective fit psm renders for this scene, camera and light with `params`
+  /// (psm's psm.near, psm.slide): receivers, casters, the pushed near plane.
+  static std::optional<std::string> fitPostPerspectiveFor(const Scene& scene, const Camera& camera,
+                                                          float aspect, glm::vec3 towards,
+                                                          const ParamSet& params,
+                                                          warp::PsmFit& out);
 
  private:
+  void renderPostPerspective(FrameContext& ctx);
+
   Kind kind_;
   warp::WarpFit fit_;
+  warp::PsmFit psmFit_;
 };
 
 }  // namespace sl

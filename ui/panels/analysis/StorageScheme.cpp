@@ -71,7 +71,14 @@ void schemeFromDeclarations(const sl::TechniqueInfo* info, const FrameValue& par
   } else if (eta) {
     s.scheme = Scheme::Eta;
     s.eta = std::clamp(*eta, -1.0, 1.0);
-    if (etaIsParam)
+    const std::optional<double> psmMethod =
+        declared("psm.method") ? param("psm.method") : std::nullopt;
+    if (psmMethod && *psmMethod == 0.0)  // Stamminger and Drettakis' post-perspective map
+      std::snprintf(buf, sizeof buf,
+                    "one warp, eta %.3g (%s: Lloyd et al.'s stand-in; its post-perspective map "
+                    "is not analysed)",
+                    s.eta, id.c_str());
+    else if (etaIsParam)
       std::snprintf(buf, sizeof buf, "one warp, eta %.3g (%s)", s.eta, id.c_str());
     else
       std::snprintf(buf, sizeof buf, "one warp, eta %.3g (%s: the eta of its warp at this light%s)",

@@ -9,6 +9,7 @@
 #include <QVBoxLayout>
 
 #include "algo/warp/PerspectiveWarp.h"
+#include "algo/warp/PostPerspective.h"
 
 namespace sl::ui {
 
@@ -28,11 +29,29 @@ PerspectiveWarpPanel::PerspectiveWarpPanel(QWidget* parent) : PublicationPanel(p
 }
 
 std::set<std::string> PerspectiveWarpPanel::observedKeys() const {
-  return {"warp.eta", "warp.n_prime", "warp.fallback", "warp.fallback_cause"};
+  return {"warp.eta", "warp.n_prime",  "warp.fallback", "warp.fallback_cause",
+          "psm.case", "psm.slide_back"};
 }
 
 void PerspectiveWarpPanel::showPublication(const sl::Publication& pub) {
   const auto& n = pub.numbers;
+  if (n.count("psm.case") && n.at("psm.case") >= 0.0) {
+    // psm's post-perspective map (Stamminger and Drettakis): no light-space n' or eta.
+    showContent(true);
+    const auto c =
+        warp::PsmLightCase(std::clamp(int(n.at("psm.case")), 0, int(warp::PsmLightCase::Uniform)));
+    const double slide = n.count("psm.slide_back") ? n.at("psm.slide_back") : 0.0;
+    const QString text = QString::fromUtf8(warp::psmLightCaseText(c)).toHtmlEscaped();
+    if (c == warp::PsmLightCase::Uniform)
+      state_->setText(tr("<b style='color:#c0392b'>Fallback to the uniform map</b>: %1").arg(text));
+    else
+      state_->setText(tr("<b>Post-perspective</b> (Stamminger and Drettakis): %1").arg(text));
+    numbers_->setText(tr("virtual camera slid back %1 m").arg(formatValue(slide)));
+    drawn_ = {{"psm_case", int(c)},
+              {"slide_back", slide},
+              {"fallback", c == warp::PsmLightCase::Uniform}};
+    return;
+  }
   if (!n.count("warp.fallback") || !n.count("warp.eta") || !n.count("warp.n_prime")) {
     drawn_ = {};
     showContent(false, noDataText(QString::fromStdString(pub.techniqueId), tr("perspective warp"),

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "CliCommon.h"
 #include "GlTestEnv.h"
 #include "Reproduce.h"
 #include "TestTechniques.h"

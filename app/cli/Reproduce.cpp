@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include "Commands.h"
 #include "Montage.h"
 #include "algo/InputFile.h"
+#include "core/JsonInput.h"
 #include "core/Preset.h"
 #include "gl/EglContext.h"
 #include "scene/GltfLoader.h"
@@ -31,8 +33,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr std::uint64_t kMaxClaimsFileBytes = 1 << 20;
-
 std::string num(double v) {
   if (!std::isfinite(v)) return "n/a";
   char buf[48];
@@ -44,8 +44,13 @@ std::string num(double v) {
 
 struct Reader {
   std::string file;
+  /// "FILE: PATH: what" (PATH dotted: claims[3].expect.op), as every JSON input says it.
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw UsageError(cutText(file + ": " + (path.empty() ? "/" : path) + ": " + what, 600));
+    try {
+      JsonReader(file).fail(path, what);
+    } catch (const JsonInputError& e) {
+      throw UsageError(cutText(e.what(), 600));
+    }
   }
   void keys(const json& o, const std::string& path,
             std::initializer_list<const char*> known) const {
@@ -57,32 +62,31 @@ struct Reader {
         ok = ok || k == n;
         list += (list.empty() ? "" : ", ") + std::string(n);
       }
-      if (!ok) fail(path + "/" + k, "unknown key (known: " + list + ")");
+      if (!ok) fail(jsonPath(path, k), "unknown key (known: " + list + ")");
     }
   }
   std::string str(const json& o, const std::string& path, const char* key, bool required,
                   const std::string& fallback = "") const {
     if (!o.contains(key)) {
-      if (required) fail(path + "/" + key, "missing");
+      if (required) fail(jsonPath(path, key), "missing");
       return fallback;
     }
-    if (!o.at(key).is_string()) fail(path + "/" + key, "expected a string");
+    if (!o.at(key).is_string()) fail(jsonPath(path, key), "expected a string");
     return o.at(key).get<std::string>();
   }
   double number(const json& o, const std::string& path, const char* key) const {
-    if (!o.contains(key)) fail(path + "/" + key, "missing");
+    if (!o.contains(key)) fail(jsonPath(path, key), "missing");
     const json& v = o.at(key);
     if (!v.is_number() || !std::isfinite(v.get<double>()))
-      fail(path + "/" + key, "expected a finite number");
+      fail(jsonPath(path, key), "expected a finite number");
     return v.get<double>();
   }
   std::vector<std::string> strings(const json& o, const std::string& path, const char* key) const {
     std::vector<std::string> out;
     if (!o.contains(key)) return out;
-    if (!o.at(key).is_array()) fail(path + "/" + key, "expected an array of strings");
+    if (!o.at(key).is_array()) fail(jsonPath(path, key), "expected an array of strings");
     for (std::size_t i = 0; i < o.at(key).size(); ++i) {
-      if (!o.at(key)[i].is_string())
-        fail(path + "/" + key + "/" + std::to_string(i), "expected a string");
+      if (!o.at(key)[i].is_string()) fail(jsonPath(jsonPath(path, key), i), "expected a string");
       out.push_back(o.at(key)[i].get<std::string>());
     }
     return out;
@@ -94,14 +98,14 @@ Predicate readPredicate(const Reader& r, const json& o, const std::string& path)
   Predicate p;
   p.op = r.str(o, path, "op", true);
   if (p.op != "<=" && p.op != ">=" && p.op != "<" && p.op != ">" && p.op != "within")
-    r.fail(path + "/op", "expected <=, >=, <, > or within, got '" + p.op + "'");
+    r.fail(jsonPath(path, "op"), "expected <=, >=, <, > or within, got '" + p.op + "'");
   p.value = r.number(o, path, "value");
   if (p.op == "within") {
     p.tolerance = r.number(o, path, "tolerance");
-    if (p.tolerance < 0.0) r.fail(path + "/tolerance", "must not be negative");
-    if (p.value == 0.0) r.fail(path + "/value", "within needs a non-zero value (relative)");
+    if (p.tolerance < 0.0) r.fail(jsonPath(path, "tolerance"), "must not be negative");
+    if (p.value == 0.0) r.fail(jsonPath(path, "value"), "within needs a non-zero value (relative)");
   } else if (o.contains("tolerance")) {
-    r.fail(path + "/tolerance", "only 'within' takes a tolerance");
+    r.fail(jsonPath(path, "tolerance"), "only 'within' takes a tolerance");
   }
   return p;
 }
@@ -112,17 +116,18 @@ RunSize readSize(const Reader& r, const json& o, const std::string& path, RunSiz
     try {
       std::tie(s.width, s.height) = parseSize(r.str(o, path, "size", true));
     } catch (const UsageError& e) {
-      r.fail(path + "/size", e.what());
+      r.fail(jsonPath(path, "size"), e.what());
     }
   }
   if (o.contains("frames")) {
     const double f = r.number(o, path, "frames");
-    if (f < 1 || f > 1000 || f != std::floor(f)) r.fail(path + "/frames", "expected 1..1000");
+    if (f < 1 || f > 1000 || f != std::floor(f))
+      r.fail(jsonPath(path, "frames"), "expected 1..1000");
     s.frames = int(f);
   }
   if (o.contains("warmup")) {
     const double w = r.number(o, path, "warmup");
-    if (w < 0 || w > 100 || w != std::floor(w)) r.fail(path + "/warmup", "expected 0..100");
+    if (w < 0 || w > 100 || w != std::floor(w)) r.fail(jsonPath(path, "warmup"), "expected 0..100");
     s.warmup = int(w);
   }
   return s;
@@ -141,18 +146,20 @@ ConfigSpec readConfig(const Reader& r, const json& o, const std::string& path,
     std::string error;
     const fs::path file = builtinSceneDir() / rel;
     const std::optional<Preset> p = loadPreset(file, &error);
-    if (!p) r.fail(path + "/preset", error);
+    if (!p) r.fail(jsonPath(path, "preset"), error);
     c.techniqueId = p->technique;
     for (const auto& [k, v] : p->params) c.sets.push_back({k, v});
     if (presetScene && presetScene->empty()) *presetScene = p->scene;
   }
   if (o.contains("technique")) c.techniqueId = r.str(o, path, "technique", true);
-  if (c.techniqueId.empty()) r.fail(path + "/technique", "missing (or a preset that names one)");
+  if (c.techniqueId.empty())
+    r.fail(jsonPath(path, "technique"), "missing (or a preset that names one)");
   if (o.contains("params")) {
     const json& ps = o.at("params");
-    if (!ps.is_object()) r.fail(path + "/params", "expected an object of \"key\": \"value\"");
+    if (!ps.is_object())
+      r.fail(jsonPath(path, "params"), "expected an object of \"key\": \"value\"");
     for (const auto& [k, v] : ps.items()) {
-      if (!v.is_string()) r.fail(path + "/params/" + k, "expected a string value");
+      if (!v.is_string()) r.fail(jsonPath(jsonPath(path, "params"), k), "expected a string value");
       auto it =
           std::find_if(c.sets.begin(), c.sets.end(), [&](const auto& kv) { return kv.first == k; });
       if (it != c.sets.end())
@@ -167,9 +174,10 @@ ConfigSpec readConfig(const Reader& r, const json& o, const std::string& path,
 }
 
 bool metricKnown(const std::string& m) {
-  static const std::set<std::string> known = {
-      "error_pct",    "false_lit_pct", "false_shadow_pct", "aliasing_mean", "aliasing_p95",
-      "aliasing_max", "flicker_pct",   "total_ms",         "bytes",         "texels"};
+  static const std::set<std::string> known = {"error_pct",     "false_lit_pct", "false_shadow_pct",
+                                              "aliasing_mean", "aliasing_p95",  "aliasing_max",
+                                              "flicker_pct",   "total_ms",      "shadow_ms",
+                                              "bytes",         "texels"};
   return known.count(m) || m.rfind("pass:", 0) == 0 || m.rfind("pass_share:", 0) == 0;
 }
 
@@ -183,20 +191,23 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
   bool known = false;
   for (const char* k : kMeasurementKinds) known = known || m.kind == k;
   if (!known)
-    r.fail(path + "/kind",
+    r.fail(jsonPath(path, "kind"),
            "unknown '" + m.kind + "' (error-compare, time-ratio, memory-ratio, publication, cpu)");
   m.full = fullDefault;
   m.quick = quickDefault;
-  if (o.contains("full")) m.full = readSize(r, o.at("full"), path + "/full", fullDefault);
-  if (o.contains("quick")) m.quick = readSize(r, o.at("quick"), path + "/quick", quickDefault);
+  if (o.contains("full")) m.full = readSize(r, o.at("full"), jsonPath(path, "full"), fullDefault);
+  if (o.contains("quick"))
+    m.quick = readSize(r, o.at("quick"), jsonPath(path, "quick"), quickDefault);
   if (m.kind == "cpu") {
     m.storageA = r.strings(o, path, "storage");
     m.storageB = r.strings(o, path, "storage_b");
-    if (m.storageA.empty()) r.fail(path + "/storage", "missing (the storage command's arguments)");
+    if (m.storageA.empty())
+      r.fail(jsonPath(path, "storage"), "missing (the storage command's arguments)");
     m.value = r.str(o, path, "value", true);
     if (m.value != "s" && m.value != "mx" && m.value != "mz" && m.value != "parts" &&
         m.value != "part_s_spread" && m.value != "imbalance" && m.value.rfind("split:", 0) != 0)
-      r.fail(path + "/value", "expected s, mx, mz, imbalance, parts, part_s_spread or split:I");
+      r.fail(jsonPath(path, "value"),
+             "expected s, mx, mz, imbalance, parts, part_s_spread or split:I");
     for (const auto* args : {&m.storageA, &m.storageB}) {
       if (args->empty()) continue;
       try {
@@ -204,35 +215,36 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
         if (m.value.rfind("split:", 0) == 0) {
           const int i = parseInt("split", m.value.substr(6), 0, 64);
           if (std::size_t(i) >= q.splits.size())
-            r.fail(path + "/value", "split index beyond the " + std::to_string(q.splits.size()) +
-                                        " split distances");
+            r.fail(
+                jsonPath(path, "value"),
+                "split index beyond the " + std::to_string(q.splits.size()) + " split distances");
         }
       } catch (const UsageError& e) {
-        r.fail(path + (args == &m.storageA ? "/storage" : "/storage_b"), e.what());
+        r.fail(jsonPath(path, args == &m.storageA ? "storage" : "storage_b"), e.what());
       }
     }
     if (o.contains("figure")) {
-      if (!o.at("figure").is_boolean()) r.fail(path + "/figure", "expected true or false");
+      if (!o.at("figure").is_boolean()) r.fail(jsonPath(path, "figure"), "expected true or false");
       m.figure = o.at("figure").get<bool>();
     }
     return m;
   }
   std::string presetScene;
-  if (!o.contains("a")) r.fail(path + "/a", "missing (the configuration measured)");
-  m.configs.push_back(readConfig(r, o.at("a"), path + "/a", &presetScene));
-  if (o.contains("b")) m.configs.push_back(readConfig(r, o.at("b"), path + "/b", nullptr));
+  if (!o.contains("a")) r.fail(jsonPath(path, "a"), "missing (the configuration measured)");
+  m.configs.push_back(readConfig(r, o.at("a"), jsonPath(path, "a"), &presetScene));
+  if (o.contains("b")) m.configs.push_back(readConfig(r, o.at("b"), jsonPath(path, "b"), nullptr));
   m.scene = r.str(o, path, "scene", false, presetScene);
-  if (m.scene.empty()) r.fail(path + "/scene", "missing (or a preset in a that names one)");
+  if (m.scene.empty()) r.fail(jsonPath(path, "scene"), "missing (or a preset in a that names one)");
   m.camera = r.str(o, path, "camera", false);
   m.path = r.str(o, path, "path", false);
   if (!m.camera.empty() && !m.path.empty())
-    r.fail(path + "/camera", "give camera or path, not both");
+    r.fail(jsonPath(path, "camera"), "give camera or path, not both");
   m.lightText = r.str(o, path, "light", false);
   if (!m.lightText.empty()) {
     try {
       m.light = parseLight("light", m.lightText);
     } catch (const UsageError& e) {
-      r.fail(path + "/light", e.what());
+      r.fail(jsonPath(path, "light"), e.what());
     }
   }
   if (m.kind == "publication") {
@@ -240,8 +252,9 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
     m.statistic = r.str(o, path, "statistic", true);
     if (m.statistic != "median" && m.statistic != "min" && m.statistic != "max" &&
         m.statistic != "final" && m.statistic != "changes")
-      r.fail(path + "/statistic", "expected median, min, max, final or changes");
-    if (m.configs.size() != 1) r.fail(path + "/b", "a publication measures one configuration");
+      r.fail(jsonPath(path, "statistic"), "expected median, min, max, final or changes");
+    if (m.configs.size() != 1)
+      r.fail(jsonPath(path, "b"), "a publication measures one configuration");
     const TechniqueInfo* info = findTechniqueInfo(m.configs[0].techniqueId);
     bool published = false;
     for (const PublicationDecl& d : info->publications) {
@@ -254,7 +267,8 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
                                     star + 1) == 0);
     }
     if (!published)
-      r.fail(path + "/number", "'" + m.number + "' is not a number " + info->id + " publishes");
+      r.fail(jsonPath(path, "number"),
+             "'" + m.number + "' is not a number " + info->id + " publishes");
     return m;
   }
   const char* defaultMetric = m.kind == "time-ratio"     ? "total_ms"
@@ -262,15 +276,16 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
                                                          : "error_pct";
   m.metric = r.str(o, path, "metric", false, defaultMetric);
   if (!metricKnown(m.metric))
-    r.fail(path + "/metric",
+    r.fail(jsonPath(path, "metric"),
            "unknown '" + m.metric +
                "' (error_pct, false_lit_pct, false_shadow_pct, aliasing_mean, aliasing_p95, "
-               "aliasing_max, flicker_pct, total_ms, bytes, texels, pass:NAME, pass_share:NAME)");
+               "aliasing_max, flicker_pct, total_ms, shadow_ms, bytes, texels, pass:NAME, "
+               "pass_share:NAME)");
   m.combine = r.str(o, path, "combine", false, m.configs.size() == 2 ? "ratio" : "a");
   if (m.combine != "ratio" && m.combine != "difference" && m.combine != "a")
-    r.fail(path + "/combine", "expected ratio, difference or a");
+    r.fail(jsonPath(path, "combine"), "expected ratio, difference or a");
   if (m.combine != "a" && m.configs.size() != 2)
-    r.fail(path + "/b", "missing (combine " + m.combine + " needs two configurations)");
+    r.fail(jsonPath(path, "b"), "missing (combine " + m.combine + " needs two configurations)");
   return m;
 }
 
@@ -285,6 +300,12 @@ double metricOf(const ConfigSummary& s, const std::string& metric) {
   if (metric == "aliasing_max") return s.aliasingMax;
   if (metric == "flicker_pct") return s.flickerPct;
   if (metric == "total_ms") return s.totalMs;
+  if (metric == "shadow_ms") {  // the frame less the camera's G-buffer and the composite
+    double ms = s.totalMs;
+    for (const char* pass : {"gbuffer", "composite"})
+      if (auto it = s.passMs.find(pass); it != s.passMs.end()) ms -= it->second;
+    return ms;
+  }
   if (metric == "bytes") return s.bytes;
   if (metric == "texels") return s.texels;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -307,8 +328,8 @@ double metricOf(const ConfigSummary& s, const std::string& metric) {
 
 bool needsReference(const Measurement& m) {
   return m.kind == "error-compare" ||
-         (m.metric != "total_ms" && m.metric != "bytes" && m.metric != "texels" &&
-          m.metric.rfind("pass", 0) != 0 && m.kind != "publication");
+         (m.metric != "total_ms" && m.metric != "shadow_ms" && m.metric != "bytes" &&
+          m.metric != "texels" && m.metric.rfind("pass", 0) != 0 && m.kind != "publication");
 }
 
 std::string figureName(const std::string& id, const std::string& suffix) {
@@ -572,39 +593,30 @@ std::string Predicate::text() const {
 
 std::vector<Claim> loadClaims(const fs::path& file) {
   Reader r{file.string()};
-  std::string text;
-  try {
-    const std::vector<unsigned char> bytes =
-        readRegularFile(file, kMaxClaimsFileBytes, "claims file");
-    text.assign(bytes.begin(), bytes.end());
-  } catch (const std::exception& e) {
-    throw UsageError(cutText(file.string() + ": " + e.what()));
-  }
-  if (jsonDepthExcess(text, 16) != std::string_view::npos) r.fail("", "nested deeper than 16");
   json doc;
   try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    r.fail("", std::string("not JSON: ") + e.what());
+    doc = JsonReader(file.string()).parseFile();  // regular file, size and depth limits
+  } catch (const std::exception& e) {
+    throw UsageError(cutText(e.what(), 600));
   }
   r.keys(doc, "", {"seed", "source", "sizes", "claims"});
   const std::string seed = r.str(doc, "", "seed", true);
   if (seed.size() != 3 || !std::all_of(seed.begin(), seed.end(), ::isdigit))
-    r.fail("/seed", "expected three digits, e.g. \"000\"");
+    r.fail("seed", "expected three digits, e.g. \"000\"");
   const std::string source = r.str(doc, "", "source", true);
   RunSize full, quick{160, 90, 2, 1};
   if (doc.contains("sizes")) {
     const json& s = doc.at("sizes");
-    r.keys(s, "/sizes", {"full", "quick"});
-    if (s.contains("full")) full = readSize(r, s.at("full"), "/sizes/full", full);
-    if (s.contains("quick")) quick = readSize(r, s.at("quick"), "/sizes/quick", quick);
+    r.keys(s, "sizes", {"full", "quick"});
+    if (s.contains("full")) full = readSize(r, s.at("full"), "sizes.full", full);
+    if (s.contains("quick")) quick = readSize(r, s.at("quick"), "sizes.quick", quick);
   }
   if (!doc.contains("claims") || !doc.at("claims").is_array() || doc.at("claims").empty())
-    r.fail("/claims", "expected a non-empty array of claims");
+    r.fail("claims", "expected a non-empty array of claims");
   std::vector<Claim> out;
   for (std::size_t i = 0; i < doc.at("claims").size(); ++i) {
     const json& c = doc.at("claims")[i];
-    const std::string path = "/claims/" + std::to_string(i);
+    const std::string path = jsonPath("claims", i);
     r.keys(c, path,
            {"id", "words", "paper_number", "note", "measure", "expect", "partly", "mechanism"});
     Claim claim;
@@ -614,22 +626,24 @@ std::vector<Claim> loadClaims(const fs::path& file) {
     claim.id = r.str(c, path, "id", true);
     if (claim.id.empty() || claim.id.size() > 64 ||
         claim.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
-      r.fail(path + "/id", "expected 1..64 of a-z, 0-9 and '-'");
+      r.fail(jsonPath(path, "id"), "expected 1..64 of a-z, 0-9 and '-'");
     claim.words = r.str(c, path, "words", true);
     claim.paperNumber = r.str(c, path, "paper_number", true);
     claim.note = r.str(c, path, "note", false);
-    if (!c.contains("measure")) r.fail(path + "/measure", "missing");
-    claim.measurement = readMeasurement(r, c.at("measure"), path + "/measure", full, quick);
-    if (!c.contains("expect")) r.fail(path + "/expect", "missing");
-    claim.expect = readPredicate(r, c.at("expect"), path + "/expect");
-    if (c.contains("partly")) claim.partly = readPredicate(r, c.at("partly"), path + "/partly");
+    if (!c.contains("measure")) r.fail(jsonPath(path, "measure"), "missing");
+    claim.measurement = readMeasurement(r, c.at("measure"), jsonPath(path, "measure"), full, quick);
+    if (!c.contains("expect")) r.fail(jsonPath(path, "expect"), "missing");
+    claim.expect = readPredicate(r, c.at("expect"), jsonPath(path, "expect"));
+    if (c.contains("partly"))
+      claim.partly = readPredicate(r, c.at("partly"), jsonPath(path, "partly"));
     if (c.contains("mechanism")) {
       const json& mj = c.at("mechanism");
-      r.keys(mj, path + "/mechanism", {"text", "measure"});
-      claim.mechanismText = r.str(mj, path + "/mechanism", "text", true);
-      if (!mj.contains("measure")) r.fail(path + "/mechanism/measure", "missing");
-      claim.mechanism =
-          readMeasurement(r, mj.at("measure"), path + "/mechanism/measure", full, quick);
+      r.keys(mj, jsonPath(path, "mechanism"), {"text", "measure"});
+      claim.mechanismText = r.str(mj, jsonPath(path, "mechanism"), "text", true);
+      if (!mj.contains("measure"))
+        r.fail(jsonPath(jsonPath(path, "mechanism"), "measure"), "missing");
+      claim.mechanism = readMeasurement(
+          r, mj.at("measure"), jsonPath(jsonPath(path, "mechanism"), "measure"), full, quick);
     }
     out.push_back(std::move(claim));
   }
@@ -692,9 +706,17 @@ std::string reportMarkdown(const std::vector<Claim>& claims,
      << "` from the claims in `scenes/claims/` (" << claims.size() << " claims, "
      << formatDuration(seconds) << " on " << glDescription << "). Each claim quotes its paper, "
      << "gives the paper's number, what the tool measured, the verdict the claim's threshold "
-        "gives, and the commands that re-run it. Timings are ratios of one interleaved run "
-        "(wall clock with glFinish on a software rasteriser: the paper's GPU is not this "
-        "machine).\n\n";
+        "gives, and the commands that re-run it. Timings are ratios within one interleaved run "
+        "on this machine, not the papers' GPUs (on a software rasteriser each pass is timed "
+        "with glFinish and a wall clock)";
+  if (std::ifstream load("/proc/loadavg"); load) {
+    double one = 0.0;
+    if (load >> one)
+      md << "; the machine's load average was " << num(one)
+         << " when the run ended (other processes share its cores, and the timing ratios vary "
+            "with it)";
+  }
+  md << ".\n\n";
   md << "Verdicts: " << count["reproduced"] << " reproduced, " << count["partly"] << " partly, "
      << count["not reproduced"] << " not reproduced, " << count["not measured"]
      << " not measured.\n\n";

@@ -65,12 +65,12 @@ bad() {  # name, expected text, json
 }
 head='{"seed": "004", "source": "t", "claims": [{"id": "x", "words": "w", "paper_number": "1", '
 cpu='"measure": {"kind": "cpu", "storage": ["--scheme", "lispsm"], "value": "s"}'
-bad op "op.json: /claims/0/expect/op: expected" "$head$cpu, \"expect\": {\"op\": \"=~\", \"value\": 1}}]}"
-bad key "key.json: /claims/0/measure/colour: unknown key" "$head\"measure\": {\"kind\": \"cpu\", \"colour\": 1}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
-bad kind "kind.json: /claims/0/measure/kind: unknown 'speed'" "$head\"measure\": {\"kind\": \"speed\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
-bad param "/claims/0/measure/a: technique 'uniform' has no parameter 'resolutoin'" "$head\"measure\": {\"kind\": \"error-compare\", \"scene\": \"default\", \"a\": {\"technique\": \"uniform\", \"params\": {\"resolutoin\": \"1\"}}}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
-bad storage "/claims/0/measure/storage: --scheme: unknown 'fast'" "$head\"measure\": {\"kind\": \"cpu\", \"storage\": [\"--scheme\", \"fast\"], \"value\": \"s\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
-bad json "not JSON" "$head"
+bad op "op.json: claims[0].expect.op: expected" "$head$cpu, \"expect\": {\"op\": \"=~\", \"value\": 1}}]}"
+bad key "key.json: claims[0].measure.colour: unknown key" "$head\"measure\": {\"kind\": \"cpu\", \"colour\": 1}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+bad kind "kind.json: claims[0].measure.kind: unknown 'speed'" "$head\"measure\": {\"kind\": \"speed\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+bad param "claims[0].measure.a: technique 'uniform' has no parameter 'resolutoin'" "$head\"measure\": {\"kind\": \"error-compare\", \"scene\": \"default\", \"a\": {\"technique\": \"uniform\", \"params\": {\"resolutoin\": \"1\"}}}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+bad storage "claims[0].measure.storage: --scheme: unknown 'fast'" "$head\"measure\": {\"kind\": \"cpu\", \"storage\": [\"--scheme\", \"fast\"], \"value\": \"s\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+bad json "not valid JSON" "$head"
 "$cli" reproduce --seed 005 --out "$out/bad" >/dev/null 2>"$out/seed.err"
 [ $? -eq 2 ] && grep -q -- '--seed: expected 000' "$out/seed.err" || { echo "FAIL: --seed 005"; fail=1; }
 [ $fail -eq 0 ] && echo "ok: reproduce"

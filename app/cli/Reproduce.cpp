@@ -248,6 +248,10 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
     }
   }
   if (m.kind == "publication") {
+    // A still camera: `render --frames N` from it re-runs the same frames (render has no path
+    // of frames).
+    if (m.camera.empty())
+      r.fail(jsonPath(path, "camera"), "missing (a publication is measured from a still camera)");
     m.number = r.str(o, path, "number", true);
     m.statistic = r.str(o, path, "statistic", true);
     if (m.statistic != "median" && m.statistic != "min" && m.statistic != "max" &&

@@ -71,6 +71,7 @@ bad kind "kind.json: claims[0].measure.kind: unknown 'speed'" "$head\"measure\":
 bad param "claims[0].measure.a: technique 'uniform' has no parameter 'resolutoin'" "$head\"measure\": {\"kind\": \"error-compare\", \"scene\": \"default\", \"a\": {\"technique\": \"uniform\", \"params\": {\"resolutoin\": \"1\"}}}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
 bad storage "claims[0].measure.storage: --scheme: unknown 'fast'" "$head\"measure\": {\"kind\": \"cpu\", \"storage\": [\"--scheme\", \"fast\"], \"value\": \"s\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
 bad json "not valid JSON" "$head"
+bad camera "claims[0].measure.camera: missing (a publication is measured from a still camera)" "$head\"measure\": {\"kind\": \"publication\", \"scene\": \"diagonal\", \"a\": {\"technique\": \"da-rtw\"}, \"number\": \"rotation.deg\", \"statistic\": \"max\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
 "$cli" reproduce --seed 005 --out "$out/bad" >/dev/null 2>"$out/seed.err"
 [ $? -eq 2 ] && grep -q -- '--seed: expected 000' "$out/seed.err" || { echo "FAIL: --seed 005"; fail=1; }
 [ $fail -eq 0 ] && echo "ok: reproduce"

@@ -153,93 +153,6 @@ std::string passColumn(const std::string& pass) {
   return c + "_ms";
 }
 
-/// Medians over the frames of one configuration that rendered; a failed frame is counted
-/// and named, never measured.
-struct ConfigSummary {
-  double totalMs = 0;
-  std::vector<double> frameMs;  ///< every frame's total, in the order the frames ran (NaN: failed)
-  std::map<std::string, double> passMs;
-  std::string timingMethod;
-  double texels = 0, bytes = 0;
-  double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
-  double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
-  double flickerPct = 0;
-  double lightAreaM2 = 0, halfMassX = 0, halfMassY = 0;  ///< NaN when not published
-  double rotationDeg = 0;  ///< DA-RTW's image-plane angle R (NaN without a rotation)
-  double anisotropy = 0;   ///< DA-RTW's (λ1−λ2)/(λ1+λ2) (NaN without one)
-  std::size_t renderErrors = 0, glErrors = 0;  ///< failed frames; GL errors in all frames
-  std::string failure;  ///< the first failed frame and why ("" when every frame rendered)
-  /// No frame rendered: a failed row, every number empty.
-  bool failed() const { return !failure.empty() && frameMs.size() == renderErrors; }
-};
-
-ConfigSummary summarise(const std::vector<FrameSample>& all) {
-  ConfigSummary s;
-  std::vector<const FrameSample*> order;
-  for (const FrameSample& f : all) order.push_back(&f);
-  s.failure = firstFailureText(order);
-  std::vector<FrameSample> frames;  // the frames that rendered: the only ones measured
-  for (const FrameSample& f : all) {
-    s.frameMs.push_back(f.failed() ? std::numeric_limits<double>::quiet_NaN() : f.totalMs);
-    s.renderErrors += f.failed() ? 1 : 0;
-    s.glErrors += f.glErrors.size();
-    if (!f.failed()) frames.push_back(f);
-  }
-  if (frames.empty()) {  // a failed configuration: nothing measured
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    s.totalMs = s.texels = s.bytes = s.covered = nan;
-    s.errorPct = s.falseLitPct = s.falseShadowPct = nan;
-    s.aliasingMean = s.aliasingP95 = s.aliasingMax = s.flickerPct = nan;
-    s.lightAreaM2 = s.halfMassX = s.halfMassY = s.rotationDeg = s.anisotropy = nan;
-    return s;
-  }
-  auto med = [&](auto get) {
-    std::vector<double> v;
-    for (const FrameSample& f : frames) v.push_back(double(get(f)));
-    return median(v);
-  };
-  s.totalMs = med([](const FrameSample& f) { return f.totalMs; });
-  std::map<std::string, std::vector<double>> passes;
-  for (const FrameSample& f : frames)
-    for (const PassTiming& p : f.passes) passes[p.name].push_back(p.ms);
-  for (const auto& [name, v] : passes) s.passMs[name] = median(v);
-  s.timingMethod = frames.back().timingMethod;
-  s.texels = med([](const FrameSample& f) { return f.texels; });
-  s.bytes = med([](const FrameSample& f) { return f.bytes; });
-  // The error is measured only on frames with a covered pixel; none: NaN (an empty cell).
-  auto medMeasured = [&](auto get) {
-    std::vector<double> v;
-    for (const FrameSample& f : frames)
-      if (f.error.covered > 0) v.push_back(double(get(f)));
-    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
-  };
-  s.errorPct = medMeasured([](const FrameSample& f) { return f.error.errorPct; });
-  s.falseLitPct = medMeasured([](const FrameSample& f) { return f.error.falseLitPct; });
-  s.falseShadowPct = medMeasured([](const FrameSample& f) { return f.error.falseShadowPct; });
-  s.covered = med([](const FrameSample& f) { return f.error.covered; });
-  s.aliasingMean = med([](const FrameSample& f) { return f.aliasing.mean; });
-  s.aliasingP95 = med([](const FrameSample& f) { return f.aliasing.p95; });
-  s.aliasingMax = med([](const FrameSample& f) { return f.aliasing.max; });
-  std::vector<double> flicker;
-  for (const FrameSample& f : frames)
-    if (f.flicker) flicker.push_back(f.flicker->pct);
-  s.flickerPct = median(flicker);
-  auto medPublished = [&](auto get) {
-    std::vector<double> v;
-    for (const FrameSample& f : frames)
-      if (std::isfinite(get(f))) v.push_back(get(f));
-    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
-  };
-  s.lightAreaM2 = medPublished([](const FrameSample& f) { return f.lightAreaM2; });
-  s.halfMassX = medPublished([](const FrameSample& f) { return f.halfMassX; });
-  s.halfMassY = medPublished([](const FrameSample& f) { return f.halfMassY; });
-  s.anisotropy = medPublished([](const FrameSample& f) { return f.anisotropy; });
-  s.rotationDeg = medPublished([](const FrameSample& f) {
-    return f.hasRotation ? f.rotationDeg : std::numeric_limits<double>::quiet_NaN();
-  });
-  return s;
-}
-
 /// A count as a CSV cell: empty when not measured (NaN).
 std::string count(double v) {
   return std::isfinite(v) ? std::to_string(std::uint64_t(v)) : std::string();
@@ -357,18 +270,9 @@ int cmdBench(Args& a) {
   checkOutputsAgainstScene({{"--csv", cfg.csv}, {"--chart", cfg.chart}}, *scene);
 
   // One camera per frame: along the path, or a fixed bookmark.
-  std::vector<Camera> cameras;
   std::string cameraText;
-  if (cfg.camera.empty() && !scene->paths.empty()) {
-    const CameraPath& path = pickPath(*scene, cfg.path);
-    for (int f = 0; f < cfg.frames; ++f) cameras.push_back(path.sampleFrame(f, cfg.frames));
-    cameraText = cutText("path " + path.name);  // a glTF animation name: any length
-  } else {
-    if (!cfg.path.empty()) (void)pickPath(*scene, cfg.path);  // names the missing path
-    cameras.assign(std::size_t(cfg.frames), pickCamera(*scene, cfg.camera));
-    cameraText =
-        cutText("camera " + (cfg.camera.empty() ? std::string("(first bookmark)") : cfg.camera));
-  }
+  const std::vector<Camera> cameras =
+      measureCameras(*scene, cfg.path, cfg.camera, cfg.frames, cameraText);
 
   std::vector<std::vector<FrameSample>> samples(configs.size());
   std::string glDescription, timingMethod;
@@ -392,36 +296,29 @@ int cmdBench(Args& a) {
     std::optional<ReferenceCache> reference;
     if (cfg.reference) reference.emplace(*scene);
 
-    // Warm-up at the first camera: shader variants compile on first use (llvmpipe JIT), maps
-    // are allocated, DA-RTW's rotation settles. Not measured.
-    for (int w = 0; w < cfg.warmup; ++w)
-      for (auto& r : runners) (void)r->renderAndMeasure(cameras.front(), opts, nullptr);
-    for (auto& r : runners) r->forgetPreviousFrame();
-
     std::fprintf(stderr, "bench: %zu configurations x %d frames on %s (%s), %dx%d\n",
                  runners.size(), cfg.frames, scene->name.c_str(), cameraText.c_str(), cfg.width,
                  cfg.height);
     ProgressBar progress("bench", runners.size() * std::size_t(cfg.frames));
-    for (int f = 0; f < cfg.frames; ++f) {
-      // Interleaved, and the starting configuration rotates so none always runs right
-      // after the reference (cold caches).
-      for (std::size_t k = 0; k < runners.size(); ++k) {
-        std::size_t i = (k + std::size_t(f)) % runners.size();
-        FrameSample s = runners[i]->renderAndMeasure(cameras[std::size_t(f)], opts,
-                                                     reference ? &*reference : nullptr);
-        for (const std::string& e : s.glErrors)
-          std::fprintf(stderr, "\nshadowlab-cli: GL error in %s, frame %d: %s\n",
-                       configs[i].label.c_str(), f, e.c_str());
-        if (!s.renderError.empty())
-          std::fprintf(stderr, "\nshadowlab-cli: %s, frame %d: %s\n", configs[i].label.c_str(), f,
-                       s.renderError.c_str());
-        if (!s.failed()) timingMethod = s.timingMethod;
-        samples[i].push_back(std::move(s));
-        progress.step("frame " + std::to_string(f + 1) + "/" + std::to_string(cfg.frames) + "  " +
-                          configs[i].label,
-                      k + 1 == runners.size());
-      }
-    }
+    std::size_t inFrame = 0;
+    // Warm-up at the first camera (shader variants compile on first use (llvmpipe JIT), maps
+    // are allocated, DA-RTW's rotation settles; not measured), then interleaved frames.
+    samples =
+        runInterleaved(runners, cameras, opts, reference ? &*reference : nullptr, cfg.warmup,
+                       [&](std::size_t i, int f, const FrameSample& s) {
+                         for (const std::string& e : s.glErrors)
+                           std::fprintf(stderr, "\nshadowlab-cli: GL error in %s, frame %d: %s\n",
+                                        configs[i].label.c_str(), f, e.c_str());
+                         if (!s.renderError.empty())
+                           std::fprintf(stderr, "\nshadowlab-cli: %s, frame %d: %s\n",
+                                        configs[i].label.c_str(), f, s.renderError.c_str());
+                         if (!s.failed()) timingMethod = s.timingMethod;
+                         const bool frameDone = ++inFrame == runners.size();
+                         if (frameDone) inFrame = 0;
+                         progress.step("frame " + std::to_string(f + 1) + "/" +
+                                           std::to_string(cfg.frames) + "  " + configs[i].label,
+                                       frameDone);
+                       });
     progress.finish();
     referenceEvaluations = reference ? reference->evaluations() : 0;
   }

@@ -1,13 +1,16 @@
 // Measuring configurations frame by frame; see Measure.h.
 #include "Measure.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstring>
 #include <vector>
 
 #include "CliCommon.h"
 #include "algo/InputFile.h"
 #include "metrics/ErrorMetrics.h"
+#include "metrics/Image.h"
 
 namespace sl::cli {
 
@@ -42,6 +45,11 @@ std::vector<Renderer*>& liveRenderers() {
   return list;
 }
 
+std::vector<TechniqueEntry>& extraTechniques() {
+  static std::vector<TechniqueEntry> list;
+  return list;
+}
+
 std::vector<std::string> drainGlErrors() {
   std::vector<std::string> all;
   for (Renderer* r : liveRenderers())
@@ -50,6 +58,17 @@ std::vector<std::string> drainGlErrors() {
 }
 
 }  // namespace
+
+void addExtraTechnique(TechniqueEntry entry) {
+  extraTechniques().push_back(std::move(entry));
+}
+
+const TechniqueInfo* findTechniqueInfo(const std::string& id) {
+  if (const TechniqueInfo* info = Renderer::findTechnique(id)) return info;
+  for (const TechniqueEntry& e : extraTechniques())
+    if (e.info.id == id) return &e.info;
+  return nullptr;
+}
 
 std::string firstFailureText(const std::vector<const FrameSample*>& frames) {
   for (std::size_t k = 0; k < frames.size(); ++k)
@@ -65,11 +84,12 @@ std::string ConfigSpec::paramsText() const {
 }
 
 std::optional<std::string> validateConfig(const ConfigSpec& spec) {
-  const TechniqueInfo* info = Renderer::findTechnique(spec.techniqueId);
+  const TechniqueInfo* info = findTechniqueInfo(spec.techniqueId);
   if (!info) {
     std::string known;
     for (const TechniqueInfo& t : Renderer::techniques())
       known += (known.empty() ? "" : ", ") + t.id;
+    for (const TechniqueEntry& e : extraTechniques()) known += ", " + e.info.id;
     return "unknown technique '" + spec.techniqueId + "' (known: " + known + ")";
   }
   ParamSet own(info->params), shared(rendererParamDecls());
@@ -136,13 +156,16 @@ const std::vector<std::uint8_t>& ReferenceCache::evaluate(const FrameReadback& f
 
 ConfigRunner::ConfigRunner(ConfigSpec spec, std::shared_ptr<const Scene> scene,
                            const std::optional<Light>& light)
-    : spec_(std::move(spec)), renderer_(std::make_unique<Renderer>()) {
+    : spec_(std::move(spec)) {
+  RendererOptions options;
+  options.extraTechniques = extraTechniques();
+  renderer_ = std::make_unique<Renderer>(options);
   liveRenderers().push_back(renderer_.get());
   renderer_->setScene(std::move(scene));
   if (light) renderer_->setLight(*light);
   if (auto e = renderer_->setTechnique(spec_.techniqueId)) throw UsageError(*e);
   // A light the technique cannot render is refused up front (renderFrame would too).
-  if (const TechniqueInfo* info = Renderer::findTechnique(spec_.techniqueId))
+  if (const TechniqueInfo* info = findTechniqueInfo(spec_.techniqueId))
     if (auto e = checkLightSupport(*info, renderer_->light().type)) throw UsageError(*e);
   for (const auto& [k, v] : spec_.sets) {
     ParamSet* set = paramSetFor(*renderer_, k);
@@ -169,7 +192,7 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
   // Only the numbers (rotation, PCA): no image or curve is read back while measuring.
   std::set<std::string> numberKeys;
   if (options.publishing && publishingWanted_)
-    if (const TechniqueInfo* info = Renderer::findTechnique(r.techniqueId()))
+    if (const TechniqueInfo* info = findTechniqueInfo(r.techniqueId()))
       for (const PublicationDecl& d : info->publications)
         if (d.kind == PublicationKind::Number) numberKeys.insert(d.key);
   r.requestPublications(std::move(numberKeys));
@@ -194,6 +217,7 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
 
   if (options.publishing && publishingWanted_) {
     const auto& numbers = r.publication().numbers;
+    s.numbers = std::map<std::string, double>(numbers.begin(), numbers.end());
     for (const auto& [k, v] : numbers)
       if (!std::isfinite(v)) s.nonFiniteNumbers.push_back(k);
     auto numberOr = [&numbers](const char* key, double fallback) {
@@ -223,6 +247,10 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
     const std::vector<std::uint8_t>& ref = reference->evaluate(frame, r.light());
     s.hasReference = true;
     s.error = compareShadowMasks(frame.hardMask, ref);
+    if (options.keepImages) {
+      s.color = frame.color;
+      s.errorImage = makeErrorImage(frame.color, frame.hardMask, ref);
+    }
     if (!previousReference_.empty() && previousReference_.size() == ref.size() &&
         previousMask_.size() == ref.size())
       s.flicker = computeFlicker(previousMask_, frame.hardMask, previousReference_, ref);
@@ -233,6 +261,115 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
   previousMask_ = std::move(frame.hardMask);
   collectGlErrors();
   return s;
+}
+
+ConfigSummary summarise(const std::vector<FrameSample>& all) {
+  ConfigSummary s;
+  std::vector<const FrameSample*> order;
+  for (const FrameSample& f : all) order.push_back(&f);
+  s.failure = firstFailureText(order);
+  std::vector<FrameSample> frames;  // the frames that rendered: the only ones measured
+  for (const FrameSample& f : all) {
+    s.frameMs.push_back(f.failed() ? std::numeric_limits<double>::quiet_NaN() : f.totalMs);
+    s.renderErrors += f.failed() ? 1 : 0;
+    s.glErrors += f.glErrors.size();
+    if (!f.failed()) frames.push_back(f);
+  }
+  if (frames.empty()) {  // a failed configuration: nothing measured
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    s.totalMs = s.texels = s.bytes = s.covered = nan;
+    s.errorPct = s.falseLitPct = s.falseShadowPct = nan;
+    s.aliasingMean = s.aliasingP95 = s.aliasingMax = s.flickerPct = nan;
+    s.lightAreaM2 = s.halfMassX = s.halfMassY = s.rotationDeg = s.anisotropy = nan;
+    return s;
+  }
+  auto med = [&](auto get) {
+    std::vector<double> v;
+    for (const FrameSample& f : frames) v.push_back(double(get(f)));
+    return median(v);
+  };
+  s.totalMs = med([](const FrameSample& f) { return f.totalMs; });
+  std::map<std::string, std::vector<double>> passes;
+  for (const FrameSample& f : frames)
+    for (const PassTiming& p : f.passes) passes[p.name].push_back(p.ms);
+  for (const auto& [name, v] : passes) s.passMs[name] = median(v);
+  s.timingMethod = frames.back().timingMethod;
+  s.texels = med([](const FrameSample& f) { return f.texels; });
+  s.bytes = med([](const FrameSample& f) { return f.bytes; });
+  // The error is measured only on frames with a covered pixel; none: NaN (an empty cell).
+  auto medMeasured = [&](auto get) {
+    std::vector<double> v;
+    for (const FrameSample& f : frames)
+      if (f.error.covered > 0) v.push_back(double(get(f)));
+    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
+  };
+  s.errorPct = medMeasured([](const FrameSample& f) { return f.error.errorPct; });
+  s.falseLitPct = medMeasured([](const FrameSample& f) { return f.error.falseLitPct; });
+  s.falseShadowPct = medMeasured([](const FrameSample& f) { return f.error.falseShadowPct; });
+  s.covered = med([](const FrameSample& f) { return f.error.covered; });
+  s.aliasingMean = med([](const FrameSample& f) { return f.aliasing.mean; });
+  s.aliasingP95 = med([](const FrameSample& f) { return f.aliasing.p95; });
+  s.aliasingMax = med([](const FrameSample& f) { return f.aliasing.max; });
+  std::vector<double> flicker;
+  for (const FrameSample& f : frames)
+    if (f.flicker) flicker.push_back(f.flicker->pct);
+  s.flickerPct = median(flicker);
+  auto medPublished = [&](auto get) {
+    std::vector<double> v;
+    for (const FrameSample& f : frames)
+      if (std::isfinite(get(f))) v.push_back(get(f));
+    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
+  };
+  s.lightAreaM2 = medPublished([](const FrameSample& f) { return f.lightAreaM2; });
+  s.halfMassX = medPublished([](const FrameSample& f) { return f.halfMassX; });
+  s.halfMassY = medPublished([](const FrameSample& f) { return f.halfMassY; });
+  s.anisotropy = medPublished([](const FrameSample& f) { return f.anisotropy; });
+  s.rotationDeg = medPublished([](const FrameSample& f) {
+    return f.hasRotation ? f.rotationDeg : std::numeric_limits<double>::quiet_NaN();
+  });
+  return s;
+}
+
+std::vector<Camera> measureCameras(const Scene& scene, const std::string& path,
+                                   const std::string& camera, int frames, std::string& cameraText) {
+  if (!path.empty() && !camera.empty())
+    throw UsageError("--camera: give either a camera path (--path) or a bookmark (--camera)");
+  std::vector<Camera> cameras;
+  if (camera.empty() && !scene.paths.empty()) {
+    const CameraPath& p = pickPath(scene, path);
+    for (int f = 0; f < frames; ++f) cameras.push_back(p.sampleFrame(f, frames));
+    cameraText = cutText("path " + p.name);  // a glTF animation name: any length
+  } else {
+    if (!path.empty()) (void)pickPath(scene, path);  // names the missing path
+    cameras.assign(std::size_t(frames), pickCamera(scene, camera));
+    cameraText = cutText("camera " + (camera.empty() ? std::string("(first bookmark)") : camera));
+  }
+  return cameras;
+}
+
+std::vector<std::vector<FrameSample>> runInterleaved(
+    const std::vector<std::unique_ptr<ConfigRunner>>& runners, const std::vector<Camera>& cameras,
+    const MeasureOptions& options, ReferenceCache* reference, int warmup,
+    const std::function<void(std::size_t, int, const FrameSample&)>& onSample) {
+  std::vector<std::vector<FrameSample>> samples(runners.size());
+  if (runners.empty() || cameras.empty()) return samples;
+  MeasureOptions warm = options;
+  warm.keepImages = false;
+  for (int w = 0; w < warmup; ++w)
+    for (const auto& r : runners) (void)r->renderAndMeasure(cameras.front(), warm, nullptr);
+  for (const auto& r : runners) r->forgetPreviousFrame();
+  const int frames = int(cameras.size());
+  for (int f = 0; f < frames; ++f) {
+    MeasureOptions o = options;
+    o.keepImages = options.keepImages && f + 1 == frames;  // the last frame's images only
+    for (std::size_t k = 0; k < runners.size(); ++k) {
+      const std::size_t i = (k + std::size_t(f)) % runners.size();
+      FrameSample s = runners[i]->renderAndMeasure(cameras[std::size_t(f)], o, reference);
+      if (onSample) onSample(i, f, s);
+      samples[i].push_back(std::move(s));
+    }
+  }
+  return samples;
 }
 
 }  // namespace sl::cli

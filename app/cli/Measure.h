@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <limits>
@@ -29,6 +30,13 @@ struct ConfigSpec {
   /// "resolution=512 pcf=1" (all sets), or "" when none.
   std::string paramsText() const;
 };
+
+/// Techniques offered besides the built-in list (Renderer::techniques()), to every
+/// configuration measured after the call: a program that links the measuring code adds its
+/// own (RendererOptions::extraTechniques). Call before any ConfigRunner exists.
+void addExtraTechnique(TechniqueEntry entry);
+/// A technique of the built-in list or an added one; null when none has that id.
+const TechniqueInfo* findTechniqueInfo(const std::string& id);
 
 /// Checks that the technique exists, every key is a parameter of it (or a shared one),
 /// every value is in range and the values together are ones the technique renders
@@ -85,6 +93,11 @@ struct FrameSample {
   double halfMassX = std::numeric_limits<double>::quiet_NaN();
   double halfMassY = std::numeric_limits<double>::quiet_NaN();
   double anisotropy = std::numeric_limits<double>::quiet_NaN();  ///< DA-RTW's (λ1−λ2)/(λ1+λ2)
+  /// Every number the technique published this frame (MeasureOptions::publishing).
+  std::map<std::string, double> numbers;
+  /// The shaded image and its error image (magenta false lit, cyan false shadowed) when
+  /// MeasureOptions::keepImages and the frame had a reference; empty otherwise.
+  ImageRGBA8 color, errorImage;
 
   bool failed() const { return !renderError.empty(); }
 };
@@ -98,6 +111,7 @@ struct MeasureOptions {
   int width = 640, height = 360;
   bool reference = true;    ///< Embree reference: error, flicker
   bool publishing = false;  ///< ask for the published numbers (rotation): no readback
+  bool keepImages = false;  ///< keep the frame's image and error image (FrameSample::color)
 };
 
 /// One configuration with its own renderer (needs the current GL context).
@@ -127,5 +141,44 @@ class ConfigRunner {
   bool publishingWanted_ = true;  ///< off once a frame showed there is nothing to read
   std::vector<std::uint8_t> previousMask_, previousReference_;
 };
+
+/// Medians over the frames of one configuration that rendered; a failed frame is counted
+/// and named, never measured.
+struct ConfigSummary {
+  double totalMs = 0;
+  std::vector<double> frameMs;  ///< every frame's total, in the order the frames ran (NaN: failed)
+  std::map<std::string, double> passMs;
+  std::string timingMethod;
+  double texels = 0, bytes = 0;
+  double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
+  double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
+  double flickerPct = 0;
+  double lightAreaM2 = 0, halfMassX = 0, halfMassY = 0;  ///< NaN when not published
+  double rotationDeg = 0;  ///< DA-RTW's image-plane angle R (NaN without a rotation)
+  double anisotropy = 0;   ///< DA-RTW's (λ1−λ2)/(λ1+λ2) (NaN without one)
+  std::size_t renderErrors = 0, glErrors = 0;  ///< failed frames; GL errors in all frames
+  std::string failure;  ///< the first failed frame and why ("" when every frame rendered)
+  /// No frame rendered: a failed row, every number empty.
+  bool failed() const { return !failure.empty() && frameMs.size() == renderErrors; }
+};
+
+ConfigSummary summarise(const std::vector<FrameSample>& all);
+
+/// One camera per frame: `frames` along a camera path (`path`, or the scene's first when
+/// neither is given and it has one), else a fixed bookmark (`camera`). `cameraText` names
+/// it ("path walk", "camera (first bookmark)"). UsageError when both are given or the name
+/// is not the scene's.
+std::vector<Camera> measureCameras(const Scene& scene, const std::string& path,
+                                   const std::string& camera, int frames, std::string& cameraText);
+
+/// Every configuration renders every camera, interleaved frame by frame (the starting
+/// configuration rotates so none always runs right after the reference), after `warmup`
+/// unmeasured frames of each at the first camera (shaders compile, maps are allocated,
+/// DA-RTW's rotation settles). `onSample(config, frame, sample)` sees each sample before it
+/// is stored. Returns the samples per configuration, in frame order.
+std::vector<std::vector<FrameSample>> runInterleaved(
+    const std::vector<std::unique_ptr<ConfigRunner>>& runners, const std::vector<Camera>& cameras,
+    const MeasureOptions& options, ReferenceCache* reference, int warmup,
+    const std::function<void(std::size_t, int, const FrameSample&)>& onSample);
 
 }  // namespace sl::cli

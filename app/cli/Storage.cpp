@@ -167,6 +167,26 @@ StorageOptions parse(Args& a) {
 
 }  // namespace
 
+StorageQuery storageQuery(const std::vector<std::string>& args) {
+  Args a;
+  a.rest.push_back("storage");
+  a.rest.insert(a.rest.end(), args.begin(), args.end());
+  const StorageOptions o = parse(a);
+  if (!o.csv.empty() || !o.out.empty())
+    throw UsageError("--csv, --out: outputs are not part of a storage query");
+  SchemeSettings chosen = settingsFor(o.scheme, o.partitions, o);
+  if (o.eta) {
+    chosen.scheme = Scheme::Eta;
+    chosen.eta = *o.eta;
+  }
+  StorageQuery q;
+  if (auto e = partition::evaluateScheme(viewOf(o), towardsLight(o.azimuthDeg, o.elevationDeg),
+                                         chosen, q.result))
+    throw UsageError(*e);
+  q.splits = partition::splitDistances(o.split, o.nearM, o.farM, o.partitions, o.lambda);
+  return q;
+}
+
 int cmdStorage(Args& a) {
   const StorageOptions o = parse(a);
   std::vector<OutputFile> outputs;

@@ -8,6 +8,8 @@
 //             (Stability.cpp)
 //   storage   the storage factor of warped and partitioned shadow maps, Figs. 6-7 of
 //             Lloyd et al. 2006 (Storage.cpp)
+//   reproduce every claim of the papers measured, one verdict each -> REPORT.md
+//             (Reproduce.cpp)
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -766,7 +768,8 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) a.rest.emplace_back(argv[i]);
   try {
     if (a.rest.empty() || a.rest[0] == "--help" || a.rest[0] == "-h") {
-      std::cout << kUsage << kBenchUsage << kChartUsage << kStabilityUsage << kStorageUsage;
+      std::cout << kUsage << kBenchUsage << kChartUsage << kStabilityUsage << kStorageUsage
+                << kReproduceUsage;
       return a.rest.empty() ? 2 : 0;
     }
     const std::string& cmd = a.rest[0];
@@ -782,6 +785,8 @@ int main(int argc, char** argv) {
         std::cout << kStabilityUsage;
       else if (cmd == "storage")
         std::cout << kStorageUsage;
+      else if (cmd == "reproduce")
+        std::cout << kReproduceUsage;
       else
         std::cout << kUsage;
       return 0;
@@ -794,9 +799,11 @@ int main(int argc, char** argv) {
     if (cmd == "stability") return cmdStability(a);
     if (cmd == "chart") return cmdChart(a);
     if (cmd == "storage") return cmdStorage(a);
+    if (cmd == "reproduce") return cmdReproduce(a);
     throw UsageError(
         "unknown command '" + cmd +
-        "' (commands: list, version, render, compare, bench, chart, stability, storage)");
+        "' (commands: list, version, render, compare, bench, chart, stability, storage, "
+        "reproduce)");
   } catch (const UsageError& e) {
     std::cerr << "shadowlab-cli: " << e.what() << "\n";
     return 2;

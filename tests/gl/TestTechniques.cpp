@@ -128,6 +128,12 @@ class TypoKey : public UniformShadowMap {
   }
 };
 
+class AllLit : public UniformShadowMap {
+ public:
+  using UniformShadowMap::UniformShadowMap;
+  std::string lookupShader() const override { return testShader("all_lit_lookup.glsl"); }
+};
+
 template <typename T>
 TechniqueEntry entry(TechniqueInfo info) {
   return {std::move(info), [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
@@ -165,6 +171,10 @@ TechniqueEntry typoUniformTechnique() {
 
 TechniqueEntry typoKeyTechnique() {
   return entry<TypoKey>(infoOf("typo-key", "Misspelled parameter key"));
+}
+
+TechniqueEntry allLitTechnique() {
+  return entry<AllLit>(infoOf("test-all-lit", "Uniform, everything lit"));
 }
 
 std::unique_ptr<Renderer> makeTestRenderer(const std::string& scene, const std::string& technique) {

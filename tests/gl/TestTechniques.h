@@ -20,6 +20,10 @@ TechniqueEntry typoUniformTechnique();
 /// uniform whose renderShadows reads the parameter "resolutoin".
 TechniqueEntry typoKeyTechnique();
 
+/// uniform whose lookup reads every texel as the far plane: everything lit ("test-all-lit"),
+/// wrong on purpose (a claim measured on it is not reproduced).
+TechniqueEntry allLitTechnique();
+
 /// A renderer offering the four test techniques, with a built-in scene and its first camera.
 std::unique_ptr<Renderer> makeTestRenderer(const std::string& scene, const std::string& technique);
 

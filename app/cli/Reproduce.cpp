@@ -1,0 +1,865 @@
+// `shadowlab-cli reproduce`: see Reproduce.h.
+#include "Reproduce.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "Commands.h"
+#include "Montage.h"
+#include "algo/InputFile.h"
+#include "core/JsonInput.h"
+#include "core/Preset.h"
+#include "gl/EglContext.h"
+#include "scene/GltfLoader.h"
+
+namespace sl::cli {
+
+const char* const kReproduceUsage =
+    "       shadowlab-cli reproduce --out DIR [--seed 000..004]... [--claim ID]... [--quick]\n"
+    "                               [--claims FILE.json|FOLDER]\n"
+    "         (every claim of scenes/claims/*.json measured and judged: DIR/REPORT.md with\n"
+    "          figures, DIR/report.json; --quick: the claims' small sizes, a few minutes)\n";
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string num(double v) {
+  if (!std::isfinite(v)) return "n/a";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+// --- Reading a claims file: every error names the file and the JSON path.
+
+struct Reader {
+  std::string file;
+  /// "FILE: PATH: what" (PATH dotted: claims[3].expect.op), as every JSON input says it.
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    try {
+      JsonReader(file).fail(path, what);
+    } catch (const JsonInputError& e) {
+      throw UsageError(cutText(e.what(), 600));
+    }
+  }
+  void keys(const json& o, const std::string& path,
+            std::initializer_list<const char*> known) const {
+    if (!o.is_object()) fail(path, "expected an object");
+    for (const auto& [k, v] : o.items()) {
+      bool ok = false;
+      std::string list;
+      for (const char* n : known) {
+        ok = ok || k == n;
+        list += (list.empty() ? "" : ", ") + std::string(n);
+      }
+      if (!ok) fail(jsonPath(path, k), "unknown key (known: " + list + ")");
+    }
+  }
+  std::string str(const json& o, const std::string& path, const char* key, bool required,
+                  const std::string& fallback = "") const {
+    if (!o.contains(key)) {
+      if (required) fail(jsonPath(path, key), "missing");
+      return fallback;
+    }
+    if (!o.at(key).is_string()) fail(jsonPath(path, key), "expected a string");
+    return o.at(key).get<std::string>();
+  }
+  double number(const json& o, const std::string& path, const char* key) const {
+    if (!o.contains(key)) fail(jsonPath(path, key), "missing");
+    const json& v = o.at(key);
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      fail(jsonPath(path, key), "expected a finite number");
+    return v.get<double>();
+  }
+  std::vector<std::string> strings(const json& o, const std::string& path, const char* key) const {
+    std::vector<std::string> out;
+    if (!o.contains(key)) return out;
+    if (!o.at(key).is_array()) fail(jsonPath(path, key), "expected an array of strings");
+    for (std::size_t i = 0; i < o.at(key).size(); ++i) {
+      if (!o.at(key)[i].is_string()) fail(jsonPath(jsonPath(path, key), i), "expected a string");
+      out.push_back(o.at(key)[i].get<std::string>());
+    }
+    return out;
+  }
+};
+
+Predicate readPredicate(const Reader& r, const json& o, const std::string& path) {
+  r.keys(o, path, {"op", "value", "tolerance"});
+  Predicate p;
+  p.op = r.str(o, path, "op", true);
+  if (p.op != "<=" && p.op != ">=" && p.op != "<" && p.op != ">" && p.op != "within")
+    r.fail(jsonPath(path, "op"), "expected <=, >=, <, > or within, got '" + p.op + "'");
+  p.value = r.number(o, path, "value");
+  if (p.op == "within") {
+    p.tolerance = r.number(o, path, "tolerance");
+    if (p.tolerance < 0.0) r.fail(jsonPath(path, "tolerance"), "must not be negative");
+    if (p.value == 0.0) r.fail(jsonPath(path, "value"), "within needs a non-zero value (relative)");
+  } else if (o.contains("tolerance")) {
+    r.fail(jsonPath(path, "tolerance"), "only 'within' takes a tolerance");
+  }
+  return p;
+}
+
+RunSize readSize(const Reader& r, const json& o, const std::string& path, RunSize s) {
+  r.keys(o, path, {"size", "frames", "warmup"});
+  if (o.contains("size")) {
+    try {
+      std::tie(s.width, s.height) = parseSize(r.str(o, path, "size", true));
+    } catch (const UsageError& e) {
+      r.fail(jsonPath(path, "size"), e.what());
+    }
+  }
+  if (o.contains("frames")) {
+    const double f = r.number(o, path, "frames");
+    if (f < 1 || f > 1000 || f != std::floor(f))
+      r.fail(jsonPath(path, "frames"), "expected 1..1000");
+    s.frames = int(f);
+  }
+  if (o.contains("warmup")) {
+    const double w = r.number(o, path, "warmup");
+    if (w < 0 || w > 100 || w != std::floor(w)) r.fail(jsonPath(path, "warmup"), "expected 0..100");
+    s.warmup = int(w);
+  }
+  return s;
+}
+
+/// A configuration: {"preset"?: "papers/X.json", "technique"?, "params"?: {k: "v"}}: the
+/// preset's technique and parameters, then these on top. `presetScene` receives the preset's
+/// scene.
+ConfigSpec readConfig(const Reader& r, const json& o, const std::string& path,
+                      std::string* presetScene) {
+  r.keys(o, path, {"preset", "technique", "params"});
+  ConfigSpec c;
+  std::map<std::string, std::string> params;
+  if (o.contains("preset")) {
+    const std::string rel = r.str(o, path, "preset", true);
+    std::string error;
+    const fs::path file = builtinSceneDir() / rel;
+    const std::optional<Preset> p = loadPreset(file, &error);
+    if (!p) r.fail(jsonPath(path, "preset"), error);
+    c.techniqueId = p->technique;
+    for (const auto& [k, v] : p->params) c.sets.push_back({k, v});
+    if (presetScene && presetScene->empty()) *presetScene = p->scene;
+  }
+  if (o.contains("technique")) c.techniqueId = r.str(o, path, "technique", true);
+  if (c.techniqueId.empty())
+    r.fail(jsonPath(path, "technique"), "missing (or a preset that names one)");
+  if (o.contains("params")) {
+    const json& ps = o.at("params");
+    if (!ps.is_object())
+      r.fail(jsonPath(path, "params"), "expected an object of \"key\": \"value\"");
+    for (const auto& [k, v] : ps.items()) {
+      if (!v.is_string()) r.fail(jsonPath(jsonPath(path, "params"), k), "expected a string value");
+      auto it =
+          std::find_if(c.sets.begin(), c.sets.end(), [&](const auto& kv) { return kv.first == k; });
+      if (it != c.sets.end())
+        it->second = v.get<std::string>();
+      else
+        c.sets.push_back({k, v.get<std::string>()});
+    }
+  }
+  if (auto e = validateConfig(c)) r.fail(path, *e);
+  c.label = c.techniqueId + (c.sets.empty() ? "" : " " + c.paramsText());
+  return c;
+}
+
+bool metricKnown(const std::string& m) {
+  static const std::set<std::string> known = {"error_pct",     "false_lit_pct", "false_shadow_pct",
+                                              "aliasing_mean", "aliasing_p95",  "aliasing_max",
+                                              "flicker_pct",   "total_ms",      "shadow_ms",
+                                              "bytes",         "texels"};
+  return known.count(m) || m.rfind("pass:", 0) == 0 || m.rfind("pass_share:", 0) == 0;
+}
+
+Measurement readMeasurement(const Reader& r, const json& o, const std::string& path,
+                            const RunSize& fullDefault, const RunSize& quickDefault) {
+  r.keys(o, path,
+         {"kind", "scene", "camera", "path", "light", "a", "b", "metric", "combine", "number",
+          "statistic", "storage", "storage_b", "value", "figure", "full", "quick"});
+  Measurement m;
+  m.kind = r.str(o, path, "kind", true);
+  bool known = false;
+  for (const char* k : kMeasurementKinds) known = known || m.kind == k;
+  if (!known)
+    r.fail(jsonPath(path, "kind"),
+           "unknown '" + m.kind + "' (error-compare, time-ratio, memory-ratio, publication, cpu)");
+  m.full = fullDefault;
+  m.quick = quickDefault;
+  if (o.contains("full")) m.full = readSize(r, o.at("full"), jsonPath(path, "full"), fullDefault);
+  if (o.contains("quick"))
+    m.quick = readSize(r, o.at("quick"), jsonPath(path, "quick"), quickDefault);
+  if (m.kind == "cpu") {
+    m.storageA = r.strings(o, path, "storage");
+    m.storageB = r.strings(o, path, "storage_b");
+    if (m.storageA.empty())
+      r.fail(jsonPath(path, "storage"), "missing (the storage command's arguments)");
+    m.value = r.str(o, path, "value", true);
+    if (m.value != "s" && m.value != "mx" && m.value != "mz" && m.value != "parts" &&
+        m.value != "part_s_spread" && m.value != "imbalance" && m.value.rfind("split:", 0) != 0)
+      r.fail(jsonPath(path, "value"),
+             "expected s, mx, mz, imbalance, parts, part_s_spread or split:I");
+    for (const auto* args : {&m.storageA, &m.storageB}) {
+      if (args->empty()) continue;
+      try {
+        const StorageQuery q = storageQuery(*args);
+        if (m.value.rfind("split:", 0) == 0) {
+          const int i = parseInt("split", m.value.substr(6), 0, 64);
+          if (std::size_t(i) >= q.splits.size())
+            r.fail(
+                jsonPath(path, "value"),
+                "split index beyond the " + std::to_string(q.splits.size()) + " split distances");
+        }
+      } catch (const UsageError& e) {
+        r.fail(jsonPath(path, args == &m.storageA ? "storage" : "storage_b"), e.what());
+      }
+    }
+    if (o.contains("figure")) {
+      if (!o.at("figure").is_boolean()) r.fail(jsonPath(path, "figure"), "expected true or false");
+      m.figure = o.at("figure").get<bool>();
+    }
+    return m;
+  }
+  std::string presetScene;
+  if (!o.contains("a")) r.fail(jsonPath(path, "a"), "missing (the configuration measured)");
+  m.configs.push_back(readConfig(r, o.at("a"), jsonPath(path, "a"), &presetScene));
+  if (o.contains("b")) m.configs.push_back(readConfig(r, o.at("b"), jsonPath(path, "b"), nullptr));
+  m.scene = r.str(o, path, "scene", false, presetScene);
+  if (m.scene.empty()) r.fail(jsonPath(path, "scene"), "missing (or a preset in a that names one)");
+  m.camera = r.str(o, path, "camera", false);
+  m.path = r.str(o, path, "path", false);
+  if (!m.camera.empty() && !m.path.empty())
+    r.fail(jsonPath(path, "camera"), "give camera or path, not both");
+  m.lightText = r.str(o, path, "light", false);
+  if (!m.lightText.empty()) {
+    try {
+      m.light = parseLight("light", m.lightText);
+    } catch (const UsageError& e) {
+      r.fail(jsonPath(path, "light"), e.what());
+    }
+  }
+  if (m.kind == "publication") {
+    // A still camera: `render --frames N` from it re-runs the same frames (render has no path
+    // of frames).
+    if (m.camera.empty())
+      r.fail(jsonPath(path, "camera"), "missing (a publication is measured from a still camera)");
+    m.number = r.str(o, path, "number", true);
+    m.statistic = r.str(o, path, "statistic", true);
+    if (m.statistic != "median" && m.statistic != "min" && m.statistic != "max" &&
+        m.statistic != "final" && m.statistic != "changes")
+      r.fail(jsonPath(path, "statistic"), "expected median, min, max, final or changes");
+    if (m.configs.size() != 1)
+      r.fail(jsonPath(path, "b"), "a publication measures one configuration");
+    const TechniqueInfo* info = findTechniqueInfo(m.configs[0].techniqueId);
+    bool published = false;
+    for (const PublicationDecl& d : info->publications) {
+      const std::string& k = d.key;
+      const auto star = k.find('*');
+      published = published || k == m.number ||
+                  (star != std::string::npos && m.number.size() > k.size() - 1 &&
+                   m.number.compare(0, star, k, 0, star) == 0 &&
+                   m.number.compare(m.number.size() - (k.size() - star - 1), std::string::npos, k,
+                                    star + 1) == 0);
+    }
+    if (!published)
+      r.fail(jsonPath(path, "number"),
+             "'" + m.number + "' is not a number " + info->id + " publishes");
+    return m;
+  }
+  const char* defaultMetric = m.kind == "time-ratio"     ? "total_ms"
+                              : m.kind == "memory-ratio" ? "bytes"
+                                                         : "error_pct";
+  m.metric = r.str(o, path, "metric", false, defaultMetric);
+  if (!metricKnown(m.metric))
+    r.fail(jsonPath(path, "metric"),
+           "unknown '" + m.metric +
+               "' (error_pct, false_lit_pct, false_shadow_pct, aliasing_mean, aliasing_p95, "
+               "aliasing_max, flicker_pct, total_ms, shadow_ms, bytes, texels, pass:NAME, "
+               "pass_share:NAME)");
+  m.combine = r.str(o, path, "combine", false, m.configs.size() == 2 ? "ratio" : "a");
+  if (m.combine != "ratio" && m.combine != "difference" && m.combine != "a")
+    r.fail(jsonPath(path, "combine"), "expected ratio, difference or a");
+  if (m.combine != "a" && m.configs.size() != 2)
+    r.fail(jsonPath(path, "b"), "missing (combine " + m.combine + " needs two configurations)");
+  return m;
+}
+
+// --- Measuring.
+
+double metricOf(const ConfigSummary& s, const std::string& metric) {
+  if (metric == "error_pct") return s.errorPct;
+  if (metric == "false_lit_pct") return s.falseLitPct;
+  if (metric == "false_shadow_pct") return s.falseShadowPct;
+  if (metric == "aliasing_mean") return s.aliasingMean;
+  if (metric == "aliasing_p95") return s.aliasingP95;
+  if (metric == "aliasing_max") return s.aliasingMax;
+  if (metric == "flicker_pct") return s.flickerPct;
+  if (metric == "total_ms") return s.totalMs;
+  if (metric == "shadow_ms") {  // the frame less the camera's G-buffer and the composite
+    double ms = s.totalMs;
+    for (const char* pass : {"gbuffer", "composite"})
+      if (auto it = s.passMs.find(pass); it != s.passMs.end()) ms -= it->second;
+    return ms;
+  }
+  if (metric == "bytes") return s.bytes;
+  if (metric == "texels") return s.texels;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const char* prefix : {"pass:", "pass_share:"}) {
+    const std::string p = prefix;
+    if (metric.rfind(p, 0) != 0) continue;
+    // NAME, or PREFIX* for every pass whose name starts with PREFIX ("asm edges*").
+    std::string name = metric.substr(p.size());
+    const bool many = !name.empty() && name.back() == '*';
+    if (many) name.pop_back();
+    double ms = 0.0;
+    bool found = false;
+    for (const auto& [pass, passMs] : s.passMs)
+      if (many ? pass.rfind(name, 0) == 0 : pass == name) ms += passMs, found = true;
+    if (!found) return nan;
+    return p == "pass:" ? ms : ms / s.totalMs;
+  }
+  return nan;
+}
+
+bool needsReference(const Measurement& m) {
+  return m.kind == "error-compare" ||
+         (m.metric != "total_ms" && m.metric != "shadow_ms" && m.metric != "bytes" &&
+          m.metric != "texels" && m.metric.rfind("pass", 0) != 0 && m.kind != "publication");
+}
+
+std::string figureName(const std::string& id, const std::string& suffix) {
+  return "figures/" + id + suffix + ".png";
+}
+
+MeasuredValue measureRendered(const std::string& id, const Measurement& m, bool quick,
+                              const fs::path& outDir, const std::string& suffix) {
+  MeasuredValue out;
+  const RunSize size = quick ? m.quick : m.full;
+  std::shared_ptr<Scene> scene = loadScene(m.scene);
+  std::string cameraText;
+  const std::vector<Camera> cameras =
+      measureCameras(*scene, m.path, m.camera, size.frames, cameraText);
+  checkFrameSize(size.width, size.height);
+  std::vector<std::unique_ptr<ConfigRunner>> runners;
+  for (const ConfigSpec& c : m.configs)
+    runners.push_back(std::make_unique<ConfigRunner>(c, scene, m.light));
+  MeasureOptions opts;
+  opts.width = size.width;
+  opts.height = size.height;
+  opts.publishing = true;
+  const bool reference = needsReference(m) && ShadowReference::available();
+  if (needsReference(m) && !reference) {
+    out.why = ShadowReference::unavailableReason();
+    return out;
+  }
+  opts.keepImages = reference;
+  std::optional<ReferenceCache> cache;
+  if (reference) cache.emplace(*scene);
+  const auto samples =
+      runInterleaved(runners, cameras, opts, cache ? &*cache : nullptr, size.warmup, nullptr);
+  std::vector<ConfigSummary> sums;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    sums.push_back(summarise(samples[i]));
+    if (sums.back().renderErrors > 0) {
+      out.why = m.configs[i].label + ": " + sums.back().failure;
+      return out;
+    }
+    if (sums.back().glErrors > 0) {
+      out.why = m.configs[i].label + ": GL errors in its frames";
+      return out;
+    }
+  }
+  const std::string where = scene->name + ", " + cameraText + ", " + std::to_string(size.width) +
+                            "x" + std::to_string(size.height) + ", " + std::to_string(size.frames) +
+                            " frames";
+  if (m.kind == "publication") {
+    std::vector<double> v;
+    for (const FrameSample& f : samples[0]) {
+      auto it = f.numbers.find(m.number);
+      if (it != f.numbers.end() && std::isfinite(it->second)) v.push_back(it->second);
+    }
+    if (v.size() != samples[0].size()) {
+      out.why = m.number + " was published in " + std::to_string(v.size()) + " of " +
+                std::to_string(samples[0].size()) + " frames";
+      return out;
+    }
+    double value = 0.0;
+    if (m.statistic == "median") value = median(v);
+    if (m.statistic == "min") value = *std::min_element(v.begin(), v.end());
+    if (m.statistic == "max") value = *std::max_element(v.begin(), v.end());
+    if (m.statistic == "final") value = v.back();
+    if (m.statistic == "changes")
+      for (std::size_t i = 1; i < v.size(); ++i) value += std::abs(v[i] - v[i - 1]) > 1e-9 ? 1 : 0;
+    std::string series;
+    for (std::size_t i = 0; i < v.size() && i < 12; ++i) series += (i ? ", " : "") + num(v[i]);
+    if (v.size() > 12) series += ", ...";
+    out.measured = true;
+    out.value = value;
+    out.text = m.configs[0].label + ": " + m.number + " per frame " + series + "; " + m.statistic +
+               " = " + num(value) + " (" + where + ")";
+    return out;
+  }
+  std::vector<double> values;
+  for (const ConfigSummary& s : sums) values.push_back(metricOf(s, m.metric));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i])) {
+      out.why = m.configs[i].label + ": " + m.metric + " not measured (" +
+                (m.metric.rfind("pass", 0) == 0 ? "no such pass" : "no covered pixel") + ")";
+      return out;
+    }
+  double value = values[0];
+  if (m.combine == "ratio") value = values[0] / values[1];
+  if (m.combine == "difference") value = values[0] - values[1];
+  if (!std::isfinite(value)) {
+    out.why = m.metric + " of " + m.configs[1].label + " is 0: no ratio";
+    return out;
+  }
+  out.measured = true;
+  out.value = value;
+  out.text = m.metric + ": " + m.configs[0].label + " " + num(values[0]);
+  if (values.size() > 1)
+    out.text += ", " + m.configs[1].label + " " + num(values[1]) + "; " +
+                (m.combine == "ratio"        ? "a / b = "
+                 : m.combine == "difference" ? "a - b = "
+                                             : "") +
+                (m.combine == "a" ? "" : num(value));
+  out.text +=
+      " (" + where + (reference ? ", medians, against the exact reference" : ", medians") + ")";
+  // The last frame's images, side by side with their errors (the compare montage).
+  if (reference && !montageUnavailable()) {
+    std::vector<ui::FigureCell> cells;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const FrameSample& last = samples[i].back();
+      if (last.color.width == 0) continue;
+      cells.push_back(
+          {m.configs[i].label,
+           m.metric + " " + num(values[i]) + ", " + num(sums[i].bytes / (1024.0 * 1024.0)) + " MiB",
+           last.color, last.errorImage});
+    }
+    if (!cells.empty()) {
+      const std::string rel = figureName(id, suffix);
+      writeMontage(cells, id + ": " + where + " (magenta: wrongly lit, cyan: wrongly shadowed)", 0,
+                   std::nullopt, (outDir / rel).string());
+      out.figures.push_back(rel);
+    }
+  }
+  return out;
+}
+
+MeasuredValue measureCpu(const std::string& id, const Measurement& m, const fs::path& outDir,
+                         const std::string& suffix) {
+  MeasuredValue out;
+  auto valueOf = [&](const std::vector<std::string>& args, std::string& text) {
+    const StorageQuery q = storageQuery(args);
+    const partition::StorageResult& r = q.result;
+    double v = 0.0;
+    if (m.value == "s") v = r.s;
+    if (m.value == "mx") v = r.mx;
+    if (m.value == "mz") v = r.mz;
+    if (m.value == "parts") v = double(r.parts.size());
+    if (m.value == "imbalance") v = std::max(r.mx, r.mz) / std::min(r.mx, r.mz);
+    if (m.value == "part_s_spread") {
+      double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+      for (const auto& p : r.parts) lo = std::min(lo, p.storage.s), hi = std::max(hi, p.storage.s);
+      v = hi / lo;
+    }
+    if (m.value.rfind("split:", 0) == 0) v = q.splits[std::size_t(std::stoi(m.value.substr(6)))];
+    std::string joined;
+    for (const std::string& a : args) joined += (joined.empty() ? "" : " ") + a;
+    text = "storage " + joined + ": " + m.value + " = " + num(v) + " (S " + num(r.s) + ", " +
+           std::to_string(r.parts.size()) + " map" + (r.parts.size() == 1 ? "" : "s") + ")";
+    return v;
+  };
+  std::string ta, tb;
+  const double a = valueOf(m.storageA, ta);
+  out.value = a;
+  out.text = ta;
+  if (!m.storageB.empty()) {
+    const double b = valueOf(m.storageB, tb);
+    out.value = a / b;
+    out.text += "; " + tb + "; a / b = " + num(out.value);
+  }
+  out.measured = std::isfinite(out.value);
+  if (!out.measured) out.why = "the value is not finite: " + out.text;
+  if (m.figure && montageUnavailable() == std::nullopt) {
+    Args args;
+    args.rest.push_back("storage");
+    args.rest.insert(args.rest.end(), m.storageA.begin(), m.storageA.end());
+    const std::string prefix = "figures/" + id + suffix;
+    args.rest.push_back("--out");
+    args.rest.push_back((outDir / prefix).string());
+    args.rest.push_back("--grid");
+    args.rest.push_back("41");
+    std::fflush(stdout);
+    if (cmdStorage(args) == 0) {
+      out.figures.push_back(prefix + "-eta.png");
+      out.figures.push_back(prefix + "-hemisphere.png");
+    }
+  }
+  return out;
+}
+
+MeasuredValue measure(const std::string& id, const Measurement& m, bool quick,
+                      const fs::path& outDir, const std::string& suffix) {
+  try {
+    if (m.kind == "cpu") return measureCpu(id, m, outDir, suffix);
+    return measureRendered(id, m, quick, outDir, suffix);
+  } catch (const std::exception& e) {
+    MeasuredValue out;
+    out.why = cutText(e.what());
+    return out;
+  }
+}
+
+std::string shellQuote(const std::string& s) {
+  if (s.find_first_of(" '\"$;&|<>()*?") == std::string::npos && !s.empty()) return s;
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::vector<std::string> commandsFor(const std::string& id, const Measurement& m, bool quick) {
+  std::vector<std::string> out;
+  if (m.kind == "cpu") {
+    for (const auto* args : {&m.storageA, &m.storageB}) {
+      if (args->empty()) continue;
+      std::string c = "shadowlab-cli storage";
+      for (const std::string& a : *args) c += " " + shellQuote(a);
+      out.push_back(c);
+    }
+    return out;
+  }
+  const RunSize size = quick ? m.quick : m.full;
+  std::string where = " --scene " + shellQuote(m.scene);
+  if (!m.camera.empty()) where += " --camera " + shellQuote(m.camera);
+  if (!m.path.empty()) where += " --path " + shellQuote(m.path);
+  if (!m.lightText.empty()) where += " --light " + shellQuote(m.lightText);
+  const std::string sz = " --size " + std::to_string(size.width) + "x" +
+                         std::to_string(size.height) + " --frames " + std::to_string(size.frames);
+  // bench reads KEY=V1,V2 as a sweep: a value with ',' or ':' cannot be written there.
+  bool sweepable = true;
+  for (const ConfigSpec& c : m.configs)
+    for (const auto& [k, v] : c.sets)
+      sweepable = sweepable && v.find_first_of(",:") == std::string::npos;
+  if (m.kind != "publication" && sweepable) {
+    std::string c = "shadowlab-cli bench" + where + sz + " --warmup " + std::to_string(size.warmup);
+    for (const ConfigSpec& cfg : m.configs) {
+      std::string t = cfg.techniqueId;
+      for (const auto& [k, v] : cfg.sets) t += ":" + k + "=" + v;
+      c += " --technique " + shellQuote(t);
+    }
+    if (!needsReference(m)) c += " --no-reference";
+    c += " --csv " + id + ".csv";
+    out.push_back(c);
+  } else {
+    for (const ConfigSpec& cfg : m.configs) {
+      std::string c = "shadowlab-cli render" + where + " --technique " + cfg.techniqueId;
+      for (const auto& [k, v] : cfg.sets) c += " --set " + shellQuote(k + "=" + v);
+      c += " --size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+           " --frames " + std::to_string(size.frames) + " --out " + id + ".png --metrics " + id +
+           ".json";
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+std::string cell(std::string s) {
+  for (char& c : s)
+    if (c == '|' || c == '\n') c = ' ';
+  return s;
+}
+
+}  // namespace
+
+bool Predicate::holds(double measured) const {
+  if (!std::isfinite(measured)) return false;
+  if (op == "<=") return measured <= value;
+  if (op == ">=") return measured >= value;
+  if (op == "<") return measured < value;
+  if (op == ">") return measured > value;
+  return std::abs(measured / value - 1.0) <= tolerance;
+}
+
+std::string Predicate::text() const {
+  if (op == "within") return "within " + num(100.0 * tolerance) + " % of " + num(value);
+  return op + " " + num(value);
+}
+
+std::vector<Claim> loadClaims(const fs::path& file) {
+  Reader r{file.string()};
+  json doc;
+  try {
+    doc = JsonReader(file.string()).parseFile();  // regular file, size and depth limits
+  } catch (const std::exception& e) {
+    throw UsageError(cutText(e.what(), 600));
+  }
+  r.keys(doc, "", {"seed", "source", "sizes", "claims"});
+  const std::string seed = r.str(doc, "", "seed", true);
+  if (seed.size() != 3 || !std::all_of(seed.begin(), seed.end(), ::isdigit))
+    r.fail("seed", "expected three digits, e.g. \"000\"");
+  const std::string source = r.str(doc, "", "source", true);
+  RunSize full, quick{160, 90, 2, 1};
+  if (doc.contains("sizes")) {
+    const json& s = doc.at("sizes");
+    r.keys(s, "sizes", {"full", "quick"});
+    if (s.contains("full")) full = readSize(r, s.at("full"), "sizes.full", full);
+    if (s.contains("quick")) quick = readSize(r, s.at("quick"), "sizes.quick", quick);
+  }
+  if (!doc.contains("claims") || !doc.at("claims").is_array() || doc.at("claims").empty())
+    r.fail("claims", "expected a non-empty array of claims");
+  std::vector<Claim> out;
+  for (std::size_t i = 0; i < doc.at("claims").size(); ++i) {
+    const json& c = doc.at("claims")[i];
+    const std::string path = jsonPath("claims", i);
+    r.keys(c, path,
+           {"id", "words", "paper_number", "note", "measure", "expect", "partly", "mechanism"});
+    Claim claim;
+    claim.file = file.string();
+    claim.seed = seed;
+    claim.source = source;
+    claim.id = r.str(c, path, "id", true);
+    if (claim.id.empty() || claim.id.size() > 64 ||
+        claim.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
+      r.fail(jsonPath(path, "id"), "expected 1..64 of a-z, 0-9 and '-'");
+    claim.words = r.str(c, path, "words", true);
+    claim.paperNumber = r.str(c, path, "paper_number", true);
+    claim.note = r.str(c, path, "note", false);
+    if (!c.contains("measure")) r.fail(jsonPath(path, "measure"), "missing");
+    claim.measurement = readMeasurement(r, c.at("measure"), jsonPath(path, "measure"), full, quick);
+    if (!c.contains("expect")) r.fail(jsonPath(path, "expect"), "missing");
+    claim.expect = readPredicate(r, c.at("expect"), jsonPath(path, "expect"));
+    if (c.contains("partly"))
+      claim.partly = readPredicate(r, c.at("partly"), jsonPath(path, "partly"));
+    if (c.contains("mechanism")) {
+      const json& mj = c.at("mechanism");
+      r.keys(mj, jsonPath(path, "mechanism"), {"text", "measure"});
+      claim.mechanismText = r.str(mj, jsonPath(path, "mechanism"), "text", true);
+      if (!mj.contains("measure"))
+        r.fail(jsonPath(jsonPath(path, "mechanism"), "measure"), "missing");
+      claim.mechanism = readMeasurement(
+          r, mj.at("measure"), jsonPath(jsonPath(path, "mechanism"), "measure"), full, quick);
+    }
+    out.push_back(std::move(claim));
+  }
+  return out;
+}
+
+std::vector<Claim> loadClaimFolder(const fs::path& folder) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(folder, ec))
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  if (ec) throw UsageError(folder.string() + ": cannot be read (" + ec.message() + ")");
+  std::sort(files.begin(), files.end());
+  std::vector<Claim> all;
+  std::map<std::string, std::string> seen;
+  for (const fs::path& f : files)
+    for (Claim& c : loadClaims(f)) {
+      if (auto it = seen.find(c.id); it != seen.end())
+        throw UsageError(f.string() + ": claim id '" + c.id + "' is also in " + it->second);
+      seen[c.id] = f.string();
+      all.push_back(std::move(c));
+    }
+  return all;
+}
+
+std::string verdictFor(const Claim& claim, const MeasuredValue& value) {
+  if (!value.measured) return "not measured";
+  if (claim.expect.holds(value.value)) return "reproduced";
+  if (claim.partly && claim.partly->holds(value.value)) return "partly";
+  return "not reproduced";
+}
+
+std::vector<std::string> rerunCommands(const Claim& claim, bool quick) {
+  std::vector<std::string> out = commandsFor(claim.id, claim.measurement, quick);
+  out.push_back("shadowlab-cli reproduce --claim " + claim.id + (quick ? " --quick" : "") +
+                " --out reproduce-" + claim.id);
+  return out;
+}
+
+ClaimOutcome runClaim(const Claim& claim, bool quick, const fs::path& outDir) {
+  const auto start = std::chrono::steady_clock::now();
+  ClaimOutcome o;
+  o.main = measure(claim.id, claim.measurement, quick, outDir, "");
+  o.verdict = verdictFor(claim, o.main);
+  if (claim.mechanism && o.verdict != "reproduced" && o.verdict != "not measured")
+    o.mechanism = measure(claim.id, *claim.mechanism, quick, outDir, "-mechanism");
+  o.commands = rerunCommands(claim, quick);
+  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return o;
+}
+
+std::string reportMarkdown(const std::vector<Claim>& claims,
+                           const std::vector<ClaimOutcome>& outcomes, bool quick,
+                           const std::string& glDescription, double seconds) {
+  std::ostringstream md;
+  std::map<std::string, int> count;
+  for (const ClaimOutcome& o : outcomes) ++count[o.verdict];
+  md << "# The papers' claims, reproduced\n\n";
+  md << "Generated by `shadowlab-cli reproduce" << (quick ? " --quick" : "")
+     << "` from the claims in `scenes/claims/` (" << claims.size() << " claims, "
+     << formatDuration(seconds) << " on " << glDescription << "). Each claim quotes its paper, "
+     << "gives the paper's number, what the tool measured, the verdict the claim's threshold "
+        "gives, and the commands that re-run it. Timings are ratios within one interleaved run "
+        "on this machine, not the papers' GPUs (on a software rasteriser each pass is timed "
+        "with glFinish and a wall clock)";
+  if (std::ifstream load("/proc/loadavg"); load) {
+    double one = 0.0;
+    if (load >> one)
+      md << "; the machine's load average was " << num(one)
+         << " when the run ended (other processes share its cores, and the timing ratios vary "
+            "with it)";
+  }
+  md << ".\n\n";
+  md << "Verdicts: " << count["reproduced"] << " reproduced, " << count["partly"] << " partly, "
+     << count["not reproduced"] << " not reproduced, " << count["not measured"]
+     << " not measured.\n\n";
+  md << "| claim | paper | paper's number | measured | threshold | verdict |\n";
+  md << "|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < claims.size(); ++i) {
+    const Claim& c = claims[i];
+    const ClaimOutcome& o = outcomes[i];
+    md << "| [" << c.id << "](#" << c.id << ") | " << c.seed << " | " << cell(c.paperNumber)
+       << " | " << (o.main.measured ? num(o.main.value) : "—") << " | " << c.expect.text() << " | "
+       << o.verdict << " |\n";
+  }
+  std::string lastSeed;
+  for (std::size_t i = 0; i < claims.size(); ++i) {
+    const Claim& c = claims[i];
+    const ClaimOutcome& o = outcomes[i];
+    if (c.seed != lastSeed) {
+      md << "\n## " << c.seed << ": " << c.source << "\n";
+      lastSeed = c.seed;
+    }
+    md << "\n### " << c.id << "\n\n";
+    md << "**Paper:** \"" << c.words << "\"\n\n";
+    md << "**Paper's number:** " << c.paperNumber << "\n\n";
+    if (!c.note.empty()) md << "**Reading:** " << c.note << "\n\n";
+    md << "**Measurement (" << c.measurement.kind << "):** "
+       << (o.main.measured ? o.main.text : "not measured: " + o.main.why) << "\n\n";
+    md << "**Threshold:** reproduced when the value is " << c.expect.text();
+    if (c.partly) md << "; partly when " << c.partly->text();
+    md << "\n\n";
+    md << "**Verdict:** " << o.verdict << "\n\n";
+    if (o.verdict == "not reproduced" || o.verdict == "partly") {
+      md << "**Mechanism:** ";
+      if (o.mechanism)
+        md << c.mechanismText << " Measured: "
+           << (o.mechanism->measured ? o.mechanism->text : "not measured: " + o.mechanism->why);
+      else
+        md << "not found";
+      md << "\n\n";
+    }
+    md << "**Command:**\n\n```sh\n";
+    for (const std::string& cmd : o.commands) md << cmd << "\n";
+    md << "```\n";
+    std::vector<std::string> figures = o.main.figures;
+    if (o.mechanism)
+      figures.insert(figures.end(), o.mechanism->figures.begin(), o.mechanism->figures.end());
+    for (const std::string& f : figures) md << "\n![" << c.id << "](" << f << ")\n";
+  }
+  return md.str();
+}
+
+int cmdReproduce(Args& a) {
+  std::string out, claimsPath;
+  bool quick = false;
+  std::set<std::string> seeds, ids;
+  for (std::size_t i = 1; i < a.rest.size(); ++i) {
+    const std::string& o = a.rest[i];
+    if (o == "--out")
+      out = a.take(i, o);
+    else if (o == "--quick")
+      quick = true;
+    else if (o == "--seed") {
+      const std::string s = a.take(i, o);
+      if (s != "000" && s != "001" && s != "002" && s != "003" && s != "004")
+        throw UsageError("--seed: expected 000, 001, 002, 003 or 004, got '" + s + "'");
+      seeds.insert(s);
+    } else if (o == "--claim")
+      ids.insert(a.take(i, o));
+    else if (o == "--claims")
+      claimsPath = a.take(i, o);
+    else
+      throw UsageError("unknown option '" + o +
+                       "' (reproduce options: --out, --seed, --claim, "
+                       "--quick, --claims)");
+  }
+  if (out.empty()) throw UsageError("--out: missing (the folder for REPORT.md and its figures)");
+  const fs::path source = claimsPath.empty() ? builtinSceneDir() / "claims" : fs::path(claimsPath);
+  std::vector<Claim> all = fs::is_directory(source) ? loadClaimFolder(source) : loadClaims(source);
+  std::vector<Claim> claims;
+  for (Claim& c : all)
+    if ((seeds.empty() || seeds.count(c.seed)) && (ids.empty() || ids.count(c.id)))
+      claims.push_back(std::move(c));
+  for (const std::string& id : ids)
+    if (std::none_of(claims.begin(), claims.end(), [&](const Claim& c) { return c.id == id; }))
+      throw UsageError("--claim: no claim '" + id + "' (in " + source.string() +
+                       (seeds.empty() ? "" : " for the seeds given") + ")");
+  if (claims.empty()) throw UsageError("--seed: no claim for the seeds given");
+  checkOutputFolder("--out", out);
+  checkOutputFolder("--out", (fs::path(out) / "figures").string());
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<ClaimOutcome> outcomes;
+  std::string glDescription;
+  {
+    gl::EglContext ctx;
+    {
+      Renderer probe;
+      glDescription = probe.glDescription();
+    }
+    ProgressBar progress(quick ? "reproduce --quick" : "reproduce", claims.size());
+    for (const Claim& c : claims) {
+      outcomes.push_back(runClaim(c, quick, out));
+      progress.step(c.id + ": " + outcomes.back().verdict, true);
+    }
+    progress.finish();
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeText((fs::path(out) / "REPORT.md").string(),
+            reportMarkdown(claims, outcomes, quick, glDescription, seconds));
+  json j = json::array();
+  for (std::size_t i = 0; i < claims.size(); ++i) {
+    const Claim& c = claims[i];
+    const ClaimOutcome& o = outcomes[i];
+    json e;
+    e["id"] = c.id;
+    e["seed"] = c.seed;
+    e["kind"] = c.measurement.kind;
+    e["words"] = c.words;
+    e["paper_number"] = c.paperNumber;
+    e["verdict"] = o.verdict;
+    e["measured"] = o.main.measured;
+    if (o.main.measured) e["value"] = o.main.value;
+    e["measurement"] = o.main.measured ? o.main.text : o.main.why;
+    e["threshold"] = c.expect.text();
+    e["commands"] = o.commands;
+    e["figures"] = o.main.figures;
+    e["seconds"] = o.seconds;
+    j.push_back(e);
+  }
+  writeText((fs::path(out) / "report.json").string(),
+            j.dump(2, ' ', false, json::error_handler_t::replace));
+  std::map<std::string, int> count;
+  for (const ClaimOutcome& o : outcomes) ++count[o.verdict];
+  std::printf(
+      "%zu claims: %d reproduced, %d partly, %d not reproduced, %d not measured (%s) -> %s\n",
+      claims.size(), count["reproduced"], count["partly"], count["not reproduced"],
+      count["not measured"], formatDuration(seconds).c_str(),
+      (fs::path(out) / "REPORT.md").string().c_str());
+  return 0;
+}
+
+}  // namespace sl::cli

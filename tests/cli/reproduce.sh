@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# shadowlab-cli reproduce --quick: every claim of scenes/claims/ measured at its small size.
+# The report's structure: at least 25 claims from all five papers, each with the paper's
+# words, its number, a measurement (or why not), a verdict of the four, a threshold and the
+# commands that re-run it; report.json agrees with REPORT.md and every figure it names exists.
+# Bad claims files: exit 2, one line naming the file and the JSON path.
+set -uo pipefail
+cli=$1 out=$3/reproduce
+rm -rf "$out"
+mkdir -p "$out"
+fail=0
+if ! timeout 600 "$cli" reproduce --quick --out "$out/q" >"$out/stdout.txt" 2>"$out/stderr.txt"; then
+  echo "FAIL: reproduce --quick exited $?"; tail -5 "$out/stderr.txt"; exit 1
+fi
+tail -1 "$out/stdout.txt"
+python3 - "$out/q" <<'PY' || fail=1
+import json, os, re, sys
+d = sys.argv[1]
+md = open(os.path.join(d, "REPORT.md"), encoding="utf-8").read()
+rep = json.load(open(os.path.join(d, "report.json"), encoding="utf-8"))
+bad = []
+sections = re.split(r"^### ", md, flags=re.M)[1:]
+ids = [s.split("\n", 1)[0].strip() for s in sections]
+if len(ids) < 25: bad.append(f"{len(ids)} claims in REPORT.md, expected at least 25")
+if ids != [e["id"] for e in rep]: bad.append("REPORT.md and report.json list different claims")
+seeds = {e["seed"] for e in rep}
+if seeds != {"000", "001", "002", "003", "004"}: bad.append(f"seeds {sorted(seeds)}, expected all five")
+verdicts = {"reproduced", "partly", "not reproduced", "not measured"}
+for s, e in zip(sections, rep):
+    cid = e["id"]
+    for field in ("**Paper:** \"", "**Paper's number:** ", "**Measurement (", "**Threshold:** ", "**Verdict:** ", "**Command:**"):
+        if field not in s: bad.append(f"{cid}: no {field.strip()}")
+    m = re.search(r"^\*\*Verdict:\*\* (.+)$", s, flags=re.M)
+    if not m or m.group(1) not in verdicts: bad.append(f"{cid}: verdict {m.group(1) if m else None}")
+    elif m.group(1) != e["verdict"]: bad.append(f"{cid}: verdicts differ")
+    if not e["words"].strip() or not e["paper_number"].strip(): bad.append(f"{cid}: no words or number")
+    if not e["commands"] or not any(c.startswith("shadowlab-cli ") for c in e["commands"]): bad.append(f"{cid}: no command")
+    if e["verdict"] == "not measured":
+        if e["measured"] or not e["measurement"]: bad.append(f"{cid}: not measured without a reason")
+    elif not e["measured"] or "value" not in e: bad.append(f"{cid}: a verdict without a value")
+    if e["verdict"] in ("not reproduced", "partly") and "**Mechanism:** " not in s: bad.append(f"{cid}: no mechanism line")
+    for f in e["figures"]:
+        p = os.path.join(d, f)
+        if not os.path.isfile(p) or os.path.getsize(p) < 1000: bad.append(f"{cid}: figure {f} missing")
+        if f"]({f})" not in s: bad.append(f"{cid}: figure {f} not in REPORT.md")
+print("\n".join("FAIL: " + b for b in bad) if bad else f"ok: {len(ids)} claims, seeds {sorted(seeds)}, every claim with words, number, measurement, verdict, command")
+sys.exit(1 if bad else 0)
+PY
+
+# --claim runs one claim; its command line is the report's.
+"$cli" reproduce --quick --claim lloyd-storage-factor-minimal --out "$out/one" >/dev/null 2>&1 \
+  && grep -q '^### lloyd-storage-factor-minimal' "$out/one/REPORT.md" \
+  && [ "$(grep -c '^### ' "$out/one/REPORT.md")" = 1 ] || { echo "FAIL: --claim"; fail=1; }
+
+# Bad input: one line, exit 2, naming the file and the JSON path.
+bad() {  # name, expected text, json
+  printf '%s' "$3" >"$out/$1.json"
+  "$cli" reproduce --quick --claims "$out/$1.json" --out "$out/bad" >/dev/null 2>"$out/$1.err"
+  local rc=$?
+  if [ $rc -ne 2 ] || [ "$(wc -l <"$out/$1.err")" -ne 1 ] || ! grep -qF -- "$2" "$out/$1.err"; then
+    echo "FAIL: $1: exit $rc, expected 2 and one line with '$2':"; cat "$out/$1.err"; fail=1
+  else
+    echo "ok: $1: $(cat "$out/$1.err")"
+  fi
+}
+head='{"seed": "004", "source": "t", "claims": [{"id": "x", "words": "w", "paper_number": "1", '
+cpu='"measure": {"kind": "cpu", "storage": ["--scheme", "lispsm"], "value": "s"}'
+bad op "op.json: claims[0].expect.op: expected" "$head$cpu, \"expect\": {\"op\": \"=~\", \"value\": 1}}]}"
+bad key "key.json: claims[0].measure.colour: unknown key" "$head\"measure\": {\"kind\": \"cpu\", \"colour\": 1}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+bad kind "kind.json: claims[0].measure.kind: unknown 'speed'" "$head\"measure\": {\"kind\": \"speed\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+bad param "claims[0].measure.a: technique 'uniform' has no parameter 'resolutoin'" "$head\"measure\": {\"kind\": \"error-compare\", \"scene\": \"default\", \"a\": {\"technique\": \"uniform\", \"params\": {\"resolutoin\": \"1\"}}}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+bad storage "claims[0].measure.storage: --scheme: unknown 'fast'" "$head\"measure\": {\"kind\": \"cpu\", \"storage\": [\"--scheme\", \"fast\"], \"value\": \"s\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+bad json "not valid JSON" "$head"
+bad camera "claims[0].measure.camera: missing (a publication is measured from a still camera)" "$head\"measure\": {\"kind\": \"publication\", \"scene\": \"diagonal\", \"a\": {\"technique\": \"da-rtw\"}, \"number\": \"rotation.deg\", \"statistic\": \"max\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+"$cli" reproduce --seed 005 --out "$out/bad" >/dev/null 2>"$out/seed.err"
+[ $? -eq 2 ] && grep -q -- '--seed: expected 000' "$out/seed.err" || { echo "FAIL: --seed 005"; fail=1; }
+[ $fail -eq 0 ] && echo "ok: reproduce"
+exit $fail

@@ -549,6 +549,7 @@ std::optional<std::string> ViewportWidget::prepareSplitRenderer() {
     splitParamsPending_ = false;
     lastSplitParamRevision_ = splitRenderer_->params().revision();
   }
+  splitRenderer_->requestPublications(splitPublicationKeys_);
   return problem;
 }
 

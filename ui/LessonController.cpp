@@ -416,7 +416,24 @@ QString LessonController::bannerTitle() const {
 
 QString LessonController::bannerText() const {
   if (index_ < 0 || !bannerAction_ || !bannerAction_->isChecked()) return {};
-  return firstParagraph(activePreset()->explanation);  // a case's: what this case shows
+  // A case's: what this case shows; its live numbers filled.
+  return firstParagraph(w_.fillLiveText(activePreset()->explanation));
+}
+
+std::vector<const std::string*> LessonController::shownTexts() const {
+  std::vector<const std::string*> texts;
+  if (index_ < 0) return texts;
+  const sl::Preset& lesson = lessons_[static_cast<std::size_t>(index_)].preset;
+  texts.push_back(&lesson.explanation);
+  if (const sl::Preset* shown = activePreset(); shown && shown != &lesson)
+    texts.push_back(&shown->explanation);
+  return texts;
+}
+
+bool LessonController::quotesLiveNumbers() const {
+  for (const std::string* text : shownTexts())
+    if (text->find('{') != std::string::npos) return true;
+  return false;
 }
 
 }  // namespace sl::ui

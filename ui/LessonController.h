@@ -80,6 +80,10 @@ class LessonController : public QObject {
   /// Banner title and text of the active lesson (empty: none, or the banner is off).
   QString bannerTitle() const;
   QString bannerText() const;
+  /// The texts shown now (the lesson's explanation, and its active case's).
+  std::vector<const std::string*> shownTexts() const;
+  /// A text shown now quotes a live number ("{error_pct}").
+  bool quotesLiveNumbers() const;
 
  private:
   MainWindow& w_;

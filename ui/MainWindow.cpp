@@ -44,6 +44,7 @@
 #include "panels/common/LessonPanel.h"
 #include "panels/common/ParamPanel.h"
 #include "panels/rtw/RtwSettle.h"
+#include "core/LiveText.h"
 #include "panels/common/TimingPanel.h"
 #include "panels/light/LightPanel.h"
 #include "scene/GltfLoader.h"
@@ -425,6 +426,12 @@ void MainWindow::onFrameRendered() {
   if (rendererBound_) grab_->countFrame();
   if (docks_.isCurrent(*renderer, false)) docks_.feed(*renderer, false);
   passes_->onFrameRendered();
+  refreshLiveTexts();
+}
+
+void MainWindow::refreshLiveTexts() {
+  lessonPanel_->refreshLiveNumbers();
+  if (lessons_->quotesLiveNumbers()) updateBanner();
 }
 
 void MainWindow::onRenderProblem(const QString& message) {
@@ -440,6 +447,7 @@ void MainWindow::onInitializationFailed(const QString& message) {
 }
 
 void MainWindow::onErrorUnmeasured(const QString& why) {
+  refreshLiveTexts();
   errorLabel_->setEnabled(true);
   if (viewport_->continuous()) return updateLiveErrorLabel();
   errorLabel_->setText(tr("error n/a (%1)").arg(why));
@@ -447,6 +455,7 @@ void MainWindow::onErrorUnmeasured(const QString& why) {
 }
 
 void MainWindow::onErrorComputed(double errorPct) {
+  refreshLiveTexts();
   errorLabel_->setEnabled(true);
   if (viewport_->continuous()) return updateLiveErrorLabel();
   errorLabel_->setText(tr("error %1 %").arg(errorPct, 0, 'f', errorPct < 1 ? 3 : 2));
@@ -581,6 +590,36 @@ void MainWindow::onChartsConfigurationChosen(const QString& id, const QStringLis
   info(tr("Charts: showing %1 %2").arg(id, assignments.join(QLatin1Char(' '))));
 }
 
+std::string MainWindow::fillLiveText(const std::string& text) const {
+  auto side = [this](const sl::Renderer* r, std::optional<double> errorPct, bool failed) {
+    sl::LiveSide s;
+    if (!r) return s;
+    s.errorPct = errorPct;
+    if (!failed) s.frameMs = r->stats().totalMs;
+    s.memoryMB = static_cast<double>(r->stats().memory.bytes()) / (1024.0 * 1024.0);
+    s.publication = &r->publication();
+    return s;
+  };
+  // The error the caption shows: the current view's, or in continuous rendering the latest
+  // reference's (never a number that was not measured).
+  auto live = [](std::optional<double> current,
+                 const std::optional<ViewportWidget::LiveError>& latest) -> std::optional<double> {
+    if (current) return current;
+    if (latest && latest->unmeasured.isEmpty()) return latest->errorPct;
+    return std::nullopt;
+  };
+  if (!viewport_) return sl::fillLiveText(text, {}, nullptr);
+  const bool failed = !viewport_->frameFailure().isEmpty();
+  const sl::LiveSide left =
+      side(viewport_->renderer(),
+           failed ? std::nullopt : live(viewport_->errorPct(), viewport_->liveError()), failed);
+  const sl::Renderer* split = viewport_->currentSplitRenderer();
+  const sl::LiveSide right = side(
+      split, failed ? std::nullopt : live(viewport_->splitErrorPct(), viewport_->splitLiveError()),
+      failed);
+  return sl::fillLiveText(text, left, split ? &right : nullptr);
+}
+
 void MainWindow::updatePublishing() {
   sl::Renderer* r = viewport_ ? viewport_->renderer() : nullptr;
   if (!r) return;
@@ -593,7 +632,15 @@ void MainWindow::updatePublishing() {
     if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))
       for (const sl::PublicationDecl& d : info->publications)
         if (d.kind == sl::PublicationKind::Number) keys.insert(d.key);
+  // What the lesson's text quotes, on either side of the split view.
+  std::set<std::string> splitKeys;
+  if (lessons_)
+    for (const std::string* text : lessons_->shownTexts()) {
+      keys.merge(sl::livePublicationKeys(*text, false));
+      splitKeys.merge(sl::livePublicationKeys(*text, true));
+    }
   r->requestPublications(std::move(keys));
+  viewport_->setSplitPublications(std::move(splitKeys));
 }
 
 void MainWindow::updateBanner() {

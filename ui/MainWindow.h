@@ -78,6 +78,10 @@ class MainWindow : public QMainWindow {
   /// path to a preset. False (reported) when there is no such lesson or it cannot load.
   bool startLesson(const QString& lesson, int caseIndex = 0);
 
+  /// `text` (a lesson's) with its live numbers ("{error_pct}", "{compare.error_pct}",
+  /// "{pca.anisotropy}") filled from the last frame of the view and of its split half.
+  std::string fillLiveText(const std::string& text) const;
+
   /// Runs GUI self-test `name` (params, bad-gltf=FILE, teaching=DIR, charts=DIR) once
   /// the renderer has drawn a frame: prints "ok"/"FAIL" lines, exits 0 (pass) or 1.
   void startSelfTest(const QString& name, const QString& argument);
@@ -148,6 +152,8 @@ class MainWindow : public QMainWindow {
   void updatePublishing();
   /// The banner over the view: the pass being stepped, else the lesson.
   void updateBanner();
+  /// A new frame or error: the lesson's texts that quote live numbers are filled again.
+  void refreshLiveTexts();
   void setPaused(bool paused);
   void stepFrame();
   /// Renders until `frames` more frames are drawn (self-tests, grabs); false on timeout.

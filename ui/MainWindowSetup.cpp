@@ -442,6 +442,7 @@ void MainWindow::createPanelDocks() {
     });
   }
   lessonPanel_ = new LessonPanel;
+  lessonPanel_->setLiveFill([this](const std::string& text) { return fillLiveText(text); });
   lessonDock_ =
       addPanelDock(lessonPanel_, tr("Lesson"), QStringLiteral("lesson"), Qt::RightDockWidgetArea);
   // The light is edited, not published: its dock is not a registry entry

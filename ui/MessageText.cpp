@@ -22,6 +22,24 @@ QString shownMessage(const QString& message) {
   return shown + QChar(0x2026);
 }
 
+QString shownSummary(const QString& text) {
+  const QString shown = shownMessage(text);
+  if (shown == text) return text;
+  const QString kept = shown.left(shown.size() - 1);  // without the "…"
+  // The last sentence end (". ", "! ", "? " or a line end after one) within what is shown.
+  qsizetype end = -1;
+  for (qsizetype i = 0; i + 1 < kept.size(); ++i)
+    if ((kept[i] == QLatin1Char('.') || kept[i] == QLatin1Char('!') ||
+         kept[i] == QLatin1Char('?') || kept[i] == QLatin1Char(':')) &&
+        kept[i + 1].isSpace())
+      end = i + 1;
+  if (end <= 0) {  // no sentence end: cut at the last space, never inside a word or number
+    end = kept.lastIndexOf(QLatin1Char(' '));
+    if (end <= 0) return shown;
+  }
+  return kept.left(end).trimmed() + QStringLiteral(" \u2026");
+}
+
 QString messageDetails(const QString& message) {
   if (message.size() > kMessageDetailsChars || shownMessage(message) == message) return {};
   return message;

@@ -19,6 +19,10 @@ inline constexpr int kMessageDetailsChars = 20000;
 /// marked with "…". Never splits a surrogate pair.
 QString shownMessage(const QString& message);
 
+/// A summary of a long text for the viewport's banner: shownMessage(), but cut after the last
+/// whole sentence that fits (a number is never cut in half); the Lesson dock has the rest.
+QString shownSummary(const QString& text);
+
 /// The full message, for a tooltip or details, when shownMessage() cut it and it is at most
 /// kMessageDetailsChars long; otherwise empty.
 QString messageDetails(const QString& message);

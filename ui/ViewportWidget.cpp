@@ -160,17 +160,23 @@ class ViewOverlay : public QWidget {
       p.drawImage(QRect(half, 0, width() - half, height()), split);
       p.setPen(QPen(QColor(255, 255, 255, 220), 2));
       p.drawLine(half, 0, half, height());
+      // The captions wrap (never cut: the error is the number a comparison is about).
+      int captionsH = line;
       for (int side = 0; side < 2; ++side) {
         const QString& text = side == 0 ? leftCaption : rightCaption;
         const int x0 = side == 0 ? 0 : half;
         const int w = side == 0 ? half : width() - half;
         const int tw = std::min(w - 16, fm.horizontalAdvance(text) + 16);
-        const QRectF r(x0 + (w - tw) / 2.0, height() - line - 18, tw, line + 10);
+        const QRect bounds = fm.boundingRect(QRect(0, 0, std::max(1, tw - 8), 10000),
+                                             Qt::TextWordWrap | Qt::AlignCenter, text);
+        const int th = std::max(line, bounds.height());
+        captionsH = std::max(captionsH, th);
+        const QRectF r(x0 + (w - tw) / 2.0, height() - th - 18, tw, th + 10);
         box(r);
         p.setPen(Qt::white);
-        p.drawText(r, Qt::AlignCenter, fm.elidedText(text, Qt::ElideRight, tw - 8));
+        p.drawText(r.adjusted(4, 0, -4, 0), Qt::AlignCenter | Qt::TextWordWrap, text);
       }
-      bottomInset = line + 26;
+      bottomInset = captionsH + 26;
     }
     if (!bannerTitle.isEmpty() || !bannerText.isEmpty()) {
       const int w = std::min(width() - 24, std::max(360, width() * 2 / 3));
@@ -179,14 +185,16 @@ class ViewOverlay : public QWidget {
       const QRect textRect(0, 0, w - 20, 10000);
       const QRect textBounds =
           fm.boundingRect(textRect, Qt::TextWordWrap | Qt::AlignLeft, bannerText);
-      const int titleH = bannerTitle.isEmpty() ? 0 : line + 4;
+      const QRect titleBounds = QFontMetrics(bold).boundingRect(
+          textRect, Qt::TextWordWrap | Qt::AlignLeft, bannerTitle);  // wrapped, never cut
+      const int titleH = bannerTitle.isEmpty() ? 0 : titleBounds.height() + 4;
       const QRectF r(12, 10, w, titleH + (bannerText.isEmpty() ? 0 : textBounds.height()) + 14);
       boxColor = QColor(20, 22, 25, 215);
       box(r);
       p.setPen(QColor(255, 200, 60));
       p.setFont(bold);
-      p.drawText(QRectF(r.left() + 10, r.top() + 6, w - 20, line + 2),
-                 Qt::AlignLeft | Qt::AlignVCenter, bannerTitle);
+      p.drawText(QRectF(r.left() + 10, r.top() + 6, w - 20, titleH),
+                 Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, bannerTitle);
       p.setFont(font());
       p.setPen(Qt::white);
       p.drawText(QRectF(r.left() + 10, r.top() + 7 + titleH, w - 20, textBounds.height() + 2),
@@ -224,15 +232,23 @@ class ViewOverlay : public QWidget {
     }
     if (!resolutionNote.isEmpty()) {  // bottom right: the view is not at full size
       const int tw = std::min(width() - 24, fm.horizontalAdvance(resolutionNote) + 20);
-      const QRectF r(width() - tw - 12, height() - bottomInset - line - 10, tw, line + 10);
+      const int th =
+          std::max(line, fm.boundingRect(QRect(0, 0, std::max(1, tw - 8), 10000),
+                                         Qt::TextWordWrap | Qt::AlignCenter, resolutionNote)
+                             .height());
+      const QRectF r(width() - tw - 12, height() - bottomInset - th - 10, tw, th + 10);
       box(r);
       p.setPen(QColor(255, 200, 60));
-      p.drawText(r, Qt::AlignCenter, fm.elidedText(resolutionNote, Qt::ElideRight, tw - 8));
+      p.drawText(r.adjusted(4, 0, -4, 0), Qt::AlignCenter | Qt::TextWordWrap, resolutionNote);
     }
     if (legend == Legend::Aliasing) {
       // Same colours as aliasingColor() in shaders/common/composite.frag (log2 m in -4..4,
       // blended at 70 % over the shaded scene there).
-      const QRectF r(12, height() - bottomInset - 2 * line - 30, 260, 2 * line + 22);
+      // As wide as its caption (and at least the bar's 260 px), never cutting it.
+      const QString caption = tr("texels per pixel m (red: undersampled)");
+      const double legendW =
+          std::min<double>(width() - 24, std::max(260, fm.horizontalAdvance(caption) + 24));
+      const QRectF r(12, height() - bottomInset - 2 * line - 30, legendW, 2 * line + 22);
       box(r);
       const QRectF bar(r.left() + 10, r.top() + 8, r.width() - 20, 10);
       for (int i = 0; i < int(bar.width()); ++i) {
@@ -249,8 +265,7 @@ class ViewOverlay : public QWidget {
       p.drawText(labels, Qt::AlignLeft, QStringLiteral("m \u2264 1/16"));
       p.drawText(labels, Qt::AlignHCenter, QStringLiteral("1"));
       p.drawText(labels, Qt::AlignRight, QStringLiteral("\u2265 16"));
-      p.drawText(QRectF(bar.left(), labels.bottom(), bar.width(), line), Qt::AlignHCenter,
-                 tr("texels per pixel m (red: undersampled)"));
+      p.drawText(QRectF(bar.left(), labels.bottom(), bar.width(), line), Qt::AlignHCenter, caption);
     } else if (legend == Legend::Error) {
       const QString a = tr("false lit (light leak)"), b = tr("false shadowed");
       const QString& note = errorNote;
@@ -549,6 +564,7 @@ std::optional<std::string> ViewportWidget::prepareSplitRenderer() {
     splitParamsPending_ = false;
     lastSplitParamRevision_ = splitRenderer_->params().revision();
   }
+  splitRenderer_->requestPublications(splitPublicationKeys_);
   return problem;
 }
 
@@ -813,7 +829,7 @@ std::map<std::string, std::string> ViewportWidget::splitParams() const {
 
 void ViewportWidget::setBanner(const QString& title, const QString& text) {
   overlay_->bannerTitle = shownMessage(title);
-  overlay_->bannerText = shownMessage(text);
+  overlay_->bannerText = shownSummary(text);
   overlay_->setVisible(overlay_->hasContent());
   overlay_->raise();
   overlay_->update();

@@ -191,6 +191,9 @@ class ViewportWidget : public QOpenGLWidget {
   /// so that a panel may edit its ParamSet; null when the split view is off or there is no
   /// renderer yet.
   sl::Renderer* splitRenderer();
+  /// What the split renderer publishes from its next frame on (a lesson text's numbers of
+  /// the right half); no GL.
+  void setSplitPublications(std::set<std::string> keys) { splitPublicationKeys_ = std::move(keys); }
   /// The split renderer as it is (no GL): null while off or not yet made for the technique.
   const sl::Renderer* currentSplitRenderer() const {
     return splitRenderer_ && !splitTechniqueId_.empty() &&
@@ -309,6 +312,7 @@ class ViewportWidget : public QOpenGLWidget {
   /// Split view's right half: a second renderer on the same context (owns its own GL
   /// objects; created lazily, kept until the context goes).
   std::unique_ptr<sl::Renderer> splitRenderer_;
+  std::set<std::string> splitPublicationKeys_;  ///< setSplitPublications
   std::string splitTechniqueId_;
   std::map<std::string, std::string> splitParams_;  ///< given to setSplitTechnique
   bool splitParamsPending_ = false;                 ///< not yet applied to splitRenderer_

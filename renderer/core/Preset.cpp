@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "algo/Params.h"
+#include "algo/TextTemplate.h"
 #include "core/JsonInput.h"
 #include "core/LightJson.h"
 #include "core/Renderer.h"
@@ -186,6 +187,16 @@ void parseBody(const JsonReader& r, const json& j, const std::string& at, Preset
   }
   if (const json* c = JsonReader::member(j, "compare"))
     p.compare = parseCompare(r, *c, jsonPath(at, "compare"));
+  // The explanation's live numbers ("{error_pct}", "{compare.error_pct}"): well formed, and a
+  // right-half number only where there is a right half.
+  std::string error;
+  const auto text = TextTemplate::parse(p.explanation, &error);
+  if (!text) r.fail(jsonPath(at, "explanation"), error);
+  for (const TextPlaceholder& ph : text->placeholders())
+    if (ph.compare && (!p.compare || p.compare->technique.empty()))
+      r.fail(
+          jsonPath(at, "explanation"),
+          "{" + ph.spelling + "} quotes the split view's right half, but there is no \"compare\"");
 }
 
 Preset parsePreset(const JsonReader& r, const json& j) {

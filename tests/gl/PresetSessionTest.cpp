@@ -159,6 +159,25 @@ TEST(PresetSession, BadCompareIsRefusedNamingThePath) {
             "compare: expected an object {...}, got \"uniform\"");
 }
 
+TEST(PresetSession, LiveNumbersInTextsAreCheckedAtLoad) {
+  EXPECT_EQ(loadError("t1.json", R"({"explanation": "error {error_pct %"})"),
+            "explanation: placeholder at byte 6: '{' without '}' (write '{{' for a brace)");
+  EXPECT_EQ(loadError("t2.json", R"({"explanation": "right {compare.error_pct}"})"),
+            "explanation: {compare.error_pct} quotes the split view's right half, but there is "
+            "no \"compare\"");
+  EXPECT_EQ(loadError("t3.json", R"({"technique": "uniform", "explanation": "a",
+      "cases": [{"title": "x", "explanation": "ok {error_pct:2}"},
+                {"title": "y", "explanation": "{pca.e_x:9}"}]})"),
+            "cases[1].explanation: placeholder at byte 0: decimals after ':' must be one digit "
+            "0..6 in {pca.e_x:9}");
+  std::string error;
+  const auto ok = loadPreset(writeFile("t4.json", R"({"explanation": "{{a}} {compare.error_pct}",
+      "compare": {"technique": "uniform"}})"),
+                             &error);
+  ASSERT_TRUE(ok) << error;
+  EXPECT_EQ(ok->explanation, "{{a}} {compare.error_pct}");  // kept as written, filled live
+}
+
 TEST(PresetSession, BadLayoutIsRefusedNamingThePath) {
   EXPECT_EQ(loadError("l1.json", R"({"layout": {"state": "not base64!"}})"),
             "layout.state: expected the window state as base64, got not base64!");

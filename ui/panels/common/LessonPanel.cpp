@@ -10,6 +10,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTextBrowser>
 #include <QUrl>
 #include <QVBoxLayout>
@@ -175,6 +176,8 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count, int cas
   }
   cases_->setVisible(cases && !cases->empty());
   if (!lesson) {
+    shownLesson_.reset();
+    live_ = false;
     title_->setText(tr("Lessons"));
     QString html =
         tr("<p>Each lesson sets up a scene, camera, light, technique and parameters "
@@ -195,11 +198,38 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count, int cas
                       .arg(index + 1)
                       .arg(count)
                       .arg(shownMessage(QString::fromStdString(lesson->preset.title))));
+  shownLesson_ = *lesson;
+  shownIndex_ = index;
+  shownCount_ = count;
+  shownCase_ = caseIndex;
+  shownHtml_.clear();
+  showText();
+  previous_->setEnabled(index > 0);
+  next_->setEnabled(index + 1 < count);
+  restart_->setEnabled(true);
+}
+
+void LessonPanel::refreshLiveNumbers() {
+  if (shownLesson_ && live_ && liveFill_) showText();
+}
+
+QString LessonPanel::shownText() const {
+  return text_->toPlainText();
+}
+
+void LessonPanel::showText() {
+  const Lesson* lesson = &*shownLesson_;
+  const std::vector<sl::Preset>* cases = &lesson->preset.cases;
+  const int caseIndex = shownCase_;
   // Explanations are plain text; blank lines separate paragraphs. A lesson told in cases:
   // its own text, then the case's under the case's title.
   QString html;
-  auto paragraphs = [&html](const std::string& text) {
-    for (const QString& para : QString::fromStdString(text).split(QStringLiteral("\n\n")))
+  live_ = false;
+  auto paragraphs = [this, &html](const std::string& text) {
+    const bool live = text.find('{') != std::string::npos;
+    live_ = live_ || live;
+    const std::string shown = live && liveFill_ ? liveFill_(text) : text;
+    for (const QString& para : QString::fromStdString(shown).split(QStringLiteral("\n\n")))
       html += QStringLiteral("<p>%1</p>")
                   .arg(para.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>")));
   };
@@ -229,10 +259,11 @@ void LessonPanel::showLesson(const Lesson* lesson, int index, int count, int cas
                 .arg(tr("Its passes (] steps through them): %1")
                          .arg(titles.join(QStringLiteral(" → "))));
   }
+  if (html == shownHtml_) return;  // the same numbers: nothing to lay out
+  shownHtml_ = html;
+  const int scroll = text_->verticalScrollBar()->value();
   text_->setHtml(html);
-  previous_->setEnabled(index > 0);
-  next_->setEnabled(index + 1 < count);
-  restart_->setEnabled(true);
+  text_->verticalScrollBar()->setValue(scroll);
 }
 
 void LessonPanel::setCourse(const QString& position, const QString& thread, bool hasPrevious,

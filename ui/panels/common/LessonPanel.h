@@ -4,7 +4,9 @@
 // previous / next / restart.
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <QString>
@@ -67,6 +69,17 @@ class LessonPanel : public QWidget {
   /// The note as set (unelided).
   QString note() const { return noteText_; }
 
+  /// Where a text's live numbers ("{error_pct}", algo/TextTemplate.h) come from: the text
+  /// with its placeholders filled from the last frame. Unset: texts are shown as written.
+  using LiveFill = std::function<std::string(const std::string& text)>;
+  void setLiveFill(LiveFill fill) { liveFill_ = std::move(fill); }
+  /// A new frame (or a new error): the shown texts are filled again when they quote a live
+  /// number (nothing is laid out again otherwise; the scroll position is kept).
+  void refreshLiveNumbers();
+  /// The explanation as shown now (the case's under the lesson's; placeholders filled), as
+  /// plain text.
+  QString shownText() const;
+
  Q_SIGNALS:
   void previousRequested();
   void nextRequested();
@@ -86,6 +99,14 @@ class LessonPanel : public QWidget {
   QPushButton* restart_ = nullptr;
   QStringList titles_;
   QString noteText_;
+  LiveFill liveFill_;
+  /// A copy of the lesson shown (showLesson's arguments) and whether its texts quote live
+  /// numbers.
+  std::optional<Lesson> shownLesson_;
+  int shownIndex_ = 0, shownCount_ = 0, shownCase_ = 0;
+  bool live_ = false;
+  QString shownHtml_;
+  void showText();
 };
 
 }  // namespace sl::ui

@@ -293,10 +293,28 @@ int ImageView::legendWidth() const {
   return std::min(w + 6, kMaxLegendWidth);
 }
 
+int ImageView::captionHeight() const {
+  if (caption_.isEmpty()) return 0;
+  const QRect bounds =
+      fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
+                                 Qt::TextWordWrap | Qt::AlignLeft, caption_);
+  return bounds.height() + 4;
+}
+
+int ImageView::readoutHeight(const QString& readout) const {
+  const int line = fontMetrics().height() + 4;
+  if (readout.isEmpty()) return line;
+  const QRect bounds =
+      fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
+                                 Qt::TextWordWrap | Qt::AlignLeft, readout);
+  return std::max(line, bounds.height() + 4);
+}
+
 QRectF ImageView::viewArea() const {
+  // One line for the readout: a longer one wraps upwards over the image (it never moves it).
   const int line = fontMetrics().height() + 4;
   QRectF area = QRectF(rect()).adjusted(kMargin, kMargin, -kMargin, -kMargin - line);
-  if (!caption_.isEmpty()) area.setTop(area.top() + line);
+  area.setTop(area.top() + captionHeight());
   area.setRight(area.right() - legendWidth());
   return area;
 }
@@ -319,11 +337,10 @@ void ImageView::paintEvent(QPaintEvent*) {
   p.fillRect(rect(), pal.color(QPalette::Base));
   const QFontMetrics fm = fontMetrics();
   const int line = fm.height() + 4;
-  if (!caption_.isEmpty()) {
+  if (!caption_.isEmpty()) {  // wrapped, never cut: the numbers in it are what a lesson shows
     p.setPen(pal.color(QPalette::Text));
-    p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, line),
-               Qt::AlignLeft | Qt::AlignVCenter,
-               fm.elidedText(caption_, Qt::ElideRight, width() - 2 * kMargin));
+    p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
+               Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_);
   }
   const QRectF area = viewArea();
   if (image_.isNull()) {
@@ -370,12 +387,20 @@ void ImageView::paintEvent(QPaintEvent*) {
 
   // Readout of the texel under the cursor; a usage hint when the view has room for it.
   QString readout = hoverText();
-  if (readout.isEmpty() && height() > 220)
-    readout = tr("wheel: zoom · drag: pan · double-click: fit");
+  const int readoutH = readoutHeight(readout);  // wrapped: a texel's numbers are never cut
+  if (readout.isEmpty() && height() > 220 &&
+      fm.horizontalAdvance(tr("wheel: zoom · drag: pan · double-click: fit")) <=
+          width() - 2 * kMargin)
+    readout = tr("wheel: zoom · drag: pan · double-click: fit");  // a hint only where it fits
+  const QRect readoutRect(kMargin, height() - readoutH - kMargin / 2, width() - 2 * kMargin,
+                          readoutH);
+  if (readoutH > line) {
+    QColor back = pal.color(QPalette::Base);
+    back.setAlpha(225);
+    p.fillRect(readoutRect, back);
+  }
   p.setPen(pal.color(QPalette::PlaceholderText));
-  p.drawText(QRect(kMargin, height() - line - kMargin / 2, width() - 2 * kMargin, line),
-             Qt::AlignLeft | Qt::AlignVCenter,
-             fm.elidedText(readout, Qt::ElideRight, width() - 2 * kMargin));
+  p.drawText(readoutRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, readout);
 
   if (highlighted_) {
     p.setPen(QPen(QColor(255, 196, 0), 3));
@@ -493,10 +518,20 @@ void PlotWidget::setHighlighted(bool on) {
   update();
 }
 
+QString PlotWidget::fullTitle() const {
+  return yLabel_.isEmpty() ? title_ : QStringLiteral("%1  \u2014  y: %2").arg(title_, yLabel_);
+}
+
+int PlotWidget::titleHeight() const {
+  const QRect bounds = fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 12), 100000),
+                                                  Qt::TextWordWrap | Qt::AlignLeft, fullTitle());
+  return std::max(fontMetrics().height(), bounds.height());
+}
+
 QRectF PlotWidget::plotArea() const {
   const int line = fontMetrics().height();
   const int left = fontMetrics().horizontalAdvance(QStringLiteral("-0.0000")) + 12;
-  return QRectF(rect()).adjusted(left, line + 8, -10, -(2 * line + 8));
+  return QRectF(rect()).adjusted(left, titleHeight() + 8, -10, -(2 * line + 8));
 }
 
 PlotWidget::Ranges PlotWidget::ranges() const {
@@ -549,10 +584,8 @@ void PlotWidget::paintEvent(QPaintEvent*) {
   const QFontMetrics fm = fontMetrics();
   const int line = fm.height();
   p.setPen(pal.color(QPalette::Text));
-  const QString title =
-      yLabel_.isEmpty() ? title_ : QStringLiteral("%1  \u2014  y: %2").arg(title_, yLabel_);
-  p.drawText(QRect(6, 2, width() - 12, line + 4), Qt::AlignLeft | Qt::AlignVCenter,
-             fm.elidedText(title, Qt::ElideRight, width() - 12));
+  p.drawText(QRect(6, 2, width() - 12, titleHeight() + 4),
+             Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, fullTitle());
 
   bool any = false;
   for (const Series& s : series_) any = any || !s.points.empty();

@@ -124,7 +124,11 @@ class ImageView : public QWidget {
   void leaveEvent(QEvent* event) override;
 
  private:
-  int legendWidth() const;            ///< 0 without a legend
+  int legendWidth() const;  ///< 0 without a legend
+  /// Heights of the caption (top) and the readout (bottom), wrapped to the widget's width:
+  /// a caption or a readout is never cut, the image gets what is left.
+  int captionHeight() const;
+  int readoutHeight(const QString& readout) const;
   QString legendTick(float t) const;  ///< the colour bar's label at t in [0, 1]
   QRectF viewArea() const;            ///< the part of the widget available to the image
   QRectF imageRect() const;           ///< where the image lies, zoom and pan applied
@@ -198,6 +202,8 @@ class PlotWidget : public QWidget {
   };
   Ranges ranges() const;
   QRectF plotArea() const;
+  int titleHeight() const;  ///< the title wrapped to the widget's width (never cut)
+  QString fullTitle() const;
   double yToT(double y, const Ranges& r) const;
 
   QString title_, xLabel_, yLabel_, placeholder_;

@@ -2,6 +2,7 @@
 #include "PartitionsPanel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include <QHBoxLayout>
@@ -16,6 +17,24 @@
 namespace sl::ui {
 
 namespace {
+/// A map's texel count as its side squared ("1024²") when it is a square, else the number
+/// (a table cell that never wraps inside a number).
+QString texelCount(double texels) {
+  const double side = std::round(std::sqrt(std::max(0.0, texels)));
+  // (Not "%1²".arg(): QString::arg reads the superscript two as a digit of "%12".)
+  if (side > 0 && side * side == texels) return QString::number(qint64(side)) + QChar(0x00b2);
+  return formatValue(texels);
+}
+
+/// A table cell's number: three significant digits, never an exponent below 10^5 (the
+/// table must fit a presenter's dock without wrapping inside a number).
+QString cell(double v) {
+  const double a = std::abs(v);
+  if (!std::isfinite(v) || v == 0.0 || a >= 1e5 || a < 1e-3) return formatValue(v);
+  const int decimals = a >= 100 ? 0 : a >= 10 ? 1 : a >= 1 ? 2 : 2 - int(std::floor(std::log10(a)));
+  return QString::number(v, 'f', decimals);
+}
+
 constexpr int kMaxDisplayTexels = 512;  ///< larger maps are point-sampled for display
 
 /// The partition overlay's colour of map `i` (algo/PartitionColours).
@@ -130,16 +149,17 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
           tr("uniform: %1").arg(QString::fromUtf8(sl::warp::fallbackCauseText(c)).toHtmlEscaped());
       anyWarp = true;
     }
-    rows +=
-        QStringLiteral(
-            "<tr><td><span style='color:%1'>&#9632;</span> %2</td><td>%3</td><td>%4</td>"
-            "<td>%5</td><td>%6</td><td>%7</td><td>%8</td><td>%9</td><td>%10</td></tr>")
-            .arg(colour.name())
-            .arg(i)
-            .arg(formatValue(nearM), formatValue(farM), formatValue(extent), formatValue(texels),
-                 formatValue(perM), mPixels > 0 ? formatValue(mP95) : QStringLiteral("–"),
-                 mPixels > 0 ? formatValue(mMax) : QStringLiteral("–"))
-            .arg(warpText);
+    rows += QStringLiteral(
+                "<tr><td style='white-space:pre'><span style='color:%1'>&#9632;</span> %2</td><td "
+                "style='white-space:pre'>%3</td>"
+                "<td style='white-space:pre'>%4</td><td style='white-space:pre'>%5</td><td "
+                "style='white-space:pre'>%6</td><td style='white-space:pre'>%7</td>"
+                "<td style='white-space:pre'>%8</td><td>%9</td></tr>")
+                .arg(colour.name())
+                .arg(i)
+                .arg(cell(nearM) + QStringLiteral("–") + cell(farM), cell(extent),
+                     texelCount(texels), cell(perM), mPixels > 0 ? cell(mP95) : QStringLiteral("–"),
+                     mPixels > 0 ? cell(mMax) : QStringLiteral("–"), warpText);
     parts.append(QJsonObject{{QStringLiteral("near_m"), nearM},
                              {QStringLiteral("far_m"), farM},
                              {QStringLiteral("extent_m"), extent},
@@ -156,7 +176,7 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
   const double dn = number(pub, "depth.near"), df = number(pub, "depth.far");
   const bool fitted = number(pub, "depth.fitted", 0.0) > 0.5;
   table_->setText(
-      tr("<table cellspacing=6><tr><th>map</th><th>near (m)</th><th>far (m)</th>"
+      tr("<table cellspacing=6><tr><th>map</th><th>depth (m)</th>"
          "<th>width (m)</th><th>texels</th><th>texels/m</th><th>m p95</th>"
          "<th>m max</th><th>warp</th></tr>%1</table>Split range %2 – %3 m (%4). m: "
          "texels per pixel over last frame's pixels that selected the map (p95 to "

@@ -4,8 +4,8 @@
 // the whole map unless the tree is cut at maxLevels; an entry = the page's slot in one physical
 // pool), the pool's free-list allocator, allocation of a frame's unique page requests (the pool
 // running out coarsens the finest requested pages, group by group, and counts them, never fails)
-// and the binning of pages into superpages. Plain C++: the `rmsm` technique
-// (renderer/techniques/rmsm) renders what this allocates; the keys are the GPU's
+// and the binning of pages into superpages. Plain C++: the GL side
+// (renderer/core/PagedMap) renders what this allocates; the keys are the GPU's
 // (shaders/common/shared_constants.h SL_PAGE_*).
 #pragma once
 

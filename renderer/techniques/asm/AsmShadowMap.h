@@ -20,7 +20,7 @@
 #include "algo/asm/AdaptivePages.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
-#include "techniques/rmsm/PagedMap.h"
+#include "core/PagedMap.h"
 
 namespace sl {
 

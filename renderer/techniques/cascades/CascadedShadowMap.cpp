@@ -10,7 +10,7 @@
 #include "core/PartitionMStats.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
-#include "techniques/perspective/PerspectiveShadowMap.h"
+#include "core/Warp.h"
 
 namespace sl {
 

@@ -11,7 +11,7 @@
 #include "core/LightBinding.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
-#include "techniques/virtual-tiled/VirtualTiledShadowMap.h"
+#include "core/TiledVirtualMap.h"
 
 namespace sl {
 

@@ -9,17 +9,9 @@
 #include "algo/warp/PostPerspective.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
+#include "core/Warp.h"
 
 namespace sl {
-
-/// The `warp.eta` parameter (eq. 11) with this default: psm, lispsm, the warped partitions
-/// of `cascades` and face-partition declare this one.
-ParamDecl warpEtaDecl(double defaultEta);
-
-/// The outside view's outlines of a warped fit (`fit.warped()`): the light-space box it was
-/// fitted in (LightMap, coloured as map `map`) and its warping frustum (Warp). psm, lispsm,
-/// tsm and every warped face of face-partition publish them.
-void addWarpOutlines(const warp::WarpFit& fit, FrameOutlines& out, int map = 0);
 
 class PerspectiveShadowMap : public SingleDepthMapTechnique {
  public:

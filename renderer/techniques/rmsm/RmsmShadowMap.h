@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "algo/pages/VirtualPages.h"
-#include "PagedMap.h"
+#include "core/PagedMap.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 

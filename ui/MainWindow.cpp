@@ -35,7 +35,6 @@
 #include "PassStepper.h"
 #include "PresenterMode.h"
 #include "SplitSideParams.h"
-#include "SelfTests.h"
 #include "SessionFiles.h"
 #include "ShortcutsDialog.h"
 #include "TeachingBar.h"
@@ -101,7 +100,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
 
   viewport_ = new ViewportWidget(this);
   viewport_->setObjectName(QStringLiteral("viewport"));
-  // Scripted runs (grabs, self-tests) measure full-size frames: no adaptive resolution.
+  // Scripted runs (grabs, ui/Automation.h) measure full-size frames: no adaptive resolution.
   viewport_->setAdaptiveAllowed(interactive_);
   setCentralWidget(viewport_);
   connect(viewport_, &ViewportWidget::rendererReady, this, &MainWindow::onRendererReady);
@@ -124,7 +123,6 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   passes_ = std::make_unique<PassStepper>(*this);
   teaching_ = std::make_unique<TeachingBar>(*this);
   grab_ = std::make_unique<GrabRun>(*this);
-  selfTests_ = std::make_unique<SelfTests>(*this);
   sessions_ = std::make_unique<SessionFiles>(*this);
   presenter_ = new PresenterMode(*this);
   splitSide_ = new SplitSideParams(*this);
@@ -145,7 +143,6 @@ MainWindow::~MainWindow() {
   delete viewport_;
   viewport_ = nullptr;
   // The parts hold a reference to this window: free them while it is still whole.
-  selfTests_.reset();
   grab_.reset();
   teaching_.reset();
   passes_.reset();
@@ -160,8 +157,9 @@ bool MainWindow::startLesson(const QString& lesson, int caseIndex) {
   return lessons_->start(lesson, caseIndex);
 }
 
-void MainWindow::startSelfTest(const QString& name, const QString& argument) {
-  selfTests_->start(name, argument);
+void MainWindow::setScripted(bool scripted) {
+  scripted_ = scripted;
+  dialogs_ = interactive_ || scripted;
 }
 
 void MainWindow::setPresenterMode(bool on) {
@@ -277,8 +275,8 @@ void MainWindow::onSceneComboActivated(int index) {
 }
 
 void MainWindow::openSceneDialog() {
-  // Self-tests drive Qt's own dialog (and never touch the user's settings).
-  const bool test = selfTests_->running();
+  // A script drives Qt's own dialog (and never touches the user's settings).
+  const bool test = scripted_;
   const QString dir =
       interactive_ ? QSettings().value(QStringLiteral("scene/openDir"), QDir::homePath()).toString()
                    : QDir::currentPath();

@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QLabel>
 
 #include "LessonController.h"
 #include "MainWindow.h"
@@ -166,7 +167,11 @@ QJsonObject GrabRun::publicationJson() const {
   for (const QDockWidget* dock : w_.findChildren<QDockWidget*>())
     if (dock->isVisible() && !dock->visibleRegion().isEmpty()) inView.append(dock->objectName());
   o[QStringLiteral("docks_in_view")] = inView;
-  o[QStringLiteral("frame_ms")] = r->stats().totalMs;
+  // A failed frame has no time (null, frame_failure says why), as the status line's "frame n/a".
+  o[QStringLiteral("frame_ms")] =
+      viewport->frameFailure().isEmpty() ? QJsonValue(r->stats().totalMs) : QJsonValue();
+  // What the status line showed for the error ("error 0.420 %", "error n/a (why)").
+  o[QStringLiteral("error_readout")] = w_.errorLabel()->text();
   // Never 0 for a frame that measured nothing: null, and why.
   if (auto error = viewport->errorPct())
     o[QStringLiteral("error_pct")] = *error;
@@ -178,7 +183,10 @@ QJsonObject GrabRun::publicationJson() const {
     o[QStringLiteral("frame_failure")] = viewport->frameFailure();
   if (!viewport->splitTechnique().empty()) {
     o[QStringLiteral("split_technique")] = QString::fromStdString(viewport->splitTechnique());
-    if (auto error = viewport->splitErrorPct()) o[QStringLiteral("split_error_pct")] = *error;
+    // The right half's error, or null when it measured nothing (its caption says why).
+    const auto split = viewport->splitErrorPct();
+    o[QStringLiteral("split_error_pct")] = split ? QJsonValue(*split) : QJsonValue();
+    o[QStringLiteral("split_caption")] = viewport->readouts().rightCaption;
   }
   return o;
 }

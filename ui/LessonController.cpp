@@ -254,6 +254,9 @@ void LessonController::apply(int index, int caseIndex) {
   w.passes()->stop();
   index_ = index;
   caseIndex_ = caseIndex;
+  // A lesson's pictures and numbers are full-size frames: from now on this window never
+  // reduces its resolution (view.adaptive), whatever the frame time.
+  w.viewport()->setAdaptiveAllowed(false);
   if (const sl::Course* course = activeCourse()) {  // still in the course: where in it
     const std::string file =
         QFileInfo(lessons_[static_cast<std::size_t>(index)].path).fileName().toStdString();

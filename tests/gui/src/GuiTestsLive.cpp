@@ -346,6 +346,31 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   check(
       auto_.viewReadouts().internalDivisor == 1 && view->renderer()->stats().width == size.width(),
       tr("view.adaptive off: full size (%1 px wide)").arg(view->renderer()->stats().width));
+
+  // Never in presenter mode, the split view's comparison or a lesson: on and allowed, each of
+  // them turns it off (presenter mode and the split view until they end, a lesson for good).
+  check(!shared.set("view.adaptive", 1.0) && view->adaptiveActive(),
+        tr("view.adaptive on again: adaptive resolution active"));
+  w_.setPresenterMode(true);
+  auto_.waitForFrames(1, 300000);
+  check(!view->adaptiveActive(), tr("presenter mode: adaptive resolution not used"));
+  w_.setPresenterMode(false);
+  auto_.waitForFrames(1, 300000);
+  check(view->adaptiveActive(), tr("presenter mode off: active again"));
+  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"));
+  auto_.waitForFrames(1, 300000);
+  check(!view->adaptiveActive(), tr("split view: adaptive resolution not used"));
+  w_.teaching()->setSplitTechnique(QString());
+  auto_.waitForFrames(1, 300000);
+  check(view->adaptiveActive(), tr("split view off: active again"));
+  check(auto_.openLesson(QStringLiteral("1")) && auto_.waitForSettled(300000),
+        tr("lesson 1 opened and settled"));
+  sl::ParamSet& lessonShared = view->renderer()->rendererParams();
+  check(!lessonShared.set("view.adaptive", 1.0) && !view->adaptiveActive(),
+        tr("a lesson: adaptive resolution not used, view.adaptive on or not"));
+  auto_.waitForFrames(2, 300000);
+  check(auto_.viewReadouts().internalDivisor == 1 && auto_.resolutionNote().isEmpty(),
+        tr("a lesson's frames are full size, no resolution note"));
   return true;
 }
 

@@ -3,7 +3,9 @@
 # sweep (uniform at 2 resolutions and rtw-backward at 256, x 2 frames) runs to completion,
 # the chart is saved as panel-charts.png; the x combo box switches axis and Pareto front to
 # memory (panel-charts-bytes.png) and back without a new sweep; a click on a point switches
-# the view to that configuration (technique, resolution, technique combo).
+# the view to that configuration (technique, resolution, technique combo); a sweep of a
+# sky-only view (dueling, camera looking up) gives error n/a (NaN, never 0), draws no point and
+# says so in the panel's status line.
 # usage: charts_panel.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1

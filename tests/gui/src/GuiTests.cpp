@@ -21,6 +21,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QMessageBox>
@@ -501,7 +502,47 @@ bool GuiTests::charts(const QString& dir) {
       w_.techniqueCombo()->findData(QString::fromStdString(r ? r->techniqueId() : std::string()));
   check(index >= 0 && w_.techniqueCombo()->currentIndex() == index,
         QStringLiteral("the technique combo follows"));
-  return true;
+  return chartsUnmeasured();
+}
+
+bool GuiTests::chartsUnmeasured() {
+  // A view of sky only (a scene without a camera path, the camera above it looking up)
+  // measures no error: the configuration's is n/a (NaN), never 0; the chart draws no point for
+  // it and the status line says so.
+  check(auto_.openScene(QStringLiteral("dueling")), QStringLiteral("scene dueling"));
+  const sl::Scene& scene = *w_.viewport()->scene();
+  check(scene.paths.empty(),
+        QStringLiteral("dueling has no camera path (the sweep uses the view)"));
+  sl::Camera sky = w_.viewport()->camera();
+  sky.position = scene.bounds.max + glm::vec3(0.0f, 10.0f, 0.0f);
+  sky.target = sky.position + glm::vec3(0.0f, 10.0f, -1.0f);
+  w_.viewport()->setCamera(sky);
+  auto_.waitForFrames(1);
+  w_.chartsPanel()->setSweepText(QStringLiteral("uniform:resolution=256"));
+  w_.chartsPanel()->setFramesPerConfig(1);
+  bool finished = false, completed = false;
+  const auto connection = connect(w_.chartsPanel(), &ChartsPanel::sweepFinished, this,
+                                  [&](bool c) { finished = true, completed = c; });
+  check(w_.chartsPanel()->startSweep(), QStringLiteral("the sky-only sweep starts"));
+  QElapsedTimer clock;
+  clock.start();
+  while (!finished && clock.elapsed() < 40000)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+  disconnect(connection);
+  const auto& configs = w_.chartsPanel()->configs();
+  const bool unmeasured = finished && completed && configs.size() == 1 && configs[0].done &&
+                          configs[0].errorPct.size() == 1 &&
+                          !std::isfinite(configs[0].errorPct[0]) &&
+                          !std::isfinite(configs[0].medianErrorPct);
+  check(unmeasured, tr("sky only: the error is n/a, not a number (%1)")
+                        .arg(configs.empty() ? 0.0 : configs[0].medianErrorPct));
+  check(w_.chartsPanel()->drawnFront().empty(), QStringLiteral("sky only: no point drawn"));
+  QString said;
+  for (const QLabel* label : w_.chartsPanel()->findChildren<QLabel*>())
+    if (label->text().contains(QStringLiteral("n/a"))) said = label->text();
+  check(said.contains(QStringLiteral("Error n/a for 1 of them (no covered pixel")),
+        tr("the status line says so: \"%1\"").arg(said));
+  return unmeasured;
 }
 
 bool GuiTests::chartsAxis(const QString& dir) {

@@ -80,6 +80,8 @@ class GuiTests : public QObject {
   bool charts(const QString& dir);
   /// Part of charts(): x: memory and back through the combo box (axis, front).
   bool chartsAxis(const QString& dir);
+  /// Part of charts(): a sweep of a sky-only view: its error n/a (no point, the status says so).
+  bool chartsUnmeasured();
   /// split-resize[=TECHNIQUE]: the split view measures the same errors after the window
   /// was shrunk to 3x3 and restored.
   bool splitResize(const QString& splitTechnique);

@@ -16,6 +16,7 @@
 #include "MainWindow.h"
 #include "ViewportWidget.h"
 #include "core/JsonNumber.h"
+#include "panels/common/TimingPanel.h"
 
 namespace sl::ui {
 
@@ -172,6 +173,8 @@ QJsonObject GrabRun::publicationJson() const {
       viewport->frameFailure().isEmpty() ? QJsonValue(r->stats().totalMs) : QJsonValue();
   // What the status line showed for the error ("error 0.420 %", "error n/a (why)").
   o[QStringLiteral("error_readout")] = w_.errorLabel()->text();
+  // The Timing panel's summary line (a failed frame: "total <b>n/a</b> (the frame failed: …)").
+  o[QStringLiteral("timing_summary")] = w_.timingPanel()->summaryText();
   // Never 0 for a frame that measured nothing: null, and why.
   if (auto error = viewport->errorPct())
     o[QStringLiteral("error_pct")] = *error;

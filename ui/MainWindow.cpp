@@ -418,7 +418,7 @@ void MainWindow::onFrameRendered() {
                                       : QString::fromStdString(stats.timingMethod)));
   }
   timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
-  timingPanel_->showStats(stats);
+  timingPanel_->showStats(stats, viewport_->frameFailure());
   if (viewport_->continuous()) updateLiveErrorLabel();
   if (rendererBound_) grab_->countFrame();
   if (docks_.isCurrent(*renderer, false)) docks_.feed(*renderer, false);

@@ -120,11 +120,11 @@ const sl::Publication* Automation::publication() const {
 }
 
 QImage Automation::grabWindow() const {
-  return w_.grab().toImage();
+  return w_.grabWindowFullSize();
 }
 
 QImage Automation::grabView() const {
-  return w_.viewport()->grabView();
+  return w_.grabViewFullSize();
 }
 
 }  // namespace sl::ui

@@ -72,7 +72,8 @@ class Automation : public QObject {
   /// The main renderer's publication of its last frame (null before the renderer exists).
   const sl::Publication* publication() const;
 
-  /// The whole window / the view as shown (split half, captions, banner, legends).
+  /// The whole window / the view as shown (split half, captions, banner, legends), the view
+  /// rendered for it at full size (never the adaptive resolution's reduced frame).
   QImage grabWindow() const;
   QImage grabView() const;
 

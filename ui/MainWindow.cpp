@@ -487,12 +487,28 @@ void MainWindow::showShortcuts() {
   shortcuts_->activateWindow();
 }
 
+QImage MainWindow::grabViewFullSize() {
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);  // grabView renders a frame: at full size
+  QImage image = viewport_->grabView();
+  viewport_->setAdaptiveAllowed(adaptive);
+  return image;
+}
+
+QImage MainWindow::grabWindowFullSize() {
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);
+  QImage image = grab().toImage();
+  viewport_->setAdaptiveAllowed(adaptive);
+  return image;
+}
+
 void MainWindow::saveScreenshot() {
   const QString path = QFileDialog::getSaveFileName(
       this, tr("Save viewport image"), QDir::home().filePath(QStringLiteral("shadowlab.png")),
       tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
-  if (viewport_->grabView().save(path))
+  if (grabViewFullSize().save(path))
     showStatus(tr("Saved %1").arg(path));
   else
     report(tr("cannot write %1").arg(path), tr("Save viewport image"));
@@ -645,7 +661,11 @@ void MainWindow::saveAllImages() {
   const QString dir = QFileDialog::getExistingDirectory(this, tr("Save window and all panels into"),
                                                         QDir::homePath());
   if (dir.isEmpty()) return;
+  // Every image at full size: adaptive resolution held off while they are drawn.
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);
   const QStringList failures = grab_->writeImages(dir, false);
+  viewport_->setAdaptiveAllowed(adaptive);
   if (failures.isEmpty())
     showStatus(tr("Saved the window and every panel in %1").arg(dir), kStatusMessageMs);
   else

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <QElapsedTimer>
+#include <QImage>
 #include <QJsonObject>
 #include <QMainWindow>
 #include <QStringList>
@@ -135,6 +136,11 @@ class MainWindow : public QMainWindow {
   void updateBanner();
   void rebuildParamPanel();
   void syncLightControls();
+  /// The view as shown (ViewportWidget::grabView), rendered for it at full size: adaptive
+  /// resolution is held off for that frame (File > Save viewport image, Automation).
+  QImage grabViewFullSize();
+  /// The whole window likewise (its view at full size).
+  QImage grabWindowFullSize();
   /// File > Export figure to `path` (ViewportWidget::figureCells, ui/FigureKit.h); the
   /// problem, or nothing.
   std::optional<QString> exportFigure(const QString& path);

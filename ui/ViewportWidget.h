@@ -100,6 +100,7 @@ class ViewportWidget : public QOpenGLWidget {
   /// Scripted runs (--grab, ui/Automation.h) keep it off so that what they measure is at full
   /// size; the window allows it when interactive.
   void setAdaptiveAllowed(bool allowed);
+  bool adaptiveAllowed() const { return adaptiveAllowed_; }
   /// "internal resolution 240×150: frame took 610 ms" while reduced, else empty.
   QString resolutionNote() const;
   /// While a progressive frame is partial (continuous rendering of a tiled technique):

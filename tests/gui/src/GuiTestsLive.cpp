@@ -311,6 +311,18 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
         tr("an export is at full size: %1x%2")
             .arg(cells.empty() ? 0 : cells.front().shaded.width)
             .arg(cells.empty() ? 0 : cells.front().shaded.height));
+  // A grab (Automation::grabView, as File > Save viewport image) of a reduced view renders it
+  // at full size for the image.
+  view->update();
+  auto_.waitForFrames(1, 300000);
+  check(auto_.viewReadouts().internalDivisor == 2,
+        tr("reduced again: divisor %1").arg(auto_.viewReadouts().internalDivisor));
+  const QImage grabbed = auto_.grabView();
+  check(view->renderer()->stats().width == size.width() &&
+            grabbed.size() == size * view->devicePixelRatioF() &&
+            auto_.viewReadouts().internalDivisor == 1,
+        tr("a grab of the reduced view renders it at full size: the renderer drew %1 px wide")
+            .arg(view->renderer()->stats().width));
   // A still view is redrawn at full size (the settle frame) without any input.
   QElapsedTimer settle;
   settle.start();

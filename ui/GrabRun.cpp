@@ -10,11 +10,13 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QLabel>
 
 #include "LessonController.h"
 #include "MainWindow.h"
 #include "ViewportWidget.h"
 #include "core/JsonNumber.h"
+#include "panels/common/TimingPanel.h"
 
 namespace sl::ui {
 
@@ -48,8 +50,8 @@ void GrabRun::noteProblem(const QString& message) {
 }
 
 void GrabRun::tick() {
-  if (w_.failed_) return timer_.stop();
-  if (!w_.rendererBound_) {
+  if (w_.failed()) return timer_.stop();
+  if (!w_.rendererBound()) {
     if (clock_.elapsed() > kGrabTimeoutMs) {
       timer_.stop();
       w_.report(tr("--grab: the renderer did not start within %1 s (no OpenGL context?)")
@@ -58,8 +60,8 @@ void GrabRun::tick() {
     }
     return;
   }
-  if (framesRendered_ < frames_ || w_.lessons_->settling()) {
-    w_.viewport_->update();
+  if (framesRendered_ < frames_ || w_.lessons()->settling()) {
+    w_.viewport()->update();
     return;
   }
   timer_.stop();
@@ -69,12 +71,12 @@ void GrabRun::tick() {
 void GrabRun::finish() {
   // The status line shows the error of the grabbed view. Then freeze the frame, so that
   // the window, the viewport, every panel and published.json show the same frame.
-  ViewportWidget* viewport = w_.viewport_;
+  ViewportWidget* viewport = w_.viewport();
   viewport->computeErrorNow();
   w_.waitForFrames(1);  // the error overlay, when on, needs a frame drawn with the reference
   viewport->setPaused(true, false);
   QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-  if (const sl::Renderer* r = viewport->renderer()) w_.docks_.feed(*r, true);
+  if (const sl::Renderer* r = viewport->renderer()) w_.docks().feed(*r, true);
 
   QStringList failures;
   if (!QDir().mkpath(dir_)) failures << tr("cannot create directory %1").arg(dir_);
@@ -107,7 +109,7 @@ QStringList GrabRun::writeImages(const QString& dirPath, bool printPaths) {
     if (printPaths) std::printf("%s\n", path.toLocal8Bit().constData());
   };
   save(w_.grab().toImage(), QStringLiteral("window.png"));
-  save(w_.viewport_->grabView(), QStringLiteral("viewport.png"));
+  save(w_.viewport()->grabView(), QStringLiteral("viewport.png"));
   // Tabbed docks: bring each to the front so that it is laid out and painted.
   std::vector<QDockWidget*> front;
   for (QDockWidget* dock : w_.findChildren<QDockWidget*>())
@@ -125,14 +127,14 @@ QStringList GrabRun::writeImages(const QString& dirPath, bool printPaths) {
 
 QJsonObject GrabRun::publicationJson() const {
   QJsonObject o;
-  const ViewportWidget* viewport = w_.viewport_;
+  const ViewportWidget* viewport = w_.viewport();
   const sl::Renderer* r = viewport->renderer();
   if (!r) return o;
   const sl::Publication& pub = r->publication();
   o[QStringLiteral("frame")] = static_cast<qint64>(pub.frameIndex);
   o[QStringLiteral("technique")] = QString::fromStdString(r->techniqueId());
   o[QStringLiteral("published_technique")] = QString::fromStdString(pub.techniqueId);
-  o[QStringLiteral("scene")] = w_.sceneSpec_;
+  o[QStringLiteral("scene")] = w_.sceneSpec();
   QJsonObject numbers;
   for (const auto& [key, value] : pub.numbers)  // JSON has no inf or NaN: named (JsonNumber.h)
     numbers[QString::fromStdString(key)] =
@@ -142,7 +144,7 @@ QJsonObject GrabRun::publicationJson() const {
   // The parameters this frame rendered with, as the Parameters dock shows them (the
   // technique's own and the shared ones): what a preset or lesson set can be checked here.
   QJsonObject params;
-  sl::Renderer* live = w_.viewport_->renderer();  // the parameter sets are reached non-const
+  sl::Renderer* live = w_.viewport()->renderer();  // the parameter sets are reached non-const
   for (const sl::ParamSet* set : {&live->params(), &live->rendererParams()})
     for (const sl::ParamDecl& d : set->decls())
       params[QString::fromStdString(d.key)] = QString::fromStdString(set->format(d.key));
@@ -159,14 +161,20 @@ QJsonObject GrabRun::publicationJson() const {
   for (const std::string& key : pub.requested) requested.append(QString::fromStdString(key));
   o[QStringLiteral("requested")] = requested;
   o[QStringLiteral("publication_bytes")] = static_cast<qint64>(r->stats().publicationBytes);
-  o[QStringLiteral("panels")] = w_.docks_.drawnValues();
-  o[QStringLiteral("placeholders")] = w_.docks_.placeholders();
+  o[QStringLiteral("panels")] = w_.docks().drawnValues();
+  o[QStringLiteral("placeholders")] = w_.docks().placeholders();
   // The docks a user sees: open, and not a tab behind another or off the window.
   QJsonArray inView;
   for (const QDockWidget* dock : w_.findChildren<QDockWidget*>())
     if (dock->isVisible() && !dock->visibleRegion().isEmpty()) inView.append(dock->objectName());
   o[QStringLiteral("docks_in_view")] = inView;
-  o[QStringLiteral("frame_ms")] = r->stats().totalMs;
+  // A failed frame has no time (null, frame_failure says why), as the status line's "frame n/a".
+  o[QStringLiteral("frame_ms")] =
+      viewport->frameFailure().isEmpty() ? QJsonValue(r->stats().totalMs) : QJsonValue();
+  // What the status line showed for the error ("error 0.420 %", "error n/a (why)").
+  o[QStringLiteral("error_readout")] = w_.errorLabel()->text();
+  // The Timing panel's summary line (a failed frame: "total <b>n/a</b> (the frame failed: …)").
+  o[QStringLiteral("timing_summary")] = w_.timingPanel()->summaryText();
   // Never 0 for a frame that measured nothing: null, and why.
   if (auto error = viewport->errorPct())
     o[QStringLiteral("error_pct")] = *error;
@@ -178,7 +186,10 @@ QJsonObject GrabRun::publicationJson() const {
     o[QStringLiteral("frame_failure")] = viewport->frameFailure();
   if (!viewport->splitTechnique().empty()) {
     o[QStringLiteral("split_technique")] = QString::fromStdString(viewport->splitTechnique());
-    if (auto error = viewport->splitErrorPct()) o[QStringLiteral("split_error_pct")] = *error;
+    // The right half's error, or null when it measured nothing (its caption says why).
+    const auto split = viewport->splitErrorPct();
+    o[QStringLiteral("split_error_pct")] = split ? QJsonValue(*split) : QJsonValue();
+    o[QStringLiteral("split_caption")] = viewport->readouts().rightCaption;
   }
   return o;
 }

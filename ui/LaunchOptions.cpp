@@ -8,42 +8,6 @@
 
 namespace sl::ui {
 
-namespace {
-/// The GUI self-tests (ui/SelfTests.cpp runs them), each with its argument's form.
-constexpr const char* kSelfTests[] = {"params",
-                                      "bad-gltf=FILE[,FILE...]",
-                                      "bad-session=FILE[,FILE...]",
-                                      "teaching[=DIR]",
-                                      "charts[=DIR]",
-                                      "split-resize[=TECHNIQUE]",
-                                      "omni-probe[=DIR]",
-                                      "session-save=FILE",
-                                      "session-check",
-                                      "presenter[=DIR]",
-                                      "split-params[=DIR]",
-                                      "lesson-claims[=DIR]",
-                                      "live-error[=DIR]",
-                                      "adaptive-resolution[=DIR]",
-                                      "no-freeze[=DIR]",
-                                      "storage-click[=DIR]",
-                                      "panels",
-                                      "course[=DIR]"};
-
-QString selfTestUsage() {
-  QStringList all;
-  for (const char* t : kSelfTests) all << QString::fromLatin1(t);
-  return all.join(QStringLiteral(", "));
-}
-
-bool isKnownSelfTest(const QString& name) {
-  for (const char* t : kSelfTests) {
-    const QString form = QString::fromLatin1(t);
-    if (form.section(QLatin1Char('='), 0, 0).section(QLatin1Char('['), 0, 0) == name) return true;
-  }
-  return false;
-}
-}  // namespace
-
 ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   QCommandLineParser parser;
   parser.setApplicationDescription(QStringLiteral(
@@ -94,12 +58,8 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
       QStringLiteral("presenter"),
       QStringLiteral("Start in presenter mode (F11): fonts scaled to the screen, high contrast, "
                      "the window filling the screen, one big panel beside the view."));
-  QCommandLineOption selfTest(QStringLiteral("self-test"),
-                              QStringLiteral("Run a GUI self-test (%1).").arg(selfTestUsage()),
-                              QStringLiteral("NAME[=ARG]"));
-  selfTest.setFlags(QCommandLineOption::HiddenFromHelp);
-  parser.addOptions({scene, technique, set, lesson, lessonCase, course, session, presenter, grab,
-                     grabAfter, selfTest});
+  parser.addOptions(
+      {scene, technique, set, lesson, lessonCase, course, session, presenter, grab, grabAfter});
 
   ParsedLaunch out;
   if (!parser.parse(arguments)) {
@@ -162,15 +122,6 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
                     .arg(parser.value(lessonCase));
       return out;
     }
-  }
-  o.selfTest = parser.value(selfTest).section(QLatin1Char('='), 0, 0);
-  o.selfTestArgument = parser.value(selfTest).section(QLatin1Char('='), 1);
-  if (parser.isSet(selfTest) && !isKnownSelfTest(o.selfTest)) {
-    out.exitCode = 2;
-    out.messageIsError = true;
-    out.message = QStringLiteral("unknown --self-test '%1' (known: %2)")
-                      .arg(parser.value(selfTest), selfTestUsage());
-    return out;
   }
   bool ok = false;
   o.grabAfterFrames = parser.value(grabAfter).toInt(&ok);

@@ -1,9 +1,7 @@
 // The GUI's command line: `shadowlab [--scene NAME|FILE] [--technique ID]
 // [--set KEY=VALUE]... [--lesson N|NAME|FILE] [--course NAME] [--open-session FILE] [--presenter]
-// [--grab DIR --grab-after N]`
-// (and the hidden
-// `--self-test NAME[=ARG]` used by tests/gui), and the GL-free checks of the
-// technique and parameter values against their declarations (before any window opens).
+// [--grab DIR --grab-after N]`, and the GL-free checks of the technique and parameter values
+// against their declarations (before any window opens).
 #pragma once
 
 #include <optional>
@@ -26,9 +24,7 @@ struct LaunchOptions {
       lesson;  ///< non-empty: start this lesson (number, file base name or path; --open-session)
   QString course;      ///< non-empty: start this course (scenes/courses.json) at its first lesson
   int lessonCase = 1;  ///< --lesson-case: the lesson's case (1-based)
-  QString selfTest;    ///< hidden: run this GUI self-test and exit with its result
-  QString selfTestArgument;  ///< the part after '=' in --self-test NAME=ARG
-  bool presenter = false;    ///< start in presenter mode (PresenterMode.h)
+  bool presenter = false;  ///< start in presenter mode (PresenterMode.h)
   bool grab() const { return !grabDir.isEmpty(); }
 };
 

@@ -163,7 +163,7 @@ bool LessonController::startFile(const QString& path, const QString& dialogTitle
   // The scene first: a session whose scene cannot be loaded changes nothing (loadScene keeps
   // the current scene and reports, naming the file); apply() then finds it loaded.
   const QString scene = QString::fromStdString(preset->scene);
-  if (!scene.isEmpty() && scene != w_.sceneSpec_ && !w_.loadScene(scene)) {
+  if (!scene.isEmpty() && scene != w_.sceneSpec() && !w_.loadScene(scene)) {
     w_.report(tr("%1: its scene '%2' could not be loaded; nothing was changed").arg(path, scene),
               dialogTitle);
     return false;
@@ -251,9 +251,12 @@ void LessonController::nextCase() {
 void LessonController::apply(int index, int caseIndex) {
   if (index < 0 || index >= static_cast<int>(lessons_.size())) return;
   MainWindow& w = w_;
-  w.passes_->stop();
+  w.passes()->stop();
   index_ = index;
   caseIndex_ = caseIndex;
+  // A lesson's pictures and numbers are full-size frames: from now on this window never
+  // reduces its resolution (view.adaptive), whatever the frame time.
+  w.viewport()->setAdaptiveAllowed(false);
   if (const sl::Course* course = activeCourse()) {  // still in the course: where in it
     const std::string file =
         QFileInfo(lessons_[static_cast<std::size_t>(index)].path).fileName().toStdString();
@@ -271,10 +274,10 @@ void LessonController::apply(int index, int caseIndex) {
   QStringList problems;
 
   const QString scene = QString::fromStdString(p.scene);
-  if (!scene.isEmpty() && scene != w.sceneSpec_) {
+  if (!scene.isEmpty() && scene != w.sceneSpec()) {
     if (!w.loadScene(scene)) problems << tr("scene '%1' could not be loaded").arg(scene);
-  } else if (w.viewport_->scene()) {
-    w.viewport_->setScene(w.viewport_->scene());  // back to the scene's sun and first camera
+  } else if (w.viewport()->scene()) {
+    w.viewport()->setScene(w.viewport()->scene());  // back to the scene's sun and first camera
     w.refreshBookmarks();
   }
   if (!p.technique.empty()) {
@@ -287,54 +290,54 @@ void LessonController::apply(int index, int caseIndex) {
   QStringList assignments;
   for (const auto& [key, value] : p.params)
     assignments << QString::fromStdString(key + "=" + value);
-  if (sl::Renderer* r = w.viewport_->renderer()) {
+  if (sl::Renderer* r = w.viewport()->renderer()) {
     r->params().resetToDefaults();
     r->rendererParams().resetToDefaults();
     for (const QString& kv : assignments)
       if (auto error = assignParameter(r->params(), r->rendererParams(), kv.toStdString()))
         problems << QString::fromStdString(*error);
     r->resetTemporalState();
-    w.paramPanel_->refreshValues();
-    w.teaching_->syncOverlayCombo();
+    w.paramPanel()->refreshValues();
+    w.teaching()->syncOverlayCombo();
   } else {
     // Applied when the renderer starts, before those of the command line (which win).
-    w.pendingAssignments_ = assignments + w.pendingAssignments_;
+    w.setPendingAssignments(assignments + w.pendingAssignments());
   }
-  if (p.camera) w.viewport_->setCamera(*p.camera);
+  if (p.camera) w.viewport()->setCamera(*p.camera);
   if (p.light) {
-    w.viewport_->setLight(*p.light);
+    w.viewport()->setLight(*p.light);
     w.syncLightControls();
   }
   if (p.compare) {  // a session or a lesson's comparison: the split view ("" = off)
-    if (auto e = w.viewport_->setSplitTechnique(p.compare->technique, p.compare->params))
+    if (auto e = w.viewport()->setSplitTechnique(p.compare->technique, p.compare->params))
       problems << QString::fromStdString(*e);
     else
-      w.teaching_->setSplitTechnique(QString::fromStdString(p.compare->technique),
-                                     p.compare->params);
+      w.teaching()->setSplitTechnique(QString::fromStdString(p.compare->technique),
+                                      p.compare->params);
   }
-  if (lesson.layout) w.sessions_->applyLayout(*lesson.layout, &problems);  // a session: its docks
-  w.docks_.resetHistory();
+  if (lesson.layout) w.sessions()->applyLayout(*lesson.layout, &problems);  // a session: its docks
+  w.docks().resetHistory();
 
-  w.lessonPanel_->showLesson(&lessons_[static_cast<std::size_t>(index)], index,
-                             static_cast<int>(lessons_.size()), caseIndex_);
+  w.lessonPanel()->showLesson(&lessons_[static_cast<std::size_t>(index)], index,
+                              static_cast<int>(lessons_.size()), caseIndex_);
   if (const sl::Course* course = activeCourse())
-    w.lessonPanel_->setCourse(
+    w.lessonPanel()->setCourse(
         courseLine(),
         QString::fromStdString(course->lessons[static_cast<std::size_t>(coursePosition_)].thread),
         coursePosition_ > 0, coursePosition_ + 1 < static_cast<int>(course->lessons.size()));
   else
-    w.lessonPanel_->setCourse({}, {}, false, false);
-  w.lessonPanel_->setNote(problems.join(QLatin1Char('\n')));
+    w.lessonPanel()->setCourse({}, {}, false, false);
+  w.lessonPanel()->setNote(problems.join(QLatin1Char('\n')));
   for (const QString& problem : problems) w.report(tr("lesson: %1").arg(problem));
   if (!lesson.layout) {
-    w.lessonDock_->show();
-    w.lessonDock_->raise();
+    w.lessonDock()->show();
+    w.lessonDock()->raise();
   }
   w.updateBanner();
-  if (w.viewport_->renderer())
+  if (w.viewport()->renderer())
     settle();
   else
-    w.viewport_->update();  // settled when the renderer starts (MainWindow::onRendererReady)
+    w.viewport()->update();  // settled when the renderer starts (MainWindow::onRendererReady)
 }
 
 void LessonController::queueSettle() {
@@ -346,22 +349,22 @@ void LessonController::queueSettle() {
     if (index_ >= 0)
       if (const auto& layout = lessons_[static_cast<std::size_t>(index_)].preset.layout) {
         QStringList problems;
-        w_.sessions_->applyLayout(*layout, &problems);
+        w_.sessions()->applyLayout(*layout, &problems);
       }
     settle();
-    settleQueued_ = false;  // only now: a self-test or grab must not start inside settle()
+    settleQueued_ = false;  // only now: a script or grab must not start inside settle()
   });
 }
 
 void LessonController::settle() {
   MainWindow& w = w_;
-  sl::Renderer* r = w.viewport_->renderer();
+  sl::Renderer* r = w.viewport()->renderer();
   if (!r || settling_) return;
   settling_ = true;  // from here: what waits for the lesson waits, even in the events below
   // The layout's resizes first: the rotation depends on the view's aspect (the importance
   // follows the view frustum), so it must start from the size the lesson is shown at.
   QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-  r = w.viewport_->renderer();
+  r = w.viewport()->renderer();
   if (!r) {
     settling_ = false;
     return;
@@ -370,18 +373,18 @@ void LessonController::settle() {
   const bool temporal = info && rtwsettle::hasTemporalState(*info);
   settled_ = true;
   settleFrames_ = 0;
-  if (!temporal || w.viewport_->paused()) {
+  if (!temporal || w.viewport()->paused()) {
     settling_ = false;
-    if (w.viewport_->paused()) w.viewport_->stepFrame();
-    w.viewport_->update();
+    if (w.viewport()->paused()) w.viewport()->stepFrame();
+    w.viewport()->update();
     return;
   }
   settled_ = false;
   w.updatePublishing();  // the rotation's numbers, while settling
   r->resetTemporalState();
-  const QString note = w.lessonPanel_->note();
+  const QString note = w.lessonPanel()->note();
   while (settleFrames_ < kMaxSettleFrames && !settled_) {
-    w.lessonPanel_->setNote(
+    w.lessonPanel()->setNote(
         tr("Settling: frame %1 of at most %2 — the rotation is estimated from the last frame's "
            "importance; the lesson's state is complete once an estimate leaves it unchanged.")
             .arg(settleFrames_ + 1)
@@ -395,15 +398,15 @@ void LessonController::settle() {
   settling_ = false;
   // The plots start at the settled state: what the lesson is about (lesson 7's vibration of a
   // tenth of a degree) is not squeezed under the settling turn's tens of degrees.
-  w.docks_.resetHistory();
+  w.docks().resetHistory();
   w.updatePublishing();
-  w.lessonPanel_->setNote(
+  w.lessonPanel()->setNote(
       settled_ ? note
                : (note.isEmpty() ? QString() : note + QLatin1Char('\n')) +
                      tr("The rotation still turns after %1 frames: it never holds with these "
                         "parameters.")
                          .arg(settleFrames_));
-  w.viewport_->update();
+  w.viewport()->update();
 }
 
 QString LessonController::bannerTitle() const {

@@ -35,7 +35,6 @@
 #include "PassStepper.h"
 #include "PresenterMode.h"
 #include "SplitSideParams.h"
-#include "SelfTests.h"
 #include "SessionFiles.h"
 #include "ShortcutsDialog.h"
 #include "TeachingBar.h"
@@ -102,7 +101,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
 
   viewport_ = new ViewportWidget(this);
   viewport_->setObjectName(QStringLiteral("viewport"));
-  // Scripted runs (grabs, self-tests) measure full-size frames: no adaptive resolution.
+  // Scripted runs (grabs, ui/Automation.h) measure full-size frames: no adaptive resolution.
   viewport_->setAdaptiveAllowed(interactive_);
   setCentralWidget(viewport_);
   connect(viewport_, &ViewportWidget::rendererReady, this, &MainWindow::onRendererReady);
@@ -125,7 +124,6 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   passes_ = std::make_unique<PassStepper>(*this);
   teaching_ = std::make_unique<TeachingBar>(*this);
   grab_ = std::make_unique<GrabRun>(*this);
-  selfTests_ = std::make_unique<SelfTests>(*this);
   sessions_ = std::make_unique<SessionFiles>(*this);
   presenter_ = new PresenterMode(*this);
   splitSide_ = new SplitSideParams(*this);
@@ -146,7 +144,6 @@ MainWindow::~MainWindow() {
   delete viewport_;
   viewport_ = nullptr;
   // The parts hold a reference to this window: free them while it is still whole.
-  selfTests_.reset();
   grab_.reset();
   teaching_.reset();
   passes_.reset();
@@ -161,8 +158,9 @@ bool MainWindow::startLesson(const QString& lesson, int caseIndex) {
   return lessons_->start(lesson, caseIndex);
 }
 
-void MainWindow::startSelfTest(const QString& name, const QString& argument) {
-  selfTests_->start(name, argument);
+void MainWindow::setScripted(bool scripted) {
+  scripted_ = scripted;
+  dialogs_ = interactive_ || scripted;
 }
 
 void MainWindow::setPresenterMode(bool on) {
@@ -278,8 +276,8 @@ void MainWindow::onSceneComboActivated(int index) {
 }
 
 void MainWindow::openSceneDialog() {
-  // Self-tests drive Qt's own dialog (and never touch the user's settings).
-  const bool test = selfTests_->running();
+  // A script drives Qt's own dialog (and never touches the user's settings).
+  const bool test = scripted_;
   const QString dir =
       interactive_ ? QSettings().value(QStringLiteral("scene/openDir"), QDir::homePath()).toString()
                    : QDir::currentPath();
@@ -421,7 +419,7 @@ void MainWindow::onFrameRendered() {
                                       : QString::fromStdString(stats.timingMethod)));
   }
   timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
-  timingPanel_->showStats(stats);
+  timingPanel_->showStats(stats, viewport_->frameFailure());
   if (viewport_->continuous()) updateLiveErrorLabel();
   if (rendererBound_) grab_->countFrame();
   if (docks_.isCurrent(*renderer, false)) docks_.feed(*renderer, false);
@@ -498,12 +496,28 @@ void MainWindow::showShortcuts() {
   shortcuts_->activateWindow();
 }
 
+QImage MainWindow::grabViewFullSize() {
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);  // grabView renders a frame: at full size
+  QImage image = viewport_->grabView();
+  viewport_->setAdaptiveAllowed(adaptive);
+  return image;
+}
+
+QImage MainWindow::grabWindowFullSize() {
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);
+  QImage image = grab().toImage();
+  viewport_->setAdaptiveAllowed(adaptive);
+  return image;
+}
+
 void MainWindow::saveScreenshot() {
   const QString path = QFileDialog::getSaveFileName(
       this, tr("Save viewport image"), QDir::home().filePath(QStringLiteral("shadowlab.png")),
       tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
-  if (viewport_->grabView().save(path))
+  if (grabViewFullSize().save(path))
     showStatus(tr("Saved %1").arg(path));
   else
     report(tr("cannot write %1").arg(path), tr("Save viewport image"));
@@ -694,7 +708,11 @@ void MainWindow::saveAllImages() {
   const QString dir = QFileDialog::getExistingDirectory(this, tr("Save window and all panels into"),
                                                         QDir::homePath());
   if (dir.isEmpty()) return;
+  // Every image at full size: adaptive resolution held off while they are drawn.
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);
   const QStringList failures = grab_->writeImages(dir, false);
+  viewport_->setAdaptiveAllowed(adaptive);
   if (failures.isEmpty())
     showStatus(tr("Saved the window and every panel in %1").arg(dir), kStatusMessageMs);
   else

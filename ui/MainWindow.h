@@ -2,14 +2,17 @@
 // Timing, Lesson, Light, Charts and the publication panels of panels/PanelRegistry.h),
 // toolbars for scene / technique / camera, the status line. Its parts live in their own
 // classes: TeachingBar (overlays, split view, pause), PassStepper, LessonController,
-// GrabRun (`--grab`) and SelfTests (`--self-test`).
+// GrabRun (`--grab`), SessionFiles, PresenterMode, SplitSideParams; they and ui/Automation.h
+// (scripted control) reach the window's widgets through the accessors below, none is a friend.
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <QElapsedTimer>
+#include <QImage>
 #include <QJsonObject>
 #include <QMainWindow>
 #include <QStringList>
@@ -37,7 +40,6 @@ class LightPanel;
 class ParamPanel;
 class PassStepper;
 class PresenterMode;
-class SelfTests;
 class SessionFiles;
 class ShortcutsDialog;
 class SplitSideParams;
@@ -66,6 +68,7 @@ class MainWindow : public QMainWindow {
   QString lastTechnique() const;  ///< from QSettings (interactive), else empty
   /// KEY=VALUE assignments applied once the renderer exists.
   void setPendingAssignments(const QStringList& assignments);
+  const QStringList& pendingAssignments() const { return pendingAssignments_; }
 
   /// Renders `frames` frames once the renderer is up, saves the window, the viewport and
   /// every dock into `dir`, prints the paths and quits the event loop (0 ok, 1 failure).
@@ -82,12 +85,78 @@ class MainWindow : public QMainWindow {
   /// "{pca.anisotropy}") filled from the last frame of the view and of its split half.
   std::string fillLiveText(const std::string& text) const;
 
-  /// Runs GUI self-test `name` (params, bad-gltf=FILE, teaching=DIR, charts=DIR) once
-  /// the renderer has drawn a frame: prints "ok"/"FAIL" lines, exits 0 (pass) or 1.
-  void startSelfTest(const QString& name, const QString& argument);
-
   /// Presenter mode on or off (F11, View > Presenter mode, --presenter; PresenterMode.h).
   void setPresenterMode(bool on);
+
+  /// A script drives the window (ui/Automation.h): problems also in message boxes (as a user
+  /// would see them) and file dialogs are Qt's own (a script can fill them in).
+  void setScripted(bool scripted);
+  bool scripted() const { return scripted_; }
+  bool interactive() const { return interactive_; }
+
+  // The window's parts, for its helpers (GrabRun, LessonController, PassStepper, PresenterMode,
+  // SessionFiles, SplitSideParams, TeachingBar) and ui/Automation.h.
+  ViewportWidget* viewport() const { return viewport_; }
+  PublicationDocks& docks() { return docks_; }
+  const QString& sceneSpec() const { return sceneSpec_; }  ///< name or path of the scene shown
+  LessonController* lessons() const { return lessons_.get(); }
+  PassStepper* passes() const { return passes_.get(); }
+  TeachingBar* teaching() const { return teaching_.get(); }
+  SessionFiles* sessions() const { return sessions_.get(); }
+  PresenterMode* presenter() const { return presenter_; }
+  SplitSideParams* splitSide() const { return splitSide_; }
+  ParamPanel* paramPanel() const { return paramPanel_; }
+  TimingPanel* timingPanel() const { return timingPanel_; }
+  LessonPanel* lessonPanel() const { return lessonPanel_; }
+  ChartsPanel* chartsPanel() const { return chartsPanel_; }
+  QDockWidget* paramDock() const { return paramDock_; }
+  QDockWidget* timingDock() const { return timingDock_; }
+  QDockWidget* lessonDock() const { return lessonDock_; }
+  QDockWidget* chartsDock() const { return chartsDock_; }
+  QComboBox* sceneCombo() const { return sceneCombo_; }
+  QComboBox* techniqueCombo() const { return techniqueCombo_; }
+  QLabel* errorLabel() const { return errorLabel_; }  ///< the status line's error readout
+  QAction* openAction() const { return openAction_; }
+  QAction* continuousAction() const { return continuousAction_; }
+  QAction* pauseAction() const { return pauseAction_; }
+  QAction* passStopAction() const { return passStopAction_; }
+  /// Adds `action` to the commands the Help window lists.
+  void addCommandAction(QAction* action) { commandActions_ << action; }
+  bool rendererBound() const { return rendererBound_; }  ///< the renderer's panels are bound
+  bool failed() const { return failed_; }  ///< the GL context or renderer failed to start
+
+  /// Renders until `frames` more frames are drawn; false on timeout.
+  bool waitForFrames(int frames, int timeoutMs = 30000);
+  void stepFrame();
+  void setPaused(bool paused);
+  /// stderr always; status bar; a dialog titled `title` when dialogs are on and non-empty.
+  void report(const QString& message, const QString& dialogTitle = {});
+  /// A status-bar note that does not hide a problem reported in the last seconds.
+  void info(const QString& message);
+  /// Requests from the renderer the keys of the visible publication panels (every panel's
+  /// while a grab runs or passes are stepped); a hidden dock requests nothing.
+  void updatePublishing();
+  /// The banner over the view: the pass being stepped, else the lesson.
+  void updateBanner();
+  /// A new frame or error: the lesson's texts that quote live numbers are filled again.
+  void refreshLiveTexts();
+  void rebuildParamPanel();
+  void syncLightControls();
+  /// The view as shown (ViewportWidget::grabView), rendered for it at full size: adaptive
+  /// resolution is held off for that frame (File > Save viewport image, Automation).
+  QImage grabViewFullSize();
+  /// The whole window likewise (its view at full size).
+  QImage grabWindowFullSize();
+  /// File > Export figure to `path` (ViewportWidget::figureCells, ui/FigureKit.h); the
+  /// problem, or nothing.
+  std::optional<QString> exportFigure(const QString& path);
+  void refreshBookmarks();
+  /// Shows `message` in the status bar, elided (shownMessage()); its full text as the status
+  /// bar's tooltip while it is shown, when short enough (messageDetails()).
+  void showStatus(const QString& message, int timeoutMs = 10000);
+  /// A toolbar that cannot be moved or floated (layout stays predictable for lessons).
+  QToolBar* addFixedToolBar(const QString& title, const QString& objectName);
+  static void addToolBarLabel(QToolBar* bar, const QString& text);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -95,21 +164,8 @@ class MainWindow : public QMainWindow {
   void dropEvent(QDropEvent* event) override;
 
  private:
-  // The helpers below are the window's parts; each works on the window's widgets.
-  friend class GrabRun;
-  friend class LessonController;
-  friend class PassStepper;
-  friend class PresenterMode;
-  friend class SelfTests;
-  friend class SessionFiles;
-  friend class SplitSideParams;
-  friend class TeachingBar;
-
   void createActions();
   void createToolBar();
-  /// A toolbar that cannot be moved or floated (layout stays predictable for lessons).
-  QToolBar* addFixedToolBar(const QString& title, const QString& objectName);
-  static void addToolBarLabel(QToolBar* bar, const QString& text);
   void createDocks();
   void createPanelDocks();
   QDockWidget* addPanelDock(QWidget* panel, const QString& title, const QString& name,
@@ -132,40 +188,14 @@ class MainWindow : public QMainWindow {
   void onChartsConfigurationChosen(const QString& id, const QStringList& assignments);
 
   void openSceneDialog();
-  void rebuildParamPanel();
-  void refreshBookmarks();
   void syncSceneCombo();
   void syncTechniqueCombo();
-  void syncLightControls();
   void updateTitle();
   void showShortcuts();
   void saveScreenshot();
   void exportFigureDialog();
-  /// File > Export figure to `path` (ViewportWidget::figureCells, ui/FigureKit.h); the
-  /// problem, or nothing.
-  std::optional<QString> exportFigure(const QString& path);
   void savePanelImage(QDockWidget* dock);
   void saveAllImages();
-
-  /// Requests from the renderer the keys of the visible publication panels (every panel's
-  /// while a grab runs or passes are stepped); a hidden dock requests nothing.
-  void updatePublishing();
-  /// The banner over the view: the pass being stepped, else the lesson.
-  void updateBanner();
-  /// A new frame or error: the lesson's texts that quote live numbers are filled again.
-  void refreshLiveTexts();
-  void setPaused(bool paused);
-  void stepFrame();
-  /// Renders until `frames` more frames are drawn (self-tests, grabs); false on timeout.
-  bool waitForFrames(int frames, int timeoutMs = 30000);
-
-  /// stderr always; status bar; a dialog titled `title` when interactive and non-empty.
-  void report(const QString& message, const QString& dialogTitle = {});
-  /// A status-bar note that does not hide a problem reported in the last seconds.
-  void info(const QString& message);
-  /// Shows `message` in the status bar, elided (shownMessage()); its full text as the status
-  /// bar's tooltip while it is shown, when short enough (messageDetails()).
-  void showStatus(const QString& message, int timeoutMs = 10000);
 
   const bool interactive_;
   ViewportWidget* viewport_ = nullptr;
@@ -186,7 +216,8 @@ class MainWindow : public QMainWindow {
   QAction* pauseAction_ = nullptr;
   QAction* openAction_ = nullptr;
   QAction* passStopAction_ = nullptr;
-  bool dialogs_ = false;  ///< message boxes for problems (interactive runs and self-tests)
+  bool dialogs_ = false;  ///< message boxes for problems (interactive or scripted runs)
+  bool scripted_ = false;
 
   QComboBox* sceneCombo_ = nullptr;
   QComboBox* techniqueCombo_ = nullptr;
@@ -212,7 +243,6 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<PassStepper> passes_;
   std::unique_ptr<TeachingBar> teaching_;
   std::unique_ptr<GrabRun> grab_;
-  std::unique_ptr<SelfTests> selfTests_;
   std::unique_ptr<SessionFiles> sessions_;
   PresenterMode* presenter_ = nullptr;    ///< a child QObject of the window
   SplitSideParams* splitSide_ = nullptr;  ///< the split view's parameters (a child QObject)

@@ -21,29 +21,29 @@ PassStepper::PassStepper(MainWindow& window) : QObject(&window), w_(window) {}
 
 void PassStepper::buildSteps() {
   steps_.clear();
-  sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport()->renderer();
   const sl::TechniqueInfo* info = r ? sl::Renderer::findTechnique(r->techniqueId()) : nullptr;
   if (!info) return;
   // The passes this frame runs (a pass of one rmsm.render value only while it holds).
   for (const sl::PassDecl& p : sl::framePassDecls(*info, r->params()))
     steps_.push_back({QString::fromStdString(p.id), QString::fromStdString(p.title),
-                      QString::fromStdString(p.explanation), w_.docks_.dock(p.panel)});
+                      QString::fromStdString(p.explanation), w_.docks().dock(p.panel)});
 }
 
 void PassStepper::step(int delta) {
   MainWindow& w = w_;
-  if (!w.viewport_->renderer()) return;
+  if (!w.viewport()->renderer()) return;
   if (!active()) {
-    pausedBefore_ = w.viewport_->paused();
-    if (!w.viewport_->paused()) w.setPaused(true);
-    w.passStopAction_->setEnabled(true);
-    if (w.docks_.isCurrent(*w.viewport_->renderer(), true)) {
+    pausedBefore_ = w.viewport()->paused();
+    if (!w.viewport()->paused()) w.setPaused(true);
+    w.passStopAction()->setEnabled(true);
+    if (w.docks().isCurrent(*w.viewport()->renderer(), true)) {
       index_ = 0;
       show();
     } else {  // the last frame did not publish every panel's keys: render one that does
       waitingForFrame_ = true;
       w.updatePublishing();
-      w.viewport_->stepFrame();
+      w.viewport()->stepFrame();
     }
     return;
   }
@@ -52,7 +52,7 @@ void PassStepper::step(int delta) {
   if (next >= static_cast<int>(steps_.size())) {
     // Past the last pass: the frame is done; render the next one and start over.
     waitingForFrame_ = true;
-    w.viewport_->stepFrame();
+    w.viewport()->stepFrame();
     return;
   }
   index_ = std::max(0, next);
@@ -66,7 +66,7 @@ void PassStepper::restartAtNextFrame() {
 }
 
 void PassStepper::onFrameRendered() {
-  if (!waitingForFrame_ || !w_.docks_.isCurrent(*w_.viewport_->renderer(), true)) return;
+  if (!waitingForFrame_ || !w_.docks().isCurrent(*w_.viewport()->renderer(), true)) return;
   waitingForFrame_ = false;
   index_ = 0;
   show();
@@ -74,14 +74,14 @@ void PassStepper::onFrameRendered() {
 
 void PassStepper::show() {
   MainWindow& w = w_;
-  const sl::Renderer* r = w.viewport_->renderer();
+  const sl::Renderer* r = w.viewport()->renderer();
   if (!r) return;
-  w.docks_.feed(*r, true);
+  w.docks().feed(*r, true);
   buildSteps();
   if (steps_.empty()) return stop();
   index_ = std::clamp(index_, 0, static_cast<int>(steps_.size()) - 1);
   const Step& s = steps_[static_cast<std::size_t>(index_)];
-  w.docks_.highlightPass(s.id);
+  w.docks().highlightPass(s.id);
   for (QDockWidget* dock : w.findChildren<QDockWidget*>()) {
     QString title = dock->windowTitle();
     if (title.startsWith(kPassPrefix)) title.remove(0, kPassPrefix.size());
@@ -105,8 +105,8 @@ void PassStepper::stop() {
   MainWindow& w = w_;
   index_ = -1;
   waitingForFrame_ = false;
-  w.passStopAction_->setEnabled(false);
-  w.docks_.highlightPass(QString());
+  w.passStopAction()->setEnabled(false);
+  w.docks().highlightPass(QString());
   for (QDockWidget* dock : w.findChildren<QDockWidget*>()) {
     const QString title = dock->windowTitle();
     if (title.startsWith(kPassPrefix)) dock->setWindowTitle(title.mid(kPassPrefix.size()));

@@ -65,7 +65,7 @@ void PresenterMode::createActions(QMenu* view) {
       group->addAction(a);
     };
     add(tr("Automatic (the lesson's, else the first showing this technique)"), QString());
-    for (const PublicationDocks::Dock& d : w_.docks_.docks())
+    for (const PublicationDocks::Dock& d : w_.docks().docks())
       add(d.dock->windowTitle(), d.dock->objectName());
   });
 }
@@ -90,10 +90,10 @@ QDockWidget* PresenterMode::pickBigDock() const {
   for (const QString& name : {chosen_, lessonPanel_})
     if (!name.isEmpty())
       if (auto* dock = w_.findChild<QDockWidget*>(name)) return dock;
-  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(w_.viewport_->techniqueId());
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(w_.viewport()->techniqueId());
   if (info)
-    if (QDockWidget* dock = w_.docks_.firstShowing(*info)) return dock;
-  return w_.lessonDock_;
+    if (QDockWidget* dock = w_.docks().firstShowing(*info)) return dock;
+  return w_.lessonDock();
 }
 
 void PresenterMode::setActive(bool on) {
@@ -115,13 +115,13 @@ void PresenterMode::setActive(bool on) {
     // e.g. Xvfb, ignores the full-screen request), full screen, the big panel's width.
     arrangeDocks();
     fitScreen();
-    w_.viewport_->setPointerHighlight(true);
-    w_.viewport_->setPresenting(true);  // full-size frames only: numbers a class reads
+    w_.viewport()->setPointerHighlight(true);
+    w_.viewport()->setPresenting(true);  // full-size frames only: numbers a class reads
   } else {
     setFullPanel(false);
     active_ = false;
-    w_.viewport_->setPointerHighlight(false);
-    w_.viewport_->setPresenting(false);
+    w_.viewport()->setPointerHighlight(false);
+    w_.viewport()->setPresenting(false);
     if (app) {
       applyTheme(*app);
       QApplication::setFont(savedFont_);
@@ -135,7 +135,7 @@ void PresenterMode::setActive(bool on) {
   }
   if (action_ && action_->isChecked() != on) action_->setChecked(on);
   w_.updatePublishing();
-  w_.viewport_->update();
+  w_.viewport()->update();
 }
 
 void PresenterMode::setFullPanel(bool on) {
@@ -153,16 +153,16 @@ void PresenterMode::setFullPanel(bool on) {
       if (bar->isVisible()) hiddenForPanel_.push_back(bar);
     if (w_.statusBar()->isVisible()) hiddenForPanel_.push_back(w_.statusBar());
     for (QWidget* widget : hiddenForPanel_) widget->hide();
-    w_.viewport_->hide();
+    w_.viewport()->hide();
   } else {
-    w_.viewport_->show();
+    w_.viewport()->show();
     for (QWidget* widget : hiddenForPanel_)
       if (widget) widget->show();
     hiddenForPanel_.clear();
   }
   arrangeDocks();
   if (fullPanelAction_ && fullPanelAction_->isChecked() != on) fullPanelAction_->setChecked(on);
-  w_.viewport_->update();
+  w_.viewport()->update();
 }
 
 void PresenterMode::arrangeDocks() {
@@ -176,7 +176,7 @@ void PresenterMode::arrangeDocks() {
   if (!big_) return;
   w_.addDockWidget(Qt::RightDockWidgetArea, big_);
   big_->show();
-  for (QDockWidget* behind : {w_.lessonDock_, w_.paramDock_}) {
+  for (QDockWidget* behind : {w_.lessonDock(), w_.paramDock()}) {
     if (!behind || behind == big_ || fullPanel_) continue;
     w_.addDockWidget(Qt::RightDockWidgetArea, behind);
     w_.tabifyDockWidget(big_, behind);

@@ -14,7 +14,6 @@
 #include "LessonController.h"
 #include "MainWindow.h"
 #include "PresenterMode.h"
-#include "SelfTests.h"
 #include "ViewportWidget.h"
 
 namespace sl::ui {
@@ -27,12 +26,12 @@ constexpr int kLargeDockPercent = 45;  ///< a lesson's large dock: share of the 
 }  // namespace
 
 QFileDialog::Options SessionFiles::dialogOptions() const {
-  // Self-tests drive Qt's own dialog.
-  return w_.selfTests_->running() ? QFileDialog::DontUseNativeDialog : QFileDialog::Options();
+  // A script (ui/Automation.h) drives Qt's own dialog.
+  return w_.scripted() ? QFileDialog::DontUseNativeDialog : QFileDialog::Options();
 }
 
 SessionFiles::SessionFiles(MainWindow& window) : QObject(&window), w_(window) {
-  if (w_.interactive_) recent_ = QSettings().value(kRecentKey).toStringList().mid(0, kMaxRecent);
+  if (w_.interactive()) recent_ = QSettings().value(kRecentKey).toStringList().mid(0, kMaxRecent);
 }
 
 void SessionFiles::createMenu(QMenu* file) {
@@ -54,7 +53,8 @@ void SessionFiles::createMenu(QMenu* file) {
   recentMenu_->setObjectName(QStringLiteral("recentSessionsMenu"));
   connect(recentMenu_, &QMenu::aboutToShow, this, &SessionFiles::fillRecentMenu);
   fillRecentMenu();
-  w_.commandActions_ << open << save;
+  w_.addCommandAction(open);
+  w_.addCommandAction(save);
   openAction_ = open;
   saveAction_ = save;
 }
@@ -62,19 +62,19 @@ void SessionFiles::createMenu(QMenu* file) {
 sl::Preset SessionFiles::current(const QString& path) const {
   sl::Preset p;
   p.title = QFileInfo(path).completeBaseName().toStdString();
-  const int lesson = w_.lessons_->index();
+  const int lesson = w_.lessons()->index();
   if (lesson >= 0)
-    p.explanation = w_.lessons_->lessons()[static_cast<std::size_t>(lesson)].preset.explanation;
-  const QFileInfo sceneFile(w_.sceneSpec_);
-  p.scene = (sceneFile.isFile() ? sceneFile.absoluteFilePath() : w_.sceneSpec_).toStdString();
-  p.technique = w_.viewport_->techniqueId();
-  if (sl::Renderer* r = w_.viewport_->renderer()) {
+    p.explanation = w_.lessons()->lessons()[static_cast<std::size_t>(lesson)].preset.explanation;
+  const QFileInfo sceneFile(w_.sceneSpec());
+  p.scene = (sceneFile.isFile() ? sceneFile.absoluteFilePath() : w_.sceneSpec()).toStdString();
+  p.technique = w_.viewport()->techniqueId();
+  if (sl::Renderer* r = w_.viewport()->renderer()) {
     for (const sl::ParamSet* set : {&r->params(), &r->rendererParams()})
       for (const sl::ParamDecl& d : set->decls()) p.params[d.key] = set->format(d.key);
   }
-  p.camera = w_.viewport_->camera();
-  p.light = w_.viewport_->light();
-  p.compare = sl::PresetCompare{w_.viewport_->splitTechnique(), w_.viewport_->splitParams()};
+  p.camera = w_.viewport()->camera();
+  p.light = w_.viewport()->light();
+  p.compare = sl::PresetCompare{w_.viewport()->splitTechnique(), w_.viewport()->splitParams()};
   sl::PresetLayout layout;
   for (QDockWidget* dock : w_.findChildren<QDockWidget*>())
     if (dock->toggleViewAction()->isChecked())
@@ -101,7 +101,7 @@ bool SessionFiles::save(const QString& path) {
 }
 
 bool SessionFiles::open(const QString& path) {
-  if (!w_.lessons_->startFile(path, tr("Cannot open session"))) return false;
+  if (!w_.lessons()->startFile(path, tr("Cannot open session"))) return false;
   remember(path);
   return true;
 }
@@ -110,7 +110,8 @@ void SessionFiles::applyLayout(const sl::PresetLayout& layout, QStringList* prob
   applyLayoutDocks(layout, problems);
   // In presenter mode the layout's large panel becomes the one big panel, and the window
   // stays on the screen (the docks just shown at the large font may want more).
-  if (w_.presenter_->active()) w_.presenter_->setLessonPanel(QString::fromStdString(layout.large));
+  if (w_.presenter()->active())
+    w_.presenter()->setLessonPanel(QString::fromStdString(layout.large));
 }
 
 void SessionFiles::applyLayoutDocks(const sl::PresetLayout& layout, QStringList* problems) {
@@ -173,7 +174,7 @@ void SessionFiles::remember(const QString& path) {
 }
 
 void SessionFiles::storeRecent() {
-  if (w_.interactive_) QSettings().setValue(kRecentKey, recent_);
+  if (w_.interactive()) QSettings().setValue(kRecentKey, recent_);
 }
 
 void SessionFiles::fillRecentMenu() {

@@ -62,8 +62,8 @@ void TeachingBar::create() {
   bar->addWidget(splitCombo_);
   bar->addSeparator();
 
-  w.pauseAction_->setIcon(w.style()->standardIcon(QStyle::SP_MediaPause));
-  bar->addAction(w.pauseAction_);
+  w.pauseAction()->setIcon(w.style()->standardIcon(QStyle::SP_MediaPause));
+  bar->addAction(w.pauseAction());
   auto addButton = [this, bar](const QString& text, const QString& tip, auto slot) {
     auto* b = new QToolButton;
     b->setText(text);
@@ -75,7 +75,7 @@ void TeachingBar::create() {
   addButton(tr("Step passes ▶"),
             tr("Walk through the passes of this frame as the technique declares them, each "
                "with the panel showing its output (] next, [ back, Esc stop)"),
-            [this] { w_.passes_->step(+1); });
+            [this] { w_.passes()->step(+1); });
 }
 
 void TeachingBar::setRendererAvailable(bool on) {
@@ -84,7 +84,7 @@ void TeachingBar::setRendererAvailable(bool on) {
 }
 
 void TeachingBar::syncOverlayCombo() {
-  sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport()->renderer();
   const bool has = r && r->rendererParams().has(kOverlayParam.toStdString());
   overlayCombo_->setEnabled(has);
   if (!has) return;
@@ -94,7 +94,7 @@ void TeachingBar::syncOverlayCombo() {
 }
 
 void TeachingBar::setOverlay(int value) {
-  ViewportWidget* viewport = w_.viewport_;
+  ViewportWidget* viewport = w_.viewport();
   sl::Renderer* r = viewport->renderer();
   if (!r) return;
   if (auto error = r->rendererParams().set(kOverlayParam.toStdString(), value)) {
@@ -102,7 +102,7 @@ void TeachingBar::setOverlay(int value) {
     syncOverlayCombo();
     return;
   }
-  w_.paramPanel_->refreshValues();
+  w_.paramPanel()->refreshValues();
   syncOverlayCombo();
   const sl::ParamDecl* d = r->rendererParams().find(kOverlayParam.toStdString());
   const bool error = d && value >= 0 && value < static_cast<int>(d->enumNames.size()) &&
@@ -115,7 +115,7 @@ void TeachingBar::setOverlay(int value) {
 }
 
 void TeachingBar::cycleOverlay() {
-  const sl::Renderer* r = w_.viewport_->renderer();
+  const sl::Renderer* r = w_.viewport()->renderer();
   if (!r || overlayCombo_->count() == 0) return;
   const int next = (overlayCombo_->currentIndex() + 1) % overlayCombo_->count();
   setOverlay(overlayCombo_->itemData(next).toInt());
@@ -124,7 +124,7 @@ void TeachingBar::cycleOverlay() {
 
 void TeachingBar::setSplitTechnique(const QString& id,
                                     const std::map<std::string, std::string>& params) {
-  ViewportWidget* viewport = w_.viewport_;
+  ViewportWidget* viewport = w_.viewport();
   if (auto error = viewport->setSplitTechnique(id.toStdString(), params)) {
     w_.report(QString::fromStdString(*error));
     return;
@@ -139,11 +139,11 @@ void TeachingBar::setSplitTechnique(const QString& id,
 
 void TeachingBar::restoreSplit() {
   if (!lastSplitTechnique_.isEmpty() && splitCombo_->currentIndex() > 0)
-    setSplitTechnique(lastSplitTechnique_, w_.viewport_->splitParams());
+    setSplitTechnique(lastSplitTechnique_, w_.viewport()->splitParams());
 }
 
 void TeachingBar::toggleSplit() {
-  ViewportWidget* viewport = w_.viewport_;
+  ViewportWidget* viewport = w_.viewport();
   if (!viewport->splitTechnique().empty()) return setSplitTechnique(QString());
   QString id = lastSplitTechnique_;
   if (id.isEmpty()) {  // uniform against anything else, else the first other technique

@@ -852,6 +852,25 @@ void ViewportWidget::setZoomArea(const std::optional<QRect>& area) {
   updateOverlayWidget();
 }
 
+ViewportWidget::Readouts ViewportWidget::readouts() const {
+  Readouts r;
+  r.internalDivisor = frameDivisor_;
+  r.adaptiveDivisor = adaptive_.divisor();
+  r.lastFrameMs = lastFrameMs_;
+  r.progress = progressNote_;
+  r.probesRead = probesRead_;
+  r.leftCaption = splitCaption(false);
+  r.rightCaption = splitCaption(true);
+  r.errorOverlayNote = errorOverlayNote();
+  r.pointerHighlight = pointerHighlight_;
+  r.zoomArea = zoomArea_;
+  r.zoomInset = zoomInsetRect();
+  r.zoomFactor = zoomFactor();
+  r.liveReference = liveReference_.get();
+  r.splitLiveReference = splitLiveReference_.get();
+  return r;
+}
+
 QRect ViewportWidget::zoomInsetRect() const {
   overlay_->placeInset();
   return overlay_->insetRect;

@@ -80,19 +80,11 @@ class ViewportWidget : public QOpenGLWidget {
   /// "of an earlier view … re-tracing" when stale; "error — · tracing the reference…"
   /// before the first. Empty when not rendering continuously.
   QString liveErrorText() const;
-  /// The line under the error overlay's legend (the reference's age, or that it is being
-  /// traced); empty when the reference is current in on-demand rendering.
-  QString errorOverlayNote() const;
-  /// The reference worker (null before continuous rendering was first turned on).
-  const sl::AsyncReference* liveReference() const { return liveReference_.get(); }
   /// The split view's right half in continuous rendering: its own reference, traced on its
   /// own worker at the same lower rate (its half may be a pixel wider than the left one and
   /// its technique's frame is its own), what it measured and how old it is; the right
   /// caption shows it. Null / empty without a split view or continuous rendering.
   std::optional<LiveError> splitLiveError() const;
-  const sl::AsyncReference* splitLiveReference() const { return splitLiveReference_.get(); }
-  /// The captions drawn under the two halves of the split view (empty without one).
-  QString splitCaption(bool right) const;
   /// Lower rate of the live reference: at most one trace per this many seconds of a still
   /// view, or per this factor times the last trace's duration when that is longer.
   static constexpr double kLiveReferenceMinIntervalS = 0.75;
@@ -104,27 +96,16 @@ class ViewportWidget : public QOpenGLWidget {
   bool probeWanted() const { return probeWanted_; }
   /// Adaptive internal resolution (the shared parameters view.adaptive and
   /// view.adaptive.budget_ms, algo/AdaptiveResolution): a frame slower than the budget makes
-  /// the view render at 1/2..1/8 of its size, stretched, with a note in the view. Scripted
-  /// runs (--grab, --self-test) keep it off so that what they measure is at full size; the
-  /// window allows it when interactive.
+  /// the view render at half its size (never less), stretched, with a note in the view.
+  /// Scripted runs (--grab, ui/Automation.h) keep it off so that what they measure is at full
+  /// size; the window allows it when interactive.
   void setAdaptiveAllowed(bool allowed);
-  /// The divisor the last frame was rendered at (1: full size).
-  int internalDivisor() const { return frameDivisor_; }
-  /// The adaptive state's divisor (1: frames fit at full size; a settle frame may still be
-  /// drawn at full size while it is 2).
-  int adaptiveDivisor() const { return adaptive_.divisor(); }
-  /// Wall-clock milliseconds of the last frame (both halves; at least its timed passes).
-  double lastFrameMs() const { return lastFrameMs_; }
+  bool adaptiveAllowed() const { return adaptiveAllowed_; }
   /// "internal resolution 240×150: frame took 610 ms" while reduced, else empty.
   QString resolutionNote() const;
   /// While a progressive frame is partial (continuous rendering of a tiled technique):
   /// "tile k of N: drawn progressively, error when complete"; empty otherwise.
   QString progressText() const;
-  /// The last frame's progressive resolve (absent: a one-call frame).
-  const std::optional<sl::FrameStats::Progress>& frameProgress() const { return progressNote_; }
-
-  /// Pixels read back for the hover probe since the renderer was created.
-  std::uint64_t probesRead() const { return probesRead_; }
 
   /// Computes the error of the last frame now (blocks for a fraction of a second).
   /// Returns the error in percent, or nothing (and emits renderProblem) on failure.
@@ -173,16 +154,32 @@ class ViewportWidget : public QOpenGLWidget {
   bool adaptiveActive() const;
   /// Renders the view at full size now when its last frame was reduced (exports, grabs).
   void renderFullSizeNow();
-  bool pointerHighlight() const { return pointerHighlight_; }
 
   /// The zoom inset: `area` of the view (widget pixels) magnified by a whole factor,
   /// nearest neighbour, into the bottom-right corner; nothing: off. Ctrl+Shift+drag over the
   /// view sets it, Ctrl+Shift+click clears it.
   void setZoomArea(const std::optional<QRect>& area);
-  const std::optional<QRect>& zoomArea() const { return zoomArea_; }
-  /// Where the inset was last drawn (widget pixels) and its magnification; empty/0 when off.
-  QRect zoomInsetRect() const;
-  int zoomFactor() const;
+  /// How the view drew its last frame and what its captions say, read by scripts
+  /// (ui/Automation.h) as one snapshot.
+  struct Readouts {
+    int internalDivisor = 1;   ///< the divisor the last frame was rendered at (1: full size)
+    int adaptiveDivisor = 1;   ///< adaptive state's (a still view's settle frame may be full size)
+    double lastFrameMs = 0.0;  ///< wall clock of the last frame (both halves; >= its timed passes)
+    std::optional<sl::FrameStats::Progress> progress;  ///< last frame's progressive resolve
+    std::uint64_t probesRead = 0;       ///< pixels read back for the hover probe (this renderer)
+    QString leftCaption, rightCaption;  ///< drawn under the split view's halves (empty: none)
+    /// The line under the error overlay's legend (the reference's age, or that it is being
+    /// traced); empty when the reference is current in on-demand rendering.
+    QString errorOverlayNote;
+    bool pointerHighlight = false;  ///< presenter mode's ring follows the mouse
+    std::optional<QRect> zoomArea;  ///< the zoom inset's source (widget pixels)
+    QRect zoomInset;                ///< where the inset was last drawn; empty when off
+    int zoomFactor = 0;             ///< its magnification; 0 when off
+    /// The reference workers of continuous rendering (null before it was first turned on).
+    const sl::AsyncReference* liveReference = nullptr;
+    const sl::AsyncReference* splitLiveReference = nullptr;
+  };
+  Readouts readouts() const;
   /// The view as the renderer drew it (both halves in split view, no overlay), device
   /// pixels; null before a frame. GL read of the colour target only.
   QImage renderedImage();
@@ -287,6 +284,10 @@ class ViewportWidget : public QOpenGLWidget {
   void focusOutEvent(QFocusEvent* event) override;
 
  private:
+  QString errorOverlayNote() const;
+  QString splitCaption(bool right) const;
+  QRect zoomInsetRect() const;  ///< places the inset first
+  int zoomFactor() const;
   /// Turns the outside camera and scales its zoom (clamped to the declared ranges).
   void adjustOutsideView(float azimuthDeg, float elevationDeg, float zoomFactor);
   void destroyRenderer();

@@ -98,7 +98,8 @@ std::vector<ParamDecl> rendererParamDecls() {
                "the interactive view renders at half its size (stretched to fit; never less) "
                "and says so in its corner; the first fast frame returns to full size, and a "
                "still view is redrawn at full size. Never in presenter mode, the split view, "
-               "exports or grabs; the command line always renders at the requested size."},
+               "exports, grabs or a window that opened a lesson (its pictures and numbers are "
+               "full-size frames); the command line always renders at the requested size."},
       {.key = "view.adaptive.budget_ms",
        .label = "Frame budget (ms)",
        .group = "View",

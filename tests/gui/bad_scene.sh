@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A scene file that does not exist: --grab exits non-zero with a message naming the file,
 # and writes no images. A lesson whose scene does not exist is a problem of the grab too: it
-# exits 1 with a "grab failed:" line naming the file (it exited 0, grabbing a blank view).
+# exits 1 with a "grab failed:" line naming the file (it exited 0, grabbing a blank view); its
+# published.json has the error and frame time n/a (null) with the reason (no scene), never 0.
 # usage: bad_scene.sh <shadowlab> <tests/data dir> <out dir>
 set -euo pipefail
 app=$1 data=$2
@@ -27,4 +28,14 @@ cat "$out/lesson.stderr"
 [[ $rc -eq 1 ]] || { echo "FAIL: a lesson whose scene is missing: exit $rc, expected 1"; exit 1; }
 grep -qE "^shadowlab: grab failed: .*no-such-folder/no-such-scene\.gltf" "$out/lesson.stderr" ||
   { echo "FAIL: no 'grab failed' line naming the lesson's scene"; exit 1; }
+# With no scene the frame fails: its error and time are n/a with the reason, never 0.
+python3 - "$out/lesson/published.json" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))
+assert "error_pct" in p and p["error_pct"] is None, f"no scene: error_pct {p.get('error_pct')!r}"
+assert p.get("error_unmeasured") == "the frame failed: no scene loaded", p.get("error_unmeasured")
+assert p.get("error_readout") == "error n/a (the frame failed: no scene loaded)", p.get("error_readout")
+assert p.get("frame_ms", 0) is None and p.get("frame_failure") == "no scene loaded", p.get("frame_ms")
+print(f"no scene: error_pct null, {p['error_unmeasured']}; status line {p['error_readout']!r}")
+PY
 echo "PASS"

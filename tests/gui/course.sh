@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Courses (scenes/courses.json): `shadowlab --course 45` opens the course's first lesson, and
 # the Lesson dock's Next opens each next lesson of the course in its order, the dock showing
-# "Course 45 min: K of 7 · ~T min" (shadowlab --self-test course=DIR, see ui/SelfTestsCourse.cpp;
+# "Course 45 min: K of 7 · ~T min" (shadowlab-gui-tests --test course=DIR, see tests/gui/src/GuiTestsCourse.cpp;
 # the dock at each lesson is saved to DIR). An unknown course and a course file naming a
 # missing lesson each stop the program with one line naming what is wrong.
-# usage: course.sh <shadowlab> <tests/data dir> <out dir>
+# usage: course.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 out=$3/course
 here=$(cd "$(dirname "$0")" && pwd)
 scenes=$(cd "$here/../../scenes" && pwd)
@@ -14,8 +15,8 @@ source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-run_self_test "self-test course" 300 "$out/course" \
-  "$app" --course 45 --self-test "course=$out"
+run_gui_test "GUI test course" 300 "$out/course" \
+  "$tests" --course 45 --test "course=$out"
 python3 "$here/pngstats.py" --min-colors 16 --min-stddev 4 "$out"/course-*.png
 
 # expect_refusal <what> <expected stderr line> <command...>: exit 2 and exactly that one line.

@@ -3,12 +3,13 @@
 # and the design's panels (Importance map, Moment mip chain, Covariance with its principal
 # axis, Warp functions, Shadow map, Parameters) are in view and drew data; no panel in view
 # shows its "publishes no ..." placeholder. `--technique uniform` closes the RTW panels and
-# keeps the Shadow map. The `panels` self-test switches techniques in one window: a
+# keeps the Shadow map. The `panels` GUI test switches techniques in one window: a
 # technique's own panels come, the ones it does not feed go, one opened by hand from
 # View > Panels stays until it is closed.
-# usage: first_screen.sh <shadowlab> <tests/data dir> <out dir>
+# usage: first_screen.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 out=$3/first_screen
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/xvfb.bash"
@@ -84,5 +85,5 @@ for p in importance moments covariance warp; do
   [[ ! -e "$out/uniform/panel-$p.png" ]] || { echo "FAIL: uniform grabbed the closed $p panel"; exit 1; }
 done
 
-run_self_test "self-test panels" 300 "$out/panels" "$app" --self-test panels
+run_gui_test "GUI test panels" 300 "$out/panels" "$tests" --test panels
 echo "PASS"

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The GUI on omni-room: the Omni map panel draws the cube as an unfolded cross (six faces)
 # and the dual paraboloid as two discs (published.json: what the panel drew); both PNGs are
-# real pictures. Then its marker (self-test omni-probe): the mouse over the view puts it on
+# real pictures. Then its marker (GUI test omni-probe): the mouse over the view puts it on
 # the face (cube) or hemisphere and uv that algo/omni computes for the pixel's direction from
 # the light; leaving the view removes it.
-# usage: grab_omni.sh <shadowlab> <tests/data dir> <out dir>
+# usage: grab_omni.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 out=$3/grab_omni
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/xvfb.bash"
@@ -37,8 +38,8 @@ PY
 
 for t in cube dual-paraboloid; do
   echo "[marker: $t]"
-  run_self_test "self-test omni-probe ($t)" 240 "$out/probe-$t" "$app" --scene omni-room \
-    --technique $t --set resolution=256 --set bias.normal=0 --self-test "omni-probe=$out/probe-$t"
+  run_gui_test "GUI test omni-probe ($t)" 240 "$out/probe-$t" "$tests" --scene omni-room \
+    --technique $t --set resolution=256 --set bias.normal=0 --test "omni-probe=$out/probe-$t"
   [[ $(grep -c "^ok   pixel" "$out/probe-$t.stdout") -ge 3 ]] || { echo "FAIL: under 3 pixels checked"; exit 1; }
   python3 "$here/pngstats.py" --min-colors 16 --min-stddev 8 "$out/probe-$t/omni-probe.png"
 done

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Each lesson's claim, in numbers (shadowlab --lesson NAME --self-test lesson-claims=DIR, see
-# ui/SelfTestsLessons.cpp): every lesson in scenes/lessons started fresh, as
+# Each lesson's claim, in numbers (shadowlab --lesson NAME --test lesson-claims=DIR, see
+# tests/gui/src/GuiTestsLessons.cpp): every lesson in scenes/lessons started fresh, as
 # scripts/grab_lessons.sh grabs it (the same screen and presenter mode, so the same window and
 # view): its temporal state settled, only its listed panels shown and its telling panel large;
 # the claims read from the lesson's own text and measured: perspective aliasing (m in three
@@ -13,9 +13,10 @@
 # (memory, error, tessellation), FVSM against a small brute-force budget and ASM against RMSM
 # (both errors, the Pages panel's counts, uniform and rtw-backward staged). The window of each
 # lesson is saved to DIR for a look.
-# usage: lesson_claims.sh <shadowlab> <tests/data dir> <out dir>
+# usage: lesson_claims.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 out=$3/lesson_claims
 here=$(cd "$(dirname "$0")" && pwd)
 export XVFB_SCREEN=1920x1080x24
@@ -32,7 +33,7 @@ for json in "$here"/../../scenes/lessons/*.json; do
   for run in $(seq $runs); do
     log=$out/$name-$run
     rc=0
-    timeout 300 "$app" --lesson "$name" --presenter --self-test "lesson-claims=$out" \
+    timeout 300 "$tests" --lesson "$name" --presenter --test "lesson-claims=$out" \
       >"$log.out" 2>"$log.err" || rc=$?
     cat "$log.out"
     if [[ $rc -ne 0 ]] || ! grep -qx PASS "$log.out"; then

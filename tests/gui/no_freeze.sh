@@ -5,15 +5,16 @@
 # 400 ms and a 20 ms heartbeat timer never waits 1 s; partial frames say "tile k of 256"; the
 # complete frame equals the one-call frame (pixels and error). Measured and the bounds' margins:
 # docs/user-guide/continuous-rendering.md, "Never freezing".
-# usage: no_freeze.sh <shadowlab> <tests/data dir> <out dir>
+# usage: no_freeze.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 out=$3/no_freeze
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-run_self_test "self-test no-freeze" 500 "$out/no_freeze" \
-  "$app" --scene default --technique virtual-tiled --self-test "no-freeze=$out"
+run_gui_test "GUI test no-freeze" 500 "$out/no_freeze" \
+  "$tests" --scene default --technique virtual-tiled --test "no-freeze=$out"
 echo "PASS"

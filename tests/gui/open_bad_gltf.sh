@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Opening a broken glTF from the GUI — File > Open glTF… with Qt's file dialog, and dropping
-# the file on the window (a QDropEvent with its URL), driven by shadowlab --self-test
-# bad-gltf=FILE,FILE,… (see ui/SelfTests.cpp) — shows an error dialog and a status
+# the file on the window (a QDropEvent with its URL), driven by shadowlab-gui-tests --test
+# bad-gltf=FILE,FILE,… (see tests/gui/src/GuiTests.cpp) — shows an error dialog and a status
 # message naming the file, both elided to a sane length (ui/MessageText.h), and the previous
 # scene stays loaded and keeps rendering. Every fixture in tests/data that fails to load, a
 # generated one whose 40 MB buffer URI the loader's message may echo, and every hostile glTF
 # of tests/fixtures/hostile that the CLI refuses.
-# usage: open_bad_gltf.sh <shadowlab> <tests/data dir> <out dir>
+# usage: open_bad_gltf.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 data=$2
 out=$3/open_bad_gltf
 here=$(cd "$(dirname "$0")" && pwd)
@@ -54,11 +55,11 @@ done < <(grep -v '^#' "$hostile/expected.tsv")
 
 list=$(IFS=,; echo "${files[*]}")
 rc=0
-timeout 600 "$app" --scene plane-box --technique uniform --self-test "bad-gltf=$list" \
-  >"$out/self-test.stdout" 2>"$out/self-test.stderr" || rc=$?
+timeout 600 "$tests" --scene plane-box --technique uniform --test "bad-gltf=$list" \
+  >"$out/gui-test.stdout" 2>"$out/gui-test.stderr" || rc=$?
 check_bad_files bad-gltf "File > Open" "$out" "$rc" "${files[@]}"
 # Passed: do not leave the 40 MB file, the generated fixtures (sparse GiB files, FIFOs) and a
 # long stderr behind.
 rm -rf "$huge" "$out/gen"
-head -c 65536 "$out/self-test.stderr" >"$out/self-test.stderr.head" && rm "$out/self-test.stderr"
+head -c 65536 "$out/gui-test.stderr" >"$out/gui-test.stderr.head" && rm "$out/gui-test.stderr"
 echo "PASS"

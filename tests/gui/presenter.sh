@@ -2,14 +2,15 @@
 # Presenter mode on a 1920x1080 and a 1280x720 screen (issue 15): started with --presenter
 # (what the lesson grabs use) on the first, turned on through its action (F11) on the second;
 # and a lesson (its layout's large panel the big one) with --presenter at 1920x1080;
-# the self-test checks the window fits, body text >= 22 px x min(w/1920, h/1080), one big
+# the GUI test checks the window fits, body text >= 22 px x min(w/1920, h/1080), one big
 # panel image >= 35 % of the screen's height, the changed overlay's pixels = the renderer's
 # count, the pointer ring, the zoom inset, the ticks; every dock's fonts (widgets, dock titles,
 # Qt Charts) >= 80 % of the body and the Timing panel's pass names whole with it big; the big
 # panel full screen (F12) and back. PNGs in <out>/presenter.
-# usage: presenter.sh <shadowlab> <tests/data dir> <out dir>
+# usage: presenter.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 out=$3/presenter
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/xvfb.bash"
@@ -30,13 +31,13 @@ for run in 1920x1080 1280x720 lesson; do
   fi
   XVFB_SCREEN="${screen}x24" start_xvfb
   rc=0
-  timeout 240 "$app" "${start[@]}" "${flag[@]}" \
-    --self-test "presenter=${out_lesson:-$out}" >"$out/$run.stdout" 2>"$out/$run.stderr" || rc=$?
+  timeout 240 "$tests" "${start[@]}" "${flag[@]}" \
+    --test "presenter=${out_lesson:-$out}" >"$out/$run.stdout" 2>"$out/$run.stderr" || rc=$?
   stop_xvfb
   echo "[$run ${flag[*]}]"
   cat "$out/$run.stdout"
   if [[ $rc -ne 0 ]] || ! grep -qx PASS "$out/$run.stdout"; then
-    echo "FAIL: self-test presenter ($run) exited with $rc; stderr:"
+    echo "FAIL: GUI test presenter ($run) exited with $rc; stderr:"
     cat "$out/$run.stderr"
     exit 1
   fi

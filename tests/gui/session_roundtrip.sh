@@ -6,9 +6,10 @@
 # visible docks), printed by both runs and compared here. The save run also checks Recent
 # sessions (at most 8, a deleted file dropped with a message) and that malformed sessions are
 # refused with the file named and the state kept.
-# usage: session_roundtrip.sh <shadowlab> <tests/data dir> <out dir>
+# usage: session_roundtrip.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 out=$3/session_roundtrip
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/xvfb.bash"
@@ -20,14 +21,14 @@ run() {  # name, arguments...
   local name=$1
   shift
   echo "[$name]"
-  run_self_test "$name" 300 "$out/$name" "$app" "$@"
+  run_gui_test "$name" 300 "$out/$name" "$tests" "$@"
 }
 
-run save --scene default --technique uniform --self-test "session-save=$session"
+run save --scene default --technique uniform --test "session-save=$session"
 [[ -s $session ]] || { echo "FAIL: no session file written"; exit 1; }
-run open --open-session "$session" --self-test session-check
+run open --open-session "$session" --test session-check
 # --lesson FILE opens the same file: a session is a lesson.
-run lesson --lesson "$session" --self-test session-check
+run lesson --lesson "$session" --test session-check
 
 grep '^metric ' "$out/save.stdout" >"$out/save.metrics"
 [[ $(wc -l <"$out/save.metrics") -gt 20 ]] || { echo "FAIL: too few metrics"; exit 1; }

@@ -3,15 +3,16 @@
 # panel changes its memory and error and not the left half's; "equal memory" picks the
 # largest right resolution within the left half's bytes (one step more spends more), and
 # matches again when the left side's memory changes. PNG in <out>/split_params.
-# usage: split_params.sh <shadowlab> <tests/data dir> <out dir>
+# usage: split_params.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
+tests=$4
 out=$3/split_params
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb
 
-run_self_test "self-test split-params" 240 "$out/split_params" \
-  "$app" --scene default --technique uniform --set resolution=1024 --self-test "split-params=$out"
+run_gui_test "GUI test split-params" 240 "$out/split_params" \
+  "$tests" --scene default --technique uniform --set resolution=1024 --test "split-params=$out"
 echo "PASS"

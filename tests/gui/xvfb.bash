@@ -47,10 +47,10 @@ start_xvfb() {
   echo "Xvfb on $DISPLAY (pid $XVFB_PID)"
 }
 
-# Runs a shadowlab self-test: run_self_test <what> <timeout s> <log prefix> <command...>.
+# Runs a shadowlab GUI test: run_gui_test <what> <timeout s> <log prefix> <command...>.
 # Its stdout is printed and kept in <log prefix>.stdout, its stderr in <log prefix>.stderr;
 # the calling test fails (exit 1, the stderr shown) unless it exited 0 and printed a line PASS.
-run_self_test() {
+run_gui_test() {
   local what=$1 limit=$2 log=$3
   shift 3
   local rc=0

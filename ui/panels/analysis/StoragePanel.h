@@ -41,7 +41,7 @@ class StoragePanel : public PublicationPanel {
   /// scheme warps), "fallback" (a part of the scheme falls back to uniform).
   QJsonObject drawnValues() const override;
   /// The hemisphere disk and where disk coordinates (u right = in front, v up = the viewer's
-  /// right) lie in it: what a click there picks (the storage-click self-test clicks there).
+  /// right) lie in it: what a click there picks (the storage-click GUI test clicks there).
   QWidget* hemisphereWidget() const;
   QPointF hemispherePoint(double u, double v) const;
 

@@ -34,8 +34,10 @@ namespace {
 
 constexpr int kWidth = 320, kHeight = 180;
 
+/// The median; NaN when empty or when one value is not a number (an unmeasured error).
 double medianOf(std::vector<double> v) {
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  if (v.empty() || !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }))
+    return std::numeric_limits<double>::quiet_NaN();
   return sl::median(v);
 }
 
@@ -264,16 +266,23 @@ void ChartsPanel::finish(bool completed) {
   timer_.stop();
   runButton_->setEnabled(true);
   cancelButton_->setEnabled(false);
-  int done = 0;
-  for (const Config& c : configs_) done += c.done ? 1 : 0;
-  status_->setText(
+  int done = 0, unmeasured = 0;
+  for (const Config& c : configs_) {
+    done += c.done ? 1 : 0;
+    unmeasured += c.done && !std::isfinite(c.medianErrorPct) ? 1 : 0;
+  }
+  QString text =
       completed ? tr("%1 configurations measured (medians of %2 frames at %3×%4). "
                      "Click a point to view it.")
                       .arg(done)
                       .arg(frames_)
                       .arg(kWidth)
                       .arg(kHeight)
-                : tr("Cancelled after %1 of %2 configurations.").arg(done).arg(configs_.size()));
+                : tr("Cancelled after %1 of %2 configurations.").arg(done).arg(configs_.size());
+  if (unmeasured > 0)
+    text +=
+        tr(" Error n/a for %1 of them (no covered pixel in a frame): not drawn.").arg(unmeasured);
+  status_->setText(text);
   redrawChart();
   Q_EMIT sweepFinished(completed);
 }
@@ -326,7 +335,11 @@ void ChartsPanel::tick() {
       problem = QString::fromStdString(*e);
     config.ms.push_back(renderer_->stats().totalMs);
     config.bytes.push_back(double(renderer_->stats().memory.bytes()));
-    config.errorPct.push_back(renderer_->computeError().stats.errorPct);
+    // A frame with no covered pixel measured nothing: its error is n/a, never 0 (the chart
+    // leaves the configuration out and the status line says so).
+    const sl::ShadowErrorStats error = renderer_->computeError().stats;
+    config.errorPct.push_back(error.covered > 0 ? error.errorPct
+                                                : std::numeric_limits<double>::quiet_NaN());
   } catch (const std::exception& e) {
     problem = QString::fromUtf8(e.what());
   }

@@ -254,7 +254,23 @@ TimingPanel::TimingPanel(QWidget* parent) : QWidget(parent) {
   outer->addLayout(row, 1);
 }
 
-void TimingPanel::showStats(const sl::FrameStats& stats) {
+QString TimingPanel::summaryText() const {
+  return summary_->text();
+}
+
+void TimingPanel::showStats(const sl::FrameStats& stats, const QString& failure) {
+  if (!failure.isEmpty()) {
+    // A failed frame has no time: n/a and why, never a number (nor a bar or a history point).
+    summary_->setText(tr("Frame %1  ·  %2 × %3 px  ·  total <b>n/a</b> (the frame failed: %4)")
+                          .arg(stats.frameIndex)
+                          .arg(stats.width)
+                          .arg(stats.height)
+                          .arg(failure.toHtmlEscaped()));
+    passes_->setToolTip({});
+    passes_->setPasses({}, 0.0);
+    arrangeBoxes();
+    return;
+  }
   summary_->setText(tr("Frame %1  ·  %2 × %3 px  ·  total <b>%4</b>  ·  timing: %5")
                         .arg(stats.frameIndex)
                         .arg(stats.width)

@@ -27,8 +27,11 @@ class TimingPanel : public QWidget {
 
   /// The technique whose declared passes (core/Renderer.h framePassDecls) name the bars.
   void setTechnique(const sl::TechniqueInfo* technique);
-  /// Shows the stats of the frame just rendered.
-  void showStats(const sl::FrameStats& stats);
+  /// Shows the stats of the frame just rendered. `failure` (the frame's problem): its time is
+  /// n/a with the reason, no bars, and it stays out of the history.
+  void showStats(const sl::FrameStats& stats, const QString& failure = {});
+  /// The summary line as shown ("Frame 12 · 640 × 400 px · total 3.1 ms · …").
+  QString summaryText() const;
   /// Forgets the history (new scene or technique: old times are not comparable).
   void resetHistory();
 

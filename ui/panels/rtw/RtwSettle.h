@@ -1,6 +1,6 @@
 // What a lesson waits for with a technique whose state carries over frames (DA-RTW's
 // rotation): the RTW publication keys stay in ui/panels/rtw/ (tests/source/ui_names_no_rtw_key.sh);
-// LessonController and the self-tests ask here.
+// LessonController and the GUI tests ask here.
 #pragma once
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The `course` self-test (see SelfTests.h): a course started with --course, stepped through
+// The `course` self-test (see GuiTests.h): a course started with --course, stepped through
 // with the Lesson dock's Next as a lecturer would.
 #include <QDir>
 #include <QDockWidget>
@@ -8,18 +8,18 @@
 
 #include "LessonController.h"
 #include "MainWindow.h"
-#include "SelfTests.h"
+#include "GuiTests.h"
 
 namespace sl::ui {
 
-bool SelfTests::course(const QString& dir) {
-  LessonController& lessons = *w_.lessons_;
+bool GuiTests::course(const QString& dir) {
+  LessonController& lessons = *w_.lessons();
   const sl::Course* course = lessons.activeCourse();
   check(course != nullptr, tr("--course started a course"));
   if (!course) return false;
-  auto* next = w_.lessonPanel_->findChild<QPushButton*>(QStringLiteral("lessonNext"));
-  auto* previous = w_.lessonPanel_->findChild<QPushButton*>(QStringLiteral("lessonPrevious"));
-  auto* thread = w_.lessonPanel_->findChild<QLabel*>(QStringLiteral("lessonCourseThread"));
+  auto* next = w_.lessonPanel()->findChild<QPushButton*>(QStringLiteral("lessonNext"));
+  auto* previous = w_.lessonPanel()->findChild<QPushButton*>(QStringLiteral("lessonPrevious"));
+  auto* thread = w_.lessonPanel()->findChild<QLabel*>(QStringLiteral("lessonCourseThread"));
   check(next && previous && thread, tr("the Lesson dock has Next, Previous and the course line"));
   if (!next || !previous || !thread) return false;
   if (!dir.isEmpty()) QDir().mkpath(dir);
@@ -41,10 +41,10 @@ bool SelfTests::course(const QString& dir) {
                              .arg(k + 1)
                              .arg(count)
                              .arg(want.minutes);
-    check(w_.lessonPanel_->courseLine() == line && !w_.lessonDock_->isHidden(),
+    check(w_.lessonPanel()->courseLine() == line && !w_.lessonDock()->isHidden(),
           tr("the Lesson dock shows \"%1\" (shown: \"%2\")")
-              .arg(line, w_.lessonPanel_->courseLine()));
-    check(thread->isVisibleTo(w_.lessonPanel_) &&
+              .arg(line, w_.lessonPanel()->courseLine()));
+    check(thread->isVisibleTo(w_.lessonPanel()) &&
               thread->text() == QString::fromStdString(want.thread),
           tr("%1: the dock shows the course's sentence for it").arg(file));
     check(next->isEnabled() == (k + 1 < count) && previous->isEnabled() == (k > 0),
@@ -52,7 +52,7 @@ bool SelfTests::course(const QString& dir) {
               .arg(file, next->isEnabled() ? tr("on") : tr("off"),
                    previous->isEnabled() ? tr("on") : tr("off")));
     if (!dir.isEmpty())
-      w_.lessonDock_->grab().save(QDir(dir).filePath(QStringLiteral("course-%1.png").arg(k + 1)));
+      w_.lessonDock()->grab().save(QDir(dir).filePath(QStringLiteral("course-%1.png").arg(k + 1)));
   }
   lessons.stepLesson(1);  // past the last: stays
   check(lessons.coursePosition() == count - 1,
@@ -73,7 +73,7 @@ bool SelfTests::course(const QString& dir) {
   }
   if (outside >= 0) {
     lessons.apply(outside);
-    check(!lessons.activeCourse() && w_.lessonPanel_->courseLine().isEmpty() && thread->isHidden(),
+    check(!lessons.activeCourse() && w_.lessonPanel()->courseLine().isEmpty() && thread->isHidden(),
           tr("a lesson outside the course ends it (the dock's course line is gone)"));
   }
   return true;

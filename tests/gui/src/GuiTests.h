@@ -1,10 +1,8 @@
-// GUI self-tests (`shadowlab --self-test NAME[=ARG]`, driven by tests/gui/*.sh under Xvfb):
-// params, bad-gltf=FILE[,FILE…], bad-session=FILE[,FILE…], teaching=DIR, charts=DIR,
-// split-resize[=TECHNIQUE], omni-probe[=DIR], session-save=FILE, session-check
-// (SelfTestsSession.cpp), presenter[=DIR], split-params[=DIR] (SelfTestsPresenter.cpp),
-// lesson-claims[=DIR] (SelfTestsLessons.cpp), course[=DIR] (SelfTestsCourse.cpp). They act as a
-// user would and check what the renderer and the window did; each check prints "ok   ..." or
-// "FAIL ...".
+// The GUI tests (`shadowlab-gui-tests --test NAME[=ARG] [shadowlab options]`, driven by
+// tests/gui/*.sh under Xvfb; the names and their arguments: GuiTests::all()). They drive the
+// real window through ui/Automation.h and its public parts as a user would and check what the
+// renderer and the window did; each check prints "ok   ..." or "FAIL ...", then "PASS" or
+// "FAIL"; exit 0 = pass. The tests of a family live in GuiTests<Family>.cpp.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +17,7 @@
 #include <QSize>
 #include <QString>
 
+#include "Automation.h"
 #include "core/Preset.h"
 #include "core/Renderer.h"
 
@@ -29,19 +28,30 @@ namespace sl::ui {
 class MainWindow;
 class PublicationPanel;
 
-class SelfTests : public QObject {
+class GuiTests : public QObject {
   Q_OBJECT
 
  public:
-  explicit SelfTests(MainWindow& window);
+  /// A test: its name, its argument's form ("" none, "=DIR", "[=DIR]", ...) and its body.
+  struct Test {
+    const char* name;
+    const char* argument;
+    bool (*run)(GuiTests& tests, const QString& argument);
+  };
+  /// Every GUI test, in one list (the command line checks names against it).
+  static const std::vector<Test>& all();
+  static const Test* find(const QString& name);
+  /// "params, bad-gltf=FILE[,FILE...], ...": for usage messages.
+  static QString usage();
 
-  /// Runs test `name` once the renderer has drawn a frame: exits 0 (pass) or 1.
-  void start(const QString& name, const QString& argument);
-  /// True while a self-test drives the window (it then uses Qt's own file dialog).
-  bool running() const { return !name_.isEmpty(); }
+  /// Drives `window` (an Automation of it, a child of the window).
+  explicit GuiTests(MainWindow& window);
+
+  /// Runs `test` once the renderer has drawn its first frames: exits 0 (pass) or 1.
+  void start(const Test& test, const QString& argument);
 
  private:
-  void run();
+  void run(const Test& test);
   bool params();
   /// bad-gltf=FILE[,FILE…]: each broken file opened through File > Open, then dropped on
   /// the window; each time the error is shown (elided) and the scene stays.
@@ -70,6 +80,8 @@ class SelfTests : public QObject {
   bool charts(const QString& dir);
   /// Part of charts(): x: memory and back through the combo box (axis, front).
   bool chartsAxis(const QString& dir);
+  /// Part of charts(): a sweep of a sky-only view: its error n/a (no point, the status says so).
+  bool chartsUnmeasured();
   /// split-resize[=TECHNIQUE]: the split view measures the same errors after the window
   /// was shrunk to 3x3 and restored.
   bool splitResize(const QString& splitTechnique);
@@ -89,7 +101,7 @@ class SelfTests : public QObject {
   /// session-check: the same "metric ..." lines for the state the window started in
   /// (tests/gui/session_roundtrip.sh starts it with --open-session FILE and compares).
   bool sessionCheck();
-  /// presenter[=DIR] (SelfTestsPresenter.cpp): presenter mode at the screen's size: the
+  /// presenter[=DIR] (GuiTestsPresenter.cpp): presenter mode at the screen's size: the
   /// window fits, body text >= 22 px x min(w / 1920, h / 1080), one panel with an image >=
   /// 35 % of the screen's height, the changed overlay's vivid pixels = the renderer's count,
   /// pointer ring, zoom inset (nearest neighbour), ticks; every dock's fonts (widgets, dock
@@ -98,7 +110,7 @@ class SelfTests : public QObject {
   bool presenter(const QString& dir);
   void checkPresenterFonts(const QString& dir, const QSize& screen);
   void checkFullPanel(const QString& dir, const QRect& screen);
-  /// split-params[=DIR] (SelfTestsPresenter.cpp): the compare side's own parameter panel
+  /// split-params[=DIR] (GuiTestsPresenter.cpp): the compare side's own parameter panel
   /// (a resolution edit changes its memory, not the main side's) and "equal memory".
   bool splitParams(const QString& dir);
   /// The view pinned to 640x400, a few frames, the error computed; prints the metrics.
@@ -106,7 +118,7 @@ class SelfTests : public QObject {
   /// live-error[=DIR]: continuous rendering (F6) keeps the error live: a number and the reference's
   /// age within a time limit, equal to the error computed synchronously for the same frame;
   /// a camera move makes it stale, then fresh again; a scene change mid-trace drops the
-  /// trace; the window then closes while a trace runs (SelfTestsLive.cpp).
+  /// trace; the window then closes while a trace runs (GuiTestsLive.cpp).
   bool liveError(const QString& dir);
   /// adaptive-resolution[=DIR]: a slow technique's frame (over the 250 ms budget) drops the view's
   /// internal resolution with a note in the view; frames then render at the lower size; a
@@ -118,12 +130,12 @@ class SelfTests : public QObject {
   /// say "tile k of 256", a complete frame arrives, and it equals the one-call frame pixel
   /// for pixel with the same error (live vs synchronous). PNGs into DIR when given.
   bool noFreeze(const QString& dir);
-  /// storage-click[=DIR] (SelfTestsStorage.cpp): a click on the Storage factor panel's
+  /// storage-click[=DIR] (GuiTestsStorage.cpp): a click on the Storage factor panel's
   /// hemisphere moves the light to the direction there (the paper's Fig. 7 frame of this
   /// camera, from algo/partition), the status bar says so, the panel re-analyses with the
   /// mark under the click; a click outside the disk keeps the light. PNGs into DIR.
   bool storageClick(const QString& dir);
-  /// panels (SelfTestsPanels.cpp, started without --technique): the window opens on DA-RTW
+  /// panels (GuiTestsPanels.cpp, started without --technique): the window opens on DA-RTW
   /// with its panels open and filled; a switch shows the new technique's panels and closes
   /// the ones it does not feed, except one opened by hand from View > Panels, which stays
   /// until it is closed; no panel in view shows its "publishes no ..." placeholder.
@@ -153,7 +165,7 @@ class SelfTests : public QObject {
   /// The Covariance panel's readouts against the renderer's publication of the same frame.
   void checkCovarianceReadouts(const QString& where);
   void claimVibration(const QString& text);
-  // Lessons 5 and 8-12 (SelfTestsLessons.cpp): each changes one thing the lesson's text names
+  // Lessons 5 and 8-12 (GuiTestsLessons.cpp): each changes one thing the lesson's text names
   // (technique, Warp eta, split scheme, tessellation, resolution) and measures the main view.
   struct LessonNumbers {
     double errorPct = 0.0;  ///< against the ray-traced reference
@@ -182,7 +194,8 @@ class SelfTests : public QObject {
   void check(bool ok, const QString& what);
 
   MainWindow& w_;
-  QString name_, argument_;
+  Automation& auto_;
+  QString argument_;
   int failures_ = 0;
 };
 

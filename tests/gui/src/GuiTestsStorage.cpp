@@ -1,4 +1,4 @@
-// The storage-click self-test (see SelfTests.h): a click on the Storage factor panel's
+// The storage-click self-test (see GuiTests.h): a click on the Storage factor panel's
 // hemisphere moves the light to the direction under the cursor (issue 10).
 #include <cmath>
 #include <cstdio>
@@ -12,7 +12,7 @@
 #include <QStatusBar>
 
 #include "MainWindow.h"
-#include "SelfTests.h"
+#include "GuiTests.h"
 #include "ViewportWidget.h"
 #include "algo/partition/StoragePlots.h"
 #include "panels/analysis/StoragePanel.h"
@@ -41,17 +41,17 @@ double angleDeg(const sl::Light& a, const sl::Light& b) {
 }
 }  // namespace
 
-bool SelfTests::storageClick(const QString& dir) {
+bool GuiTests::storageClick(const QString& dir) {
   StoragePanel* panel = nullptr;
-  for (const PublicationDocks::Dock& d : w_.docks_.docks())
+  for (const PublicationDocks::Dock& d : w_.docks().docks())
     if (d.entry.id == QLatin1String("storage")) panel = qobject_cast<StoragePanel*>(d.panel);
-  QDockWidget* dock = w_.docks_.dock("storage");
+  QDockWidget* dock = w_.docks().dock("storage");
   check(panel && dock, tr("the Storage factor dock exists"));
   if (!panel || !dock) return false;
   dock->show();
   dock->raise();
   QCoreApplication::processEvents();
-  ViewportWidget* view = w_.viewport_;
+  ViewportWidget* view = w_.viewport();
   check(view->light().type == sl::LightType::Directional, tr("the scene's light is directional"));
 
   // The analysis runs off the UI thread: wait until the panel drew the frame's light.
@@ -59,7 +59,7 @@ bool SelfTests::storageClick(const QString& dir) {
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < kAnalysisTimeoutMs) {
-      w_.waitForFrames(1);
+      auto_.waitForFrames(1);
       const QJsonObject drawn = panel->drawnValues();
       if (drawn.contains(QStringLiteral("mark_u"))) {
         const sl::Light shown = sl::Light::directional(

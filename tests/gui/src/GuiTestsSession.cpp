@@ -1,4 +1,4 @@
-// The session self-tests (see SelfTests.h): session-save=FILE sets a state far from the
+// The session self-tests (see GuiTests.h): session-save=FILE sets a state far from the
 // defaults, prints its metrics and saves it; session-check prints the metrics of the state the
 // window started in (with --open-session FILE). tests/gui/session_roundtrip.sh compares them.
 #include <cstdio>
@@ -18,7 +18,7 @@
 #include "LaunchOptions.h"
 #include "LessonController.h"
 #include "MainWindow.h"
-#include "SelfTests.h"
+#include "GuiTests.h"
 #include "SessionFiles.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
@@ -35,29 +35,30 @@ void metric(const QString& key, const QString& value) {
 }
 }  // namespace
 
-void SelfTests::printSessionMetrics() {
+void GuiTests::printSessionMetrics() {
   // The same view size in both runs: the error is that of the same frame.
-  w_.viewport_->setFixedSize(640, 400);
+  w_.viewport()->setFixedSize(640, 400);
   QCoreApplication::processEvents();
-  w_.waitForFrames(6);  // cascades fit to last frame's depth range: settled after a few
-  const auto error = w_.viewport_->computeErrorNow();
-  const auto splitError = w_.viewport_->splitErrorPct();
-  sl::Renderer* r = w_.viewport_->renderer();
-  metric(QStringLiteral("scene"), w_.sceneSpec_);
-  metric(QStringLiteral("technique"), QString::fromStdString(w_.viewport_->techniqueId()));
-  metric(QStringLiteral("split.technique"), QString::fromStdString(w_.viewport_->splitTechnique()));
+  auto_.waitForFrames(6);  // cascades fit to last frame's depth range: settled after a few
+  const auto error = w_.viewport()->computeErrorNow();
+  const auto splitError = w_.viewport()->splitErrorPct();
+  sl::Renderer* r = w_.viewport()->renderer();
+  metric(QStringLiteral("scene"), w_.sceneSpec());
+  metric(QStringLiteral("technique"), QString::fromStdString(w_.viewport()->techniqueId()));
+  metric(QStringLiteral("split.technique"),
+         QString::fromStdString(w_.viewport()->splitTechnique()));
   for (const sl::ParamSet* set : {&r->params(), &r->rendererParams()})
     for (const sl::ParamDecl& d : set->decls())
       metric(QStringLiteral("param.") + QString::fromStdString(d.key),
              QString::fromStdString(set->format(d.key)));
-  for (const auto& [key, value] : w_.viewport_->splitParams())
+  for (const auto& [key, value] : w_.viewport()->splitParams())
     metric(QStringLiteral("split.param.") + QString::fromStdString(key),
            QString::fromStdString(value));
-  const sl::Camera& c = w_.viewport_->camera();
+  const sl::Camera& c = w_.viewport()->camera();
   metric(QStringLiteral("camera.position"), vec(c.position));
   metric(QStringLiteral("camera.target"), vec(c.target));
   metric(QStringLiteral("camera.fov"), QString::number(c.fovYDeg, 'g', 9));
-  const sl::Light& l = w_.viewport_->light();
+  const sl::Light& l = w_.viewport()->light();
   metric(QStringLiteral("light.type"),
          QString::fromStdString(std::string(sl::lightTypeName(l.type))));
   metric(QStringLiteral("light.angles"),
@@ -78,15 +79,15 @@ void SelfTests::printSessionMetrics() {
                                  .arg(splitError.value_or(-1), 0, 'f', 4));
 }
 
-bool SelfTests::sessionSave(const QString& path) {
+bool GuiTests::sessionSave(const QString& path) {
   if (path.isEmpty()) {
     check(false, tr("session-save needs a FILE"));
     return false;
   }
   check(w_.loadScene(QStringLiteral("corridor")), tr("scene corridor loaded"));
   w_.setTechnique(QStringLiteral("cascades"));
-  w_.waitForFrames(1);
-  sl::Renderer* r = w_.viewport_->renderer();
+  auto_.waitForFrames(1);
+  sl::Renderer* r = w_.viewport()->renderer();
   for (const char* kv : {"partitions=3", "split=practical", "split.lambda=0.7",
                          "view.overlay=aliasing", "shading.ambient=0.3", "pcf=3"}) {
     const auto e = assignParameter(r->params(), r->rendererParams(), kv);
@@ -94,16 +95,16 @@ bool SelfTests::sessionSave(const QString& path) {
                   .arg(QLatin1String(kv),
                        e ? QStringLiteral(": ") + QString::fromStdString(*e) : QString()));
   }
-  w_.paramPanel_->refreshValues();
-  w_.teaching_->syncOverlayCombo();
-  sl::Camera camera = w_.viewport_->camera();
+  w_.paramPanel()->refreshValues();
+  w_.teaching()->syncOverlayCombo();
+  sl::Camera camera = w_.viewport()->camera();
   camera.position += glm::vec3(0.75f, 0.5f, -1.25f);
   camera.fovYDeg = 42.0f;
-  w_.viewport_->setCamera(camera);
-  w_.viewport_->setLight(sl::Light::directional(-35.0f, 38.5f));
+  w_.viewport()->setCamera(camera);
+  w_.viewport()->setLight(sl::Light::directional(-35.0f, 38.5f));
   w_.syncLightControls();
-  w_.teaching_->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
-  w_.timingDock_->hide();
+  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
+  w_.timingDock()->hide();
   printSessionMetrics();
 
   // File > Save session…, the path typed into Qt's own file dialog as a user would.
@@ -122,27 +123,27 @@ bool SelfTests::sessionSave(const QString& path) {
     }
   });
   driver.start();
-  w_.sessions_->saveAction()->trigger();  // returns once the dialog is closed
+  w_.sessions()->saveAction()->trigger();  // returns once the dialog is closed
   driver.stop();
   check(sawDialog && QFileInfo(path).isFile(),
         tr("File > Save session… showed the file dialog and wrote %1").arg(path));
   const QString absolute = QFileInfo(path).absoluteFilePath();
-  check(!w_.sessions_->recent().isEmpty() && w_.sessions_->recent().first() == absolute,
+  check(!w_.sessions()->recent().isEmpty() && w_.sessions()->recent().first() == absolute,
         tr("Recent sessions starts with it"));
 
   // Recent sessions: at most 8, and a deleted file is dropped with a message.
   const QString gone = path + QStringLiteral(".gone.json");
   for (int i = 0; i < SessionFiles::kMaxRecent + 2; ++i)
-    w_.sessions_->save(path + QStringLiteral(".%1.json").arg(i));
-  check(w_.sessions_->recent().size() == SessionFiles::kMaxRecent,
+    w_.sessions()->save(path + QStringLiteral(".%1.json").arg(i));
+  check(w_.sessions()->recent().size() == SessionFiles::kMaxRecent,
         tr("Recent sessions keeps %1 (%2)")
             .arg(SessionFiles::kMaxRecent)
-            .arg(w_.sessions_->recent().size()));
-  w_.sessions_->save(gone);
-  w_.sessions_->save(path);
+            .arg(w_.sessions()->recent().size()));
+  w_.sessions()->save(gone);
+  w_.sessions()->save(path);
   QFile::remove(gone);
   w_.statusBar()->clearMessage();
-  const QStringList recent = w_.sessions_->recent();
+  const QStringList recent = w_.sessions()->recent();
   check(!recent.contains(QFileInfo(gone).absoluteFilePath()) && recent.first() == absolute,
         tr("a deleted session is dropped from Recent sessions (%1 left)").arg(recent.size()));
   check(w_.statusBar()->currentMessage().contains(QFileInfo(gone).fileName()),
@@ -177,7 +178,7 @@ bool SelfTests::sessionSave(const QString& path) {
   return true;
 }
 
-void SelfTests::badSessionOpen(const QString& path) {
+void GuiTests::badSessionOpen(const QString& path) {
   const ViewState before = viewState();
   QString messageText;
   QTimer driver;  // closes the error dialog as a user would, reading it first
@@ -190,7 +191,7 @@ void SelfTests::badSessionOpen(const QString& path) {
   });
   driver.start();
   w_.statusBar()->clearMessage();
-  const bool opened = w_.sessions_->open(path);
+  const bool opened = w_.sessions()->open(path);
   driver.stop();
   check(!opened, tr("%1 is refused").arg(QFileInfo(path).fileName()));
   check(messageText.contains(QFileInfo(path).fileName()),
@@ -198,7 +199,7 @@ void SelfTests::badSessionOpen(const QString& path) {
   check(viewState() == before, tr("scene, technique, parameters and split view are unchanged"));
 }
 
-bool SelfTests::sessionCheck() {
+bool GuiTests::sessionCheck() {
   printSessionMetrics();
   return true;
 }

@@ -1,4 +1,4 @@
-// The presenter-mode and split-parameter self-tests (see SelfTests.h). presenter[=DIR] turns
+// The presenter-mode and split-parameter self-tests (see GuiTests.h). presenter[=DIR] turns
 // presenter mode on
 // through its action (F11) when --presenter did not, and checks what a lecturer relies on at
 // the screen's size: the window fits, body text is large, one panel's image is large, the
@@ -28,7 +28,7 @@
 
 #include "MainWindow.h"
 #include "PresenterMode.h"
-#include "SelfTests.h"
+#include "GuiTests.h"
 #include "SplitSideParams.h"
 #include "TeachingBar.h"
 #include "Theme.h"
@@ -82,17 +82,17 @@ int docksInView(const QMainWindow& window) {
 
 }  // namespace
 
-bool SelfTests::presenter(const QString& dir) {
+bool GuiTests::presenter(const QString& dir) {
   if (!dir.isEmpty()) QDir().mkpath(dir);
-  ViewportWidget* v = w_.viewport_;
-  const bool fromCommandLine = w_.presenter_->active();
-  if (!fromCommandLine) w_.presenter_->action()->trigger();  // what F11 does
-  check(w_.presenter_->active(),
+  ViewportWidget* v = w_.viewport();
+  const bool fromCommandLine = w_.presenter()->active();
+  if (!fromCommandLine) w_.presenter()->action()->trigger();  // what F11 does
+  check(w_.presenter()->active(),
         tr("presenter mode is on (%1)")
             .arg(fromCommandLine ? QStringLiteral("--presenter")
                                  : QStringLiteral("View > Presenter mode")));
   for (int i = 0; i < 10; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
-  w_.waitForFrames(3);
+  auto_.waitForFrames(3);
 
   // 1. The window fits the screen.
   const QScreen* screen = w_.screen();
@@ -119,7 +119,7 @@ bool SelfTests::presenter(const QString& dir) {
   const double scale = std::min(sr.width() / 1920.0, sr.height() / 1080.0);
   const int wantedPx = int(std::ceil(22.0 * scale));
   const int appPx = QFontInfo(QApplication::font()).pixelSize();
-  const int statusPx = QFontInfo(w_.errorLabel_->font()).pixelSize();
+  const int statusPx = QFontInfo(w_.errorLabel()->font()).pixelSize();
   check(appPx >= wantedPx && statusPx >= wantedPx,
         tr("body text %1 px (status line %2 px) >= %3 px (22 px x %4)")
             .arg(appPx)
@@ -133,7 +133,7 @@ bool SelfTests::presenter(const QString& dir) {
             .arg(QApplication::palette().color(QPalette::Window).lightness()));
 
   // 3. One big panel beside the view, its image as large as the space allows.
-  QDockWidget* big = w_.presenter_->bigDock();
+  QDockWidget* big = w_.presenter()->bigDock();
   const int visibleDocks = docksInView(w_);
   check(big && big->isVisible() && visibleDocks == 1,
         tr("one panel shown: %1 (%2 dock(s) in view)")
@@ -153,15 +153,15 @@ bool SelfTests::presenter(const QString& dir) {
     check(false, QString::fromStdString(*e));
     return false;
   }
-  w_.teaching_->syncOverlayCombo();
+  w_.teaching()->syncOverlayCombo();
   w_.setPaused(true);
   w_.stepFrame();
-  w_.waitForFrames(1);
+  auto_.waitForFrames(1);
   sl::Light light = v->light();
   light.azimuthDeg += 0.5f;
   v->setLight(light);
   w_.stepFrame();
-  w_.waitForFrames(1);
+  auto_.waitForFrames(1);
   v->makeCurrent();
   const QImage rendered = v->renderedImage();
   v->doneCurrent();
@@ -194,7 +194,7 @@ bool SelfTests::presenter(const QString& dir) {
         ++ringPixels;
     }
   check(
-      v->pointerHighlight() && ringPixels > 40,
+      auto_.viewReadouts().pointerHighlight && ringPixels > 40,
       tr("pointer ring drawn around (%1, %2): %3 pixels").arg(at.x()).arg(at.y()).arg(ringPixels));
 
   // 6. The zoom inset: Ctrl+Shift+drag over an area, drawn magnified (nearest neighbour)
@@ -205,10 +205,10 @@ bool SelfTests::presenter(const QString& dir) {
   sendMouse(v, QEvent::MouseMove, b, Qt::NoButton, Qt::LeftButton, zoomMods);
   sendMouse(v, QEvent::MouseButtonRelease, b, Qt::LeftButton, Qt::NoButton, zoomMods);
   w_.stepFrame();
-  w_.waitForFrames(1);
-  const QRect area = v->zoomArea().value_or(QRect());
-  const QRect inset = v->zoomInsetRect();
-  const int factor = v->zoomFactor();
+  auto_.waitForFrames(1);
+  const QRect area = auto_.viewReadouts().zoomArea.value_or(QRect());
+  const QRect inset = auto_.viewReadouts().zoomInset;
+  const int factor = auto_.viewReadouts().zoomFactor;
   check(area == QRect(a, b).normalized() && factor >= 2 && !inset.isEmpty(),
         tr("zoom inset of %1x%2 at %3,%4: x%5 at %6,%7")
             .arg(area.width())
@@ -264,22 +264,22 @@ bool SelfTests::presenter(const QString& dir) {
   checkFullPanel(dir, sr);
 
   // 10. Off again (from the full panel): the view, the normal font and theme come back.
-  w_.presenter_->fullPanelAction()->trigger();
+  w_.presenter()->fullPanelAction()->trigger();
   QCoreApplication::processEvents();
-  w_.presenter_->action()->trigger();
+  w_.presenter()->action()->trigger();
   QCoreApplication::processEvents();
-  check(!w_.presenter_->active() && !w_.presenter_->fullPanel() && w_.viewport_->isVisible() &&
+  check(!w_.presenter()->active() && !w_.presenter()->fullPanel() && w_.viewport()->isVisible() &&
             QFontInfo(QApplication::font()).pixelSize() < appPx,
         tr("presenter mode off (from the full panel): view shown, body text back to %1 px")
             .arg(QFontInfo(QApplication::font()).pixelSize()));
   return true;
 }
 
-void SelfTests::checkPresenterFonts(const QString& dir, const QSize& screen) {
-  w_.presenter_->choosePanel(w_.timingDock_->objectName());
+void GuiTests::checkPresenterFonts(const QString& dir, const QSize& screen) {
+  w_.presenter()->choosePanel(w_.timingDock()->objectName());
   for (int i = 0; i < 10; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   w_.stepFrame();  // paused since the changed overlay's check: one frame for the Timing panel
-  w_.waitForFrames(1);
+  auto_.waitForFrames(1);
   for (int i = 0; i < 5; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   // Every widget of every dock (shown or not: a dock shown later keeps its font), the docks'
   // own titles, and the Qt Charts items: at least kMinShare of the body size.
@@ -329,12 +329,12 @@ void SelfTests::checkPresenterFonts(const QString& dir, const QSize& screen) {
                      ? QString()
                      : QStringLiteral(": ") + smallNames.join(QStringLiteral(", "))));
   // The big dock's title bar (drawn by Qt in the dock's font) is as tall as a body line.
-  const int titleH = w_.timingDock_->widget()->y();
+  const int titleH = w_.timingDock()->widget()->y();
   check(titleH >= body,
         tr("the big dock's title bar is %1 px tall (>= the %2 px body)").arg(titleH).arg(body));
-  const TimingPanel* timing = w_.timingPanel_;
+  const TimingPanel* timing = w_.timingPanel();
   const QStringList names = timing->passNames(), shown = timing->shownPassNames();
-  check(w_.presenter_->bigDock() == w_.timingDock_ && !names.isEmpty() && shown == names,
+  check(w_.presenter()->bigDock() == w_.timingDock() && !names.isEmpty() && shown == names,
         tr("the Timing panel big, %1 pass names drawn whole (%2 wide, boxes %3): %4")
             .arg(names.size())
             .arg(timing->width())
@@ -346,23 +346,23 @@ void SelfTests::checkPresenterFonts(const QString& dir, const QSize& screen) {
         w_.grab().save(QDir(dir).filePath(
             QStringLiteral("presenter-%1x%2-timing.png").arg(screen.width()).arg(screen.height()))),
         tr("saved the Timing panel's grab"));
-  w_.presenter_->choosePanel(QString());  // automatic again
+  w_.presenter()->choosePanel(QString());  // automatic again
   for (int i = 0; i < 5; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
 }
 
-void SelfTests::checkFullPanel(const QString& dir, const QRect& screen) {
+void GuiTests::checkFullPanel(const QString& dir, const QRect& screen) {
   auto settle = [] {
     for (int i = 0; i < 10; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   };
-  const double besideSide = largestImage(w_.presenter_->bigDock()).side;
-  w_.presenter_->fullPanelAction()->trigger();  // what F12 does
+  const double besideSide = largestImage(w_.presenter()->bigDock()).side;
+  w_.presenter()->fullPanelAction()->trigger();  // what F12 does
   settle();
-  QDockWidget* big = w_.presenter_->bigDock();
+  QDockWidget* big = w_.presenter()->bigDock();
   const QRect frame = w_.frameGeometry();
   const QRect dockRect = big ? QRect(big->mapTo(&w_, QPoint(0, 0)), big->size()) : QRect();
   const int below = w_.menuBar()->isVisible() ? w_.menuBar()->height() : 0;
   const int visibleDocks = docksInView(w_);
-  check(w_.presenter_->fullPanel() && !w_.viewport_->isVisible() && big && visibleDocks == 1 &&
+  check(w_.presenter()->fullPanel() && !w_.viewport()->isVisible() && big && visibleDocks == 1 &&
             screen.contains(frame) && dockRect.width() >= w_.width() * 97 / 100 &&
             dockRect.height() >= (w_.height() - below) * 97 / 100,
         tr("full panel: %1 is %2x%3 of the %4x%5 window (menu bar %6 px), the view hidden, "
@@ -390,34 +390,34 @@ void SelfTests::checkFullPanel(const QString& dir, const QRect& screen) {
                                                 .arg(screen.height()))),
           tr("saved the full panel's grab"));
   // F12 again: the view back beside the panel, rendering.
-  w_.presenter_->fullPanelAction()->trigger();
+  w_.presenter()->fullPanelAction()->trigger();
   settle();
   w_.stepFrame();  // paused: one frame
-  const bool rendered = w_.waitForFrames(1);
-  check(!w_.presenter_->fullPanel() && w_.viewport_->isVisible() && rendered &&
-            w_.presenter_->bigDock() && w_.presenter_->bigDock()->width() < w_.width() * 3 / 4,
+  const bool rendered = auto_.waitForFrames(1);
+  check(!w_.presenter()->fullPanel() && w_.viewport()->isVisible() && rendered &&
+            w_.presenter()->bigDock() && w_.presenter()->bigDock()->width() < w_.width() * 3 / 4,
         tr("full panel off: the view is back (%1x%2) and renders, the panel %3 px wide")
-            .arg(w_.viewport_->width())
-            .arg(w_.viewport_->height())
-            .arg(w_.presenter_->bigDock() ? w_.presenter_->bigDock()->width() : 0));
+            .arg(w_.viewport()->width())
+            .arg(w_.viewport()->height())
+            .arg(w_.presenter()->bigDock() ? w_.presenter()->bigDock()->width() : 0));
 }
 
-bool SelfTests::splitParams(const QString& dir) {
+bool GuiTests::splitParams(const QString& dir) {
   if (!dir.isEmpty()) QDir().mkpath(dir);
-  ViewportWidget* v = w_.viewport_;
+  ViewportWidget* v = w_.viewport();
   sl::Renderer* main = v->renderer();
   const std::string other = "rtw-backward";
-  w_.teaching_->setSplitTechnique(QString::fromStdString(other));  // as "Compare with" does
+  w_.teaching()->setSplitTechnique(QString::fromStdString(other));  // as "Compare with" does
   if (v->splitTechnique() != other) {
     check(false, tr("the split view shows %1").arg(QString::fromStdString(other)));
     return false;
   }
-  w_.paramDock_->show();
-  w_.paramDock_->raise();
+  w_.paramDock()->show();
+  w_.paramDock()->raise();
   v->setFixedSize(640, 400);  // the same frame size for every measurement
   QCoreApplication::processEvents();
-  w_.waitForFrames(3);
-  SplitSideParams& side = *w_.splitSide_;
+  auto_.waitForFrames(3);
+  SplitSideParams& side = *w_.splitSide();
   auto* spin = side.panel()->findChild<QSpinBox*>(QStringLiteral("param:resolution"));
   check(side.panel()->isVisible() && spin,
         tr("the Parameters dock shows the right half's parameters (%1)")
@@ -439,7 +439,7 @@ bool SelfTests::splitParams(const QString& dir) {
   const int edited = before / 2;
   spin->setValue(edited);
   QCoreApplication::processEvents();
-  w_.waitForFrames(2);
+  auto_.waitForFrames(2);
   const auto mainErrAfter = v->computeErrorNow();
   const auto splitErrAfter = v->splitErrorPct();
   const std::uint64_t mainBytesAfter = main->stats().memory.bytes();
@@ -471,7 +471,7 @@ bool SelfTests::splitParams(const QString& dir) {
   // The parameter matched is the right technique's declared memory knob (its resolution
   // here, rmsm's pool pages below), set through its spin box in the right half's panel.
   auto checkEqualMemory = [&](const QString& when) {
-    w_.waitForFrames(2);
+    auto_.waitForFrames(2);
     const std::uint64_t mainBytes = main->stats().memory.bytes();
     const std::uint64_t splitBytes = split->stats().memory.bytes();
     const sl::ParamDecl* decl = sl::memoryKnob(split->params().decls());
@@ -496,7 +496,7 @@ bool SelfTests::splitParams(const QString& dir) {
     // One step more (measured with a frame, then back): over the budget.
     knobSpin->setValue(value + step);
     QCoreApplication::processEvents();
-    w_.waitForFrames(1);
+    auto_.waitForFrames(1);
     const std::uint64_t over = split->stats().memory.bytes();
     check(over > mainBytes, tr("%1: one step more (%2 = %3) spends %4 B > %5 B")
                                 .arg(when, key)
@@ -512,15 +512,15 @@ bool SelfTests::splitParams(const QString& dir) {
     check(false, QString::fromStdString(*e));
     return false;
   }
-  w_.paramPanel_->refreshValues();
-  w_.waitForFrames(2);
+  w_.paramPanel()->refreshValues();
+  auto_.waitForFrames(2);
   side.equalMemoryBox()->setChecked(true);
   if (auto e = main->params().set("resolution", main->params().get("resolution") * 2)) {
     check(false, QString::fromStdString(*e));
     return false;
   }
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
-  w_.waitForFrames(3);
+  auto_.waitForFrames(3);
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   check(side.matchedMainBytes() && *side.matchedMainBytes() == main->stats().memory.bytes(),
         tr("after the left resolution changed to %1, matched again for %2 B")
@@ -530,7 +530,7 @@ bool SelfTests::splitParams(const QString& dir) {
   checkEqualMemory(tr("re-matched"));
   // A second pair: rmsm's memory is its physical pool, so equal memory sets pool.pages (its
   // virtual.resolution, a resolution in name, spends no byte).
-  w_.teaching_->setSplitTechnique(QStringLiteral("rmsm"));
+  w_.teaching()->setSplitTechnique(QStringLiteral("rmsm"));
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   split = v->splitRenderer();
   check(split && v->splitTechnique() == "rmsm", tr("the split view shows rmsm"));

@@ -1,4 +1,4 @@
-// The live-error self-test (see SelfTests.h): continuous rendering keeps the error readout and
+// The live-error self-test (see GuiTests.h): continuous rendering keeps the error readout and
 // the error overlay live with a reference traced on a worker thread (issue 15 item 6).
 #include <algorithm>
 #include <cstdio>
@@ -15,7 +15,7 @@
 #include <QTimer>
 
 #include "MainWindow.h"
-#include "SelfTests.h"
+#include "GuiTests.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
 
@@ -25,8 +25,8 @@ namespace {
 constexpr qint64 kFreshWithinMs = 60000;  ///< llvmpipe under Xvfb on a busy 2-core machine
 }
 
-bool SelfTests::liveError(const QString& dir) {
-  ViewportWidget* view = w_.viewport_;
+bool GuiTests::liveError(const QString& dir) {
+  ViewportWidget* view = w_.viewport();
   view->setFixedSize(480, 300);  // small: llvmpipe renders it quickly, Embree traces it quickly
   sl::ParamSet& shared = view->renderer()->rendererParams();
   const sl::ParamDecl* overlay = shared.find("view.overlay");
@@ -36,7 +36,7 @@ bool SelfTests::liveError(const QString& dir) {
   check(errorOverlay >= 0 && !shared.set("view.overlay", double(errorOverlay)),
         tr("the error overlay is on"));
   QCoreApplication::processEvents();
-  w_.waitForFrames(2);
+  auto_.waitForFrames(2);
 
   // Waits (rendering) until the live error is of the current view; ms taken, -1 on timeout.
   auto waitFresh = [&]() -> qint64 {
@@ -50,7 +50,7 @@ bool SelfTests::liveError(const QString& dir) {
     return -1;
   };
 
-  w_.continuousAction_->trigger();  // F6
+  w_.continuousAction()->trigger();  // F6
   check(view->continuous(), tr("F6: continuous rendering is on"));
   const std::uint64_t framesAtStart = view->framesRendered();
   const qint64 firstMs = waitFresh();
@@ -62,35 +62,40 @@ bool SelfTests::liveError(const QString& dir) {
   if (firstMs < 0) return false;
   std::printf("measure live_error_first_ms=%lld frames=%llu\n", static_cast<long long>(firstMs),
               static_cast<unsigned long long>(framesMeanwhile));
-  w_.waitForFrames(1);  // the readout and overlay follow the frame that took it
-  const QString label = w_.errorLabel_->text();
+  auto_.waitForFrames(1);  // the readout and overlay follow the frame that took it
+  const QString label = w_.errorLabel()->text();
   check(label.contains(QStringLiteral("error ")) && label.contains(QStringLiteral(" s old")) &&
-            label.contains(QStringLiteral("ago")) && w_.errorLabel_->isEnabled(),
+            label.contains(QStringLiteral("ago")) && w_.errorLabel()->isEnabled(),
         tr("the readout shows a number and the reference's age: \"%1\"").arg(label));
   if (!dir.isEmpty() && QDir().mkpath(dir))  // the window with the live readout
     w_.grab().toImage().save(QDir(dir).filePath(QStringLiteral("live-error.png")));
-  const QString note = view->errorOverlayNote();
+  const QString note = auto_.viewReadouts().errorOverlayNote;
   check(note.startsWith(QStringLiteral("reference ")) && note.contains(QStringLiteral(" s old")),
         tr("the error overlay says how old its reference is: \"%1\"").arg(note));
   const auto live = view->liveError();
   check(live && view->errorPct() && *view->errorPct() == live->errorPct,
         tr("the view's error is the live one: %1 %").arg(live ? live->errorPct : -1.0, 0, 'f', 4));
-  check(view->liveReference() && view->liveReference()->finished() >= 1 &&
-            view->liveReference()->submitted() >= view->liveReference()->finished(),
+  check(auto_.viewReadouts().liveReference && auto_.viewReadouts().liveReference->finished() >= 1 &&
+            auto_.viewReadouts().liveReference->submitted() >=
+                auto_.viewReadouts().liveReference->finished(),
         tr("traced on the worker: %1 submitted, %2 finished")
-            .arg(qulonglong(view->liveReference() ? view->liveReference()->submitted() : 0))
-            .arg(qulonglong(view->liveReference() ? view->liveReference()->finished() : 0)));
+            .arg(qulonglong(auto_.viewReadouts().liveReference
+                                ? auto_.viewReadouts().liveReference->submitted()
+                                : 0))
+            .arg(qulonglong(auto_.viewReadouts().liveReference
+                                ? auto_.viewReadouts().liveReference->finished()
+                                : 0)));
 
   // The same still frame measured synchronously: the same number (uniform keeps no state).
   const double asyncPct = live ? live->errorPct : -1.0;
-  w_.continuousAction_->trigger();  // off: the frame stays
-  w_.waitForFrames(1);
+  w_.continuousAction()->trigger();  // off: the frame stays
+  auto_.waitForFrames(1);
   const auto syncPct = view->computeErrorNow();
   check(syncPct && *syncPct == asyncPct,
         tr("the synchronous error of the same view: %1 % (live %2 %)")
             .arg(syncPct.value_or(-1), 0, 'f', 4)
             .arg(asyncPct, 0, 'f', 4));
-  w_.continuousAction_->trigger();  // on again
+  w_.continuousAction()->trigger();  // on again
   check(waitFresh() >= 0, tr("live again after F6 off and on"));
 
   // A camera move: the number shown is an earlier view's (greyed, said so), then fresh again.
@@ -110,15 +115,15 @@ bool SelfTests::liveError(const QString& dir) {
           const auto shown = split ? split : view->liveError();
           first->stale = shown && shown->age.stale;
           first->errorShown = view->errorPct().has_value();
-          first->labelEnabled = w_.errorLabel_->isEnabled();
-          first->label = w_.errorLabel_->text();
-          first->note = view->errorOverlayNote();
-          first->rightCaption = view->splitCaption(true);
+          first->labelEnabled = w_.errorLabel()->isEnabled();
+          first->label = w_.errorLabel()->text();
+          first->note = auto_.viewReadouts().errorOverlayNote;
+          first->rightCaption = auto_.viewReadouts().rightCaption;
         });
     sl::Camera moved = view->camera();
     moved.orbit(yawDeg, pitchDeg);
     view->setCamera(moved);
-    w_.waitForFrames(1);
+    auto_.waitForFrames(1);
     QObject::disconnect(c);
     return *first;
   };
@@ -146,13 +151,13 @@ bool SelfTests::liveError(const QString& dir) {
     auto busyAtAction = std::make_shared<std::optional<bool>>();
     auto queued = std::make_shared<bool>(false);
     const QMetaObject::Connection c =
-        QObject::connect(view, &ViewportWidget::frameRendered, view, [=] {
+        QObject::connect(view, &ViewportWidget::frameRendered, view, [=, this] {
           if (*queued) return;
           *queued = true;
           QMetaObject::invokeMethod(
               view,
-              [=] {
-                *busyAtAction = view->liveReference()->busy();
+              [=, this] {
+                *busyAtAction = auto_.viewReadouts().liveReference->busy();
                 action();
               },
               Qt::QueuedConnection);
@@ -176,12 +181,12 @@ bool SelfTests::liveError(const QString& dir) {
   const qint64 newSceneMs = waitFresh();
   check(newSceneMs >= 0, tr("the new scene's live error after %1 ms: \"%2\"")
                              .arg(newSceneMs)
-                             .arg(w_.errorLabel_->text()));
+                             .arg(w_.errorLabel()->text()));
 
   // The split view's right half (uniform at 512, the left at its own resolution): its own
   // live error within the time limit, its age in its caption, equal to the synchronous
   // error of the same still frame; a camera move makes it stale, then fresh again.
-  w_.teaching_->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
+  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
   auto waitSplitFresh = [&]() -> qint64 {
     QElapsedTimer splitClock;
     splitClock.start();
@@ -193,24 +198,27 @@ bool SelfTests::liveError(const QString& dir) {
     return -1;
   };
   const qint64 splitMs = waitSplitFresh();
-  check(splitMs >= 0 && view->splitLiveReference() && view->splitLiveReference()->finished() >= 1,
+  check(splitMs >= 0 && auto_.viewReadouts().splitLiveReference &&
+            auto_.viewReadouts().splitLiveReference->finished() >= 1,
         tr("split view: the right half's live error after %1 ms (%2 traces on its worker)")
             .arg(splitMs)
-            .arg(qulonglong(view->splitLiveReference() ? view->splitLiveReference()->finished()
-                                                       : 0)));
+            .arg(qulonglong(auto_.viewReadouts().splitLiveReference
+                                ? auto_.viewReadouts().splitLiveReference->finished()
+                                : 0)));
   std::printf("measure split_live_error_first_ms=%lld\n", static_cast<long long>(splitMs));
-  w_.waitForFrames(1);  // the captions follow the frame that took it
+  auto_.waitForFrames(1);  // the captions follow the frame that took it
   const auto splitLive = view->splitLiveError();
   const auto mainLive = view->liveError();
-  const QString rightCaption = view->splitCaption(true), leftCaption = view->splitCaption(false);
+  const QString rightCaption = auto_.viewReadouts().rightCaption,
+                leftCaption = auto_.viewReadouts().leftCaption;
   check(splitLive && rightCaption.contains(QStringLiteral("error ")) &&
             rightCaption.contains(QStringLiteral(" s old")) &&
             leftCaption.contains(QStringLiteral(" s old")),
         tr("the captions say each half's error and its reference's age: \"%1\" | \"%2\"")
             .arg(leftCaption, rightCaption));
   const double splitAsync = splitLive ? splitLive->errorPct : -1.0;
-  w_.continuousAction_->trigger();  // off: the frame stays
-  w_.waitForFrames(1);
+  w_.continuousAction()->trigger();  // off: the frame stays
+  auto_.waitForFrames(1);
   (void)view->computeErrorNow();  // both halves, synchronously
   const auto splitSync = view->splitErrorPct();
   check(splitSync && *splitSync == splitAsync && mainLive && splitAsync != mainLive->errorPct,
@@ -218,7 +226,7 @@ bool SelfTests::liveError(const QString& dir) {
             .arg(splitSync.value_or(-1), 0, 'f', 4)
             .arg(splitAsync, 0, 'f', 4)
             .arg(mainLive ? mainLive->errorPct : -1.0, 0, 'f', 4));
-  w_.continuousAction_->trigger();  // on again: traced afresh (F6 off forgot the traces)
+  w_.continuousAction()->trigger();  // on again: traced afresh (F6 off forgot the traces)
   check(waitSplitFresh() >= 0, tr("the right half live again after F6 off and on"));
   const FirstFrame splitMoved = moveAndReadFirstFrame(15.0f, 0.0f);
   check(splitMoved.seen && splitMoved.stale &&
@@ -229,7 +237,7 @@ bool SelfTests::liveError(const QString& dir) {
   check(splitAgainMs >= 0, tr("the right half fresh again %1 ms after the move").arg(splitAgainMs));
   if (!dir.isEmpty())
     view->grabView().save(QDir(dir).filePath(QStringLiteral("live-error-split.png")));
-  w_.teaching_->setSplitTechnique(QString());
+  w_.teaching()->setSplitTechnique(QString());
 
   // Leave right after a move (a trace possibly running): the window closes (a running trace is
   // cancelled and joined), exit 0.
@@ -241,21 +249,22 @@ bool SelfTests::liveError(const QString& dir) {
 
 namespace sl::ui {
 
-bool SelfTests::adaptiveResolution(const QString& dir) {
-  ViewportWidget* view = w_.viewport_;
+bool GuiTests::adaptiveResolution(const QString& dir) {
+  ViewportWidget* view = w_.viewport();
   const QSize size(480, 300);
   view->setFixedSize(size);
   QCoreApplication::processEvents();
-  w_.waitForFrames(1, 300000);
-  check(view->internalDivisor() == 1 && view->renderer()->stats().width == size.width(),
-        tr("scripted runs render at full size: %1 px wide").arg(view->renderer()->stats().width));
+  auto_.waitForFrames(1, 300000);
+  check(
+      auto_.viewReadouts().internalDivisor == 1 && view->renderer()->stats().width == size.width(),
+      tr("scripted runs render at full size: %1 px wide").arg(view->renderer()->stats().width));
   sl::ParamSet& shared = view->renderer()->rendererParams();
   check(!shared.getBool("view.adaptive") && shared.getInt("view.adaptive.budget_ms") == 250,
         tr("declared: view.adaptive off by default, budget 250 ms"));
   check(!shared.set("view.adaptive", 1.0), tr("view.adaptive on"));
   view->setAdaptiveAllowed(true);  // as in an interactive window
-  w_.waitForFrames(1, 300000);     // a full-size frame of the slow technique
-  const double slowMs = view->lastFrameMs();
+  auto_.waitForFrames(1, 300000);  // a full-size frame of the slow technique
+  const double slowMs = auto_.viewReadouts().lastFrameMs;
   std::printf("measure full_size_frame_ms=%.0f\n", slowMs);
   check(slowMs > 250.0, tr("%1 at %2x%3: a frame takes %4 ms (over the budget)")
                             .arg(QString::fromStdString(view->techniqueId()))
@@ -266,12 +275,12 @@ bool SelfTests::adaptiveResolution(const QString& dir) {
   int smallestWidth = size.width();
   for (int i = 0; i < 3; ++i) {
     view->update();
-    w_.waitForFrames(1, 300000);
+    auto_.waitForFrames(1, 300000);
     smallestWidth = std::min(smallestWidth, view->renderer()->stats().width);
-    check(view->internalDivisor() <= 2,
-          tr("never below half size: divisor %1").arg(view->internalDivisor()));
+    check(auto_.viewReadouts().internalDivisor <= 2,
+          tr("never below half size: divisor %1").arg(auto_.viewReadouts().internalDivisor));
   }
-  const int divisor = view->internalDivisor();
+  const int divisor = auto_.viewReadouts().internalDivisor;
   const sl::FrameStats& st = view->renderer()->stats();
   check(divisor == 2 && st.width == size.width() / 2 && st.height == size.height() / 2 &&
             smallestWidth == size.width() / 2,
@@ -288,7 +297,8 @@ bool SelfTests::adaptiveResolution(const QString& dir) {
   check(m.hasMatch() && m.captured(1).toInt() == st.width && m.captured(2).toInt() == st.height &&
             m.captured(3).toInt() > 250,
         tr("the view says so: \"%1\"").arg(note));
-  std::printf("measure reduced_frame_ms=%.0f divisor=%d\n", view->lastFrameMs(), divisor);
+  std::printf("measure reduced_frame_ms=%.0f divisor=%d\n", auto_.viewReadouts().lastFrameMs,
+              divisor);
   const QImage shown = view->grabView();
   if (!dir.isEmpty() && QDir().mkpath(dir))
     shown.save(QDir(dir).filePath(QStringLiteral("adaptive-resolution.png")));
@@ -301,38 +311,88 @@ bool SelfTests::adaptiveResolution(const QString& dir) {
         tr("an export is at full size: %1x%2")
             .arg(cells.empty() ? 0 : cells.front().shaded.width)
             .arg(cells.empty() ? 0 : cells.front().shaded.height));
+  // A grab (Automation::grabView, as File > Save viewport image) of a reduced view renders it
+  // at full size for the image.
+  view->update();
+  auto_.waitForFrames(1, 300000);
+  check(auto_.viewReadouts().internalDivisor == 2,
+        tr("reduced again: divisor %1").arg(auto_.viewReadouts().internalDivisor));
+  const QImage grabbed = auto_.grabView();
+  check(view->renderer()->stats().width == size.width() &&
+            grabbed.size() == size * view->devicePixelRatioF() &&
+            auto_.viewReadouts().internalDivisor == 1,
+        tr("a grab of the reduced view renders it at full size: the renderer drew %1 px wide")
+            .arg(view->renderer()->stats().width));
+  // Reduced again (the grab's frame reset the state: a slow full-size frame drops it, the next
+  // is at half size), so that the still view's redraw and the recovery below start reduced.
+  for (int i = 0; i < 4 && auto_.viewReadouts().internalDivisor != 2; ++i) {
+    view->update();
+    auto_.waitForFrames(1, 300000);
+  }
+  check(auto_.viewReadouts().internalDivisor == 2 && auto_.viewReadouts().adaptiveDivisor == 2,
+        tr("reduced again before the still view's redraw: divisor %1")
+            .arg(auto_.viewReadouts().internalDivisor));
   // A still view is redrawn at full size (the settle frame) without any input.
   QElapsedTimer settle;
   settle.start();
-  while (view->internalDivisor() != 1 && settle.elapsed() < 300000) w_.waitForFrames(1, 300000);
-  check(view->internalDivisor() == 1 && view->renderer()->stats().width == size.width(),
-        tr("the still view was redrawn at full size (%1 px wide)")
-            .arg(view->renderer()->stats().width));
+  // Only events, no requested frames: a requested frame would keep the view busy (not still).
+  while (auto_.viewReadouts().internalDivisor != 1 && settle.elapsed() < 120000)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+  check(
+      auto_.viewReadouts().internalDivisor == 1 && view->renderer()->stats().width == size.width(),
+      tr("the still view was redrawn at full size (%1 px wide)")
+          .arg(view->renderer()->stats().width));
 
   // Recovery: a fast technique returns to full size within one second of its frames.
   check(!view->setTechnique("uniform") && !shared.set("view.adaptive.budget_ms", 10000.0),
         tr("uniform, budget 10 s: fast frames"));
   QElapsedTimer recovery;
   recovery.start();
-  while ((view->adaptiveDivisor() > 1 || view->internalDivisor() > 1) &&
+  while ((auto_.viewReadouts().adaptiveDivisor > 1 || auto_.viewReadouts().internalDivisor > 1) &&
          recovery.elapsed() < 5000) {
     view->update();
-    w_.waitForFrames(1, 300000);
+    auto_.waitForFrames(1, 300000);
   }
   const qint64 recoveredMs = recovery.elapsed();
   std::printf("measure recovery_ms=%lld\n", static_cast<long long>(recoveredMs));
-  check(view->adaptiveDivisor() == 1 && view->internalDivisor() == 1 &&
+  check(auto_.viewReadouts().adaptiveDivisor == 1 && auto_.viewReadouts().internalDivisor == 1 &&
             view->resolutionNote().isEmpty() && recoveredMs < 1000,
         tr("back to full size, no note, in %1 ms (within one second): divisor %2")
             .arg(recoveredMs)
-            .arg(view->adaptiveDivisor()));
+            .arg(auto_.viewReadouts().adaptiveDivisor));
   // Off: full size whatever the frame time.
   check(!shared.set("view.adaptive.budget_ms", 20.0) && !shared.set("view.adaptive", 0.0),
         tr("budget 20 ms, view.adaptive off"));
   view->update();
-  w_.waitForFrames(2, 300000);
-  check(view->internalDivisor() == 1 && view->renderer()->stats().width == size.width(),
-        tr("view.adaptive off: full size (%1 px wide)").arg(view->renderer()->stats().width));
+  auto_.waitForFrames(2, 300000);
+  check(
+      auto_.viewReadouts().internalDivisor == 1 && view->renderer()->stats().width == size.width(),
+      tr("view.adaptive off: full size (%1 px wide)").arg(view->renderer()->stats().width));
+
+  // Never in presenter mode, the split view's comparison or a lesson: on and allowed, each of
+  // them turns it off (presenter mode and the split view until they end, a lesson for good).
+  check(!shared.set("view.adaptive", 1.0) && view->adaptiveActive(),
+        tr("view.adaptive on again: adaptive resolution active"));
+  w_.setPresenterMode(true);
+  auto_.waitForFrames(1, 300000);
+  check(!view->adaptiveActive(), tr("presenter mode: adaptive resolution not used"));
+  w_.setPresenterMode(false);
+  auto_.waitForFrames(1, 300000);
+  check(view->adaptiveActive(), tr("presenter mode off: active again"));
+  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"));
+  auto_.waitForFrames(1, 300000);
+  check(!view->adaptiveActive(), tr("split view: adaptive resolution not used"));
+  w_.teaching()->setSplitTechnique(QString());
+  auto_.waitForFrames(1, 300000);
+  check(view->adaptiveActive(), tr("split view off: active again"));
+  check(auto_.openLesson(QStringLiteral("1")) && auto_.waitForSettled(300000),
+        tr("lesson 1 opened and settled"));
+  sl::ParamSet& lessonShared = view->renderer()->rendererParams();
+  check(!lessonShared.set("view.adaptive", 1.0) && !view->adaptiveActive(),
+        tr("a lesson: adaptive resolution not used, view.adaptive on or not"));
+  auto_.waitForFrames(2, 300000);
+  check(auto_.viewReadouts().internalDivisor == 1 && auto_.resolutionNote().isEmpty(),
+        tr("a lesson's frames are full size, no resolution note"));
   return true;
 }
 
@@ -353,8 +413,8 @@ constexpr qint64 kNoFreezeMeasureMs = 20000;    ///< the heartbeat is watched at
 constexpr qint64 kNoFreezeCompleteMs = 300000;  ///< a complete frame within (llvmpipe, loaded)
 }  // namespace
 
-bool SelfTests::noFreeze(const QString& dir) {
-  ViewportWidget* view = w_.viewport_;
+bool GuiTests::noFreeze(const QString& dir) {
+  ViewportWidget* view = w_.viewport();
   const QSize size(480, 300);
   view->setFixedSize(size);
   QCoreApplication::processEvents();
@@ -382,14 +442,14 @@ bool SelfTests::noFreeze(const QString& dir) {
   int maxFrameTiles = 0;
   const QMetaObject::Connection frameWatch =
       QObject::connect(view, &ViewportWidget::frameRendered, [&] {
-        if (view->lastFrameMs() <= maxFrameMs) return;
-        maxFrameMs = view->lastFrameMs();
-        const auto& p = view->frameProgress();
+        if (auto_.viewReadouts().lastFrameMs <= maxFrameMs) return;
+        maxFrameMs = auto_.viewReadouts().lastFrameMs;
+        const auto& p = auto_.viewReadouts().progress;
         maxFrameTilesMs = p ? p->spentMs : 0.0;
         maxFrameTiles = p ? p->done / p->unitsPerTile : 0;  // tiles reached (not this frame's)
       });
   beat.start();
-  w_.continuousAction_->trigger();  // F6
+  w_.continuousAction()->trigger();  // F6
   check(view->continuous(), tr("F6: continuous rendering is on"));
   const std::uint64_t framesAtStart = view->framesRendered();
   QString partialNote;
@@ -398,7 +458,7 @@ bool SelfTests::noFreeze(const QString& dir) {
   while (clock.elapsed() < kNoFreezeCompleteMs &&
          (completeMs < 0 || clock.elapsed() < kNoFreezeMeasureMs)) {
     QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-    const auto& progress = view->frameProgress();
+    const auto& progress = auto_.viewReadouts().progress;
     if (!progress) continue;
     total = progress->total / progress->unitsPerTile;
     bands = progress->unitsPerTile;
@@ -466,11 +526,11 @@ bool SelfTests::noFreeze(const QString& dir) {
     view->grabView().save(QDir(dir).filePath(QStringLiteral("no-freeze-complete.png")));
 
   // The same view resolved in one call, as the CLI renders it: the same pixels and error.
-  w_.continuousAction_->trigger();                 // off: on demand, one call per frame
+  w_.continuousAction()->trigger();                // off: on demand, one call per frame
   const QImage oneShot = view->grabFramebuffer();  // renders the frame it grabs
-  check(!view->frameProgress(), tr("continuous off: frames resolve in one call"));
+  check(!auto_.viewReadouts().progress, tr("continuous off: frames resolve in one call"));
   const auto syncPct = view->computeErrorNow();
-  std::printf("measure one_shot_frame_ms=%.0f\n", view->lastFrameMs());
+  std::printf("measure one_shot_frame_ms=%.0f\n", auto_.viewReadouts().lastFrameMs);
   check(progressive == oneShot, tr("the complete progressive frame equals the one-call frame, "
                                    "pixel for pixel (%1x%2)")
                                     .arg(oneShot.width())

@@ -1,4 +1,4 @@
-// The lesson-claims self-test (see SelfTests.h): every lesson opened fresh through the Lessons
+// The lesson-claims self-test (see GuiTests.h): every lesson opened fresh through the Lessons
 // menu's path (LessonController::apply), its layout checked, and the lessons that state a claim
 // in numbers measured: the numbers are read from the lesson's own text, so that the text says
 // exactly what this test checks.
@@ -22,7 +22,7 @@
 #include "MainWindow.h"
 #include "PresenterMode.h"
 #include "PublicationDocks.h"
-#include "SelfTests.h"
+#include "GuiTests.h"
 #include "ViewportWidget.h"
 #include "panels/common/PanelKit.h"
 #include "panels/rtw/CovariancePanel.h"
@@ -52,31 +52,31 @@ bool covered(const sl::FrameReadback& f, std::size_t i) {
 }
 }  // namespace
 
-sl::Renderer::ErrorResult SelfTests::measureView() {
-  w_.viewport_->makeCurrent();
-  sl::Renderer::ErrorResult e = w_.viewport_->renderer()->computeError();
-  w_.viewport_->doneCurrent();
+sl::Renderer::ErrorResult GuiTests::measureView() {
+  w_.viewport()->makeCurrent();
+  sl::Renderer::ErrorResult e = w_.viewport()->renderer()->computeError();
+  w_.viewport()->doneCurrent();
   return e;
 }
 
-bool SelfTests::lessonClaims(const QString& dir) {
+bool GuiTests::lessonClaims(const QString& dir) {
   // The lesson the app was started with (--lesson), as a student opens it: a fresh process,
   // the window's own start-up, the lesson settled before this runs.
-  const int index = w_.lessons_->index();
+  const int index = w_.lessons()->index();
   check(index >= 0, tr("started with --lesson"));
   if (index < 0) return false;
-  const Lesson& lesson = w_.lessons_->lessons()[static_cast<std::size_t>(index)];
+  const Lesson& lesson = w_.lessons()->lessons()[static_cast<std::size_t>(index)];
   const QString name = QFileInfo(lesson.path).completeBaseName();
   const sl::Preset& p = lesson.preset;
   const QString text = QString::fromStdString(p.explanation);
   std::printf("---- lesson %d: %s\n", index + 1, qPrintable(name));
   std::fflush(stdout);
-  check(w_.viewport_->techniqueId() == p.technique && !w_.lessons_->settling(),
+  check(w_.viewport()->techniqueId() == p.technique && !w_.lessons()->settling(),
         tr("opens with %1 on %2, its temporal state settled or none (%3 settling frames)")
-            .arg(QString::fromStdString(w_.viewport_->techniqueId()), w_.sceneSpec_)
-            .arg(w_.lessons_->settleFrames()));
-  std::printf("     window %dx%d, view %dx%d\n", w_.width(), w_.height(), w_.viewport_->width(),
-              w_.viewport_->height());
+            .arg(QString::fromStdString(w_.viewport()->techniqueId()), w_.sceneSpec())
+            .arg(w_.lessons()->settleFrames()));
+  std::printf("     window %dx%d, view %dx%d\n", w_.width(), w_.height(), w_.viewport()->width(),
+              w_.viewport()->height());
   if (!dir.isEmpty() && QDir().mkpath(dir))
     w_.grab().toImage().save(QDir(dir).filePath(name + QStringLiteral(".png")));
   if (p.layout) lessonLayout(*p.layout);
@@ -109,7 +109,7 @@ bool SelfTests::lessonClaims(const QString& dir) {
   return true;
 }
 
-void SelfTests::lessonLayout(const sl::PresetLayout& layout) {
+void GuiTests::lessonLayout(const sl::PresetLayout& layout) {
   QCoreApplication::processEvents();
   QDockWidget* big = layout.large.empty()
                          ? nullptr
@@ -121,7 +121,7 @@ void SelfTests::lessonLayout(const sl::PresetLayout& layout) {
     // Presenter mode tabs Lesson and Parameters behind the big panel
     // (docs/user-guide/presenter.md): there only as a tab, not on screen.
     const bool tabBehind =
-        w_.presenter_->active() && behind.contains(dock) && dock->visibleRegion().isEmpty();
+        w_.presenter()->active() && behind.contains(dock) && dock->visibleRegion().isEmpty();
     if (!listed && dock->isVisible() && !tabBehind)
       check(false, tr("dock %1 is hidden").arg(dock->objectName()));
   }
@@ -139,7 +139,7 @@ void SelfTests::lessonLayout(const sl::PresetLayout& layout) {
             .arg(vertical ? tr("height") : tr("width")));
 }
 
-void SelfTests::claimPerspective(const QString& text) {
+void GuiTests::claimPerspective(const QString& text) {
   const double bandPct =
       stated(text, QStringLiteral("at least (\\d+) % of the floor and pillar pixels fall in each"));
   const double hi = stated(text, QStringLiteral("three bands m > (\\d+),"));
@@ -221,13 +221,13 @@ void SelfTests::claimPerspective(const QString& text) {
             .arg(edgePct));
 }
 
-void SelfTests::claimProjective(const QString& text) {
+void GuiTests::claimProjective(const QString& text) {
   const double ratio = stated(text, QStringLiteral("at least (\\d+(?:\\.\\d+)?) times"));
   const double high = stated(text, QStringLiteral("raise the sun to (\\d+)°"));
   check(std::isfinite(ratio) && std::isfinite(high), tr("the text states the ratio and the sun"));
   // The floor 5-30 m from the camera: its median m at the lesson's low sun, then with only
   // the sun's elevation changed.
-  const glm::vec3 eye = w_.viewport_->camera().position;
+  const glm::vec3 eye = w_.viewport()->camera().position;
   auto floorMedian = [&]() {
     const sl::Renderer::ErrorResult e = measureView();
     const sl::FrameReadback& f = e.frame;
@@ -239,15 +239,15 @@ void SelfTests::claimProjective(const QString& text) {
     }
     return std::pair{median(m), m.size()};
   };
-  const sl::Light low = w_.viewport_->light();
+  const sl::Light low = w_.viewport()->light();
   const auto [lowM, lowN] = floorMedian();
   sl::Light raised = low;
   raised.elevationDeg = float(high);
-  w_.viewport_->setLight(raised);
-  w_.waitForFrames(2);
+  w_.viewport()->setLight(raised);
+  auto_.waitForFrames(2);
   const auto [highM, highN] = floorMedian();
-  w_.viewport_->setLight(low);
-  w_.waitForFrames(1);
+  w_.viewport()->setLight(low);
+  auto_.waitForFrames(1);
   check(lowN > 1000 && highN > 1000 && lowM >= ratio * highM,
         tr("the floor 5-30 m away: median m %1 with the sun at %2°, %3 at %4°: %5x (at least %6x)")
             .arg(lowM, 0, 'f', 2)
@@ -258,16 +258,16 @@ void SelfTests::claimProjective(const QString& text) {
             .arg(ratio));
 }
 
-void SelfTests::claimTessellation(const QString& text) {
+void GuiTests::claimTessellation(const QString& text) {
   const double ratio =
       stated(text, QStringLiteral("without tessellation is at least (\\d+) times"));
   check(std::isfinite(ratio), tr("the text states the ratio"));
-  sl::Renderer* r = w_.viewport_->renderer();
-  const auto off = w_.viewport_->computeErrorNow();
+  sl::Renderer* r = w_.viewport()->renderer();
+  const auto off = w_.viewport()->computeErrorNow();
   if (auto e = r->params().setFromString("tessellation", "on"))
     check(false, QString::fromStdString(*e));
-  w_.waitForFrames(2);
-  const auto on = w_.viewport_->computeErrorNow();
+  auto_.waitForFrames(2);
+  const auto on = w_.viewport()->computeErrorNow();
   check(off && on && *off >= ratio * *on,
         tr("error %1 % without tessellation, %2 % with it: %3x (at least %4x)")
             .arg(off.value_or(-1), 0, 'f', 2)
@@ -276,46 +276,46 @@ void SelfTests::claimTessellation(const QString& text) {
             .arg(ratio));
 }
 
-void SelfTests::claimRtw() {
-  w_.waitForFrames(2);
-  const auto main = w_.viewport_->computeErrorNow();
-  w_.waitForFrames(1);
-  const auto split = w_.viewport_->splitErrorPct();
-  sl::Renderer* r = w_.viewport_->renderer();
-  check(w_.viewport_->splitTechnique() == "uniform" && main && split && *main < *split,
+void GuiTests::claimRtw() {
+  auto_.waitForFrames(2);
+  const auto main = w_.viewport()->computeErrorNow();
+  auto_.waitForFrames(1);
+  const auto split = w_.viewport()->splitErrorPct();
+  sl::Renderer* r = w_.viewport()->renderer();
+  check(w_.viewport()->splitTechnique() == "uniform" && main && split && *main < *split,
         tr("%1 at %2 x %2 texels: %3 % error; %4 at %5 x %5: %6 %")
-            .arg(QString::fromStdString(w_.viewport_->techniqueId()))
+            .arg(QString::fromStdString(w_.viewport()->techniqueId()))
             .arg(r->params().getInt("resolution"))
             .arg(main.value_or(-1), 0, 'f', 3)
-            .arg(QString::fromStdString(w_.viewport_->splitTechnique()))
-            .arg(QString::fromStdString(w_.viewport_->splitParams().count("resolution")
-                                            ? w_.viewport_->splitParams().at("resolution")
+            .arg(QString::fromStdString(w_.viewport()->splitTechnique()))
+            .arg(QString::fromStdString(w_.viewport()->splitParams().count("resolution")
+                                            ? w_.viewport()->splitParams().at("resolution")
                                             : "default"))
             .arg(split.value_or(-1), 0, 'f', 3));
 }
 
-void SelfTests::claimPca(int lessonIndex) {
-  const sl::Preset& lesson = w_.lessons_->lessons()[static_cast<std::size_t>(lessonIndex)].preset;
+void GuiTests::claimPca(int lessonIndex) {
+  const sl::Preset& lesson = w_.lessons()->lessons()[static_cast<std::size_t>(lessonIndex)].preset;
   check(lesson.cases.size() == 2,
         tr("the lesson is told in two cases (rotation wins; it does not): %1")
             .arg(lesson.cases.size()));
   for (std::size_t k = 0; k < lesson.cases.size(); ++k) {
     // The first case is the one the lesson opens with; the next as Ctrl+Shift+N applies it.
-    if (k > 0) w_.lessons_->nextCase();
-    check(w_.lessons_->caseIndex() == int(k) && !w_.lessons_->settling(),
+    if (k > 0) w_.lessons()->nextCase();
+    check(w_.lessons()->caseIndex() == int(k) && !w_.lessons()->settling(),
           tr("case %1 applied and settled").arg(k + 1));
     claimPcaCase(lesson.cases[k], int(k) + 1);
   }
 }
 
-void SelfTests::checkCovarianceReadouts(const QString& where) {
+void GuiTests::checkCovarianceReadouts(const QString& where) {
   PublicationPanel* covariance = nullptr;
-  for (const PublicationDocks::Dock& d : w_.docks_.docks())
+  for (const PublicationDocks::Dock& d : w_.docks().docks())
     if (d.entry.id == QLatin1String("covariance")) covariance = d.panel;
-  sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport()->renderer();
   auto drawn = [covariance] { return covariance ? covariance->drawnValues() : QJsonObject(); };
   if (drawn().value(QStringLiteral("frame")).toDouble(-1) != double(r->publication().frameIndex))
-    w_.waitForFrames(1);  // the panel shows the frame the window drew last
+    auto_.waitForFrames(1);  // the panel shows the frame the window drew last
   const QStringList problems = CovariancePanel::readoutProblems(drawn(), r->publication());
   check(covariance && problems.isEmpty(),
         tr("%1: every Covariance readout agrees with the renderer's publication%2")
@@ -324,23 +324,23 @@ void SelfTests::checkCovarianceReadouts(const QString& where) {
                             : QStringLiteral(": ") + problems.join(QStringLiteral("; "))));
 }
 
-void SelfTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
+void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
   const QString text = QString::fromStdString(c.explanation);
   std::printf("     case %d: %s\n", caseNumber, c.title.c_str());
   const double angle = stated(text, QStringLiteral("settles at ([\\x{2212}-]?\\d+(?:\\.\\d+)?)°"));
   check(std::isfinite(angle), tr("case %1: the text states the settled angle").arg(caseNumber));
-  sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport()->renderer();
   const sl::Publication& pub = r->publication();
   const double got = rtwsettle::angleDeg(pub).value_or(std::nan(""));
-  check(w_.lessons_->settled() && std::abs(got - angle) <= 2.0,
+  check(w_.lessons()->settled() && std::abs(got - angle) <= 2.0,
         tr("case %1: R settles at %2° within %3 frames (stated %4° ± 2°)")
             .arg(caseNumber)
             .arg(got, 0, 'f', 2)
-            .arg(w_.lessons_->settleFrames())
+            .arg(w_.lessons()->settleFrames())
             .arg(angle));
   std::printf("metric rotation_deg=%.3f\n", got);
   PublicationPanel* covariance = nullptr;
-  for (const PublicationDocks::Dock& d : w_.docks_.docks())
+  for (const PublicationDocks::Dock& d : w_.docks().docks())
     if (d.entry.id == QLatin1String("covariance")) covariance = d.panel;
   // Complete when it opens: the panel already shows the settled state (axis along x).
   const QJsonObject drawn = covariance ? covariance->drawnValues() : QJsonObject();
@@ -349,21 +349,21 @@ void SelfTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
   checkCovarianceReadouts(tr("case %1").arg(caseNumber));
 
   // The split view at the same texels: DA-RTW on the left, rtw-backward on the right.
-  w_.waitForFrames(2);
-  const auto main = w_.viewport_->computeErrorNow();
-  w_.waitForFrames(1);
-  const auto split = w_.viewport_->splitErrorPct();
-  const auto splitParams = w_.viewport_->splitParams();
+  auto_.waitForFrames(2);
+  const auto main = w_.viewport()->computeErrorNow();
+  auto_.waitForFrames(1);
+  const auto split = w_.viewport()->splitErrorPct();
+  const auto splitParams = w_.viewport()->splitParams();
   const QString splitRes = QString::fromStdString(
       splitParams.count("resolution") ? splitParams.at("resolution") : std::string("default"));
   const int mainRes = r->params().getInt("resolution");
-  check(w_.viewport_->splitTechnique() == "rtw-backward" && splitRes.toInt() == mainRes,
+  check(w_.viewport()->splitTechnique() == "rtw-backward" && splitRes.toInt() == mainRes,
         tr("case %1: the split view compares rtw-backward at the same %2 x %2 texels (right: %3)")
             .arg(caseNumber)
             .arg(mainRes)
             .arg(splitRes));
   const QString halves = tr("left (%1) %2 %, right (rtw-backward) %3 %")
-                             .arg(QString::fromStdString(w_.viewport_->techniqueId()))
+                             .arg(QString::fromStdString(w_.viewport()->techniqueId()))
                              .arg(main.value_or(-1), 0, 'f', 3)
                              .arg(split.value_or(-1), 0, 'f', 3);
   const double atMost = stated(
@@ -397,18 +397,18 @@ void SelfTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
   }
 }
 
-void SelfTests::claimVibration(const QString& text) {
+void GuiTests::claimVibration(const QString& text) {
   const double pixels = stated(text, QStringLiteral("at least (\\d+) pixels change"));
   const double threshold = stated(text, QStringLiteral("the threshold is (\\d\\.\\d+)"));
   check(std::isfinite(pixels) && std::isfinite(threshold),
         tr("the text states the changed pixels and the threshold"));
-  sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport()->renderer();
   check(std::abs(r->params().get(rtwsettle::kThresholdKey) - threshold) < 1e-9,
         tr("%1 is %2")
             .arg(QLatin1String(rtwsettle::kThresholdKey))
             .arg(r->params().get(rtwsettle::kThresholdKey)));
   PublicationPanel* covariance = nullptr;
-  for (const PublicationDocks::Dock& d : w_.docks_.docks())
+  for (const PublicationDocks::Dock& d : w_.docks().docks())
     if (d.entry.id == QLatin1String("covariance")) covariance = d.panel;
   const QString shown =
       covariance ? covariance->drawnValues().value(QStringLiteral("threshold_shown")).toString()
@@ -417,15 +417,15 @@ void SelfTests::claimVibration(const QString& text) {
         tr("the gauge shows the threshold %1 (text: %2)").arg(shown).arg(threshold));
   // Changed pixels of the hard mask from one frame to the next, the view and camera still.
   auto changedPerFrame = [&](int frames) {
-    w_.viewport_->makeCurrent();
+    w_.viewport()->makeCurrent();
     std::vector<std::uint8_t> last = r->readback().hardMask;
-    w_.viewport_->doneCurrent();
+    w_.viewport()->doneCurrent();
     std::vector<std::size_t> counts;
     for (int k = 0; k < frames; ++k) {
-      w_.waitForFrames(1);
-      w_.viewport_->makeCurrent();
+      auto_.waitForFrames(1);
+      w_.viewport()->makeCurrent();
       std::vector<std::uint8_t> now = r->readback().hardMask;
-      w_.viewport_->doneCurrent();
+      w_.viewport()->doneCurrent();
       std::size_t c = 0;
       for (std::size_t i = 0; i < std::min(now.size(), last.size()); ++i) c += now[i] != last[i];
       counts.push_back(c);
@@ -460,7 +460,7 @@ void SelfTests::claimVibration(const QString& text) {
   // The fix the text suggests: 0.9999 holds R, and nothing changes.
   if (auto e = r->params().setFromString(rtwsettle::kThresholdKey, "0.9999"))
     check(false, QString::fromStdString(*e));
-  w_.waitForFrames(3);
+  auto_.waitForFrames(3);
   const std::vector<std::size_t> held = changedPerFrame(3);
   check(std::all_of(held.begin(), held.end(), [](std::size_t c) { return c == 0; }),
         tr("threshold 0.9999: %1 pixels change per frame").arg(list(held)));
@@ -468,7 +468,7 @@ void SelfTests::claimVibration(const QString& text) {
 
 // --- Lessons 5 and 8-12 ------------------------------------------------------------------
 
-SelfTests::LessonNumbers SelfTests::measureLesson() {
+GuiTests::LessonNumbers GuiTests::measureLesson() {
   const sl::Renderer::ErrorResult e = measureView();
   std::vector<float> ms;
   for (std::size_t i = 0; i < e.frame.aliasing.size(); ++i)
@@ -481,43 +481,43 @@ SelfTests::LessonNumbers SelfTests::measureLesson() {
     std::nth_element(ms.begin(), ms.begin() + k, ms.end());
     n.mP95 = double(ms[std::size_t(k)]);
   }
-  const sl::FrameStats& s = w_.viewport_->renderer()->stats();
+  const sl::FrameStats& s = w_.viewport()->renderer()->stats();
   n.bytes = s.memory.bytes();
   n.frameMs = s.totalMs;
   std::printf("     %s: error %.3f %%, m p95 %.2f, %.2f MiB, %.0f ms (view %dx%d)\n",
-              w_.viewport_->techniqueId().c_str(), n.errorPct, n.mP95,
+              w_.viewport()->techniqueId().c_str(), n.errorPct, n.mP95,
               double(n.bytes) / (1024.0 * 1024.0), n.frameMs, e.frame.width, e.frame.height);
   std::fflush(stdout);
   return n;
 }
 
-void SelfTests::lessonSet(const char* key, const QString& value, int frames) {
-  if (auto e = w_.viewport_->renderer()->params().setFromString(key, value.toStdString()))
+void GuiTests::lessonSet(const char* key, const QString& value, int frames) {
+  if (auto e = w_.viewport()->renderer()->params().setFromString(key, value.toStdString()))
     check(false, QString::fromStdString(*e));
-  check(w_.waitForFrames(frames), tr("%1 frames after %2 = %3").arg(frames).arg(key, value));
+  check(auto_.waitForFrames(frames), tr("%1 frames after %2 = %3").arg(frames).arg(key, value));
 }
 
-void SelfTests::lessonSwitch(const QString& technique,
-                             const std::vector<std::pair<const char*, QString>>& params, int frames,
-                             int timeoutMs) {
+void GuiTests::lessonSwitch(const QString& technique,
+                            const std::vector<std::pair<const char*, QString>>& params, int frames,
+                            int timeoutMs) {
   w_.setTechnique(technique);
-  check(w_.viewport_->techniqueId() == technique.toStdString(),
+  check(w_.viewport()->techniqueId() == technique.toStdString(),
         tr("the technique is now %1").arg(technique));
   for (const auto& [key, value] : params)
-    if (auto e = w_.viewport_->renderer()->params().setFromString(key, value.toStdString()))
+    if (auto e = w_.viewport()->renderer()->params().setFromString(key, value.toStdString()))
       check(false, QString::fromStdString(*e));
-  check(w_.waitForFrames(frames, timeoutMs),
+  check(auto_.waitForFrames(frames, timeoutMs),
         tr("%1 renders %2 frames within %3 s").arg(technique).arg(frames).arg(timeoutMs / 1000));
 }
 
-void SelfTests::claimForwardBackward(const QString& text) {
+void GuiTests::claimForwardBackward(const QString& text) {
   const double ratio = stated(
       text, QStringLiteral("importance to at least (\\d+(?:\\.\\d+)?) times as many of the light"));
   const double sameWithin =
       stated(text, QStringLiteral("the errors stay within (\\d+) % of each other"));
   check(std::isfinite(ratio) && std::isfinite(sameWithin),
         tr("the text states the ratio of the texels given importance and the errors' difference"));
-  sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport()->renderer();
   const QString resolution = QString::number(r->params().getInt("resolution"));
   const auto forwardIm = rtwsettle::importanceCoverage(r->publication());
   const LessonNumbers forward = measureLesson();
@@ -545,7 +545,7 @@ void SelfTests::claimForwardBackward(const QString& text) {
             .arg(sameWithin));
 }
 
-void SelfTests::claimPerspectiveWarp(const QString& text) {
+void GuiTests::claimPerspectiveWarp(const QString& text) {
   const double errRatio =
       stated(text, QStringLiteral("the error falls at least (\\d+(?:\\.\\d+)?) times"));
   const double mRatio =
@@ -576,13 +576,13 @@ void SelfTests::claimPerspectiveWarp(const QString& text) {
             .arg(psm.mP95, 0, 'f', 1));
 }
 
-void SelfTests::claimDuelingFrusta(const QString& text) {
+void GuiTests::claimDuelingFrusta(const QString& text) {
   const double side = stated(text, QStringLiteral("against one of (\\d+)²"));
   const double factor =
       stated(text, QStringLiteral("error is at most (\\d+(?:\\.\\d+)?) times theirs"));
   check(std::isfinite(side) && std::isfinite(factor),
         tr("the text states the equal-texel map and the factor"));
-  sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport()->renderer();
   const int res = r->params().getInt("resolution");
   const LessonNumbers faces = measureLesson();
   const std::uint64_t faceTexels = faces.bytes / 4;
@@ -611,7 +611,7 @@ void SelfTests::claimDuelingFrusta(const QString& text) {
             .arg(uniform.errorPct, 0, 'f', 3));
 }
 
-void SelfTests::claimCascades(const QString& text) {
+void GuiTests::claimCascades(const QString& text) {
   const double last = stated(text, QStringLiteral("maps 0 to (\\d+) have m p95 within"));
   const double spread =
       stated(text, QStringLiteral("m p95 within a factor (\\d+(?:\\.\\d+)?) of each other"));
@@ -619,7 +619,7 @@ void SelfTests::claimCascades(const QString& text) {
       stated(text, QStringLiteral("map 0's m p95 falls at least (\\d+(?:\\.\\d+)?) times"));
   check(std::isfinite(last) && std::isfinite(spread) && std::isfinite(drop),
         tr("the text states the log split's spread and map 0's fall"));
-  sl::Renderer* r = w_.viewport_->renderer();
+  sl::Renderer* r = w_.viewport()->renderer();
   const int k = r->params().getInt("partitions");
   // Each map's m p95 over the pixels that selected it, as the Partitions panel shows it.
   auto perMap = [&]() {
@@ -638,7 +638,7 @@ void SelfTests::claimCascades(const QString& text) {
     for (double x : v) s << (std::isfinite(x) ? QString::number(x, 'f', 1) : QStringLiteral("-"));
     return s.join(QStringLiteral(", "));
   };
-  w_.waitForFrames(2);
+  auto_.waitForFrames(2);
   const std::vector<double> uniform = perMap();
   const LessonNumbers uniformN = measureLesson();
   lessonSet("split", QStringLiteral("log"), 3);
@@ -669,7 +669,7 @@ void SelfTests::claimCascades(const QString& text) {
                                                .arg(logN.errorPct, 0, 'f', 2));
 }
 
-void SelfTests::claimOmni(const QString& text) {
+void GuiTests::claimOmni(const QString& text) {
   const double dpMiB = stated(text, QStringLiteral("2 × 2048² = (\\d+) MiB"));
   const double cubeMiB = stated(text, QStringLiteral("the cube's 6 × 1024² = (\\d+) MiB"));
   const double same =
@@ -704,7 +704,7 @@ void SelfTests::claimOmni(const QString& text) {
             .arg(same));
 }
 
-void SelfTests::claimFvsm(const QString& text) {
+void GuiTests::claimFvsm(const QString& text) {
   const double tiles = stated(text, QStringLiteral("Tiles per axis (\\d+) and Tile resolution"));
   const double tileRes = stated(text, QStringLiteral("and Tile resolution (\\d+)"));
   const double errFactor = stated(
@@ -718,8 +718,8 @@ void SelfTests::claimFvsm(const QString& text) {
   // time is its best of three frames, so a load spike in one frame does not decide the claim.
   const auto bestFrameMs = [this](double ms) {
     for (int i = 0; i < 2; ++i) {
-      check(w_.waitForFrames(1, 240000), tr("one more frame to time"));
-      ms = std::min(ms, w_.viewport_->renderer()->stats().totalMs);
+      check(auto_.waitForFrames(1, 240000), tr("one more frame to time"));
+      ms = std::min(ms, w_.viewport()->renderer()->stats().totalMs);
     }
     return ms;
   };
@@ -748,7 +748,7 @@ void SelfTests::claimFvsm(const QString& text) {
 // Lesson 13: asm misses the thin pole's shadow (its error as stated), rmsm on the other side
 // draws it; the Pages panel shows why (only the coarse map held, nothing requested); at about
 // the same memory uniform 2048² and rtw-backward 1024² on the other side give the stated errors.
-void SelfTests::claimAsm(const QString& text) {
+void GuiTests::claimAsm(const QString& text) {
   const double asmPct = stated(text, QStringLiteral("no shadow at all \\(([0-9.]+) %"));
   const double rmsmPct = stated(text, QStringLiteral("draws it \\(([0-9.]+) %\\)"));
   const double coarse = stated(text, QStringLiteral("holds only the (\\d+) pages of its coarse"));
@@ -763,11 +763,11 @@ void SelfTests::claimAsm(const QString& text) {
     return got && std::abs(*got - want) <= 0.01;
   };
   auto pct = [](std::optional<double> v) { return v ? QString::number(*v, 'f', 3) : tr("none"); };
-  w_.waitForFrames(2);
-  auto main = w_.viewport_->computeErrorNow();
-  w_.waitForFrames(1);
-  auto split = w_.viewport_->splitErrorPct();
-  check(w_.viewport_->splitTechnique() == "rmsm" && near(main, asmPct) && near(split, rmsmPct) &&
+  auto_.waitForFrames(2);
+  auto main = w_.viewport()->computeErrorNow();
+  auto_.waitForFrames(1);
+  auto split = w_.viewport()->splitErrorPct();
+  check(w_.viewport()->splitTechnique() == "rmsm" && near(main, asmPct) && near(split, rmsmPct) &&
             split && main && *split < *main / 3.0,
         tr("asm %1 % error (text: %2), rmsm %3 % (text: %4)")
             .arg(pct(main))
@@ -775,7 +775,7 @@ void SelfTests::claimAsm(const QString& text) {
             .arg(pct(split))
             .arg(rmsmPct));
   PublicationPanel* pagesPanel = nullptr;
-  for (const PublicationDocks::Dock& d : w_.docks_.docks())
+  for (const PublicationDocks::Dock& d : w_.docks().docks())
     if (d.entry.id == QLatin1String("pages")) pagesPanel = d.panel;
   const QJsonObject drawn = pagesPanel ? pagesPanel->drawnValues() : QJsonObject();
   const QJsonObject cells = drawn.value(QStringLiteral("cells")).toObject();
@@ -792,12 +792,12 @@ void SelfTests::claimAsm(const QString& text) {
   // The other side at about the same memory.
   for (const auto& [id, resolution, want] :
        {std::tuple{"uniform", "2048", uniformPct}, {"rtw-backward", "1024", rtwPct}}) {
-    if (auto e = w_.viewport_->setSplitTechnique(id, {{"resolution", resolution}}))
+    if (auto e = w_.viewport()->setSplitTechnique(id, {{"resolution", resolution}}))
       check(false, QString::fromStdString(*e));
-    w_.waitForFrames(3);
-    main = w_.viewport_->computeErrorNow();
-    w_.waitForFrames(1);
-    split = w_.viewport_->splitErrorPct();
+    auto_.waitForFrames(3);
+    main = w_.viewport()->computeErrorNow();
+    auto_.waitForFrames(1);
+    split = w_.viewport()->splitErrorPct();
     check(near(split, want) && split && main && *split < *main,
           tr("%1 at %2²: %3 % (text: %4), asm %5 %")
               .arg(QLatin1String(id), QLatin1String(resolution), pct(split))

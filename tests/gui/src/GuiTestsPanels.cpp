@@ -1,11 +1,11 @@
-// The `panels` self-test (see SelfTests.h): which publication panels the window shows for
+// The `panels` self-test (see GuiTests.h): which publication panels the window shows for
 // each technique, and that a panel opened by hand stays.
 #include <QAction>
 #include <QDockWidget>
 #include <QStringList>
 
 #include "MainWindow.h"
-#include "SelfTests.h"
+#include "GuiTests.h"
 #include "ViewportWidget.h"
 #include "panels/rtw/RtwPanels.h"
 
@@ -21,9 +21,9 @@ QStringList rtwPanelIds() {
 }
 }  // namespace
 
-bool SelfTests::panelsFollowTechnique() {
+bool GuiTests::panelsFollowTechnique() {
   const QStringList kRtwPanels = rtwPanelIds();
-  auto dockOf = [this](const QString& id) { return w_.docks_.dock(id.toStdString()); };
+  auto dockOf = [this](const QString& id) { return w_.docks().dock(id.toStdString()); };
   auto isOpen = [&](const QString& id) {
     QDockWidget* dock = dockOf(id);
     return dock && !dock->isHidden();
@@ -34,12 +34,12 @@ bool SelfTests::panelsFollowTechnique() {
   };
   auto switchTo = [this](const QString& technique) {
     w_.setTechnique(technique);
-    w_.waitForFrames(2);
+    auto_.waitForFrames(2);
   };
   // No panel in view says that it gets nothing.
   auto checkNoEmptyPanel = [this](const QString& when) {
     QStringList empty;
-    for (const PublicationDocks::Dock& d : w_.docks_.docks())
+    for (const PublicationDocks::Dock& d : w_.docks().docks())
       if (d.dock->isVisible() && !d.dock->visibleRegion().isEmpty() &&
           !d.panel->placeholderShown().isEmpty())
         empty << d.entry.id;
@@ -48,13 +48,13 @@ bool SelfTests::panelsFollowTechnique() {
               .arg(when, empty.isEmpty() ? tr("none") : empty.join(QStringLiteral(", "))));
   };
 
-  check(w_.viewport_->techniqueId() == "da-rtw",
+  check(w_.viewport()->techniqueId() == "da-rtw",
         tr("the window opens on da-rtw (%1)")
-            .arg(QString::fromStdString(w_.viewport_->techniqueId())));
-  w_.waitForFrames(2);
+            .arg(QString::fromStdString(w_.viewport()->techniqueId())));
+  auto_.waitForFrames(2);
   for (const QString& id : kRtwPanels)
     check(inView(id), tr("da-rtw: the %1 panel is in view").arg(id));
-  check(w_.paramDock_->isVisible() && !w_.paramDock_->visibleRegion().isEmpty(),
+  check(w_.paramDock()->isVisible() && !w_.paramDock()->visibleRegion().isEmpty(),
         tr("da-rtw: the Parameters are in view"));
   checkNoEmptyPanel(tr("da-rtw"));
 

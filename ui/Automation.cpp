@@ -1,0 +1,130 @@
+// Scripted control of the window (see Automation.h).
+#include "Automation.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QStatusBar>
+#include <QTimer>
+
+#include "LaunchOptions.h"
+#include "LessonController.h"
+#include "MainWindow.h"
+#include "ViewportWidget.h"
+#include "core/Renderer.h"
+
+namespace sl::ui {
+
+Automation::Automation(MainWindow& window) : QObject(&window), w_(window) {
+  w_.setScripted(true);
+}
+
+ViewportWidget& Automation::viewport() const {
+  return *w_.viewport();
+}
+
+sl::Renderer* Automation::renderer() const {
+  return w_.viewport()->renderer();
+}
+
+void Automation::whenReady(std::function<void()> ready, std::function<void(const QString&)> failed,
+                           int timeoutMs) {
+  auto* timer = new QTimer(this);
+  auto clock = std::make_shared<QElapsedTimer>();
+  clock->start();
+  connect(timer, &QTimer::timeout, this,
+          [this, timer, clock, timeoutMs, ready = std::move(ready), failed = std::move(failed)] {
+            if (w_.failed()) {
+              timer->stop();
+              timer->deleteLater();
+              failed(tr("the renderer failed to start"));
+              return;
+            }
+            if (!w_.rendererBound() || w_.viewport()->framesRendered() < 2 ||
+                w_.lessons()->settling()) {
+              if (clock->elapsed() > timeoutMs) {
+                timer->stop();
+                timer->deleteLater();
+                failed(tr("the renderer did not start within %1 s").arg(timeoutMs / 1000));
+                return;
+              }
+              w_.viewport()->update();
+              return;
+            }
+            timer->stop();
+            timer->deleteLater();
+            ready();
+          });
+  timer->start(30);
+}
+
+bool Automation::openScene(const QString& nameOrPath) {
+  return w_.loadScene(nameOrPath);
+}
+
+std::optional<QString> Automation::setTechnique(const QString& id) {
+  if (!sl::Renderer::findTechnique(id.toStdString())) return tr("unknown technique '%1'").arg(id);
+  w_.setTechnique(id);
+  if (w_.viewport()->techniqueId() != id.toStdString())
+    return tr("the view did not switch to '%1'").arg(id);
+  return std::nullopt;
+}
+
+bool Automation::openLesson(const QString& lesson, int caseIndex) {
+  return w_.startLesson(lesson, caseIndex);
+}
+
+std::optional<QString> Automation::setParameter(const QString& keyEqualsValue) {
+  sl::Renderer* r = renderer();
+  if (!r) return tr("no renderer yet");
+  if (auto e = assignParameter(r->params(), r->rendererParams(), keyEqualsValue.toStdString()))
+    return QString::fromStdString(*e);
+  w_.viewport()->update();
+  return std::nullopt;
+}
+
+bool Automation::waitForFrames(int frames, int timeoutMs) {
+  return w_.waitForFrames(frames, timeoutMs);
+}
+
+bool Automation::waitForSettled(int timeoutMs) {
+  QElapsedTimer clock;
+  clock.start();
+  while (w_.lessons()->settling()) {
+    w_.viewport()->update();
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    if (clock.elapsed() > timeoutMs) return false;
+  }
+  return true;
+}
+
+QString Automation::errorReadout() const {
+  return w_.errorLabel()->text();
+}
+
+QString Automation::statusMessage() const {
+  return w_.statusBar()->currentMessage();
+}
+
+QString Automation::resolutionNote() const {
+  return w_.viewport()->resolutionNote();
+}
+
+ViewportWidget::Readouts Automation::viewReadouts() const {
+  return w_.viewport()->readouts();
+}
+
+const sl::Publication* Automation::publication() const {
+  const sl::Renderer* r = renderer();
+  return r ? &r->publication() : nullptr;
+}
+
+QImage Automation::grabWindow() const {
+  return w_.grabWindowFullSize();
+}
+
+QImage Automation::grabView() const {
+  return w_.grabViewFullSize();
+}
+
+}  // namespace sl::ui

@@ -1,0 +1,84 @@
+// Scripted control of the window: what a script needs to drive the GUI as a user would and
+// read what it shows, without reaching into the window's internals. Open a scene, technique
+// or lesson, set a parameter, wait for frames or for a lesson to settle, read the status
+// line's readouts, the view's caption and the renderer's publications, grab images. No
+// checks of its own: the GUI tests (tests/gui, shadowlab-gui-tests) assert on what it
+// returns; a demo or a recording script could use it the same way.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <QImage>
+#include <QObject>
+#include <QString>
+
+#include "ViewportWidget.h"
+
+namespace sl {
+struct Publication;
+class Renderer;
+}  // namespace sl
+
+namespace sl::ui {
+
+class MainWindow;
+
+class Automation : public QObject {
+  Q_OBJECT
+
+ public:
+  /// Marks `window` scripted (MainWindow::setScripted: message boxes for problems, Qt's own
+  /// file dialogs); a child of the window.
+  explicit Automation(MainWindow& window);
+
+  MainWindow& window() const { return w_; }
+  ViewportWidget& viewport() const;
+  /// The main renderer, or null before the GL context exists (or after it failed).
+  sl::Renderer* renderer() const;
+
+  /// Calls `ready` from the event loop once the renderer is bound, has drawn two frames and
+  /// a lesson being opened has settled; `failed` with the reason when the renderer failed or
+  /// this did not happen within `timeoutMs`.
+  void whenReady(std::function<void()> ready, std::function<void(const QString&)> failed,
+                 int timeoutMs = 120000);
+
+  /// As the toolbar's Scene box / File > Open: false (reported) when it cannot load.
+  bool openScene(const QString& nameOrPath);
+  /// As the Technique box; the problem when the id is unknown.
+  std::optional<QString> setTechnique(const QString& id);
+  /// As Lessons > N (a 1-based number, a file's base name or a path); false when refused.
+  bool openLesson(const QString& lesson, int caseIndex = 0);
+  /// KEY=VALUE on the main technique's parameters, else the shared ones (as --set); the
+  /// problem (unknown key, value out of range), or nothing.
+  std::optional<QString> setParameter(const QString& keyEqualsValue);
+
+  /// Renders until `frames` more frames are drawn; false on timeout.
+  bool waitForFrames(int frames, int timeoutMs = 30000);
+  /// Renders until an opened lesson has settled (LessonController); false on timeout.
+  bool waitForSettled(int timeoutMs = 60000);
+
+  /// The status line's error readout ("error 0.420 %", "error n/a (no covered pixel)").
+  QString errorReadout() const;
+  /// The status bar's current message (empty: none).
+  QString statusMessage() const;
+  /// The view's resolution note ("internal resolution 240×150: frame took 610 ms" while
+  /// adaptive resolution reduced it), empty at full size.
+  QString resolutionNote() const;
+  /// How the view drew its last frame: internal resolution, frame time, progressive tiles,
+  /// captions and notes, the presenter's ring and zoom inset, the live reference workers.
+  ViewportWidget::Readouts viewReadouts() const;
+  /// The main renderer's publication of its last frame (null before the renderer exists).
+  const sl::Publication* publication() const;
+
+  /// The whole window / the view as shown (split half, captions, banner, legends), the view
+  /// rendered for it at full size (never the adaptive resolution's reduced frame).
+  QImage grabWindow() const;
+  QImage grabView() const;
+
+ private:
+  MainWindow& w_;
+};
+
+}  // namespace sl::ui

@@ -1,44 +1,62 @@
 #!/usr/bin/env bash
-# Grabs every lesson's window: opens each scenes/lessons/*.json with `shadowlab --lesson NAME`
-# on a private 1920x1080 Xvfb (with --presenter when `shadowlab --help` lists it), lets the
-# lesson settle (a grab waits for the lesson's temporal state) and saves the window as
-# OUTDIR/<lesson>.png; a lesson told in cases also as OUTDIR/<lesson>-case<K>.png for its
-# other cases. docs/lecturer/lessons.md shows the grabs in docs/images/lessons/.
+# Grabs every lesson's window as a class sees it, on two screens: opens each
+# scenes/lessons/*.json with `shadowlab --lesson NAME --presenter` on a private Xvfb of each
+# size in SIZES (default "1920x1080 1280x800"), lets the lesson settle (a grab waits for the
+# lesson's temporal state) and saves the window as OUTDIR/<lesson>.png (the first size) and
+# OUTDIR/<size>/<lesson>.png (the others); a lesson told in cases also as <lesson>-case<K>.png
+# for its other cases. A window larger than its screen fails the run (exit 1, naming the
+# lesson, the window and the screen). docs/lecturer/lessons.md shows the grabs in
+# docs/images/lessons/.
 # usage: scripts/grab_lessons.sh OUTDIR [path/to/shadowlab] [frames before the grab (3)]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:?usage: scripts/grab_lessons.sh OUTDIR [shadowlab] [frames]}
 app=${2:-$root/build/app/shadowlab}
 frames=${3:-3}
+sizes=(${SIZES:-1920x1080 1280x800})
 [[ -x "$app" ]] || { echo "grab_lessons: no executable $app (build first)" >&2; exit 1; }
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-export XVFB_SCREEN=1920x1080x24
 source "$root/tests/gui/xvfb.bash"
-start_xvfb
-extra=()
-if "$app" --help 2>/dev/null | grep -q -- '--presenter'; then
-  extra+=(--presenter)
-fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/shadowlab-grab-lessons.XXXXXX")
 trap 'rm -rf "$work"; stop_xvfb' EXIT
+# The size of a PNG (its IHDR), without an image library.
+png_size() {
+  python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print("%dx%d" % struct.unpack(">II", d[16:24]))' "$1"
+}
 fail=0
-for json in "$root"/scenes/lessons/*.json; do
-  name=$(basename "$json" .json)
-  cases=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1])).get("cases", [])))' "$json")
-  for k in $(seq 1 $((cases > 1 ? cases : 1))); do
-    shot=$name
-    [[ $k -gt 1 ]] && shot=$name-case$k
-    rm -rf "${work:?}/$shot"
-    if timeout 300 "$app" --lesson "$name" --lesson-case "$k" "${extra[@]}" --grab "$work/$shot" \
-      --grab-after "$frames" >"$work/$shot.log" 2>&1 && [[ -f "$work/$shot/window.png" ]]; then
-      cp "$work/$shot/window.png" "$out/$shot.png"
-      echo "$out/$shot.png"
-    else
-      echo "grab_lessons: $shot failed:" >&2
-      tail -n 20 "$work/$shot.log" >&2
-      fail=1
-    fi
+first=1
+for size in "${sizes[@]}"; do
+  export XVFB_SCREEN=${size}x24
+  start_xvfb
+  dest=$out
+  [[ $first -eq 0 ]] && dest=$out/$size
+  mkdir -p "$dest"
+  for json in "$root"/scenes/lessons/*.json; do
+    name=$(basename "$json" .json)
+    cases=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1])).get("cases", [])))' "$json")
+    for k in $(seq 1 $((cases > 1 ? cases : 1))); do
+      shot=$name
+      [[ $k -gt 1 ]] && shot=$name-case$k
+      rm -rf "${work:?}/$shot"
+      if timeout 300 "$app" --lesson "$name" --lesson-case "$k" --presenter --grab "$work/$shot" \
+        --grab-after "$frames" >"$work/$shot.log" 2>&1 && [[ -f "$work/$shot/window.png" ]]; then
+        got=$(png_size "$work/$shot/window.png")
+        if (( ${got%x*} > ${size%x*} || ${got#*x} > ${size#*x} )); then
+          echo "grab_lessons: $shot: the window ($got) is larger than the ${size} screen" >&2
+          fail=1
+        fi
+        cp "$work/$shot/window.png" "$dest/$shot.png"
+        echo "$dest/$shot.png ($got)"
+      else
+        echo "grab_lessons: $shot at $size failed:" >&2
+        tail -n 20 "$work/$shot.log" >&2
+        fail=1
+      fi
+    done
   done
+  stop_xvfb
+  first=0
 done
+rm -rf "$work"
 exit $fail

@@ -47,6 +47,7 @@ void applyTheme(QApplication& app) {
     p.setColor(QPalette::Disabled, role, disabledText);
   p.setColor(QPalette::Disabled, QPalette::Highlight, QColor(80, 84, 90));
   app.setPalette(p);
+  app.setStyleSheet(QString());  // presenter mode's indicators off again
 }
 
 int presenterBodyPixelSize(const QSize& screenLogicalSize, double logicalDpi) {
@@ -87,6 +88,20 @@ void applyPresenterTheme(QApplication& app, int bodyPixelSize, double logicalDpi
   QFont font = app.font();
   font.setPointSizeF(bodyPixelSize * 72.0 / std::max(logicalDpi, 1.0));
   app.setFont(font);
+  // Fusion draws a check box's frame a shade off the window colour: on black it is invisible.
+  // Every indicator gets a light frame at the body's size; checked = filled with the highlight.
+  const int box = std::max(12, bodyPixelSize * 3 / 4);
+  app.setStyleSheet(
+      QStringLiteral("QCheckBox::indicator, QGroupBox::indicator, QRadioButton::indicator "
+                     "{ width: %1px; height: %1px; border: 2px solid rgb(220, 220, 220); "
+                     "background: black; }"
+                     "QRadioButton::indicator { border-radius: %2px; }"
+                     "QCheckBox::indicator:checked, QGroupBox::indicator:checked, "
+                     "QRadioButton::indicator:checked { background: rgb(255, 221, 0); }"
+                     "QCheckBox::indicator:disabled, QRadioButton::indicator:disabled "
+                     "{ border-color: rgb(120, 120, 120); }")
+          .arg(box)
+          .arg(box / 2 + 2));
 }
 
 namespace {

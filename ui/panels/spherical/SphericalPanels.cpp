@@ -10,7 +10,7 @@ namespace sl::ui {
 std::vector<PanelEntry> sphericalPanels() {
   return {
       {QStringLiteral("spherical"),
-       QCoreApplication::translate("sl::ui::MainWindow", "Spherical map"), Qt::BottomDockWidgetArea,
+       QCoreApplication::translate("sl::ui::MainWindow", "Spherical map"), Qt::LeftDockWidgetArea,
        [] { return new SphericalMapPanel; }},
   };
 }

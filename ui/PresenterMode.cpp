@@ -79,8 +79,9 @@ void PresenterMode::choosePanel(const QString& dockName) {
   if (active_) arrangeDocks();
 }
 
-void PresenterMode::setLessonPanel(const QString& dockName) {
+void PresenterMode::setLessonPanel(const QString& dockName, const QStringList& others) {
   lessonPanel_ = dockName;
+  lessonOthers_ = others;
   if (!active_) return;
   arrangeDocks();
   fitScreen();
@@ -176,6 +177,30 @@ void PresenterMode::arrangeDocks() {
   if (!big_) return;
   w_.addDockWidget(Qt::RightDockWidgetArea, big_);
   big_->show();
+  // The lesson's other panels under the big one (the lesson's own big panel only: a panel
+  // the user chose stands alone); split before anything is tabbed behind it (Qt adds a dock
+  // split off a tabbed one as one more tab).
+  QList<QDockWidget*> column{big_};
+  const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+  const int screenHeight = screen ? screen->geometry().height() : 0;
+  if (!fullPanel_ && chosen_.isEmpty() && big_->objectName() == lessonPanel_ &&
+      screenHeight >= kMinScreenHeightForPanelsBelow)
+    for (const QString& name : lessonOthers_) {
+      QDockWidget* dock = w_.findChild<QDockWidget*>(name);
+      if (!dock || dock == big_ || dock == w_.lessonDock() || dock == w_.paramDock() ||
+          column.size() > kMaxPanelsBelow)
+        continue;
+      w_.addDockWidget(Qt::RightDockWidgetArea, dock);
+      w_.splitDockWidget(column.back(), dock, Qt::Vertical);
+      dock->show();
+      w_.layout()->activate();
+      // Only where the window still fits the screen; else one more tab behind the big panel.
+      if (screenHeight > 0 && w_.minimumSizeHint().height() > screenHeight) {
+        w_.tabifyDockWidget(big_, dock);
+        continue;
+      }
+      column << dock;
+    }
   for (QDockWidget* behind : {w_.lessonDock(), w_.paramDock()}) {
     if (!behind || behind == big_ || fullPanel_) continue;
     w_.addDockWidget(Qt::RightDockWidgetArea, behind);
@@ -183,6 +208,11 @@ void PresenterMode::arrangeDocks() {
     behind->show();
   }
   big_->raise();
+  if (column.size() > 1) {  // the big panel keeps most of the height
+    QList<int> heights{int(w_.height() * 0.6)};
+    for (int i = 1; i < column.size(); ++i) heights << int(w_.height() * 0.4 / (column.size() - 1));
+    w_.resizeDocks(column, heights, Qt::Vertical);
+  }
   w_.layout()->invalidate();
   w_.layout()->activate();
   sizeBigDock();

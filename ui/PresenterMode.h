@@ -51,7 +51,14 @@ class PresenterMode : public QObject {
   /// A lesson's or session's layout was applied: its large panel (dock object name; empty:
   /// none) is the big panel unless the user chose one, and, while active, the docks are
   /// arranged again and the window fitted to the screen.
-  void setLessonPanel(const QString& dockName);
+  /// `others`: the layout's other docks; up to kMaxPanelsBelow of them (not the Lesson or
+  /// Parameters, which stay tabbed behind the big panel) are shown under it, so a lesson's
+  /// panels are in view together (e.g. Shadow map over Light, Pages over Timing).
+  void setLessonPanel(const QString& dockName, const QStringList& others = {});
+  static constexpr int kMaxPanelsBelow = 2;
+  /// Panels under the big one only on screens at least this tall: on smaller ones (1280x800)
+  /// two panels at the presenter's font do not fit (their content grows once data arrives).
+  static constexpr int kMinScreenHeightForPanelsBelow = 1000;
   /// Share of the window's width the big panel takes.
   static constexpr double kPanelShare = 0.42;
 
@@ -68,8 +75,9 @@ class PresenterMode : public QObject {
   QList<QWidget*> hiddenForPanel_;  ///< tool bars and status line the full panel hid
   QMenu* panelMenu_ = nullptr;
   bool active_ = false;
-  QString chosen_;       ///< View > Presenter panel (dock object name), empty: automatic
-  QString lessonPanel_;  ///< the applied layout's large panel (dock object name), or empty
+  QString chosen_;            ///< View > Presenter panel (dock object name), empty: automatic
+  QString lessonPanel_;       ///< the applied layout's large panel (dock object name), or empty
+  QStringList lessonOthers_;  ///< the layout's other docks (object names)
   QPointer<QDockWidget> big_;
   QByteArray savedState_, savedGeometry_;
   QFont savedFont_;

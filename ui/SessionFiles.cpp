@@ -110,8 +110,11 @@ void SessionFiles::applyLayout(const sl::PresetLayout& layout, QStringList* prob
   applyLayoutDocks(layout, problems);
   // In presenter mode the layout's large panel becomes the one big panel, and the window
   // stays on the screen (the docks just shown at the large font may want more).
-  if (w_.presenter()->active())
-    w_.presenter()->setLessonPanel(QString::fromStdString(layout.large));
+  if (w_.presenter()->active()) {
+    QStringList others;
+    for (const std::string& dock : layout.docks) others << QString::fromStdString(dock);
+    w_.presenter()->setLessonPanel(QString::fromStdString(layout.large), others);
+  }
 }
 
 void SessionFiles::applyLayoutDocks(const sl::PresetLayout& layout, QStringList* problems) {

@@ -12,14 +12,17 @@
 # at the same texels, the cascades' split schemes (each map's m), cube against dual paraboloid
 # (memory, error, tessellation), FVSM against a small brute-force budget and ASM against RMSM
 # (both errors, the Pages panel's counts, uniform and rtw-backward staged). The window of each
-# lesson is saved to DIR for a look.
+# lesson is saved to DIR for a look. Every lesson's window fits its screen, every live number
+# of its text is filled and no label on screen cuts its text. LESSON_SCREEN (default
+# 1920x1080) is the screen's size: lesson_claims_1280x800.sh runs the same at 1280x800.
 # usage: lesson_claims.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1
 tests=$4
-out=$3/lesson_claims
+screen=${LESSON_SCREEN:-1920x1080}
+out=$3/lesson_claims-$screen
 here=$(cd "$(dirname "$0")" && pwd)
-export XVFB_SCREEN=1920x1080x24
+export XVFB_SCREEN=${screen}x24
 source "$here/xvfb.bash"
 rm -rf "$out" && mkdir -p "$out"
 start_xvfb

@@ -3,7 +3,8 @@
 # seed numbers ("seed 004") or C++ symbols ("sl::rtw::momentsFromTop"): the lesson texts, and
 # every string literal of the techniques, the renderer's declarations and the UI (parameter
 # help, technique descriptions, pass explanations, tooltips). Comments are not scanned, nor
-# the translation contexts of QCoreApplication::translate ("sl::ui::MainWindow").
+# the translation contexts of QCoreApplication::translate ("sl::ui::MainWindow"), nor a Qt style
+# sheet's subcontrols ("QCheckBox::indicator").
 # usage: lesson_texts_cite_authors.sh <repository root>
 set -euo pipefail
 root=$1
@@ -21,7 +22,8 @@ done
 python3 - "$root" <<'PY' || fail=1
 import pathlib, re, sys
 root = pathlib.Path(sys.argv[1])
-bad = re.compile(r"seed [0-9]{3}|\b[A-Za-z_]+::[A-Za-z_]+")
+# (A Qt style sheet's subcontrol, "QCheckBox::indicator", is not a C++ symbol.)
+bad = re.compile(r"seed [0-9]{3}|\b(?!Q[A-Z][A-Za-z]*::(?:indicator|item|handle|tab|pane|title|groove|chunk|branch|drop-down)\b)[A-Za-z_]+::[A-Za-z_]+")
 literal = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
 context = re.compile(r'translate\(\s*"[^"]*"')
 files = 0

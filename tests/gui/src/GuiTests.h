@@ -156,6 +156,9 @@ class GuiTests : public QObject {
   /// into DIR.
   bool lessonClaims(const QString& dir);
   void lessonLayout(const sl::PresetLayout& layout);
+  /// The lesson's window fits its screen, its text's live numbers are filled and no label cuts
+  /// its text.
+  void lessonOnScreen(const QString& name);
   void claimPerspective(const QString& text);
   void claimProjective(const QString& text);
   void claimTessellation(const QString& text);

@@ -13,6 +13,9 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QScreen>
+#include <QTextDocument>
+#include <QLabel>
 #include <QJsonObject>
 #include <QRegularExpression>
 
@@ -24,6 +27,7 @@
 #include "PublicationDocks.h"
 #include "GuiTests.h"
 #include "ViewportWidget.h"
+#include "panels/common/LessonPanel.h"
 #include "panels/common/PanelKit.h"
 #include "panels/rtw/CovariancePanel.h"
 #include "panels/rtw/RtwSettle.h"
@@ -80,6 +84,7 @@ bool GuiTests::lessonClaims(const QString& dir) {
   if (!dir.isEmpty() && QDir().mkpath(dir))
     w_.grab().toImage().save(QDir(dir).filePath(name + QStringLiteral(".png")));
   if (p.layout) lessonLayout(*p.layout);
+  lessonOnScreen(name);
   if (name.endsWith(QLatin1String("perspective-aliasing")))
     claimPerspective(text);
   else if (name.endsWith(QLatin1String("projective-aliasing")))
@@ -107,6 +112,50 @@ bool GuiTests::lessonClaims(const QString& dir) {
   else if (name.endsWith(QLatin1String("asm-vs-rmsm")))
     claimAsm(text);
   return true;
+}
+
+void GuiTests::lessonOnScreen(const QString& name) {
+  // The window fits the screen it is on (1280x800 to 3840x2160: the test runs at two sizes).
+  QCoreApplication::processEvents();
+  const QRect screen = w_.screen() ? w_.screen()->geometry() : QRect();
+  const QRect frame = w_.frameGeometry();
+  check(!screen.isEmpty() && frame.width() <= screen.width() && frame.height() <= screen.height(),
+        tr("%1: the window (%2 x %3) fits the %4 x %5 screen")
+            .arg(name)
+            .arg(frame.width())
+            .arg(frame.height())
+            .arg(screen.width())
+            .arg(screen.height()));
+  // Every live number the text quotes is filled once the view's error is measured (a lesson
+  // with a split view: its right half's too).
+  w_.viewport()->computeErrorNow();
+  auto_.waitForFrames(2);
+  const QString shown = w_.lessonPanel()->shownText();
+  const qsizetype missing = shown.indexOf(QStringLiteral("n/a"));
+  check(missing < 0, tr("%1: every number of the text is filled (%2)")
+                         .arg(name)
+                         .arg(missing < 0 ? tr("none n/a")
+                                          : shown.mid(std::max<qsizetype>(0, missing - 60), 80)));
+  // No label on screen cuts its text: a number is never elided (text wraps or the panel grows).
+  QStringList cut;
+  for (const QLabel* label : w_.findChildren<QLabel*>()) {
+    if (!label->isVisible() || label->visibleRegion().isEmpty() || label->wordWrap() ||
+        label->textFormat() == Qt::RichText || Qt::mightBeRichText(label->text()) ||
+        label->text().isEmpty() || !label->pixmap().isNull())
+      continue;
+    const QFontMetrics fm = label->fontMetrics();
+    int widest = 0;
+    for (const QString& line : label->text().split(QLatin1Char('\n')))
+      widest = std::max(widest, fm.horizontalAdvance(line));
+    if (widest > label->contentsRect().width() + 1 || label->text().contains(QChar(0x2026)))
+      cut << tr("'%1' (%2 px in %3)")
+                 .arg(label->text().left(60))
+                 .arg(widest)
+                 .arg(label->contentsRect().width());
+  }
+  check(cut.isEmpty(), tr("%1: no label cut: %2")
+                           .arg(name)
+                           .arg(cut.isEmpty() ? tr("none") : cut.join(QStringLiteral("; "))));
 }
 
 void GuiTests::lessonLayout(const sl::PresetLayout& layout) {
@@ -327,17 +376,24 @@ void GuiTests::checkCovarianceReadouts(const QString& where) {
 void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
   const QString text = QString::fromStdString(c.explanation);
   std::printf("     case %d: %s\n", caseNumber, c.title.c_str());
+  // "R settles at 45°, ± 2°" (the strip's own angle, the same on any screen) or "R turns by
+  // about 45°" (the view's shape moves it: the turn's size within 10°).
   const double angle = stated(text, QStringLiteral("settles at ([\\x{2212}-]?\\d+(?:\\.\\d+)?)°"));
-  check(std::isfinite(angle), tr("case %1: the text states the settled angle").arg(caseNumber));
+  const double about = stated(text, QStringLiteral("turns by about (\\d+(?:\\.\\d+)?)°"));
+  check(std::isfinite(angle) != std::isfinite(about),
+        tr("case %1: the text states the settled angle or the size of the turn").arg(caseNumber));
   sl::Renderer* r = w_.viewport()->renderer();
   const sl::Publication& pub = r->publication();
   const double got = rtwsettle::angleDeg(pub).value_or(std::nan(""));
-  check(w_.lessons()->settled() && std::abs(got - angle) <= 2.0,
-        tr("case %1: R settles at %2° within %3 frames (stated %4° ± 2°)")
+  const bool angleHolds =
+      std::isfinite(angle) ? std::abs(got - angle) <= 2.0 : std::abs(std::abs(got) - about) <= 10.0;
+  check(w_.lessons()->settled() && angleHolds,
+        tr("case %1: R settles at %2° within %3 frames (stated %4)")
             .arg(caseNumber)
             .arg(got, 0, 'f', 2)
             .arg(w_.lessons()->settleFrames())
-            .arg(angle));
+            .arg(std::isfinite(angle) ? tr("%1° ± 2°").arg(angle)
+                                      : tr("a turn of %1° ± 10°").arg(about)));
   std::printf("metric rotation_deg=%.3f\n", got);
   PublicationPanel* covariance = nullptr;
   for (const PublicationDocks::Dock& d : w_.docks().docks())
@@ -382,8 +438,8 @@ void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
         main && split && *main >= *split,
         tr("case %1: rotation does not win: %2 (the left no better)").arg(caseNumber).arg(halves));
   // A case that says the defaults would not turn: the importance is under the default gate.
-  const double gate = stated(
-      text, QStringLiteral("defaults leave it unturned \\(pca.min_anisotropy (\\d\\.\\d+)\\)"));
+  const double gate =
+      stated(text, QStringLiteral("defaults leave it unturned \\(Min anisotropy (\\d\\.\\d+)\\)"));
   if (std::isfinite(gate)) {
     const sl::ParamDecl* decl = r->params().find("pca.min_anisotropy");
     const auto n = pub.numbers.find("pca.anisotropy");
@@ -399,9 +455,18 @@ void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
 
 void GuiTests::claimVibration(const QString& text) {
   const double pixels = stated(text, QStringLiteral("at least (\\d+) pixels change"));
-  const double threshold = stated(text, QStringLiteral("the threshold is (\\d\\.\\d+)"));
-  check(std::isfinite(pixels) && std::isfinite(threshold),
-        tr("the text states the changed pixels and the threshold"));
+  // The threshold is the lesson's parameter; the text quotes it live ({pca.threshold}).
+  const sl::Preset* lesson = w_.lessons()->activePreset();
+  const auto set =
+      lesson ? lesson->params.find(rtwsettle::kThresholdKey) : decltype(lesson->params.end()){};
+  const double threshold = lesson && set != lesson->params.end()
+                               ? QString::fromStdString(set->second).toDouble()
+                               : std::nan("");
+  const QString shownText = w_.lessonPanel()->shownText();
+  check(
+      std::isfinite(pixels) && std::isfinite(threshold) &&
+          shownText.contains(tr("the threshold is %1").arg(threshold, 0, 'f', 4)),
+      tr("the text states the changed pixels and shows the lesson's threshold %1").arg(threshold));
   sl::Renderer* r = w_.viewport()->renderer();
   check(std::abs(r->params().get(rtwsettle::kThresholdKey) - threshold) < 1e-9,
         tr("%1 is %2")
@@ -745,35 +810,21 @@ void GuiTests::claimFvsm(const QString& text) {
             .arg(timeFactor));
 }
 
-// Lesson 13: asm misses the thin pole's shadow (its error as stated), rmsm on the other side
-// draws it; the Pages panel shows why (only the coarse map held, nothing requested); at about
-// the same memory uniform 2048² and rtw-backward 1024² on the other side give the stated errors.
+// Lesson 13: asm misses the thin pole's shadow, rmsm on the other side draws it (at most a third
+// of asm's wrong pixels); the Pages panel shows why (only the coarse map held, nothing requested);
+// at about the same memory uniform 2048² and rtw-backward 1024² on the other side beat asm too.
+// The text quotes the errors live; the counts of pages are facts of the lesson's settings.
 void GuiTests::claimAsm(const QString& text) {
-  const double asmPct = stated(text, QStringLiteral("no shadow at all \\(([0-9.]+) %"));
-  const double rmsmPct = stated(text, QStringLiteral("draws it \\(([0-9.]+) %\\)"));
   const double coarse = stated(text, QStringLiteral("holds only the (\\d+) pages of its coarse"));
   const double asked = stated(text, QStringLiteral("requests (\\d+) pages"));
-  const double uniformPct = stated(text, QStringLiteral("uniform at 2048 \\(([0-9.]+) %\\)"));
-  const double rtwPct = stated(text, QStringLiteral("rtw-backward at 1024 \\(([0-9.]+) %\\)"));
-  check(std::isfinite(asmPct) && std::isfinite(rmsmPct) && std::isfinite(coarse) &&
-            std::isfinite(asked) && std::isfinite(uniformPct) && std::isfinite(rtwPct),
-        tr("the text states asm's, rmsm's, uniform's and rtw's errors and asm's pages"));
-  // The text's numbers have two decimals: within 0.01 of the measured ones.
-  auto near = [](std::optional<double> got, double want) {
-    return got && std::abs(*got - want) <= 0.01;
-  };
+  check(std::isfinite(coarse) && std::isfinite(asked), tr("the text states asm's pages"));
   auto pct = [](std::optional<double> v) { return v ? QString::number(*v, 'f', 3) : tr("none"); };
   auto_.waitForFrames(2);
   auto main = w_.viewport()->computeErrorNow();
   auto_.waitForFrames(1);
   auto split = w_.viewport()->splitErrorPct();
-  check(w_.viewport()->splitTechnique() == "rmsm" && near(main, asmPct) && near(split, rmsmPct) &&
-            split && main && *split < *main / 3.0,
-        tr("asm %1 % error (text: %2), rmsm %3 % (text: %4)")
-            .arg(pct(main))
-            .arg(asmPct)
-            .arg(pct(split))
-            .arg(rmsmPct));
+  check(w_.viewport()->splitTechnique() == "rmsm" && split && main && *split < *main / 3.0,
+        tr("asm %1 % error, rmsm %2 % (at most a third)").arg(pct(main)).arg(pct(split)));
   PublicationPanel* pagesPanel = nullptr;
   for (const PublicationDocks::Dock& d : w_.docks().docks())
     if (d.entry.id == QLatin1String("pages")) pagesPanel = d.panel;
@@ -790,18 +841,16 @@ void GuiTests::claimAsm(const QString& text) {
             .arg(drawn.value(QStringLiteral("requested")).toDouble())
             .arg(asked));
   // The other side at about the same memory.
-  for (const auto& [id, resolution, want] :
-       {std::tuple{"uniform", "2048", uniformPct}, {"rtw-backward", "1024", rtwPct}}) {
+  for (const auto& [id, resolution] : {std::pair{"uniform", "2048"}, {"rtw-backward", "1024"}}) {
     if (auto e = w_.viewport()->setSplitTechnique(id, {{"resolution", resolution}}))
       check(false, QString::fromStdString(*e));
     auto_.waitForFrames(3);
     main = w_.viewport()->computeErrorNow();
     auto_.waitForFrames(1);
     split = w_.viewport()->splitErrorPct();
-    check(near(split, want) && split && main && *split < *main,
-          tr("%1 at %2²: %3 % (text: %4), asm %5 %")
+    check(split && main && *split < *main,
+          tr("%1 at %2 x %2 texels: %3 %, asm %4 %")
               .arg(QLatin1String(id), QLatin1String(resolution), pct(split))
-              .arg(want)
               .arg(pct(main)));
   }
 }

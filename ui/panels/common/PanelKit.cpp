@@ -293,14 +293,23 @@ int ImageView::legendWidth() const {
   return std::min(w + 6, kMaxLegendWidth);
 }
 
+bool ImageView::captionWraps() const {
+  // Wrapped while that leaves the image most of the widget; a caption that would take more
+  // than a third of it (a long sentence over a small view) stays on one line, elided.
+  const QRect bounds =
+      fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
+                                 Qt::TextWordWrap | Qt::AlignLeft, caption_);
+  return bounds.height() + 4 <= std::max(fontMetrics().height() + 4, height() / 3);
+}
+
 int ImageView::captionHeight() const {
   if (caption_.isEmpty()) return 0;
+  if (!captionWraps()) return fontMetrics().height() + 4;
   const QRect bounds =
       fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
                                  Qt::TextWordWrap | Qt::AlignLeft, caption_);
   return bounds.height() + 4;
 }
-
 int ImageView::readoutHeight(const QString& readout) const {
   const int line = fontMetrics().height() + 4;
   if (readout.isEmpty()) return line;
@@ -339,8 +348,13 @@ void ImageView::paintEvent(QPaintEvent*) {
   const int line = fm.height() + 4;
   if (!caption_.isEmpty()) {  // wrapped, never cut: the numbers in it are what a lesson shows
     p.setPen(pal.color(QPalette::Text));
-    p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
-               Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_);
+    if (captionWraps())
+      p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
+                 Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_);
+    else
+      p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
+                 Qt::AlignLeft | Qt::AlignVCenter,
+                 fm.elidedText(caption_, Qt::ElideRight, width() - 2 * kMargin));
   }
   const QRectF area = viewArea();
   if (image_.isNull()) {
@@ -523,9 +537,11 @@ QString PlotWidget::fullTitle() const {
 }
 
 int PlotWidget::titleHeight() const {
+  // Wrapped while the plot keeps two thirds of the widget; else one line, elided.
   const QRect bounds = fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 12), 100000),
                                                   Qt::TextWordWrap | Qt::AlignLeft, fullTitle());
-  return std::max(fontMetrics().height(), bounds.height());
+  const int line = fontMetrics().height();
+  return bounds.height() <= std::max(line, height() / 3) ? std::max(line, bounds.height()) : line;
 }
 
 QRectF PlotWidget::plotArea() const {
@@ -584,8 +600,12 @@ void PlotWidget::paintEvent(QPaintEvent*) {
   const QFontMetrics fm = fontMetrics();
   const int line = fm.height();
   p.setPen(pal.color(QPalette::Text));
-  p.drawText(QRect(6, 2, width() - 12, titleHeight() + 4),
-             Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, fullTitle());
+  if (titleHeight() > line)
+    p.drawText(QRect(6, 2, width() - 12, titleHeight() + 4),
+               Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, fullTitle());
+  else
+    p.drawText(QRect(6, 2, width() - 12, line + 4), Qt::AlignLeft | Qt::AlignVCenter,
+               fm.elidedText(fullTitle(), Qt::ElideRight, width() - 12));
 
   bool any = false;
   for (const Series& s : series_) any = any || !s.points.empty();

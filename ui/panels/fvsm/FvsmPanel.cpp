@@ -7,6 +7,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include "Theme.h"
@@ -65,8 +66,15 @@ FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
   textures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   textures_->setWordWrap(true);
   textures_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  // The list of tile textures grows with the kd leaves: scrolled, so it never makes the panel
+  // (and a presenter's window) taller than the screen.
+  auto* texturesScroll = new QScrollArea;
+  texturesScroll->setWidget(textures_);
+  texturesScroll->setWidgetResizable(true);
+  texturesScroll->setFrameShape(QFrame::NoFrame);
+  texturesScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   lower->addWidget(histogram_, 2);
-  lower->addWidget(textures_, 1);
+  lower->addWidget(texturesScroll, 1);
   numbers_ = new QLabel;
   numbers_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   numbers_->setWordWrap(true);

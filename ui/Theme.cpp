@@ -16,6 +16,9 @@
 #include <QSize>
 #include <QPalette>
 #include <QStyleFactory>
+#include <QStyleOption>
+#include <QProxyStyle>
+#include <QPainter>
 
 namespace sl::ui {
 
@@ -47,7 +50,6 @@ void applyTheme(QApplication& app) {
     p.setColor(QPalette::Disabled, role, disabledText);
   p.setColor(QPalette::Disabled, QPalette::Highlight, QColor(80, 84, 90));
   app.setPalette(p);
-  app.setStyleSheet(QString());  // presenter mode's indicators off again
 }
 
 int presenterBodyPixelSize(const QSize& screenLogicalSize, double logicalDpi) {
@@ -58,8 +60,52 @@ int presenterBodyPixelSize(const QSize& screenLogicalSize, double logicalDpi) {
   return int(std::lround(std::max(kPxAt1080p * scale, floorPx)));
 }
 
+namespace {
+/// Fusion with check box and radio indicators drawn for a dark, high-contrast palette: a light
+/// frame always, the highlight inside when checked, a bar when partly checked.
+class PresenterStyle : public QProxyStyle {
+ public:
+  explicit PresenterStyle(QStyle* base) : QProxyStyle(base) {}
+  void drawPrimitive(PrimitiveElement element, const QStyleOption* option, QPainter* painter,
+                     const QWidget* widget) const override {
+    const bool check = element == PE_IndicatorCheckBox || element == PE_IndicatorItemViewItemCheck;
+    if (!check && element != PE_IndicatorRadioButton) {
+      QProxyStyle::drawPrimitive(element, option, painter, widget);
+      return;
+    }
+    const QPalette& pal = option->palette;
+    const bool enabled = option->state & State_Enabled;
+    const QRectF r = QRectF(option->rect).adjusted(1.5, 1.5, -1.5, -1.5);
+    painter->save();
+    painter->setRenderHint(QPainter::Antialiasing);
+    painter->setPen(QPen(enabled ? pal.color(QPalette::Light) : pal.color(QPalette::Dark), 2.0));
+    painter->setBrush(pal.color(QPalette::Base));
+    if (check)
+      painter->drawRect(r);
+    else
+      painter->drawEllipse(r);
+    painter->setPen(Qt::NoPen);
+    painter->setBrush(pal.color(QPalette::Highlight));
+    const QRectF inner = r.adjusted(3, 3, -3, -3);
+    if (option->state & State_On) {
+      if (check)
+        painter->drawRect(inner);
+      else
+        painter->drawEllipse(inner);
+    } else if (option->state & State_NoChange) {
+      painter->drawRect(QRectF(inner.left(), inner.center().y() - 1.5, inner.width(), 3.0));
+    }
+    painter->restore();
+  }
+};
+}  // namespace
+
 void applyPresenterTheme(QApplication& app, int bodyPixelSize, double logicalDpi) {
-  app.setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+  // Fusion draws a check box's frame a shade off the window colour: on black it is invisible.
+  // The presenter's style draws every indicator with a light frame (checked: filled with the
+  // highlight). A style, not a style sheet: an application style sheet would take over the
+  // widgets' fonts (the status line fell back to 12 px).
+  app.setStyle(new PresenterStyle(QStyleFactory::create(QStringLiteral("Fusion"))));
   const QColor black(0, 0, 0), panel(12, 12, 12), text(255, 255, 255), yellow(255, 221, 0),
       frame(200, 200, 200);
   QPalette p;
@@ -88,20 +134,6 @@ void applyPresenterTheme(QApplication& app, int bodyPixelSize, double logicalDpi
   QFont font = app.font();
   font.setPointSizeF(bodyPixelSize * 72.0 / std::max(logicalDpi, 1.0));
   app.setFont(font);
-  // Fusion draws a check box's frame a shade off the window colour: on black it is invisible.
-  // Every indicator gets a light frame at the body's size; checked = filled with the highlight.
-  const int box = std::max(12, bodyPixelSize * 3 / 4);
-  app.setStyleSheet(
-      QStringLiteral("QCheckBox::indicator, QGroupBox::indicator, QRadioButton::indicator "
-                     "{ width: %1px; height: %1px; border: 2px solid rgb(220, 220, 220); "
-                     "background: black; }"
-                     "QRadioButton::indicator { border-radius: %2px; }"
-                     "QCheckBox::indicator:checked, QGroupBox::indicator:checked, "
-                     "QRadioButton::indicator:checked { background: rgb(255, 221, 0); }"
-                     "QCheckBox::indicator:disabled, QRadioButton::indicator:disabled "
-                     "{ border-color: rgb(120, 120, 120); }")
-          .arg(box)
-          .arg(box / 2 + 2));
 }
 
 namespace {

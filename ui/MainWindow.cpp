@@ -418,6 +418,8 @@ void MainWindow::onFrameRendered() {
                                       ? tr("untimed")
                                       : QString::fromStdString(stats.timingMethod)));
   }
+  // As wide as its text at the current font (presenter mode's is larger): never cut.
+  frameLabel_->setMinimumWidth(frameLabel_->sizeHint().width());
   timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
   timingPanel_->showStats(stats, viewport_->frameFailure());
   if (viewport_->continuous()) updateLiveErrorLabel();

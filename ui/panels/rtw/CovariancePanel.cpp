@@ -192,6 +192,7 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   int line = 0;
   for (const auto& r : rows) {
     Row row{new QLabel(tr(r.name)), new QLabel};
+    row.name->setWordWrap(true);  // a narrow (presenter) panel wraps a name, never cuts it
     row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     row.value->setTextInteractionFlags(Qt::TextSelectableByMouse);
     row.value->setObjectName(QStringLiteral("covariance_%1").arg(QLatin1String(r.key)));

@@ -30,7 +30,7 @@ QString shownSummary(const QString& text) {
   qsizetype end = -1;
   for (qsizetype i = 0; i + 1 < kept.size(); ++i)
     if ((kept[i] == QLatin1Char('.') || kept[i] == QLatin1Char('!') ||
-         kept[i] == QLatin1Char('?') || kept[i] == QLatin1Char(':')) &&
+         kept[i] == QLatin1Char('?')) &&
         kept[i + 1].isSpace())
       end = i + 1;
   if (end <= 0) {  // no sentence end: cut at the last space, never inside a word or number

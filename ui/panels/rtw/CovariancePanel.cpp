@@ -174,10 +174,10 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
       {"axis_panel", "axis (panel)",
        "atan2(e_y, e_x) of the axis this panel computed from the published moment sums: the "
        "orange line. Equal to the renderer's unless the sums and the renderer disagree."},
-      {"axis_renderer", "axis (renderer)",
+      {"axis_renderer", "axis (used)",
        "atan2(e_y, e_x) of the axis the renderer used this frame: the turn it makes when it turns "
        "(R' = [[e_x, −e_y], [e_y, e_x]])."},
-      {"turn", "turn this frame",
+      {"turn", "this turn",
        "By how much R turned this frame: the renderer's axis angle when it turned, 0 when it was "
        "held, not turned by a gate, or there was no axis."},
       {"r_total", "R turned",
@@ -192,7 +192,6 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   int line = 0;
   for (const auto& r : rows) {
     Row row{new QLabel(tr(r.name)), new QLabel};
-    row.name->setWordWrap(true);  // a narrow (presenter) panel wraps a name, never cuts it
     row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     row.value->setTextInteractionFlags(Qt::TextSelectableByMouse);
     row.value->setObjectName(QStringLiteral("covariance_%1").arg(QLatin1String(r.key)));

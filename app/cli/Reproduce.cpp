@@ -158,7 +158,10 @@ ConfigSpec readConfig(const Reader& r, const json& o, const std::string& path,
     const json& ps = o.at("params");
     if (!ps.is_object())
       r.fail(jsonPath(path, "params"), "expected an object of \"key\": \"value\"");
-    for (const auto& [k, v] : ps.items()) {
+    for (const auto& item : ps.items()) {
+      // (Not a structured binding: clang's C++20 cannot capture one in the lambda below.)
+      const std::string k = item.key();
+      const json& v = item.value();
       if (!v.is_string()) r.fail(jsonPath(jsonPath(path, "params"), k), "expected a string value");
       auto it =
           std::find_if(c.sets.begin(), c.sets.end(), [&](const auto& kv) { return kv.first == k; });

@@ -11,6 +11,21 @@ bool keyChar(char c) {
          c == '.' || c == '-';
 }
 
+/// A placeholder as quoted in a message: one line (control characters as spaces), at most 40
+/// bytes (cut on a UTF-8 character boundary, marked "...").
+std::string quoted(std::string_view spelling) {
+  constexpr std::size_t kMax = 40;
+  std::string out;
+  for (char c : spelling.substr(0, kMax + 1))
+    out += (static_cast<unsigned char>(c) < 0x20) ? ' ' : c;
+  if (out.size() > kMax) {
+    std::size_t end = kMax;
+    while (end > 0 && (static_cast<unsigned char>(out[end]) & 0xC0) == 0x80) --end;
+    out = out.substr(0, end) + "...";
+  }
+  return out;
+}
+
 bool fail(std::string* error, std::size_t at, const std::string& what) {
   if (error) *error = "placeholder at byte " + std::to_string(at) + ": " + what;
   return false;
@@ -20,25 +35,26 @@ bool fail(std::string* error, std::size_t at, const std::string& what) {
 bool parsePlaceholder(std::string_view body, std::size_t at, TextPlaceholder& out,
                       std::string* error) {
   out.spelling = std::string(body);
+  const std::string shown = quoted(body);
   std::string_view rest = body;
   if (const auto colon = rest.rfind(':'); colon != std::string_view::npos) {
     const std::string_view d = rest.substr(colon + 1);
     if (d.size() != 1 || d[0] < '0' || d[0] > '6')
-      return fail(error, at, "decimals after ':' must be one digit 0..6 in {" + out.spelling + "}");
+      return fail(error, at, "decimals after ':' must be one digit 0..6 in {" + shown + "}");
     out.decimals = d[0] - '0';
     rest = rest.substr(0, colon);
   }
   if (!rest.empty() && rest.back() == ']') {
     const auto open = rest.rfind('[');
     if (open == std::string_view::npos)
-      return fail(error, at, "']' without '[' in {" + out.spelling + "}");
+      return fail(error, at, "']' without '[' in {" + shown + "}");
     const std::string_view digits = rest.substr(open + 1, rest.size() - open - 2);
     if (digits.empty() || digits.size() > 4)
-      return fail(error, at, "the index in {" + out.spelling + "} must be 0..9999");
+      return fail(error, at, "the index in {" + shown + "} must be 0..9999");
     int index = 0;
     for (char c : digits) {
       if (c < '0' || c > '9')
-        return fail(error, at, "the index in {" + out.spelling + "} must be 0..9999");
+        return fail(error, at, "the index in {" + shown + "} must be 0..9999");
       index = index * 10 + (c - '0');
     }
     out.index = index;
@@ -49,11 +65,11 @@ bool parsePlaceholder(std::string_view body, std::size_t at, TextPlaceholder& ou
     out.compare = true;
     rest.remove_prefix(kCompare.size());
   }
-  if (rest.empty()) return fail(error, at, "empty key in {" + out.spelling + "}");
+  if (rest.empty()) return fail(error, at, "empty key in {" + shown + "}");
   for (char c : rest)
     if (!keyChar(c))
       return fail(error, at,
-                  "key characters are letters, digits, '_', '.', '-' in {" + out.spelling + "}");
+                  "key characters are letters, digits, '_', '.', '-' in {" + shown + "}");
   out.key = std::string(rest);
   return true;
 }

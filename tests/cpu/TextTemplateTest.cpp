@@ -74,6 +74,16 @@ TEST(TextTemplate, MalformedPlaceholdersAreRefusedNamingWhereAndWhat) {
   EXPECT_NE(error.find("byte 11"), std::string::npos) << error;
 }
 
+TEST(TextTemplate, AMessageQuotesAPlaceholderOnOneShortLine) {
+  // A brace left open across paragraphs (a fuzzer's finding): the message stays one line.
+  std::string error;
+  const std::string text = "{error" + std::string(300, 'x') + "\n\nmore text:9}";
+  EXPECT_FALSE(TextTemplate::parse(text, &error));
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  EXPECT_LT(error.size(), 160u) << error;
+  EXPECT_NE(error.find("..."), std::string::npos) << error;
+}
+
 TEST(TextTemplate, ValuesReadAsThreeSignificantDigitsWithoutExponents) {
   EXPECT_EQ(formatTextValue(0.7462, -1), "0.746");
   EXPECT_EQ(formatTextValue(0.000746, -1), "0.000746");

@@ -5,16 +5,23 @@
 #include "core/Renderer.h"
 
 namespace sl {
+namespace {
+/// The side's own number for a built-in key ({error_pct}, {frame_ms}, {memory_mb}); nullptr
+/// when `p` names a publication instead.
+const std::optional<double>* builtin(const TextPlaceholder& p, const LiveSide& side) {
+  if (p.index >= 0) return nullptr;
+  if (p.key == kLiveErrorKey) return &side.errorPct;
+  if (p.key == kLiveFrameKey) return &side.frameMs;
+  if (p.key == kLiveMemoryKey) return &side.memoryMB;
+  return nullptr;
+}
+}  // namespace
 
 std::optional<double> liveValue(const TextPlaceholder& p, const LiveSide& main,
                                 const LiveSide* compare) {
   const LiveSide* side = p.compare ? compare : &main;
   if (!side) return std::nullopt;
-  if (p.index < 0) {
-    if (p.key == kLiveErrorKey) return side->errorPct;
-    if (p.key == kLiveFrameKey) return side->frameMs;
-    if (p.key == kLiveMemoryKey) return side->memoryMB;
-  }
+  if (const std::optional<double>* own = builtin(p, *side)) return *own;
   if (!side->publication) return std::nullopt;
   const Publication& pub = *side->publication;
   if (p.index < 0) {
@@ -34,9 +41,7 @@ std::set<std::string> livePublicationKeys(const std::string& text, bool compare)
   if (!t) return keys;
   for (const TextPlaceholder& p : t->placeholders()) {
     if (p.compare != compare) continue;
-    if (p.index < 0 &&
-        (p.key == kLiveErrorKey || p.key == kLiveFrameKey || p.key == kLiveMemoryKey))
-      continue;
+    if (builtin(p, LiveSide{})) continue;
     keys.insert(p.key);
   }
   return keys;

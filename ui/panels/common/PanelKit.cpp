@@ -293,30 +293,28 @@ int ImageView::legendWidth() const {
   return std::min(w + 6, kMaxLegendWidth);
 }
 
+int ImageView::wrappedHeight(const QString& text) const {
+  return fontMetrics()
+             .boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
+                           Qt::TextWordWrap | Qt::AlignLeft, text)
+             .height() +
+         4;
+}
+
 bool ImageView::captionWraps() const {
   // Wrapped while that leaves the image most of the widget; a caption that would take more
   // than a third of it (a long sentence over a small view) stays on one line, elided.
-  const QRect bounds =
-      fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
-                                 Qt::TextWordWrap | Qt::AlignLeft, caption_);
-  return bounds.height() + 4 <= std::max(fontMetrics().height() + 4, height() / 3);
+  return wrappedHeight(caption_) <= std::max(fontMetrics().height() + 4, height() / 3);
 }
 
 int ImageView::captionHeight() const {
   if (caption_.isEmpty()) return 0;
-  if (!captionWraps()) return fontMetrics().height() + 4;
-  const QRect bounds =
-      fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
-                                 Qt::TextWordWrap | Qt::AlignLeft, caption_);
-  return bounds.height() + 4;
+  return captionWraps() ? wrappedHeight(caption_) : fontMetrics().height() + 4;
 }
+
 int ImageView::readoutHeight(const QString& readout) const {
   const int line = fontMetrics().height() + 4;
-  if (readout.isEmpty()) return line;
-  const QRect bounds =
-      fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
-                                 Qt::TextWordWrap | Qt::AlignLeft, readout);
-  return std::max(line, bounds.height() + 4);
+  return readout.isEmpty() ? line : std::max(line, wrappedHeight(readout));
 }
 
 QRectF ImageView::viewArea() const {

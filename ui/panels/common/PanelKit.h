@@ -129,6 +129,7 @@ class ImageView : public QWidget {
   /// a caption or a readout is never cut, the image gets what is left.
   int captionHeight() const;
   bool captionWraps() const;
+  int wrappedHeight(const QString& text) const;  ///< `text` wrapped to the widget's width
   int readoutHeight(const QString& readout) const;
   QString legendTick(float t) const;  ///< the colour bar's label at t in [0, 1]
   QRectF viewArea() const;            ///< the part of the widget available to the image

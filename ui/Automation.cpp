@@ -1,6 +1,8 @@
 // Scripted control of the window (see Automation.h).
 #include "Automation.h"
 
+#include "RenderService.h"
+
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QLabel>
@@ -23,8 +25,8 @@ ViewportWidget& Automation::viewport() const {
   return *w_.viewport();
 }
 
-sl::Renderer* Automation::renderer() const {
-  return w_.viewport()->renderer();
+sl::ViewSide* Automation::mainSide() const {
+  return w_.viewport()->mainSide();
 }
 
 void Automation::whenReady(std::function<void()> ready, std::function<void(const QString&)> failed,
@@ -48,7 +50,7 @@ void Automation::whenReady(std::function<void()> ready, std::function<void(const
                 failed(tr("the renderer did not start within %1 s").arg(timeoutMs / 1000));
                 return;
               }
-              w_.viewport()->update();
+              w_.viewport()->requestFrame();
               return;
             }
             timer->stop();
@@ -75,11 +77,11 @@ bool Automation::openLesson(const QString& lesson, int caseIndex) {
 }
 
 std::optional<QString> Automation::setParameter(const QString& keyEqualsValue) {
-  sl::Renderer* r = renderer();
+  sl::ViewSide* r = mainSide();
   if (!r) return tr("no renderer yet");
   if (auto e = assignParameter(r->params(), r->rendererParams(), keyEqualsValue.toStdString()))
     return QString::fromStdString(*e);
-  w_.viewport()->update();
+  w_.viewport()->requestFrame();
   return std::nullopt;
 }
 
@@ -91,7 +93,7 @@ bool Automation::waitForSettled(int timeoutMs) {
   QElapsedTimer clock;
   clock.start();
   while (w_.lessons()->settling()) {
-    w_.viewport()->update();
+    w_.viewport()->requestFrame();
     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     if (clock.elapsed() > timeoutMs) return false;
   }
@@ -115,7 +117,7 @@ ViewportWidget::Readouts Automation::viewReadouts() const {
 }
 
 const sl::Publication* Automation::publication() const {
-  const sl::Renderer* r = renderer();
+  const sl::ViewSide* r = mainSide();
   return r ? &r->publication() : nullptr;
 }
 
@@ -125,6 +127,37 @@ QImage Automation::grabWindow() const {
 
 QImage Automation::grabView() const {
   return w_.grabViewFullSize();
+}
+
+QImage Automation::renderedFrame() const {
+  w_.viewport()->renderFullSizeNow();
+  return w_.viewport()->renderedImage();
+}
+
+namespace {
+/// Runs `read` on the render thread with the main renderer (nothing before it exists).
+template <typename T, typename Read>
+T readMain(ViewportWidget& view, Read read) {
+  T out{};
+  view.service().call([&](RenderContext& c) {
+    if (sl::Renderer* r = c.existing("main")) out = read(*r);
+  });
+  return out;
+}
+}  // namespace
+
+std::optional<sl::PixelProbe> Automation::probePixel(int x, int y) const {
+  return readMain<std::optional<sl::PixelProbe>>(
+      *w_.viewport(), [x, y](sl::Renderer& r) { return r.probePixel(x, y); });
+}
+
+sl::Renderer::ErrorResult Automation::computeError() const {
+  return readMain<sl::Renderer::ErrorResult>(*w_.viewport(),
+                                             [](sl::Renderer& r) { return r.computeError(); });
+}
+
+sl::FrameReadback Automation::readback() const {
+  return readMain<sl::FrameReadback>(*w_.viewport(), [](sl::Renderer& r) { return r.readback(); });
 }
 
 }  // namespace sl::ui

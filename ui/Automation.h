@@ -15,6 +15,7 @@
 #include <QString>
 
 #include "ViewportWidget.h"
+#include "core/Renderer.h"
 
 namespace sl {
 struct Publication;
@@ -35,8 +36,8 @@ class Automation : public QObject {
 
   MainWindow& window() const { return w_; }
   ViewportWidget& viewport() const;
-  /// The main renderer, or null before the GL context exists (or after it failed).
-  sl::Renderer* renderer() const;
+  /// The main side (technique, parameters, last frame), or null before the render service is ready.
+  sl::ViewSide* mainSide() const;
 
   /// Calls `ready` from the event loop once the renderer is bound, has drawn two frames and
   /// a lesson being opened has settled; `failed` with the reason when the renderer failed or
@@ -76,6 +77,17 @@ class Automation : public QObject {
   /// rendered for it at full size (never the adaptive resolution's reduced frame).
   QImage grabWindow() const;
   QImage grabView() const;
+  /// The view's frame as rendered (both halves, no overlay; device pixels), a frame of the
+  /// current view drawn first when the one shown is older.
+  QImage renderedFrame() const;
+
+  // Reads of the main renderer's last frame, run on the render thread (the UI waits).
+  /// The pixel (x, y) of the last frame (internal pixels), or nothing outside it.
+  std::optional<sl::PixelProbe> probePixel(int x, int y) const;
+  /// The exact error of the last frame (its readback, the reference mask and the stats).
+  sl::Renderer::ErrorResult computeError() const;
+  /// The last frame's per-pixel data.
+  sl::FrameReadback readback() const;
 
  private:
   MainWindow& w_;

@@ -1,27 +1,17 @@
-// OpenGL context requirements of the GUI: the surface format every window asks for
-// (4.5 core, debug) and a check that names what a context lacks. No GL headers here.
+// OpenGL requirement of the GUI, checked before any window opens: the render service's
+// context (surfaceless EGL, OpenGL 4.5 core, as the CLI's) is created once on a thread of its
+// own and its problem named. The UI thread itself never makes a context current.
 #pragma once
 
 #include <optional>
 
 #include <QString>
 
-class QOpenGLContext;
-class QSurfaceFormat;
-
 namespace sl::ui {
 
-/// 4.5 core profile with the debug flag, 24-bit depth, 8-bit stencil. Set it as the
-/// default (QSurfaceFormat::setDefaultFormat) before the QApplication is created.
-QSurfaceFormat requiredSurfaceFormat();
-
-/// An error naming what `context` lacks (not valid, version below 4.5, not core), or
-/// nothing when the renderer can use it.
-std::optional<QString> checkContext(const QOpenGLContext& context);
-
-/// Creates a throw-away context on an offscreen surface and checks it, so that a missing
-/// GL 4.5 is reported before any window opens. On success `description` gets the
-/// GL_RENDERER string.
+/// Creates a throw-away render context on a separate thread and checks it, so that a missing
+/// OpenGL 4.5 is reported before any window opens. On success `description` gets the
+/// driver's GL_RENDERER and version.
 std::optional<QString> probeOpenGL(QString* description = nullptr);
 
 }  // namespace sl::ui

@@ -61,7 +61,7 @@ void GrabRun::tick() {
     return;
   }
   if (framesRendered_ < frames_ || w_.lessons()->settling()) {
-    w_.viewport()->update();
+    w_.viewport()->requestFrame();
     return;
   }
   timer_.stop();
@@ -76,7 +76,7 @@ void GrabRun::finish() {
   w_.waitForFrames(1);  // the error overlay, when on, needs a frame drawn with the reference
   viewport->setPaused(true, false);
   QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-  if (const sl::Renderer* r = viewport->renderer()) w_.docks().feed(*r, true);
+  if (const sl::ViewSide* r = viewport->mainSide()) w_.docks().feed(*r, true);
 
   QStringList failures;
   if (!QDir().mkpath(dir_)) failures << tr("cannot create directory %1").arg(dir_);
@@ -128,7 +128,7 @@ QStringList GrabRun::writeImages(const QString& dirPath, bool printPaths) {
 QJsonObject GrabRun::publicationJson() const {
   QJsonObject o;
   const ViewportWidget* viewport = w_.viewport();
-  const sl::Renderer* r = viewport->renderer();
+  const sl::ViewSide* r = viewport->mainSide();
   if (!r) return o;
   const sl::Publication& pub = r->publication();
   o[QStringLiteral("frame")] = static_cast<qint64>(pub.frameIndex);
@@ -144,7 +144,7 @@ QJsonObject GrabRun::publicationJson() const {
   // The parameters this frame rendered with, as the Parameters dock shows them (the
   // technique's own and the shared ones): what a preset or lesson set can be checked here.
   QJsonObject params;
-  sl::Renderer* live = w_.viewport()->renderer();  // the parameter sets are reached non-const
+  sl::ViewSide* live = w_.viewport()->mainSide();  // the parameter sets are reached non-const
   for (const sl::ParamSet* set : {&live->params(), &live->rendererParams()})
     for (const sl::ParamDecl& d : set->decls())
       params[QString::fromStdString(d.key)] = QString::fromStdString(set->format(d.key));

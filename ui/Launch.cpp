@@ -9,7 +9,6 @@
 
 #include <QApplication>
 #include <QMessageBox>
-#include <QSurfaceFormat>
 
 #include "Launch.h"
 
@@ -66,7 +65,6 @@ int runGui(int& argc, char** argv, const WindowScript& script) {
     return 1;
   }
   // The GL context format must be the default before the application exists.
-  QSurfaceFormat::setDefaultFormat(requiredSurfaceFormat());
   QApplication app(argc, argv);
   setApplicationNames();
   QApplication::setApplicationDisplayName(QStringLiteral("ShadowLab"));

@@ -290,7 +290,7 @@ void LessonController::apply(int index, int caseIndex) {
   QStringList assignments;
   for (const auto& [key, value] : p.params)
     assignments << QString::fromStdString(key + "=" + value);
-  if (sl::Renderer* r = w.viewport()->renderer()) {
+  if (sl::ViewSide* r = w.viewport()->mainSide()) {
     r->params().resetToDefaults();
     r->rendererParams().resetToDefaults();
     for (const QString& kv : assignments)
@@ -334,10 +334,10 @@ void LessonController::apply(int index, int caseIndex) {
     w.lessonDock()->raise();
   }
   w.updateBanner();
-  if (w.viewport()->renderer())
+  if (w.viewport()->mainSide())
     settle();
   else
-    w.viewport()->update();  // settled when the renderer starts (MainWindow::onRendererReady)
+    w.viewport()->requestFrame();  // settled when the renderer starts (MainWindow::onRendererReady)
 }
 
 void LessonController::queueSettle() {
@@ -358,13 +358,13 @@ void LessonController::queueSettle() {
 
 void LessonController::settle() {
   MainWindow& w = w_;
-  sl::Renderer* r = w.viewport()->renderer();
+  sl::ViewSide* r = w.viewport()->mainSide();
   if (!r || settling_) return;
   settling_ = true;  // from here: what waits for the lesson waits, even in the events below
   // The layout's resizes first: the rotation depends on the view's aspect (the importance
   // follows the view frustum), so it must start from the size the lesson is shown at.
   QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-  r = w.viewport()->renderer();
+  r = w.viewport()->mainSide();
   if (!r) {
     settling_ = false;
     return;
@@ -376,7 +376,7 @@ void LessonController::settle() {
   if (!temporal || w.viewport()->paused()) {
     settling_ = false;
     if (w.viewport()->paused()) w.viewport()->stepFrame();
-    w.viewport()->update();
+    w.viewport()->requestFrame();
     return;
   }
   settled_ = false;
@@ -406,7 +406,7 @@ void LessonController::settle() {
                      tr("The rotation still turns after %1 frames: it never holds with these "
                         "parameters.")
                          .arg(settleFrames_));
-  w.viewport()->update();
+  w.viewport()->requestFrame();
 }
 
 QString LessonController::bannerTitle() const {

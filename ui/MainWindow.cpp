@@ -355,7 +355,7 @@ void MainWindow::setPendingAssignments(const QStringList& assignments) {
 }
 
 void MainWindow::rebuildParamPanel() {
-  sl::Renderer* renderer = viewport_->renderer();
+  sl::ViewSide* renderer = viewport_->mainSide();
   if (!renderer) return paramPanel_->clear();
   const sl::TechniqueInfo* info = sl::Renderer::findTechnique(renderer->techniqueId());
   std::vector<ParamPanel::Section> sections;
@@ -369,7 +369,7 @@ void MainWindow::rebuildParamPanel() {
 // --- Renderer events ----------------------------------------------------------------------
 
 void MainWindow::onRendererReady() {
-  sl::Renderer* renderer = viewport_->renderer();
+  sl::ViewSide* renderer = viewport_->mainSide();
   if (!renderer) return;
   for (const QString& kv : pendingAssignments_)
     if (auto error =
@@ -388,11 +388,11 @@ void MainWindow::onRendererReady() {
   teaching_->restoreSplit();
   lessons_->queueSettle();  // a lesson chosen before the renderer started
   updateTitle();
-  const QString gl = QString::fromStdString(renderer->glDescription());
+  const QString gl = viewport_->glDescription();
   glLabel_->setText(shortGlName(gl));
   glLabel_->setToolTip(gl);
   info(tr("Renderer ready: %1").arg(shortGlName(gl)));
-  viewport_->update();
+  viewport_->requestFrame();
 }
 
 void MainWindow::onRendererAboutToBeDestroyed() {
@@ -403,7 +403,7 @@ void MainWindow::onRendererAboutToBeDestroyed() {
 }
 
 void MainWindow::onFrameRendered() {
-  const sl::Renderer* renderer = viewport_->renderer();
+  const sl::ViewSide* renderer = viewport_->mainSide();
   if (!renderer) return;
   splitSide_->onFrameRendered();
   const sl::FrameStats& stats = renderer->stats();
@@ -593,7 +593,7 @@ void MainWindow::report(const QString& message, const QString& dialogTitle) {
 
 void MainWindow::onChartsConfigurationChosen(const QString& id, const QStringList& assignments) {
   if (id.toStdString() != viewport_->techniqueId()) setTechnique(id);
-  sl::Renderer* r = viewport_->renderer();
+  sl::ViewSide* r = viewport_->mainSide();
   if (!r || id.toStdString() != r->techniqueId()) return;
   for (const QString& a : assignments) {
     const std::string key = a.section(QLatin1Char('='), 0, 0).toStdString();
@@ -602,12 +602,12 @@ void MainWindow::onChartsConfigurationChosen(const QString& id, const QStringLis
       report(QString::fromStdString(*e));
   }
   rebuildParamPanel();
-  viewport_->update();
+  viewport_->requestFrame();
   info(tr("Charts: showing %1 %2").arg(id, assignments.join(QLatin1Char(' '))));
 }
 
 std::string MainWindow::fillLiveText(const std::string& text) const {
-  auto side = [this](const sl::Renderer* r, std::optional<double> errorPct, bool failed) {
+  auto side = [this](const sl::ViewSide* r, std::optional<double> errorPct, bool failed) {
     sl::LiveSide s;
     if (!r) return s;
     s.errorPct = errorPct;
@@ -627,9 +627,9 @@ std::string MainWindow::fillLiveText(const std::string& text) const {
   if (!viewport_) return sl::fillLiveText(text, {}, nullptr);
   const bool failed = !viewport_->frameFailure().isEmpty();
   const sl::LiveSide left =
-      side(viewport_->renderer(),
+      side(viewport_->mainSide(),
            failed ? std::nullopt : live(viewport_->errorPct(), viewport_->liveError()), failed);
-  const sl::Renderer* split = viewport_->currentSplitRenderer();
+  const sl::ViewSide* split = viewport_->splitSide();
   const sl::LiveSide right = side(
       split, failed ? std::nullopt : live(viewport_->splitErrorPct(), viewport_->splitLiveError()),
       failed);
@@ -637,7 +637,7 @@ std::string MainWindow::fillLiveText(const std::string& text) const {
 }
 
 void MainWindow::updatePublishing() {
-  sl::Renderer* r = viewport_ ? viewport_->renderer() : nullptr;
+  sl::ViewSide* r = viewport_ ? viewport_->mainSide() : nullptr;
   if (!r) return;
   viewport_->setProbeWanted(docks_.probeWanted());
   std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
@@ -688,7 +688,7 @@ bool MainWindow::waitForFrames(int frames, int timeoutMs) {
   QElapsedTimer clock;
   clock.start();
   while (viewport_->framesRendered() < target) {
-    viewport_->update();
+    viewport_->requestFrame();
     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     if (clock.elapsed() > timeoutMs) return false;
   }

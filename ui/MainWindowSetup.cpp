@@ -110,8 +110,8 @@ void MainWindow::createActions() {
                              : tr("error n/a (%1)").arg(viewport_->errorNotMeasured()));
   });
   QAction* resetTemporal = view->addAction(tr("Reset &temporal state"), this, [this] {
-    if (auto* r = viewport_->renderer()) r->resetTemporalState();
-    viewport_->update();
+    if (auto* r = viewport_->mainSide()) r->resetTemporalState();
+    viewport_->requestFrame();
   });
   resetTemporal->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
   view->addSeparator();
@@ -281,7 +281,7 @@ void MainWindow::createDocks() {
   connect(paramPanel_, &ParamPanel::paramChanged, this, [this](const QString& key) {
     if (key.isEmpty() || key == kOverlayKey) teaching_->syncOverlayCombo();
     if (viewport_->paused()) viewport_->stepFrame();  // show the change even when paused
-    viewport_->update();
+    viewport_->requestFrame();
   });
   connect(paramPanel_, &ParamPanel::editRefused, this,
           [this](const QString& message) { report(message); });
@@ -487,9 +487,9 @@ void MainWindow::createPanelDocks() {
             [this, id = d.entry.id](bool open) { docks_.setOpenedByHand(id, open); });
     connect(d.dock, &QDockWidget::visibilityChanged, this, [this, p = d.panel](bool visible) {
       updatePublishing();
-      if (!visible || !viewport_ || !viewport_->renderer()) return;  // (window being destroyed)
-      if (docks_.isCurrent(*viewport_->renderer(), false))
-        p->showPublication(viewport_->renderer()->publication());
+      if (!visible || !viewport_ || !viewport_->mainSide()) return;  // (window being destroyed)
+      if (docks_.isCurrent(*viewport_->mainSide(), false))
+        p->showPublication(viewport_->mainSide()->publication());
       else
         viewport_->stepFrame();  // the last frame did not publish its keys: draw one
     });

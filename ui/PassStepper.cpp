@@ -21,7 +21,7 @@ PassStepper::PassStepper(MainWindow& window) : QObject(&window), w_(window) {}
 
 void PassStepper::buildSteps() {
   steps_.clear();
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   const sl::TechniqueInfo* info = r ? sl::Renderer::findTechnique(r->techniqueId()) : nullptr;
   if (!info) return;
   // The passes this frame runs (a pass of one rmsm.render value only while it holds).
@@ -32,12 +32,12 @@ void PassStepper::buildSteps() {
 
 void PassStepper::step(int delta) {
   MainWindow& w = w_;
-  if (!w.viewport()->renderer()) return;
+  if (!w.viewport()->mainSide()) return;
   if (!active()) {
     pausedBefore_ = w.viewport()->paused();
     if (!w.viewport()->paused()) w.setPaused(true);
     w.passStopAction()->setEnabled(true);
-    if (w.docks().isCurrent(*w.viewport()->renderer(), true)) {
+    if (w.docks().isCurrent(*w.viewport()->mainSide(), true)) {
       index_ = 0;
       show();
     } else {  // the last frame did not publish every panel's keys: render one that does
@@ -66,7 +66,7 @@ void PassStepper::restartAtNextFrame() {
 }
 
 void PassStepper::onFrameRendered() {
-  if (!waitingForFrame_ || !w_.docks().isCurrent(*w_.viewport()->renderer(), true)) return;
+  if (!waitingForFrame_ || !w_.docks().isCurrent(*w_.viewport()->mainSide(), true)) return;
   waitingForFrame_ = false;
   index_ = 0;
   show();
@@ -74,7 +74,7 @@ void PassStepper::onFrameRendered() {
 
 void PassStepper::show() {
   MainWindow& w = w_;
-  const sl::Renderer* r = w.viewport()->renderer();
+  const sl::ViewSide* r = w.viewport()->mainSide();
   if (!r) return;
   w.docks().feed(*r, true);
   buildSteps();

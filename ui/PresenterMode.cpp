@@ -136,7 +136,7 @@ void PresenterMode::setActive(bool on) {
   }
   if (action_ && action_->isChecked() != on) action_->setChecked(on);
   w_.updatePublishing();
-  w_.viewport()->update();
+  w_.viewport()->requestFrame();
 }
 
 void PresenterMode::setFullPanel(bool on) {
@@ -163,7 +163,7 @@ void PresenterMode::setFullPanel(bool on) {
   }
   arrangeDocks();
   if (fullPanelAction_ && fullPanelAction_->isChecked() != on) fullPanelAction_->setChecked(on);
-  w_.viewport()->update();
+  w_.viewport()->requestFrame();
 }
 
 void PresenterMode::arrangeDocks() {

@@ -1,6 +1,8 @@
 // The publication panels' docks and their requests (see PublicationDocks.h).
 #include "PublicationDocks.h"
 
+#include "core/ViewSide.h"
+
 #include <algorithm>
 
 #include <QDockWidget>
@@ -27,14 +29,14 @@ std::set<std::string> PublicationDocks::keys(bool all) const {
   return keys;
 }
 
-bool PublicationDocks::isCurrent(const sl::Renderer& renderer, bool all) const {
+bool PublicationDocks::isCurrent(const sl::ViewSide& renderer, bool all) const {
   const sl::Publication& pub = renderer.publication();
   if (pub.frameIndex == 0 || pub.frameIndex != renderer.stats().frameIndex) return false;
   const std::set<std::string> wanted = keys(all);
   return std::includes(pub.requested.begin(), pub.requested.end(), wanted.begin(), wanted.end());
 }
 
-void PublicationDocks::feed(const sl::Renderer& renderer, bool all) const {
+void PublicationDocks::feed(const sl::ViewSide& renderer, bool all) const {
   if (renderer.publication().frameIndex == 0) return;
   for (const Dock& d : docks_)
     if (all || d.dock->isVisible()) d.panel->showPublication(renderer.publication());

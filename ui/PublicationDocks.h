@@ -16,6 +16,7 @@
 class QDockWidget;
 namespace sl {
 struct TechniqueInfo;
+class ViewSide;
 }
 
 namespace sl::ui {
@@ -36,9 +37,9 @@ class PublicationDocks {
   /// The keys of the visible panels (`all`: of every panel).
   std::set<std::string> keys(bool all) const;
   /// The renderer's last frame published (at least) what keys(all) asks for.
-  bool isCurrent(const sl::Renderer& renderer, bool all) const;
+  bool isCurrent(const sl::ViewSide& renderer, bool all) const;
   /// Hands the last publication to the visible panels (`all`: to every panel).
-  void feed(const sl::Renderer& renderer, bool all) const;
+  void feed(const sl::ViewSide& renderer, bool all) const;
 
   /// After a technique switch: the docks whose panel describes `info` (its own panel
   /// family) are shown and brought in front of their tab group, the others hidden, except

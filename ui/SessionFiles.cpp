@@ -68,7 +68,7 @@ sl::Preset SessionFiles::current(const QString& path) const {
   const QFileInfo sceneFile(w_.sceneSpec());
   p.scene = (sceneFile.isFile() ? sceneFile.absoluteFilePath() : w_.sceneSpec()).toStdString();
   p.technique = w_.viewport()->techniqueId();
-  if (sl::Renderer* r = w_.viewport()->renderer()) {
+  if (sl::ViewSide* r = w_.viewport()->mainSide()) {
     for (const sl::ParamSet* set : {&r->params(), &r->rendererParams()})
       for (const sl::ParamDecl& d : set->decls()) p.params[d.key] = set->format(d.key);
   }

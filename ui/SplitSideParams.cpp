@@ -71,7 +71,7 @@ QWidget* SplitSideParams::createDockWidget(ParamPanel* mainPanel) {
   area_->hide();
   connect(panel_, &ParamPanel::paramChanged, this, [this] {
     if (w_.viewport()->paused()) w_.viewport()->stepFrame();
-    w_.viewport()->update();
+    w_.viewport()->requestFrame();
   });
   connect(panel_, &ParamPanel::editRefused, this,
           [this](const QString& message) { w_.report(message); });
@@ -90,7 +90,7 @@ void SplitSideParams::clear() {
 
 void SplitSideParams::rebuild() {
   if (!panel_) return;
-  sl::Renderer* split = w_.viewport()->splitRenderer();
+  sl::ViewSide* split = w_.viewport()->splitSide();
   if (!split) {
     panel_->clear();
     box_->hide();
@@ -112,8 +112,8 @@ void SplitSideParams::rebuild() {
 }
 
 QString SplitSideParams::bytesText() const {
-  const sl::Renderer* main = w_.viewport()->renderer();
-  const sl::Renderer* split = w_.viewport()->currentSplitRenderer();
+  const sl::ViewSide* main = w_.viewport()->mainSide();
+  const sl::ViewSide* split = w_.viewport()->splitSide();
   if (!main || !split) return {};
   QString text = tr("Memory: left %1, right %2")
                      .arg(mib(main->stats().memory.bytes()), mib(split->stats().memory.bytes()));
@@ -130,7 +130,7 @@ void SplitSideParams::match() {
   if (!m) {
     matchNote_ = tr("Equal memory: %1").arg(QString::fromStdString(error));
     // Not again every frame: again when the left side's memory changes.
-    const sl::Renderer* main = w_.viewport()->renderer();
+    const sl::ViewSide* main = w_.viewport()->mainSide();
     if (main) matchedMainBytes_ = main->stats().memory.bytes();
     return;
   }
@@ -149,12 +149,12 @@ void SplitSideParams::match() {
 
 void SplitSideParams::onFrameRendered() {
   if (!box_ || box_->isHidden() || matching_) return;
-  const sl::Renderer* main = w_.viewport()->renderer();
+  const sl::ViewSide* main = w_.viewport()->mainSide();
   // Not here: this runs inside the view's frame (its GL context current); the match renders.
   if (equalMemory_->isChecked() && main &&
       (!matchedMainBytes_ || *matchedMainBytes_ != main->stats().memory.bytes()))
     QTimer::singleShot(0, this, [this] {
-      const sl::Renderer* r = w_.viewport()->renderer();
+      const sl::ViewSide* r = w_.viewport()->mainSide();
       if (r && equalMemory_->isChecked() &&
           (!matchedMainBytes_ || *matchedMainBytes_ != r->stats().memory.bytes())) {
         match();

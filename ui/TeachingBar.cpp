@@ -84,7 +84,7 @@ void TeachingBar::setRendererAvailable(bool on) {
 }
 
 void TeachingBar::syncOverlayCombo() {
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   const bool has = r && r->rendererParams().has(kOverlayParam.toStdString());
   overlayCombo_->setEnabled(has);
   if (!has) return;
@@ -95,7 +95,7 @@ void TeachingBar::syncOverlayCombo() {
 
 void TeachingBar::setOverlay(int value) {
   ViewportWidget* viewport = w_.viewport();
-  sl::Renderer* r = viewport->renderer();
+  sl::ViewSide* r = viewport->mainSide();
   if (!r) return;
   if (auto error = r->rendererParams().set(kOverlayParam.toStdString(), value)) {
     w_.report(QString::fromStdString(*error));
@@ -115,7 +115,7 @@ void TeachingBar::setOverlay(int value) {
 }
 
 void TeachingBar::cycleOverlay() {
-  const sl::Renderer* r = w_.viewport()->renderer();
+  const sl::ViewSide* r = w_.viewport()->mainSide();
   if (!r || overlayCombo_->count() == 0) return;
   const int next = (overlayCombo_->currentIndex() + 1) % overlayCombo_->count();
   setOverlay(overlayCombo_->itemData(next).toInt());

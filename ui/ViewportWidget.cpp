@@ -1,5 +1,6 @@
-// The 3D view (see ViewportWidget.h). Every renderer call that may touch GL runs with this
-// widget's context current; the widget itself issues no GL calls.
+// The 3D view (see ViewportWidget.h). It never calls GL: frames, errors, probes, figures and
+// the memory match run on the render service's thread (ViewFrame.h), and their results come
+// back as queued calls.
 #include "ViewportWidget.h"
 
 #include <algorithm>
@@ -9,15 +10,15 @@
 #include <QGuiApplication>
 #include <QKeyEvent>
 #include <QMouseEvent>
-#include <QOpenGLContext>
 #include <QPainter>
 #include <QWheelEvent>
 
-#include "GlSupport.h"
+#include "LightGizmo.h"
 #include "MessageText.h"
-#include "algo/MemoryMatch.h"
+#include "RenderService.h"
+#include "ViewFrame.h"
+#include "ViewOverlay.h"
 #include "common/shared_constants.h"
-#include "metrics/ErrorMetrics.h"
 
 namespace sl::ui {
 
@@ -43,18 +44,6 @@ bool isFlyKey(int key) {
   }
 }
 
-/// The error of a frame, or nothing when it measured nothing (no covered pixel): never a 0
-/// that was not measured.
-std::optional<double> errorPercentOf(const sl::ShadowErrorStats& stats) {
-  if (stats.covered == 0) return std::nullopt;
-  return stats.errorPct;
-}
-
-/// Why a frame's error is not a number ("no covered pixel"), for "error n/a (...)".
-QString unmeasuredReason(const sl::ShadowErrorStats& stats) {
-  return stats.covered == 0 ? QObject::tr("no covered pixel") : QString();
-}
-
 /// Index of `name` in the enum declaration of the shared parameter `key`, or -1.
 int enumIndexOf(const sl::ParamSet& params, const char* key, const char* name) {
   const sl::ParamDecl* d = params.find(key);
@@ -63,290 +52,15 @@ int enumIndexOf(const sl::ParamSet& params, const char* key, const char* name) {
     if (d->enumNames[i] == name) return static_cast<int>(i);
   return -1;
 }
-
-/// "name · error 0.420 % · [note ·] 3.1 ms": the error first (a narrow half elides the end),
-/// `errorNote` (the live reference's age) right after it.
-/// `unmeasured`: why there is no error (a failed frame, no covered pixel): "error n/a (why)"
-/// instead of "error —" (not computed yet).
-QString captionFor(const std::string& techniqueId, const sl::FrameStats& stats,
-                   std::optional<double> errorPct, const QString& errorNote = {},
-                   const QString& unmeasured = {}) {
-  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(techniqueId);
-  QString s = info ? QString::fromStdString(info->name) : QString::fromStdString(techniqueId);
-  s += errorPct               ? QStringLiteral("  \u00b7  error %1 %").arg(*errorPct, 0, 'f', 3)
-       : unmeasured.isEmpty() ? QStringLiteral("  \u00b7  error \u2014")
-                              : QStringLiteral("  \u00b7  error n/a (%1)").arg(unmeasured);
-  if (!errorNote.isEmpty()) s += QStringLiteral("  \u00b7  ") + errorNote;
-  s += QStringLiteral("  \u00b7  %1 ms").arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1);
-  return s;
-}
 }  // namespace
 
-/// Drawn over the GL view (a plain child widget, composited by Qt; no GL): the split view's
-/// right half, the captions, the banner, the pause badge and the overlay legends.
-class ViewOverlay : public QWidget {
- public:
-  explicit ViewOverlay(QWidget* parent) : QWidget(parent) {
-    setAttribute(Qt::WA_TransparentForMouseEvents);
-    setAttribute(Qt::WA_NoSystemBackground);
-  }
-
-  QImage split;  ///< right half (device pixels), null when the split view is off
-  QString leftCaption, rightCaption, bannerTitle, bannerText, pausedText;
-  enum class Legend { None, Error, Aliasing, WarpGrid, Changed } legend = Legend::None;
-  /// The outside view's line colours and what they stand for (empty: not in outside view).
-  QVector<QPair<QColor, QString>> outsideLegend;
-  /// The light gizmo (widget pixels): lines, and the light's own point when on screen.
-  QVector<QLineF> gizmoLines;
-  std::optional<QPointF> gizmoPoint;
-  QString errorNote;       ///< under the error legend: the reference's state, empty when current
-  QString resolutionNote;  ///< adaptive resolution: the internal size and why (empty: full)
-  /// The changed overlay's count (pixels whose hard test flipped since the last frame, of
-  /// those covered in both), or nothing yet.
-  std::optional<std::pair<std::uint64_t, std::uint64_t>> changedCount;
-  std::optional<QPointF> pointerRing;  ///< presenter mode's pointer highlight (widget px)
-  QImage zoomSource;                   ///< the zoom area's pixels, device pixels
-  QRect zoomArea;                      ///< widget pixels (empty: no inset)
-  QRect zoomDrag;                      ///< the rectangle being dragged (empty: none)
-  QRect insetRect;                     ///< where paintEvent drew the inset (widget px)
-  int insetFactor = 0;
-
-  /// The inset's place: the largest whole magnification of `zoomArea` that fits in 45 % of
-  /// the view's width and height, in the bottom-right corner.
-  void placeInset() {
-    insetRect = QRect();
-    insetFactor = 0;
-    if (zoomArea.isEmpty() || zoomSource.isNull()) return;
-    const int f = std::min(width() * 45 / 100 / zoomArea.width(),
-                           (height() - fontMetrics().height() - 34) * 45 / 100 / zoomArea.height());
-    if (f < 2) return;
-    insetFactor = f;
-    const QSize size(zoomArea.width() * f, zoomArea.height() * f);
-    // Above the bottom row of legends and captions (one line of text and their margins).
-    const int bottom = fontMetrics().height() + 34;
-    insetRect = QRect(QPoint(width() - size.width() - 14, height() - size.height() - bottom), size);
-  }
-
-  bool hasContent() const {
-    return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() || pointerRing ||
-           !zoomArea.isEmpty() || !zoomDrag.isEmpty() || changedCount || !pausedText.isEmpty() ||
-           legend != Legend::None || !gizmoLines.isEmpty() || gizmoPoint ||
-           !outsideLegend.isEmpty() || !resolutionNote.isEmpty();
-  }
-
- protected:
-  void paintEvent(QPaintEvent*) override {
-    QPainter p(this);
-    p.setRenderHint(QPainter::Antialiasing);
-    const QFontMetrics fm = fontMetrics();
-    const int line = fm.height();
-    QColor boxColor(20, 22, 25, 200);
-    auto box = [&](const QRectF& r) {
-      p.setPen(Qt::NoPen);
-      p.setBrush(boxColor);
-      p.drawRoundedRect(r, 5, 5);
-    };
-    int bottomInset = 8;
-    if (!gizmoLines.isEmpty() || gizmoPoint) {  // the light (Alt+drag moves it)
-      p.setPen(QPen(QColor(255, 214, 60, 230), 1.6));
-      p.drawLines(gizmoLines);
-      if (gizmoPoint) {
-        p.setBrush(QColor(255, 230, 120, 230));
-        p.drawEllipse(*gizmoPoint, 6.0, 6.0);
-      }
-    }
-    if (!split.isNull()) {
-      const int half = width() / 2;
-      p.drawImage(QRect(half, 0, width() - half, height()), split);
-      p.setPen(QPen(QColor(255, 255, 255, 220), 2));
-      p.drawLine(half, 0, half, height());
-      // The captions wrap (never cut: the error is the number a comparison is about).
-      int captionsH = line;
-      for (int side = 0; side < 2; ++side) {
-        const QString& text = side == 0 ? leftCaption : rightCaption;
-        const int x0 = side == 0 ? 0 : half;
-        const int w = side == 0 ? half : width() - half;
-        const int tw = std::min(w - 16, fm.horizontalAdvance(text) + 16);
-        const QRect bounds = fm.boundingRect(QRect(0, 0, std::max(1, tw - 8), 10000),
-                                             Qt::TextWordWrap | Qt::AlignCenter, text);
-        const int th = std::max(line, bounds.height());
-        captionsH = std::max(captionsH, th);
-        const QRectF r(x0 + (w - tw) / 2.0, height() - th - 18, tw, th + 10);
-        box(r);
-        p.setPen(Qt::white);
-        p.drawText(r.adjusted(4, 0, -4, 0), Qt::AlignCenter | Qt::TextWordWrap, text);
-      }
-      bottomInset = captionsH + 26;
-    }
-    if (!bannerTitle.isEmpty() || !bannerText.isEmpty()) {
-      const int w = std::min(width() - 24, std::max(360, width() * 2 / 3));
-      QFont bold = font();
-      bold.setBold(true);
-      const QRect textRect(0, 0, w - 20, 10000);
-      const QRect textBounds =
-          fm.boundingRect(textRect, Qt::TextWordWrap | Qt::AlignLeft, bannerText);
-      const QRect titleBounds = QFontMetrics(bold).boundingRect(
-          textRect, Qt::TextWordWrap | Qt::AlignLeft, bannerTitle);  // wrapped, never cut
-      const int titleH = bannerTitle.isEmpty() ? 0 : titleBounds.height() + 4;
-      const QRectF r(12, 10, w, titleH + (bannerText.isEmpty() ? 0 : textBounds.height()) + 14);
-      boxColor = QColor(20, 22, 25, 215);
-      box(r);
-      p.setPen(QColor(255, 200, 60));
-      p.setFont(bold);
-      p.drawText(QRectF(r.left() + 10, r.top() + 6, w - 20, titleH),
-                 Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, bannerTitle);
-      p.setFont(font());
-      p.setPen(Qt::white);
-      p.drawText(QRectF(r.left() + 10, r.top() + 7 + titleH, w - 20, textBounds.height() + 2),
-                 Qt::TextWordWrap | Qt::AlignLeft, bannerText);
-      boxColor = QColor(20, 22, 25, 200);
-    }
-    if (!pausedText.isEmpty()) {
-      const int tw = fm.horizontalAdvance(pausedText) + 20;
-      const QRectF r(width() - tw - 12, bannerTitle.isEmpty() && bannerText.isEmpty() ? 10 : 10, tw,
-                     line + 10);
-      boxColor = QColor(150, 40, 40, 220);
-      box(r);
-      boxColor = QColor(20, 22, 25, 200);
-      p.setPen(Qt::white);
-      p.drawText(r, Qt::AlignCenter, pausedText);
-    }
-    if (!outsideLegend.isEmpty()) {  // top right, under the pause badge
-      int tw = fm.horizontalAdvance(tr("OUTSIDE VIEW (V)"));
-      for (const auto& [colour, text] : outsideLegend)
-        tw = std::max(tw, fm.horizontalAdvance(text));
-      tw += 44;
-      const int rows = int(outsideLegend.size()) + 1;
-      const QRectF r(width() - tw - 12, line + 28, tw, rows * line + 12);
-      box(r);
-      p.setPen(QColor(255, 200, 60));
-      p.drawText(QRectF(r.left() + 10, r.top() + 6, tw - 16, line),
-                 Qt::AlignLeft | Qt::AlignVCenter, tr("OUTSIDE VIEW (V)"));
-      for (int i = 0; i < int(outsideLegend.size()); ++i) {
-        const double y = r.top() + 6 + (i + 1) * line;
-        p.fillRect(QRectF(r.left() + 10, y + line / 2.0 - 1.5, 18, 3), outsideLegend[i].first);
-        p.setPen(Qt::white);
-        p.drawText(QRectF(r.left() + 34, y, tw - 40, line), Qt::AlignLeft | Qt::AlignVCenter,
-                   outsideLegend[i].second);
-      }
-    }
-    if (!resolutionNote.isEmpty()) {  // bottom right: the view is not at full size
-      const int tw = std::min(width() - 24, fm.horizontalAdvance(resolutionNote) + 20);
-      const int th =
-          std::max(line, fm.boundingRect(QRect(0, 0, std::max(1, tw - 8), 10000),
-                                         Qt::TextWordWrap | Qt::AlignCenter, resolutionNote)
-                             .height());
-      const QRectF r(width() - tw - 12, height() - bottomInset - th - 10, tw, th + 10);
-      box(r);
-      p.setPen(QColor(255, 200, 60));
-      p.drawText(r.adjusted(4, 0, -4, 0), Qt::AlignCenter | Qt::TextWordWrap, resolutionNote);
-    }
-    if (legend == Legend::Aliasing) {
-      // Same colours as aliasingColor() in shaders/common/composite.frag (log2 m in -4..4,
-      // blended at 70 % over the shaded scene there).
-      // As wide as its caption (and at least the bar's 260 px), never cutting it.
-      const QString caption = tr("texels per pixel m (red: undersampled)");
-      const double legendW =
-          std::min<double>(width() - 24, std::max(260, fm.horizontalAdvance(caption) + 24));
-      const QRectF r(12, height() - bottomInset - 2 * line - 30, legendW, 2 * line + 22);
-      box(r);
-      const QRectF bar(r.left() + 10, r.top() + 8, r.width() - 20, 10);
-      for (int i = 0; i < int(bar.width()); ++i) {
-        const double t = (i + 0.5) / bar.width() * 2.0 - 1.0;  // log2(m) / 4
-        const QColor blue(38, 89, 242), red(230, 26, 26);
-        const QColor end = t < 0 ? blue : red;
-        const double f = std::abs(t);
-        p.fillRect(QRectF(bar.left() + i, bar.top(), 1, bar.height()),
-                   QColor::fromRgbF(1 + (end.redF() - 1) * f, 1 + (end.greenF() - 1) * f,
-                                    1 + (end.blueF() - 1) * f));
-      }
-      p.setPen(Qt::white);
-      const QRectF labels(bar.left(), bar.bottom() + 2, bar.width(), line);
-      p.drawText(labels, Qt::AlignLeft, QStringLiteral("m \u2264 1/16"));
-      p.drawText(labels, Qt::AlignHCenter, QStringLiteral("1"));
-      p.drawText(labels, Qt::AlignRight, QStringLiteral("\u2265 16"));
-      p.drawText(QRectF(bar.left(), labels.bottom(), bar.width(), line), Qt::AlignHCenter, caption);
-    } else if (legend == Legend::Error) {
-      const QString a = tr("false lit (light leak)"), b = tr("false shadowed");
-      const QString& note = errorNote;
-      const int tw =
-          std::max({fm.horizontalAdvance(a), fm.horizontalAdvance(b), fm.horizontalAdvance(note)}) +
-          44;
-      const int rows = note.isEmpty() ? 2 : 3;
-      const QRectF r(12, height() - bottomInset - rows * line - 16, tw, rows * line + 12);
-      box(r);
-      const QColor colors[] = {QColor(255, 0, 255), QColor(0, 255, 255)};
-      const QString texts[] = {a, b};
-      for (int i = 0; i < 2; ++i) {
-        const double y = r.top() + 6 + i * line;
-        p.fillRect(QRectF(r.left() + 10, y + 3, 18, line - 6), colors[i]);
-        p.setPen(Qt::white);
-        p.drawText(QRectF(r.left() + 34, y, tw - 40, line), Qt::AlignLeft | Qt::AlignVCenter,
-                   texts[i]);
-      }
-      if (!note.isEmpty())
-        p.drawText(QRectF(r.left() + 10, r.top() + 6 + 2 * line, tw - 16, line),
-                   Qt::AlignLeft | Qt::AlignVCenter, note);
-    } else if (legend == Legend::Changed) {
-      const QString t = changedCount ? tr("%L1 pixels changed since the last frame (of %L2)")
-                                           .arg(changedCount->first)
-                                           .arg(changedCount->second)
-                                     : tr("pixels changed since the last frame: needs two frames");
-      const int swatch = line - 6;
-      const QRectF r(12, height() - bottomInset - line - 12, fm.horizontalAdvance(t) + swatch + 30,
-                     line + 10);
-      box(r);
-      const float c[3] = {SL_CHANGED_COLOUR};
-      p.fillRect(QRectF(r.left() + 10, r.top() + 8, swatch, swatch),
-                 QColor::fromRgbF(c[0], c[1], c[2]));
-      p.setPen(Qt::white);
-      p.drawText(QRectF(r.left() + swatch + 18, r.top(), r.width() - swatch - 22, r.height()),
-                 Qt::AlignLeft | Qt::AlignVCenter, t);
-    } else if (legend == Legend::WarpGrid) {
-      const QString t = tr("shadow-map grid: every 1/16 of the map");
-      const QRectF r(12, height() - bottomInset - line - 12, fm.horizontalAdvance(t) + 20,
-                     line + 10);
-      box(r);
-      p.setPen(QColor(255, 217, 26));
-      p.drawText(r, Qt::AlignCenter, t);
-    }
-    placeInset();
-    if (insetFactor > 0) {  // the zoom inset: nearest neighbour, whole texels per pixel
-      const QRectF source(zoomArea.topLeft() * zoomSource.devicePixelRatio(),
-                          zoomArea.size() * zoomSource.devicePixelRatio());
-      p.setRenderHint(QPainter::SmoothPixmapTransform, false);
-      p.drawImage(QRectF(insetRect), zoomSource, source);
-      p.setBrush(Qt::NoBrush);
-      p.setPen(QPen(QColor(255, 230, 0), 3));
-      p.drawRect(QRectF(insetRect).adjusted(-1.5, -1.5, 1.5, 1.5));
-      p.setPen(QPen(QColor(255, 230, 0), 2, Qt::DashLine));
-      p.drawRect(QRectF(zoomArea).adjusted(-1, -1, 1, 1));
-      const QString label = QStringLiteral("\u00d7%1").arg(insetFactor);
-      const QRectF lr(insetRect.left(), insetRect.top() - line - 8,
-                      fm.horizontalAdvance(label) + 16, line + 6);
-      box(lr);
-      p.setPen(QColor(255, 230, 0));
-      p.drawText(lr, Qt::AlignCenter, label);
-    }
-    if (!zoomDrag.isEmpty()) {
-      p.setBrush(Qt::NoBrush);
-      p.setPen(QPen(QColor(255, 230, 0), 2, Qt::DashLine));
-      p.drawRect(zoomDrag);
-    }
-    if (pointerRing) {  // presenter mode: a ring around the pointer, dark halo for contrast
-      const double radius = std::max(18.0, line * 1.1);
-      p.setBrush(Qt::NoBrush);
-      p.setPen(QPen(QColor(0, 0, 0, 170), 7));
-      p.drawEllipse(*pointerRing, radius, radius);
-      p.setPen(QPen(QColor(255, 40, 200), 4));
-      p.drawEllipse(*pointerRing, radius, radius);
-    }
-  }
-};
-
-ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
-  // Keep the last frame in the FBO: a paused view repaints without rendering.
-  setUpdateBehavior(QOpenGLWidget::PartialUpdate);
+ViewportWidget::ViewportWidget(QWidget* parent)
+    : QWidget(parent),
+      shared_(sl::rendererParamDecls()),
+      liveMain_(kLiveReferenceMinIntervalS, kLiveReferenceDurationFactor),
+      liveSplit_(kLiveReferenceMinIntervalS, kLiveReferenceDurationFactor) {
+  main_.setSharedParams(&shared_);
+  setAttribute(Qt::WA_OpaquePaintEvent);
   overlay_ = new ViewOverlay(this);
   overlay_->hide();
   setFocusPolicy(Qt::StrongFocus);
@@ -360,170 +74,192 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
     if (frameDivisor_ == 1) return;
     if (dragButton_ != Qt::NoButton || !heldKeys_.empty()) return settleTimer_.start();
     fullSizeNext_ = true;
-    update();
+    requestFrame();
   });
   flyTimer_.setInterval(kFlyTickMs);
   connect(&flyTimer_, &QTimer::timeout, this, &ViewportWidget::flyStep);
+  busyTimer_.setInterval(100);  // the busy note's seconds, while a frame is computed
+  connect(&busyTimer_, &QTimer::timeout, this, &ViewportWidget::updateOverlayWidget);
+  service_ = new RenderService(this);
+  connect(service_, &RenderService::ready, this, &ViewportWidget::serviceReady);
+  connect(service_, &RenderService::failed, this,
+          [this](const QString& message) { Q_EMIT initializationFailed(message); });
+  service_->start();
 }
 
 ViewportWidget::~ViewportWidget() {
-  liveReference_.reset();  // cancels a running trace and joins the worker
-  splitLiveReference_.reset();
-  destroyRenderer();
+  liveMain_.cancel();
+  liveSplit_.cancel();
+  if (ready_) Q_EMIT rendererAboutToBeDestroyed();
+  delete service_;  // stops the frame in progress, frees the renderers, joins the thread
+  service_ = nullptr;
 }
 
-void ViewportWidget::initializeGL() {
-  // A new context (first show, or after re-parenting): free the renderer with it.
-  connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::destroyRenderer,
-          Qt::UniqueConnection);
-  // Signals go out queued: their receivers may open dialogs, which must not happen while
-  // Qt is inside initializeGL.
-  auto fail = [this](const QString& message) {
-    QMetaObject::invokeMethod(
-        this, [this, message] { Q_EMIT initializationFailed(message); }, Qt::QueuedConnection);
-  };
-  if (auto problem = checkContext(*context())) return fail(*problem);
-  try {
-    renderer_ = std::make_unique<sl::Renderer>();
-  } catch (const std::exception& e) {
-    return fail(
-        QStringLiteral("the renderer could not start: %1").arg(QString::fromStdString(e.what())));
-  }
-  applyStateToRenderer();
-  QMetaObject::invokeMethod(
-      this, [this] { Q_EMIT rendererReady(); }, Qt::QueuedConnection);
+void ViewportWidget::serviceReady(const QString& description) {
+  glDescription_ = description;
+  ready_ = true;
+  Q_EMIT rendererReady();
+  requestFrame();
 }
 
-void ViewportWidget::applyStateToRenderer() {
-  if (scene_) renderer_->setScene(scene_);
-  if (!techniqueId_.empty()) {
-    if (auto error = renderer_->setTechnique(techniqueId_))
-      Q_EMIT renderProblem(QString::fromStdString(*error));
-  }
-  techniqueId_ = renderer_->techniqueId();
-  renderer_->setCamera(camera_);
-  renderer_->setLight(light_);
-  lastTechniqueId_.clear();
-}
-
-void ViewportWidget::destroyRenderer() {
-  cancelLiveReferences();  // their results would be of a renderer gone
-  if (!renderer_) return;
-  Q_EMIT rendererAboutToBeDestroyed();
-  makeCurrent();
-  splitRenderer_.reset();
-  renderer_.reset();
-  doneCurrent();
-}
-
-void ViewportWidget::paintGL() {
-  if (!renderer_) return;
+QSize ViewportWidget::deviceSize() const {
   const qreal dpr = devicePixelRatioF();
-  const int w = static_cast<int>(std::lround(width() * dpr));
-  const int h = static_cast<int>(std::lround(height() * dpr));
-  // Paused: the last frame stays in the FBO (PartialUpdate) unless a step is pending or the
-  // size changed (a resized FBO holds nothing).
-  if (paused_ && pendingSteps_ == 0 && lastFrameSize_ == QSize(w, h) && framesRendered_ > 0) return;
-  if (pendingSteps_ > 0) --pendingSteps_;
-  lastFrameSize_ = QSize(w, h);
+  return {static_cast<int>(std::lround(width() * dpr)),
+          static_cast<int>(std::lround(height() * dpr))};
+}
 
-  // Parameters are edited by panels directly in the renderer's ParamSets: notice it here.
-  if (renderer_->techniqueId() != lastTechniqueId_ ||
-      renderer_->params().revision() != lastParamRevision_ ||
-      renderer_->rendererParams().revision() != lastRendererParamRevision_) {
-    lastTechniqueId_ = renderer_->techniqueId();
-    lastParamRevision_ = renderer_->params().revision();
-    lastRendererParamRevision_ = renderer_->rendererParams().revision();
-    markViewChanged();
-  }
-  if (splitRenderer_ && !splitParamsPending_ &&
-      splitRenderer_->params().revision() != lastSplitParamRevision_) {
-    lastSplitParamRevision_ = splitRenderer_->params().revision();  // edited in its panel
-    splitErrorPct_.reset();
-    markViewChanged();
-  }
-  renderer_->setCamera(camera_);
-  renderer_->setLight(light_);
+void ViewportWidget::requestFrame() {
+  frameWanted_ = true;
+  pump();
+}
 
-  // A view dragged down to a few pixels draws nothing: a frame that small feeds temporal
-  // state (DA-RTW's rotation, kept by its vibration threshold) a degenerate importance
-  // map, and the restored view measured 0.188 % error instead of 0.174 % (split_resize.sh).
-  if (w < kMinDrawnPx || h < kMinDrawnPx) {
-    sl::Renderer::clearFrame(w, h, defaultFramebufferObject());
-    ++framesRendered_;
-    Q_EMIT frameRendered();
+void ViewportWidget::noticeEdits() {
+  const bool splitEdited = split_ && split_->revision() != lastSplitRevision_;
+  if (main_.revision() == lastMainRevision_ && shared_.revision() == lastSharedRevision_ &&
+      !splitEdited)
+    return;
+  lastMainRevision_ = main_.revision();
+  lastSharedRevision_ = shared_.revision();
+  if (split_) lastSplitRevision_ = split_->revision();
+  if (splitEdited) splitErrorPct_.reset();
+  markViewChanged();
+}
+
+void ViewportWidget::pump() {
+  if (!ready_ || !frameWanted_ || !service_) return;
+  noticeEdits();
+  const bool inFlight = ordersSent_ > ordersDone_;
+  const bool changed = viewRevision_ != sentViewRevision_;
+  // Paused: the last frame stays unless a step is pending or the size changed.
+  if (paused_ && pendingSteps_ == 0 && lastFrameSize_ == deviceSize() && framesRendered_ > 0 &&
+      !inFlight) {
+    frameWanted_ = false;
     return;
   }
-  std::string problem;
-  // No right half narrower than the smallest drawn view: the left half takes it all.
-  const bool split = !splitTechniqueId_.empty() && w / 2 >= kMinDrawnPx;
-  const int mainWidth = split ? w / 2 : w;
-  lastMainWidth_ = mainWidth;
+  if (inFlight && !changed) return;  // its outcome pumps again
+  if (pendingSteps_ > 0) --pendingSteps_;
+  frameWanted_ = false;
+  const std::shared_ptr<FrameOrder> order = makeOrder();
+  busyTechnique_ = QString::fromStdString(main_.techniqueId()) +
+                   (order->split ? QStringLiteral(" | ") + QString::fromStdString(splitTechniqueId_)
+                                 : QString());
+  busyTimer_.start();
+  // A changed view stops the frame in progress: its result would be of the old view.
+  service_->submitFrame(
+      [this, order](RenderContext& c) {
+        auto out = std::make_shared<FrameOutcome>();
+        renderOrder(c, *order, *out);
+        QMetaObject::invokeMethod(
+            this, [this, out] { applyOutcome(out); }, Qt::QueuedConnection);
+      },
+      inFlight && changed);
+}
 
-  // Adaptive resolution: render at 1/divisor of the size (never below the smallest drawn
-  // view), stretched over it by the renderer.
-  const sl::ParamSet& shared = renderer_->rendererParams();
-  const bool adaptive = adaptiveActive();
-  if (!adaptive && adaptive_.divisor() != 1) adaptive_.reset();
-  // A still view's settle frame (and an export's) is drawn at full size: what stays on
-  // screen, and what is measured, is never the reduced image.
-  const bool settle = std::exchange(fullSizeNext_, false);
-  int divisor = settle ? 1 : adaptive_.divisor();
-  while (divisor > 1 && (mainWidth / divisor < kMinDrawnPx || h / divisor < kMinDrawnPx))
-    divisor /= 2;
-  if (divisor != frameDivisor_) markViewChanged();  // another image: the error is not its
-  frameDivisor_ = divisor;
-  const int frameW = sl::AdaptiveResolution::scaled(mainWidth, divisor);
-  const int frameH = sl::AdaptiveResolution::scaled(h, divisor);
-  internalSize_ = QSize(frameW, frameH);
-  // Progressive resolve (continuous rendering with adaptive resolution on): a technique that
-  // resolves tile by tile spends at most half the budget on tiles per frame and keeps its
-  // result between frames, so that no frame blocks the event loop for seconds
-  // (virtual-tiled's 256 tiles). Scripted runs and on-demand frames resolve in one call.
-  const bool progressive = adaptiveAllowed_ && continuous_ && !paused_;
-  renderer_->setProgressiveBudget(
-      progressive ? kProgressiveShare * double(shared.getInt("view.adaptive.budget_ms")) : 0.0);
-  QElapsedTimer frameClock;
-  frameClock.start();
-  if (split)
-    renderSplitHalf(sl::AdaptiveResolution::scaled(w - mainWidth, divisor), frameH, problem);
-
-  std::optional<std::string> error;
-  try {
-    error = renderer_->renderFrame(frameW, frameH, defaultFramebufferObject(), mainWidth, h);
-  } catch (const std::exception& e) {
-    error = std::string("renderer: ") + e.what();
+std::shared_ptr<FrameOrder> ViewportWidget::makeOrder() {
+  auto o = std::make_shared<FrameOrder>();
+  o->id = ++ordersSent_;
+  o->scene = scene_;
+  o->camera = camera_;
+  o->light = light_;
+  o->main = main_.takeRequest();
+  const QSize size = deviceSize();
+  lastFrameSize_ = size;
+  const int w = size.width(), h = size.height();
+  // A view dragged down to a few pixels draws nothing: a frame that small feeds temporal
+  // state (DA-RTW's rotation, kept by its vibration threshold) a degenerate importance map.
+  if (w < kMinDrawnPx || h < kMinDrawnPx) {
+    o->clearOnly = true;
+  } else {
+    // No right half narrower than the smallest drawn view: the left half takes it all.
+    const bool split = split_ && w / 2 >= kMinDrawnPx;
+    const int mainWidth = split ? w / 2 : w;
+    lastMainWidth_ = mainWidth;
+    // Adaptive resolution: 1/divisor of the size (never below the smallest drawn view); a
+    // still view's settle frame (and an export's) is drawn at full size.
+    const bool adaptive = adaptiveActive();
+    if (!adaptive && adaptive_.divisor() != 1) adaptive_.reset();
+    o->fullSize = std::exchange(fullSizeNext_, false);
+    int divisor = o->fullSize ? 1 : adaptive_.divisor();
+    while (divisor > 1 && (mainWidth / divisor < kMinDrawnPx || h / divisor < kMinDrawnPx))
+      divisor /= 2;
+    if (divisor != frameDivisor_) markViewChanged();  // another image: the error is not its
+    o->divisor = divisor;
+    o->frameWidth = sl::AdaptiveResolution::scaled(mainWidth, divisor);
+    o->frameHeight = sl::AdaptiveResolution::scaled(h, divisor);
+    if (split) {
+      o->split = split_->takeRequest();
+      o->split->publications = splitPublicationKeys_;
+      o->splitWidth = sl::AdaptiveResolution::scaled(w - mainWidth, divisor);
+    }
+    // Progressive resolve (continuous rendering in an interactive window): a technique that
+    // resolves tile by tile spends at most half the budget on tiles per frame and keeps its
+    // result between frames. Scripted runs and on-demand frames resolve in one call.
+    if (adaptiveAllowed_ && continuous_ && !paused_)
+      o->progressiveBudgetMs =
+          kProgressiveShare * double(shared_.getInt("view.adaptive.budget_ms"));
+    const qreal dpr = devicePixelRatioF();
+    const int x = int(std::floor(hover_.x() * dpr)), y = int(std::floor(hover_.y() * dpr));
+    if (probeWanted_ && hover_.x() >= 0 && !outsideView() && x < mainWidth)
+      o->probe = QPoint(x / divisor, y / divisor);
   }
-  lastFrameMs_ = std::max(double(frameClock.nsecsElapsed()) / 1e6, renderer_->stats().totalMs);
-  frameFailure_ = error ? QString::fromStdString(*error) : QString();
+  o->viewRevision = viewRevision_;
+  sentViewRevision_ = viewRevision_;
+  o->shared = shared_;
+  o->snapshotMain = continuous_ && liveMain_.wantsTrace(viewRevision_);
+  o->snapshotSplit = continuous_ && o->split && liveSplit_.wantsTrace(viewRevision_);
+  o->referenceMask = std::exchange(maskToUpload_, std::nullopt);
+  return o;
+}
+
+void ViewportWidget::applyOutcome(const std::shared_ptr<FrameOutcome>& out) {
+  ordersDone_ = std::max(ordersDone_, out->id);
+  if (ordersDone_ >= ordersSent_) busyTimer_.stop();
+  if (out->stopped) {  // never shown, never measured
+    ++framesStopped_;
+    if (out->id == ordersSent_) frameWanted_ = true;  // stopped by an export: draw it again
+    pump();
+    updateOverlayWidget();
+    return;
+  }
+  shownViewRevision_ = out->viewRevision;
+  mainImage_ = out->mainImage;
+  splitImage_ = out->hasSplit ? out->splitImage : QImage();
+  frameDivisor_ = out->divisor;
+  internalSize_ = mainImage_.size();
+  lastFrameMs_ = out->wallMs;
+  frameFailure_ = QString::fromStdString(out->mainProblem);
+  main_.setFrame(std::move(out->mainStats), std::move(out->mainPublication));
+  if (split_ && out->hasSplit)
+    split_->setFrame(std::move(out->splitStats), std::move(out->splitPublication));
   // A progressive frame's tiles are bounded by their own budget: the resolution follows the
   // rest (the per-pixel work), else a slow tile would drop the view and restart the tiles.
-  const auto& progress = renderer_->stats().progress;
-  if (adaptive && !error && !settle)
+  const auto& progress = main_.stats().progress;
+  const bool failed = !out->mainProblem.empty();
+  if (adaptiveActive() && !failed && !out->fullSize)
     adaptive_.onFrame(progress ? std::max(0.0, lastFrameMs_ - progress->spentMs) : lastFrameMs_,
-                      double(shared.getInt("view.adaptive.budget_ms")));
-  if (progress && !error)
-    progressNote_ = *progress;
-  else
-    progressNote_.reset();
+                      double(shared_.getInt("view.adaptive.budget_ms")));
+  progressNote_ = progress && !failed ? progress : std::nullopt;
   ++framesRendered_;
-  if (error) problem += (problem.empty() ? "" : "; ") + *error;
-  for (const std::string& glError : renderer_->takeGlErrors())
+  std::string problem = out->splitProblem;
+  if (failed) problem += (problem.empty() ? "" : "; ") + out->mainProblem;
+  for (const std::string& glError : out->glErrors)
     problem += (problem.empty() ? "" : "; ") + glError;
   if (!problem.empty() && problem != lastProblem_)
     Q_EMIT renderProblem(QString::fromStdString(problem));
   lastProblem_ = problem;
-
+  // A partial progressive frame is neither traced nor measured: the error waits.
+  const bool partial = !main_.stats().complete();
+  if (continuous_ && !failed && !partial) updateLiveReferences(*out);
   updateZoomInset();
-  // A partial progressive frame is neither traced nor measured: the error waits for the
-  // complete one.
-  const bool partial = !renderer_->stats().complete();
-  if (continuous_ && !error && !partial) updateLiveReference();
   updateOverlayWidget();
+  update();
   Q_EMIT frameRendered();
-  probeHover();  // the frame changed under a still mouse
-  // On demand (or paused): the error is computed once the view is still (restarted by every
-  // frame). Continuous: the live reference above keeps it.
+  if (out->probed && out->viewRevision == viewRevision_) {
+    ++probesRead_;
+    Q_EMIT pixelProbed(out->probe);
+  }
+  // On demand (or paused): the error is computed once the view is still. Continuous: the
+  // live reference keeps it.
   if (frameDivisor_ > 1 && (!continuous_ || paused_))
     settleTimer_.start(kSettleDelayMs);
   else
@@ -532,59 +268,87 @@ void ViewportWidget::paintGL() {
     errorTimer_.stop();
   else if (!errorIsCurrent() && (!continuous_ || paused_))
     errorTimer_.start(kErrorDelayMs);
-  // A progressive frame yields to the event loop before the next one: the next frame is
-  // asked for from a 1 ms timer, so that timers and input already due (ordered by due
-  // time) run first instead of queueing behind back-to-back frames.
-  if (continuous_ && !paused_) {
-    if (progress && !error)
-      QTimer::singleShot(1, this, [this] { update(); });
-    else
-      update();
-  }
+  if (continuous_ && !paused_) frameWanted_ = true;
+  pump();
 }
 
-// GL current. Creates the split renderer and applies the technique and parameters
-// setSplitTechnique gave; the problem, or nothing.
-std::optional<std::string> ViewportWidget::prepareSplitRenderer() {
-  if (!splitRenderer_) {
-    sl::RendererOptions options;
-    options.debugOutput = false;  // the main renderer keeps the context's debug callback
-    splitRenderer_ = std::make_unique<sl::Renderer>(options);
-    if (scene_) splitRenderer_->setScene(scene_);
-  }
-  if (splitRenderer_->techniqueId() != splitTechniqueId_)
-    if (auto e = splitRenderer_->setTechnique(splitTechniqueId_)) return "split view: " + *e;
-  std::optional<std::string> problem;
-  if (splitParamsPending_) {  // checked by setSplitTechnique: cannot fail here
-    splitRenderer_->params().resetToDefaults();
-    for (const auto& [key, value] : splitParams_)
-      if (auto e = splitRenderer_->params().setFromString(key, value))
-        problem = "split view: " + *e;
-    splitRenderer_->resetTemporalState();
-    splitParamsPending_ = false;
-    lastSplitParamRevision_ = splitRenderer_->params().revision();
-  }
-  splitRenderer_->requestPublications(splitPublicationKeys_);
-  return problem;
+bool ViewportWidget::renderNow(const std::shared_ptr<FrameOrder>& order) {
+  auto out = std::make_shared<FrameOutcome>();
+  if (!service_->call([&](RenderContext& c) { renderOrder(c, *order, *out); })) return false;
+  applyOutcome(out);
+  return !out->stopped;
 }
 
-sl::Renderer* ViewportWidget::splitRenderer() {
-  if (!renderer_ || splitTechniqueId_.empty()) return nullptr;
-  makeCurrent();
-  std::optional<std::string> problem;
-  try {
-    problem = prepareSplitRenderer();
-  } catch (const std::exception& e) {
-    problem = std::string("split view: ") + e.what();
+void ViewportWidget::paintEvent(QPaintEvent*) {
+  QPainter p(this);
+  if (mainImage_.isNull()) {
+    p.fillRect(rect(), QColor(24, 26, 29));
+    return;
   }
-  doneCurrent();
-  if (problem) {
-    Q_EMIT renderProblem(QString::fromStdString(*problem));
-    return splitRenderer_ && splitRenderer_->techniqueId() == splitTechniqueId_
-               ? splitRenderer_.get()
-               : nullptr;
+  // A reduced (adaptive) frame is stretched smoothly, as a GPU blit would; a full-size one is
+  // drawn pixel for pixel.
+  p.setRenderHint(QPainter::SmoothPixmapTransform, frameDivisor_ > 1);
+  const int mainW = splitImage_.isNull() ? width() : width() / 2;
+  p.drawImage(QRect(0, 0, mainW, height()), mainImage_);
+  if (mainW < width() && splitImage_.isNull())
+    p.fillRect(QRect(mainW, 0, width() - mainW, height()), Qt::black);
+}
+
+void ViewportWidget::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  overlay_->setGeometry(rect());
+  markViewChanged();
+  requestFrame();
+}
+
+QString ViewportWidget::busyText() const {
+  if (!service_) return {};
+  const RenderService::Activity a = service_->activity();
+  if (!a.busy || !a.frame || a.elapsedMs < kBusyNoteMs) return {};
+  return tr("computing %1 \u2026 %2 s (the last complete frame is shown)")
+      .arg(busyTechnique_)
+      .arg(a.elapsedMs / 1000.0, 0, 'f', 1);
+}
+
+std::optional<std::string> ViewportWidget::setSplitTechnique(
+    const std::string& techniqueId, const std::map<std::string, std::string>& params) {
+  std::optional<sl::ViewSide> side;
+  if (!techniqueId.empty()) {
+    side.emplace();
+    if (auto e = side->setTechnique(techniqueId)) return e;
+    for (const auto& [key, value] : params) {
+      if (!side->params().has(key))
+        return "split view: technique '" + techniqueId + "' has no parameter '" + key + "'";
+      if (auto e = side->params().setFromString(key, value)) return "split view: " + *e;
+    }
+    side->setSharedParams(&shared_);
+    side->requestPublications(splitPublicationKeys_);
+    side->resetTemporalState();
   }
-  return splitRenderer_.get();
+  split_ = std::move(side);
+  splitTechniqueId_ = techniqueId;
+  if (split_) lastSplitRevision_ = split_->revision();
+  splitErrorPct_.reset();
+  liveSplit_.cancel();  // of the previous right half
+  markViewChanged();
+  if (paused_) ++pendingSteps_;
+  requestFrame();
+  if (techniqueId.empty()) updateOverlayWidget();
+  Q_EMIT splitChanged();
+  return std::nullopt;
+}
+
+std::map<std::string, std::string> ViewportWidget::splitParams() const {
+  std::map<std::string, std::string> out;
+  if (!split_) return out;
+  const sl::ParamSet& set = split_->params();
+  for (const sl::ParamDecl& d : set.decls()) out[d.key] = set.format(d.key);
+  return out;
+}
+
+void ViewportWidget::setSplitPublications(std::set<std::string> keys) {
+  splitPublicationKeys_ = std::move(keys);
+  if (split_) split_->requestPublications(splitPublicationKeys_);
 }
 
 std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std::string* error) {
@@ -592,83 +356,394 @@ std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std:
     if (error) *error = why;
     return std::nullopt;
   };
-  sl::Renderer* split = splitRenderer();
-  if (!split) return fail("the split view is off");
-  if (framesRendered_ == 0 || renderer_->stats().frameIndex == 0)
+  if (!ready_ || !split_) return fail("the split view is off");
+  if (framesRendered_ == 0 || !main_.hasFrame() || main_.stats().frameIndex == 0)
     return fail("no frame of the main technique yet");
-  sl::ParamSet& params = split->params();
-  const sl::ParamDecl* decl = sl::memoryKnob(params.decls());
+  const sl::ParamDecl* decl = sl::memoryKnob(split_->params().decls());
   if (!decl)
     return fail("technique '" + splitTechniqueId_ +
                 "' declares no parameter its memory grows with, so there is nothing to match");
   MemoryMatch match;
   match.key = decl->key;
-  match.mainBytes = renderer_->stats().memory.bytes();
-  const qreal dpr = devicePixelRatioF();
-  const int w = static_cast<int>(std::lround(width() * dpr));
-  const int h = static_cast<int>(std::lround(height() * dpr));
-  const int halfW = w - w / 2;
-  if (halfW < kMinDrawnPx || h < kMinDrawnPx) return fail("the view is too small to measure");
-  makeCurrent();
-  split->setCamera(camera_);
-  split->setLight(light_);
-  // The bytes at a value: one frame of the right half (its size, this camera and light).
-  const sl::MemoryMatchResult m = sl::matchMemory(
-      std::llround(decl->minValue), std::llround(decl->maxValue), std::llround(decl->step),
-      match.mainBytes, [&](long long value, std::string& problem) -> std::optional<std::uint64_t> {
-        if (auto e = params.set(decl->key, double(value))) {
-          problem = *e;
-          return std::nullopt;
-        }
-        if (auto e = split->renderFrame(halfW, h, defaultFramebufferObject())) {
-          problem = *e;
-          return std::nullopt;
-        }
-        return split->stats().memory.bytes();
-      });
-  match.framesMeasured = m.evaluations;
-  match.value = m.value;
-  match.belowMinimum = m.belowMinimum;
-  split->resetTemporalState();
-  doneCurrent();
-  if (!m.ok()) return fail("split view: " + m.problem);
-  match.splitBytes = m.bytes;
-  splitParams_[decl->key] = params.format(decl->key);
-  lastSplitParamRevision_ = ~0u;  // the next frame notices the change
-  update();
+  match.mainBytes = main_.stats().memory.bytes();
+  const QSize size = deviceSize();
+  const int halfW = size.width() - size.width() / 2;
+  if (halfW < kMinDrawnPx || size.height() < kMinDrawnPx)
+    return fail("the view is too small to measure");
+  const std::shared_ptr<FrameOrder> order = makeOrder();
+  if (!order->split) return fail("the view is too small to measure");
+  MemoryMatchRun run;
+  const sl::ParamDecl knob = *decl;
+  if (!service_->call([&](RenderContext& c) {
+        run = matchSplitMemoryOn(c, *order, knob, match.mainBytes, halfW, size.height());
+      }))
+    return fail("the render service is not running");
+  if (!run.problem.empty()) return fail("split view: " + run.problem);
+  match.framesMeasured = run.evaluations;
+  match.value = run.value;
+  match.belowMinimum = run.belowMinimum;
+  match.splitBytes = run.bytes;
+  (void)split_->params().set(decl->key, double(run.value));
+  splitParams_[decl->key] = split_->params().format(decl->key);
+  requestFrame();
   return match;
 }
 
-void ViewportWidget::renderSplitHalf(int width, int height, std::string& problem) {
-  try {
-    if (auto e = prepareSplitRenderer()) {
-      problem = *e;
-      if (!splitRenderer_ || splitRenderer_->techniqueId() != splitTechniqueId_) return;
-    }
-    // Same camera, light and shared (view/shading) parameters as the left half.
-    sl::ParamSet& mine = splitRenderer_->rendererParams();
-    for (const sl::ParamDecl& d : renderer_->rendererParams().decls())
-      if (mine.has(d.key) && mine.get(d.key) != renderer_->rendererParams().get(d.key))
-        (void)mine.set(d.key, renderer_->rendererParams().get(d.key));
-    splitRenderer_->setCamera(camera_);
-    splitRenderer_->setLight(light_);
-    // renderFrame always draws at the target's origin: render the right half first, read
-    // its colour back for the overlay widget, then let the left half overwrite the origin.
-    if (auto e = splitRenderer_->renderFrame(width, height, defaultFramebufferObject())) {
-      problem = "split view: " + *e;
-      return;
-    }
-    const sl::ImageRGBA8 color = splitRenderer_->readColor();  // the colour only
-    splitImage_ =
-        QImage(color.pixels.data(), color.width, color.height, QImage::Format_RGBA8888).copy();
-  } catch (const std::exception& e) {
-    problem = std::string("split view: ") + e.what();
+void ViewportWidget::setZoomArea(const std::optional<QRect>& area) {
+  zoomArea_ = area ? std::optional<QRect>(area->intersected(rect())) : std::nullopt;
+  if (zoomArea_ && zoomArea_->isEmpty()) zoomArea_.reset();
+  updateZoomInset();
+  updateOverlayWidget();
+}
+
+ViewportWidget::Readouts ViewportWidget::readouts() const {
+  Readouts r;
+  r.internalDivisor = frameDivisor_;
+  r.adaptiveDivisor = adaptive_.divisor();
+  r.lastFrameMs = lastFrameMs_;
+  r.progress = progressNote_;
+  r.framesStopped = framesStopped_;
+  r.probesRead = probesRead_;
+  r.leftCaption = splitCaption(false);
+  r.rightCaption = splitCaption(true);
+  r.errorOverlayNote = errorOverlayNote();
+  r.pointerHighlight = pointerHighlight_;
+  r.zoomArea = zoomArea_;
+  r.zoomInset = zoomInsetRect();
+  r.zoomFactor = zoomFactor();
+  r.liveReference = liveMain_.worker();
+  r.splitLiveReference = liveSplit_.worker();
+  return r;
+}
+
+QImage ViewportWidget::renderedImage() const {
+  if (mainImage_.isNull()) return {};
+  if (splitImage_.isNull()) return mainImage_;
+  QImage both(mainImage_.width() + splitImage_.width(),
+              std::max(mainImage_.height(), splitImage_.height()), QImage::Format_RGBA8888);
+  both.fill(Qt::black);
+  QPainter p(&both);
+  p.drawImage(0, 0, mainImage_);
+  p.drawImage(mainImage_.width(), 0, splitImage_);
+  return both;
+}
+
+void ViewportWidget::updateZoomInset() {
+  if (!zoomArea_ || mainImage_.isNull()) {
+    overlay_->zoomSource = QImage();
+    return;
   }
+  // The view as shown, in device pixels: each half stretched over its part (nearest).
+  const QSize size = deviceSize();
+  QImage shown(size, QImage::Format_RGBA8888);
+  shown.fill(Qt::black);
+  QPainter p(&shown);
+  const int mainW = splitImage_.isNull() ? size.width() : size.width() / 2;
+  p.drawImage(QRect(0, 0, mainW, size.height()), mainImage_);
+  if (!splitImage_.isNull())
+    p.drawImage(QRect(mainW, 0, size.width() - mainW, size.height()), splitImage_);
+  p.end();
+  shown.setDevicePixelRatio(devicePixelRatioF());
+  overlay_->zoomSource = shown;
+}
+
+QImage ViewportWidget::grabView() {
+  renderFullSizeNow();
+  return grab().toImage();
+}
+
+void ViewportWidget::setScene(std::shared_ptr<const sl::Scene> scene) {
+  scene_ = std::move(scene);
+  cancelLiveReferences();  // a trace of the old scene is never shown
+  if (scene_ && scene_->light) light_ = *scene_->light;
+  Q_EMIT lightChanged();
+  resetView();
+}
+
+std::optional<std::string> ViewportWidget::setTechnique(const std::string& id) {
+  if (auto error = main_.setTechnique(id)) return error;
+  requestFrame();
+  return std::nullopt;
+}
+
+void ViewportWidget::setCamera(const sl::Camera& camera) {
+  camera_ = camera;
+  markViewChanged();
+  Q_EMIT cameraChanged();
+  requestFrame();
+}
+
+bool ViewportWidget::outsideView() const {
+  return shared_.has("view.outside") && shared_.getBool("view.outside");
+}
+
+bool ViewportWidget::setOutsideView(bool on) {
+  if (!shared_.has("view.outside")) return false;
+  if (outsideView() == on) return true;
+  if (shared_.set("view.outside", on ? 1.0 : 0.0)) return false;
+  updateOverlayWidget();
+  requestFrame();
+  return true;
+}
+
+void ViewportWidget::adjustOutsideView(float azimuthDeg, float elevationDeg, float zoomFactor) {
+  auto clampSet = [&](const char* key, double v) {
+    const sl::ParamDecl* d = shared_.find(key);
+    if (d) (void)shared_.set(key, std::clamp(v, d->minValue, d->maxValue));
+  };
+  const double az = std::remainder(shared_.get("view.outside.azimuth_deg") + azimuthDeg, 360.0);
+  clampSet("view.outside.azimuth_deg", az);
+  clampSet("view.outside.elevation_deg", shared_.get("view.outside.elevation_deg") + elevationDeg);
+  clampSet("view.outside.zoom", shared_.get("view.outside.zoom") * zoomFactor);
+  requestFrame();
+}
+
+void ViewportWidget::setContinuous(bool on) {
+  continuous_ = on;
+  if (on) {
+    errorTimer_.stop();
+    liveMain_.start();
+    liveSplit_.start();
+    requestFrame();
+  } else {
+    cancelLiveReferences();
+    if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);
+  }
+  updateOverlayWidget();
+}
+
+void ViewportWidget::updateLiveReferences(FrameOutcome& out) {
+  std::string failure;
+  if (auto done = liveMain_.takeFinished(&failure)) {
+    if (done->viewRevision == viewRevision_) {
+      // The error overlay draws the mask only while frames show what was traced.
+      maskToUpload_ = std::move(done);
+      const sl::ShadowErrorStats& stats = liveMain_.latest()->trace.stats;
+      mainErrorPct_ = stats.covered > 0 ? std::optional(stats.errorPct) : std::nullopt;
+      errorUnmeasured_ = unmeasuredReason(stats);
+      errorRevision_ = viewRevision_;
+      if (mainErrorPct_)
+        Q_EMIT errorComputed(*mainErrorPct_);
+      else
+        Q_EMIT errorUnmeasured(errorUnmeasured_);
+    }
+  }
+  if (!failure.empty())
+    Q_EMIT renderProblem(
+        QStringLiteral("reference trace failed: %1").arg(QString::fromStdString(failure)));
+  failure.clear();
+  if (split_ && liveSplit_.takeFinished(&failure) &&
+      liveSplit_.latest()->viewRevision == viewRevision_)
+    splitErrorPct_ = liveSplit_.latest()->trace.stats.errorPct;
+  if (!failure.empty())
+    Q_EMIT renderProblem(QStringLiteral("split view: reference trace failed: %1")
+                             .arg(QString::fromStdString(failure)));
+  if (auto job = referenceJob(out.mainSnapshot, out.viewRevision, framesRendered_))
+    liveMain_.submit(std::move(*job));
+  if (auto job = referenceJob(out.splitSnapshot, out.viewRevision, framesRendered_))
+    liveSplit_.submit(std::move(*job));
+}
+
+void ViewportWidget::cancelLiveReferences() {
+  liveMain_.cancel();
+  liveSplit_.cancel();
+  maskToUpload_.reset();
+}
+
+std::optional<LiveError> ViewportWidget::liveError() const {
+  if (!continuous_) return std::nullopt;
+  return liveMain_.error(viewRevision_, framesRendered_);
+}
+
+std::optional<LiveError> ViewportWidget::splitLiveError() const {
+  if (!continuous_ || !split_) return std::nullopt;
+  return liveSplit_.error(viewRevision_, framesRendered_);
+}
+
+void ViewportWidget::setAdaptiveAllowed(bool allowed) {
+  adaptiveAllowed_ = allowed;
+  requestFrame();
+}
+
+void ViewportWidget::setPresenting(bool on) {
+  presenting_ = on;
+  requestFrame();
+}
+
+bool ViewportWidget::adaptiveActive() const {
+  if (!adaptiveAllowed_ || presenting_ || split_) return false;
+  return shared_.has("view.adaptive") && shared_.getBool("view.adaptive");
+}
+
+void ViewportWidget::renderFullSizeNow() {
+  if (!ready_) return;
+  const bool current = ordersSent_ == ordersDone_ && shownViewRevision_ == viewRevision_ &&
+                       lastFrameSize_ == deviceSize() && framesRendered_ > 0;
+  if (frameDivisor_ == 1 && current) return;
+  fullSizeNext_ = true;
+  (void)renderNow(makeOrder());
+}
+
+void ViewportWidget::setProbeWanted(bool wanted) {
+  if (probeWanted_ == wanted) return;
+  probeWanted_ = wanted;
+  if (!wanted)
+    Q_EMIT pixelProbed(std::nullopt);
+  else
+    probeHover();
+}
+
+void ViewportWidget::probeHover() {
+  if (hover_.x() < 0 || !ready_ || !probeWanted_ || mainImage_.isNull()) return;
+  const qreal dpr = devicePixelRatioF();
+  const int x = int(std::floor(hover_.x() * dpr)), y = int(std::floor(hover_.y() * dpr));
+  if (outsideView() || x >= lastMainWidth_) {
+    Q_EMIT pixelProbed(std::nullopt);
+    return;
+  }
+  const QPoint at(x / frameDivisor_, y / frameDivisor_);  // internal pixels
+  const std::uint64_t serial = ++probeSerial_;
+  service_->post([this, at, serial](RenderContext& c) {
+    std::optional<sl::PixelProbe> probe;
+    if (sl::Renderer* r = c.existing("main")) probe = r->probePixel(at.x(), at.y());
+    QMetaObject::invokeMethod(
+        this,
+        [this, probe, serial] {
+          if (serial != probeSerial_) return;  // the mouse moved on
+          ++probesRead_;
+          Q_EMIT pixelProbed(probe);
+        },
+        Qt::QueuedConnection);
+  });
+}
+
+void ViewportWidget::applyError(std::uint64_t viewRevision, const SideError& main,
+                                const std::optional<SideError>& split) {
+  if (viewRevision != viewRevision_) return;  // the view moved on: not its error
+  if (!main.problem.empty()) {
+    Q_EMIT renderProblem(
+        QStringLiteral("error metric failed: %1").arg(QString::fromStdString(main.problem)));
+    return;
+  }
+  if (split) {
+    splitErrorPct_ = split->pct;
+    splitErrorUnmeasured_ = QString::fromStdString(split->unmeasured);
+  }
+  errorRevision_ = viewRevision_;
+  mainErrorPct_ = main.pct;
+  errorUnmeasured_ = QString::fromStdString(main.unmeasured);
+  if (mainErrorPct_) {
+    Q_EMIT errorComputed(*mainErrorPct_);
+    // The error overlay shows the reference just computed: draw it (unless paused, where the
+    // frozen frame must stay the one that was measured).
+    if (shared_.has("view.overlay") &&
+        shared_.getInt("view.overlay") == enumIndexOf(shared_, "view.overlay", "error") && !paused_)
+      requestFrame();
+  } else {
+    Q_EMIT errorUnmeasured(errorUnmeasured_);
+  }
+  updateOverlayWidget();
+}
+
+bool ViewportWidget::failedFrameUnmeasured() {
+  if (frameFailure_.isEmpty()) return false;
+  // A frame that failed is not measured: its image is the neutral frame, not the technique's.
+  errorRevision_ = viewRevision_;
+  mainErrorPct_.reset();
+  errorUnmeasured_ = tr("the frame failed: %1").arg(frameFailure_);
+  Q_EMIT errorUnmeasured(errorUnmeasured_);
+  updateOverlayWidget();
+  return true;
+}
+
+std::optional<double> ViewportWidget::computeErrorNow() {
+  if (!ready_ || framesRendered_ == 0) return std::nullopt;
+  // The error is of the view as it is now: a frame of it first when the shown one is older.
+  if (ordersSent_ > ordersDone_ || shownViewRevision_ != viewRevision_) renderNow(makeOrder());
+  if (failedFrameUnmeasured()) return std::nullopt;
+  const bool split = split_ && !splitImage_.isNull();
+  SideError main;
+  std::optional<SideError> right;
+  if (!service_->call([&](RenderContext& c) {
+        main = computeSideError(c, "main");
+        if (split) right = computeSideError(c, "split");
+      }))
+    return std::nullopt;
+  applyError(viewRevision_, main, right);
+  return errorIsCurrent() ? mainErrorPct_ : std::nullopt;
+}
+
+void ViewportWidget::computeErrorIfStill() {
+  if (errorIsCurrent() || !ready_) return;
+  // Still interacting, or the frame of this view not shown yet: try again later.
+  if (dragButton_ != Qt::NoButton || !heldKeys_.empty() || ordersSent_ > ordersDone_ ||
+      shownViewRevision_ != viewRevision_) {
+    errorTimer_.start(kErrorDelayMs);
+    return;
+  }
+  if (failedFrameUnmeasured()) return;
+  const std::uint64_t revision = viewRevision_;
+  const bool split = split_ && !splitImage_.isNull();
+  service_->post([this, revision, split](RenderContext& c) {
+    const SideError main = computeSideError(c, "main");
+    std::optional<SideError> right;
+    if (split) right = computeSideError(c, "split");
+    QMetaObject::invokeMethod(
+        this, [this, revision, main, right] { applyError(revision, main, right); },
+        Qt::QueuedConnection);
+  });
+}
+
+std::optional<std::string> ViewportWidget::reloadShaders() {
+  if (!ready_) return std::string("the renderer is not running");
+  std::optional<std::string> error;
+  service_->call([&](RenderContext& c) {
+    for (const char* name : {"main", "split", "charts"})
+      if (sl::Renderer* r = c.existing(name))
+        if (auto e = r->reloadShaders(); e && !error) error = e;
+  });
+  markViewChanged();
+  requestFrame();
+  return error;
+}
+
+std::vector<FigureCell> ViewportWidget::figureCells(int dilatePx) {
+  std::vector<FigureCell> cells;
+  if (!ready_ || framesRendered_ == 0) return cells;
+  renderFullSizeNow();  // a figure is never the reduced (adaptive resolution) image
+  auto label = [](const sl::ViewSide& side) {
+    const std::string rest = side.nonDefaultParams();
+    return side.techniqueId() + (rest.empty() ? "" : " " + rest);
+  };
+  const std::string mainLabel = label(main_);
+  const std::optional<std::string> splitLabel =
+      split_ && !splitImage_.isNull() ? std::optional(label(*split_)) : std::nullopt;
+  std::string problem;
+  service_->call([&](RenderContext& c) {
+    try {
+      cells.push_back(figureCellOf(c, "main", mainLabel, dilatePx));
+      if (splitLabel) cells.push_back(figureCellOf(c, "split", *splitLabel, dilatePx));
+    } catch (const std::exception& ex) {
+      cells.clear();
+      problem = ex.what();
+    }
+  });
+  if (!problem.empty())
+    Q_EMIT renderProblem(QStringLiteral("export figure: %1").arg(QString::fromStdString(problem)));
+  return cells;
+}
+
+void ViewportWidget::markViewChanged() {
+  ++viewRevision_;
+  Q_EMIT viewChanged();
 }
 
 void ViewportWidget::updateOverlayWidget() {
-  updateLightGizmo();
-  const bool split = !splitTechniqueId_.empty() && splitRenderer_;
+  const LightGizmo gizmo =
+      outsideView() ? LightGizmo{} : lightGizmo(scene_.get(), light_, camera_, width(), height());
+  overlay_->gizmoLines = gizmo.lines;
+  overlay_->gizmoPoint = gizmo.point;
+  const bool split = split_ && !splitImage_.isNull();
   overlay_->split = split ? splitImage_ : QImage();
   if (split) {
     // Continuous rendering: each half's live error (its own reference) and how old it is.
@@ -676,22 +751,24 @@ void ViewportWidget::updateOverlayWidget() {
                           std::optional<double> exact, const std::optional<LiveError>& live,
                           const QString& unmeasured) {
       if (!continuous_)
-        return captionFor(id, stats, errorIsCurrent() ? exact : std::nullopt, {},
-                          errorIsCurrent() ? unmeasured : QString());
+        return QString::fromStdString(
+            sl::sideCaption(id, stats, errorIsCurrent() ? exact : std::nullopt, {},
+                            errorIsCurrent() ? unmeasured.toStdString() : std::string()));
       const bool measured = live && live->unmeasured.isEmpty();
-      return captionFor(id, stats, measured ? std::optional(live->errorPct) : std::nullopt,
-                        live ? QString::fromStdString(sl::describeReferenceAge(live->age))
-                             : tr("tracing the reference\u2026"),
-                        live ? live->unmeasured : QString());
+      return QString::fromStdString(
+          sl::sideCaption(id, stats, measured ? std::optional(live->errorPct) : std::nullopt,
+                          live ? sl::describeReferenceAge(live->age)
+                               : tr("tracing the reference\u2026").toStdString(),
+                          live ? live->unmeasured.toStdString() : std::string()));
     };
-    overlay_->leftCaption = caption(renderer_->techniqueId(), renderer_->stats(), mainErrorPct_,
-                                    liveError(), errorUnmeasured_);
-    overlay_->rightCaption = caption(splitTechniqueId_, splitRenderer_->stats(), splitErrorPct_,
+    overlay_->leftCaption =
+        caption(main_.techniqueId(), main_.stats(), mainErrorPct_, liveError(), errorUnmeasured_);
+    overlay_->rightCaption = caption(splitTechniqueId_, split_->stats(), splitErrorPct_,
                                      splitLiveError(), splitErrorUnmeasured_);
   }
   overlay_->legend = ViewOverlay::Legend::None;
-  if (renderer_ && renderer_->rendererParams().has("view.overlay")) {
-    const sl::ParamSet& p = renderer_->rendererParams();
+  if (shared_.has("view.overlay")) {
+    const sl::ParamSet& p = shared_;
     const int v = p.getInt("view.overlay");
     if (v == enumIndexOf(p, "view.overlay", "error"))
       overlay_->legend = ViewOverlay::Legend::Error;
@@ -703,20 +780,20 @@ void ViewportWidget::updateOverlayWidget() {
       overlay_->legend = ViewOverlay::Legend::Changed;
   }
   overlay_->changedCount.reset();
-  if (overlay_->legend == ViewOverlay::Legend::Changed && renderer_->stats().maskChange)
-    overlay_->changedCount = std::make_pair(renderer_->stats().maskChange->changed,
-                                            renderer_->stats().maskChange->compared);
+  if (overlay_->legend == ViewOverlay::Legend::Changed && main_.stats().maskChange)
+    overlay_->changedCount =
+        std::make_pair(main_.stats().maskChange->changed, main_.stats().maskChange->compared);
   overlay_->pointerRing.reset();
   if (pointerHighlight_ && hover_.x() >= 0) overlay_->pointerRing = hover_;
   overlay_->zoomArea = zoomArea_.value_or(QRect());
   overlay_->zoomDrag = zoomDragging_.value_or(QRect());
   overlay_->outsideLegend.clear();
-  if (renderer_ && outsideView() && renderer_->stats().outsideCamera) {
+  if (outsideView() && main_.stats().outsideCamera) {
     auto colour = [](sl::OutlineRole role, int map) {
       const glm::vec3 c = sl::outlineColour(role, map);
       return QColor::fromRgbF(c.r, c.g, c.b);
     };
-    const sl::FrameOutlines& o = renderer_->stats().outlines;
+    const sl::FrameOutlines& o = main_.stats().outlines;
     auto& legend = overlay_->outsideLegend;
     legend.append(
         {colour(sl::OutlineRole::Camera, 0), tr("camera frustum (to the scene's far end)")});
@@ -744,6 +821,9 @@ void ViewportWidget::updateOverlayWidget() {
     }
   }
   overlay_->resolutionNote = resolutionNote();
+  if (const QString busy = busyText(); !busy.isEmpty())
+    overlay_->resolutionNote +=
+        (overlay_->resolutionNote.isEmpty() ? QString() : QStringLiteral("  \u00b7  ")) + busy;
   overlay_->errorNote.clear();
   if (continuous_) {  // the live reference: how old, or being traced for this view
     const auto live = liveError();
@@ -753,19 +833,13 @@ void ViewportWidget::updateOverlayWidget() {
   } else if (!errorIsCurrent()) {
     overlay_->errorNote = tr("(computing the reference\u2026)");
   }
-  overlay_->pausedText =
-      paused_ && pausedBadge_
-          ? tr("PAUSED at frame %1  \u00b7  . step  \u00b7  Space resume")
-                .arg(renderer_ ? static_cast<qulonglong>(renderer_->stats().frameIndex) : 0)
-          : QString();
+  overlay_->pausedText = paused_ && pausedBadge_
+                             ? tr("PAUSED at frame %1  \u00b7  . step  \u00b7  Space resume")
+                                   .arg(static_cast<qulonglong>(main_.stats().frameIndex))
+                             : QString();
   overlay_->setVisible(overlay_->hasContent());
   overlay_->raise();
   overlay_->update();
-}
-
-void ViewportWidget::resizeEvent(QResizeEvent* event) {
-  QOpenGLWidget::resizeEvent(event);
-  overlay_->setGeometry(rect());
 }
 
 void ViewportWidget::setPaused(bool paused, bool badge) {
@@ -777,54 +851,12 @@ void ViewportWidget::setPaused(bool paused, bool badge) {
   // as on demand.
   if (paused_ && !errorIsCurrent()) errorTimer_.start(kErrorDelayMs);
   updateOverlayWidget();
-  update();
+  requestFrame();
 }
 
 void ViewportWidget::stepFrame() {
   ++pendingSteps_;
-  update();
-}
-
-std::optional<std::string> ViewportWidget::setSplitTechnique(
-    const std::string& techniqueId, const std::map<std::string, std::string>& params) {
-  const sl::TechniqueInfo* info =
-      techniqueId.empty() ? nullptr : sl::Renderer::findTechnique(techniqueId);
-  if (!techniqueId.empty() && !info) {
-    std::string known;
-    for (const sl::TechniqueInfo& t : sl::Renderer::techniques())
-      known += (known.empty() ? "" : ", ") + t.id;
-    return "unknown technique '" + techniqueId + "' (known: " + known + ")";
-  }
-  if (info) {
-    sl::ParamSet check(info->params);
-    for (const auto& [key, value] : params) {
-      if (!check.has(key))
-        return "split view: technique '" + techniqueId + "' has no parameter '" + key + "'";
-      if (auto e = check.setFromString(key, value)) return "split view: " + *e;
-    }
-  }
-  splitTechniqueId_ = techniqueId;
-  splitParams_ = info ? params : std::map<std::string, std::string>{};
-  splitParamsPending_ = true;
-  splitErrorPct_.reset();
-  if (splitLiveReference_) splitLiveReference_->cancel();  // of the previous right half
-  splitLiveLatest_.reset();
-  markViewChanged();
-  if (paused_) ++pendingSteps_;
-  update();
-  if (techniqueId.empty()) updateOverlayWidget();
-  Q_EMIT splitChanged();
-  return std::nullopt;
-}
-
-std::map<std::string, std::string> ViewportWidget::splitParams() const {
-  if (splitTechniqueId_.empty()) return {};
-  if (splitParamsPending_ || !splitRenderer_ || splitRenderer_->techniqueId() != splitTechniqueId_)
-    return splitParams_;
-  std::map<std::string, std::string> out;
-  const sl::ParamSet& set = splitRenderer_->params();
-  for (const sl::ParamDecl& d : set.decls()) out[d.key] = set.format(d.key);
-  return out;
+  requestFrame();
 }
 
 void ViewportWidget::setBanner(const QString& title, const QString& text) {
@@ -841,36 +873,6 @@ void ViewportWidget::setPointerHighlight(bool on) {
   updateOverlayWidget();
 }
 
-void ViewportWidget::setZoomArea(const std::optional<QRect>& area) {
-  zoomArea_ = area ? std::optional<QRect>(area->intersected(rect())) : std::nullopt;
-  if (zoomArea_ && zoomArea_->isEmpty()) zoomArea_.reset();
-  if (renderer_) {
-    makeCurrent();
-    updateZoomInset();
-    doneCurrent();
-  }
-  updateOverlayWidget();
-}
-
-ViewportWidget::Readouts ViewportWidget::readouts() const {
-  Readouts r;
-  r.internalDivisor = frameDivisor_;
-  r.adaptiveDivisor = adaptive_.divisor();
-  r.lastFrameMs = lastFrameMs_;
-  r.progress = progressNote_;
-  r.probesRead = probesRead_;
-  r.leftCaption = splitCaption(false);
-  r.rightCaption = splitCaption(true);
-  r.errorOverlayNote = errorOverlayNote();
-  r.pointerHighlight = pointerHighlight_;
-  r.zoomArea = zoomArea_;
-  r.zoomInset = zoomInsetRect();
-  r.zoomFactor = zoomFactor();
-  r.liveReference = liveReference_.get();
-  r.splitLiveReference = splitLiveReference_.get();
-  return r;
-}
-
 QRect ViewportWidget::zoomInsetRect() const {
   overlay_->placeInset();
   return overlay_->insetRect;
@@ -879,92 +881,6 @@ QRect ViewportWidget::zoomInsetRect() const {
 int ViewportWidget::zoomFactor() const {
   overlay_->placeInset();
   return overlay_->insetFactor;
-}
-
-QImage ViewportWidget::renderedImage() {
-  if (!renderer_ || framesRendered_ == 0) return {};
-  const sl::ImageRGBA8 main = renderer_->readColor();
-  if (main.width == 0) return {};
-  const QImage left =
-      QImage(main.pixels.data(), main.width, main.height, QImage::Format_RGBA8888).copy();
-  const bool split = !splitTechniqueId_.empty() && splitRenderer_ && !splitImage_.isNull();
-  if (!split) return left;
-  QImage both(left.width() + splitImage_.width(), std::max(left.height(), splitImage_.height()),
-              QImage::Format_RGBA8888);
-  both.fill(Qt::black);
-  QPainter p(&both);
-  p.drawImage(0, 0, left);
-  p.drawImage(left.width(), 0, splitImage_);
-  return both;
-}
-
-// GL current (paintGL, or made current by the caller).
-void ViewportWidget::updateZoomInset() {
-  if (!zoomArea_) {
-    overlay_->zoomSource = QImage();
-    return;
-  }
-  QImage image = renderedImage();
-  image.setDevicePixelRatio(devicePixelRatioF());
-  overlay_->zoomSource = image;
-}
-
-QImage ViewportWidget::grabView() {
-  QImage image = grabFramebuffer();
-  if (overlay_->isVisible()) {
-    QPainter p(&image);
-    p.scale(image.width() / std::max(1.0, double(width())),
-            image.height() / std::max(1.0, double(height())));
-    overlay_->render(&p, QPoint(), QRegion(), QWidget::DrawChildren);
-  }
-  return image;
-}
-
-void ViewportWidget::resizeGL(int, int) {
-  markViewChanged();
-}
-
-void ViewportWidget::setScene(std::shared_ptr<const sl::Scene> scene) {
-  scene_ = std::move(scene);
-  cancelLiveReferences();  // a trace of the old scene is never shown
-  if (scene_ && scene_->light) light_ = *scene_->light;
-  Q_EMIT lightChanged();
-  if (renderer_) {
-    makeCurrent();
-    renderer_->setScene(scene_);
-    renderer_->setLight(light_);
-    renderer_->resetTemporalState();
-    if (splitRenderer_) splitRenderer_->setScene(scene_);
-    doneCurrent();
-  }
-  resetView();
-}
-
-std::optional<std::string> ViewportWidget::setTechnique(const std::string& id) {
-  if (!renderer_) {
-    if (!sl::Renderer::findTechnique(id)) {
-      std::string known;
-      for (const sl::TechniqueInfo& t : sl::Renderer::techniques())
-        known += (known.empty() ? "" : ", ") + t.id;
-      return "unknown technique '" + id + "' (known: " + known + ")";
-    }
-    techniqueId_ = id;
-    return std::nullopt;
-  }
-  makeCurrent();
-  auto error = renderer_->setTechnique(id);
-  doneCurrent();
-  if (error) return error;
-  techniqueId_ = renderer_->techniqueId();
-  update();
-  return std::nullopt;
-}
-
-void ViewportWidget::setCamera(const sl::Camera& camera) {
-  camera_ = camera;
-  markViewChanged();
-  Q_EMIT cameraChanged();
-  update();
 }
 
 void ViewportWidget::goToBookmark(int index) {
@@ -983,95 +899,8 @@ void ViewportWidget::setLight(const sl::Light& light) {
   if (light_ == light) return;
   light_ = light;
   markViewChanged();
-  update();
+  requestFrame();
   Q_EMIT lightChanged();
-}
-
-bool ViewportWidget::outsideView() const {
-  return renderer_ && renderer_->rendererParams().has("view.outside") &&
-         renderer_->rendererParams().getBool("view.outside");
-}
-
-bool ViewportWidget::setOutsideView(bool on) {
-  if (!renderer_ || !renderer_->rendererParams().has("view.outside")) return false;
-  if (outsideView() == on) return true;
-  if (renderer_->rendererParams().set("view.outside", on ? 1.0 : 0.0)) return false;
-  updateOverlayWidget();
-  update();
-  return true;
-}
-
-void ViewportWidget::adjustOutsideView(float azimuthDeg, float elevationDeg, float zoomFactor) {
-  sl::ParamSet& p = renderer_->rendererParams();
-  auto clampSet = [&](const char* key, double v) {
-    const sl::ParamDecl* d = p.find(key);
-    if (d) (void)p.set(key, std::clamp(v, d->minValue, d->maxValue));
-  };
-  double az = p.get("view.outside.azimuth_deg") + azimuthDeg;
-  az = std::remainder(az, 360.0);
-  clampSet("view.outside.azimuth_deg", az);
-  clampSet("view.outside.elevation_deg", p.get("view.outside.elevation_deg") + elevationDeg);
-  clampSet("view.outside.zoom", p.get("view.outside.zoom") * zoomFactor);
-  update();
-}
-
-void ViewportWidget::updateLightGizmo() {
-  overlay_->gizmoLines.clear();
-  overlay_->gizmoPoint.reset();
-  if (outsideView()) return;  // the gizmo is drawn for the main camera's projection
-  if (!scene_ || !scene_->bounds.valid() || width() <= 0 || height() <= 0) return;
-  const glm::mat4 viewProj = camera_.projection(float(width()) / float(height())) * camera_.view();
-  auto project = [&](const glm::vec3& p) -> std::optional<QPointF> {
-    const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
-    if (!(c.w > 1e-4f)) return std::nullopt;  // behind the camera
-    return QPointF((c.x / c.w * 0.5 + 0.5) * width(), (0.5 - c.y / c.w * 0.5) * height());
-  };
-  auto line = [&](const glm::vec3& a, const glm::vec3& b) {
-    auto pa = project(a), pb = project(b);
-    if (pa && pb) overlay_->gizmoLines.append(QLineF(*pa, *pb));
-  };
-  const float size = glm::length(scene_->bounds.size());
-  if (light_.type == sl::LightType::Directional) {
-    // An arrow from the sky down to the scene's centre, along the light.
-    const glm::vec3 end = scene_->bounds.center();
-    const glm::vec3 start = end + light_.directionalTowards() * (0.35f * size);
-    line(start, end);
-    const glm::vec3 d = glm::normalize(end - start);
-    const glm::vec3 side = glm::normalize(
-        glm::cross(d, std::abs(d.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
-    const float head = 0.04f * size;
-    line(end, end - d * head + side * (0.5f * head));
-    line(end, end - d * head - side * (0.5f * head));
-    overlay_->gizmoPoint = project(start);
-    return;
-  }
-  const glm::vec3 pos = light_.positionM;
-  overlay_->gizmoPoint = project(pos);
-  if (light_.type == sl::LightType::Point) {  // a bulb: short rays around the point
-    const float r = 0.03f * size;
-    for (glm::vec3 d : {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)}) {
-      line(pos + d * r, pos + d * (2.0f * r));
-      line(pos - d * r, pos - d * (2.0f * r));
-    }
-    line(pos, glm::vec3(pos.x, scene_->bounds.min.y, pos.z));  // its foot on the ground
-    return;
-  }
-  // Spot: the outer cone's outline down to the scene's floor (or 1/3 of its size).
-  const glm::vec3 axis = light_.spotAxis();
-  float len = 0.33f * size;
-  if (axis.y < -0.05f) len = std::min(2.0f * size, (pos.y - scene_->bounds.min.y) / -axis.y);
-  const glm::vec3 u = glm::normalize(
-      glm::cross(axis, std::abs(axis.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
-  const glm::vec3 v = glm::cross(axis, u);
-  const float radius = len * std::tan(glm::radians(light_.outerConeDeg));
-  glm::vec3 previous{};
-  for (int i = 0; i <= 32; ++i) {
-    const float a = float(i) / 32.0f * 6.2831853f;
-    const glm::vec3 p = pos + axis * len + (u * std::cos(a) + v * std::sin(a)) * radius;
-    if (i > 0) line(previous, p);
-    if (i % 8 == 0 && i < 32) line(pos, p);
-    previous = p;
-  }
 }
 
 void ViewportWidget::dragLight(const QPoint& d) {
@@ -1094,127 +923,8 @@ void ViewportWidget::dragLight(const QPoint& d) {
   if (!l.validate()) setLight(l);
 }
 
-void ViewportWidget::setContinuous(bool on) {
-  continuous_ = on;
-  if (on) {
-    errorTimer_.stop();
-    for (auto* worker : {&liveReference_, &splitLiveReference_})
-      if (!*worker)
-        *worker = std::make_unique<sl::AsyncReference>(kLiveReferenceMinIntervalS,
-                                                       kLiveReferenceDurationFactor);
-    update();
-  } else {
-    cancelLiveReferences();
-    if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);
-  }
-  updateOverlayWidget();
-}
-
-// GL current (paintGL).
-void ViewportWidget::updateLiveReference() {
-  if (!liveReference_ || !renderer_) return;
-  if (auto failure = liveReference_->takeFailure())
-    Q_EMIT renderProblem(
-        QStringLiteral("reference trace failed: %1").arg(QString::fromStdString(*failure)));
-  if (auto done = liveReference_->takeFinished()) {
-    const bool current = done->viewRevision == viewRevision_;
-    // The error overlay draws the mask only while frames show what was traced (the
-    // renderer compares frame signatures); a mask of an earlier view is not drawn.
-    if (current)
-      renderer_->setReferenceMask(done->trace.frameSignature, done->trace.referenceMask,
-                                  done->trace.width, done->trace.height);
-    done->trace.referenceMask = {};
-    liveLatest_ = std::move(done);
-    if (current) {
-      mainErrorPct_ = errorPercentOf(liveLatest_->trace.stats);
-      errorUnmeasured_ = unmeasuredReason(liveLatest_->trace.stats);
-      errorRevision_ = viewRevision_;
-      if (mainErrorPct_)
-        Q_EMIT errorComputed(*mainErrorPct_);
-      else
-        Q_EMIT errorUnmeasured(errorUnmeasured_);
-    }
-  }
-  updateSplitLiveReference();
-  if (!liveReference_->wantsTrace(viewRevision_)) return;
-  if (auto job = referenceJob(*renderer_, viewRevision_, framesRendered_))
-    liveReference_->submit(std::move(*job));
-}
-
-void ViewportWidget::cancelLiveReferences() {
-  for (sl::AsyncReference* worker : {liveReference_.get(), splitLiveReference_.get()})
-    if (worker) worker->cancel();
-  liveLatest_.reset();
-  splitLiveLatest_.reset();
-}
-
-// GL current (paintGL, after both halves rendered).
-void ViewportWidget::updateSplitLiveReference() {
-  const bool split = !splitTechniqueId_.empty() && splitRenderer_ &&
-                     splitRenderer_->techniqueId() == splitTechniqueId_ && !splitImage_.isNull();
-  if (!splitLiveReference_ || !split) return;
-  if (auto failure = splitLiveReference_->takeFailure())
-    Q_EMIT renderProblem(QStringLiteral("split view: reference trace failed: %1")
-                             .arg(QString::fromStdString(*failure)));
-  if (auto done = splitLiveReference_->takeFinished()) {
-    done->trace.referenceMask = {};  // the error overlay is the left half's only
-    splitLiveLatest_ = std::move(done);
-    if (splitLiveLatest_->viewRevision == viewRevision_)
-      splitErrorPct_ = splitLiveLatest_->trace.stats.errorPct;
-  }
-  if (!splitLiveReference_->wantsTrace(viewRevision_)) return;
-  if (auto job = referenceJob(*splitRenderer_, viewRevision_, framesRendered_))
-    splitLiveReference_->submit(std::move(*job));
-}
-
-std::optional<ViewportWidget::LiveError> ViewportWidget::splitLiveError() const {
-  if (!continuous_ || !splitLiveLatest_ || splitTechniqueId_.empty()) return std::nullopt;
-  LiveError e;
-  e.errorPct = splitLiveLatest_->trace.stats.errorPct;
-  e.unmeasured = unmeasuredReason(splitLiveLatest_->trace.stats);
-  e.age = sl::referenceAge(*splitLiveLatest_, viewRevision_, framesRendered_,
-                           sl::AsyncReference::steadySeconds());
-  return e;
-}
-
 QString ViewportWidget::splitCaption(bool right) const {
   return right ? overlay_->rightCaption : overlay_->leftCaption;
-}
-
-// GL current: the snapshot is read here; the worker traces CPU copies only.
-std::optional<sl::ReferenceJob> ViewportWidget::referenceJob(sl::Renderer& renderer,
-                                                             std::uint64_t viewRevision,
-                                                             std::uint64_t frameNumber) {
-  auto snapshot =
-      std::make_shared<sl::Renderer::ReferenceSnapshot>(renderer.snapshotForReference());
-  if (!snapshot->reference) return std::nullopt;
-  sl::ReferenceJob job;
-  job.viewRevision = viewRevision;
-  job.frameNumber = frameNumber;
-  job.trace = [snapshot](const std::atomic<bool>& cancelled) -> std::optional<sl::ReferenceTrace> {
-    const int width = snapshot->frame.width, height = snapshot->frame.height;
-    std::string signature = snapshot->frameSignature;
-    auto result = sl::Renderer::traceReference(std::move(*snapshot), &cancelled);
-    if (!result) return std::nullopt;
-    sl::ReferenceTrace t;
-    t.stats = result->stats;
-    t.referenceMask = std::move(result->referenceMask);
-    t.width = width;
-    t.height = height;
-    t.frameSignature = std::move(signature);
-    return t;
-  };
-  return job;
-}
-
-std::optional<ViewportWidget::LiveError> ViewportWidget::liveError() const {
-  if (!continuous_ || !liveLatest_) return std::nullopt;
-  LiveError e;
-  e.errorPct = liveLatest_->trace.stats.errorPct;
-  e.unmeasured = unmeasuredReason(liveLatest_->trace.stats);
-  e.age = sl::referenceAge(*liveLatest_, viewRevision_, framesRendered_,
-                           sl::AsyncReference::steadySeconds());
-  return e;
 }
 
 QString ViewportWidget::errorOverlayNote() const {
@@ -1230,28 +940,6 @@ QString ViewportWidget::liveErrorText() const {
   const QString pct = QString::number(e->errorPct, 'f', e->errorPct < 1 ? 3 : 2);
   if (e->age.stale) return tr("error %1 %  \u00b7  %2  \u00b7  re-tracing").arg(pct, age);
   return tr("error %1 %  \u00b7  %2").arg(pct, age);
-}
-
-void ViewportWidget::setAdaptiveAllowed(bool allowed) {
-  adaptiveAllowed_ = allowed;
-  update();
-}
-
-void ViewportWidget::setPresenting(bool on) {
-  presenting_ = on;
-  update();
-}
-
-bool ViewportWidget::adaptiveActive() const {
-  if (!adaptiveAllowed_ || presenting_ || !splitTechniqueId_.empty() || !renderer_) return false;
-  const sl::ParamSet& shared = renderer_->rendererParams();
-  return shared.has("view.adaptive") && shared.getBool("view.adaptive");
-}
-
-void ViewportWidget::renderFullSizeNow() {
-  if (frameDivisor_ == 1 || !renderer_) return;
-  fullSizeNext_ = true;
-  repaint();
 }
 
 QString ViewportWidget::resolutionNote() const {
@@ -1276,134 +964,6 @@ QString ViewportWidget::progressText() const {
       .arg(progressNote_->done / per)
       .arg(progressNote_->total / per)
       .arg(ofNext);
-}
-
-void ViewportWidget::setProbeWanted(bool wanted) {
-  if (probeWanted_ == wanted) return;
-  probeWanted_ = wanted;
-  if (!wanted) {
-    Q_EMIT pixelProbed(std::nullopt);
-  } else if (hover_.x() >= 0 && renderer_) {
-    makeCurrent();
-    probeHover();
-    doneCurrent();
-  }
-}
-
-std::optional<double> ViewportWidget::computeErrorNow() {
-  if (!renderer_ || framesRendered_ == 0) return std::nullopt;
-  // A frame that failed is not measured: its image is the neutral frame, not the technique's.
-  if (!frameFailure_.isEmpty()) {
-    errorRevision_ = viewRevision_;
-    mainErrorPct_.reset();
-    errorUnmeasured_ = tr("the frame failed: %1").arg(frameFailure_);
-    Q_EMIT errorUnmeasured(errorUnmeasured_);
-    updateOverlayWidget();
-    return std::nullopt;
-  }
-  makeCurrent();
-  std::optional<double> pct;
-  bool computed = false;
-  try {
-    const sl::ShadowErrorStats main = renderer_->computeError().stats;
-    pct = errorPercentOf(main);
-    errorUnmeasured_ = unmeasuredReason(main);
-    computed = true;
-    if (!splitTechniqueId_.empty() && splitRenderer_) {
-      const sl::ShadowErrorStats split = splitRenderer_->computeError().stats;
-      splitErrorPct_ = errorPercentOf(split);
-      splitErrorUnmeasured_ = unmeasuredReason(split);
-    }
-  } catch (const std::exception& e) {
-    Q_EMIT renderProblem(
-        QStringLiteral("error metric failed: %1").arg(QString::fromStdString(e.what())));
-  }
-  doneCurrent();
-  if (!computed) return std::nullopt;
-  errorRevision_ = viewRevision_;
-  mainErrorPct_ = pct;
-  if (!pct) {
-    Q_EMIT errorUnmeasured(errorUnmeasured_);
-    updateOverlayWidget();
-    return std::nullopt;
-  }
-  Q_EMIT errorComputed(*pct);
-  // The error overlay shows the reference just computed: draw it (one more frame, unless
-  // paused, where the frozen frame must stay the one that was measured).
-  const sl::ParamSet& shared = renderer_->rendererParams();
-  if (shared.has("view.overlay") &&
-      shared.getInt("view.overlay") == enumIndexOf(shared, "view.overlay", "error") && !paused_)
-    update();
-  updateOverlayWidget();
-  return pct;
-}
-
-std::optional<std::string> ViewportWidget::reloadShaders() {
-  if (!renderer_) return std::string("the renderer is not running");
-  makeCurrent();
-  auto error = renderer_->reloadShaders();
-  doneCurrent();
-  markViewChanged();
-  update();
-  return error;
-}
-
-void ViewportWidget::computeErrorIfStill() {
-  if (errorIsCurrent()) return;
-  if (dragButton_ != Qt::NoButton || !heldKeys_.empty()) {
-    errorTimer_.start(kErrorDelayMs);  // still interacting: try again later
-    return;
-  }
-  computeErrorNow();
-}
-
-std::vector<FigureCell> ViewportWidget::figureCells(int dilatePx) {
-  std::vector<FigureCell> cells;
-  if (!renderer_ || framesRendered_ == 0) return cells;
-  renderFullSizeNow();  // a figure is never the reduced (adaptive resolution) image
-  makeCurrent();
-  try {
-    for (sl::Renderer* r :
-         {renderer_.get(), splitTechniqueId_.empty() ? nullptr : splitRenderer_.get()}) {
-      if (!r) continue;
-      const sl::Renderer::ErrorResult e = r->computeError();
-      FigureCell c;
-      c.label = r->techniqueId();
-      const sl::ParamSet& ps = r->params();
-      for (const sl::ParamDecl& d : ps.decls())
-        if (ps.get(d.key) != d.defaultValue) c.label += " " + d.key + "=" + ps.format(d.key);
-      const sl::FrameStats& st = r->stats();
-      char facts[160];
-      const double mib = double(st.memory.bytes()) / double(1 << 20);
-      if (e.stats.covered == 0)
-        std::snprintf(facts, sizeof facts, "%.3g M texels (%.3g MiB), error n/a, %.1f ms",
-                      double(st.memory.texels()) / 1e6, mib, st.totalMs);
-      else
-        std::snprintf(facts, sizeof facts, "%.3g M texels (%.3g MiB), error %.3f %%, %.1f ms",
-                      double(st.memory.texels()) / 1e6, mib, e.stats.errorPct, st.totalMs);
-      c.facts = facts;
-      if (const std::uint64_t debug = st.memory.debugViewBytes()) {
-        char views[64];
-        std::snprintf(views, sizeof views, "; debug views %.3g MiB",
-                      double(debug) / double(1 << 20));
-        c.facts += views;
-      }
-      c.shaded = e.frame.color;
-      c.error = sl::makeErrorImage(e.frame.color, e.frame.hardMask, e.referenceMask, dilatePx);
-      cells.push_back(std::move(c));
-    }
-  } catch (const std::exception& ex) {
-    cells.clear();
-    Q_EMIT renderProblem(
-        QStringLiteral("export figure: %1").arg(QString::fromStdString(ex.what())));
-  }
-  doneCurrent();
-  return cells;
-}
-
-void ViewportWidget::markViewChanged() {
-  ++viewRevision_;
-  Q_EMIT viewChanged();
 }
 
 float ViewportWidget::sceneScaleM() const {
@@ -1445,9 +1005,7 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   if (dragButton_ == Qt::NoButton) {
     hover_ = event->position();
     if (!probeWanted_) return;  // no visible panel shows it: no readback
-    makeCurrent();
     probeHover();
-    doneCurrent();
     return;
   }
   const QPoint d = pos - lastMouse_;
@@ -1482,20 +1040,7 @@ void ViewportWidget::leaveEvent(QEvent* event) {
   hover_ = QPointF(-1.0, -1.0);
   Q_EMIT pixelProbed(std::nullopt);
   if (pointerHighlight_) updateOverlayWidget();
-  QOpenGLWidget::leaveEvent(event);
-}
-
-// GL current (paintGL, or made current by the caller).
-void ViewportWidget::probeHover() {
-  if (hover_.x() < 0 || !renderer_ || !probeWanted_) return;
-  std::optional<sl::PixelProbe> probe;
-  const qreal dpr = devicePixelRatioF();
-  const int x = int(std::floor(hover_.x() * dpr)), y = int(std::floor(hover_.y() * dpr));
-  if (!outsideView() && x < lastMainWidth_) {
-    probe = renderer_->probePixel(x / frameDivisor_, y / frameDivisor_);  // internal pixels
-    ++probesRead_;
-  }
-  Q_EMIT pixelProbed(probe);
+  QWidget::leaveEvent(event);
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
@@ -1529,7 +1074,7 @@ void ViewportWidget::wheelEvent(QWheelEvent* event) {
 
 void ViewportWidget::keyPressEvent(QKeyEvent* event) {
   if (!isFlyKey(event->key()) || (event->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
-    QOpenGLWidget::keyPressEvent(event);
+    QWidget::keyPressEvent(event);
     return;
   }
   if (!event->isAutoRepeat()) heldKeys_.insert(event->key());
@@ -1543,7 +1088,7 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event) {
 
 void ViewportWidget::keyReleaseEvent(QKeyEvent* event) {
   if (!isFlyKey(event->key())) {
-    QOpenGLWidget::keyReleaseEvent(event);
+    QWidget::keyReleaseEvent(event);
     return;
   }
   if (!event->isAutoRepeat()) heldKeys_.erase(event->key());
@@ -1555,7 +1100,7 @@ void ViewportWidget::focusOutEvent(QFocusEvent* event) {
   heldKeys_.clear();
   flyTimer_.stop();
   dragButton_ = Qt::NoButton;
-  QOpenGLWidget::focusOutEvent(event);
+  QWidget::focusOutEvent(event);
 }
 
 void ViewportWidget::flyStep() {

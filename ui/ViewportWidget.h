@@ -1,8 +1,13 @@
-// The 3D view: a QOpenGLWidget that owns the sl::Renderer (created in initializeGL, freed
-// with its context current) and turns mouse and keys into camera moves. It renders on
-// demand and computes the (slow) shadow error only once the view has been still a while.
-// Teaching extras: pause and single-step, a banner (lesson, pass being stepped), legends of
-// the renderer's overlays, and a split view with a second technique on the right half.
+// The 3D view: a plain widget that shows the last complete frame of the render service
+// (ui/RenderService: the renderers and their GL context live on its thread) and turns mouse
+// and keys into camera moves. It holds the two ViewSides (core/ViewSide: the main technique
+// and the split view's right half, with the parameters being edited), sends the service a
+// frame request when something changed (a newer request replaces one not started and stops
+// one in progress), and draws what comes back; the UI thread never calls GL and never waits
+// on a frame. The (slow) shadow error is traced on the render thread once the view has been
+// still a while. Teaching extras: pause and single-step, a banner (lesson, pass being
+// stepped), legends of the renderer's overlays, a split view with a second technique on the
+// right half, and a note while a slow frame is being computed.
 #pragma once
 
 #include <map>
@@ -13,7 +18,7 @@
 
 #include <QElapsedTimer>
 #include <QImage>
-#include <QOpenGLWidget>
+#include <QWidget>
 #include <QPoint>
 #include <QPointF>
 #include <QPointF>
@@ -22,22 +27,37 @@
 #include "FigureKit.h"
 #include "algo/AdaptiveResolution.h"
 #include "core/Renderer.h"
+#include "core/ViewSide.h"
+#include "LiveReference.h"
+#include "ViewFrame.h"
 #include "metrics/AsyncReference.h"
 
 namespace sl::ui {
 
 class ViewOverlay;
+class RenderService;
+class RenderContext;
 
-class ViewportWidget : public QOpenGLWidget {
+class ViewportWidget : public QWidget {
   Q_OBJECT
 
  public:
   explicit ViewportWidget(QWidget* parent = nullptr);
   ~ViewportWidget() override;
 
-  /// The renderer, or null before the GL context exists (or after it failed).
-  sl::Renderer* renderer() { return renderer_.get(); }
-  const sl::Renderer* renderer() const { return renderer_.get(); }
+  /// The main side: its technique, the parameters being edited and what its last frame
+  /// published; null before the render service is ready (or after it failed).
+  sl::ViewSide* mainSide() { return ready_ ? &main_ : nullptr; }
+  const sl::ViewSide* mainSide() const { return ready_ ? &main_ : nullptr; }
+  /// The shared view and shading parameters (both halves).
+  sl::ParamSet& sharedParams() { return shared_; }
+  /// The render context's GL_RENDERER and version (empty before it is ready).
+  const QString& glDescription() const { return glDescription_; }
+  /// The render service (its thread owns every renderer of the window).
+  RenderService& service() { return *service_; }
+  /// Asks for a new frame: at once when the view changed (a frame in progress is stopped),
+  /// else after the one in progress. Cheap: it only sends a request.
+  void requestFrame();
 
   /// Shows `scene`; the camera goes to the scene's first bookmark (or a framing view) and
   /// the light to the scene's sun when it has one.
@@ -46,7 +66,7 @@ class ViewportWidget : public QOpenGLWidget {
 
   /// Switches technique (kept until the renderer exists). Unknown id: error, no change.
   std::optional<std::string> setTechnique(const std::string& id);
-  const std::string& techniqueId() const { return techniqueId_; }
+  const std::string& techniqueId() const { return main_.techniqueId(); }
 
   void setCamera(const sl::Camera& camera);
   const sl::Camera& camera() const { return camera_; }
@@ -67,14 +87,10 @@ class ViewportWidget : public QOpenGLWidget {
   void setContinuous(bool on);
   bool continuous() const { return continuous_; }
 
+  using LiveError = sl::ui::LiveError;
   /// Continuous rendering's error: the latest finished reference's error, its age, and
   /// whether it was traced for another view than the one shown (`age.stale`: the number is
   /// that earlier view's, and a trace of the current view is under way or due).
-  struct LiveError {
-    double errorPct = 0.0;
-    QString unmeasured;  ///< why errorPct is not a measurement (no covered pixel); empty: it is
-    sl::ReferenceAge age;
-  };
   std::optional<LiveError> liveError() const;
   /// The readout of it: "error 0.420 % · reference 0.8 s old (3 frames ago)", or with
   /// "of an earlier view … re-tracing" when stale; "error — · tracing the reference…"
@@ -107,13 +123,18 @@ class ViewportWidget : public QOpenGLWidget {
   /// "tile k of N: drawn progressively, error when complete"; empty otherwise.
   QString progressText() const;
 
-  /// Computes the error of the last frame now (blocks for a fraction of a second).
+  /// Computes the error of the last frame now on the render thread and waits for it (for
+  /// exports and scripts; the interactive view computes it in the background).
   /// Returns the error in percent, or nothing (and emits renderProblem) on failure.
   std::optional<double> computeErrorNow();
+  /// The frame being computed, while it has taken longer than kBusyNoteMs: "rendering fvsm
+  /// · 2.3 s" (the last complete frame stays on screen); empty otherwise.
+  QString busyText() const;
+  static constexpr int kBusyNoteMs = 250;
   /// Whether the error shown for the current view is up to date.
   bool errorIsCurrent() const { return errorRevision_ == viewRevision_; }
 
-  /// Makes the context current and reloads the shaders (last good programs stay on error).
+  /// Reloads the shaders on the render thread (last good programs stay on error).
   std::optional<std::string> reloadShaders();
 
   /// Frames rendered since the renderer was created.
@@ -166,6 +187,7 @@ class ViewportWidget : public QOpenGLWidget {
     int adaptiveDivisor = 1;   ///< adaptive state's (a still view's settle frame may be full size)
     double lastFrameMs = 0.0;  ///< wall clock of the last frame (both halves; >= its timed passes)
     std::optional<sl::FrameStats::Progress> progress;  ///< last frame's progressive resolve
+    std::uint64_t framesStopped = 0;    ///< frames stopped by a newer request before completing
     std::uint64_t probesRead = 0;       ///< pixels read back for the hover probe (this renderer)
     QString leftCaption, rightCaption;  ///< drawn under the split view's halves (empty: none)
     /// The line under the error overlay's legend (the reference's age, or that it is being
@@ -181,23 +203,16 @@ class ViewportWidget : public QOpenGLWidget {
   };
   Readouts readouts() const;
   /// The view as the renderer drew it (both halves in split view, no overlay), device
-  /// pixels; null before a frame. GL read of the colour target only.
-  QImage renderedImage();
+  /// pixels of the internal size; null before a frame. No GL: the last frame's copy.
+  QImage renderedImage() const;
 
-  /// The split view's renderer, created now (GL) with its technique and parameters applied,
-  /// so that a panel may edit its ParamSet; null when the split view is off or there is no
-  /// renderer yet.
-  sl::Renderer* splitRenderer();
-  /// What the split renderer publishes from its next frame on (a lesson text's numbers of
-  /// the right half); no GL.
-  void setSplitPublications(std::set<std::string> keys) { splitPublicationKeys_ = std::move(keys); }
-  /// The split renderer as it is (no GL): null while off or not yet made for the technique.
-  const sl::Renderer* currentSplitRenderer() const {
-    return splitRenderer_ && !splitTechniqueId_.empty() &&
-                   splitRenderer_->techniqueId() == splitTechniqueId_
-               ? splitRenderer_.get()
-               : nullptr;
-  }
+  /// The split view's side (its technique and parameters, so that a panel may edit them);
+  /// null when the split view is off or the service is not ready.
+  sl::ViewSide* splitSide() { return ready_ && split_ ? &*split_ : nullptr; }
+  const sl::ViewSide* splitSide() const { return ready_ && split_ ? &*split_ : nullptr; }
+  /// What the split side publishes from its next frame on (a lesson text's numbers of the
+  /// right half).
+  void setSplitPublications(std::set<std::string> keys);
 
   /// "Equal memory": the split technique's declared memory knob (`ParamDecl::memoryKnob`: a
   /// map's resolution, rmsm/asm's pool pages, virtual-tiled's tile resolution; fvsm has none: its
@@ -240,13 +255,13 @@ class ViewportWidget : public QOpenGLWidget {
   std::optional<double> splitErrorPct() const { return splitErrorPct_; }
 
  Q_SIGNALS:
-  /// The renderer exists (after initializeGL): panels may bind to its parameters.
+  /// The render service is ready: panels may bind to the sides' parameters.
   void rendererReady();
-  /// The renderer is about to be destroyed: panels must drop references into it.
+  /// The view is about to be destroyed: panels must drop references into its sides.
   void rendererAboutToBeDestroyed();
   /// The GL context is unusable or the renderer could not be created.
   void initializationFailed(const QString& message);
-  /// A frame was rendered; renderer()->stats() describes it.
+  /// A frame was rendered; mainSide()->stats() describes it.
   void frameRendered();
   /// renderFrame or the GL debug output reported a problem (the view keeps working).
   void renderProblem(const QString& message);
@@ -269,9 +284,7 @@ class ViewportWidget : public QOpenGLWidget {
   void pixelProbed(const std::optional<sl::PixelProbe>& probe);
 
  protected:
-  void initializeGL() override;
-  void paintGL() override;
-  void resizeGL(int w, int h) override;
+  void paintEvent(QPaintEvent* event) override;
   void resizeEvent(QResizeEvent* event) override;
 
   void mousePressEvent(QMouseEvent* event) override;
@@ -290,11 +303,22 @@ class ViewportWidget : public QOpenGLWidget {
   int zoomFactor() const;
   /// Turns the outside camera and scales its zoom (clamped to the declared ranges).
   void adjustOutsideView(float azimuthDeg, float elevationDeg, float zoomFactor);
-  void destroyRenderer();
-  void applyStateToRenderer();
-  void renderSplitHalf(int width, int height, std::string& problem);
-  /// GL current: the split renderer created, its technique and pending parameters applied.
-  std::optional<std::string> prepareSplitRenderer();
+  void serviceReady(const QString& description);
+  QSize deviceSize() const;  ///< the view in device pixels
+  /// Back from the render thread: the errors of the view `viewRevision` (dropped when the
+  /// view moved on since).
+  void applyError(std::uint64_t viewRevision, const SideError& main,
+                  const std::optional<SideError>& split);
+  /// The last main frame failed: its error is n/a with the reason (true), else false.
+  bool failedFrameUnmeasured();
+  /// Sends the next frame request when one is wanted (see requestFrame).
+  void pump();
+  /// What the next frame is: sizes, the sides' requests, probe and reference snapshots.
+  std::shared_ptr<FrameOrder> makeOrder();
+  /// Back on the UI thread: shows a complete frame, drops a stopped one.
+  void applyOutcome(const std::shared_ptr<FrameOutcome>& outcome);
+  /// Renders `order` on the render thread and waits (exports, the settle of a grab).
+  bool renderNow(const std::shared_ptr<FrameOrder>& order);
   void updateOverlayWidget();
   /// The light gizmo in widget pixels (sun arrow, bulb, or spot cone) for the overlay.
   void updateLightGizmo();
@@ -302,56 +326,52 @@ class ViewportWidget : public QOpenGLWidget {
   /// for spot and point (the point under the cursor follows it, at the light's depth).
   void dragLight(const QPoint& delta);
   void markViewChanged();
+  /// Notices edits of the sides' parameters (a panel, a preset): the view changed.
+  void noticeEdits();
   void flyStep();
   void computeErrorIfStill();
-  /// Continuous rendering (GL current, after a frame): takes a finished reference (its mask
-  /// to the error overlay when it is of this view) and starts a trace when one is due.
-  void updateLiveReference();
+  /// Continuous rendering, after a frame: takes finished references (the main one's mask to
+  /// the error overlay when it is of this view) and submits traces that are due.
+  void updateLiveReferences(FrameOutcome& outcome);
   float sceneScaleM() const;  ///< size of the scene, for fly speed and pan scale
+  void updateZoomInset();
+  void probeHover();  ///< asks the render thread for the pixel under hover_ (pixelProbed)
 
-  std::unique_ptr<sl::Renderer> renderer_;
-  /// Split view's right half: a second renderer on the same context (owns its own GL
-  /// objects; created lazily, kept until the context goes).
-  std::unique_ptr<sl::Renderer> splitRenderer_;
-  std::set<std::string> splitPublicationKeys_;  ///< setSplitPublications
+  RenderService* service_ = nullptr;
+  bool ready_ = false;
+  QString glDescription_;
+  sl::ParamSet shared_;
+  sl::ViewSide main_;
+  std::optional<sl::ViewSide> split_;  ///< the right half, while the split view is on
+  std::set<std::string> splitPublicationKeys_;
   std::string splitTechniqueId_;
   std::map<std::string, std::string> splitParams_;  ///< given to setSplitTechnique
-  bool splitParamsPending_ = false;                 ///< not yet applied to splitRenderer_
   std::optional<double> splitErrorPct_;
   std::optional<double> mainErrorPct_;
   QString errorUnmeasured_, splitErrorUnmeasured_;  ///< why the error is n/a (empty: measured)
   QString frameFailure_;  ///< the last main frame's problem (empty: it rendered)
-  QImage splitImage_;
+  QImage mainImage_;      ///< the last complete frame's main half (internal size)
+  QImage splitImage_;     ///< its right half (internal size)
   ViewOverlay* overlay_ = nullptr;
   bool paused_ = false;
   bool pausedBadge_ = true;
   int pendingSteps_ = 0;
-  QSize lastFrameSize_;
+  QSize lastFrameSize_;        ///< device pixels of the view when the last frame was ordered
   int lastMainWidth_ = 0;      ///< device pixels of the main renderer's part of the view
   QPointF hover_{-1.0, -1.0};  ///< the mouse over the view (widget pixels), -1: not over it
   bool pointerHighlight_ = false;
   std::optional<QRect> zoomArea_;      ///< widget pixels
   std::optional<QRect> zoomDragging_;  ///< the rectangle while Ctrl+Shift+drag draws it
   QPoint zoomDragStart_;
-  void updateZoomInset();  ///< GL current: crops the rendered image into the overlay
-  void probeHover();       ///< reads the pixel under hover_ and emits pixelProbed
   std::shared_ptr<const sl::Scene> scene_;
-  std::string techniqueId_;
   sl::Camera camera_;
   sl::Light light_;
   bool continuous_ = false;
-  std::unique_ptr<sl::AsyncReference> liveReference_;
-  std::optional<sl::FinishedReference> liveLatest_;         ///< its mask dropped once uploaded
-  std::unique_ptr<sl::AsyncReference> splitLiveReference_;  ///< the right half's worker
-  std::optional<sl::FinishedReference> splitLiveLatest_;
+  LiveReference liveMain_, liveSplit_;  ///< each side's live reference (continuous rendering)
+  /// A finished main trace's mask for the error overlay, sent with the next frame order.
+  std::optional<sl::FinishedReference> maskToUpload_;
   /// Cancels both halves' running traces and forgets their results.
   void cancelLiveReferences();
-  /// The split half's live reference: takes a finished trace, starts the next (GL current).
-  void updateSplitLiveReference();
-  /// A trace of `renderer`'s last frame for an AsyncReference (null: nothing to trace).
-  static std::optional<sl::ReferenceJob> referenceJob(sl::Renderer& renderer,
-                                                      std::uint64_t viewRevision,
-                                                      std::uint64_t frameNumber);
   bool probeWanted_ = false;
   bool adaptiveAllowed_ = false;
   bool presenting_ = false;
@@ -368,13 +388,23 @@ class ViewportWidget : public QOpenGLWidget {
   /// composite, the overshoot of the last tile, the event loop).
   static constexpr double kProgressiveShare = 0.5;
   std::uint64_t probesRead_ = 0;
+  std::uint64_t probeSerial_ = 0;  ///< the latest probe asked for (older answers are dropped)
 
-  // What the renderer saw last frame; any difference means "view changed".
-  unsigned lastParamRevision_ = ~0u;
-  unsigned lastRendererParamRevision_ = ~0u;
-  unsigned lastSplitParamRevision_ = ~0u;
-  std::string lastTechniqueId_;
+  // The frame loop: a wanted frame, the orders sent and the outcomes back.
+  bool frameWanted_ = false;
+  std::uint64_t ordersSent_ = 0;        ///< id of the last order submitted
+  std::uint64_t ordersDone_ = 0;        ///< id of the last outcome received (shown or stopped)
+  std::uint64_t sentViewRevision_ = 0;  ///< view revision of the last order submitted
+  std::uint64_t framesStopped_ = 0;     ///< orders stopped before they completed
+  QTimer busyTimer_;                    ///< refreshes the busy note while a frame renders
+  QString busyTechnique_;               ///< of the order in flight
+
+  // What the sides looked like when last ordered; any difference means "view changed".
+  std::uint64_t lastMainRevision_ = ~0ull;
+  unsigned lastSharedRevision_ = ~0u;
+  std::uint64_t lastSplitRevision_ = ~0ull;
   std::uint64_t viewRevision_ = 1;
+  std::uint64_t shownViewRevision_ = 0;  ///< of the frame on screen
   std::uint64_t errorRevision_ = 0;
   std::uint64_t framesRendered_ = 0;
   std::string lastProblem_;

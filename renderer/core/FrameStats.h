@@ -101,7 +101,9 @@ struct FrameStats {
   };
   std::optional<Progress> progress;
   /// False while the view shows a partial progressive result (metrics and error wait).
-  bool complete() const { return !progress || progress->shownComplete; }
+  bool complete() const { return !cancelled && (!progress || progress->shownComplete); }
+  /// The host stopped the frame (Renderer::setCancelFlag): nothing of it is a measurement.
+  bool cancelled = false;
   double passMs(const std::string& name) const;
 };
 

@@ -199,6 +199,7 @@ struct RendererState {
   /// units the main targets hold, the next unit and their number, whether a whole pass of
   /// that view has finished, and this call's progress (for FrameStats).
   double progressiveBudgetMs = 0.0;
+  const std::atomic<bool>* cancel = nullptr;  ///< setCancelFlag
   std::string progressSignature;
   int progressNext = 0, progressTotal = 0;
   bool progressShownComplete = false;
@@ -523,6 +524,10 @@ void Renderer::setProgressiveBudget(double ms) {
   if (ms <= 0.0) s_->progressSignature.clear();
 }
 
+void Renderer::setCancelFlag(const std::atomic<bool>* flag) {
+  s_->cancel = flag;
+}
+
 double Renderer::progressiveBudget() const {
   return s_->progressiveBudgetMs;
 }
@@ -833,6 +838,11 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned target,
                                                  int presentWidth, int presentHeight) {
   RendererState& s = *s_;
+  if (s.cancel && s.cancel->load()) {  // stopped before it started: nothing drawn
+    s.stats = FrameStats{};
+    s.stats.cancelled = true;
+    return std::nullopt;
+  }
   auto neutral = [&](const std::string& why) -> std::optional<std::string> {
     clearFrame(std::max(width, presentWidth), std::max(height, presentHeight), target);
     return why;

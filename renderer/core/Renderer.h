@@ -380,6 +380,10 @@ class Renderer {
   /// it is. Once every unit is done the targets equal a one-call frame's, pixel for pixel.
   /// 0 (the default: CLI, tests, grabs) = every frame complete in one call.
   void setProgressiveBudget(double ms);
+  /// The host's stop flag (any thread may set it; null: never stopped). renderFrame reads it
+  /// before it starts; once it is set the frame stops: renderFrame returns nothing,
+  /// stats().cancelled is true and stats().complete() false.
+  void setCancelFlag(const std::atomic<bool>* flag);
   double progressiveBudget() const;
   /// Resets state that accumulates over frames (e.g. DA-RTW's rotation).
   void resetTemporalState();

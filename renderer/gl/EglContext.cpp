@@ -79,4 +79,12 @@ void EglContext::makeCurrent() {
     throw std::runtime_error("EGL: eglMakeCurrent failed (" + eglErrorString() + ")");
 }
 
+std::string EglContext::driverDescription() const {
+  auto str = [](GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(name));
+    return std::string(s ? s : "?");
+  };
+  return str(GL_RENDERER) + ", OpenGL " + str(GL_VERSION);
+}
+
 }  // namespace sl::gl

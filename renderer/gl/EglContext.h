@@ -16,6 +16,8 @@ class EglContext {
   EglContext(const EglContext&) = delete;
   EglContext& operator=(const EglContext&) = delete;
   void makeCurrent();
+  /// GL_RENDERER and GL_VERSION of the context (current on the calling thread).
+  std::string driverDescription() const;
 
  private:
   struct Impl;

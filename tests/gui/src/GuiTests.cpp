@@ -239,7 +239,7 @@ bool GuiTests::omniProbe(const QString& dir) {
   QCoreApplication::processEvents();
   auto_.waitForFrames(3);
   ViewportWidget* view = w_.viewport();
-  sl::Renderer* renderer = view->renderer();
+  sl::ViewSide* renderer = view->mainSide();
   const bool cube = view->techniqueId() == "cube";
   const glm::dvec3 light(view->light().positionM);
   // dp.axis: 0 y, 1 x, 2 z (DualParaboloidShadowMap's declaration).
@@ -256,11 +256,9 @@ bool GuiTests::omniProbe(const QString& dir) {
     QCoreApplication::sendEvent(view, &move);
     QCoreApplication::processEvents();
     const QJsonObject drawn = panel->drawnValues();
-    view->makeCurrent();
     const qreal dpr = view->devicePixelRatioF();
     const std::optional<sl::PixelProbe> p =
-        renderer->probePixel(int(std::floor(at.x() * dpr)), int(std::floor(at.y() * dpr)));
-    view->doneCurrent();
+        auto_.probePixel(int(std::floor(at.x() * dpr)), int(std::floor(at.y() * dpr)));
     if (!p || !p->covered) continue;
     ++probed;
     const glm::dvec3 d = glm::dvec3(p->worldM) - light;
@@ -421,7 +419,7 @@ bool GuiTests::charts(const QString& dir) {
   // 3 configurations x 2 frames: uniform at two resolutions that differ from the view's, and
   // a small RTW map (slower than uniform, but little memory: the fronts against time and
   // against memory can differ).
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   const int shownResolution = r->paramsOf("uniform").getInt("resolution");
   const int wanted = shownResolution == 256 ? 512 : 256;
   w_.chartsPanel()->setSweepText(
@@ -493,7 +491,7 @@ bool GuiTests::charts(const QString& dir) {
   w_.setTechnique(QStringLiteral("rtw-backward"));
   w_.chartsPanel()->choose(0);
   auto_.waitForFrames(1);
-  r = w_.viewport()->renderer();
+  r = w_.viewport()->mainSide();
   check(r && r->techniqueId() == "uniform",
         QStringLiteral("clicking a point switches the technique to uniform"));
   check(r && r->params().getInt("resolution") == wanted,
@@ -605,7 +603,7 @@ void GuiTests::check(bool ok, const QString& what) {
 }
 
 bool GuiTests::params() {
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   w_.paramDock()->show();
   w_.paramDock()->raise();
   QCoreApplication::processEvents();
@@ -620,7 +618,7 @@ bool GuiTests::params() {
   const double before = r->rendererParams().get(ambientKey);
   const double target = before < 0.5 ? 0.9 : 0.1;
   auto_.waitForFrames(1);
-  const double lumBefore = meanLuminance(w_.viewport()->grabFramebuffer());
+  const double lumBefore = meanLuminance(auto_.renderedFrame());
   const std::uint64_t frameBefore = r->stats().frameIndex;
   typeInto(ambient, number(target));
   check(std::abs(r->rendererParams().get(ambientKey) - target) < 1e-9,
@@ -631,7 +629,7 @@ bool GuiTests::params() {
         tr("a new frame was rendered after the change (frame %1 -> %2)")
             .arg(frameBefore)
             .arg(r->stats().frameIndex));
-  const double lumAfter = meanLuminance(w_.viewport()->grabFramebuffer());
+  const double lumAfter = meanLuminance(auto_.renderedFrame());
   check((target > before) ? lumAfter > lumBefore + 1.0 : lumAfter < lumBefore - 1.0,
         tr("the new frame shows it: mean luminance %1 -> %2")
             .arg(lumBefore, 0, 'f', 2)
@@ -726,7 +724,7 @@ bool GuiTests::teaching(const QString& dir) {
     saveImage(w_.grab().toImage(), QStringLiteral("pass-%1-%2.png").arg(i + 1).arg(file));
   }
   // The steps are the declared passes of the technique, in the order they were timed.
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   QStringList declared, timed;
   for (const sl::PassDecl& p :
        sl::framePassDecls(*sl::Renderer::findTechnique(r->techniqueId()), r->params()))
@@ -739,15 +737,15 @@ bool GuiTests::teaching(const QString& dir) {
   passes.step(+1);  // past the last pass: the next frame, from its first pass
   for (int i = 0; i < 50 && (passes.waitingForFrame() || passes.index() != 0); ++i)
     auto_.waitForFrames(1, 2000);
-  check(passes.index() == 0 && w_.viewport()->renderer()->stats().frameIndex == frame + 1,
+  check(passes.index() == 0 && w_.viewport()->mainSide()->stats().frameIndex == frame + 1,
         tr("] after the last pass renders exactly one more frame (%1 -> %2)")
             .arg(frame)
-            .arg(w_.viewport()->renderer()->stats().frameIndex));
+            .arg(w_.viewport()->mainSide()->stats().frameIndex));
   passes.stop();
   check(passes.index() < 0 && !w_.viewport()->paused(), tr("Esc stops stepping and resumes"));
 
   // 2. Overlays: O cycles through every value the declaration lists.
-  sl::ParamSet& shared = w_.viewport()->renderer()->rendererParams();
+  sl::ParamSet& shared = w_.viewport()->mainSide()->rendererParams();
   const sl::ParamDecl* overlay = shared.find("view.overlay");
   QStringList values;
   for (std::size_t i = 0; overlay && i < overlay->enumNames.size(); ++i) {
@@ -782,7 +780,7 @@ bool GuiTests::teaching(const QString& dir) {
   if (outside) {
     outside->trigger();
     auto_.waitForFrames(2);
-    const sl::Renderer* view = w_.viewport()->renderer();
+    const sl::ViewSide* view = w_.viewport()->mainSide();
     check(w_.viewport()->outsideView() && view->stats().outsideCamera.has_value() &&
               !view->stats().outlines.frusta.empty(),
           tr("V turns the outside view on (%1 frusta drawn)")
@@ -857,8 +855,8 @@ GuiTests::ViewState GuiTests::viewState() const {
                    w_.sceneSpec(),
                    w_.viewport()->techniqueId(),
                    w_.viewport()->splitTechnique(),
-                   w_.viewport()->renderer()->params(),
-                   w_.viewport()->renderer()->rendererParams(),
+                   w_.viewport()->mainSide()->params(),
+                   w_.viewport()->mainSide()->rendererParams(),
                    w_.viewport()->splitParams()};
 }
 
@@ -942,12 +940,12 @@ void GuiTests::badFileOpen(const QString& path, QAction* open, const QString& me
   check(after == before, tr("technique, parameters and split view are unchanged"));
   check(w_.sceneCombo()->currentText() == comboBefore && w_.windowTitle() == titleBefore,
         tr("the scene selector and the title still name it (%1)").arg(comboBefore));
-  const std::uint64_t frame = w_.viewport()->renderer()->stats().frameIndex;
+  const std::uint64_t frame = w_.viewport()->mainSide()->stats().frameIndex;
   const bool rendered = auto_.waitForFrames(2);
-  check(rendered && w_.viewport()->renderer()->stats().frameIndex > frame,
+  check(rendered && w_.viewport()->mainSide()->stats().frameIndex > frame,
         tr("the view keeps rendering (frame %1 -> %2)")
             .arg(frame)
-            .arg(w_.viewport()->renderer()->stats().frameIndex));
+            .arg(w_.viewport()->mainSide()->stats().frameIndex));
 }
 
 }  // namespace sl::ui

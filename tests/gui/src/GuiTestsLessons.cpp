@@ -57,10 +57,7 @@ bool covered(const sl::FrameReadback& f, std::size_t i) {
 }  // namespace
 
 sl::Renderer::ErrorResult GuiTests::measureView() {
-  w_.viewport()->makeCurrent();
-  sl::Renderer::ErrorResult e = w_.viewport()->renderer()->computeError();
-  w_.viewport()->doneCurrent();
-  return e;
+  return auto_.computeError();
 }
 
 bool GuiTests::lessonClaims(const QString& dir) {
@@ -311,7 +308,7 @@ void GuiTests::claimTessellation(const QString& text) {
   const double ratio =
       stated(text, QStringLiteral("without tessellation is at least (\\d+) times"));
   check(std::isfinite(ratio), tr("the text states the ratio"));
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   const auto off = w_.viewport()->computeErrorNow();
   if (auto e = r->params().setFromString("tessellation", "on"))
     check(false, QString::fromStdString(*e));
@@ -330,7 +327,7 @@ void GuiTests::claimRtw() {
   const auto main = w_.viewport()->computeErrorNow();
   auto_.waitForFrames(1);
   const auto split = w_.viewport()->splitErrorPct();
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   check(w_.viewport()->splitTechnique() == "uniform" && main && split && *main < *split,
         tr("%1 at %2 x %2 texels: %3 % error; %4 at %5 x %5: %6 %")
             .arg(QString::fromStdString(w_.viewport()->techniqueId()))
@@ -361,7 +358,7 @@ void GuiTests::checkCovarianceReadouts(const QString& where) {
   PublicationPanel* covariance = nullptr;
   for (const PublicationDocks::Dock& d : w_.docks().docks())
     if (d.entry.id == QLatin1String("covariance")) covariance = d.panel;
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   auto drawn = [covariance] { return covariance ? covariance->drawnValues() : QJsonObject(); };
   if (drawn().value(QStringLiteral("frame")).toDouble(-1) != double(r->publication().frameIndex))
     auto_.waitForFrames(1);  // the panel shows the frame the window drew last
@@ -382,7 +379,7 @@ void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
   const double about = stated(text, QStringLiteral("turns by about (\\d+(?:\\.\\d+)?)°"));
   check(std::isfinite(angle) != std::isfinite(about),
         tr("case %1: the text states the settled angle or the size of the turn").arg(caseNumber));
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   const sl::Publication& pub = r->publication();
   const double got = rtwsettle::angleDeg(pub).value_or(std::nan(""));
   const bool angleHolds =
@@ -467,7 +464,7 @@ void GuiTests::claimVibration(const QString& text) {
       std::isfinite(pixels) && std::isfinite(threshold) &&
           shownText.contains(tr("the threshold is %1").arg(threshold, 0, 'f', 4)),
       tr("the text states the changed pixels and shows the lesson's threshold %1").arg(threshold));
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   check(std::abs(r->params().get(rtwsettle::kThresholdKey) - threshold) < 1e-9,
         tr("%1 is %2")
             .arg(QLatin1String(rtwsettle::kThresholdKey))
@@ -482,15 +479,11 @@ void GuiTests::claimVibration(const QString& text) {
         tr("the gauge shows the threshold %1 (text: %2)").arg(shown).arg(threshold));
   // Changed pixels of the hard mask from one frame to the next, the view and camera still.
   auto changedPerFrame = [&](int frames) {
-    w_.viewport()->makeCurrent();
-    std::vector<std::uint8_t> last = r->readback().hardMask;
-    w_.viewport()->doneCurrent();
+    std::vector<std::uint8_t> last = auto_.readback().hardMask;
     std::vector<std::size_t> counts;
     for (int k = 0; k < frames; ++k) {
       auto_.waitForFrames(1);
-      w_.viewport()->makeCurrent();
-      std::vector<std::uint8_t> now = r->readback().hardMask;
-      w_.viewport()->doneCurrent();
+      std::vector<std::uint8_t> now = auto_.readback().hardMask;
       std::size_t c = 0;
       for (std::size_t i = 0; i < std::min(now.size(), last.size()); ++i) c += now[i] != last[i];
       counts.push_back(c);
@@ -546,7 +539,7 @@ GuiTests::LessonNumbers GuiTests::measureLesson() {
     std::nth_element(ms.begin(), ms.begin() + k, ms.end());
     n.mP95 = double(ms[std::size_t(k)]);
   }
-  const sl::FrameStats& s = w_.viewport()->renderer()->stats();
+  const sl::FrameStats& s = w_.viewport()->mainSide()->stats();
   n.bytes = s.memory.bytes();
   n.frameMs = s.totalMs;
   std::printf("     %s: error %.3f %%, m p95 %.2f, %.2f MiB, %.0f ms (view %dx%d)\n",
@@ -557,7 +550,7 @@ GuiTests::LessonNumbers GuiTests::measureLesson() {
 }
 
 void GuiTests::lessonSet(const char* key, const QString& value, int frames) {
-  if (auto e = w_.viewport()->renderer()->params().setFromString(key, value.toStdString()))
+  if (auto e = w_.viewport()->mainSide()->params().setFromString(key, value.toStdString()))
     check(false, QString::fromStdString(*e));
   check(auto_.waitForFrames(frames), tr("%1 frames after %2 = %3").arg(frames).arg(key, value));
 }
@@ -569,7 +562,7 @@ void GuiTests::lessonSwitch(const QString& technique,
   check(w_.viewport()->techniqueId() == technique.toStdString(),
         tr("the technique is now %1").arg(technique));
   for (const auto& [key, value] : params)
-    if (auto e = w_.viewport()->renderer()->params().setFromString(key, value.toStdString()))
+    if (auto e = w_.viewport()->mainSide()->params().setFromString(key, value.toStdString()))
       check(false, QString::fromStdString(*e));
   check(auto_.waitForFrames(frames, timeoutMs),
         tr("%1 renders %2 frames within %3 s").arg(technique).arg(frames).arg(timeoutMs / 1000));
@@ -582,7 +575,7 @@ void GuiTests::claimForwardBackward(const QString& text) {
       stated(text, QStringLiteral("the errors stay within (\\d+) % of each other"));
   check(std::isfinite(ratio) && std::isfinite(sameWithin),
         tr("the text states the ratio of the texels given importance and the errors' difference"));
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   const QString resolution = QString::number(r->params().getInt("resolution"));
   const auto forwardIm = rtwsettle::importanceCoverage(r->publication());
   const LessonNumbers forward = measureLesson();
@@ -647,7 +640,7 @@ void GuiTests::claimDuelingFrusta(const QString& text) {
       stated(text, QStringLiteral("error is at most (\\d+(?:\\.\\d+)?) times theirs"));
   check(std::isfinite(side) && std::isfinite(factor),
         tr("the text states the equal-texel map and the factor"));
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   const int res = r->params().getInt("resolution");
   const LessonNumbers faces = measureLesson();
   const std::uint64_t faceTexels = faces.bytes / 4;
@@ -684,7 +677,7 @@ void GuiTests::claimCascades(const QString& text) {
       stated(text, QStringLiteral("map 0's m p95 falls at least (\\d+(?:\\.\\d+)?) times"));
   check(std::isfinite(last) && std::isfinite(spread) && std::isfinite(drop),
         tr("the text states the log split's spread and map 0's fall"));
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   const int k = r->params().getInt("partitions");
   // Each map's m p95 over the pixels that selected it, as the Partitions panel shows it.
   auto perMap = [&]() {
@@ -784,7 +777,7 @@ void GuiTests::claimFvsm(const QString& text) {
   const auto bestFrameMs = [this](double ms) {
     for (int i = 0; i < 2; ++i) {
       check(auto_.waitForFrames(1, 240000), tr("one more frame to time"));
-      ms = std::min(ms, w_.viewport()->renderer()->stats().totalMs);
+      ms = std::min(ms, w_.viewport()->mainSide()->stats().totalMs);
     }
     return ms;
   };

@@ -28,7 +28,7 @@ constexpr qint64 kFreshWithinMs = 60000;  ///< llvmpipe under Xvfb on a busy 2-c
 bool GuiTests::liveError(const QString& dir) {
   ViewportWidget* view = w_.viewport();
   view->setFixedSize(480, 300);  // small: llvmpipe renders it quickly, Embree traces it quickly
-  sl::ParamSet& shared = view->renderer()->rendererParams();
+  sl::ParamSet& shared = view->mainSide()->rendererParams();
   const sl::ParamDecl* overlay = shared.find("view.overlay");
   int errorOverlay = -1;
   for (std::size_t i = 0; overlay && i < overlay->enumNames.size(); ++i)
@@ -256,9 +256,9 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   QCoreApplication::processEvents();
   auto_.waitForFrames(1, 300000);
   check(
-      auto_.viewReadouts().internalDivisor == 1 && view->renderer()->stats().width == size.width(),
-      tr("scripted runs render at full size: %1 px wide").arg(view->renderer()->stats().width));
-  sl::ParamSet& shared = view->renderer()->rendererParams();
+      auto_.viewReadouts().internalDivisor == 1 && view->mainSide()->stats().width == size.width(),
+      tr("scripted runs render at full size: %1 px wide").arg(view->mainSide()->stats().width));
+  sl::ParamSet& shared = view->mainSide()->rendererParams();
   check(!shared.getBool("view.adaptive") && shared.getInt("view.adaptive.budget_ms") == 250,
         tr("declared: view.adaptive off by default, budget 250 ms"));
   check(!shared.set("view.adaptive", 1.0), tr("view.adaptive on"));
@@ -274,14 +274,14 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   // The floor: half size, however slow the frames (several of them, each over the budget).
   int smallestWidth = size.width();
   for (int i = 0; i < 3; ++i) {
-    view->update();
+    view->requestFrame();
     auto_.waitForFrames(1, 300000);
-    smallestWidth = std::min(smallestWidth, view->renderer()->stats().width);
+    smallestWidth = std::min(smallestWidth, view->mainSide()->stats().width);
     check(auto_.viewReadouts().internalDivisor <= 2,
           tr("never below half size: divisor %1").arg(auto_.viewReadouts().internalDivisor));
   }
   const int divisor = auto_.viewReadouts().internalDivisor;
-  const sl::FrameStats& st = view->renderer()->stats();
+  const sl::FrameStats& st = view->mainSide()->stats();
   check(divisor == 2 && st.width == size.width() / 2 && st.height == size.height() / 2 &&
             smallestWidth == size.width() / 2,
         tr("the view dropped to half size and no lower: the renderer drew %1x%2 (smallest %3 px "
@@ -313,20 +313,20 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
             .arg(cells.empty() ? 0 : cells.front().shaded.height));
   // A grab (Automation::grabView, as File > Save viewport image) of a reduced view renders it
   // at full size for the image.
-  view->update();
+  view->requestFrame();
   auto_.waitForFrames(1, 300000);
   check(auto_.viewReadouts().internalDivisor == 2,
         tr("reduced again: divisor %1").arg(auto_.viewReadouts().internalDivisor));
   const QImage grabbed = auto_.grabView();
-  check(view->renderer()->stats().width == size.width() &&
+  check(view->mainSide()->stats().width == size.width() &&
             grabbed.size() == size * view->devicePixelRatioF() &&
             auto_.viewReadouts().internalDivisor == 1,
         tr("a grab of the reduced view renders it at full size: the renderer drew %1 px wide")
-            .arg(view->renderer()->stats().width));
+            .arg(view->mainSide()->stats().width));
   // Reduced again (the grab's frame reset the state: a slow full-size frame drops it, the next
   // is at half size), so that the still view's redraw and the recovery below start reduced.
   for (int i = 0; i < 4 && auto_.viewReadouts().internalDivisor != 2; ++i) {
-    view->update();
+    view->requestFrame();
     auto_.waitForFrames(1, 300000);
   }
   check(auto_.viewReadouts().internalDivisor == 2 && auto_.viewReadouts().adaptiveDivisor == 2,
@@ -339,9 +339,9 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   while (auto_.viewReadouts().internalDivisor != 1 && settle.elapsed() < 120000)
     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
   check(
-      auto_.viewReadouts().internalDivisor == 1 && view->renderer()->stats().width == size.width(),
+      auto_.viewReadouts().internalDivisor == 1 && view->mainSide()->stats().width == size.width(),
       tr("the still view was redrawn at full size (%1 px wide)")
-          .arg(view->renderer()->stats().width));
+          .arg(view->mainSide()->stats().width));
 
   // Recovery: a fast technique returns to full size within one second of its frames.
   check(!view->setTechnique("uniform") && !shared.set("view.adaptive.budget_ms", 10000.0),
@@ -350,7 +350,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   recovery.start();
   while ((auto_.viewReadouts().adaptiveDivisor > 1 || auto_.viewReadouts().internalDivisor > 1) &&
          recovery.elapsed() < 5000) {
-    view->update();
+    view->requestFrame();
     auto_.waitForFrames(1, 300000);
   }
   const qint64 recoveredMs = recovery.elapsed();
@@ -363,11 +363,11 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   // Off: full size whatever the frame time.
   check(!shared.set("view.adaptive.budget_ms", 20.0) && !shared.set("view.adaptive", 0.0),
         tr("budget 20 ms, view.adaptive off"));
-  view->update();
+  view->requestFrame();
   auto_.waitForFrames(2, 300000);
   check(
-      auto_.viewReadouts().internalDivisor == 1 && view->renderer()->stats().width == size.width(),
-      tr("view.adaptive off: full size (%1 px wide)").arg(view->renderer()->stats().width));
+      auto_.viewReadouts().internalDivisor == 1 && view->mainSide()->stats().width == size.width(),
+      tr("view.adaptive off: full size (%1 px wide)").arg(view->mainSide()->stats().width));
 
   // Never in presenter mode, the split view's comparison or a lesson: on and allowed, each of
   // them turns it off (presenter mode and the split view until they end, a lesson for good).
@@ -387,7 +387,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   check(view->adaptiveActive(), tr("split view off: active again"));
   check(auto_.openLesson(QStringLiteral("1")) && auto_.waitForSettled(300000),
         tr("lesson 1 opened and settled"));
-  sl::ParamSet& lessonShared = view->renderer()->rendererParams();
+  sl::ParamSet& lessonShared = view->mainSide()->rendererParams();
   check(!lessonShared.set("view.adaptive", 1.0) && !view->adaptiveActive(),
         tr("a lesson: adaptive resolution not used, view.adaptive on or not"));
   auto_.waitForFrames(2, 300000);
@@ -418,7 +418,7 @@ bool GuiTests::noFreeze(const QString& dir) {
   const QSize size(480, 300);
   view->setFixedSize(size);
   QCoreApplication::processEvents();
-  const sl::ParamSet& params = view->renderer()->params();
+  const sl::ParamSet& params = view->mainSide()->params();
   check(view->techniqueId() == "virtual-tiled" && params.getInt("tiles") == 16 &&
             params.getInt("tile.resolution") == 4096,
         tr("virtual-tiled at its defaults: 16 x 16 tiles of 4096\u00b2"));
@@ -521,13 +521,13 @@ bool GuiTests::noFreeze(const QString& dir) {
         tr("a live error of the complete frame: %1 % (largest gap now %2 ms)")
             .arg(live ? live->errorPct : -1.0, 0, 'f', 4)
             .arg(maxGap));
-  const QImage progressive = view->grabFramebuffer();
+  const QImage progressive = auto_.renderedFrame();
   if (!dir.isEmpty() && QDir().mkpath(dir))
     view->grabView().save(QDir(dir).filePath(QStringLiteral("no-freeze-complete.png")));
 
   // The same view resolved in one call, as the CLI renders it: the same pixels and error.
-  w_.continuousAction()->trigger();                // off: on demand, one call per frame
-  const QImage oneShot = view->grabFramebuffer();  // renders the frame it grabs
+  w_.continuousAction()->trigger();              // off: on demand, one call per frame
+  const QImage oneShot = auto_.renderedFrame();  // renders the frame it grabs
   check(!auto_.viewReadouts().progress, tr("continuous off: frames resolve in one call"));
   const auto syncPct = view->computeErrorNow();
   std::printf("measure one_shot_frame_ms=%.0f\n", auto_.viewReadouts().lastFrameMs);

@@ -148,7 +148,7 @@ bool GuiTests::presenter(const QString& dir) {
 
   // 4. The changed (flicker) overlay: the light turns a little, one frame is rendered;
   // the vivid pixels of the view are exactly the renderer's count.
-  sl::Renderer* r = v->renderer();
+  sl::ViewSide* r = v->mainSide();
   if (auto e = r->rendererParams().setFromString("view.overlay", "changed")) {
     check(false, QString::fromStdString(*e));
     return false;
@@ -162,9 +162,7 @@ bool GuiTests::presenter(const QString& dir) {
   v->setLight(light);
   w_.stepFrame();
   auto_.waitForFrames(1);
-  v->makeCurrent();
   const QImage rendered = v->renderedImage();
-  v->doneCurrent();
   const auto counted = r->stats().maskChange;
   std::uint64_t vivid = 0;
   for (int y = 0; y < rendered.height(); ++y)
@@ -219,9 +217,7 @@ bool GuiTests::presenter(const QString& dir) {
             .arg(inset.x())
             .arg(inset.y()));
   if (factor >= 2 && !inset.isEmpty()) {
-    v->makeCurrent();
     const QImage source = v->renderedImage();
-    v->doneCurrent();
     shown = v->grabView();
     // Each source pixel's block centre in the inset has that pixel's colour (device pixels
     // equal widget pixels under Xvfb; the test samples where both agree).
@@ -405,7 +401,7 @@ void GuiTests::checkFullPanel(const QString& dir, const QRect& screen) {
 bool GuiTests::splitParams(const QString& dir) {
   if (!dir.isEmpty()) QDir().mkpath(dir);
   ViewportWidget* v = w_.viewport();
-  sl::Renderer* main = v->renderer();
+  sl::ViewSide* main = v->mainSide();
   const std::string other = "rtw-backward";
   w_.teaching()->setSplitTechnique(QString::fromStdString(other));  // as "Compare with" does
   if (v->splitTechnique() != other) {
@@ -423,7 +419,7 @@ bool GuiTests::splitParams(const QString& dir) {
         tr("the Parameters dock shows the right half's parameters (%1)")
             .arg(QString::fromStdString(other)));
   if (!spin) return false;
-  sl::Renderer* split = v->splitRenderer();
+  sl::ViewSide* split = v->splitSide();
   if (!split) {
     check(false, tr("the split renderer exists"));
     return false;
@@ -532,7 +528,7 @@ bool GuiTests::splitParams(const QString& dir) {
   // virtual.resolution, a resolution in name, spends no byte).
   w_.teaching()->setSplitTechnique(QStringLiteral("rmsm"));
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
-  split = v->splitRenderer();
+  split = v->splitSide();
   check(split && v->splitTechnique() == "rmsm", tr("the split view shows rmsm"));
   if (!split) return false;
   side.equalMemoryBox()->setChecked(false);

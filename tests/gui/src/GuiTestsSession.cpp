@@ -42,7 +42,7 @@ void GuiTests::printSessionMetrics() {
   auto_.waitForFrames(6);  // cascades fit to last frame's depth range: settled after a few
   const auto error = w_.viewport()->computeErrorNow();
   const auto splitError = w_.viewport()->splitErrorPct();
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   metric(QStringLiteral("scene"), w_.sceneSpec());
   metric(QStringLiteral("technique"), QString::fromStdString(w_.viewport()->techniqueId()));
   metric(QStringLiteral("split.technique"),
@@ -87,7 +87,7 @@ bool GuiTests::sessionSave(const QString& path) {
   check(w_.loadScene(QStringLiteral("corridor")), tr("scene corridor loaded"));
   w_.setTechnique(QStringLiteral("cascades"));
   auto_.waitForFrames(1);
-  sl::Renderer* r = w_.viewport()->renderer();
+  sl::ViewSide* r = w_.viewport()->mainSide();
   for (const char* kv : {"partitions=3", "split=practical", "split.lambda=0.7",
                          "view.overlay=aliasing", "shading.ambient=0.3", "pcf=3"}) {
     const auto e = assignParameter(r->params(), r->rendererParams(), kv);

@@ -5,13 +5,12 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QOpenGLContext>
-#include <QOpenGLFramebufferObject>
 #include <QCursor>
 #include <QProgressBar>
 #include <QRegularExpression>
@@ -26,7 +25,9 @@
 #include "ChartKit.h"
 #include "MessageText.h"
 #include "Theme.h"
+#include "RenderService.h"
 #include "ViewportWidget.h"
+#include "core/ViewSide.h"
 
 namespace sl::ui {
 
@@ -106,8 +107,6 @@ ChartsPanel::ChartsPanel(ViewportWidget* viewport, QWidget* parent)
   layout->addWidget(chartView_, 1);
   followBodyFont(chartView_, [this] { redrawChart(); });  // draws it now
 
-  timer_.setInterval(0);
-  connect(&timer_, &QTimer::timeout, this, &ChartsPanel::tick);
   // The sweep's renderer lives on the viewport's context: it goes before the context does.
   connect(viewport_, &ViewportWidget::rendererAboutToBeDestroyed, this, [this] {
     if (running()) finish(false);
@@ -120,17 +119,8 @@ ChartsPanel::~ChartsPanel() {
 }
 
 void ChartsPanel::releaseRenderer() {
-  timer_.stop();
-  if (!renderer_ && !target_) return;
-  if (viewport_ && viewport_->context() && viewport_->context()->isValid()) {
-    viewport_->makeCurrent();
-    target_.reset();
-    renderer_.reset();
-    viewport_->doneCurrent();
-  } else {  // no context: the GL objects went with it
-    (void)target_.release();
-    (void)renderer_.release();
-  }
+  running_ = false;
+  ++sweepSerial_;  // a measurement still on the render thread is dropped when it returns
 }
 
 void ChartsPanel::setSweepText(const QString& text) {
@@ -228,7 +218,7 @@ QString ChartsPanel::parseSweep(const QString& text) {
 
 bool ChartsPanel::startSweep() {
   if (running()) return false;
-  if (!viewport_ || !viewport_->renderer() || !viewport_->scene()) {
+  if (!viewport_ || !viewport_->mainSide() || !viewport_->scene()) {
     status_->setText(tr("The view is not ready."));
     return false;
   }
@@ -253,7 +243,9 @@ bool ChartsPanel::startSweep() {
                        .arg(kWidth)
                        .arg(kHeight));
   redrawChart();
-  timer_.start();
+  running_ = true;
+  ++sweepSerial_;
+  measureNext();
   return true;
 }
 
@@ -263,7 +255,8 @@ void ChartsPanel::cancelSweep() {
 }
 
 void ChartsPanel::finish(bool completed) {
-  timer_.stop();
+  running_ = false;
+  ++sweepSerial_;
   runButton_->setEnabled(true);
   cancelButton_->setEnabled(false);
   int done = 0, unmeasured = 0;
@@ -287,69 +280,89 @@ void ChartsPanel::finish(bool completed) {
   Q_EMIT sweepFinished(completed);
 }
 
-void ChartsPanel::tick() {
-  sl::Renderer* main = viewport_ ? viewport_->renderer() : nullptr;
-  if (!main || !viewport_->scene() || configIndex_ >= int(configs_.size())) {
-    finish(configIndex_ >= int(configs_.size()));
+void ChartsPanel::measureNext() {
+  sl::ViewSide* main = viewport_ ? viewport_->mainSide() : nullptr;
+  if (!running_ || !main || !viewport_->scene() || configIndex_ >= int(configs_.size())) {
+    if (running_) finish(configIndex_ >= int(configs_.size()));
     return;
   }
-  Config& config = configs_[std::size_t(configIndex_)];
-  QString problem;
-  viewport_->makeCurrent();
-  try {
-    if (!renderer_) {
-      sl::RendererOptions options;
-      options.debugOutput = false;  // the viewport's renderer keeps the debug callback
-      renderer_ = std::make_unique<sl::Renderer>(options);
-    }
-    if (!target_) target_ = std::make_unique<QOpenGLFramebufferObject>(kWidth, kHeight);
-    if (frameIndex_ == 0) {
-      if (renderer_->scene() != viewport_->scene()) renderer_->setScene(viewport_->scene());
-      if (auto e = renderer_->setTechnique(config.techniqueId.toStdString()))
-        throw std::runtime_error(*e);
-      // Start from the view's values, then the configuration's.
-      sl::ParamSet& own = renderer_->params();
-      const sl::ParamSet& mainOwn = main->paramsOf(config.techniqueId.toStdString());
-      for (const sl::ParamDecl& d : own.decls()) own.set(d.key, mainOwn.get(d.key));
-      sl::ParamSet& shared = renderer_->rendererParams();
-      for (const sl::ParamDecl& d : shared.decls())
-        shared.set(d.key, main->rendererParams().get(d.key));
-      for (const QString& a : config.assignments) {
-        const std::string key = a.section('=', 0, 0).toStdString();
-        const std::string value = a.section('=', 1).toStdString();
-        sl::ParamSet& set = own.has(key) ? own : shared;
-        if (auto e = set.setFromString(key, value)) throw std::runtime_error(*e);
-      }
-      renderer_->resetTemporalState();
-      renderer_->setLight(viewport_->light());
-    }
-    sl::Camera camera = viewport_->camera();
-    const sl::Scene& scene = *viewport_->scene();
-    if (!scene.paths.empty() && !scene.paths[0].keys.empty()) {
-      const float t =
-          frames_ > 1 ? scene.paths[0].durationS() * float(frameIndex_) / float(frames_ - 1) : 0.0f;
-      camera = scene.paths[0].sample(t);
-    }
-    renderer_->setCamera(camera);
-    if (auto e = renderer_->renderFrame(kWidth, kHeight, target_->handle()))
-      problem = QString::fromStdString(*e);
-    config.ms.push_back(renderer_->stats().totalMs);
-    config.bytes.push_back(double(renderer_->stats().memory.bytes()));
-    // A frame with no covered pixel measured nothing: its error is n/a, never 0 (the chart
-    // leaves the configuration out and the status line says so).
-    const sl::ShadowErrorStats error = renderer_->computeError().stats;
-    config.errorPct.push_back(error.covered > 0 ? error.errorPct
-                                                : std::numeric_limits<double>::quiet_NaN());
-  } catch (const std::exception& e) {
-    problem = QString::fromUtf8(e.what());
-  }
-  viewport_->doneCurrent();
-  if (!problem.isEmpty()) {
-    status_->setText(shownMessage(tr("%1: %2").arg(config.label, problem)));
+  const Config& config = configs_[std::size_t(configIndex_)];
+  // What the render thread needs, copied: the view's values, then the configuration's.
+  const std::string id = config.techniqueId.toStdString();
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id);
+  if (!info) {
+    status_->setText(shownMessage(tr("%1: unknown technique").arg(config.label)));
     configIndex_ = int(configs_.size());
     finish(false);
     return;
   }
+  sl::ParamSet own = main->paramsOf(id);
+  sl::ParamSet shared = main->rendererParams();
+  for (const QString& a : config.assignments) {
+    const std::string key = a.section('=', 0, 0).toStdString();
+    const std::string value = a.section('=', 1).toStdString();
+    sl::ParamSet& set = own.has(key) ? own : shared;
+    if (auto e = set.setFromString(key, value)) {
+      status_->setText(shownMessage(tr("%1: %2").arg(config.label, QString::fromStdString(*e))));
+      configIndex_ = int(configs_.size());
+      finish(false);
+      return;
+    }
+  }
+  sl::Camera camera = viewport_->camera();
+  const std::shared_ptr<const sl::Scene> scene = viewport_->scene();
+  if (!scene->paths.empty() && !scene->paths[0].keys.empty()) {
+    const float t =
+        frames_ > 1 ? scene->paths[0].durationS() * float(frameIndex_) / float(frames_ - 1) : 0.0f;
+    camera = scene->paths[0].sample(t);
+  }
+  const sl::Light light = viewport_->light();
+  const bool first = frameIndex_ == 0;
+  const std::uint64_t serial = sweepSerial_;
+  QPointer<ChartsPanel> self(this);
+  viewport_->service().post([=](RenderContext& c) {
+    FrameMeasure m;
+    try {
+      sl::Renderer& r = c.renderer("charts");
+      if (r.scene() != scene) r.setScene(scene);
+      if (auto e = r.setTechnique(id)) throw std::runtime_error(*e);
+      sl::syncParams(r.params(), own);
+      sl::syncParams(r.rendererParams(), shared);
+      if (first) r.resetTemporalState();
+      r.setLight(light);
+      r.setCamera(camera);
+      if (auto e = r.renderFrame(kWidth, kHeight, 0)) m.problem = *e;
+      m.ms = r.stats().totalMs;
+      m.bytes = double(r.stats().memory.bytes());
+      // A frame with no covered pixel measured nothing: its error is n/a, never 0 (the chart
+      // leaves the configuration out and the status line says so).
+      const sl::ShadowErrorStats error = r.computeError().stats;
+      m.errorPct = error.covered > 0 ? error.errorPct : std::numeric_limits<double>::quiet_NaN();
+    } catch (const std::exception& e) {
+      m.problem = e.what();
+    }
+    QMetaObject::invokeMethod(
+        self.data(),
+        [self, serial, m] {
+          if (self) self->measured(serial, m);
+        },
+        Qt::QueuedConnection);
+  });
+}
+
+void ChartsPanel::measured(std::uint64_t serial, const FrameMeasure& m) {
+  if (!running_ || serial != sweepSerial_ || configIndex_ >= int(configs_.size())) return;
+  Config& config = configs_[std::size_t(configIndex_)];
+  if (!m.problem.empty()) {
+    status_->setText(
+        shownMessage(tr("%1: %2").arg(config.label, QString::fromStdString(m.problem))));
+    configIndex_ = int(configs_.size());
+    finish(false);
+    return;
+  }
+  config.ms.push_back(m.ms);
+  config.bytes.push_back(m.bytes);
+  config.errorPct.push_back(m.errorPct);
   progress_->setValue(configIndex_ * frames_ + frameIndex_ + 1);
   if (++frameIndex_ >= frames_) {
     config.medianMs = medianOf(config.ms);
@@ -359,8 +372,12 @@ void ChartsPanel::tick() {
     frameIndex_ = 0;
     ++configIndex_;
     redrawChart();
-    if (configIndex_ >= int(configs_.size())) finish(true);
+    if (configIndex_ >= int(configs_.size())) {
+      finish(true);
+      return;
+    }
   }
+  measureNext();
 }
 
 void ChartsPanel::redrawChart() {

@@ -25,7 +25,6 @@ class QChartView;
 class QComboBox;
 class QLabel;
 class QLineEdit;
-class QOpenGLFramebufferObject;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
@@ -64,12 +63,12 @@ class ChartsPanel : public QWidget {
   /// Starts the sweep (false, with the reason in the status line, on a bad sweep text).
   bool startSweep();
   void cancelSweep();
-  bool running() const { return timer_.isActive(); }
+  bool running() const { return running_; }
   const std::vector<Config>& configs() const { return configs_; }
   /// What a click on configuration `index` does (emits configurationChosen).
   void choose(int index);
-  /// Drops the sweep renderer (call with nothing else using the context; the viewport's
-  /// renderer is about to go).
+  /// Stops the sweep (the view is about to go); a frame still on the render thread is
+  /// dropped when it returns.
   void releaseRenderer();
   /// The sweep an empty text runs: the technique shown and a baseline that renders the
   /// view's light, each at 3 resolutions.
@@ -83,7 +82,15 @@ class ChartsPanel : public QWidget {
   void sweepFinished(bool completed);
 
  private:
-  void tick();
+  /// What the render thread measured of one frame of a configuration.
+  struct FrameMeasure {
+    double ms = 0.0, bytes = 0.0, errorPct = 0.0;  ///< errorPct NaN: no covered pixel
+    std::string problem;
+  };
+  /// Posts the next frame of the sweep to the render service ("charts" renderer).
+  void measureNext();
+  /// Back on the UI thread: records it and posts the next (a stale `serial` is dropped).
+  void measured(std::uint64_t serial, const FrameMeasure& m);
   void finish(bool completed);
   void redrawChart();
   /// Where configuration c sits on the x axis now (ms, or bytes in the axis' unit).
@@ -102,9 +109,8 @@ class ChartsPanel : public QWidget {
   QChartView* chartView_ = nullptr;
 
   std::vector<Config> configs_;
-  std::unique_ptr<sl::Renderer> renderer_;  ///< the sweep's own, on the viewport's context
-  std::unique_ptr<QOpenGLFramebufferObject> target_;
-  QTimer timer_;
+  bool running_ = false;
+  std::uint64_t sweepSerial_ = 0;  ///< bumped by every start, finish and cancel
   int configIndex_ = 0, frameIndex_ = 0, frames_ = 6;
   sl::ChartX chartX_ = sl::ChartX::TimeMs;
   double xUnitScale_ = 1.0;  ///< data units per x-axis unit of the drawn chart

@@ -1,0 +1,232 @@
+#include "ViewOverlay.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QPainter>
+
+#include "common/shared_constants.h"
+
+namespace sl::ui {
+
+void ViewOverlay::placeInset() {
+  insetRect = QRect();
+  insetFactor = 0;
+  if (zoomArea.isEmpty() || zoomSource.isNull()) return;
+  const int f = std::min(width() * 45 / 100 / zoomArea.width(),
+                         (height() - fontMetrics().height() - 34) * 45 / 100 / zoomArea.height());
+  if (f < 2) return;
+  insetFactor = f;
+  const QSize size(zoomArea.width() * f, zoomArea.height() * f);
+  // Above the bottom row of legends and captions (one line of text and their margins).
+  const int bottom = fontMetrics().height() + 34;
+  insetRect = QRect(QPoint(width() - size.width() - 14, height() - size.height() - bottom), size);
+}
+
+void ViewOverlay::paintEvent(QPaintEvent*) {
+  QPainter p(this);
+  p.setRenderHint(QPainter::Antialiasing);
+  const QFontMetrics fm = fontMetrics();
+  const int line = fm.height();
+  QColor boxColor(20, 22, 25, 200);
+  auto box = [&](const QRectF& r) {
+    p.setPen(Qt::NoPen);
+    p.setBrush(boxColor);
+    p.drawRoundedRect(r, 5, 5);
+  };
+  int bottomInset = 8;
+  if (!gizmoLines.isEmpty() || gizmoPoint) {  // the light (Alt+drag moves it)
+    p.setPen(QPen(QColor(255, 214, 60, 230), 1.6));
+    p.drawLines(gizmoLines);
+    if (gizmoPoint) {
+      p.setBrush(QColor(255, 230, 120, 230));
+      p.drawEllipse(*gizmoPoint, 6.0, 6.0);
+    }
+  }
+  if (!split.isNull()) {
+    const int half = width() / 2;
+    p.drawImage(QRect(half, 0, width() - half, height()), split);
+    p.setPen(QPen(QColor(255, 255, 255, 220), 2));
+    p.drawLine(half, 0, half, height());
+    // The captions wrap (never cut: the error is the number a comparison is about).
+    int captionsH = line;
+    for (int side = 0; side < 2; ++side) {
+      const QString& text = side == 0 ? leftCaption : rightCaption;
+      const int x0 = side == 0 ? 0 : half;
+      const int w = side == 0 ? half : width() - half;
+      const int tw = std::min(w - 16, fm.horizontalAdvance(text) + 16);
+      const QRect bounds = fm.boundingRect(QRect(0, 0, std::max(1, tw - 8), 10000),
+                                           Qt::TextWordWrap | Qt::AlignCenter, text);
+      const int th = std::max(line, bounds.height());
+      captionsH = std::max(captionsH, th);
+      const QRectF r(x0 + (w - tw) / 2.0, height() - th - 18, tw, th + 10);
+      box(r);
+      p.setPen(Qt::white);
+      p.drawText(r.adjusted(4, 0, -4, 0), Qt::AlignCenter | Qt::TextWordWrap, text);
+    }
+    bottomInset = captionsH + 26;
+  }
+  if (!bannerTitle.isEmpty() || !bannerText.isEmpty()) {
+    const int w = std::min(width() - 24, std::max(360, width() * 2 / 3));
+    QFont bold = font();
+    bold.setBold(true);
+    const QRect textRect(0, 0, w - 20, 10000);
+    const QRect textBounds =
+        fm.boundingRect(textRect, Qt::TextWordWrap | Qt::AlignLeft, bannerText);
+    const QRect titleBounds = QFontMetrics(bold).boundingRect(
+        textRect, Qt::TextWordWrap | Qt::AlignLeft, bannerTitle);  // wrapped, never cut
+    const int titleH = bannerTitle.isEmpty() ? 0 : titleBounds.height() + 4;
+    const QRectF r(12, 10, w, titleH + (bannerText.isEmpty() ? 0 : textBounds.height()) + 14);
+    boxColor = QColor(20, 22, 25, 215);
+    box(r);
+    p.setPen(QColor(255, 200, 60));
+    p.setFont(bold);
+    p.drawText(QRectF(r.left() + 10, r.top() + 6, w - 20, titleH),
+               Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, bannerTitle);
+    p.setFont(font());
+    p.setPen(Qt::white);
+    p.drawText(QRectF(r.left() + 10, r.top() + 7 + titleH, w - 20, textBounds.height() + 2),
+               Qt::TextWordWrap | Qt::AlignLeft, bannerText);
+    boxColor = QColor(20, 22, 25, 200);
+  }
+  if (!pausedText.isEmpty()) {
+    const int tw = fm.horizontalAdvance(pausedText) + 20;
+    const QRectF r(width() - tw - 12, bannerTitle.isEmpty() && bannerText.isEmpty() ? 10 : 10, tw,
+                   line + 10);
+    boxColor = QColor(150, 40, 40, 220);
+    box(r);
+    boxColor = QColor(20, 22, 25, 200);
+    p.setPen(Qt::white);
+    p.drawText(r, Qt::AlignCenter, pausedText);
+  }
+  if (!outsideLegend.isEmpty()) {  // top right, under the pause badge
+    int tw = fm.horizontalAdvance(tr("OUTSIDE VIEW (V)"));
+    for (const auto& [colour, text] : outsideLegend) tw = std::max(tw, fm.horizontalAdvance(text));
+    tw += 44;
+    const int rows = int(outsideLegend.size()) + 1;
+    const QRectF r(width() - tw - 12, line + 28, tw, rows * line + 12);
+    box(r);
+    p.setPen(QColor(255, 200, 60));
+    p.drawText(QRectF(r.left() + 10, r.top() + 6, tw - 16, line), Qt::AlignLeft | Qt::AlignVCenter,
+               tr("OUTSIDE VIEW (V)"));
+    for (int i = 0; i < int(outsideLegend.size()); ++i) {
+      const double y = r.top() + 6 + (i + 1) * line;
+      p.fillRect(QRectF(r.left() + 10, y + line / 2.0 - 1.5, 18, 3), outsideLegend[i].first);
+      p.setPen(Qt::white);
+      p.drawText(QRectF(r.left() + 34, y, tw - 40, line), Qt::AlignLeft | Qt::AlignVCenter,
+                 outsideLegend[i].second);
+    }
+  }
+  if (!resolutionNote.isEmpty()) {  // bottom right: the view is not at full size
+    const int tw = std::min(width() - 24, fm.horizontalAdvance(resolutionNote) + 20);
+    const int th =
+        std::max(line, fm.boundingRect(QRect(0, 0, std::max(1, tw - 8), 10000),
+                                       Qt::TextWordWrap | Qt::AlignCenter, resolutionNote)
+                           .height());
+    const QRectF r(width() - tw - 12, height() - bottomInset - th - 10, tw, th + 10);
+    box(r);
+    p.setPen(QColor(255, 200, 60));
+    p.drawText(r.adjusted(4, 0, -4, 0), Qt::AlignCenter | Qt::TextWordWrap, resolutionNote);
+  }
+  if (legend == Legend::Aliasing) {
+    // Same colours as aliasingColor() in shaders/common/composite.frag (log2 m in -4..4,
+    // blended at 70 % over the shaded scene there).
+    // As wide as its caption (and at least the bar's 260 px), never cutting it.
+    const QString caption = tr("texels per pixel m (red: undersampled)");
+    const double legendW =
+        std::min<double>(width() - 24, std::max(260, fm.horizontalAdvance(caption) + 24));
+    const QRectF r(12, height() - bottomInset - 2 * line - 30, legendW, 2 * line + 22);
+    box(r);
+    const QRectF bar(r.left() + 10, r.top() + 8, r.width() - 20, 10);
+    for (int i = 0; i < int(bar.width()); ++i) {
+      const double t = (i + 0.5) / bar.width() * 2.0 - 1.0;  // log2(m) / 4
+      const QColor blue(38, 89, 242), red(230, 26, 26);
+      const QColor end = t < 0 ? blue : red;
+      const double f = std::abs(t);
+      p.fillRect(QRectF(bar.left() + i, bar.top(), 1, bar.height()),
+                 QColor::fromRgbF(1 + (end.redF() - 1) * f, 1 + (end.greenF() - 1) * f,
+                                  1 + (end.blueF() - 1) * f));
+    }
+    p.setPen(Qt::white);
+    const QRectF labels(bar.left(), bar.bottom() + 2, bar.width(), line);
+    p.drawText(labels, Qt::AlignLeft, QStringLiteral("m \u2264 1/16"));
+    p.drawText(labels, Qt::AlignHCenter, QStringLiteral("1"));
+    p.drawText(labels, Qt::AlignRight, QStringLiteral("\u2265 16"));
+    p.drawText(QRectF(bar.left(), labels.bottom(), bar.width(), line), Qt::AlignHCenter, caption);
+  } else if (legend == Legend::Error) {
+    const QString a = tr("false lit (light leak)"), b = tr("false shadowed");
+    const QString& note = errorNote;
+    const int tw =
+        std::max({fm.horizontalAdvance(a), fm.horizontalAdvance(b), fm.horizontalAdvance(note)}) +
+        44;
+    const int rows = note.isEmpty() ? 2 : 3;
+    const QRectF r(12, height() - bottomInset - rows * line - 16, tw, rows * line + 12);
+    box(r);
+    const QColor colors[] = {QColor(255, 0, 255), QColor(0, 255, 255)};
+    const QString texts[] = {a, b};
+    for (int i = 0; i < 2; ++i) {
+      const double y = r.top() + 6 + i * line;
+      p.fillRect(QRectF(r.left() + 10, y + 3, 18, line - 6), colors[i]);
+      p.setPen(Qt::white);
+      p.drawText(QRectF(r.left() + 34, y, tw - 40, line), Qt::AlignLeft | Qt::AlignVCenter,
+                 texts[i]);
+    }
+    if (!note.isEmpty())
+      p.drawText(QRectF(r.left() + 10, r.top() + 6 + 2 * line, tw - 16, line),
+                 Qt::AlignLeft | Qt::AlignVCenter, note);
+  } else if (legend == Legend::Changed) {
+    const QString t = changedCount ? tr("%L1 pixels changed since the last frame (of %L2)")
+                                         .arg(changedCount->first)
+                                         .arg(changedCount->second)
+                                   : tr("pixels changed since the last frame: needs two frames");
+    const int swatch = line - 6;
+    const QRectF r(12, height() - bottomInset - line - 12, fm.horizontalAdvance(t) + swatch + 30,
+                   line + 10);
+    box(r);
+    const float c[3] = {SL_CHANGED_COLOUR};
+    p.fillRect(QRectF(r.left() + 10, r.top() + 8, swatch, swatch),
+               QColor::fromRgbF(c[0], c[1], c[2]));
+    p.setPen(Qt::white);
+    p.drawText(QRectF(r.left() + swatch + 18, r.top(), r.width() - swatch - 22, r.height()),
+               Qt::AlignLeft | Qt::AlignVCenter, t);
+  } else if (legend == Legend::WarpGrid) {
+    const QString t = tr("shadow-map grid: every 1/16 of the map");
+    const QRectF r(12, height() - bottomInset - line - 12, fm.horizontalAdvance(t) + 20, line + 10);
+    box(r);
+    p.setPen(QColor(255, 217, 26));
+    p.drawText(r, Qt::AlignCenter, t);
+  }
+  placeInset();
+  if (insetFactor > 0) {  // the zoom inset: nearest neighbour, whole texels per pixel
+    const QRectF source(zoomArea.topLeft() * zoomSource.devicePixelRatio(),
+                        zoomArea.size() * zoomSource.devicePixelRatio());
+    p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+    p.drawImage(QRectF(insetRect), zoomSource, source);
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(QColor(255, 230, 0), 3));
+    p.drawRect(QRectF(insetRect).adjusted(-1.5, -1.5, 1.5, 1.5));
+    p.setPen(QPen(QColor(255, 230, 0), 2, Qt::DashLine));
+    p.drawRect(QRectF(zoomArea).adjusted(-1, -1, 1, 1));
+    const QString label = QStringLiteral("\u00d7%1").arg(insetFactor);
+    const QRectF lr(insetRect.left(), insetRect.top() - line - 8, fm.horizontalAdvance(label) + 16,
+                    line + 6);
+    box(lr);
+    p.setPen(QColor(255, 230, 0));
+    p.drawText(lr, Qt::AlignCenter, label);
+  }
+  if (!zoomDrag.isEmpty()) {
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(QColor(255, 230, 0), 2, Qt::DashLine));
+    p.drawRect(zoomDrag);
+  }
+  if (pointerRing) {  // presenter mode: a ring around the pointer, dark halo for contrast
+    const double radius = std::max(18.0, line * 1.1);
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(QColor(0, 0, 0, 170), 7));
+    p.drawEllipse(*pointerRing, radius, radius);
+    p.setPen(QPen(QColor(255, 40, 200), 4));
+    p.drawEllipse(*pointerRing, radius, radius);
+  }
+}
+
+}  // namespace sl::ui

@@ -1,0 +1,64 @@
+// What the view draws over the rendered image: the split view's right half, the captions,
+// the banner, the pause badge, the busy note, the overlay legends, the light gizmo, the
+// zoom inset and the presenter's pointer ring. Plain QPainter, no GL.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+
+#include <QImage>
+#include <QLineF>
+#include <QPointF>
+#include <QRect>
+#include <QString>
+#include <QVector>
+#include <QWidget>
+
+namespace sl::ui {
+
+/// Drawn over the view (a plain child widget, composited by Qt; no GL): the split view's
+/// right half, the captions, the banner, the pause badge and the overlay legends.
+class ViewOverlay : public QWidget {
+ public:
+  explicit ViewOverlay(QWidget* parent) : QWidget(parent) {
+    setAttribute(Qt::WA_TransparentForMouseEvents);
+    setAttribute(Qt::WA_NoSystemBackground);
+  }
+
+  QImage split;  ///< right half (device pixels), null when the split view is off
+  QString leftCaption, rightCaption, bannerTitle, bannerText, pausedText;
+  enum class Legend { None, Error, Aliasing, WarpGrid, Changed } legend = Legend::None;
+  /// The outside view's line colours and what they stand for (empty: not in outside view).
+  QVector<QPair<QColor, QString>> outsideLegend;
+  /// The light gizmo (widget pixels): lines, and the light's own point when on screen.
+  QVector<QLineF> gizmoLines;
+  std::optional<QPointF> gizmoPoint;
+  QString errorNote;       ///< under the error legend: the reference's state, empty when current
+  QString resolutionNote;  ///< adaptive resolution: the internal size and why (empty: full)
+  /// The changed overlay's count (pixels whose hard test flipped since the last frame, of
+  /// those covered in both), or nothing yet.
+  std::optional<std::pair<std::uint64_t, std::uint64_t>> changedCount;
+  std::optional<QPointF> pointerRing;  ///< presenter mode's pointer highlight (widget px)
+  QImage zoomSource;                   ///< the zoom area's pixels, device pixels
+  QRect zoomArea;                      ///< widget pixels (empty: no inset)
+  QRect zoomDrag;                      ///< the rectangle being dragged (empty: none)
+  QRect insetRect;                     ///< where paintEvent drew the inset (widget px)
+  int insetFactor = 0;
+
+  /// The inset's place: the largest whole magnification of `zoomArea` that fits in 45 % of
+  /// the view's width and height, in the bottom-right corner.
+  void placeInset();
+
+  bool hasContent() const {
+    return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() || pointerRing ||
+           !zoomArea.isEmpty() || !zoomDrag.isEmpty() || changedCount || !pausedText.isEmpty() ||
+           legend != Legend::None || !gizmoLines.isEmpty() || gizmoPoint ||
+           !outsideLegend.isEmpty() || !resolutionNote.isEmpty();
+  }
+
+ protected:
+  void paintEvent(QPaintEvent*) override;
+};
+
+}  // namespace sl::ui

@@ -6,8 +6,72 @@
 #include <QPainter>
 
 #include "common/shared_constants.h"
+#include "algo/OutsideView.h"
 
 namespace sl::ui {
+
+namespace {
+/// Index of `name` in the enum declaration of the shared parameter `key`, or -1.
+int enumIndexOf(const sl::ParamSet& params, const char* key, const char* name) {
+  const sl::ParamDecl* d = params.find(key);
+  if (!d) return -1;
+  for (std::size_t i = 0; i < d->enumNames.size(); ++i)
+    if (d->enumNames[i] == name) return static_cast<int>(i);
+  return -1;
+}
+}  // namespace
+
+void ViewOverlay::setLegends(const sl::ParamSet& shared, const sl::FrameStats& stats,
+                             bool outside) {
+  legend = Legend::None;
+  if (shared.has("view.overlay")) {
+    const sl::ParamSet& p = shared;
+    const int v = p.getInt("view.overlay");
+    if (v == enumIndexOf(p, "view.overlay", "error"))
+      legend = Legend::Error;
+    else if (v == enumIndexOf(p, "view.overlay", "aliasing"))
+      legend = Legend::Aliasing;
+    else if (v == enumIndexOf(p, "view.overlay", "warp-grid"))
+      legend = Legend::WarpGrid;
+    else if (v == enumIndexOf(p, "view.overlay", "changed"))
+      legend = Legend::Changed;
+  }
+  changedCount.reset();
+  if (legend == Legend::Changed && stats.maskChange)
+    changedCount = std::make_pair(stats.maskChange->changed, stats.maskChange->compared);
+  outsideLegend.clear();
+  if (outside && stats.outsideCamera) {
+    auto colour = [](sl::OutlineRole role, int map) {
+      const glm::vec3 c = sl::outlineColour(role, map);
+      return QColor::fromRgbF(c.r, c.g, c.b);
+    };
+    const sl::FrameOutlines& o = stats.outlines;
+    auto& rows = outsideLegend;
+    rows.append(
+        {colour(sl::OutlineRole::Camera, 0), tr("camera frustum (to the scene's far end)")});
+    if (!o.splitDepthsM.empty())
+      rows.append({colour(sl::OutlineRole::Split, 0), tr("split planes")});
+    int maps = 0;
+    bool warp = false;
+    for (const sl::FrustumOutline& f : o.frusta) {
+      if (f.role == sl::OutlineRole::LightMap) maps = std::max(maps, f.map + 1);
+      warp = warp || f.role == sl::OutlineRole::Warp;
+    }
+    for (int i = 0; i < std::min(maps, 8); ++i)
+      rows.append({colour(sl::OutlineRole::LightMap, i),
+                   maps == 1 ? (warp ? tr("light frustum (unwarped)") : tr("light frustum"))
+                             : tr("light frustum, map %1").arg(i)});
+    if (warp)
+      rows.append({colour(sl::OutlineRole::Warp, 0), tr("warped map's frustum, to its centre")});
+    // m and the error are the main camera's pixels' (Renderer: compositeInto): not drawn here.
+    if (legend == Legend::Aliasing || legend == Legend::Error) {
+      rows.append({QColor(0, 0, 0, 0), legend == Legend::Aliasing
+                                           ? tr("aliasing overlay: main view only (V)")
+                                           : tr("error overlay: main view only (V)")});
+      legend = Legend::None;
+    }
+  }
+}
 
 void ViewOverlay::placeInset() {
   insetRect = QRect();

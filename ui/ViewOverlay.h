@@ -15,6 +15,9 @@
 #include <QVector>
 #include <QWidget>
 
+#include "algo/Params.h"
+#include "core/FrameStats.h"
+
 namespace sl::ui {
 
 /// Drawn over the view (a plain child widget, composited by Qt; no GL): the split view's
@@ -49,6 +52,9 @@ class ViewOverlay : public QWidget {
   /// The inset's place: the largest whole magnification of `zoomArea` that fits in 45 % of
   /// the view's width and height, in the bottom-right corner.
   void placeInset();
+  /// The legends of the renderer's overlays (view.overlay), the changed overlay's count and
+  /// the outside view's line colours, from the shared parameters and the last main frame.
+  void setLegends(const sl::ParamSet& shared, const sl::FrameStats& stats, bool outside);
 
   bool hasContent() const {
     return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() || pointerRing ||

@@ -146,6 +146,8 @@ class ViewportWidget : public QWidget {
   static constexpr int kSettleDelayMs = 200;
   /// Views (and split halves) narrower or lower than this are not rendered.
   static constexpr int kMinDrawnPx = 16;
+  /// The fly keys' tick while one is held.
+  static constexpr int kFlyTickMs = 16;
 
   /// Paused: no new frames (the last one stays on screen) until stepFrame() or resume.
   /// Camera and parameter changes wait for the next frame.

@@ -239,6 +239,14 @@ class ViewportWidget : public QOpenGLWidget {
   /// The error of the right half (split view), once computed.
   std::optional<double> splitErrorPct() const { return splitErrorPct_; }
 
+ public Q_SLOTS:
+  /// The fly keys W/S, A/D, Q/E (ui/WindowShortcuts sends them from anywhere in the window):
+  /// the view flies while one is held. A repeat changes nothing; false for another key.
+  bool flyKeyPressed(int key, bool autoRepeat);
+  bool flyKeyReleased(int key, bool autoRepeat);
+  /// Lets go of every held fly key (the window lost the keyboard).
+  void stopFlying();
+
  Q_SIGNALS:
   /// The renderer exists (after initializeGL): panels may bind to its parameters.
   void rendererReady();

@@ -15,6 +15,7 @@
 
 #include "GlSupport.h"
 #include "MessageText.h"
+#include "WindowShortcuts.h"
 #include "algo/CameraNavigation.h"
 #include "algo/MemoryMatch.h"
 #include "common/shared_constants.h"
@@ -24,20 +25,6 @@ namespace sl::ui {
 
 namespace {
 constexpr int kFlyTickMs = 16;
-
-bool isFlyKey(int key) {
-  switch (key) {
-    case Qt::Key_W:
-    case Qt::Key_A:
-    case Qt::Key_S:
-    case Qt::Key_D:
-    case Qt::Key_Q:
-    case Qt::Key_E:
-      return true;
-    default:
-      return false;
-  }
-}
 
 /// The error of a frame, or nothing when it measured nothing (no covered pixel): never a 0
 /// that was not measured.
@@ -1402,11 +1389,6 @@ void ViewportWidget::markViewChanged() {
   Q_EMIT viewChanged();
 }
 
-float ViewportWidget::sceneScaleM() const {
-  if (scene_ && scene_->bounds.valid()) return std::max(0.5f, glm::length(scene_->bounds.size()));
-  return std::max(0.5f, glm::length(camera_.position - camera_.target));
-}
-
 // --- Mouse: left-drag orbit, right/middle-drag (or shift+left) pan, ctrl+left look, alt+left
 // moves the light, wheel dolly.
 
@@ -1542,7 +1524,7 @@ void ViewportWidget::keyReleaseEvent(QKeyEvent* event) {
 }
 
 bool ViewportWidget::flyKeyPressed(int key, bool autoRepeat) {
-  if (!isFlyKey(key)) return false;
+  if (!WindowShortcuts::isFlyKey(key)) return false;
   if (!autoRepeat) heldKeys_.insert(key);
   if (!heldKeys_.empty() && !flyTimer_.isActive()) {
     flyClock_.start();
@@ -1553,7 +1535,7 @@ bool ViewportWidget::flyKeyPressed(int key, bool autoRepeat) {
 }
 
 bool ViewportWidget::flyKeyReleased(int key, bool autoRepeat) {
-  if (!isFlyKey(key)) return false;
+  if (!WindowShortcuts::isFlyKey(key)) return false;
   if (!autoRepeat) heldKeys_.erase(key);
   if (heldKeys_.empty()) flyTimer_.stop();
   return true;

@@ -315,7 +315,6 @@ class ViewportWidget : public QOpenGLWidget {
   /// Continuous rendering (GL current, after a frame): takes a finished reference (its mask
   /// to the error overlay when it is of this view) and starts a trace when one is due.
   void updateLiveReference();
-  float sceneScaleM() const;  ///< size of the scene, for fly speed and pan scale
 
   std::unique_ptr<sl::Renderer> renderer_;
   /// Split view's right half: a second renderer on the same context (owns its own GL

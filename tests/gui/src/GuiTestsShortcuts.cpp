@@ -8,6 +8,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QApplication>
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -15,6 +16,7 @@
 #include <QSpinBox>
 #include <QTest>
 #include <QTextBrowser>
+#include <QWheelEvent>
 
 #include "GuiTests.h"
 #include "MainWindow.h"
@@ -196,6 +198,42 @@ bool GuiTests::shortcuts() {
   key(Qt::Key_F6);
   check(view->continuous() != continuous, tr("F6 (no text) still acts from the spin box"));
   key(Qt::Key_F6);
+
+  // The view's rates (algo/CameraNavigation) through its own handlers: a drag across the
+  // view's height orbits half a turn whatever the view's size (about half of it here: whole
+  // pixels), a wheel notch moves 15 % of the distance to the target.
+  (void)view->setOutsideView(false);
+  const sl::Camera beforeDrag = view->camera();
+  const int h = view->height();
+  const int dxPx = h / 2;
+  const QPointF from(view->width() / 4, h / 2), to = from + QPointF(dxPx, 0);
+  auto mouse = [view](QEvent::Type type, QPointF at, Qt::MouseButton button,
+                      Qt::MouseButtons buttons) {
+    QMouseEvent e(type, at, view->mapToGlobal(at), button, buttons, Qt::NoModifier);
+    QApplication::sendEvent(view, &e);
+  };
+  mouse(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+  mouse(QEvent::MouseMove, to, Qt::NoButton, Qt::LeftButton);
+  mouse(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
+  const glm::vec3 a = beforeDrag.position - beforeDrag.target,
+                  b = view->camera().position - view->camera().target;
+  const double turnDeg = glm::degrees(std::abs(std::remainder(
+      std::atan2(double(b.x), double(b.z)) - std::atan2(double(a.x), double(a.z)), 2.0 * M_PI)));
+  const double expectedDeg = 180.0 * dxPx / h;
+  check(std::abs(turnDeg - expectedDeg) < 0.01 && std::abs(glm::length(b) - glm::length(a)) < 1e-3f,
+        tr("a drag of %1 px in a %2 px high view orbits %3° (%4°)")
+            .arg(dxPx)
+            .arg(h)
+            .arg(turnDeg)
+            .arg(expectedDeg));
+  const float distanceBefore = glm::length(view->camera().position - view->camera().target);
+  const QPointF centre(view->width() / 2.0, h / 2.0);
+  QWheelEvent wheel(centre, view->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                    Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(view, &wheel);
+  const float ratio = glm::length(view->camera().position - view->camera().target) / distanceBefore;
+  check(std::abs(ratio - 0.85f) < 1e-4f,
+        tr("a wheel notch towards the target: distance x %1 (0.85)").arg(ratio));
 
   // One table: the Help window (F1) lists the view's fly keys and every command, and no two
   // commands share a key (Qt would then run neither).

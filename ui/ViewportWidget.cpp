@@ -1561,7 +1561,7 @@ void ViewportWidget::flyStep() {
   }
   // A share of the scene's size per second (algo/CameraNavigation), Shift four times faster.
   const float dtS = static_cast<float>(flyClock_.restart()) / 1000.0f;
-  const bool fast = QGuiApplication::keyboardModifiers() & Qt::ShiftModifier;
+  const bool fast = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
   const float stepM =
       sl::flyStepM(sl::navigationScaleM(scene_ ? scene_->bounds : sl::Aabb{}, camera_), dtS, fast);
   auto axis = [this](int plus, int minus) {

@@ -3,6 +3,7 @@
 // being typed into keeps its keys. Keys go through Qt's own path (QTest: the shortcut
 // override, the shortcut map, then the focus widget), as a keyboard's would.
 #include <cmath>
+#include <numbers>
 
 #include <QAbstractItemView>
 #include <QAction>
@@ -217,8 +218,9 @@ bool GuiTests::shortcuts() {
   mouse(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
   const glm::vec3 a = beforeDrag.position - beforeDrag.target,
                   b = view->camera().position - view->camera().target;
-  const double turnDeg = glm::degrees(std::abs(std::remainder(
-      std::atan2(double(b.x), double(b.z)) - std::atan2(double(a.x), double(a.z)), 2.0 * M_PI)));
+  const double turnDeg = glm::degrees(std::abs(
+      std::remainder(std::atan2(double(b.x), double(b.z)) - std::atan2(double(a.x), double(a.z)),
+                     2.0 * std::numbers::pi)));
   const double expectedDeg = 180.0 * dxPx / h;
   check(std::abs(turnDeg - expectedDeg) < 0.01 && std::abs(glm::length(b) - glm::length(a)) < 1e-3f,
         tr("a drag of %1 px in a %2 px high view orbits %3° (%4°)")

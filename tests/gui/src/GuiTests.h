@@ -148,7 +148,8 @@ class GuiTests : public QObject {
   /// shortcuts (GuiTestsShortcuts.cpp): with a Parameters slider, then a dock's list or tree
   /// focused, V (outside view), F6 (continuous), Space (pause), O (overlay) and W held (fly)
   /// act and the focus stays; V and Space from one widget of every kind and from a floating
-  /// dock; typed into a spin box, V, Space and W do not, F6 does; a drag in the view orbits
+  /// dock; ".", "]" and Esc step a frame and the passes; typed into a spin box, V, Space and
+  /// W do not, F6 does; a drag in the view orbits
   /// 180° per view height, a wheel notch moves 15 % of the distance; F1 lists every command
   /// and no two share a key.
   bool shortcuts();

@@ -21,6 +21,7 @@
 
 #include "GuiTests.h"
 #include "MainWindow.h"
+#include "PassStepper.h"
 #include "ViewportWidget.h"
 #include "WindowShortcuts.h"
 #include "panels/common/ParamPanel.h"
@@ -199,6 +200,23 @@ bool GuiTests::shortcuts() {
   key(Qt::Key_F6);
   check(view->continuous() != continuous, tr("F6 (no text) still acts from the spin box"));
   key(Qt::Key_F6);
+
+  // Frame and pass stepping from the tree: "." renders one frame and pauses, "]" steps
+  // through the frame's passes, Esc stops.
+  check(focusOn(tree), tr("the tree has the focus again"));
+  const std::uint64_t frames = view->framesRendered();
+  key(Qt::Key_Period);
+  for (int i = 0; i < 100 && view->framesRendered() == frames; ++i) spin(20);
+  check(view->paused() && view->framesRendered() > frames,
+        tr(". from the tree renders a frame (%1 -> %2) and pauses")
+            .arg(frames)
+            .arg(view->framesRendered()));
+  key(Qt::Key_BracketRight);
+  check(w_.passes()->active(), tr("] from the tree steps through the passes"));
+  if (QApplication::focusWidget() != tree) focusOn(tree);
+  key(Qt::Key_Escape);
+  check(!w_.passes()->active(), tr("Esc from the tree stops stepping"));
+  w_.pauseAction()->setChecked(false);
 
   // The view's rates (algo/CameraNavigation) through its own handlers: a drag across the
   // view's height orbits half a turn whatever the view's size (about half of it here: whole

@@ -149,9 +149,8 @@ class GuiTests : public QObject {
   /// focused, V (outside view), F6 (continuous), Space (pause), O (overlay) and W held (fly)
   /// act and the focus stays; V and Space from one widget of every kind and from a floating
   /// dock; ".", "]" and Esc step a frame and the passes; typed into a spin box, V, Space and
-  /// W do not, F6 does; a drag in the view orbits
-  /// 180° per view height, a wheel notch moves 15 % of the distance; F1 lists every command
-  /// and no two share a key.
+  /// W do not, F6 does; a drag in the view orbits 180° per view height, a wheel notch moves
+  /// 15 % of the distance; F1 lists every command and no two share a key.
   bool shortcuts();
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);

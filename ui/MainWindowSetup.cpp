@@ -27,6 +27,7 @@
 #include "TeachingBar.h"
 #include "Theme.h"
 #include "ViewportWidget.h"
+#include "WindowShortcuts.h"
 #include "panels/common/ChartsPanel.h"
 #include "panels/common/LessonPanel.h"
 #include "panels/common/ParamPanel.h"
@@ -209,6 +210,7 @@ void MainWindow::createActions() {
   commandActions_ << pauseAction_ << step << passNext << passPrev << passStopAction_;
   for (QAction* a : lessons->actions())
     if (!a->shortcut().isEmpty()) commandActions_ << a;
+  new WindowShortcuts(*this, *viewport_);  // the fly keys from anywhere in the window
 }
 
 QToolBar* MainWindow::addFixedToolBar(const QString& title, const QString& objectName) {

@@ -6,38 +6,11 @@
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
+#include "WindowShortcuts.h"
+
 namespace sl::ui {
 
 namespace {
-struct Binding {
-  const char* keys;
-  const char* what;
-};
-
-// The viewport's own controls (ViewportWidget::mouse*/key* events).
-constexpr Binding kViewportBindings[] = {
-    {"Left drag", "Orbit around the target"},
-    {"Right drag / middle drag / Shift+left drag", "Pan"},
-    {"Ctrl+left drag", "Look around (turn the camera in place)"},
-    {"Wheel", "Dolly towards / away from the target"},
-    {"W / S", "Fly forward / back"},
-    {"A / D", "Fly left / right"},
-    {"Q / E", "Fly down / up"},
-    {"Shift (held)", "Fly four times faster"},
-    {"Left drag / wheel in the outside view (V)",
-     "Orbit / move the third camera; the main camera stays"},
-    {"Drop a .gltf / .glb file", "Open it"},
-};
-
-// The image views and plots of the debug panels (PanelKit.h: ImageView, PlotWidget).
-constexpr Binding kPanelBindings[] = {
-    {"Wheel over an image", "Zoom around the cursor"},
-    {"Drag an image", "Pan"},
-    {"Double-click an image", "Fit it to the panel"},
-    {"Hover an image / a plot", "Value under the cursor / every curve at that x"},
-    {"Right-click a panel", "Save it as a PNG"},
-};
-
 QString row(const QString& keys, const QString& what) {
   return QStringLiteral(
              "<tr><td width='45%' style='padding:3px 16px 3px 0'><b>%1</b></td>"
@@ -56,16 +29,16 @@ ShortcutsDialog::ShortcutsDialog(const QList<QAction*>& actions, QWidget* parent
     : QDialog(parent) {
   setWindowTitle(tr("ShadowLab — Keyboard and mouse"));
   QString html = QStringLiteral("<table width='100%' cellspacing='0'>");
-  html += heading(tr("Viewport (click into the view first)"));
-  for (const Binding& b : kViewportBindings) html += row(QString::fromUtf8(b.keys), tr(b.what));
+  html += heading(tr("Viewport (its keys work wherever the focus is, but in a text field)"));
+  for (const WindowShortcuts::Control& c : WindowShortcuts::viewControls())
+    html += row(QString::fromUtf8(c.input), tr(c.what));
   html += heading(tr("Panels"));
-  for (const Binding& b : kPanelBindings) html += row(QString::fromUtf8(b.keys), tr(b.what));
+  for (const WindowShortcuts::Control& c : WindowShortcuts::panelControls())
+    html += row(QString::fromUtf8(c.input), tr(c.what));
   html += heading(tr("Commands"));
-  for (const QAction* action : actions) {
-    if (action->shortcut().isEmpty()) continue;
-    html += row(action->shortcut().toString(QKeySequence::NativeText),
-                action->text().remove(QLatin1Char('&')).remove(QStringLiteral("…")));
-  }
+  for (const WindowShortcuts::Row& r :
+       WindowShortcuts::commandRows(parent ? parent->window() : nullptr, actions))
+    html += row(r.keys, r.what);
   html += QStringLiteral("</table>");
 
   auto* text = new QTextBrowser;

@@ -11,36 +11,10 @@
 #include <QWheelEvent>
 
 #include "ViewportWidget.h"
+#include "WindowShortcuts.h"
+#include "algo/CameraNavigation.h"
 
 namespace sl::ui {
-
-namespace {
-constexpr float kOrbitDegPerPixel = 0.35f;
-constexpr float kLookDegPerPixel = 0.15f;
-constexpr float kDollyPerWheelStep = 0.85f;  ///< distance factor per wheel notch (towards)
-constexpr float kFlySceneFractionPerS = 0.35f;
-constexpr float kFastFlyFactor = 4.0f;
-
-bool isFlyKey(int key) {
-  switch (key) {
-    case Qt::Key_W:
-    case Qt::Key_A:
-    case Qt::Key_S:
-    case Qt::Key_D:
-    case Qt::Key_Q:
-    case Qt::Key_E:
-      return true;
-    default:
-      return false;
-  }
-}
-
-}  // namespace
-
-float ViewportWidget::sceneScaleM() const {
-  if (scene_ && scene_->bounds.valid()) return std::max(0.5f, glm::length(scene_->bounds.size()));
-  return std::max(0.5f, glm::length(camera_.position - camera_.target));
-}
 
 void ViewportWidget::dragLight(const QPoint& d) {
   sl::Light l = light_;
@@ -121,21 +95,20 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   }
   if (outsideView() && dragButton_ == Qt::LeftButton && !(mods & Qt::ShiftModifier)) {
     // Outside view: the drag orbits the third camera, the main camera stays.
-    adjustOutsideView(-d.x() * kOrbitDegPerPixel, d.y() * kOrbitDegPerPixel, 1.0f);
+    const float degPerPx = sl::orbitDegPerPixel(height());
+    adjustOutsideView(-d.x() * degPerPx, d.y() * degPerPx, 1.0f);
     return;
   }
-  sl::Camera cam = camera_;
-  if (dragButton_ == Qt::LeftButton && (mods & Qt::ControlModifier)) {
-    cam.look(-d.x() * kLookDegPerPixel, -d.y() * kLookDegPerPixel);
-  } else if (dragButton_ == Qt::LeftButton && !(mods & Qt::ShiftModifier)) {
-    cam.orbit(-d.x() * kOrbitDegPerPixel, d.y() * kOrbitDegPerPixel);
-  } else {
-    // Pan so that the point under the cursor (at the target's depth) follows the cursor.
-    const float distM = glm::length(cam.position - cam.target);
-    const float mPerPixel =
-        2.0f * distM * std::tan(glm::radians(cam.fovYDeg) * 0.5f) / std::max(1, height());
-    cam.pan(-d.x() * mPerPixel, d.y() * mPerPixel);
-  }
+  // Rates from algo/CameraNavigation: per view height, so that a drag turns or pans as far at
+  // any window size (a pan keeps the point under the cursor, at the target's depth, under it).
+  const float dx = static_cast<float>(d.x()), dy = static_cast<float>(d.y());
+  sl::Camera cam;
+  if (dragButton_ == Qt::LeftButton && (mods & Qt::ControlModifier))
+    cam = sl::lookByDrag(camera_, dx, dy, height());
+  else if (dragButton_ == Qt::LeftButton && !(mods & Qt::ShiftModifier))
+    cam = sl::orbitByDrag(camera_, dx, dy, height());
+  else
+    cam = sl::panByDrag(camera_, dx, dy, height());
   if (!cam.validate()) setCamera(cam);
 }
 
@@ -163,45 +136,64 @@ void ViewportWidget::wheelEvent(QWheelEvent* event) {
   const float steps = static_cast<float>(event->angleDelta().y()) / 120.0f;
   if (steps == 0.0f) return;
   if (outsideView()) {
-    adjustOutsideView(0.0f, 0.0f, std::pow(kDollyPerWheelStep, steps));
+    adjustOutsideView(0.0f, 0.0f, sl::dollyFactor(steps));
     event->accept();
     return;
   }
-  sl::Camera cam = camera_;
-  cam.dolly(std::pow(kDollyPerWheelStep, steps));
+  // A share of the distance to the target per notch, never through it nor beyond a few scene
+  // sizes (algo/CameraNavigation).
+  const sl::Camera cam = sl::dollyByWheel(camera_, steps, scene_ ? scene_->bounds : sl::Aabb{});
   if (!cam.validate()) setCamera(cam);
   event->accept();
 }
 
-// --- Keys: WASD move, Q/E down/up, shift = faster.
+// --- Keys: WASD move, Q/E down/up, shift = faster. ui/WindowShortcuts sends them here from
+// anywhere in the window; the view's own key events take the same way.
 
 void ViewportWidget::keyPressEvent(QKeyEvent* event) {
-  if (!isFlyKey(event->key()) || (event->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
+  if ((event->modifiers() & (Qt::ControlModifier | Qt::AltModifier)) ||
+      !flyKeyPressed(event->key(), event->isAutoRepeat())) {
     QWidget::keyPressEvent(event);
     return;
-  }
-  if (!event->isAutoRepeat()) heldKeys_.insert(event->key());
-  if (!flyTimer_.isActive()) {
-    flyClock_.start();
-    flyTimer_.start();
-    flyStep();
   }
   event->accept();
 }
 
 void ViewportWidget::keyReleaseEvent(QKeyEvent* event) {
-  if (!isFlyKey(event->key())) {
+  if (!flyKeyReleased(event->key(), event->isAutoRepeat())) {
     QWidget::keyReleaseEvent(event);
     return;
   }
-  if (!event->isAutoRepeat()) heldKeys_.erase(event->key());
-  if (heldKeys_.empty()) flyTimer_.stop();
   event->accept();
 }
 
-void ViewportWidget::focusOutEvent(QFocusEvent* event) {
+bool ViewportWidget::flyKeyPressed(int key, bool autoRepeat) {
+  if (!WindowShortcuts::isFlyKey(key)) return false;
+  if (!autoRepeat) heldKeys_.insert(key);
+  if (!heldKeys_.empty() && !flyTimer_.isActive()) {
+    flyClock_.start();
+    flyTimer_.start();
+    flyStep();
+  }
+  return true;
+}
+
+bool ViewportWidget::flyKeyReleased(int key, bool autoRepeat) {
+  if (!WindowShortcuts::isFlyKey(key)) return false;
+  if (!autoRepeat) heldKeys_.erase(key);
+  if (heldKeys_.empty()) flyTimer_.stop();
+  return true;
+}
+
+void ViewportWidget::stopFlying() {
   heldKeys_.clear();
   flyTimer_.stop();
+}
+
+void ViewportWidget::focusOutEvent(QFocusEvent* event) {
+  // Held fly keys are the window's (their releases reach the view wherever the focus is);
+  // a window that loses the keyboard lets go of them.
+  if (event->reason() == Qt::ActiveWindowFocusReason) stopFlying();
   dragButton_ = Qt::NoButton;
   QWidget::focusOutEvent(event);
 }
@@ -211,13 +203,14 @@ void ViewportWidget::flyStep() {
     flyTimer_.stop();
     return;
   }
-  const float dtS = std::clamp(static_cast<float>(flyClock_.restart()) / 1000.0f, 0.001f, 0.1f);
-  float speed = sceneScaleM() * kFlySceneFractionPerS;
-  if (QGuiApplication::keyboardModifiers() & Qt::ShiftModifier) speed *= kFastFlyFactor;
+  // A share of the scene's size per second (algo/CameraNavigation), Shift four times faster.
+  const float dtS = static_cast<float>(flyClock_.restart()) / 1000.0f;
+  const bool fast = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
+  const float stepM =
+      sl::flyStepM(sl::navigationScaleM(scene_ ? scene_->bounds : sl::Aabb{}, camera_), dtS, fast);
   auto axis = [this](int plus, int minus) {
     return (heldKeys_.count(plus) ? 1.0f : 0.0f) - (heldKeys_.count(minus) ? 1.0f : 0.0f);
   };
-  const float stepM = speed * dtS;
   sl::Camera cam = camera_;
   cam.fly(axis(Qt::Key_W, Qt::Key_S) * stepM, axis(Qt::Key_D, Qt::Key_A) * stepM,
           axis(Qt::Key_E, Qt::Key_Q) * stepM);

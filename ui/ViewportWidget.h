@@ -256,6 +256,14 @@ class ViewportWidget : public QWidget {
   /// The error of the right half (split view), once computed.
   std::optional<double> splitErrorPct() const { return splitErrorPct_; }
 
+ public Q_SLOTS:
+  /// The fly keys W/S, A/D, Q/E (ui/WindowShortcuts sends them from anywhere in the window):
+  /// the view flies while one is held. A repeat changes nothing; false for another key.
+  bool flyKeyPressed(int key, bool autoRepeat);
+  bool flyKeyReleased(int key, bool autoRepeat);
+  /// Lets go of every held fly key (the window lost the keyboard).
+  void stopFlying();
+
  Q_SIGNALS:
   /// The render service is ready: panels may bind to the sides' parameters.
   void rendererReady();
@@ -335,7 +343,6 @@ class ViewportWidget : public QWidget {
   /// Continuous rendering, after a frame: takes finished references (the main one's mask to
   /// the error overlay when it is of this view) and submits traces that are due.
   void updateLiveReferences(FrameOutcome& outcome);
-  float sceneScaleM() const;  ///< size of the scene, for fly speed and pan scale
   void updateZoomInset();
   void probeHover();  ///< asks the render thread for the pixel under hover_ (pixelProbed)
 

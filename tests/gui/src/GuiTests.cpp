@@ -103,6 +103,7 @@ const std::vector<GuiTests::Test>& GuiTests::all() {
       {"storage-click", "[=DIR]", [](GuiTests& t, const QString& a) { return t.storageClick(a); }},
       {"panels", "", [](GuiTests& t, const QString&) { return t.panelsFollowTechnique(); }},
       {"course", "[=DIR]", [](GuiTests& t, const QString& a) { return t.course(a); }},
+      {"shortcuts", "", [](GuiTests& t, const QString&) { return t.shortcuts(); }},
   };
   return tests;
 }

@@ -145,6 +145,13 @@ class GuiTests : public QObject {
   /// lesson's sentence; Next is off at the last, Previous goes back one, and a lesson outside
   /// the course ends it. The Lesson dock at each lesson is saved to DIR.
   bool course(const QString& dir);
+  /// shortcuts (GuiTestsShortcuts.cpp): with a Parameters slider, then a dock's list or tree
+  /// focused, V (outside view), F6 (continuous), Space (pause), O (overlay) and W held (fly)
+  /// act and the focus stays; V and Space from one widget of every kind and from a floating
+  /// dock; ".", "]" and Esc step a frame and the passes; typed into a spin box, V, Space and
+  /// W do not, F6 does; a drag in the view orbits 180° per view height, a wheel notch moves
+  /// 15 % of the distance; F1 lists every command and no two share a key.
+  bool shortcuts();
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
   /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;

@@ -130,8 +130,19 @@ QImage Automation::grabView() const {
 }
 
 QImage Automation::renderedFrame() const {
-  w_.viewport()->renderFullSizeNow();
+  w_.viewport()->renderFullSizeNow(true);
   return w_.viewport()->renderedImage();
+}
+
+bool Automation::waitForProbe(int timeoutMs) {
+  QElapsedTimer clock;
+  clock.start();
+  while (w_.viewport()->probePending()) {
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    if (clock.elapsed() > timeoutMs) return false;
+  }
+  QCoreApplication::processEvents();  // the panels' repaint
+  return true;
 }
 
 namespace {

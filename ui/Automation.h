@@ -57,6 +57,9 @@ class Automation : public QObject {
 
   /// Renders until `frames` more frames are drawn; false on timeout.
   bool waitForFrames(int frames, int timeoutMs = 30000);
+  /// Waits until the probe of the pixel under the mouse has come back (it is read on the
+  /// render thread); false on timeout.
+  bool waitForProbe(int timeoutMs = 10000);
   /// Renders until an opened lesson has settled (LessonController); false on timeout.
   bool waitForSettled(int timeoutMs = 60000);
 

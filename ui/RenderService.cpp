@@ -170,8 +170,8 @@ class RenderService::Thread : public RenderContext {
           job = std::move(frame_);
           frame_ = nullptr;
           isFrame = true;
-          stopFlag_ = false;  // a new frame starts unasked
         }
+        stopFlag_ = false;  // whatever starts now starts unasked
         busy_ = true;
         busyFrame_ = isFrame;
         since_ = std::chrono::steady_clock::now();

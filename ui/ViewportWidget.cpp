@@ -46,7 +46,9 @@ ViewportWidget::ViewportWidget(QWidget* parent)
   settleTimer_.setSingleShot(true);
   connect(&settleTimer_, &QTimer::timeout, this, [this] {
     if (frameDivisor_ == 1) return;
-    if (dragButton_ != Qt::NoButton || !heldKeys_.empty()) return settleTimer_.start();
+    // Still interacting, or a frame on its way: the view is not still yet.
+    if (dragButton_ != Qt::NoButton || !heldKeys_.empty() || ordersSent_ > ordersDone_)
+      return settleTimer_.start();
     fullSizeNext_ = true;
     requestFrame();
   });
@@ -173,8 +175,10 @@ std::shared_ptr<FrameOrder> ViewportWidget::makeOrder() {
           kProgressiveShare * double(shared_.getInt("view.adaptive.budget_ms"));
     const qreal dpr = devicePixelRatioF();
     const int x = int(std::floor(hover_.x() * dpr)), y = int(std::floor(hover_.y() * dpr));
-    if (probeWanted_ && hover_.x() >= 0 && !outsideView() && x < mainWidth)
+    if (probeWanted_ && hover_.x() >= 0 && !outsideView() && x < mainWidth) {
       o->probe = QPoint(x / divisor, y / divisor);
+      ++probesRead_;
+    }
   }
   o->viewRevision = viewRevision_;
   sentViewRevision_ = viewRevision_;
@@ -195,11 +199,22 @@ void ViewportWidget::applyOutcome(const std::shared_ptr<FrameOutcome>& out) {
     updateOverlayWidget();
     return;
   }
+  if (out->id <= lastAppliedId_) return;  // older than the frame shown (an export's came first)
+  lastAppliedId_ = out->id;
   shownViewRevision_ = out->viewRevision;
   mainImage_ = out->mainImage;
   splitImage_ = out->hasSplit ? out->splitImage : QImage();
   frameDivisor_ = out->divisor;
   internalSize_ = mainImage_.size();
+  if (out->viewRevision != viewRevision_) {
+    // Of a view that has changed since (a drag, an edit): shown while the current one is
+    // computed, but neither counted, measured nor published.
+    updateZoomInset();
+    updateOverlayWidget();
+    update();
+    pump();
+    return;
+  }
   lastFrameMs_ = out->wallMs;
   frameFailure_ = QString::fromStdString(out->mainProblem);
   main_.setFrame(std::move(out->mainStats), std::move(out->mainPublication));
@@ -228,10 +243,7 @@ void ViewportWidget::applyOutcome(const std::shared_ptr<FrameOutcome>& out) {
   updateOverlayWidget();
   update();
   Q_EMIT frameRendered();
-  if (out->probed && out->viewRevision == viewRevision_) {
-    ++probesRead_;
-    Q_EMIT pixelProbed(out->probe);
-  }
+  if (out->probed && probeWanted_) Q_EMIT pixelProbed(out->probe);
   // On demand (or paused): the error is computed once the view is still. Continuous: the
   // live reference keeps it.
   if (frameDivisor_ > 1 && (!continuous_ || paused_))
@@ -470,6 +482,10 @@ void ViewportWidget::setContinuous(bool on) {
   } else {
     cancelLiveReferences();
     if (!errorIsCurrent()) errorTimer_.start(kErrorDelayMs);
+    if (progressNote_) {  // a progressive frame's view: drawn again in one call
+      markViewChanged();
+      requestFrame();
+    }
   }
   updateOverlayWidget();
 }
@@ -537,11 +553,11 @@ bool ViewportWidget::adaptiveActive() const {
   return shared_.has("view.adaptive") && shared_.getBool("view.adaptive");
 }
 
-void ViewportWidget::renderFullSizeNow() {
+void ViewportWidget::renderFullSizeNow(bool always) {
   if (!ready_) return;
   const bool current = ordersSent_ == ordersDone_ && shownViewRevision_ == viewRevision_ &&
                        lastFrameSize_ == deviceSize() && framesRendered_ > 0;
-  if (frameDivisor_ == 1 && current) return;
+  if (frameDivisor_ == 1 && current && !always) return;
   fullSizeNext_ = true;
   (void)renderNow(makeOrder());
 }
@@ -550,7 +566,7 @@ void ViewportWidget::setProbeWanted(bool wanted) {
   if (probeWanted_ == wanted) return;
   probeWanted_ = wanted;
   if (!wanted)
-    Q_EMIT pixelProbed(std::nullopt);
+    Q_EMIT pixelProbed(std::nullopt);  // an answer still on its way is dropped
   else
     probeHover();
 }
@@ -565,14 +581,15 @@ void ViewportWidget::probeHover() {
   }
   const QPoint at(x / frameDivisor_, y / frameDivisor_);  // internal pixels
   const std::uint64_t serial = ++probeSerial_;
+  ++probesRead_;  // asked of the render thread: one pixel read back
   service_->post([this, at, serial](RenderContext& c) {
     std::optional<sl::PixelProbe> probe;
     if (sl::Renderer* r = c.existing("main")) probe = r->probePixel(at.x(), at.y());
     QMetaObject::invokeMethod(
         this,
         [this, probe, serial] {
-          if (serial != probeSerial_) return;  // the mouse moved on
-          ++probesRead_;
+          probeAnswered_ = std::max(probeAnswered_, serial);
+          if (serial != probeSerial_ || !probeWanted_) return;  // the mouse moved on
           Q_EMIT pixelProbed(probe);
         },
         Qt::QueuedConnection);
@@ -620,17 +637,27 @@ bool ViewportWidget::failedFrameUnmeasured() {
 
 std::optional<double> ViewportWidget::computeErrorNow() {
   if (!ready_ || framesRendered_ == 0) return std::nullopt;
-  // The error is of the view as it is now: a frame of it first when the shown one is older.
-  if (ordersSent_ > ordersDone_ || shownViewRevision_ != viewRevision_) renderNow(makeOrder());
-  if (failedFrameUnmeasured()) return std::nullopt;
-  const bool split = split_ && !splitImage_.isNull();
+  // The error of the view as it is now: when the frame shown is older (or one is on its
+  // way), a frame of it is drawn in the same job as the measurement.
+  std::shared_ptr<FrameOrder> order;
+  if (ordersSent_ > ordersDone_ || shownViewRevision_ != viewRevision_) order = makeOrder();
+  auto out = std::make_shared<FrameOutcome>();
   SideError main;
   std::optional<SideError> right;
+  bool measured = false;
   if (!service_->call([&](RenderContext& c) {
+        if (order) {
+          renderOrder(c, *order, *out);
+          if (out->stopped || !out->mainProblem.empty()) return;
+        }
+        measured = true;
         main = computeSideError(c, "main");
-        if (split) right = computeSideError(c, "split");
+        if (order ? order->split.has_value() : split_ && !splitImage_.isNull())
+          right = computeSideError(c, "split");
       }))
     return std::nullopt;
+  if (order) applyOutcome(out);
+  if (failedFrameUnmeasured() || !measured) return std::nullopt;
   applyError(viewRevision_, main, right);
   return errorIsCurrent() ? mainErrorPct_ : std::nullopt;
 }
@@ -672,16 +699,22 @@ std::optional<std::string> ViewportWidget::reloadShaders() {
 std::vector<FigureCell> ViewportWidget::figureCells(int dilatePx) {
   std::vector<FigureCell> cells;
   if (!ready_ || framesRendered_ == 0) return cells;
-  renderFullSizeNow();  // a figure is never the reduced (adaptive resolution) image
   auto label = [](const sl::ViewSide& side) {
     const std::string rest = side.nonDefaultParams();
     return side.techniqueId() + (rest.empty() ? "" : " " + rest);
   };
+  // A full-size frame of the view as it is and its cells, in one job: a figure is never the
+  // reduced (adaptive resolution) image, nor a frame drawn in between.
+  fullSizeNext_ = true;
+  const std::shared_ptr<FrameOrder> order = makeOrder();
   const std::string mainLabel = label(main_);
   const std::optional<std::string> splitLabel =
-      split_ && !splitImage_.isNull() ? std::optional(label(*split_)) : std::nullopt;
+      order->split ? std::optional(label(*split_)) : std::nullopt;
+  auto out = std::make_shared<FrameOutcome>();
   std::string problem;
   service_->call([&](RenderContext& c) {
+    renderOrder(c, *order, *out);
+    if (out->stopped || !out->mainProblem.empty()) return;
     try {
       cells.push_back(figureCellOf(c, "main", mainLabel, dilatePx));
       if (splitLabel) cells.push_back(figureCellOf(c, "split", *splitLabel, dilatePx));
@@ -690,6 +723,7 @@ std::vector<FigureCell> ViewportWidget::figureCells(int dilatePx) {
       problem = ex.what();
     }
   });
+  applyOutcome(out);
   if (!problem.empty())
     Q_EMIT renderProblem(QStringLiteral("export figure: %1").arg(QString::fromStdString(problem)));
   return cells;

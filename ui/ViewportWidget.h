@@ -175,8 +175,11 @@ class ViewportWidget : public QWidget {
   /// Adaptive resolution is used for this frame: an interactive window, view.adaptive on, no
   /// presenter mode and no split view (whose halves are compared at full size).
   bool adaptiveActive() const;
-  /// Renders the view at full size now when its last frame was reduced (exports, grabs).
-  void renderFullSizeNow();
+  /// Renders the view at full size now when its last frame was reduced or is not of the view
+  /// as it is (exports, grabs), or `always`; waits for it.
+  void renderFullSizeNow(bool always = false);
+  /// A probe of the pixel under the mouse is on its way (scripts wait for it).
+  bool probePending() const { return probeWanted_ && probeAnswered_ < probeSerial_; }
 
   /// The zoom inset: `area` of the view (widget pixels) magnified by a whole factor,
   /// nearest neighbour, into the bottom-right corner; nothing: off. Ctrl+Shift+drag over the
@@ -397,12 +400,14 @@ class ViewportWidget : public QWidget {
   /// composite, the overshoot of the last tile, the event loop).
   static constexpr double kProgressiveShare = 0.5;
   std::uint64_t probesRead_ = 0;
-  std::uint64_t probeSerial_ = 0;  ///< the latest probe asked for (older answers are dropped)
+  std::uint64_t probeSerial_ = 0;
+  std::uint64_t probeAnswered_ = 0;  ///< the latest probe whose answer came back  ///< the latest probe asked for (older answers are dropped)
 
   // The frame loop: a wanted frame, the orders sent and the outcomes back.
   bool frameWanted_ = false;
   std::uint64_t ordersSent_ = 0;        ///< id of the last order submitted
-  std::uint64_t ordersDone_ = 0;        ///< id of the last outcome received (shown or stopped)
+  std::uint64_t ordersDone_ = 0;
+  std::uint64_t lastAppliedId_ = 0;  ///< the order whose frame is on screen        ///< id of the last outcome received (shown or stopped)
   std::uint64_t sentViewRevision_ = 0;  ///< view revision of the last order submitted
   std::uint64_t framesStopped_ = 0;     ///< orders stopped before they completed
   QTimer busyTimer_;                    ///< refreshes the busy note while a frame renders

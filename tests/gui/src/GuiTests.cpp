@@ -100,6 +100,7 @@ const std::vector<GuiTests::Test>& GuiTests::all() {
       {"adaptive-resolution", "[=DIR]",
        [](GuiTests& t, const QString& a) { return t.adaptiveResolution(a); }},
       {"no-freeze", "[=DIR]", [](GuiTests& t, const QString& a) { return t.noFreeze(a); }},
+      {"heartbeat", "[=DIR]", [](GuiTests& t, const QString& a) { return t.heartbeat(a); }},
       {"storage-click", "[=DIR]", [](GuiTests& t, const QString& a) { return t.storageClick(a); }},
       {"panels", "", [](GuiTests& t, const QString&) { return t.panelsFollowTechnique(); }},
       {"course", "[=DIR]", [](GuiTests& t, const QString& a) { return t.course(a); }},
@@ -255,7 +256,7 @@ bool GuiTests::omniProbe(const QString& dir) {
     QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::NoButton,
                      Qt::NoModifier);
     QCoreApplication::sendEvent(view, &move);
-    QCoreApplication::processEvents();
+    auto_.waitForProbe();
     const QJsonObject drawn = panel->drawnValues();
     const qreal dpr = view->devicePixelRatioF();
     const std::optional<sl::PixelProbe> p =
@@ -307,6 +308,7 @@ bool GuiTests::omniProbe(const QString& dir) {
       QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::NoButton,
                        Qt::NoModifier);
       QCoreApplication::sendEvent(view, &move);
+      auto_.waitForProbe();
     }
     auto_.waitForFrames(2);
     return auto_.viewReadouts().probesRead - before;

@@ -130,6 +130,11 @@ class GuiTests : public QObject {
   /// say "tile k of 256", a complete frame arrives, and it equals the one-call frame pixel
   /// for pixel with the same error (live vs synchronous). PNGs into DIR when given.
   bool noFreeze(const QString& dir);
+  /// heartbeat[=DIR] (GuiTestsHeartbeat.cpp): the UI thread never stalls while fvsm,
+  /// virtual-tiled and da-rtw render continuously, still and while the camera is dragged: a
+  /// 10 ms heartbeat timer's longest stall (gap minus interval) stays under 100 ms; the figures
+  /// are printed per technique and phase. PNGs of the busy view into DIR when given.
+  bool heartbeat(const QString& dir);
   /// storage-click[=DIR] (GuiTestsStorage.cpp): a click on the Storage factor panel's
   /// hemisphere moves the light to the direction there (the paper's Fig. 7 frame of this
   /// camera, from algo/partition), the status bar says so, the panel re-analyses with the

@@ -224,6 +224,8 @@ struct FrameReadback {
   /// The outside view's image (view.outside on: the third camera with the frusta drawn, what
   /// the host was shown); empty otherwise. Every other array is the main camera's.
   ImageRGBA8 outside;
+  /// The last frame was stopped (Renderer::setCancelFlag): nothing was read (size 0).
+  bool cancelled = false;
 };
 
 /// What the last frame's main camera saw at one pixel (Renderer::probePixel): the view's
@@ -315,6 +317,16 @@ class Renderer {
   /// target (the GUI's adaptive resolution); every target and readback stays width x height.
   std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer,
                                          int presentWidth, int presentHeight);
+  /// The host's stop flag (any thread may set it; null: never stopped). renderFrame reads it
+  /// between its steps and between a progressive resolve's units; once it is set the frame stops
+  /// there: renderFrame returns nothing, stats().cancelled is true and stats().complete() false.
+  /// A stopped frame is no measurement: readback() returns an empty frame and computeError()
+  /// throws. A flag already set when renderFrame starts stops it after its first step (the
+  /// G-buffer). The next frame renders what it would have after the stopped one had it
+  /// completed unseen: before its shadow passes nothing changed; after them a technique's
+  /// temporal state (DA-RTW's rotation, ASM's page cache) holds that frame's, and a progressive
+  /// resolve goes on from the units it did (or starts over when the view changed).
+  void setCancelFlag(const std::atomic<bool>* flag);
   /// Fills the target with the neutral background and renders nothing: no pass runs, no
   /// temporal state changes (a view too small to show anything).
   static void clearFrame(int width, int height, unsigned targetFramebuffer);
@@ -330,7 +342,8 @@ class Renderer {
   /// compare frameIndex with stats().frameIndex).
   const Publication& publication() const;
 
-  /// Reads the last frame back (positions, normals, hard mask, colour).
+  /// Reads the last frame back (positions, normals, hard mask, colour); an empty frame with
+  /// `cancelled` set when the last frame was stopped (setCancelFlag).
   FrameReadback readback() const;
   /// Reads only the last frame's shown colour image (the main camera's, or the outside
   /// view's while on), row 0 = top: the GUI's zoom inset.
@@ -338,7 +351,8 @@ class Renderer {
   /// Reads one pixel of the last frame (x right, y down from the top row; GL current):
   /// nothing before a frame or outside it. A few bytes: cheap enough for every mouse move.
   std::optional<PixelProbe> probePixel(int x, int y) const;
-  /// Exact reference for the last frame (Embree, cached per scene) and the error.
+  /// Exact reference for the last frame (Embree, cached per scene) and the error. Throws
+  /// std::runtime_error when the last frame was stopped (setCancelFlag): it is not a frame.
   struct ErrorResult {
     ShadowErrorStats stats;
     std::vector<std::uint8_t> referenceMask;

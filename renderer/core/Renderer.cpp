@@ -808,9 +808,11 @@ void resolveStep(RendererState& s, Frame& f) {
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
-  // A one-call resolve the flag stopped between units left a partial mask: not a previous
-  // frame to count the mask change against.
-  if (c.mainCamera) t.resolved = !(cancelRequested(s) && !s.frameProgress);
+  // A one-call deferred resolve the flag may have stopped between its units left a partial
+  // mask: not a previous frame to count the mask change against.
+  const bool maybeCut =
+      s.technique->resolveMode() == ResolveMode::Deferred && !s.frameProgress && cancelRequested(s);
+  if (c.mainCamera) t.resolved = !maybeCut;
 }
 
 /// The mask change (changed overlay, "mask.*"): the pixels whose hard test flipped since the
@@ -987,59 +989,73 @@ struct FrameStep {
   /// timed by the renderer (the technique times its own passes; the outside view is not timed).
   const char* timedPass;
   StepFailure failure;
+  /// The host's stop flag is read before the step. Not before the first (a frame stopped at
+  /// once still has its G-buffer) nor before the main resolve: the technique's maps of this
+  /// frame, and its temporal state, go with their resolve (a deferred resolve stops between
+  /// its units itself), so the next frame reads the targets of the frame the state is from.
+  bool stopsBefore;
   /// When it runs (null: every frame).
   bool (*when)(const RendererState&, const Frame&);
   void (*run)(RendererState&, Frame&);
 };
 
-/// Every step of a frame, in order. renderFrame walks it once; the host's stop flag is read
-/// before every step but the first (and between a resolve's units).
+/// Every step of a frame, in order. renderFrame walks it once, reading the host's stop flag
+/// before the steps that say so (and a deferred resolve between its units).
 constexpr FrameStep kFrameSteps[] = {
     {.name = "gbuffer",
      .timedPass = "gbuffer",
      .failure = StepFailure::Propagates,
+     .stopsBefore = false,
      .when = nullptr,
      .run = gbufferStep},
     {.name = "shadows",
      .timedPass = nullptr,
      .failure = StepFailure::NamesTechnique,
+     .stopsBefore = true,
      .when = nullptr,
      .run = shadowsStep},
     {.name = "keep previous mask",
      .timedPass = "resolve",
      .failure = StepFailure::NamesTechnique,
+     .stopsBefore = false,
      .when = [](const RendererState&,
                 const Frame& f) { return f.setup.countMaskChange && f.setup.hadMask; },
      .run = keepPreviousMaskStep},
     {.name = "resolve",
      .timedPass = "resolve",
      .failure = StepFailure::NamesTechnique,
+     .stopsBefore = false,
      .when = nullptr,
      .run = resolveStep},
     {.name = "mask change",
      .timedPass = "resolve",
      .failure = StepFailure::NamesTechnique,
+     .stopsBefore = true,
      .when = [](const RendererState&, const Frame& f) { return f.setup.countMaskChange; },
      .run = maskChangeStep},
     {.name = "aliasing statistics",
      .timedPass = "resolve",
      .failure = StepFailure::NamesTechnique,
+     .stopsBefore = true,
      .when = [](const RendererState& s,
                 const Frame& f) { return f.setup.publishing && wantsAliasingStats(s.publication); },
      .run = [](RendererState& s, Frame&) { publishAliasingStats(s); }},
     {.name = "composite",
      .timedPass = "composite",
      .failure = StepFailure::Propagates,
+     .stopsBefore = true,
      .when = nullptr,
      .run = compositeStep},
     {.name = "outside view",
      .timedPass = nullptr,
      .failure = StepFailure::NamesOutsideView,
+     .stopsBefore = true,
      .when = [](const RendererState&, const Frame& f) { return f.setup.showOutsideView; },
      .run = outsideViewStep},
     {.name = "present",
      .timedPass = nullptr,
      .failure = StepFailure::Propagates,
+     .stopsBefore = true,
      .when = nullptr,
      .run = presentStep},
 };
@@ -1182,15 +1198,13 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     if (pass) s.timer->begin(pass);
     openPass = pass;
   };
-  bool first = true;
   for (const FrameStep& step : kFrameSteps) {
-    if (!first && cancelRequested(s)) {
+    if (step.stopsBefore && cancelRequested(s)) {
       enterPass(nullptr);
       s.lastFrameCancelled = true;
       fillStats(s, f, /*cancelled=*/true);
       return std::nullopt;
     }
-    first = false;
     if (step.when && !step.when(s, f)) continue;
     enterPass(step.timedPass);
     if (step.failure == StepFailure::Propagates) {

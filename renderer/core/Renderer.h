@@ -322,10 +322,12 @@ class Renderer {
   /// there: renderFrame returns nothing, stats().cancelled is true and stats().complete() false.
   /// A stopped frame is no measurement: readback() returns an empty frame and computeError()
   /// throws. A flag already set when renderFrame starts stops it after its first step (the
-  /// G-buffer). The next frame renders what it would have after the stopped one had it
-  /// completed unseen: before its shadow passes nothing changed; after them a technique's
-  /// temporal state (DA-RTW's rotation, ASM's page cache) holds that frame's, and a progressive
-  /// resolve goes on from the units it did (or starts over when the view changed).
+  /// G-buffer). The shadow passes and the main resolve they feed go together (the flag is not
+  /// read between them; a deferred resolve reads it between its units, one-call or progressive).
+  /// The next frame is what it would have been had the stopped frame completed unseen: stopped
+  /// before its shadow passes, nothing changed; after them, a technique's temporal state
+  /// (DA-RTW's rotation, ASM's page cache) holds that frame's, as do the resolve targets it
+  /// reads; a progressive resolve goes on from the units done (or starts over for a new view).
   void setCancelFlag(const std::atomic<bool>* flag);
   /// Fills the target with the neutral background and renders nothing: no pass runs, no
   /// temporal state changes (a view too small to show anything).

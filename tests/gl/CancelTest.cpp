@@ -3,6 +3,7 @@
 // never measured (readback empty, computeError refuses), and leaves nothing behind that would
 // change the next frame: that frame is byte for byte the frame of a renderer that never saw
 // the stopped one.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <thread>
 
 #include "GlTestEnv.h"
+#include "core/Technique.h"
 
 namespace sl {
 namespace {
@@ -24,6 +26,55 @@ std::string sceneFor(const TechniqueInfo& info) {
 void slowVirtualTiled(Renderer& r, int tileResolution = 1024) {
   ASSERT_FALSE(r.params().set("tiles", 4));
   ASSERT_FALSE(r.params().set("tile.resolution", tileResolution));
+}
+
+/// Armed: the flag a StopAfterShadows technique sets right after its shadow passes.
+std::atomic<bool>* gStopAfterShadows = nullptr;
+
+/// A built-in technique that sets gStopAfterShadows once its shadow passes are done: a frame
+/// stopped exactly between its shadows and the rest.
+class StopAfterShadows : public Technique {
+ public:
+  explicit StopAfterShadows(std::unique_ptr<Technique> inner) : inner_(std::move(inner)) {}
+  void renderShadows(FrameContext& ctx) override {
+    inner_->renderShadows(ctx);
+    if (gStopAfterShadows) *gStopAfterShadows = true;
+  }
+  ResolveMode resolveMode() const override { return inner_->resolveMode(); }
+  std::string lookupShader() const override { return inner_->lookupShader(); }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override {
+    inner_->bindLookup(resolve, firstUnit);
+  }
+  void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override {
+    inner_->resolveDeferred(targets, params);
+  }
+  std::vector<const gl::Program*> programs() const override { return inner_->programs(); }
+  MemoryStats memory() const override { return inner_->memory(); }
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
+    return inner_->reloadShaders(lib);
+  }
+  void resetTemporalState() override { inner_->resetTemporalState(); }
+  std::vector<int> pageGrid() const override { return inner_->pageGrid(); }
+
+ private:
+  std::unique_ptr<Technique> inner_;
+};
+
+const TechniqueEntry& builtInEntry(std::string_view id) {
+  for (const TechniqueEntry& e : techniqueRegistry())
+    if (e.info.id == id) return e;
+  throw std::logic_error("no built-in technique " + std::string(id));
+}
+
+/// da-rtw as "test-da-rtw-stop", stopping its frame after the shadows while armed.
+TechniqueEntry daRtwStoppingAfterShadows() {
+  TechniqueEntry e;
+  e.info = builtInEntry("da-rtw").info;
+  e.info.id = "test-da-rtw-stop";
+  e.create = [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
+    return std::make_unique<StopAfterShadows>(builtInEntry("da-rtw").create(lib));
+  };
+  return e;
 }
 
 int countScopes(const FrameStats& stats, const std::string& name) {
@@ -195,6 +246,52 @@ TEST(Cancel, NextFrameEqualsAFreshRenderersFrame) {
       EXPECT_EQ(mid.hardMask, fresh.hardMask);
     }
   }
+}
+
+/// A frame stopped right after its shadow passes (DA-RTW, with the shadow-edge term reading the
+/// previous frame's mask): its resolve still ran, so the next frame is the one that follows the
+/// stopped frame had it completed unseen, byte for byte — the rotation and the mask it reads
+/// are that frame's.
+TEST(Cancel, StoppedAfterTheShadowsTheNextFrameFollowsThatFrame) {
+  RendererOptions options;
+  options.extraTechniques = {daRtwStoppingAfterShadows()};
+  const auto run = [&](bool stopB) {
+    auto r = test::makeRenderer("diagonal", "test-da-rtw-stop", options);
+    EXPECT_TRUE(r);
+    if (!r) return FrameReadback{};
+    EXPECT_FALSE(r->params().set("importance.edge", 1));
+    std::atomic<bool> stop{false};
+    r->setCancelFlag(&stop);
+    const Camera first = r->camera();
+    Camera second = first, moved = first;
+    second.orbit(10.0f, 5.0f);
+    moved.orbit(-25.0f, 8.0f);
+    for (const Camera& c : {first, second, second}) {
+      r->setCamera(c);
+      EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    }
+    r->setCamera(moved);
+    gStopAfterShadows = stopB ? &stop : nullptr;
+    EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    gStopAfterShadows = nullptr;
+    EXPECT_EQ(r->stats().cancelled, stopB);
+    if (stopB) {
+      const std::vector<std::string>& opened = r->stats().passOrder;
+      EXPECT_NE(std::find(opened.begin(), opened.end(), "resolve"), opened.end());
+      EXPECT_EQ(std::find(opened.begin(), opened.end(), "composite"), opened.end());
+    }
+    stop = false;
+    r->setCamera(second);
+    EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    EXPECT_TRUE(r->stats().complete());
+    test::expectNoGlErrors(*r);
+    return r->readback();
+  };
+  const FrameReadback unseen = run(true), shown = run(false);
+  ASSERT_FALSE(shown.color.pixels.empty());
+  EXPECT_EQ(unseen.color.pixels, shown.color.pixels);
+  EXPECT_EQ(unseen.hardMask, shown.hardMask);
+  EXPECT_EQ(unseen.aliasing, shown.aliasing);
 }
 
 /// A progressive resolve stopped between its units (or before its resolve) goes on where it

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <span>
 #include <stdexcept>
+#include <utility>
 
 #include "common/shared_constants.h"
 #include "core/LightBinding.h"
@@ -1165,8 +1166,9 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
   s.lastFrameOutside = false;
   s.timer->beginFrame();
   const bool publishing = !s.requested.empty();
+  Publication lastComplete;  // the publication a stopped frame leaves in place
   if (publishing) {
-    s.publication = Publication{};
+    lastComplete = std::exchange(s.publication, Publication{});
     s.publication.frameIndex = s.frameIndex;
     s.publication.techniqueId = s.techniqueId;
     s.publication.requested = s.requested;
@@ -1203,6 +1205,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
       enterPass(nullptr);
       s.lastFrameCancelled = true;
       fillStats(s, f, /*cancelled=*/true);
+      if (publishing) s.publication = std::move(lastComplete);  // not a frame's publication
       return std::nullopt;
     }
     if (step.when && !step.when(s, f)) continue;
@@ -1339,6 +1342,7 @@ Renderer::ReferenceSnapshot Renderer::snapshotForReference() const {
 
 std::optional<Renderer::ErrorResult> Renderer::traceReference(ReferenceSnapshot snap,
                                                               const std::atomic<bool>* cancelled) {
+  if (snap.frame.cancelled) return std::nullopt;  // a stopped frame is not measured
   ErrorResult res;
   res.frame = std::move(snap.frame);
   if (!snap.reference) return res;

@@ -320,8 +320,9 @@ class Renderer {
   /// The host's stop flag (any thread may set it; null: never stopped). renderFrame reads it
   /// between its steps and between a progressive resolve's units; once it is set the frame stops
   /// there: renderFrame returns nothing, stats().cancelled is true and stats().complete() false.
-  /// A stopped frame is no measurement: readback() returns an empty frame and computeError()
-  /// throws. A flag already set when renderFrame starts stops it after its first step (the
+  /// A stopped frame is no measurement: readback() returns an empty frame, computeError()
+  /// throws, traceReference() returns nothing and publication() stays the last complete
+  /// frame's. A flag already set when renderFrame starts stops it after its first step (the
   /// G-buffer). The shadow passes and the main resolve they feed go together (the flag is not
   /// read between them; a deferred resolve reads it between its units, one-call or progressive).
   /// The next frame is what it would have been had the stopped frame completed unseen: stopped
@@ -366,9 +367,9 @@ class Renderer {
   /// frame back (GL current) with the light, the scene's Embree scene (shared: it outlives
   /// a scene change) and what the frame showed; `traceReference` traces and compares it
   /// without GL on any thread, returning nothing once `cancelled` became true (checked
-  /// between bands of rows); `setReferenceMask` (GL current) keeps the mask for the error
-  /// overlay, which draws it only while frames show the same `frameSignature` — false when
-  /// the frame size changed since.
+  /// between bands of rows) or when the snapshot's frame was stopped (setCancelFlag);
+  /// `setReferenceMask` (GL current) keeps the mask for the error overlay, which draws it only
+  /// while frames show the same `frameSignature` — false when the frame size changed since.
   struct ReferenceSnapshot {
     FrameReadback frame;
     Light light;

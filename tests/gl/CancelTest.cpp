@@ -111,14 +111,25 @@ TEST(Cancel, FlagSetBeforeTheFrameStopsAfterTheFirstStep) {
 }
 
 /// The flag is read again each frame: cleared, the next frame is complete; a null flag never
-/// stops one.
+/// stops one. A stopped frame's publication and reference are not offered as a frame's.
 TEST(Cancel, ClearedFlagRendersCompleteFramesAgain) {
   auto r = test::makeRenderer("plane-box", "uniform");
   ASSERT_TRUE(r);
+  r->requestPublications({"camera.*"});
+  ASSERT_FALSE(r->renderFrame(64, 48, 0));
+  const std::uint64_t completeFrame = r->stats().frameIndex;
+  ASSERT_EQ(r->publication().frameIndex, completeFrame);
+  ASSERT_FALSE(r->publication().numbers.empty());
   std::atomic<bool> stop{true};
   r->setCancelFlag(&stop);
   ASSERT_FALSE(r->renderFrame(64, 48, 0));
   ASSERT_TRUE(r->stats().cancelled);
+  EXPECT_GT(r->stats().frameIndex, completeFrame);
+  EXPECT_EQ(r->publication().frameIndex, completeFrame) << "the last complete frame's";
+  EXPECT_FALSE(r->publication().numbers.empty());
+  Renderer::ReferenceSnapshot snap = r->snapshotForReference();
+  EXPECT_TRUE(snap.frame.cancelled);
+  EXPECT_FALSE(Renderer::traceReference(std::move(snap)));
   stop = false;
   ASSERT_FALSE(r->renderFrame(64, 48, 0));
   EXPECT_FALSE(r->stats().cancelled);

@@ -33,7 +33,7 @@ void EyeDepthBuffer::update(const gl::Texture& gPosition, int width, int height,
 }
 
 void EyeDepthBuffer::updateForResolve(const ResolveTargets& t) {
-  if (!t.mainCamera) update(t.gPosition, t.width, t.height, t.cameraView, t.cameraProj);
+  if (!t.mainCamera) update(t.gbuffer.position, t.width, t.height, t.cameraView, t.cameraProj);
 }
 
 PassDecl EyeDepthBuffer::passDecl() {

@@ -100,10 +100,12 @@ struct FrameStats {
     int unitsPerTile = 1;       ///< units (bands) per tile: tiles done = done / unitsPerTile
   };
   std::optional<Progress> progress;
-  /// False while the view shows a partial progressive result (metrics and error wait).
-  bool complete() const { return !cancelled && (!progress || progress->shownComplete); }
-  /// The host stopped the frame (Renderer::setCancelFlag): nothing of it is a measurement.
+  /// The host's stop flag stopped this frame between its steps (Renderer::setCancelFlag): the
+  /// stats hold what ran (no measurement), and nothing was presented. Reset every frame.
   bool cancelled = false;
+  /// False while the view shows a partial progressive result or the frame was cancelled
+  /// (metrics and error wait).
+  bool complete() const { return !cancelled && (!progress || progress->shownComplete); }
   double passMs(const std::string& name) const;
 };
 

@@ -56,8 +56,8 @@ void PartitionMStats::update(FrameContext& ctx, int maps) {
   program_.use();
   program_.set("u_size", glm::ivec2(ctx.width, ctx.height));
   program_.set("u_maps", maps);
-  glBindTextureUnit(SL_UNIT_ALIASING, ctx.prevAliasing.id());
-  glBindTextureUnit(SL_UNIT_MAP_INDEX, ctx.prevMapIndex.id());
+  glBindTextureUnit(SL_UNIT_ALIASING, ctx.previous.aliasing.id());
+  glBindTextureUnit(SL_UNIT_MAP_INDEX, ctx.previous.mapIndex.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_CASCADE_BUFFER_M_STATS, stats_.id());
   glDispatchCompute(GLuint((ctx.width + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP),
                     GLuint((ctx.height + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP), 1);

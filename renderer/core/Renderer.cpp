@@ -1,6 +1,7 @@
-// The flow of one frame (docs/ARCHITECTURE.md): G-buffer from the camera -> the
-// technique's shadow passes -> resolve (hard mask + filtered visibility) -> composite ->
-// blit to the host's framebuffer. Only this file and the techniques call OpenGL.
+// The flow of one frame (docs/ARCHITECTURE.md), declared once as a list of steps
+// (kFrameSteps): G-buffer from the camera -> the technique's shadow passes -> resolve (hard
+// mask + filtered visibility) -> mask change -> composite -> outside view -> blit to the
+// host's framebuffer. Only this file and the techniques call OpenGL.
 #include "core/Renderer.h"
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <mutex>
 #include <span>
 #include <stdexcept>
+#include <utility>
 
 #include "common/shared_constants.h"
 #include "core/LightBinding.h"
@@ -199,11 +201,14 @@ struct RendererState {
   /// units the main targets hold, the next unit and their number, whether a whole pass of
   /// that view has finished, and this call's progress (for FrameStats).
   double progressiveBudgetMs = 0.0;
-  const std::atomic<bool>* cancel = nullptr;  ///< setCancelFlag
   std::string progressSignature;
   int progressNext = 0, progressTotal = 0;
   bool progressShownComplete = false;
   std::optional<FrameStats::Progress> frameProgress;
+  /// The host's stop flag (Renderer::setCancelFlag; null: never stopped) and whether it
+  /// stopped the last frame (readback and computeError then refuse to measure it).
+  const std::atomic<bool>* cancelFlag = nullptr;
+  bool lastFrameCancelled = false;
 
   const gl::Program& resolveProgramFor(const std::string& lookup) {
     auto it = resolvePrograms.find(lookup);
@@ -268,15 +273,18 @@ struct RendererState {
 };
 
 void ResolveTargets::bindForCompute() const {
-  glBindTextureUnit(SL_UNIT_G_POSITION, gPosition.id());
-  glBindTextureUnit(SL_UNIT_G_NORMAL, gNormal.id());
-  glBindImageTexture(SL_IMAGE_RESOLVE_HARD, hard.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
-  glBindImageTexture(SL_IMAGE_RESOLVE_FILTERED, filtered.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                     GL_R8);
-  glBindImageTexture(SL_IMAGE_RESOLVE_ALIASING, aliasing.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                     GL_R32F);
-  glBindImageTexture(SL_IMAGE_RESOLVE_TEXEL, texel.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-  glBindImageTexture(SL_IMAGE_RESOLVE_MAP, mapIndex.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+  glBindTextureUnit(SL_UNIT_G_POSITION, gbuffer.position.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, gbuffer.normal.id());
+  glBindImageTexture(SL_IMAGE_RESOLVE_HARD, outputs.hard.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     GL_R8UI);
+  glBindImageTexture(SL_IMAGE_RESOLVE_FILTERED, outputs.filtered.id(), 0, GL_FALSE, 0,
+                     GL_WRITE_ONLY, GL_R8);
+  glBindImageTexture(SL_IMAGE_RESOLVE_ALIASING, outputs.aliasing.id(), 0, GL_FALSE, 0,
+                     GL_WRITE_ONLY, GL_R32F);
+  glBindImageTexture(SL_IMAGE_RESOLVE_TEXEL, outputs.texel.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     GL_RG32F);
+  glBindImageTexture(SL_IMAGE_RESOLVE_MAP, outputs.mapIndex.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     GL_R8UI);
 }
 
 namespace {
@@ -524,10 +532,6 @@ void Renderer::setProgressiveBudget(double ms) {
   if (ms <= 0.0) s_->progressSignature.clear();
 }
 
-void Renderer::setCancelFlag(const std::atomic<bool>* flag) {
-  s_->cancel = flag;
-}
-
 double Renderer::progressiveBudget() const {
   return s_->progressiveBudgetMs;
 }
@@ -629,8 +633,53 @@ FrameStats::MaskChangeCount countMaskChange(RendererState& s, const Targets& t) 
   return {counts[0], counts[1]};
 }
 
-/// The G-buffer pass into `t` from a camera (the main one, or the outside view's).
-void drawGBuffer(RendererState& s, Targets& t, const glm::mat4& viewProj, const glm::vec3& eye) {
+/// One camera's way through the G-buffer, resolve and composite steps: the main camera's
+/// (timed, measured) or the outside view's (view.outside: untimed, read by no metric).
+struct CameraPass {
+  Targets& targets;
+  glm::mat4 view{1.0f}, proj{1.0f};
+  glm::vec3 eye{0.0f};
+  bool mainCamera = true;
+};
+
+/// What renderFrame was asked for and what follows from it before the first step.
+struct FrameSetup {
+  int width = 0, height = 0;                ///< internal size: targets, readback, metrics
+  int presentWidth = 0, presentHeight = 0;  ///< what the host's framebuffer shows it at
+  unsigned hostFramebuffer = 0;             ///< 0: the default (none on surfaceless EGL)
+  float aspect = 1.0f;
+  bool publishing = false;       ///< publications requested this frame
+  bool countMaskChange = false;  ///< the changed overlay or a "mask.*" key is on
+  bool hadMask = false;          ///< the hard mask holds a previous frame's at this size
+  bool showOutsideView = false;  ///< view.outside
+};
+
+/// What the steps hand on to later steps and to FrameStats.
+struct FrameResults {
+  FrameOutlines outlines;  ///< what the outside view draws (the technique adds its frusta)
+  std::optional<FrameStats::MaskChangeCount> maskChange;
+  std::optional<Camera> outsideCamera;
+};
+
+/// One frame while its steps run: the setup, the camera the per-camera steps draw (the main
+/// one, or the outside view's while its step runs), and the results so far.
+struct Frame {
+  const FrameSetup setup;
+  CameraPass mainCamera;
+  CameraPass* camera = nullptr;
+  FrameResults results;
+};
+
+bool cancelRequested(const RendererState& s) {
+  return s.cancelFlag && s.cancelFlag->load(std::memory_order_relaxed);
+}
+
+// --- The steps. Each reads the frame's setup and results and the renderer's state.
+
+/// G-buffer of the frame's camera: world position (w = covered), normal, albedo, depth.
+void gbufferStep(RendererState& s, Frame& f) {
+  const CameraPass& c = *f.camera;
+  Targets& t = c.targets;
   glBindFramebuffer(GL_FRAMEBUFFER, t.gbuffer.id());
   glViewport(0, 0, t.width, t.height);
   glEnable(GL_DEPTH_TEST);
@@ -642,15 +691,77 @@ void drawGBuffer(RendererState& s, Targets& t, const glm::mat4& viewProj, const 
   for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(t.gbuffer.id(), GL_COLOR, i, zero);
   glClearNamedFramebufferfv(t.gbuffer.id(), GL_DEPTH, 0, &one);
   s.gbufferProgram.use();
-  s.gbufferProgram.set("u_viewProj", viewProj);
-  s.gbufferProgram.set("u_cameraPos", eye);
+  s.gbufferProgram.set("u_viewProj", c.proj * c.view);
+  s.gbufferProgram.set("u_cameraPos", c.eye);
   s.sceneGpu->draw(s.gbufferProgram, SL_UNIT_MATERIAL);
 }
 
-/// The resolve of `t`'s G-buffer into its targets with the technique's maps (lookup or
-/// deferred), as they were built this frame.
-void resolveInto(RendererState& s, Targets& t, bool mainCamera, const glm::mat4& view,
-                 const glm::mat4& proj) {
+/// The technique's shadow passes (its own timer scopes), its parameters bound to its programs
+/// from their declarations first.
+void shadowsStep(RendererState& s, Frame& f) {
+  const ParamSet& params = paramsFor(s, s.techniqueId);
+  const FrameSetup& setup = f.setup;
+  const Targets& t = f.mainCamera.targets;
+  FrameContext ctx{
+      .scene = *s.scene,
+      .sceneGpu = *s.sceneGpu,
+      .camera = s.camera,
+      .aspect = setup.aspect,
+      .cameraView = f.mainCamera.view,
+      .cameraProj = f.mainCamera.proj,
+      .light = s.light,
+      .width = setup.width,
+      .height = setup.height,
+      .gbuffer = {.position = t.position, .normal = t.normal},
+      .previous = {.hard = t.hard, .aliasing = t.aliasing, .mapIndex = t.mapIndex},
+      .params = params,
+      .timer = *s.timer,
+      .shaders = s.shaders,
+      .frameIndex = s.frameIndex,
+      .publication = setup.publishing ? &s.publication : nullptr,
+      .outlines = &f.results.outlines,
+  };
+  for (const gl::Program* p : s.technique->programs()) bindParams(*p, params);
+  s.technique->renderShadows(ctx);
+}
+
+/// Before the main resolve overwrites it: the previous frame's hard mask, for the mask change.
+void keepPreviousMaskStep(RendererState&, Frame& f) {
+  const Targets& t = f.mainCamera.targets;
+  glCopyImageSubData(t.hard.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.prevHard.id(), GL_TEXTURE_2D, 0, 0,
+                     0, 0, t.width, t.height, 1);
+}
+
+/// The main camera's progressive resolve (ResolveProgress): where it goes on, and afterwards
+/// what the renderer keeps of it between calls and shows in FrameStats::progress.
+void beginProgress(RendererState& s, ResolveProgress& progress) {
+  progress.budgetMs = s.progressiveBudgetMs;
+  progress.resume = s.progressSignature == s.frameSignature && s.progressTotal > 0;
+  progress.next = progress.resume && s.progressNext < s.progressTotal ? s.progressNext : 0;
+  if (!progress.resume) s.progressShownComplete = false;
+  s.progressSignature.clear();  // until this call's units are done
+}
+void endProgress(RendererState& s, const ResolveProgress& progress) {
+  if (progress.total <= 0) return;
+  s.progressSignature = s.frameSignature;
+  s.progressNext = progress.next;
+  s.progressTotal = progress.total;
+  const bool done = progress.next >= progress.total;
+  if (done) s.progressShownComplete = true;
+  s.frameProgress = FrameStats::Progress{.done = std::min(progress.next, progress.total),
+                                         .total = progress.total,
+                                         .shownComplete = s.progressShownComplete,
+                                         .completedNow = done,
+                                         .spentMs = progress.spentMs,
+                                         .unitsPerTile = std::max(1, progress.unitsPerTile)};
+}
+
+/// Resolve of the frame's camera's G-buffer with the technique's maps as this frame built
+/// them (lookup pass or deferred): hard mask, filtered visibility, aliasing m, selected map
+/// and its uv per pixel.
+void resolveStep(RendererState& s, Frame& f) {
+  const CameraPass& c = *f.camera;
+  Targets& t = c.targets;
   const ParamSet& params = paramsFor(s, s.techniqueId);
   glBindFramebuffer(GL_FRAMEBUFFER, t.resolve.id());
   glViewport(0, 0, t.width, t.height);
@@ -668,60 +779,70 @@ void resolveInto(RendererState& s, Targets& t, bool mainCamera, const glm::mat4&
   } else {
     // A progressive resolve continues the view the targets hold (the main camera only).
     ResolveProgress progress;
-    const bool progressive = mainCamera && s.progressiveBudgetMs > 0.0;
-    if (progressive) {
-      progress.budgetMs = s.progressiveBudgetMs;
-      progress.resume = s.progressSignature == s.frameSignature && s.progressTotal > 0;
-      progress.next = progress.resume && s.progressNext < s.progressTotal ? s.progressNext : 0;
-      if (!progress.resume) s.progressShownComplete = false;
-      s.progressSignature.clear();  // until this call's units are done
-    }
+    const bool progressive = c.mainCamera && s.progressiveBudgetMs > 0.0;
+    if (progressive) beginProgress(s, progress);
     // Map 0 for every pixel unless the technique writes its selection.
     const GLuint zero = 0;
     if (!progress.resume)
       glClearTexImage(t.mapIndex.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    const ResolveTargets targets{t.width,
-                                 t.height,
-                                 t.position,
-                                 t.normal,
-                                 t.hard,
-                                 t.filtered,
-                                 t.aliasing,
-                                 t.texel,
-                                 t.mapIndex,
-                                 t.resolve.id(),
-                                 s.light,
-                                 s.sceneGpu.get(),
-                                 mainCamera ? s.timer.get() : nullptr,
-                                 mainCamera,
-                                 progressive ? &progress : nullptr,
-                                 view,
-                                 proj};
+    const ResolveTargets targets{
+        .width = t.width,
+        .height = t.height,
+        .gbuffer = {.position = t.position, .normal = t.normal},
+        .outputs = {.hard = t.hard,
+                    .filtered = t.filtered,
+                    .aliasing = t.aliasing,
+                    .texel = t.texel,
+                    .mapIndex = t.mapIndex},
+        .framebuffer = t.resolve.id(),
+        .light = s.light,
+        .sceneGpu = s.sceneGpu.get(),
+        .timer = c.mainCamera ? s.timer.get() : nullptr,
+        .mainCamera = c.mainCamera,
+        .progress = progressive ? &progress : nullptr,
+        .cancel = s.cancelFlag,
+        .cameraView = c.view,
+        .cameraProj = c.proj,
+    };
     s.technique->resolveDeferred(targets, params);
-    if (progressive && progress.total > 0) {
-      s.progressSignature = s.frameSignature;
-      s.progressNext = progress.next;
-      s.progressTotal = progress.total;
-      const bool done = progress.next >= progress.total;
-      if (done) s.progressShownComplete = true;
-      s.frameProgress = FrameStats::Progress{std::min(progress.next, progress.total),
-                                             progress.total,
-                                             s.progressShownComplete,
-                                             done,
-                                             progress.spentMs,
-                                             std::max(1, progress.unitsPerTile)};
-    }
+    if (progressive) endProgress(s, progress);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
+  // A one-call deferred resolve the flag may have stopped between its units left a partial
+  // mask: not a previous frame to count the mask change against.
+  const bool maybeCut =
+      s.technique->resolveMode() == ResolveMode::Deferred && !s.frameProgress && cancelRequested(s);
+  if (c.mainCamera) t.resolved = !maybeCut;
 }
 
-/// Shading of `t` seen from `eye`, with the view.overlay; the error overlay only when
-/// `referenceMatches` (a reference of this exact view was computed); the aliasing overlay
-/// only when `mainCamera` (m is a footprint in the main camera's pixels: the outside view's
-/// own derivatives would show m for a camera that is not measured).
-void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool referenceMatches,
-                   bool mainCamera) {
+/// The mask change (changed overlay, "mask.*"): the pixels whose hard test flipped since the
+/// previous frame; on the first frame of a size the copy makes the overlay empty.
+void maskChangeStep(RendererState& s, Frame& f) {
+  const Targets& t = f.mainCamera.targets;
+  if (!f.setup.hadMask) {
+    keepPreviousMaskStep(s, f);
+    return;
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  const FrameStats::MaskChangeCount count = countMaskChange(s, t);
+  f.results.maskChange = count;
+  Publication& pub = s.publication;
+  if (!f.setup.publishing) return;
+  const bool changed = pub.wants("mask.changed_pixels"),
+             compared = pub.wants("mask.compared_pixels");
+  if (changed || compared) pub.readbackBytes += 2 * sizeof(std::uint32_t);  // the two counters
+  if (changed) pub.numbers["mask.changed_pixels"] = double(count.changed);
+  if (compared) pub.numbers["mask.compared_pixels"] = double(count.compared);
+}
+
+/// Shading of the frame's camera with the view.overlay: the error overlay only for the main
+/// camera of a whole frame whose exact view has a reference; the aliasing and changed
+/// overlays only for the main camera (the outside view's own derivatives would show m for a
+/// camera that is not measured).
+void compositeStep(RendererState& s, Frame& f) {
+  const CameraPass& cam = *f.camera;
+  const Targets& t = cam.targets;
   glBindFramebuffer(GL_FRAMEBUFFER, t.composite.id());
   glViewport(0, 0, t.width, t.height);
   const gl::Program& c = s.compositeProgram;
@@ -738,7 +859,7 @@ void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool refe
   glBindTextureUnit(SL_UNIT_MAP_INDEX, t.mapIndex.id());
   glBindTextureUnit(SL_UNIT_PREV_HARD, t.prevHard.id());
   bindLight(c, s.light);
-  c.set("u_cameraPos", eye);
+  c.set("u_cameraPos", cam.eye);
   bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
   const int overlay = s.rendererParams.getInt("view.overlay");
   // The pages overlay's page grid per selectable map (none: 0), read by that overlay only:
@@ -749,40 +870,24 @@ void compositeInto(RendererState& s, Targets& t, const glm::vec3& eye, bool refe
       c.set(("u_pageCells[" + std::to_string(i) + "]").c_str(),
             i < int(grid.size()) ? grid[std::size_t(i)] : 0);
   }
+  // A partial progressive frame draws no error pixels: its reference is of the whole frame.
+  const bool shownComplete = !s.frameProgress || s.frameProgress->shownComplete;
+  const bool referenceMatches =
+      cam.mainCamera && shownComplete && s.referenceSignature == s.frameSignature;
   if (overlay == SL_OVERLAY_ERROR && !referenceMatches)
     c.set("u_overlay", SL_OVERLAY_NONE);  // no reference of this exact view
-  if ((overlay == SL_OVERLAY_ALIASING || overlay == SL_OVERLAY_CHANGED) && !mainCamera)
+  if ((overlay == SL_OVERLAY_ALIASING || overlay == SL_OVERLAY_CHANGED) && !cam.mainCamera)
     c.set("u_overlay", SL_OVERLAY_NONE);  // m and the mask change of the main camera only
   glBindVertexArray(s.emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
 }
 
-/// The outside view (view.outside) into s.outsideTargets: G-buffer from the third camera,
-/// the technique's resolve with this frame's maps, shading (the warp-grid and partition
-/// overlays, not the error and aliasing ones: they measure the main camera's pixels), then
-/// the outline segments as lines two pixels wide, on top (no depth test: a frustum is never
-/// hidden by the scene).
-Camera renderOutsideView(RendererState& s, int width, int height, float aspect,
-                         const FrameOutlines& outlines) {
-  const ParamSet& p = s.rendererParams;
-  const std::vector<OutlineSegment> segments =
-      outlineSegments(s.camera, aspect, s.scene->bounds, outlines);
-  OutsideViewSettings settings;
-  settings.azimuthDeg = float(p.get("view.outside.azimuth_deg"));
-  settings.elevationDeg = float(p.get("view.outside.elevation_deg"));
-  settings.zoom = float(p.get("view.outside.zoom"));
-  const Camera cam = fitOutsideCamera(s.camera, aspect, segments, settings);
-  if (auto err = cam.validate()) throw std::runtime_error(*err);
-  const glm::mat4 viewProj = cam.projection(aspect) * cam.view();
-
-  s.ensureOutsideTargets(width, height);
-  Targets& o = s.outsideTargets;
-  drawGBuffer(s, o, viewProj, cam.position);
-  resolveInto(s, o, /*mainCamera=*/false, cam.view(), cam.projection(aspect));
-  compositeInto(s, o, cam.position, false, /*mainCamera=*/false);
-
-  if (segments.empty()) return cam;
+/// The outline segments as lines two pixels wide over `t`'s composite, on top (no depth
+/// test: a frustum is never hidden by the scene).
+void drawOutlines(RendererState& s, const Targets& t, const glm::mat4& viewProj,
+                  const std::vector<OutlineSegment>& segments) {
+  if (segments.empty()) return;
   struct Vertex {
     glm::vec3 position, colour;
   };
@@ -803,21 +908,212 @@ Camera renderOutsideView(RendererState& s, int width, int height, float aspect,
   glVertexArrayAttribBinding(vao.id(), 0, 0);
   glVertexArrayAttribBinding(vao.id(), 1, 0);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, o.composite.id());
-  glViewport(0, 0, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.composite.id());
+  glViewport(0, 0, t.width, t.height);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   s.outlineProgram.use();
   s.outlineProgram.set("u_viewProj", viewProj);
   glBindVertexArray(vao.id());
-  const glm::vec2 pixel(2.0f / float(width), 2.0f / float(height));
+  const glm::vec2 pixel(2.0f / float(t.width), 2.0f / float(t.height));
   for (const glm::vec2 offset :
        {glm::vec2(0.0f), glm::vec2(pixel.x, 0.0f), glm::vec2(0.0f, pixel.y)}) {
     s.outlineProgram.set("u_pixelOffset", offset);
     glDrawArrays(GL_LINES, 0, GLsizei(vertices.size()));
   }
   glBindVertexArray(0);
-  return cam;
+}
+
+/// The outside view (view.outside) into s.outsideTargets: the G-buffer, resolve and composite
+/// steps again with a third camera placed around the frusta the technique outlined (the
+/// warp-grid and partition overlays, not the error and aliasing ones), then the outlines.
+/// The main camera's targets stay what every metric reads.
+void outsideViewStep(RendererState& s, Frame& f) {
+  const FrameSetup& setup = f.setup;
+  const ParamSet& p = s.rendererParams;
+  const std::vector<OutlineSegment> segments =
+      outlineSegments(s.camera, setup.aspect, s.scene->bounds, f.results.outlines);
+  const OutsideViewSettings settings{
+      .azimuthDeg = float(p.get("view.outside.azimuth_deg")),
+      .elevationDeg = float(p.get("view.outside.elevation_deg")),
+      .zoom = float(p.get("view.outside.zoom")),
+  };
+  const Camera cam = fitOutsideCamera(s.camera, setup.aspect, segments, settings);
+  if (auto err = cam.validate()) throw std::runtime_error(*err);
+  s.ensureOutsideTargets(setup.width, setup.height);
+  CameraPass outside{.targets = s.outsideTargets,
+                     .view = cam.view(),
+                     .proj = cam.projection(setup.aspect),
+                     .eye = cam.position,
+                     .mainCamera = false};
+  f.camera = &outside;
+  for (void (*step)(RendererState&, Frame&) : {gbufferStep, resolveStep, compositeStep}) {
+    if (cancelRequested(s)) break;
+    step(s, f);
+  }
+  f.camera = &f.mainCamera;
+  if (cancelRequested(s)) return;  // renderFrame drops the frame
+  drawOutlines(s, s.outsideTargets, outside.proj * outside.view, segments);
+  f.results.outsideCamera = cam;
+  s.lastFrameOutside = true;
+}
+
+/// To the host's framebuffer (a surfaceless EGL context has none: the frame then stays in the
+/// renderer's colour target, which readback() returns): the outside view's image while on. A
+/// smaller internal size (the GUI's adaptive resolution) is stretched over the present size.
+void presentStep(RendererState& s, Frame& f) {
+  const FrameSetup& setup = f.setup;
+  const Targets& shown = s.lastFrameOutside ? s.outsideTargets : f.mainCamera.targets;
+  const bool scaled = setup.presentWidth != setup.width || setup.presentHeight != setup.height;
+  const unsigned target = setup.hostFramebuffer;
+  if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE)
+    glBlitNamedFramebuffer(shown.composite.id(), target, 0, 0, setup.width, setup.height, 0, 0,
+                           scaled ? setup.presentWidth : setup.width,
+                           scaled ? setup.presentHeight : setup.height, GL_COLOR_BUFFER_BIT,
+                           scaled ? GL_LINEAR : GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+}
+
+// --- The frame, declared once.
+
+/// What an error a step throws is reported as (renderFrame then renders a neutral frame).
+enum class StepFailure {
+  Propagates,        ///< not caught (the renderer's own passes)
+  NamesTechnique,    ///< "technique '<id>': ..."
+  NamesOutsideView,  ///< "outside view: ..."
+};
+
+/// One step of renderFrame.
+struct FrameStep {
+  const char* name;
+  /// The timer scope it runs in (consecutive steps of one pass share one scope); null: not
+  /// timed by the renderer (the technique times its own passes; the outside view is not timed).
+  const char* timedPass;
+  StepFailure failure;
+  /// The host's stop flag is read before the step. Not before the first (a frame stopped at
+  /// once still has its G-buffer) nor before the main resolve: the technique's maps of this
+  /// frame, and its temporal state, go with their resolve (a deferred resolve stops between
+  /// its units itself), so the next frame reads the targets of the frame the state is from.
+  bool stopsBefore;
+  /// When it runs (null: every frame).
+  bool (*when)(const RendererState&, const Frame&);
+  void (*run)(RendererState&, Frame&);
+};
+
+/// Every step of a frame, in order. renderFrame walks it once, reading the host's stop flag
+/// before the steps that say so (and a deferred resolve between its units).
+constexpr FrameStep kFrameSteps[] = {
+    {.name = "gbuffer",
+     .timedPass = "gbuffer",
+     .failure = StepFailure::Propagates,
+     .stopsBefore = false,
+     .when = nullptr,
+     .run = gbufferStep},
+    {.name = "shadows",
+     .timedPass = nullptr,
+     .failure = StepFailure::NamesTechnique,
+     .stopsBefore = true,
+     .when = nullptr,
+     .run = shadowsStep},
+    {.name = "keep previous mask",
+     .timedPass = "resolve",
+     .failure = StepFailure::NamesTechnique,
+     .stopsBefore = false,
+     .when = [](const RendererState&,
+                const Frame& f) { return f.setup.countMaskChange && f.setup.hadMask; },
+     .run = keepPreviousMaskStep},
+    {.name = "resolve",
+     .timedPass = "resolve",
+     .failure = StepFailure::NamesTechnique,
+     .stopsBefore = false,
+     .when = nullptr,
+     .run = resolveStep},
+    {.name = "mask change",
+     .timedPass = "resolve",
+     .failure = StepFailure::NamesTechnique,
+     .stopsBefore = true,
+     .when = [](const RendererState&, const Frame& f) { return f.setup.countMaskChange; },
+     .run = maskChangeStep},
+    {.name = "aliasing statistics",
+     .timedPass = "resolve",
+     .failure = StepFailure::NamesTechnique,
+     .stopsBefore = true,
+     .when = [](const RendererState& s,
+                const Frame& f) { return f.setup.publishing && wantsAliasingStats(s.publication); },
+     .run = [](RendererState& s, Frame&) { publishAliasingStats(s); }},
+    {.name = "composite",
+     .timedPass = "composite",
+     .failure = StepFailure::Propagates,
+     .stopsBefore = true,
+     .when = nullptr,
+     .run = compositeStep},
+    {.name = "outside view",
+     .timedPass = nullptr,
+     .failure = StepFailure::NamesOutsideView,
+     .stopsBefore = true,
+     .when = [](const RendererState&, const Frame& f) { return f.setup.showOutsideView; },
+     .run = outsideViewStep},
+    {.name = "present",
+     .timedPass = nullptr,
+     .failure = StepFailure::Propagates,
+     .stopsBefore = true,
+     .when = nullptr,
+     .run = presentStep},
+};
+
+/// The message of a step's error, or nothing when it propagates.
+std::optional<std::string> stepFailureMessage(const RendererState& s, StepFailure failure,
+                                              const std::exception& e) {
+  switch (failure) {
+    case StepFailure::NamesTechnique:
+      return "technique '" + s.techniqueId + "': " + e.what();
+    case StepFailure::NamesOutsideView:
+      return std::string("outside view: ") + e.what();
+    case StepFailure::Propagates:
+      break;
+  }
+  return std::nullopt;
+}
+
+/// What this frame shows (scene, technique, parameters, size, camera, light); the error
+/// overlay is only drawn for a matching reference.
+std::string frameSignatureOf(const RendererState& s, const ParamSet& params, int width,
+                             int height) {
+  const Camera& c = s.camera;
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "%p|%s|%u|%d|%d|%g,%g,%g|%g,%g,%g|%g,%g,%g|%g|%s",
+                static_cast<const void*>(s.scene.get()), s.techniqueId.c_str(), params.revision(),
+                width, height, c.position.x, c.position.y, c.position.z, c.target.x, c.target.y,
+                c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, s.light.describe().c_str());
+  return buf;
+}
+
+/// FrameStats of the frame the steps rendered (or of the part a cancelled frame did).
+void fillStats(RendererState& s, Frame& f, bool cancelled) {
+  s.stats = FrameStats{};
+  s.stats.frameIndex = s.frameIndex;
+  s.stats.width = f.setup.width;
+  s.stats.height = f.setup.height;
+  s.stats.cancelled = cancelled;
+  s.stats.passes = s.timer->endFrame();
+  s.stats.passSequence = s.timer->sequence();
+  s.stats.passOrder = s.timer->passOrder();
+  if (f.setup.publishing) {  // per-tile times (TechniqueInfo::tileTiming) from the same results
+    const TechniqueEntry* entry = findEntry(s, s.techniqueId);
+    const TechniqueInfo* info = entry ? &entry->info : nullptr;
+    if (info && info->tileTiming && s.publication.wants(info->tileTiming->key))
+      s.publication.curves[info->tileTiming->key] = tileTimingCurve(
+          s.stats.passSequence, info->tileTiming->depthPass, info->tileTiming->applyPass);
+  }
+  s.stats.timingMethod = s.timer->methodName();
+  s.stats.timingFramesLate = s.timer->framesLate();
+  s.stats.memory = s.technique->memory();
+  s.stats.publicationBytes = f.setup.publishing ? s.publication.readbackBytes : 0;
+  for (const PassTiming& p : s.stats.passes) s.stats.totalMs += p.ms;
+  s.stats.outlines = std::move(f.results.outlines);
+  s.stats.outsideCamera = f.results.outsideCamera;
+  s.stats.maskChange = f.results.maskChange;
+  s.stats.progress = s.frameProgress;
 }
 
 }  // namespace
@@ -831,6 +1127,10 @@ void Renderer::clearFrame(int width, int height, unsigned target) {
   }
 }
 
+void Renderer::setCancelFlag(const std::atomic<bool>* flag) {
+  s_->cancelFlag = flag;
+}
+
 std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned target) {
   return renderFrame(width, height, target, width, height);
 }
@@ -838,11 +1138,8 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
 std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned target,
                                                  int presentWidth, int presentHeight) {
   RendererState& s = *s_;
-  if (s.cancel && s.cancel->load()) {  // stopped before it started: nothing drawn
-    s.stats = FrameStats{};
-    s.stats.cancelled = true;
-    return std::nullopt;
-  }
+  s.stats.cancelled = false;
+  s.lastFrameCancelled = false;
   auto neutral = [&](const std::string& why) -> std::optional<std::string> {
     clearFrame(std::max(width, presentWidth), std::max(height, presentHeight), target);
     return why;
@@ -861,158 +1158,72 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
       return neutral("technique '" + s.techniqueId + "': " + *err);
   }
 
-  {  // What this frame shows; the error overlay is only drawn for a matching reference.
-    const Camera& c = s.camera;
-    char buf[512];
-    std::snprintf(buf, sizeof buf, "%p|%s|%u|%d|%d|%g,%g,%g|%g,%g,%g|%g,%g,%g|%g|%s",
-                  static_cast<const void*>(s.scene.get()), s.techniqueId.c_str(),
-                  params().revision(), width, height, c.position.x, c.position.y, c.position.z,
-                  c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg,
-                  s.light.describe().c_str());
-    s.frameSignature = buf;
-  }
-  const auto frameStart = std::chrono::steady_clock::now();
+  s.frameSignature = frameSignatureOf(s, params(), width, height);
   s.ensureTargets(width, height);
-  Targets& t = s.targets;
   const float aspect = float(width) / float(height);
-  const glm::mat4 view = s.camera.view(), proj = s.camera.projection(aspect);
   ++s.frameIndex;
   s.frameProgress.reset();
+  s.lastFrameOutside = false;
   s.timer->beginFrame();
   const bool publishing = !s.requested.empty();
+  Publication lastComplete;  // the publication a stopped frame leaves in place
   if (publishing) {
-    s.publication = Publication{};
+    lastComplete = std::exchange(s.publication, Publication{});
     s.publication.frameIndex = s.frameIndex;
     s.publication.techniqueId = s.techniqueId;
     s.publication.requested = s.requested;
     publishFrameNumbers(s, height, aspect);
   }
+  Frame f{
+      .setup = {.width = width,
+                .height = height,
+                .presentWidth = presentWidth,
+                .presentHeight = presentHeight,
+                .hostFramebuffer = target,
+                .aspect = aspect,
+                .publishing = publishing,
+                .countMaskChange = wantsMaskChange(s, publishing),
+                .hadMask = s.targets.resolved,
+                .showOutsideView = s.rendererParams.getBool("view.outside")},
+      .mainCamera = {.targets = s.targets,
+                     .view = s.camera.view(),
+                     .proj = s.camera.projection(aspect),
+                     .eye = s.camera.position,
+                     .mainCamera = true},
+  };
+  f.camera = &f.mainCamera;
 
-  {  // 1. Camera G-buffer.
-    auto pass = s.timer->scope("gbuffer");
-    drawGBuffer(s, t, proj * view, s.camera.position);
-  }
-
-  // 2. The technique's shadow passes.
-  FrameOutlines outlines;  // what the outside view draws (the technique adds its frusta)
-  std::optional<FrameStats::MaskChangeCount> maskChange;
-  FrameContext ctx{*s.scene,
-                   *s.sceneGpu,
-                   s.camera,
-                   aspect,
-                   view,
-                   proj,
-                   s.light,
-                   width,
-                   height,
-                   t.position,
-                   t.normal,
-                   t.hard,
-                   t.aliasing,
-                   t.mapIndex,
-                   params(),
-                   *s.timer,
-                   s.shaders,
-                   s.frameIndex,
-                   publishing ? &s.publication : nullptr,
-                   &outlines};
-  try {
-    // Declared parameters reach every program of the technique from their declaration.
-    for (const gl::Program* p : s.technique->programs()) bindParams(*p, params());
-    s.technique->renderShadows(ctx);
-
-    // 3. Resolve: hard mask, filtered visibility, aliasing m, selected map's uv per pixel.
-    auto pass = s.timer->scope("resolve");
-    // The mask change: `hard` still holds the previous frame's mask here (or nothing yet at
-    // this size: then the copy after the resolve makes the overlay empty).
-    const bool countChange = wantsMaskChange(s, publishing);
-    const bool hadFrame = t.resolved;
-    const auto copyHard = [&] {
-      glCopyImageSubData(t.hard.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.prevHard.id(), GL_TEXTURE_2D, 0,
-                         0, 0, 0, t.width, t.height, 1);
-    };
-    if (countChange && hadFrame) copyHard();
-    resolveInto(s, t, /*mainCamera=*/true, view, proj);
-    t.resolved = true;
-    if (countChange && !hadFrame) copyHard();
-    if (countChange && hadFrame) {
-      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      maskChange = countMaskChange(s, t);
-      if (publishing && (s.publication.wants("mask.changed_pixels") ||
-                         s.publication.wants("mask.compared_pixels")))
-        s.publication.readbackBytes += 2 * sizeof(std::uint32_t);  // the two counters
-      if (publishing) {
-        if (s.publication.wants("mask.changed_pixels"))
-          s.publication.numbers["mask.changed_pixels"] = double(maskChange->changed);
-        if (s.publication.wants("mask.compared_pixels"))
-          s.publication.numbers["mask.compared_pixels"] = double(maskChange->compared);
-      }
+  const char* openPass = nullptr;  // the renderer's timer scope open now
+  const auto enterPass = [&](const char* pass) {
+    if (openPass && pass && std::strcmp(openPass, pass) == 0) return;
+    if (openPass) s.timer->end();
+    if (pass) s.timer->begin(pass);
+    openPass = pass;
+  };
+  for (const FrameStep& step : kFrameSteps) {
+    if (step.stopsBefore && cancelRequested(s)) {
+      enterPass(nullptr);
+      s.lastFrameCancelled = true;
+      fillStats(s, f, /*cancelled=*/true);
+      if (publishing) s.publication = std::move(lastComplete);  // not a frame's publication
+      return std::nullopt;
     }
-    // Measured aliasing statistics, only while requested (timed with the resolve).
-    if (publishing && wantsAliasingStats(s.publication)) publishAliasingStats(s);
-  } catch (const std::exception& e) {
-    s.timer->endFrame();
-    return neutral(std::string("technique '") + s.techniqueId + "': " + e.what());
-  }
-
-  {  // 4. Composite (shading).
-    auto pass = s.timer->scope("composite");
-    // A partial progressive frame draws no error pixels: its reference is of the whole frame.
-    const bool shownComplete = !s.frameProgress || s.frameProgress->shownComplete;
-    compositeInto(s, t, s.camera.position,
-                  shownComplete && s.referenceSignature == s.frameSignature,
-                  /*mainCamera=*/true);
-  }
-
-  // 4b. The outside view (view.outside): the same scene and shadows from a third camera, with
-  // the frusta as lines. Not timed, and no metric reads it: the main camera's targets stay.
-  s.lastFrameOutside = false;
-  std::optional<Camera> outsideCamera;
-  if (s.rendererParams.getBool("view.outside")) {
+    if (step.when && !step.when(s, f)) continue;
+    enterPass(step.timedPass);
+    if (step.failure == StepFailure::Propagates) {
+      step.run(s, f);
+      continue;
+    }
     try {
-      outsideCamera = renderOutsideView(s, width, height, aspect, outlines);
-      s.lastFrameOutside = true;
+      step.run(s, f);
     } catch (const std::exception& e) {
+      enterPass(nullptr);
       s.timer->endFrame();
-      return neutral(std::string("outside view: ") + e.what());
+      return neutral(*stepFailureMessage(s, step.failure, e));
     }
   }
-  const Targets& shown = s.lastFrameOutside ? s.outsideTargets : t;
-
-  // 5. To the host's framebuffer (a surfaceless EGL context has none: the frame then
-  // stays in the renderer's colour target, which readback() returns).
-  // A smaller internal size (the GUI's adaptive resolution) is stretched over the present size.
-  const bool scaled = presentWidth != width || presentHeight != height;
-  if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE)
-    glBlitNamedFramebuffer(shown.composite.id(), target, 0, 0, width, height, 0, 0,
-                           scaled ? presentWidth : width, scaled ? presentHeight : height,
-                           GL_COLOR_BUFFER_BIT, scaled ? GL_LINEAR : GL_NEAREST);
-  glBindFramebuffer(GL_FRAMEBUFFER, target);
-
-  s.stats = FrameStats{};
-  s.stats.frameIndex = s.frameIndex;
-  s.stats.width = width;
-  s.stats.height = height;
-  s.stats.passes = s.timer->endFrame();
-  s.stats.passSequence = s.timer->sequence();
-  s.stats.passOrder = s.timer->passOrder();
-  if (publishing) {  // per-tile times (TechniqueInfo::tileTiming) from the same results
-    const TechniqueEntry* entry = findEntry(s, s.techniqueId);
-    const TechniqueInfo* info = entry ? &entry->info : nullptr;
-    if (info && info->tileTiming && s.publication.wants(info->tileTiming->key))
-      s.publication.curves[info->tileTiming->key] = tileTimingCurve(
-          s.stats.passSequence, info->tileTiming->depthPass, info->tileTiming->applyPass);
-  }
-  s.stats.timingMethod = s.timer->methodName();
-  s.stats.timingFramesLate = s.timer->framesLate();
-  s.stats.memory = s.technique->memory();
-  s.stats.publicationBytes = publishing ? s.publication.readbackBytes : 0;
-  for (const PassTiming& p : s.stats.passes) s.stats.totalMs += p.ms;
-  s.stats.outlines = std::move(outlines);
-  s.stats.outsideCamera = outsideCamera;
-  s.stats.maskChange = maskChange;
-  s.stats.progress = s.frameProgress;
-  (void)frameStart;
+  enterPass(nullptr);
+  fillStats(s, f, /*cancelled=*/false);
   return std::nullopt;
 }
 
@@ -1060,6 +1271,8 @@ ImageRGBA8 Renderer::readColor() const {
 FrameReadback Renderer::readback() const {
   const Targets& t = s_->targets;
   FrameReadback r;
+  r.cancelled = s_->lastFrameCancelled;
+  if (r.cancelled) return r;  // the targets hold part of a frame: not one to measure
   r.width = t.width;
   r.height = t.height;
   if (t.width == 0) return r;
@@ -1129,6 +1342,7 @@ Renderer::ReferenceSnapshot Renderer::snapshotForReference() const {
 
 std::optional<Renderer::ErrorResult> Renderer::traceReference(ReferenceSnapshot snap,
                                                               const std::atomic<bool>* cancelled) {
+  if (snap.frame.cancelled) return std::nullopt;  // a stopped frame is not measured
   ErrorResult res;
   res.frame = std::move(snap.frame);
   if (!snap.reference) return res;
@@ -1179,6 +1393,10 @@ const std::string& Renderer::frameSignature() const {
 }
 
 Renderer::ErrorResult Renderer::computeError() const {
+  if (s_->lastFrameCancelled)
+    throw std::runtime_error(
+        "computeError: the last frame was cancelled before it was complete (setCancelFlag); "
+        "render a complete frame to measure its error");
   ReferenceSnapshot snap = snapshotForReference();
   const std::string signature = snap.frameSignature;
   ErrorResult res = *traceReference(std::move(snap));  // not cancellable: always a result

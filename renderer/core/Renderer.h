@@ -224,6 +224,8 @@ struct FrameReadback {
   /// The outside view's image (view.outside on: the third camera with the frusta drawn, what
   /// the host was shown); empty otherwise. Every other array is the main camera's.
   ImageRGBA8 outside;
+  /// The last frame was stopped (Renderer::setCancelFlag): nothing was read (size 0).
+  bool cancelled = false;
 };
 
 /// What the last frame's main camera saw at one pixel (Renderer::probePixel): the view's
@@ -315,6 +317,19 @@ class Renderer {
   /// target (the GUI's adaptive resolution); every target and readback stays width x height.
   std::optional<std::string> renderFrame(int width, int height, unsigned targetFramebuffer,
                                          int presentWidth, int presentHeight);
+  /// The host's stop flag (any thread may set it; null: never stopped). renderFrame reads it
+  /// between its steps and between a progressive resolve's units; once it is set the frame stops
+  /// there: renderFrame returns nothing, stats().cancelled is true and stats().complete() false.
+  /// A stopped frame is no measurement: readback() returns an empty frame, computeError()
+  /// throws, traceReference() returns nothing and publication() stays the last complete
+  /// frame's. A flag already set when renderFrame starts stops it after its first step (the
+  /// G-buffer). The shadow passes and the main resolve they feed go together (the flag is not
+  /// read between them; a deferred resolve reads it between its units, one-call or progressive).
+  /// The next frame is what it would have been had the stopped frame completed unseen: stopped
+  /// before its shadow passes, nothing changed; after them, a technique's temporal state
+  /// (DA-RTW's rotation, ASM's page cache) holds that frame's, as do the resolve targets it
+  /// reads; a progressive resolve goes on from the units done (or starts over for a new view).
+  void setCancelFlag(const std::atomic<bool>* flag);
   /// Fills the target with the neutral background and renders nothing: no pass runs, no
   /// temporal state changes (a view too small to show anything).
   static void clearFrame(int width, int height, unsigned targetFramebuffer);
@@ -330,7 +345,8 @@ class Renderer {
   /// compare frameIndex with stats().frameIndex).
   const Publication& publication() const;
 
-  /// Reads the last frame back (positions, normals, hard mask, colour).
+  /// Reads the last frame back (positions, normals, hard mask, colour); an empty frame with
+  /// `cancelled` set when the last frame was stopped (setCancelFlag).
   FrameReadback readback() const;
   /// Reads only the last frame's shown colour image (the main camera's, or the outside
   /// view's while on), row 0 = top: the GUI's zoom inset.
@@ -338,7 +354,8 @@ class Renderer {
   /// Reads one pixel of the last frame (x right, y down from the top row; GL current):
   /// nothing before a frame or outside it. A few bytes: cheap enough for every mouse move.
   std::optional<PixelProbe> probePixel(int x, int y) const;
-  /// Exact reference for the last frame (Embree, cached per scene) and the error.
+  /// Exact reference for the last frame (Embree, cached per scene) and the error. Throws
+  /// std::runtime_error when the last frame was stopped (setCancelFlag): it is not a frame.
   struct ErrorResult {
     ShadowErrorStats stats;
     std::vector<std::uint8_t> referenceMask;
@@ -350,9 +367,9 @@ class Renderer {
   /// frame back (GL current) with the light, the scene's Embree scene (shared: it outlives
   /// a scene change) and what the frame showed; `traceReference` traces and compares it
   /// without GL on any thread, returning nothing once `cancelled` became true (checked
-  /// between bands of rows); `setReferenceMask` (GL current) keeps the mask for the error
-  /// overlay, which draws it only while frames show the same `frameSignature` — false when
-  /// the frame size changed since.
+  /// between bands of rows) or when the snapshot's frame was stopped (setCancelFlag);
+  /// `setReferenceMask` (GL current) keeps the mask for the error overlay, which draws it only
+  /// while frames show the same `frameSignature` — false when the frame size changed since.
   struct ReferenceSnapshot {
     FrameReadback frame;
     Light light;
@@ -380,10 +397,6 @@ class Renderer {
   /// it is. Once every unit is done the targets equal a one-call frame's, pixel for pixel.
   /// 0 (the default: CLI, tests, grabs) = every frame complete in one call.
   void setProgressiveBudget(double ms);
-  /// The host's stop flag (any thread may set it; null: never stopped). renderFrame reads it
-  /// before it starts; once it is set the frame stops: renderFrame returns nothing,
-  /// stats().cancelled is true and stats().complete() false.
-  void setCancelFlag(const std::atomic<bool>* flag);
   double progressiveBudget() const;
   /// Resets state that accumulates over frames (e.g. DA-RTW's rotation).
   void resetTemporalState();

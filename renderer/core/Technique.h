@@ -5,6 +5,7 @@
 // itself in a deferred pass. Adding a technique touches its folder and TechniqueRegistry.cpp.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,7 +24,25 @@ namespace sl {
 
 class SceneGpu;
 
-/// Everything a technique may read while building its shadows for one frame.
+/// A camera's G-buffer (the main camera's, or the outside view's): world position (w =
+/// covered) and world normal facing the camera, RGBA32F, the frame's size.
+struct GBufferTextures {
+  const gl::Texture& position;
+  const gl::Texture& normal;
+};
+
+/// The resolve targets before this frame's resolve: what the previous frame's resolve wrote
+/// (camera space). Shadow-edge importance reads its hard mask (R8UI), per-map statistics a
+/// frame late its aliasing m (R32F) and selected map index (R8UI).
+struct PreviousResolve {
+  const gl::Texture& hard;
+  const gl::Texture& aliasing;
+  const gl::Texture& mapIndex;
+};
+
+/// Everything a technique may read while building its shadows for one frame. Built with
+/// designated initialisers (its textures are grouped in named structs, so no two of them
+/// can be swapped by position).
 struct FrameContext {
   const Scene& scene;
   const SceneGpu& sceneGpu;
@@ -32,16 +51,9 @@ struct FrameContext {
   glm::mat4 cameraView{1.0f}, cameraProj{1.0f};
   const Light& light;         ///< validated, of a kind the technique supports
   int width = 0, height = 0;  ///< camera image size in pixels
-  /// Camera G-buffer of this frame (for backward analysis): world position (w = covered)
-  /// and world normal, RGBA32F, width x height.
-  const gl::Texture& gPosition;
-  const gl::Texture& gNormal;
-  /// The previous frame's hard shadow mask (R8UI, camera space): shadow-edge importance.
-  const gl::Texture& prevHardMask;
-  /// The previous frame's aliasing m (R32F) and selected map index (R8UI) per pixel: the
-  /// resolve targets before this frame's resolve (per-map statistics a frame late).
-  const gl::Texture& prevAliasing;
-  const gl::Texture& prevMapIndex;
+  /// Camera G-buffer of this frame (for backward analysis), width x height.
+  GBufferTextures gbuffer;
+  PreviousResolve previous;
   const ParamSet& params;  ///< the technique's own parameters
   gl::GpuTimer& timer;
   const gl::ShaderLibrary& shaders;
@@ -90,6 +102,15 @@ struct ResolveProgress {
   double spentMs = 0;   ///< out: wall time spent on units in this call
 };
 
+/// The resolve's five targets (shaders/common/resolve.frag's outputs; meanings below).
+struct ResolveOutputs {
+  const gl::Texture& hard;      ///< R8UI, SL_MASK_*
+  const gl::Texture& filtered;  ///< R8, 1 = lit
+  const gl::Texture& aliasing;  ///< R32F, m
+  const gl::Texture& texel;     ///< RG32F, the selected map's uv
+  const gl::Texture& mapIndex;  ///< R8UI, the selected map
+};
+
 /// What a deferred resolve reads and writes (Technique::resolveDeferred). The targets
 /// follow shaders/common/resolve.frag: hard mask R8UI (SL_MASK_*), filtered visibility
 /// R8 (1 = lit), aliasing m R32F (texel footprint of the SELECTED map / pixel footprint,
@@ -97,15 +118,10 @@ struct ResolveProgress {
 /// R8UI (the selected map, for the partition overlay; cleared to 0 before the call).
 struct ResolveTargets {
   int width = 0, height = 0;
-  const gl::Texture& gPosition;  ///< world xyz, w = covered (RGBA32F)
-  const gl::Texture& gNormal;    ///< world normal facing the camera (RGBA32F)
-  const gl::Texture& hard;
-  const gl::Texture& filtered;
-  const gl::Texture& aliasing;
-  const gl::Texture& texel;
-  const gl::Texture& mapIndex;
-  GLuint framebuffer = 0;  ///< the five as colour attachments 0..4, for a fragment pass
-  const Light& light;      ///< the frame's light (sl::bindLight: common/light.glsl)
+  GBufferTextures gbuffer;  ///< what the resolve reads
+  ResolveOutputs outputs;   ///< what it writes
+  GLuint framebuffer = 0;   ///< the five as colour attachments 0..4, for a fragment pass
+  const Light& light;       ///< the frame's light (sl::bindLight: common/light.glsl)
   /// The scene on the GPU, for a technique that renders its maps during the resolve (tile
   /// by tile: virtual-tiled, fvsm).
   const SceneGpu* sceneGpu = nullptr;
@@ -118,6 +134,11 @@ struct ResolveTargets {
   bool mainCamera = true;
   /// Non-null: the host spreads the resolve over calls (ResolveProgress); null: one call.
   ResolveProgress* progress = nullptr;
+  /// The host's stop flag (Renderer::setCancelFlag; null: never stopped). A technique that
+  /// resolves unit by unit checks cancelRequested() after each unit and, once it is set, stops
+  /// there (reporting `progress->next` when progressive); the renderer then drops the frame.
+  const std::atomic<bool>* cancel = nullptr;
+  bool cancelRequested() const { return cancel && cancel->load(std::memory_order_relaxed); }
   /// The camera the G-buffer was drawn with (the main one, or the outside view's): its view
   /// and perspective projection (the tiled techniques rebuild positions from eye depth).
   glm::mat4 cameraView{1.0f}, cameraProj{1.0f};

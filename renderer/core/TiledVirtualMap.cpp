@@ -48,10 +48,10 @@ void endTiles(const ResolveTargets& t) {
 void clearResolveTargets(const ResolveTargets& t) {
   const GLuint empty = SL_MASK_EMPTY;
   const float one = 1.0f, zero[2] = {0.0f, 0.0f};
-  glClearTexImage(t.hard.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
-  glClearTexImage(t.filtered.id(), 0, GL_RED, GL_FLOAT, &one);
-  glClearTexImage(t.aliasing.id(), 0, GL_RED, GL_FLOAT, zero);
-  glClearTexImage(t.texel.id(), 0, GL_RG, GL_FLOAT, zero);
+  glClearTexImage(t.outputs.hard.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+  glClearTexImage(t.outputs.filtered.id(), 0, GL_RED, GL_FLOAT, &one);
+  glClearTexImage(t.outputs.aliasing.id(), 0, GL_RED, GL_FLOAT, zero);
+  glClearTexImage(t.outputs.texel.id(), 0, GL_RG, GL_FLOAT, zero);
 }
 
 void applyTile(const gl::Program& apply, const ResolveTargets& t, const EyeDepthBuffer& eyeDepth,
@@ -72,7 +72,7 @@ void applyTile(const gl::Program& apply, const ResolveTargets& t, const EyeDepth
   apply.set("u_onlyEmpty", tile.onlyEmpty ? 1 : 0);
   apply.set("u_clampToTile", tile.clampToTile ? 1 : 0);
   apply.set("u_tileTexels", tile.texels);
-  if (tile.onlyEmpty) glBindTextureUnit(SL_UNIT_HARD, t.hard.id());
+  if (tile.onlyEmpty) glBindTextureUnit(SL_UNIT_HARD, t.outputs.hard.id());
   bindDepthLookup(apply, std::span(&tile.tile, 1));
   glBindTextureUnit(SL_UNIT_LOOKUP_FIRST, tile.texture.id());
   apply.set("u_shadowMap", SL_UNIT_LOOKUP_FIRST);

@@ -400,8 +400,8 @@ void AsmShadowMap::findEdges(FrameContext& ctx) {
   testProgram_.use();
   map_.bindLookup(testProgram_, SL_UNIT_LOOKUP_FIRST, view_);
   bindLight(testProgram_, ctx.light);
-  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
-  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
+  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gbuffer.position.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gbuffer.normal.id());
   glBindImageTexture(SL_ASM_IMAGE_TESTED, tested_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
   glDispatchCompute(gx, gy, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -265,7 +265,7 @@ void CascadedShadowMap::reduceDepthRange(const FrameContext& ctx) {
   rangeProgram_.set("u_eye", ctx.camera.position);
   rangeProgram_.set("u_forward", ctx.camera.forward());
   rangeProgram_.set("u_size", glm::ivec2(ctx.width, ctx.height));
-  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
+  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gbuffer.position.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_CASCADE_BUFFER_DEPTH_RANGE, rangeBuffer_.id());
   glDispatchCompute(GLuint((ctx.width + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP),
                     GLuint((ctx.height + SL_CASCADE_GROUP - 1) / SL_CASCADE_GROUP), 1);

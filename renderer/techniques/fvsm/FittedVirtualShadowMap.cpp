@@ -374,7 +374,7 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
 
   {  // 1. The eye-space depth buffer.
     auto pass = ctx.timer.scope("eye depth");
-    eyeDepth_.update(ctx.gPosition, ctx.width, ctx.height, ctx.cameraView, ctx.cameraProj);
+    eyeDepth_.update(ctx.gbuffer.position, ctx.width, ctx.height, ctx.cameraView, ctx.cameraProj);
   }
   const fvsm::EntryFormat format = entryFormat(p);
   const bool packed = format == fvsm::EntryFormat::Packed4Byte;
@@ -429,8 +429,8 @@ void FittedVirtualShadowMap::renderShadows(FrameContext& ctx) {
     cameraThumb_.set("u_frameSize", frameSize_);
     cameraThumb_.set("u_used", used);
     cameraThumb_.set("u_towardsLight", ctx.light.directionalTowards());
-    glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
-    glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
+    glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gbuffer.position.id());
+    glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gbuffer.normal.id());
     glBindImageTexture(SL_IMAGE_FVSM_CAMERA, cameraTexture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_R32F);
     glDispatchCompute(GLuint((kThumbnail + 7) / 8), GLuint((kThumbnail + 7) / 8), 1);
@@ -536,7 +536,8 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
     if (!passDepth_ || passDepth_.width() != t.width || passDepth_.height() != t.height)
       passDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, t.width, t.height);
     passes = gl::Framebuffer::create();
-    const gl::Texture* targets[5] = {&t.hard, &t.filtered, &t.aliasing, &t.texel, &t.mapIndex};
+    const gl::Texture* targets[5] = {&t.outputs.hard, &t.outputs.filtered, &t.outputs.aliasing,
+                                     &t.outputs.texel, &t.outputs.mapIndex};
     for (int i = 0; i < 5; ++i) passes.attach(GLenum(GL_COLOR_ATTACHMENT0 + i), *targets[i]);
     passes.attach(GL_DEPTH_ATTACHMENT, passDepth_);
     passes.setDrawBuffers(5);
@@ -560,7 +561,12 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
     t.sceneGpu->draw(multiPass_, SL_UNIT_MATERIAL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
+  bool stopped = false;  // the host stopped the frame (Renderer::setCancelFlag)
   for (std::size_t k = 0; k < tiles_.size(); ++k) {
+    if (k > 0 && t.cancelRequested()) {
+      stopped = true;
+      break;
+    }
     const fvsm::Tile& tile = tiles_[k];
     const fvsm::TileTexture tex = fvsm::tileTexture(mode, tile.textureLog2, maxLog2, overlap);
     TileDepthTarget& target = depthTarget(tex.size);
@@ -590,7 +596,7 @@ void FittedVirtualShadowMap::resolveDeferred(const ResolveTargets& t, const Para
          glm::vec2(glm::dvec2(tex.viewport) / (hi - lo)), rectMin, rectMax, unsigned(k) & 255u,
          /*onlyEmpty=*/false, /*clampToTile=*/false});
   }
-  {  // Pixels no leaf reached: one map over the whole fit.
+  if (!stopped) {  // Pixels no leaf reached: one map over the whole fit.
     if (t.timer) t.timer->begin("fallback");
     TileDepthTarget& target = depthTarget(glm::ivec2(fallbackResolution_));
     renderDepth(*t.sceneGpu, depth_, target.fbo.id(), fallbackResolution_, fallbackResolution_,

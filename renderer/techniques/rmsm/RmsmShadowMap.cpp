@@ -255,8 +255,8 @@ void RmsmShadowMap::requestPages(FrameContext& ctx) {
   const GLuint gy = GLuint((h + SL_RMSM_GROUP - 1) / SL_RMSM_GROUP);
   requestProgram_.use();
   map_.setLayoutUniforms(requestProgram_, view_.lightViewProj);
-  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
-  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
+  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gbuffer.position.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gbuffer.normal.id());
   glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      GL_R32UI);
   glDispatchCompute(gx, gy, 1);

@@ -539,9 +539,9 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     prog.set("u_gPosition", SL_UNIT_G_POSITION);
     prog.set("u_prevHard", SL_UNIT_HARD);
   };
-  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gPosition.id());
-  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gNormal.id());
-  glBindTextureUnit(SL_UNIT_HARD, ctx.prevHardMask.id());
+  glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gbuffer.position.id());
+  glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gbuffer.normal.id());
+  glBindTextureUnit(SL_UNIT_HARD, ctx.previous.hard.id());
   const GLuint zero = 0;
   if (importance_) glClearTexImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   if (momentIm_) glClearTexImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);

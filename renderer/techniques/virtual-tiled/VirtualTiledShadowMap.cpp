@@ -92,7 +92,7 @@ VirtualTiledShadowMap::VirtualTiledShadowMap(const gl::ShaderLibrary& lib)
 void VirtualTiledShadowMap::renderShadows(FrameContext& ctx) {
   {
     auto pass = ctx.timer.scope("eye depth");
-    eyeDepth_.update(ctx.gPosition, ctx.width, ctx.height, ctx.cameraView, ctx.cameraProj);
+    eyeDepth_.update(ctx.gbuffer.position, ctx.width, ctx.height, ctx.cameraView, ctx.cameraProj);
   }
   LightFit fit;
   if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
@@ -158,6 +158,8 @@ void VirtualTiledShadowMap::resolveDeferred(const ResolveTargets& t, const Param
                  glm::ivec2(0), glm::ivec2(t.width, t.height), unsigned(k) & 255u});
     }
     ++u;
+    // The host stopped the frame (Renderer::setCancelFlag): `next` says where to go on.
+    if (u < total && t.cancelRequested()) break;
     if (progress) {
       glFinish();  // the unit's real cost, so that the budget bounds the call's wall time
       const double ms =

@@ -1,0 +1,397 @@
+// Cancellation (Renderer::setCancelFlag): the host's stop flag read between renderFrame's steps
+// and between a resolve's units. A stopped frame says so (stats().cancelled, not complete), is
+// never measured (readback empty, computeError refuses), and leaves nothing behind that would
+// change the next frame: that frame is byte for byte the frame of a renderer that never saw
+// the stopped one.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <thread>
+
+#include "GlTestEnv.h"
+#include "core/Technique.h"
+
+namespace sl {
+namespace {
+
+/// The scene a technique renders with its first supported light kind.
+std::string sceneFor(const TechniqueInfo& info) {
+  return !checkLightSupport(info, LightType::Directional) ? "diagonal" : "omni-room";
+}
+
+/// Virtual-tiled small enough for a test, slow enough that a frame takes tens of ms (16 tiles of
+/// 1024²) or, at 2048², well over 100 ms on llvmpipe.
+void slowVirtualTiled(Renderer& r, int tileResolution = 1024) {
+  ASSERT_FALSE(r.params().set("tiles", 4));
+  ASSERT_FALSE(r.params().set("tile.resolution", tileResolution));
+}
+
+/// Armed: the flag a StopAfterShadows technique sets right after its shadow passes.
+std::atomic<bool>* gStopAfterShadows = nullptr;
+
+/// A built-in technique that sets gStopAfterShadows once its shadow passes are done: a frame
+/// stopped exactly between its shadows and the rest.
+class StopAfterShadows : public Technique {
+ public:
+  explicit StopAfterShadows(std::unique_ptr<Technique> inner) : inner_(std::move(inner)) {}
+  void renderShadows(FrameContext& ctx) override {
+    inner_->renderShadows(ctx);
+    if (gStopAfterShadows) *gStopAfterShadows = true;
+  }
+  ResolveMode resolveMode() const override { return inner_->resolveMode(); }
+  std::string lookupShader() const override { return inner_->lookupShader(); }
+  void bindLookup(const gl::Program& resolve, int firstUnit) const override {
+    inner_->bindLookup(resolve, firstUnit);
+  }
+  void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override {
+    inner_->resolveDeferred(targets, params);
+  }
+  std::vector<const gl::Program*> programs() const override { return inner_->programs(); }
+  MemoryStats memory() const override { return inner_->memory(); }
+  std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
+    return inner_->reloadShaders(lib);
+  }
+  void resetTemporalState() override { inner_->resetTemporalState(); }
+  std::vector<int> pageGrid() const override { return inner_->pageGrid(); }
+
+ private:
+  std::unique_ptr<Technique> inner_;
+};
+
+const TechniqueEntry& builtInEntry(std::string_view id) {
+  for (const TechniqueEntry& e : techniqueRegistry())
+    if (e.info.id == id) return e;
+  throw std::logic_error("no built-in technique " + std::string(id));
+}
+
+/// da-rtw as "test-da-rtw-stop", stopping its frame after the shadows while armed.
+TechniqueEntry daRtwStoppingAfterShadows() {
+  TechniqueEntry e;
+  e.info = builtInEntry("da-rtw").info;
+  e.info.id = "test-da-rtw-stop";
+  e.create = [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
+    return std::make_unique<StopAfterShadows>(builtInEntry("da-rtw").create(lib));
+  };
+  return e;
+}
+
+int countScopes(const FrameStats& stats, const std::string& name) {
+  int n = 0;
+  for (const PassTiming& p : stats.passSequence) n += p.name == name;
+  return n;
+}
+
+double msSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+/// A flag set before renderFrame: the frame stops after its first step (the G-buffer), says
+/// so, and is not measured; clearing the flag renders again. Every technique.
+TEST(Cancel, FlagSetBeforeTheFrameStopsAfterTheFirstStep) {
+  for (const TechniqueInfo& info : Renderer::techniques()) {
+    SCOPED_TRACE(info.id);
+    auto r = test::makeRenderer(sceneFor(info), info.id);
+    ASSERT_TRUE(r);
+    std::atomic<bool> stop{true};
+    r->setCancelFlag(&stop);
+    EXPECT_FALSE(r->renderFrame(64, 48, 0));
+    const FrameStats& st = r->stats();
+    EXPECT_TRUE(st.cancelled);
+    EXPECT_FALSE(st.complete());
+    EXPECT_EQ(st.passOrder, std::vector<std::string>{"gbuffer"});
+    const FrameReadback rb = r->readback();
+    EXPECT_TRUE(rb.cancelled);
+    EXPECT_EQ(rb.width, 0);
+    EXPECT_TRUE(rb.hardMask.empty());
+    EXPECT_THROW((void)r->computeError(), std::runtime_error);
+    test::expectNoGlErrors(*r);
+  }
+}
+
+/// The flag is read again each frame: cleared, the next frame is complete; a null flag never
+/// stops one. A stopped frame's publication and reference are not offered as a frame's.
+TEST(Cancel, ClearedFlagRendersCompleteFramesAgain) {
+  auto r = test::makeRenderer("plane-box", "uniform");
+  ASSERT_TRUE(r);
+  r->requestPublications({"camera.*"});
+  ASSERT_FALSE(r->renderFrame(64, 48, 0));
+  const std::uint64_t completeFrame = r->stats().frameIndex;
+  ASSERT_EQ(r->publication().frameIndex, completeFrame);
+  ASSERT_FALSE(r->publication().numbers.empty());
+  std::atomic<bool> stop{true};
+  r->setCancelFlag(&stop);
+  ASSERT_FALSE(r->renderFrame(64, 48, 0));
+  ASSERT_TRUE(r->stats().cancelled);
+  EXPECT_GT(r->stats().frameIndex, completeFrame);
+  EXPECT_EQ(r->publication().frameIndex, completeFrame) << "the last complete frame's";
+  EXPECT_FALSE(r->publication().numbers.empty());
+  Renderer::ReferenceSnapshot snap = r->snapshotForReference();
+  EXPECT_TRUE(snap.frame.cancelled);
+  EXPECT_FALSE(Renderer::traceReference(std::move(snap)));
+  stop = false;
+  ASSERT_FALSE(r->renderFrame(64, 48, 0));
+  EXPECT_FALSE(r->stats().cancelled);
+  EXPECT_TRUE(r->stats().complete());
+  EXPECT_FALSE(r->readback().cancelled);
+  EXPECT_EQ(r->readback().width, 64);
+  stop = true;
+  r->setCancelFlag(nullptr);
+  ASSERT_FALSE(r->renderFrame(64, 48, 0));
+  EXPECT_FALSE(r->stats().cancelled);
+  test::expectNoGlErrors(*r);
+}
+
+/// A flag set from another thread a third of the way into a slow frame (one call) stops its
+/// resolve between two tiles, before the composite; prints the latency from the flag to
+/// renderFrame's return.
+void expectThreadStopsSlowFrame(Renderer& r, const std::string& what) {
+  auto start = std::chrono::steady_clock::now();
+  ASSERT_FALSE(r.renderFrame(320, 240, 0));
+  const double fullMs = msSince(start);
+  const int tiles = countScopes(r.stats(), "tile apply");
+  std::printf("%s at 320x240: a whole frame %.0f ms, %d tiles\n", what.c_str(), fullMs, tiles);
+  ASSERT_GT(fullMs, 100.0);
+  ASSERT_GT(tiles, 4);
+
+  std::atomic<bool> stop{false};
+  r.setCancelFlag(&stop);
+  std::chrono::steady_clock::time_point setAt;
+  std::thread host([&] {
+    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(fullMs / 3.0));
+    setAt = std::chrono::steady_clock::now();
+    stop = true;
+  });
+  ASSERT_FALSE(r.renderFrame(320, 240, 0));
+  const auto returnedAt = std::chrono::steady_clock::now();
+  host.join();
+  const double latencyMs = std::chrono::duration<double, std::milli>(returnedAt - setAt).count();
+  const FrameStats& st = r.stats();
+  ASSERT_TRUE(st.cancelled);
+  EXPECT_FALSE(st.complete());
+  EXPECT_LT(countScopes(st, "tile apply"), tiles) << "stopped between the tiles";
+  EXPECT_EQ(countScopes(st, "composite"), 0);
+  std::printf("%s: stop latency (flag set -> renderFrame returned) %.1f ms (a tile ~%.1f ms)\n",
+              what.c_str(), latencyMs, fullMs / tiles);
+  r.setCancelFlag(nullptr);
+  test::expectNoGlErrors(r);
+}
+
+TEST(Cancel, FlagFromAnotherThreadStopsASlowFrame) {
+  auto vt = test::makeRenderer("plane-box", "virtual-tiled");
+  ASSERT_TRUE(vt);
+  slowVirtualTiled(*vt, 2048);
+  expectThreadStopsSlowFrame(*vt, "virtual-tiled 4x4 of 2048^2");
+  auto fvsm = test::makeRenderer("plane-box", "fvsm");  // its defaults: ~0.4 s on llvmpipe
+  ASSERT_TRUE(fvsm);
+  expectThreadStopsSlowFrame(*fvsm, "fvsm");
+}
+
+/// Renders `frames` at `cameras` (complete frames) and returns the last one's colour and hard
+/// mask; with `cancelled` a frame at `cancelledCamera` is stopped before the last one, by a
+/// flag set before it or (`delayShare` > 0) from another thread after that share of the
+/// previous frame's wall time.
+struct Shown {
+  std::vector<std::uint8_t> color, hardMask;
+  std::vector<float> aliasing;
+};
+Shown renderSequence(const std::string& technique, const std::string& scene,
+                     const std::vector<Camera>& cameras, const Camera* cancelledCamera,
+                     double delayShare, bool* wasCancelled = nullptr) {
+  auto r = test::makeRenderer(scene, technique);
+  EXPECT_TRUE(r);
+  if (!r) return {};
+  if (technique == "virtual-tiled") slowVirtualTiled(*r);
+  std::atomic<bool> stop{false};
+  r->setCancelFlag(&stop);
+  double lastMs = 0.0;
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    if (cancelledCamera && i + 1 == cameras.size()) {
+      const double delayMs = delayShare * lastMs;
+      r->setCamera(*cancelledCamera);
+      std::thread host;
+      if (delayMs > 0.0)
+        host = std::thread([&] {
+          std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(delayMs));
+          stop = true;
+        });
+      else
+        stop = true;
+      EXPECT_FALSE(r->renderFrame(160, 120, 0));
+      if (host.joinable()) host.join();
+      if (wasCancelled) *wasCancelled = r->stats().cancelled;
+      stop = false;
+    }
+    r->setCamera(cameras[i]);
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    lastMs = msSince(start);
+    EXPECT_FALSE(r->stats().cancelled);
+  }
+  const FrameReadback rb = r->readback();
+  test::expectNoGlErrors(*r);
+  return {rb.color.pixels, rb.hardMask, rb.aliasing};
+}
+
+/// After a stopped frame the next frame is byte for byte what a renderer that never saw the
+/// stopped one renders (same earlier frames): uniform, da-rtw (its rotation follows the
+/// frames), virtual-tiled (stopped mid-resolve from another thread too).
+TEST(Cancel, NextFrameEqualsAFreshRenderersFrame) {
+  for (const char* technique : {"uniform", "da-rtw", "virtual-tiled", "cascades"}) {
+    SCOPED_TRACE(technique);
+    const std::string scene = "diagonal";
+    auto probe = test::makeRenderer(scene, technique);
+    ASSERT_TRUE(probe);
+    const Camera first = probe->camera();
+    probe.reset();
+    Camera second = first, moved = first;
+    second.orbit(10.0f, 5.0f);
+    moved.orbit(-25.0f, 8.0f);
+    // Three frames so that DA-RTW's rotation has a history to keep.
+    const std::vector<Camera> cameras = {first, second, second};
+    const Shown fresh = renderSequence(technique, scene, cameras, nullptr, 0.0);
+    ASSERT_FALSE(fresh.color.empty());
+    bool cancelled = false;
+    const Shown before = renderSequence(technique, scene, cameras, &moved, 0.0, &cancelled);
+    EXPECT_TRUE(cancelled);
+    EXPECT_EQ(before.color, fresh.color);
+    EXPECT_EQ(before.hardMask, fresh.hardMask);
+    EXPECT_EQ(before.aliasing, fresh.aliasing);
+    if (std::string(technique) == "virtual-tiled") {  // stopped within the resolve
+      const Shown mid = renderSequence(technique, scene, cameras, &moved, 1.0 / 3.0, &cancelled);
+      EXPECT_TRUE(cancelled);
+      EXPECT_EQ(mid.color, fresh.color);
+      EXPECT_EQ(mid.hardMask, fresh.hardMask);
+    }
+  }
+}
+
+/// A frame stopped right after its shadow passes (DA-RTW, with the shadow-edge term reading the
+/// previous frame's mask): its resolve still ran, so the next frame is the one that follows the
+/// stopped frame had it completed unseen, byte for byte — the rotation and the mask it reads
+/// are that frame's.
+TEST(Cancel, StoppedAfterTheShadowsTheNextFrameFollowsThatFrame) {
+  RendererOptions options;
+  options.extraTechniques = {daRtwStoppingAfterShadows()};
+  const auto run = [&](bool stopB) {
+    auto r = test::makeRenderer("diagonal", "test-da-rtw-stop", options);
+    EXPECT_TRUE(r);
+    if (!r) return FrameReadback{};
+    EXPECT_FALSE(r->params().set("importance.edge", 1));
+    std::atomic<bool> stop{false};
+    r->setCancelFlag(&stop);
+    const Camera first = r->camera();
+    Camera second = first, moved = first;
+    second.orbit(10.0f, 5.0f);
+    moved.orbit(-25.0f, 8.0f);
+    for (const Camera& c : {first, second, second}) {
+      r->setCamera(c);
+      EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    }
+    r->setCamera(moved);
+    gStopAfterShadows = stopB ? &stop : nullptr;
+    EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    gStopAfterShadows = nullptr;
+    EXPECT_EQ(r->stats().cancelled, stopB);
+    if (stopB) {
+      const std::vector<std::string>& opened = r->stats().passOrder;
+      EXPECT_NE(std::find(opened.begin(), opened.end(), "resolve"), opened.end());
+      EXPECT_EQ(std::find(opened.begin(), opened.end(), "composite"), opened.end());
+    }
+    stop = false;
+    r->setCamera(second);
+    EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    EXPECT_TRUE(r->stats().complete());
+    test::expectNoGlErrors(*r);
+    return r->readback();
+  };
+  const FrameReadback unseen = run(true), shown = run(false);
+  ASSERT_FALSE(shown.color.pixels.empty());
+  EXPECT_EQ(unseen.color.pixels, shown.color.pixels);
+  EXPECT_EQ(unseen.hardMask, shown.hardMask);
+  EXPECT_EQ(unseen.aliasing, shown.aliasing);
+}
+
+/// A progressive resolve stopped between its units (or before its resolve) goes on where it
+/// stopped; once complete it equals the one-call frame pixel for pixel.
+TEST(Cancel, ProgressiveResolveResumesAfterAStop) {
+  auto r = test::makeRenderer("plane-box", "virtual-tiled");
+  ASSERT_TRUE(r);
+  ASSERT_FALSE(r->params().set("tiles", 4));
+  ASSERT_FALSE(r->params().set("tile.resolution", 128));
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  const FrameReadback oneCall = r->readback();
+  Camera moved = r->camera(), original = r->camera();
+  moved.orbit(30.0f, 10.0f);
+  r->setCamera(moved);
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));  // other pixels in the targets
+  r->setCamera(original);
+
+  std::atomic<bool> stop{false};
+  r->setCancelFlag(&stop);
+  r->setProgressiveBudget(1e-6);  // one tile per call
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  ASSERT_TRUE(r->stats().progress);
+  EXPECT_EQ(r->stats().progress->done, 1);
+  stop = true;  // before the frame: no unit done
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  EXPECT_TRUE(r->stats().cancelled);
+  EXPECT_FALSE(r->stats().complete());
+  stop = false;
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  EXPECT_EQ(r->stats().progress->done, 2) << "goes on after the stopped call";
+  for (int calls = 0; calls < 40 && !r->stats().complete(); ++calls)
+    ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  ASSERT_TRUE(r->stats().complete());
+  const FrameReadback resumed = r->readback();
+  EXPECT_EQ(resumed.hardMask, oneCall.hardMask);
+  EXPECT_EQ(resumed.color.pixels, oneCall.color.pixels);
+  test::expectNoGlErrors(*r);
+}
+
+/// The same with the flag set from another thread while a progressive call does its units
+/// (a budget that would do them all): it stops between two units, the next call goes on from
+/// there, and the finished frame equals the one-call frame.
+TEST(Cancel, ProgressiveResolveStoppedBetweenUnitsGoesOn) {
+  auto r = test::makeRenderer("plane-box", "virtual-tiled");
+  ASSERT_TRUE(r);
+  slowVirtualTiled(*r);
+  auto start = std::chrono::steady_clock::now();
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  const double fullMs = msSince(start);
+  const FrameReadback oneCall = r->readback();
+  Camera moved = r->camera(), original = r->camera();
+  moved.orbit(30.0f, 10.0f);
+  r->setCamera(moved);
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  r->setCamera(original);
+
+  std::atomic<bool> stop{false};
+  r->setCancelFlag(&stop);
+  r->setProgressiveBudget(1e9);
+  std::thread host([&] {
+    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(fullMs / 3.0));
+    stop = true;
+  });
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  host.join();
+  ASSERT_TRUE(r->stats().cancelled);
+  ASSERT_TRUE(r->stats().progress);
+  const int doneWhenStopped = r->stats().progress->done;
+  const int total = r->stats().progress->total;
+  std::printf("stopped after %d of %d units\n", doneWhenStopped, total);
+  EXPECT_GT(doneWhenStopped, 0);
+  EXPECT_LT(doneWhenStopped, total);
+  stop = false;
+  ASSERT_FALSE(r->renderFrame(160, 120, 0));
+  ASSERT_TRUE(r->stats().complete());
+  EXPECT_LT(countScopes(r->stats(), "tile depth"), total) << "went on, did not start over";
+  const FrameReadback resumed = r->readback();
+  EXPECT_EQ(resumed.hardMask, oneCall.hardMask);
+  EXPECT_EQ(resumed.color.pixels, oneCall.color.pixels);
+  test::expectNoGlErrors(*r);
+}
+
+}  // namespace
+}  // namespace sl

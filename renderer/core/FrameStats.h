@@ -103,6 +103,9 @@ struct FrameStats {
   /// The host's stop flag stopped this frame between its steps (Renderer::setCancelFlag): the
   /// stats hold what ran (no measurement), and nothing was presented. Reset every frame.
   bool cancelled = false;
+  /// The step it stopped before ("shadows", "composite", ...: kFrameSteps in
+  /// core/Renderer.cpp); empty when not cancelled.
+  std::string stoppedBefore;
   /// False while the view shows a partial progressive result or the frame was cancelled
   /// (metrics and error wait).
   bool complete() const { return !cancelled && (!progress || progress->shownComplete); }

@@ -836,6 +836,11 @@ void maskChangeStep(RendererState& s, Frame& f) {
   if (compared) pub.numbers["mask.compared_pixels"] = double(count.compared);
 }
 
+/// The measured aliasing statistics ("aliasing.*"), timed with the resolve.
+void aliasingStatsStep(RendererState& s, Frame&) {
+  publishAliasingStats(s);
+}
+
 /// Shading of the frame's camera with the view.overlay: the error overlay only for the main
 /// camera of a whole frame whose exact view has a reference; the aliasing and changed
 /// overlays only for the main camera (the outside view's own derivatives would show m for a
@@ -985,7 +990,7 @@ enum class StepFailure {
 
 /// One step of renderFrame.
 struct FrameStep {
-  const char* name;
+  const char* name;  ///< FrameStats::stoppedBefore names it
   /// The timer scope it runs in (consecutive steps of one pass share one scope); null: not
   /// timed by the renderer (the technique times its own passes; the outside view is not timed).
   const char* timedPass;
@@ -1040,7 +1045,7 @@ constexpr FrameStep kFrameSteps[] = {
      .stopsBefore = true,
      .when = [](const RendererState& s,
                 const Frame& f) { return f.setup.publishing && wantsAliasingStats(s.publication); },
-     .run = [](RendererState& s, Frame&) { publishAliasingStats(s); }},
+     .run = aliasingStatsStep},
     {.name = "composite",
      .timedPass = "composite",
      .failure = StepFailure::Propagates,
@@ -1088,13 +1093,15 @@ std::string frameSignatureOf(const RendererState& s, const ParamSet& params, int
   return buf;
 }
 
-/// FrameStats of the frame the steps rendered (or of the part a cancelled frame did).
-void fillStats(RendererState& s, Frame& f, bool cancelled) {
+/// FrameStats of the frame the steps rendered, or of the part a frame the host's flag stopped
+/// before `stoppedBefore` did.
+void fillStats(RendererState& s, Frame& f, const FrameStep* stoppedBefore) {
   s.stats = FrameStats{};
   s.stats.frameIndex = s.frameIndex;
   s.stats.width = f.setup.width;
   s.stats.height = f.setup.height;
-  s.stats.cancelled = cancelled;
+  s.stats.cancelled = stoppedBefore != nullptr;
+  if (stoppedBefore) s.stats.stoppedBefore = stoppedBefore->name;
   s.stats.passes = s.timer->endFrame();
   s.stats.passSequence = s.timer->sequence();
   s.stats.passOrder = s.timer->passOrder();
@@ -1139,6 +1146,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                                                  int presentWidth, int presentHeight) {
   RendererState& s = *s_;
   s.stats.cancelled = false;
+  s.stats.stoppedBefore.clear();
   s.lastFrameCancelled = false;
   auto neutral = [&](const std::string& why) -> std::optional<std::string> {
     clearFrame(std::max(width, presentWidth), std::max(height, presentHeight), target);
@@ -1204,7 +1212,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     if (step.stopsBefore && cancelRequested(s)) {
       enterPass(nullptr);
       s.lastFrameCancelled = true;
-      fillStats(s, f, /*cancelled=*/true);
+      fillStats(s, f, &step);
       if (publishing) s.publication = std::move(lastComplete);  // not a frame's publication
       return std::nullopt;
     }
@@ -1223,7 +1231,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     }
   }
   enterPass(nullptr);
-  fillStats(s, f, /*cancelled=*/false);
+  fillStats(s, f, nullptr);
   return std::nullopt;
 }
 

@@ -101,6 +101,7 @@ TEST(Cancel, FlagSetBeforeTheFrameStopsAfterTheFirstStep) {
     EXPECT_TRUE(st.cancelled);
     EXPECT_FALSE(st.complete());
     EXPECT_EQ(st.passOrder, std::vector<std::string>{"gbuffer"});
+    EXPECT_EQ(st.stoppedBefore, "shadows");
     const FrameReadback rb = r->readback();
     EXPECT_TRUE(rb.cancelled);
     EXPECT_EQ(rb.width, 0);
@@ -172,6 +173,7 @@ void expectThreadStopsSlowFrame(Renderer& r, const std::string& what) {
   EXPECT_FALSE(st.complete());
   EXPECT_LT(countScopes(st, "tile apply"), tiles) << "stopped between the tiles";
   EXPECT_EQ(countScopes(st, "composite"), 0);
+  EXPECT_NE(st.stoppedBefore, "");
   std::printf("%s: stop latency (flag set -> renderFrame returned) %.1f ms (a tile ~%.1f ms)\n",
               what.c_str(), latencyMs, fullMs / tiles);
   r.setCancelFlag(nullptr);

@@ -357,14 +357,17 @@ void LessonController::queueSettle() {
 }
 
 void LessonController::settle() {
+  if (!w_.viewport()->mainSide() || settling_) return;
+  settling_ = true;  // from here: what waits for the lesson waits
+  // The layout's resizes first (they are queued): the rotation depends on the view's aspect
+  // (the importance follows the view frustum), so it must start from the size the lesson is
+  // shown at.
+  QTimer::singleShot(0, this, &LessonController::startSettling);
+}
+
+void LessonController::startSettling() {
   MainWindow& w = w_;
   sl::ViewSide* r = w.viewport()->mainSide();
-  if (!r || settling_) return;
-  settling_ = true;  // from here: what waits for the lesson waits, even in the events below
-  // The layout's resizes first: the rotation depends on the view's aspect (the importance
-  // follows the view frustum), so it must start from the size the lesson is shown at.
-  QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-  r = w.viewport()->mainSide();
   if (!r) {
     settling_ = false;
     return;
@@ -382,27 +385,44 @@ void LessonController::settle() {
   settled_ = false;
   w.updatePublishing();  // the rotation's numbers, while settling
   r->resetTemporalState();
-  const QString note = w.lessonPanel()->note();
-  while (settleFrames_ < kMaxSettleFrames && !settled_) {
-    w.lessonPanel()->setNote(
-        tr("Settling: frame %1 of at most %2 — the rotation is estimated from the last frame's "
-           "importance; the lesson's state is complete once an estimate leaves it unchanged.")
-            .arg(settleFrames_ + 1)
-            .arg(kMaxSettleFrames));
-    if (!w.waitForFrames(1)) break;
-    ++settleFrames_;
-    const std::optional<bool> done = rtwsettle::settled(r->publication());
-    if (!done) continue;  // no estimate yet (the first frame has no last frame)
-    settled_ = *done;
+  settleNote_ = w.lessonPanel()->note();
+  showSettlingNote();
+  // Frame by frame, driven by the view's frames (no nested event loop): settleFrame() looks
+  // at each and asks for the next until an estimate leaves R unchanged.
+  settleConnection_ = connect(w.viewport(), &ViewportWidget::frameRendered, this,
+                              &LessonController::settleFrame);
+  w.viewport()->requestFrame();
+}
+
+void LessonController::showSettlingNote() {
+  w_.lessonPanel()->setNote(
+      tr("Settling: frame %1 of at most %2 — the rotation is estimated from the last frame's "
+         "importance; the lesson's state is complete once an estimate leaves it unchanged.")
+          .arg(settleFrames_ + 1)
+          .arg(kMaxSettleFrames));
+}
+
+void LessonController::settleFrame() {
+  MainWindow& w = w_;
+  const sl::ViewSide* r = w.viewport()->mainSide();
+  ++settleFrames_;
+  if (r)
+    if (const std::optional<bool> done = rtwsettle::settled(r->publication()))
+      settled_ = *done;  // nothing yet on the first frame (it has no last frame)
+  if (r && !settled_ && settleFrames_ < kMaxSettleFrames) {
+    showSettlingNote();
+    w.viewport()->requestFrame();
+    return;
   }
+  disconnect(settleConnection_);
   settling_ = false;
   // The plots start at the settled state: what the lesson is about (lesson 7's vibration of a
   // tenth of a degree) is not squeezed under the settling turn's tens of degrees.
   w.docks().resetHistory();
   w.updatePublishing();
   w.lessonPanel()->setNote(
-      settled_ ? note
-               : (note.isEmpty() ? QString() : note + QLatin1Char('\n')) +
+      settled_ ? settleNote_
+               : (settleNote_.isEmpty() ? QString() : settleNote_ + QLatin1Char('\n')) +
                      tr("The rotation still turns after %1 frames: it never holds with these "
                         "parameters.")
                          .arg(settleFrames_));

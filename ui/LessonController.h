@@ -95,6 +95,13 @@ class LessonController : public QObject {
   int course_ = -1;      ///< index into courses_, -1: no course
   int coursePosition_ = -1;
   QAction* bannerAction_ = nullptr;
+  /// Settling, after the queued layout events: resets the temporal state and waits for
+  /// frames (settleFrame) until the rotation holds.
+  void startSettling();
+  void settleFrame();
+  void showSettlingNote();
+  QMetaObject::Connection settleConnection_;
+  QString settleNote_;  ///< the Lesson dock's note before settling
   bool settling_ = false, settleQueued_ = false, settled_ = true;
   int settleFrames_ = 0;
 };

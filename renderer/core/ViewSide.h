@@ -61,7 +61,8 @@ class ViewSide {
   const std::set<std::string>& requestedPublications() const { return publications_; }
 
   /// Changes with every edit that changes the image: a parameter, the technique, a reset.
-  std::uint64_t revision() const { return changes_ + params().revision(); }
+  /// Monotonic: a technique switch or reset moves the high half, a parameter edit the low.
+  std::uint64_t revision() const { return (changes_ << 32) + params().revision(); }
   /// The request for the next frame (takes a pending reset).
   SideRequest takeRequest();
 

@@ -389,8 +389,8 @@ void LessonController::startSettling() {
   showSettlingNote();
   // Frame by frame, driven by the view's frames (no nested event loop): settleFrame() looks
   // at each and asks for the next until an estimate leaves R unchanged.
-  settleConnection_ = connect(w.viewport(), &ViewportWidget::frameRendered, this,
-                              &LessonController::settleFrame);
+  settleConnection_ =
+      connect(w.viewport(), &ViewportWidget::frameRendered, this, &LessonController::settleFrame);
   w.viewport()->requestFrame();
 }
 

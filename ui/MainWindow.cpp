@@ -692,6 +692,11 @@ bool MainWindow::waitForFrames(int frames, int timeoutMs) {
     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     if (clock.elapsed() > timeoutMs) return false;
   }
+  // The panels get the frame one per turn of the event loop: done when all have it.
+  while (docks_.feeding()) {
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    if (clock.elapsed() > timeoutMs) return false;
+  }
   return true;
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include <QDockWidget>
+#include <QTimer>
 
 namespace sl::ui {
 
@@ -38,8 +39,26 @@ bool PublicationDocks::isCurrent(const sl::ViewSide& renderer, bool all) const {
 
 void PublicationDocks::feed(const sl::ViewSide& renderer, bool all) const {
   if (renderer.publication().frameIndex == 0) return;
+  if (all) {
+    queued_.clear();
+    for (const Dock& d : docks_) d.panel->showPublication(renderer.publication());
+    return;
+  }
+  const bool idle = queued_.empty();
+  queued_.clear();
+  queuedFrom_ = &renderer;
   for (const Dock& d : docks_)
-    if (all || d.dock->isVisible()) d.panel->showPublication(renderer.publication());
+    if (d.dock->isVisible()) queued_.emplace_back(d.panel);
+  if (idle) feedNext();
+}
+
+void PublicationDocks::feedNext() const {
+  while (!queued_.empty() && !queued_.front()) queued_.pop_front();  // a panel gone
+  if (queued_.empty() || !queuedFrom_) return;
+  PublicationPanel* panel = queued_.front();
+  queued_.pop_front();
+  panel->showPublication(queuedFrom_->publication());
+  if (!queued_.empty()) QTimer::singleShot(0, panel, [this] { feedNext(); });
 }
 
 void PublicationDocks::resetHistory() const {

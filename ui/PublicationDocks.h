@@ -3,12 +3,14 @@
 // handing the Publication to them.
 #pragma once
 
+#include <deque>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include <QJsonObject>
+#include <QPointer>
 #include <QString>
 
 #include "panels/PanelRegistry.h"
@@ -17,7 +19,7 @@ class QDockWidget;
 namespace sl {
 struct TechniqueInfo;
 class ViewSide;
-}
+}  // namespace sl
 
 namespace sl::ui {
 
@@ -38,8 +40,13 @@ class PublicationDocks {
   std::set<std::string> keys(bool all) const;
   /// The renderer's last frame published (at least) what keys(all) asks for.
   bool isCurrent(const sl::ViewSide& renderer, bool all) const;
-  /// Hands the last publication to the visible panels (`all`: to every panel).
+  /// Hands the last publication to the visible panels (`all`: to every panel, at once). The
+  /// visible panels get it one per turn of the event loop, so that one frame's panels never
+  /// hold the UI thread longer than one panel's work; a newer frame's feed replaces the
+  /// panels still queued (they get the newest publication).
   void feed(const sl::ViewSide& renderer, bool all) const;
+  /// Panels are still queued by feed() (scripts wait for them).
+  bool feeding() const { return !queued_.empty(); }
 
   /// After a technique switch: the docks whose panel describes `info` (its own panel
   /// family) are shown and brought in front of their tab group, the others hidden, except
@@ -68,8 +75,11 @@ class PublicationDocks {
   QJsonObject placeholders() const;
 
  private:
+  void feedNext() const;
   std::vector<Dock> docks_;
   std::set<QString> openedByHand_;
+  mutable std::deque<QPointer<PublicationPanel>> queued_;  ///< feed(): still to be fed
+  mutable const sl::ViewSide* queuedFrom_ = nullptr;
 };
 
 }  // namespace sl::ui

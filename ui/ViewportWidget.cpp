@@ -109,7 +109,11 @@ void ViewportWidget::pump() {
                    (order->split ? QStringLiteral(" | ") + QString::fromStdString(splitTechniqueId_)
                                  : QString());
   busyTimer_.start();
-  // A changed view stops the frame in progress: its result would be of the old view.
+  // A changed view stops the frame in progress: its result would be of the old view. Not
+  // while a drag or a fly key moves the camera: every move would stop the frame before it
+  // completes, and the view would show nothing new until the hand rests; the frame in
+  // progress completes (drawn, one view behind) and the newest camera is rendered next.
+  const bool interacting = dragButton_ != Qt::NoButton || !heldKeys_.empty();
   service_->submitFrame(
       [this, order](RenderContext& c) {
         auto out = std::make_shared<FrameOutcome>();
@@ -117,7 +121,7 @@ void ViewportWidget::pump() {
         QMetaObject::invokeMethod(
             this, [this, out] { applyOutcome(out); }, Qt::QueuedConnection);
       },
-      inFlight && changed);
+      inFlight && changed && !interacting);
 }
 
 std::shared_ptr<FrameOrder> ViewportWidget::makeOrder() {
@@ -190,6 +194,7 @@ void ViewportWidget::applyOutcome(const std::shared_ptr<FrameOutcome>& out) {
   }
   if (out->id <= lastAppliedId_) return;  // older than the frame shown (an export's came first)
   lastAppliedId_ = out->id;
+  ++framesDrawn_;
   shownViewRevision_ = out->viewRevision;
   mainImage_ = out->mainImage;
   splitImage_ = out->hasSplit ? out->splitImage : QImage();
@@ -340,6 +345,7 @@ ViewportWidget::Readouts ViewportWidget::readouts() const {
   r.lastFrameMs = lastFrameMs_;
   r.progress = progressNote_;
   r.framesStopped = framesStopped_;
+  r.framesDrawn = framesDrawn_;
   r.probesRead = probesRead_;
   r.leftCaption = splitCaption(false);
   r.rightCaption = splitCaption(true);

@@ -192,8 +192,9 @@ class ViewportWidget : public QWidget {
     int adaptiveDivisor = 1;   ///< adaptive state's (a still view's settle frame may be full size)
     double lastFrameMs = 0.0;  ///< wall clock of the last frame (both halves; >= its timed passes)
     std::optional<sl::FrameStats::Progress> progress;  ///< last frame's progressive resolve
-    std::uint64_t framesStopped = 0;    ///< frames stopped by a newer request before completing
-    std::uint64_t probesRead = 0;       ///< pixels read back for the hover probe (this renderer)
+    std::uint64_t framesStopped = 0;  ///< frames stopped by a newer request before completing
+    std::uint64_t framesDrawn = 0;    ///< frames put on screen (also those of a view changed since)
+    std::uint64_t probesRead = 0;     ///< pixels read back for the hover probe (this renderer)
     QString leftCaption, rightCaption;  ///< drawn under the split view's halves (empty: none)
     /// The line under the error overlay's legend (the reference's age, or that it is being
     /// traced); empty when the reference is current in on-demand rendering.
@@ -401,13 +402,15 @@ class ViewportWidget : public QWidget {
   static constexpr double kProgressiveShare = 0.5;
   std::uint64_t probesRead_ = 0;
   std::uint64_t probeSerial_ = 0;
-  std::uint64_t probeAnswered_ = 0;  ///< the latest probe whose answer came back  ///< the latest probe asked for (older answers are dropped)
+  std::uint64_t probeAnswered_ = 0;  ///< the latest probe whose answer came back  ///< the latest
+                                     ///< probe asked for (older answers are dropped)
 
   // The frame loop: a wanted frame, the orders sent and the outcomes back.
   bool frameWanted_ = false;
-  std::uint64_t ordersSent_ = 0;        ///< id of the last order submitted
+  std::uint64_t ordersSent_ = 0;  ///< id of the last order submitted
   std::uint64_t ordersDone_ = 0;
-  std::uint64_t lastAppliedId_ = 0;  ///< the order whose frame is on screen        ///< id of the last outcome received (shown or stopped)
+  std::uint64_t lastAppliedId_ = 0;     ///< the order whose frame is on screen
+  std::uint64_t framesDrawn_ = 0;       ///< id of the last outcome received (shown or stopped)
   std::uint64_t sentViewRevision_ = 0;  ///< view revision of the last order submitted
   std::uint64_t framesStopped_ = 0;     ///< orders stopped before they completed
   QTimer busyTimer_;                    ///< refreshes the busy note while a frame renders

@@ -65,7 +65,7 @@ bool GuiTests::heartbeat(const QString& dir) {
       QCoreApplication::sendEvent(view, &press);
       mover.start();
     }
-    const std::uint64_t framesBefore = view->framesRendered();
+    const std::uint64_t framesBefore = auto_.viewReadouts().framesDrawn;
     const std::uint64_t stoppedBefore = auto_.viewReadouts().framesStopped;
     lastTick = -1;
     maxStall = 0;
@@ -86,7 +86,7 @@ bool GuiTests::heartbeat(const QString& dir) {
       long ticks;
       std::uint64_t frames, stopped;
     };
-    return Result{maxStall, ticks, view->framesRendered() - framesBefore,
+    return Result{maxStall, ticks, auto_.viewReadouts().framesDrawn - framesBefore,
                   auto_.viewReadouts().framesStopped - stoppedBefore};
   };
 
@@ -104,14 +104,14 @@ bool GuiTests::heartbeat(const QString& dir) {
       const auto r = watch(kPhaseMs, drag);
       const char* what = drag ? "dragging" : "still";
       std::printf(
-          "measure heartbeat technique=%s phase=%s max_stall_ms=%lld ticks=%ld frames=%llu "
+          "measure heartbeat technique=%s phase=%s max_stall_ms=%lld ticks=%ld frames_drawn=%llu "
           "stopped=%llu view=%dx%d\n",
           qPrintable(technique), what, static_cast<long long>(r.stallMs), r.ticks,
           static_cast<unsigned long long>(r.frames), static_cast<unsigned long long>(r.stopped),
           view->width(), view->height());
       check(r.ticks > kPhaseMs / kBeatMs / 4 && r.stallMs < kStallBoundMs,
             tr("%1, %2: the UI thread's longest stall %3 ms < %4 ms (%5 heartbeats, %6 frames "
-               "shown, %7 stopped by a newer view)")
+               "drawn, %7 stopped by a newer view)")
                 .arg(technique, QString::fromLatin1(what))
                 .arg(r.stallMs)
                 .arg(kStallBoundMs)

@@ -23,17 +23,34 @@ std::string eglErrorString() {
 
 EglContext::EglContext(bool debug) : impl_(std::make_unique<Impl>()) {
   const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  std::string exts = clientExts ? clientExts : "";
-  if (exts.find("EGL_MESA_platform_surfaceless") == std::string::npos)
+  const std::string exts = clientExts ? clientExts : "";
+  auto has = [&](const char* ext) { return exts.find(ext) != std::string::npos; };
+  // Mesa's surfaceless platform first; else the first GPU of EGL's device platform (drivers
+  // without Mesa's platform, e.g. NVIDIA's, offer that one for rendering without a window).
+  if (has("EGL_MESA_platform_surfaceless")) {
+    impl_->display =
+        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLint major = 0, minor = 0;
+    if (impl_->display != EGL_NO_DISPLAY && !eglInitialize(impl_->display, &major, &minor))
+      impl_->display = EGL_NO_DISPLAY;
+  }
+  if (impl_->display == EGL_NO_DISPLAY && has("EGL_EXT_platform_device") &&
+      has("EGL_EXT_device_enumeration")) {
+    EGLDeviceEXT devices[16];
+    EGLint count = 0;
+    if (eglQueryDevicesEXT(16, devices, &count))
+      for (EGLint i = 0; i < count && impl_->display == EGL_NO_DISPLAY; ++i) {
+        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        EGLint major = 0, minor = 0;
+        if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) impl_->display = d;
+      }
+  }
+  if (impl_->display == EGL_NO_DISPLAY)
     throw std::runtime_error(
-        "EGL: the surfaceless platform (EGL_MESA_platform_surfaceless) is not available; "
-        "install Mesa's EGL (libegl-mesa0)");
-  impl_->display =
-      eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  if (impl_->display == EGL_NO_DISPLAY) throw std::runtime_error("EGL: no surfaceless display");
-  EGLint major = 0, minor = 0;
-  if (!eglInitialize(impl_->display, &major, &minor))
-    throw std::runtime_error("EGL: eglInitialize failed (" + eglErrorString() + ")");
+        "EGL: no display to render without a window: neither Mesa's surfaceless platform "
+        "(EGL_MESA_platform_surfaceless; install libegl-mesa0) nor a device of "
+        "EGL_EXT_platform_device could be initialised (" +
+        eglErrorString() + ")");
   if (!epoxy_has_egl_extension(impl_->display, "EGL_KHR_surfaceless_context"))
     throw std::runtime_error("EGL: EGL_KHR_surfaceless_context is missing");
   if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL: desktop OpenGL API unavailable");

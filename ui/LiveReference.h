@@ -35,15 +35,15 @@ class LiveReference {
   void cancel();
   const sl::AsyncReference* worker() const { return worker_.get(); }
 
-  /// After a frame: takes a finished trace (kept as the latest, its mask moved out to the
-  /// caller when `takeMask`); `failure` gets a failed trace's message.
+  /// After a frame: a finished trace not taken yet, whole (its mask for the error overlay);
+  /// it is kept as the latest without its mask. `failure` gets a failed trace's message.
   std::optional<sl::FinishedReference> takeFinished(std::string* failure);
   bool wantsTrace(std::uint64_t viewRevision) const;
   void submit(sl::ReferenceJob job);
 
   /// The latest trace's error for the view `viewRevision` after `framesRendered` frames.
   std::optional<LiveError> error(std::uint64_t viewRevision, std::uint64_t framesRendered) const;
-  /// The latest trace's error when it is of `viewRevision` (a measurement), else nothing.
+  /// The latest finished trace (without its mask), of whatever view it was traced for.
   const std::optional<sl::FinishedReference>& latest() const { return latest_; }
 
  private:

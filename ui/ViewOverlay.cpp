@@ -10,32 +10,13 @@
 
 namespace sl::ui {
 
-namespace {
-/// Index of `name` in the enum declaration of the shared parameter `key`, or -1.
-int enumIndexOf(const sl::ParamSet& params, const char* key, const char* name) {
-  const sl::ParamDecl* d = params.find(key);
-  if (!d) return -1;
-  for (std::size_t i = 0; i < d->enumNames.size(); ++i)
-    if (d->enumNames[i] == name) return static_cast<int>(i);
-  return -1;
-}
-}  // namespace
-
 void ViewOverlay::setLegends(const sl::ParamSet& shared, const sl::FrameStats& stats,
                              bool outside) {
-  legend = Legend::None;
-  if (shared.has("view.overlay")) {
-    const sl::ParamSet& p = shared;
-    const int v = p.getInt("view.overlay");
-    if (v == enumIndexOf(p, "view.overlay", "error"))
-      legend = Legend::Error;
-    else if (v == enumIndexOf(p, "view.overlay", "aliasing"))
-      legend = Legend::Aliasing;
-    else if (v == enumIndexOf(p, "view.overlay", "warp-grid"))
-      legend = Legend::WarpGrid;
-    else if (v == enumIndexOf(p, "view.overlay", "changed"))
-      legend = Legend::Changed;
-  }
+  legend = sl::enumIs(shared, "view.overlay", "error")       ? Legend::Error
+           : sl::enumIs(shared, "view.overlay", "aliasing")  ? Legend::Aliasing
+           : sl::enumIs(shared, "view.overlay", "warp-grid") ? Legend::WarpGrid
+           : sl::enumIs(shared, "view.overlay", "changed")   ? Legend::Changed
+                                                             : Legend::None;
   changedCount.reset();
   if (legend == Legend::Changed && stats.maskChange)
     changedCount = std::make_pair(stats.maskChange->changed, stats.maskChange->compared);

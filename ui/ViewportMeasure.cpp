@@ -12,17 +12,6 @@
 
 namespace sl::ui {
 
-namespace {
-/// Index of `name` in the enum declaration of the shared parameter `key`, or -1.
-int enumIndexOf(const sl::ParamSet& params, const char* key, const char* name) {
-  const sl::ParamDecl* d = params.find(key);
-  if (!d) return -1;
-  for (std::size_t i = 0; i < d->enumNames.size(); ++i)
-    if (d->enumNames[i] == name) return static_cast<int>(i);
-  return -1;
-}
-}  // namespace
-
 void ViewportWidget::updateLiveReferences(FrameOutcome& out) {
   std::string failure;
   if (auto done = liveMain_.takeFinished(&failure)) {
@@ -90,9 +79,7 @@ void ViewportWidget::applyError(std::uint64_t viewRevision, const SideError& mai
     Q_EMIT errorComputed(*mainErrorPct_);
     // The error overlay shows the reference just computed: draw it (unless paused, where the
     // frozen frame must stay the one that was measured).
-    if (shared_.has("view.overlay") &&
-        shared_.getInt("view.overlay") == enumIndexOf(shared_, "view.overlay", "error") && !paused_)
-      requestFrame();
+    if (sl::enumIs(shared_, "view.overlay", "error") && !paused_) requestFrame();
   } else {
     Q_EMIT errorUnmeasured(errorUnmeasured_);
   }

@@ -159,4 +159,11 @@ std::optional<std::string> checkPowerOfTwo(const ParamSet& params, std::string_v
          (d ? " (" + describeRange(*d) + ")" : std::string());
 }
 
+bool enumIs(const ParamSet& params, std::string_view key, std::string_view name) {
+  const ParamDecl* d = params.find(key);
+  if (!d) return false;
+  const int v = params.getInt(key);
+  return v >= 0 && v < int(d->enumNames.size()) && d->enumNames[std::size_t(v)] == name;
+}
+
 }  // namespace sl

@@ -83,6 +83,10 @@ class ParamSet {
   unsigned revision_ = 0;
 };
 
+/// Whether the Enum parameter `key` of `params` is set to the value named `name` (false when
+/// `params` has no such key or the enum no such name).
+bool enumIs(const ParamSet& params, std::string_view key, std::string_view name);
+
 /// For a technique's checkParams: "KEY = V must be a power of two (RANGE)" when the integer
 /// parameter `key` of `params` is not one, else nothing.
 std::optional<std::string> checkPowerOfTwo(const ParamSet& params, std::string_view key);

@@ -13,6 +13,7 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include "LessonController.h"
 #include "MainWindow.h"
 #include "Theme.h"
 #include "ViewportWidget.h"
@@ -181,17 +182,26 @@ void PresenterMode::arrangeDocks() {
   // the user chose stands alone); split before anything is tabbed behind it (Qt adds a dock
   // split off a tabbed one as one more tab).
   QList<QDockWidget*> column{big_};
+  // The lesson's strip (its few parameters) at the bottom of the column, on every screen:
+  // first, so that the panels below the big one are only added where they still fit with it.
+  QDockWidget* strip = fullPanel_ ? nullptr : w_.lessons()->stripDock();
+  if (strip == big_) strip = nullptr;
+  if (strip) {
+    w_.addDockWidget(Qt::RightDockWidgetArea, strip);
+    w_.splitDockWidget(big_, strip, Qt::Vertical);
+    strip->show();
+  }
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
   const int screenHeight = screen ? screen->geometry().height() : 0;
   if (!fullPanel_ && chosen_.isEmpty() && big_->objectName() == lessonPanel_ &&
       screenHeight >= kMinScreenHeightForPanelsBelow)
     for (const QString& name : lessonOthers_) {
       QDockWidget* dock = w_.findChild<QDockWidget*>(name);
-      if (!dock || dock == big_ || dock == w_.lessonDock() || dock == w_.paramDock() ||
-          column.size() > kMaxPanelsBelow)
+      if (!dock || dock == big_ || dock == strip || dock == w_.lessonDock() ||
+          dock == w_.paramDock() || column.size() > kMaxPanelsBelow)
         continue;
       w_.addDockWidget(Qt::RightDockWidgetArea, dock);
-      w_.splitDockWidget(column.back(), dock, Qt::Vertical);
+      w_.splitDockWidget(column.back(), dock, Qt::Vertical);  // above the strip
       dock->show();
       w_.layout()->activate();
       // Only where the window still fits the screen; else one more tab behind the big panel.
@@ -208,11 +218,16 @@ void PresenterMode::arrangeDocks() {
     behind->show();
   }
   big_->raise();
-  if (column.size() > 1) {  // the big panel keeps most of the height
-    QList<int> heights{int(w_.height() * 0.6)};
-    for (int i = 1; i < column.size(); ++i) heights << int(w_.height() * 0.4 / (column.size() - 1));
-    w_.resizeDocks(column, heights, Qt::Vertical);
+  // The strip as tall as its rows; of the rest the big panel keeps most.
+  const int stripHeight = strip ? strip->sizeHint().height() : 0;
+  const int rest = w_.height() - stripHeight;
+  QList<int> heights{column.size() > 1 ? int(rest * 0.6) : rest};
+  for (int i = 1; i < column.size(); ++i) heights << int(rest * 0.4 / (column.size() - 1));
+  if (strip) {
+    column << strip;
+    heights << stripHeight;
   }
+  if (column.size() > 1) w_.resizeDocks(column, heights, Qt::Vertical);
   w_.layout()->invalidate();
   w_.layout()->activate();
   sizeBigDock();

@@ -2,7 +2,8 @@
 // Fonts scaled to the screen (Theme: presenterBodyPixelSize), the high-contrast theme, the
 // window filling the screen, ONE big publication panel beside the view (the one the user
 // picked in View > Presenter panel, else the first visible panel that shows the technique's
-// data; the Lesson and Parameters tabbed behind it, every other dock hidden), a ring
+// data; the Lesson and Parameters tabbed behind it, the lesson's strip of parameters under
+// it, every other dock hidden), a ring
 // following the pointer over the view. Leaving it restores font, theme, docks and geometry.
 // The big panel full screen (F12, View > Big panel full screen; presenter mode turns on with
 // it): the view, the tool bars, the status line and the panels tabbed behind are hidden and

@@ -301,15 +301,9 @@ int ImageView::wrappedHeight(const QString& text) const {
          4;
 }
 
-bool ImageView::captionWraps() const {
-  // Wrapped while that leaves the image most of the widget; a caption that would take more
-  // than a third of it (a long sentence over a small view) stays on one line, elided.
-  return wrappedHeight(caption_) <= std::max(fontMetrics().height() + 4, height() / 3);
-}
-
 int ImageView::captionHeight() const {
-  if (caption_.isEmpty()) return 0;
-  return captionWraps() ? wrappedHeight(caption_) : fontMetrics().height() + 4;
+  // Wrapped to the widget's width, however many lines: its numbers are what a lesson shows.
+  return caption_.isEmpty() ? 0 : wrappedHeight(caption_);
 }
 
 int ImageView::readoutHeight(const QString& readout) const {
@@ -346,13 +340,8 @@ void ImageView::paintEvent(QPaintEvent*) {
   const int line = fm.height() + 4;
   if (!caption_.isEmpty()) {  // wrapped, never cut: the numbers in it are what a lesson shows
     p.setPen(pal.color(QPalette::Text));
-    if (captionWraps())
-      p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
-                 Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_);
-    else
-      p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
-                 Qt::AlignLeft | Qt::AlignVCenter,
-                 fm.elidedText(caption_, Qt::ElideRight, width() - 2 * kMargin));
+    p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
+               Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_);
   }
   const QRectF area = viewArea();
   if (image_.isNull()) {
@@ -535,11 +524,10 @@ QString PlotWidget::fullTitle() const {
 }
 
 int PlotWidget::titleHeight() const {
-  // Wrapped while the plot keeps two thirds of the widget; else one line, elided.
+  // Wrapped to the widget's width, however many lines: never elided (its numbers are read).
   const QRect bounds = fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 12), 100000),
                                                   Qt::TextWordWrap | Qt::AlignLeft, fullTitle());
-  const int line = fontMetrics().height();
-  return bounds.height() <= std::max(line, height() / 3) ? std::max(line, bounds.height()) : line;
+  return std::max(fontMetrics().height(), bounds.height());
 }
 
 QRectF PlotWidget::plotArea() const {
@@ -598,12 +586,8 @@ void PlotWidget::paintEvent(QPaintEvent*) {
   const QFontMetrics fm = fontMetrics();
   const int line = fm.height();
   p.setPen(pal.color(QPalette::Text));
-  if (titleHeight() > line)
-    p.drawText(QRect(6, 2, width() - 12, titleHeight() + 4),
-               Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, fullTitle());
-  else
-    p.drawText(QRect(6, 2, width() - 12, line + 4), Qt::AlignLeft | Qt::AlignVCenter,
-               fm.elidedText(fullTitle(), Qt::ElideRight, width() - 12));
+  p.drawText(QRect(6, 2, width() - 12, titleHeight() + 4),
+             Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, fullTitle());
 
   bool any = false;
   for (const Series& s : series_) any = any || !s.points.empty();

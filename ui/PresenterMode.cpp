@@ -193,6 +193,7 @@ void PresenterMode::arrangeDocks() {
   }
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
   const int screenHeight = screen ? screen->geometry().height() : 0;
+  int belowHeight = strip ? strip->sizeHint().height() : 0;  // what stands under the big panel
   if (!fullPanel_ && chosen_.isEmpty() && big_->objectName() == lessonPanel_ &&
       screenHeight >= kMinScreenHeightForPanelsBelow)
     for (const QString& name : lessonOthers_) {
@@ -204,11 +205,16 @@ void PresenterMode::arrangeDocks() {
       w_.splitDockWidget(column.back(), dock, Qt::Vertical);  // above the strip
       dock->show();
       w_.layout()->activate();
-      // Only where the window still fits the screen; else one more tab behind the big panel.
-      if (screenHeight > 0 && w_.minimumSizeHint().height() > screenHeight) {
+      // Only where the window still fits the screen and the big panel keeps its share of the
+      // height (what stands under it, at its least, takes the rest); else one more tab behind
+      // the big panel.
+      const int under = belowHeight + dock->minimumSizeHint().height();
+      if (screenHeight > 0 && (w_.minimumSizeHint().height() > screenHeight ||
+                               under > screenHeight * (1.0 - kMinBigPanelShare))) {
         w_.tabifyDockWidget(big_, dock);
         continue;
       }
+      belowHeight = under;
       column << dock;
     }
   for (QDockWidget* behind : {w_.lessonDock(), w_.paramDock()}) {

@@ -293,7 +293,7 @@ TimingPanel::TimingPanel(QWidget* parent) : QWidget(parent) {
   // Every column as wide as its widest cell (a narrow box scrolls sideways): a resource's
   // name or its bytes are never elided.
   memory_->setTextElideMode(Qt::ElideNone);
-  memory_->header()->setStretchLastSection(true);
+  memory_->header()->setStretchLastSection(false);
   memory_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
   memory_->header()->setMinimumSectionSize(60);
   memoryLayout->addWidget(memory_);

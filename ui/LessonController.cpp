@@ -445,8 +445,10 @@ QDockWidget* LessonController::stripDock() const {
 void LessonController::rebuildStrip() {
   if (!strip_) return;
   std::vector<ParamPanel::StripRow> rows;
+  // Only while the Parameters panel edits the renderer's ParamSets: it is cleared before
+  // they are destroyed, and so is the strip then.
   sl::Renderer* r = w_.viewport()->renderer();
-  if (r && index_ >= 0 && index_ < static_cast<int>(lessons_.size()))
+  if (r && w_.paramPanel()->bound() && index_ >= 0 && index_ < static_cast<int>(lessons_.size()))
     if (const auto& layout = lessons_[static_cast<std::size_t>(index_)].preset.layout)
       for (const std::string& key : layout->strip)
         rows.push_back({r->params().has(key) ? &r->params() : &r->rendererParams(), key});

@@ -47,6 +47,8 @@ class ParamPanel : public QWidget {
   int setStrip(const std::vector<StripRow>& rows);
   /// Drops every reference into the ParamSets (call before they are destroyed).
   void clear();
+  /// Whether the panel edits ParamSets now (built, not cleared).
+  bool bound() const { return !refreshers_.empty(); }
   /// Re-reads every value (after changes made elsewhere, e.g. --set or presets).
   void refreshValues();
 

@@ -224,11 +224,14 @@ void PresenterMode::arrangeDocks() {
     behind->show();
   }
   big_->raise();
-  // The strip as tall as its rows; of the rest the big panel keeps most.
+  // The big panel keeps its share of the height; the strip, as tall as its rows, comes out of
+  // what the panels under it share.
   const int stripHeight = strip ? strip->sizeHint().height() : 0;
-  const int rest = w_.height() - stripHeight;
-  QList<int> heights{column.size() > 1 ? int(rest * 0.6) : rest};
-  for (int i = 1; i < column.size(); ++i) heights << int(rest * 0.4 / (column.size() - 1));
+  const int bigHeight =
+      column.size() > 1 ? int(w_.height() * kMinBigPanelShare) : w_.height() - stripHeight;
+  QList<int> heights{bigHeight};
+  for (int i = 1; i < column.size(); ++i)
+    heights << (w_.height() - bigHeight - stripHeight) / int(column.size() - 1);
   if (strip) {
     column << strip;
     heights << stripHeight;

@@ -60,10 +60,11 @@ class PresenterMode : public QObject {
   /// Panels under the big one only on screens at least this tall: on smaller ones (1280x800)
   /// two panels at the presenter's font do not fit (their content grows once data arrives).
   static constexpr int kMinScreenHeightForPanelsBelow = 1000;
-  /// Share of the screen's height the big panel keeps at least: a panel the layout names is
-  /// shown under it only while the panels there (at their minimum height) and the lesson's
-  /// strip leave it that much; else it is tabbed behind it.
-  static constexpr double kMinBigPanelShare = 0.5;
+  /// Share of the height the big panel keeps when panels stand under it (they and the lesson's
+  /// strip share the rest): a panel the layout names is shown under it only while the panels
+  /// there (at their minimum height) and the strip fit in that rest of the screen's height;
+  /// else it is tabbed behind it.
+  static constexpr double kMinBigPanelShare = 0.6;
   /// Share of the window's width the big panel takes.
   static constexpr double kPanelShare = 0.42;
 

@@ -361,7 +361,12 @@ void ImageView::paintEvent(QPaintEvent*) {
 
   if (legend_) {
     const int legendW = legendWidth();
-    const QRectF bar(area.right() + 8, area.top() + line, 12, area.height() - 2 * line);
+    // The title wraps within the legend's width (never elided); the bar starts under it.
+    const int titleH =
+        std::max(line, fm.boundingRect(QRect(0, 0, std::max(1, legendW - 4), 100000),
+                                       Qt::TextWordWrap | Qt::AlignLeft, legendTitle_)
+                           .height());
+    const QRectF bar(area.right() + 8, area.top() + titleH, 12, area.height() - titleH - line);
     if (bar.height() > 20) {
       const int steps = static_cast<int>(bar.height());
       for (int i = 0; i < steps; ++i) {
@@ -380,9 +385,8 @@ void ImageView::paintEvent(QPaintEvent*) {
         p.drawText(QRectF(bar.right() + 5, y - line / 2.0, legendW - 26, line),
                    Qt::AlignLeft | Qt::AlignVCenter, legendTick(t));
       }
-      p.drawText(QRectF(area.right() + 4, area.top(), legendW - 4, line),
-                 Qt::AlignLeft | Qt::AlignVCenter,
-                 fm.elidedText(legendTitle_, Qt::ElideRight, legendW - 4));
+      p.drawText(QRectF(area.right() + 4, area.top(), legendW - 4, titleH),
+                 Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, legendTitle_);
     }
   }
 

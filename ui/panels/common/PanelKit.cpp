@@ -290,7 +290,11 @@ int ImageView::legendWidth() const {
   int w = fm.horizontalAdvance(legendTitle_);
   for (int i = 0; i < 5; ++i)  // bar (26 px) + tick label
     w = std::max(w, 26 + fm.horizontalAdvance(legendTick(i / 4.0f)));
-  return std::min(w + 6, kMaxLegendWidth);
+  // Past the limit the title wraps at its spaces: never narrower than its longest word.
+  int longestWord = 0;
+  for (const QString& word : legendTitle_.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+    longestWord = std::max(longestWord, fm.horizontalAdvance(word));
+  return std::max(std::min(w + 6, kMaxLegendWidth), longestWord + 8);
 }
 
 int ImageView::wrappedHeight(const QString& text) const {

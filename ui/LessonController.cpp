@@ -16,6 +16,7 @@
 #include "LaunchOptions.h"
 #include "MainWindow.h"
 #include "PassStepper.h"
+#include "PresenterMode.h"
 #include "SessionFiles.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
@@ -121,6 +122,30 @@ void LessonController::connectPanel(LessonPanel* panel) {
   connect(panel, &LessonPanel::restartRequested, this, [this] { apply(index_); });
   connect(panel, &LessonPanel::lessonChosen, this, [this](int index) { apply(index); });
   connect(panel, &LessonPanel::caseChosen, this, [this](int k) { apply(index_, k); });
+  // The strip: the Parameters panel's rows for the lesson's few keys. Both edit the same
+  // ParamSets; each refreshes the other, and the strip is rebuilt whenever the panel is (a
+  // new technique, a new renderer, presenter mode's font).
+  strip_ = new ParamPanel;
+  strip_->setObjectName(QStringLiteral("lessonStripPanel"));
+  stripDock_ = new QDockWidget(tr("Lesson controls"), &w_);
+  stripDock_->setObjectName(QStringLiteral("lessonStrip"));
+  stripDock_->setWidget(strip_);
+  stripDock_->setToolTip(
+      tr("The parameters this lesson's steps change (the same editors as in Parameters)"));
+  w_.addDockWidget(Qt::RightDockWidgetArea, stripDock_);
+  stripDock_->hide();
+  ParamPanel* params = w_.paramPanel();
+  connect(params, &ParamPanel::rebuilt, this, &LessonController::rebuildStrip);
+  connect(params, &ParamPanel::paramChanged, strip_, &ParamPanel::refreshValues);
+  connect(strip_, &ParamPanel::paramChanged, this, [this, params](const QString& key) {
+    params->refreshValues();
+    if (key.isEmpty() || key == QLatin1String("view.overlay")) w_.teaching()->syncOverlayCombo();
+    if (w_.viewport()->paused()) w_.viewport()->stepFrame();  // shown even when paused
+    w_.viewport()->requestFrame();
+  });
+  connect(strip_, &ParamPanel::editRefused, this,
+          [this](const QString& message) { w_.report(message); });
+
   QStringList titles;
   for (const Lesson& l : lessons_) titles << QString::fromStdString(l.preset.title);
   panel->setLessonTitles(titles);
@@ -315,7 +340,9 @@ void LessonController::apply(int index, int caseIndex) {
       w.teaching()->setSplitTechnique(QString::fromStdString(p.compare->technique),
                                       p.compare->params);
   }
+  rebuildStrip();  // before the layout: presenter mode places the strip with the docks
   if (lesson.layout) w.sessions()->applyLayout(*lesson.layout, &problems);  // a session: its docks
+  placeStrip();
   w.docks().resetHistory();
 
   w.lessonPanel()->showLesson(&lessons_[static_cast<std::size_t>(index)], index,
@@ -349,7 +376,9 @@ void LessonController::queueSettle() {
     if (index_ >= 0)
       if (const auto& layout = lessons_[static_cast<std::size_t>(index_)].preset.layout) {
         QStringList problems;
+        rebuildStrip();
         w_.sessions()->applyLayout(*layout, &problems);
+        placeStrip();
       }
     settle();
     settleQueued_ = false;  // only now: a script or grab must not start inside settle()
@@ -427,6 +456,40 @@ void LessonController::settleFrame() {
                         "parameters.")
                          .arg(settleFrames_));
   w.viewport()->requestFrame();
+}
+
+QDockWidget* LessonController::stripDock() const {
+  return stripRows_ > 0 ? stripDock_ : nullptr;
+}
+
+void LessonController::rebuildStrip() {
+  if (!strip_) return;
+  std::vector<ParamPanel::StripRow> rows;
+  // Only while the Parameters panel edits the renderer's ParamSets: it is cleared before
+  // they are destroyed, and so is the strip then.
+  sl::ViewSide* r = w_.viewport()->mainSide();
+  if (r && w_.paramPanel()->bound() && index_ >= 0 && index_ < static_cast<int>(lessons_.size()))
+    if (const auto& layout = lessons_[static_cast<std::size_t>(index_)].preset.layout)
+      for (const std::string& key : layout->strip)
+        rows.push_back({r->params().has(key) ? &r->params() : &r->rendererParams(), key});
+  stripRows_ = rows.empty() ? 0 : strip_->setStrip(rows);
+  if (stripRows_ == 0) {
+    strip_->clear();
+    stripDock_->hide();
+  }
+}
+
+void LessonController::placeStrip() {
+  if (!stripDock_ || w_.presenter()->active()) return;  // presenter mode: arrangeDocks
+  if (!stripDock()) {
+    stripDock_->hide();
+    return;
+  }
+  // Under the right column (the Lesson dock's side), as tall as its rows.
+  stripDock_->setFloating(false);
+  w_.addDockWidget(Qt::RightDockWidgetArea, stripDock_, Qt::Vertical);
+  stripDock_->show();
+  w_.resizeDocks({stripDock_}, {stripDock_->sizeHint().height()}, Qt::Vertical);
 }
 
 QString LessonController::bannerTitle() const {

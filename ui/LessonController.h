@@ -11,11 +11,13 @@
 #include "panels/common/LessonPanel.h"
 
 class QAction;
+class QDockWidget;
 class QMenu;
 
 namespace sl::ui {
 
 class MainWindow;
+class ParamPanel;
 
 class LessonController : public QObject {
   Q_OBJECT
@@ -29,8 +31,16 @@ class LessonController : public QObject {
   /// written), opened like a lesson (its scene, technique and parameters; its text in the
   /// Lesson dock).
   void createPapersMenu(QMenu* menu);
-  /// Connects the Lesson dock's buttons (after the dock exists).
+  /// Connects the Lesson dock's buttons (after the dock exists), and creates the lesson's
+  /// strip dock (after the Parameters panel exists: the strip follows its rebuilds).
   void connectPanel(LessonPanel* panel);
+  /// The active lesson's strip ("layout": {"strip": [...]}: the parameters its steps change,
+  /// the Parameters panel's editors for just those): its dock while it shows at least one
+  /// row (a key the current technique lacks, after the user switched, is left out), else
+  /// null. Shown with the lesson: under the Lesson dock, in presenter mode under the big
+  /// panel (PresenterMode::arrangeDocks).
+  QDockWidget* stripDock() const;
+  ParamPanel* strip() const { return strip_; }
   /// A lesson by number, base name or preset path, and its case (0-based); false (reported)
   /// when none, or when the lesson has no such case.
   bool start(const QString& lesson, int caseIndex = 0);
@@ -102,6 +112,14 @@ class LessonController : public QObject {
   void showSettlingNote();
   QMetaObject::Connection settleConnection_;
   QString settleNote_;  ///< the Lesson dock's note before settling
+  ParamPanel* strip_ = nullptr;
+  QDockWidget* stripDock_ = nullptr;
+  int stripRows_ = 0;
+  /// The strip's rows for the active lesson and the renderer's current parameters.
+  void rebuildStrip();
+  /// Outside presenter mode: the strip's dock shown under the right column (hidden without
+  /// rows); presenter mode places it itself.
+  void placeStrip();
   bool settling_ = false, settleQueued_ = false, settled_ = true;
   int settleFrames_ = 0;
 };

@@ -13,6 +13,7 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include "LessonController.h"
 #include "MainWindow.h"
 #include "Theme.h"
 #include "ViewportWidget.h"
@@ -181,24 +182,39 @@ void PresenterMode::arrangeDocks() {
   // the user chose stands alone); split before anything is tabbed behind it (Qt adds a dock
   // split off a tabbed one as one more tab).
   QList<QDockWidget*> column{big_};
+  // The lesson's strip (its few parameters) at the bottom of the column, on every screen:
+  // first, so that the panels below the big one are only added where they still fit with it.
+  QDockWidget* strip = fullPanel_ ? nullptr : w_.lessons()->stripDock();
+  if (strip == big_) strip = nullptr;
+  if (strip) {
+    w_.addDockWidget(Qt::RightDockWidgetArea, strip);
+    w_.splitDockWidget(big_, strip, Qt::Vertical);
+    strip->show();
+  }
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
   const int screenHeight = screen ? screen->geometry().height() : 0;
+  int belowHeight = strip ? strip->sizeHint().height() : 0;  // what stands under the big panel
   if (!fullPanel_ && chosen_.isEmpty() && big_->objectName() == lessonPanel_ &&
       screenHeight >= kMinScreenHeightForPanelsBelow)
     for (const QString& name : lessonOthers_) {
       QDockWidget* dock = w_.findChild<QDockWidget*>(name);
-      if (!dock || dock == big_ || dock == w_.lessonDock() || dock == w_.paramDock() ||
-          column.size() > kMaxPanelsBelow)
+      if (!dock || dock == big_ || dock == strip || dock == w_.lessonDock() ||
+          dock == w_.paramDock() || column.size() > kMaxPanelsBelow)
         continue;
       w_.addDockWidget(Qt::RightDockWidgetArea, dock);
-      w_.splitDockWidget(column.back(), dock, Qt::Vertical);
+      w_.splitDockWidget(column.back(), dock, Qt::Vertical);  // above the strip
       dock->show();
       w_.layout()->activate();
-      // Only where the window still fits the screen; else one more tab behind the big panel.
-      if (screenHeight > 0 && w_.minimumSizeHint().height() > screenHeight) {
+      // Only where the window still fits the screen and the big panel keeps its share of the
+      // height (what stands under it, at its least, takes the rest); else one more tab behind
+      // the big panel.
+      const int under = belowHeight + dock->minimumSizeHint().height();
+      if (screenHeight > 0 && (w_.minimumSizeHint().height() > screenHeight ||
+                               under > screenHeight * (1.0 - kMinBigPanelShare))) {
         w_.tabifyDockWidget(big_, dock);
         continue;
       }
+      belowHeight = under;
       column << dock;
     }
   for (QDockWidget* behind : {w_.lessonDock(), w_.paramDock()}) {
@@ -208,11 +224,19 @@ void PresenterMode::arrangeDocks() {
     behind->show();
   }
   big_->raise();
-  if (column.size() > 1) {  // the big panel keeps most of the height
-    QList<int> heights{int(w_.height() * 0.6)};
-    for (int i = 1; i < column.size(); ++i) heights << int(w_.height() * 0.4 / (column.size() - 1));
-    w_.resizeDocks(column, heights, Qt::Vertical);
+  // The big panel keeps its share of the height; the strip, as tall as its rows, comes out of
+  // what the panels under it share.
+  const int stripHeight = strip ? strip->sizeHint().height() : 0;
+  const int bigHeight =
+      column.size() > 1 ? int(w_.height() * kMinBigPanelShare) : w_.height() - stripHeight;
+  QList<int> heights{bigHeight};
+  for (int i = 1; i < column.size(); ++i)
+    heights << (w_.height() - bigHeight - stripHeight) / int(column.size() - 1);
+  if (strip) {
+    column << strip;
+    heights << stripHeight;
   }
+  if (column.size() > 1) w_.resizeDocks(column, heights, Qt::Vertical);
   w_.layout()->invalidate();
   w_.layout()->activate();
   sizeBigDock();

@@ -2,7 +2,8 @@
 // Fonts scaled to the screen (Theme: presenterBodyPixelSize), the high-contrast theme, the
 // window filling the screen, ONE big publication panel beside the view (the one the user
 // picked in View > Presenter panel, else the first visible panel that shows the technique's
-// data; the Lesson and Parameters tabbed behind it, every other dock hidden), a ring
+// data; the Lesson and Parameters tabbed behind it, the lesson's strip of parameters under
+// it, every other dock hidden), a ring
 // following the pointer over the view. Leaving it restores font, theme, docks and geometry.
 // The big panel full screen (F12, View > Big panel full screen; presenter mode turns on with
 // it): the view, the tool bars, the status line and the panels tabbed behind are hidden and
@@ -59,6 +60,11 @@ class PresenterMode : public QObject {
   /// Panels under the big one only on screens at least this tall: on smaller ones (1280x800)
   /// two panels at the presenter's font do not fit (their content grows once data arrives).
   static constexpr int kMinScreenHeightForPanelsBelow = 1000;
+  /// Share of the height the big panel keeps when panels stand under it (they and the lesson's
+  /// strip share the rest): a panel the layout names is shown under it only while the panels
+  /// there (at their minimum height) and the strip fit in that rest of the screen's height;
+  /// else it is tabbed behind it.
+  static constexpr double kMinBigPanelShare = 0.6;
   /// Share of the window's width the big panel takes.
   static constexpr double kPanelShare = 0.42;
 

@@ -97,7 +97,7 @@ PresetCompare parseCompare(const JsonReader& r, const json& c, const std::string
 }
 
 PresetLayout parseLayout(const JsonReader& r, const json& l) {
-  r.onlyKeys(l, "layout", {"docks", "state", "large"});
+  r.onlyKeys(l, "layout", {"docks", "state", "large", "strip"});
   PresetLayout out;
   if (const json* docks = JsonReader::member(l, "docks")) {
     r.requireArray(*docks, "layout.docks");
@@ -124,7 +124,43 @@ PresetLayout parseLayout(const JsonReader& r, const json& l) {
       std::find(out.docks.begin(), out.docks.end(), out.large) == out.docks.end())
     r.fail("layout.large",
            "names '" + quoteText(out.large, 60) + "', which \"docks\" does not list");
+  if (const json* strip = JsonReader::member(l, "strip")) {
+    r.requireArray(*strip, "layout.strip");
+    if (strip->empty() || strip->size() > kMaxPresetStripKeys)
+      r.fail("layout.strip", "expected 1 to " + std::to_string(kMaxPresetStripKeys) +
+                                 " parameter keys, got " + std::to_string(strip->size()));
+    for (std::size_t i = 0; i < strip->size(); ++i) {
+      const std::string key = r.string((*strip)[i], jsonPath("layout.strip", i));
+      if (std::find(out.strip.begin(), out.strip.end(), key) != out.strip.end())
+        r.fail(jsonPath("layout.strip", i), "'" + quoteText(key, 60) + "' is listed twice");
+      out.strip.push_back(key);
+    }
+  }
   return out;
+}
+
+/// Every key of the layout's strip is a parameter of each case's technique (a lesson without
+/// cases: its own) or a shared view parameter; the error names the case and the key. A
+/// preset without a technique applies to the current one: its keys are checked when shown.
+void checkStrip(const JsonReader& r, const Preset& p) {
+  std::vector<const Preset*> shown;
+  if (p.cases.empty()) shown.push_back(&p);
+  for (const Preset& c : p.cases) shown.push_back(&c);
+  const ParamSet shared(rendererParamDecls());
+  for (std::size_t i = 0; i < p.layout->strip.size(); ++i) {
+    const std::string& key = p.layout->strip[i];
+    for (std::size_t k = 0; k < shown.size(); ++k) {
+      const Preset& c = *shown[k];
+      if (c.technique.empty() || shared.has(key)) continue;
+      const TechniqueInfo* info = Renderer::findTechnique(c.technique);  // checked when read
+      if (info && ParamSet(info->params).has(key)) continue;
+      r.fail(jsonPath("layout.strip", i),
+             (p.cases.empty()
+                  ? std::string()
+                  : "case " + std::to_string(k + 1) + " ('" + quoteText(c.title, 60) + "'): ") +
+                 "technique '" + c.technique + "' has no parameter '" + quoteText(key, 60) + "'");
+    }
+  }
 }
 
 /// The fields a preset and each of its cases share, at `at` ("" for the preset itself,
@@ -227,6 +263,7 @@ Preset parsePreset(const JsonReader& r, const json& j) {
       p.cases.push_back(std::move(one));
     }
   }
+  if (p.layout && !p.layout->strip.empty()) checkStrip(r, p);
   return p;
 }
 
@@ -265,6 +302,7 @@ nlohmann::json toJson(const Preset& p) {
   if (p.layout) {
     j["layout"] = {{"docks", p.layout->docks}, {"state", p.layout->state}};
     if (!p.layout->large.empty()) j["layout"]["large"] = p.layout->large;
+    if (!p.layout->strip.empty()) j["layout"]["strip"] = p.layout->strip;
   }
   // Each case whole: read back on top of the preset, it gives the same case.
   for (const Preset& c : p.cases) j["cases"].push_back(toJson(c));

@@ -18,6 +18,8 @@ namespace sl {
 /// Limits on a session's layout (the window has ~20 docks; Qt's saved state is ~2 KiB).
 inline constexpr std::size_t kMaxPresetLayoutDocks = 64;
 inline constexpr std::size_t kMaxPresetLayoutStateBytes = 64 * 1024;  ///< base64 text
+/// At most this many parameters in a lesson's strip ("layout": {"strip": [...]}).
+inline constexpr std::size_t kMaxPresetStripKeys = 3;
 /// At most this many cases in one lesson ("cases").
 inline constexpr std::size_t kMaxPresetCases = 8;
 /// Limits on a lesson's text: the title reaches the window's menus and banner (the 300-byte
@@ -36,11 +38,14 @@ struct PresetCompare {
 
 /// The window's layout: the object names of the visible docks, and QMainWindow::saveState
 /// as base64 (either may be empty), and the one dock a lesson shows large ("": none). Dock
-/// names are checked by the window, not here.
+/// names are checked by the window, not here. `strip`: the 1..kMaxPresetStripKeys parameters
+/// a lesson's steps change, shown as a compact strip with the lesson; each key is checked at
+/// load against the technique of every case (or the shared view parameters).
 struct PresetLayout {
   std::vector<std::string> docks;
   std::string state;
-  std::string large;  ///< a dock of `docks` given most of its side of the window
+  std::string large;               ///< a dock of `docks` given most of its side of the window
+  std::vector<std::string> strip;  ///< parameter keys, in the strip's order
   bool operator==(const PresetLayout&) const = default;
 };
 
@@ -53,7 +58,7 @@ struct Preset {
   std::optional<Camera> camera;
   std::optional<Light> light;            ///< core/LightJson: {"type", ...}
   std::optional<PresetCompare> compare;  ///< "compare": {"technique", "params"} (sessions)
-  std::optional<PresetLayout> layout;    ///< "layout": {"docks", "state", "large"}
+  std::optional<PresetLayout> layout;    ///< "layout": {"docks", "state", "large", "strip"}
   /// A lesson told in cases ("cases": 2..kMaxPresetCases objects with "title" and
   /// "explanation" and any of scene, technique, params, camera, light, compare): each a
   /// complete preset, this one's fields with the case's on top ("params" replaces, it does

@@ -10,7 +10,9 @@
 #include <fstream>
 #include <string>
 
+#include "algo/Params.h"
 #include "core/Preset.h"
+#include "core/Renderer.h"
 
 namespace sl {
 namespace {
@@ -138,6 +140,33 @@ TEST(PresetSession, EveryLessonLoadsAndRoundTrips) {
   EXPECT_GE(count, 10);
 }
 
+// A lesson's strip shows each parameter under its label: the lesson's texts name it so.
+TEST(PresetSession, EveryLessonStripIsNamedInItsTexts) {
+  const fs::path lessons = fs::path(SHADOWLAB_TEST_DATA) / ".." / ".." / "scenes" / "lessons";
+  int withStrip = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(lessons)) {
+    if (e.path().extension() != ".json") continue;
+    std::string error;
+    const std::optional<Preset> lesson = loadPreset(e.path(), &error);
+    ASSERT_TRUE(lesson) << error;
+    if (!lesson->layout || lesson->layout->strip.empty()) continue;
+    ++withStrip;
+    std::string texts = lesson->explanation;
+    for (const Preset& c : lesson->cases) texts += "\n" + c.explanation;
+    const TechniqueInfo* info = Renderer::findTechnique(lesson->technique);
+    ASSERT_NE(info, nullptr) << e.path();
+    const ParamSet own(info->params), shared(rendererParamDecls());
+    for (const std::string& key : lesson->layout->strip) {
+      const ParamDecl* decl = own.has(key) ? own.find(key) : shared.find(key);
+      ASSERT_NE(decl, nullptr) << e.path() << ": " << key;
+      EXPECT_NE(texts.find(decl->label), std::string::npos)
+          << e.path().filename() << ": the strip shows '" << decl->label
+          << "', which no text of the lesson names";
+    }
+  }
+  EXPECT_GE(withStrip, 12);
+}
+
 TEST(PresetSession, BadCompareIsRefusedNamingThePath) {
   EXPECT_EQ(loadError("c1.json", R"({"compare": {"technique": "rtw-bakward"}})")
                 .rfind("compare.technique: unknown technique 'rtw-bakward' (known: ", 0),
@@ -196,9 +225,43 @@ TEST(PresetSession, BadLayoutIsRefusedNamingThePath) {
   EXPECT_EQ(loadError("l6.json", R"({"layout": {"state": ")" + big + "\"}}"),
             "layout.state: is 65540 bytes, over the limit of 65536 (kMaxPresetLayoutStateBytes)");
   EXPECT_EQ(loadError("l7.json", R"({"layout": {"docks": [], "size": 3}})"),
-            "layout.size: unknown key 'size' (known: docks, state, large)");
+            "layout.size: unknown key 'size' (known: docks, state, large, strip)");
   EXPECT_EQ(loadError("l8.json", R"({"layout": {"docks": ["lesson"], "large": "timing"}})"),
             "layout.large: names 'timing', which \"docks\" does not list");
+}
+
+// A lesson's strip: its keys are parameters of every case's technique (or shared view ones),
+// at most three, none twice; the error names the case and the key.
+TEST(PresetSession, LessonStripKeysAreCheckedPerCase) {
+  EXPECT_EQ(loadError("s1.json", R"({"technique": "uniform",
+      "layout": {"docks": ["lesson"], "strip": ["resolution", "blur.radius"]}})"),
+            "layout.strip[1]: technique 'uniform' has no parameter 'blur.radius'");
+  EXPECT_EQ(loadError("s2.json", R"({"technique": "da-rtw", "explanation": "a",
+      "layout": {"strip": ["pca.min_anisotropy"]},
+      "cases": [{"title": "turned", "explanation": "b"},
+                {"title": "uniform", "explanation": "c", "technique": "uniform",
+                 "params": {"resolution": 512}}]})"),
+            "layout.strip[0]: case 2 ('uniform'): technique 'uniform' has no parameter "
+            "'pca.min_anisotropy'");
+  EXPECT_EQ(loadError("s3.json", R"({"layout": {"strip": []}})"),
+            "layout.strip: expected 1 to 3 parameter keys, got 0");
+  EXPECT_EQ(loadError("s4.json", R"({"layout": {"strip": ["a", "b", "c", "d"]}})"),
+            "layout.strip: expected 1 to 3 parameter keys, got 4");
+  EXPECT_EQ(loadError("s5.json", R"({"layout": {"strip": ["resolution", "resolution"]}})"),
+            "layout.strip[1]: 'resolution' is listed twice");
+  EXPECT_EQ(loadError("s6.json", R"({"layout": {"strip": [2]}})"),
+            "layout.strip[0]: expected a string, got 2");
+  std::string error;
+  const auto ok = loadPreset(writeFile("s7.json", R"({"technique": "cascades",
+      "layout": {"docks": ["lesson"], "strip": ["split", "view.overlay"]}})"),
+                             &error);
+  ASSERT_TRUE(ok) << error;
+  ASSERT_TRUE(ok->layout);
+  EXPECT_EQ(ok->layout->strip, (std::vector<std::string>{"split", "view.overlay"}));
+  // Written back, read again: the same strip.
+  const auto again = loadPreset(writeFile("s8.json", presetToJson(*ok)), &error);
+  ASSERT_TRUE(again) << error;
+  EXPECT_EQ(again->layout, ok->layout);
 }
 
 // A lesson told in cases: each case is the preset with the case's fields on top; params

@@ -168,8 +168,10 @@ class GuiTests : public QObject {
   /// into DIR.
   bool lessonClaims(const QString& dir);
   void lessonLayout(const sl::PresetLayout& layout);
-  /// The lesson's window fits its screen, its text's live numbers are filled and no label cuts
-  /// its text.
+  /// A lesson's strip: in view and whole, an editor per key; none without one.
+  void lessonStrip(const sl::PresetLayout& layout);
+  /// The lesson's window fits its screen, its text's live numbers are filled, no label cuts
+  /// its text and no table cell or header in view is elided.
   void lessonOnScreen(const QString& name);
   void claimPerspective(const QString& text);
   void claimProjective(const QString& text);

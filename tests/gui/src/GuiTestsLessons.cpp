@@ -13,6 +13,9 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QHeaderView>
+#include <QTableView>
+#include <QTreeView>
 #include <QScreen>
 #include <QTextDocument>
 #include <QLabel>
@@ -29,6 +32,7 @@
 #include "ViewportWidget.h"
 #include "panels/common/LessonPanel.h"
 #include "panels/common/PanelKit.h"
+#include "panels/common/ParamPanel.h"
 #include "panels/rtw/CovariancePanel.h"
 #include "panels/rtw/RtwSettle.h"
 
@@ -153,6 +157,59 @@ void GuiTests::lessonOnScreen(const QString& name) {
   check(cut.isEmpty(), tr("%1: no label cut: %2")
                            .arg(name)
                            .arg(cut.isEmpty() ? tr("none") : cut.join(QStringLiteral("; "))));
+  // No table cell or header in view elided: each visible column as wide as its content.
+  QStringList elided;
+  for (const QAbstractItemView* view : w_.findChildren<QAbstractItemView*>()) {
+    if (!view->isVisible() || view->visibleRegion().isEmpty() || !view->model()) continue;
+    const auto* tree = qobject_cast<const QTreeView*>(view);
+    const auto* table = qobject_cast<const QTableView*>(view);
+    const QHeaderView* header = tree ? tree->header() : table ? table->horizontalHeader() : nullptr;
+    if (!header) continue;
+    for (int c = 0; c < view->model()->columnCount(view->rootIndex()); ++c) {
+      if (header->isSectionHidden(c)) continue;
+      const int width = header->sectionSize(c);
+      const int cells = view->sizeHintForColumn(c);  // the widest cell in view, as delegated
+      const int title = header->isVisible() ? header->sectionSizeHint(c) : 0;
+      if (std::max(cells, title) > width + 1)
+        elided << tr("'%1' column %2 (%3 px of %4 needed)")
+                      .arg(view->model()->headerData(c, Qt::Horizontal).toString().left(30))
+                      .arg(c)
+                      .arg(width)
+                      .arg(std::max(cells, title));
+    }
+  }
+  check(elided.isEmpty(),
+        tr("%1: no table cell or header elided: %2")
+            .arg(name)
+            .arg(elided.isEmpty() ? tr("none") : elided.join(QStringLiteral("; "))));
+}
+
+void GuiTests::lessonStrip(const sl::PresetLayout& layout) {
+  QDockWidget* dock = w_.lessons()->stripDock();
+  if (layout.strip.empty()) {
+    check(!dock || !dock->isVisible(), tr("a lesson without a strip shows none"));
+    return;
+  }
+  // The strip in view, whole: an editor per key, as tall as its rows (never scrolled).
+  QStringList keys, missing;
+  for (const std::string& key : layout.strip) {
+    keys << QString::fromStdString(key);
+    const QWidget* editor =
+        dock ? dock->findChild<QWidget*>(QStringLiteral("param:") + keys.back()) : nullptr;
+    if (!editor || !editor->isVisible() || editor->visibleRegion().isEmpty())
+      missing << keys.back();
+  }
+  const QWidget* rows = dock ? w_.lessons()->strip() : nullptr;
+  const int needed = rows ? rows->minimumSizeHint().height() : 0;
+  check(dock && dock->isVisible() && !dock->visibleRegion().isEmpty() && missing.isEmpty() &&
+            rows->height() >= needed,
+        tr("the lesson's strip (%1) is in view, whole: %2 px of the %3 its rows need%4")
+            .arg(keys.join(QStringLiteral(", ")))
+            .arg(rows ? rows->height() : 0)
+            .arg(needed)
+            .arg(missing.isEmpty()
+                     ? QString()
+                     : tr("; not in view: %1").arg(missing.join(QStringLiteral(", ")))));
 }
 
 void GuiTests::lessonLayout(const sl::PresetLayout& layout) {
@@ -168,9 +225,11 @@ void GuiTests::lessonLayout(const sl::PresetLayout& layout) {
     // (docs/user-guide/presenter.md): there only as a tab, not on screen.
     const bool tabBehind =
         w_.presenter()->active() && behind.contains(dock) && dock->visibleRegion().isEmpty();
-    if (!listed && dock->isVisible() && !tabBehind)
+    const bool strip = !layout.strip.empty() && dock == w_.lessons()->stripDock();
+    if (!listed && dock->isVisible() && !tabBehind && !strip)
       check(false, tr("dock %1 is hidden").arg(dock->objectName()));
   }
+  lessonStrip(layout);
   if (layout.large.empty()) return;
   QDockWidget* large = w_.findChild<QDockWidget*>(QString::fromStdString(layout.large));
   const Qt::DockWidgetArea area = large ? w_.dockWidgetArea(large) : Qt::NoDockWidgetArea;

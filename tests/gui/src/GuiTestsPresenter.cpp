@@ -26,6 +26,7 @@
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegend>
 
+#include "LessonController.h"
 #include "MainWindow.h"
 #include "PresenterMode.h"
 #include "GuiTests.h"
@@ -132,13 +133,20 @@ bool GuiTests::presenter(const QString& dir) {
             .arg(QApplication::palette().color(QPalette::WindowText).lightness())
             .arg(QApplication::palette().color(QPalette::Window).lightness()));
 
-  // 3. One big panel beside the view, its image as large as the space allows.
+  // 3. One big panel beside the view, its image as large as the space allows (with a lesson
+  // that has a strip, the strip under it, in view).
   QDockWidget* big = w_.presenter()->bigDock();
   const int visibleDocks = docksInView(w_);
-  check(big && big->isVisible() && visibleDocks == 1,
-        tr("one panel shown: %1 (%2 dock(s) in view)")
+  const QDockWidget* strip = w_.lessons()->stripDock();
+  const bool stripInView = strip && strip->isVisible() && !strip->visibleRegion().isEmpty();
+  const bool wantStrip = w_.lessons()->activePreset() && w_.lessons()->activePreset()->layout &&
+                         !w_.lessons()->activePreset()->layout->strip.empty();
+  check(big && big->isVisible() && visibleDocks == 1 + (stripInView ? 1 : 0) &&
+            stripInView == wantStrip,
+        tr("one panel shown: %1 (%2 dock(s) in view%3)")
             .arg(big ? big->windowTitle() : QStringLiteral("none"))
-            .arg(visibleDocks));
+            .arg(visibleDocks)
+            .arg(stripInView ? tr(": the lesson's strip under it") : QString()));
   const double imageSide = largestImage(big).side;
   const double wantedSide = 0.35 * sr.height();
   check(imageSide >= wantedSide, tr("the big panel's image is %1 px square (>= 35 % of the "

@@ -290,7 +290,11 @@ int ImageView::legendWidth() const {
   int w = fm.horizontalAdvance(legendTitle_);
   for (int i = 0; i < 5; ++i)  // bar (26 px) + tick label
     w = std::max(w, 26 + fm.horizontalAdvance(legendTick(i / 4.0f)));
-  return std::min(w + 6, kMaxLegendWidth);
+  // Past the limit the title wraps at its spaces: never narrower than its longest word.
+  int longestWord = 0;
+  for (const QString& word : legendTitle_.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+    longestWord = std::max(longestWord, fm.horizontalAdvance(word));
+  return std::max(std::min(w + 6, kMaxLegendWidth), longestWord + 8);
 }
 
 int ImageView::wrappedHeight(const QString& text) const {
@@ -301,15 +305,9 @@ int ImageView::wrappedHeight(const QString& text) const {
          4;
 }
 
-bool ImageView::captionWraps() const {
-  // Wrapped while that leaves the image most of the widget; a caption that would take more
-  // than a third of it (a long sentence over a small view) stays on one line, elided.
-  return wrappedHeight(caption_) <= std::max(fontMetrics().height() + 4, height() / 3);
-}
-
 int ImageView::captionHeight() const {
-  if (caption_.isEmpty()) return 0;
-  return captionWraps() ? wrappedHeight(caption_) : fontMetrics().height() + 4;
+  // Wrapped to the widget's width, however many lines: its numbers are what a lesson shows.
+  return caption_.isEmpty() ? 0 : wrappedHeight(caption_);
 }
 
 int ImageView::readoutHeight(const QString& readout) const {
@@ -346,13 +344,8 @@ void ImageView::paintEvent(QPaintEvent*) {
   const int line = fm.height() + 4;
   if (!caption_.isEmpty()) {  // wrapped, never cut: the numbers in it are what a lesson shows
     p.setPen(pal.color(QPalette::Text));
-    if (captionWraps())
-      p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
-                 Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_);
-    else
-      p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
-                 Qt::AlignLeft | Qt::AlignVCenter,
-                 fm.elidedText(caption_, Qt::ElideRight, width() - 2 * kMargin));
+    p.drawText(QRect(kMargin, kMargin, width() - 2 * kMargin, captionHeight()),
+               Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_);
   }
   const QRectF area = viewArea();
   if (image_.isNull()) {
@@ -372,7 +365,12 @@ void ImageView::paintEvent(QPaintEvent*) {
 
   if (legend_) {
     const int legendW = legendWidth();
-    const QRectF bar(area.right() + 8, area.top() + line, 12, area.height() - 2 * line);
+    // The title wraps within the legend's width (never elided); the bar starts under it.
+    const int titleH =
+        std::max(line, fm.boundingRect(QRect(0, 0, std::max(1, legendW - 4), 100000),
+                                       Qt::TextWordWrap | Qt::AlignLeft, legendTitle_)
+                           .height());
+    const QRectF bar(area.right() + 8, area.top() + titleH, 12, area.height() - titleH - line);
     if (bar.height() > 20) {
       const int steps = static_cast<int>(bar.height());
       for (int i = 0; i < steps; ++i) {
@@ -391,9 +389,8 @@ void ImageView::paintEvent(QPaintEvent*) {
         p.drawText(QRectF(bar.right() + 5, y - line / 2.0, legendW - 26, line),
                    Qt::AlignLeft | Qt::AlignVCenter, legendTick(t));
       }
-      p.drawText(QRectF(area.right() + 4, area.top(), legendW - 4, line),
-                 Qt::AlignLeft | Qt::AlignVCenter,
-                 fm.elidedText(legendTitle_, Qt::ElideRight, legendW - 4));
+      p.drawText(QRectF(area.right() + 4, area.top(), legendW - 4, titleH),
+                 Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, legendTitle_);
     }
   }
 
@@ -535,11 +532,10 @@ QString PlotWidget::fullTitle() const {
 }
 
 int PlotWidget::titleHeight() const {
-  // Wrapped while the plot keeps two thirds of the widget; else one line, elided.
+  // Wrapped to the widget's width, however many lines: never elided (its numbers are read).
   const QRect bounds = fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 12), 100000),
                                                   Qt::TextWordWrap | Qt::AlignLeft, fullTitle());
-  const int line = fontMetrics().height();
-  return bounds.height() <= std::max(line, height() / 3) ? std::max(line, bounds.height()) : line;
+  return std::max(fontMetrics().height(), bounds.height());
 }
 
 QRectF PlotWidget::plotArea() const {
@@ -598,12 +594,8 @@ void PlotWidget::paintEvent(QPaintEvent*) {
   const QFontMetrics fm = fontMetrics();
   const int line = fm.height();
   p.setPen(pal.color(QPalette::Text));
-  if (titleHeight() > line)
-    p.drawText(QRect(6, 2, width() - 12, titleHeight() + 4),
-               Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, fullTitle());
-  else
-    p.drawText(QRect(6, 2, width() - 12, line + 4), Qt::AlignLeft | Qt::AlignVCenter,
-               fm.elidedText(fullTitle(), Qt::ElideRight, width() - 12));
+  p.drawText(QRect(6, 2, width() - 12, titleHeight() + 4),
+             Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, fullTitle());
 
   bool any = false;
   for (const Series& s : series_) any = any || !s.points.empty();

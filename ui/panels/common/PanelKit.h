@@ -128,7 +128,6 @@ class ImageView : public QWidget {
   /// Heights of the caption (top) and the readout (bottom), wrapped to the widget's width:
   /// a caption or a readout is never cut, the image gets what is left.
   int captionHeight() const;
-  bool captionWraps() const;
   int wrappedHeight(const QString& text) const;  ///< `text` wrapped to the widget's width
   int readoutHeight(const QString& readout) const;
   QString legendTick(float t) const;  ///< the colour bar's label at t in [0, 1]

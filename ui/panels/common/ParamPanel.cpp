@@ -140,6 +140,8 @@ void ParamPanel::clear() {
   placeholder->setAlignment(Qt::AlignCenter);
   placeholder->setEnabled(false);
   scroll_->setWidget(placeholder);  // deletes the previous content
+  scroll_->setMinimumHeight(0);
+  Q_EMIT rebuilt();
 }
 
 void ParamPanel::setSections(std::vector<Section> sections) {
@@ -152,7 +154,29 @@ void ParamPanel::setSections(std::vector<Section> sections) {
     if (section.params) layout->addWidget(buildSection(section));
   layout->addStretch(1);
   scroll_->setWidget(content);
+  scroll_->setMinimumHeight(0);
   refreshValues();
+  Q_EMIT rebuilt();
+}
+
+int ParamPanel::setStrip(const std::vector<StripRow>& rows) {
+  refreshers_.clear();
+  auto* content = new QWidget;
+  auto* grid = new QGridLayout(content);
+  grid->setContentsMargins(8, 4, 6, 4);
+  grid->setHorizontalSpacing(6);
+  grid->setVerticalSpacing(4);
+  grid->setColumnStretch(1, 1);
+  int row = 0;
+  for (const StripRow& r : rows)
+    if (r.params)
+      if (const sl::ParamDecl* decl = r.params->find(r.key))
+        buildRow(*r.params, *decl, grid, row++);
+  scroll_->setWidget(content);
+  // As tall as its rows: a strip is never scrolled (a cut row would hide a control).
+  scroll_->setMinimumHeight(content->sizeHint().height());
+  refreshValues();
+  return row;
 }
 
 void ParamPanel::refreshValues() {

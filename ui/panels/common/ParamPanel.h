@@ -1,9 +1,12 @@
 // The Parameters panel: generated from ParamDecls (one row per parameter, group boxes by
 // `group`, an editor by type, help as tooltip, reset buttons). Every edit goes through
 // ParamSet::set, so the declaration's range is the only range; refusals are reported.
+// The same rows make a lesson's compact strip (setStrip): just the few parameters its steps
+// change, without titles or group boxes.
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include <QString>
@@ -32,12 +35,26 @@ class ParamPanel : public QWidget {
 
   /// Rebuilds the panel for `sections` (empty: shows a placeholder).
   void setSections(std::vector<Section> sections);
+  /// One row of a strip: parameter `key` of `params` (owned elsewhere, must outlive the
+  /// binding; a key `params` does not declare is skipped).
+  struct StripRow {
+    sl::ParamSet* params = nullptr;
+    std::string key;
+  };
+  /// Rebuilds the panel as a compact strip: one row per entry (label, slider, value, reset),
+  /// the Parameters panel's editors, no scrolling (the panel is as tall as its rows).
+  /// Returns the number of rows shown.
+  int setStrip(const std::vector<StripRow>& rows);
   /// Drops every reference into the ParamSets (call before they are destroyed).
   void clear();
+  /// Whether the panel edits ParamSets now (built, not cleared).
+  bool bound() const { return !refreshers_.empty(); }
   /// Re-reads every value (after changes made elsewhere, e.g. --set or presets).
   void refreshValues();
 
  Q_SIGNALS:
+  /// The panel was rebuilt (setSections) or cleared: what it edits changed.
+  void rebuilt();
   /// A value changed (already stored in its ParamSet).
   void paramChanged(const QString& key);
   /// An edit was refused (ParamSet's message, naming the key and range).

@@ -14,6 +14,7 @@
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
+#include <QTextLayout>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -35,10 +36,34 @@ QString formatCount(std::uint64_t n) {
 }
 }  // namespace
 
-/// One row per pass: name, a bar proportional to its share of the frame, and the time.
+/// `text` broken into lines of at most `width` pixels in `font`: at spaces where it can, inside
+/// a word only where one word alone is wider. The lines joined give `text` back: nothing is
+/// elided.
+QStringList wrapLines(const QString& text, const QFont& font, int width) {
+  QTextLayout layout(text, font);
+  QTextOption option;
+  option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+  layout.setTextOption(option);
+  QStringList lines;
+  layout.beginLayout();
+  for (QTextLine line = layout.createLine(); line.isValid(); line = layout.createLine()) {
+    line.setLineWidth(std::max(1, width));
+    lines << text.mid(line.textStart(), line.textLength());
+  }
+  layout.endLayout();
+  if (lines.isEmpty()) lines << text;
+  return lines;
+}
+
+/// One row per pass: name, a bar proportional to its share of the frame, and the time. A
+/// name wider than its room wraps onto more lines (its row grows), never elided.
 class PassBarsWidget : public QWidget {
  public:
-  using QWidget::QWidget;
+  PassBarsWidget() {
+    QSizePolicy policy = sizePolicy();
+    policy.setHeightForWidth(true);
+    setSizePolicy(policy);
+  }
 
   void setPasses(std::vector<sl::PassTiming> passes, double totalMs) {
     passes_ = std::move(passes);
@@ -47,10 +72,14 @@ class PassBarsWidget : public QWidget {
     update();
   }
 
-  QSize sizeHint() const override {
-    return {320, rowHeight() * std::max<int>(3, int(passes_.size()))};
-  }
+  QSize sizeHint() const override { return {320, heightForWidth(width() > 0 ? width() : 320)}; }
   QSize minimumSizeHint() const override { return {200, rowHeight() * 2}; }
+  bool hasHeightForWidth() const override { return true; }
+  int heightForWidth(int w) const override {
+    int h = 0;
+    for (const auto& pass : passes_) h += rowHeightOf(wrapped(pass, w).size(), w);
+    return std::max(h, rowHeight() * 3);
+  }
 
   /// The widest pass name, the value column ("0000.00 ms  100%") and the least bar width:
   /// what one row needs with the name beside its bar.
@@ -66,19 +95,17 @@ class PassBarsWidget : public QWidget {
   }
   int besideWidth() const { return nameWidth() + valueWidth() + 60; }
   /// The name on a line of its own above its bar: the names do not fit beside the bars.
-  bool namesAbove() const { return width() < besideWidth(); }
+  bool namesAbove() const { return namesAbove(width()); }
 
   QStringList names() const {
     QStringList out;
     for (const auto& pass : passes_) out << QString::fromStdString(pass.name);
     return out;
   }
-  /// Each name as paintEvent draws it.
+  /// Each name as paintEvent draws it (its lines joined: the whole name, never elided).
   QStringList shownNames() const {
     QStringList out;
-    const int room = namesAbove() ? width() - 4 : nameW() - 6;
-    for (const auto& pass : passes_)
-      out << fontMetrics().elidedText(QString::fromStdString(pass.name), Qt::ElideRight, room);
+    for (const auto& pass : passes_) out << wrapped(pass, width()).join(QString());
     return out;
   }
 
@@ -96,25 +123,27 @@ class PassBarsWidget : public QWidget {
     for (const auto& pass : passes_) sum += pass.ms;
     const double scale = std::max({totalMs_, sum, 1e-6});
     const bool above = namesAbove();
-    const int nameW = above ? 0 : this->nameW();
+    const int nameW = above ? 0 : this->nameW(width());
     const int valueW = valueWidth();
     const int barX = nameW, barW = std::max(10, width() - nameW - valueW);
-    const int lineH = fontMetrics().height() + 8;
+    const int lineH = fontMetrics().height() + 8, textH = fontMetrics().height();
     QColor bar = pal.color(QPalette::Highlight);
-    const QStringList shown = shownNames();
     int y = 0;
-    for (std::size_t i = 0; i < passes_.size(); ++i) {
-      const sl::PassTiming& pass = passes_[i];
+    for (const sl::PassTiming& pass : passes_) {
+      const QStringList lines = wrapped(pass, width());
+      const int rowH = rowHeightOf(lines.size(), width());
       p.setPen(pal.color(QPalette::Text));
       if (above) {
-        p.drawText(QRect(2, y, width() - 4, lineH), Qt::AlignVCenter | Qt::AlignLeft,
-                   shown[int(i)]);
-        y += lineH - 6;
+        for (int k = 0; k < lines.size(); ++k)
+          p.drawText(QRect(2, y + 1 + k * textH, width() - 4, textH),
+                     Qt::AlignVCenter | Qt::AlignLeft, lines[k].trimmed());
+        y += rowH - lineH;  // the bar's line under the name's
       } else {
-        p.drawText(QRect(0, y, nameW - 6, lineH), Qt::AlignVCenter | Qt::AlignRight, shown[int(i)]);
+        for (int k = 0; k < lines.size(); ++k)
+          p.drawText(QRect(0, y + 4 + k * textH, nameW - 6, textH),
+                     Qt::AlignVCenter | Qt::AlignRight, lines[k].trimmed());
       }
-      const QRect row(0, y, width(), lineH);
-      const QRectF track(barX, y + 4, barW, row.height() - 8);
+      const QRectF track(barX, y + 4, barW, lineH - 8);
       p.setPen(Qt::NoPen);
       p.setBrush(pal.color(QPalette::AlternateBase));
       p.drawRoundedRect(track, 3, 3);
@@ -124,19 +153,29 @@ class PassBarsWidget : public QWidget {
       p.drawRoundedRect(fill, 3, 3);
       p.setPen(pal.color(QPalette::Text));
       p.drawText(
-          QRect(barX + barW + 8, y, valueW - 8, row.height()), Qt::AlignVCenter | Qt::AlignLeft,
+          QRect(barX + barW + 8, y, valueW - 8, lineH), Qt::AlignVCenter | Qt::AlignLeft,
           QStringLiteral("%1  %2%").arg(formatMs(pass.ms)).arg(100.0 * pass.ms / scale, 0, 'f', 0));
-      y += lineH;
+      y += above ? lineH : rowH;
     }
   }
 
   void resizeEvent(QResizeEvent*) override { updateGeometry(); }
 
  private:
-  int nameW() const { return std::min(nameWidth(), width() * 9 / 20); }
-  int rowHeight() const {
-    return fontMetrics().height() + 8 + (namesAbove() ? fontMetrics().height() + 2 : 0);
+  bool namesAbove(int w) const { return w < besideWidth(); }
+  int nameW(int w) const { return std::min(nameWidth(), w * 9 / 20); }
+  /// A pass's name in the lines it is drawn on at width `w`.
+  QStringList wrapped(const sl::PassTiming& pass, int w) const {
+    const int room = namesAbove(w) ? w - 4 : nameW(w) - 6;
+    return wrapLines(QString::fromStdString(pass.name), font(), room);
   }
+  /// A row at width `w` whose name takes `lines` lines.
+  int rowHeightOf(qsizetype lines, int w) const {
+    const int lineH = fontMetrics().height() + 8, textH = fontMetrics().height();
+    const int nameH = int(lines) * textH;
+    return namesAbove(w) ? lineH + nameH + 2 : std::max(lineH, nameH + 8);
+  }
+  int rowHeight() const { return rowHeightOf(1, width()); }
   std::vector<sl::PassTiming> passes_;
   double totalMs_ = 0;
 };
@@ -165,7 +204,20 @@ class FrameHistoryWidget : public QWidget {
     p.setRenderHint(QPainter::Antialiasing);
     const QPalette& pal = palette();
     const QFontMetrics fm = fontMetrics();
-    const QRectF area = QRectF(rect()).adjusted(2, fm.height() + 4, -2, -2);
+    // The title's numbers wrap onto a second line in a narrow box, never elided.
+    double lo = 0, hi = 0, avg = 0;
+    QString title;
+    if (!frames_.empty()) {
+      lo = *std::min_element(frames_.begin(), frames_.end());
+      hi = *std::max_element(frames_.begin(), frames_.end());
+      avg = std::accumulate(frames_.begin(), frames_.end(), 0.0) / double(frames_.size());
+      title = tr("min %1 · avg %2 · max %3").arg(formatMs(lo), formatMs(avg), formatMs(hi));
+    }
+    const int titleH =
+        std::max(fm.height(), fm.boundingRect(QRect(0, 0, std::max(1, width() - 4), 100000),
+                                              Qt::TextWordWrap | Qt::AlignLeft, title)
+                                  .height());
+    const QRectF area = QRectF(rect()).adjusted(2, titleH + 4, -2, -2);
     p.setPen(Qt::NoPen);
     p.setBrush(pal.color(QPalette::AlternateBase));
     p.drawRoundedRect(area, 3, 3);
@@ -174,9 +226,6 @@ class FrameHistoryWidget : public QWidget {
       p.drawText(area, Qt::AlignCenter, tr("No frame yet"));
       return;
     }
-    const auto [lo, hi] = std::minmax_element(frames_.begin(), frames_.end());
-    const double avg =
-        std::accumulate(frames_.begin(), frames_.end(), 0.0) / double(frames_.size());
     // Scale to the 90th percentile so that one slow frame (shader compile) does not
     // flatten the rest; taller frames are clipped at the top.
     std::vector<double> sorted(frames_.begin(), frames_.end());
@@ -184,10 +233,8 @@ class FrameHistoryWidget : public QWidget {
     const double p90 = sorted[std::min(sorted.size() - 1, sorted.size() * 9 / 10)];
     const double top = std::max(p90 * 1.4, 1e-3);
     p.setPen(pal.color(QPalette::Text));
-    p.drawText(QRect(2, 0, width() - 4, fm.height() + 2), Qt::AlignLeft | Qt::AlignVCenter,
-               fm.elidedText(
-                   tr("min %1 · avg %2 · max %3").arg(formatMs(*lo), formatMs(avg), formatMs(*hi)),
-                   Qt::ElideRight, width() - 4));
+    p.drawText(QRect(2, 0, width() - 4, titleH + 2),
+               Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, title);
     QPainterPath path;
     const double dx = area.width() / double(kFrames - 1);
     const double x0 = area.right() - dx * double(frames_.size() - 1);
@@ -243,9 +290,11 @@ TimingPanel::TimingPanel(QWidget* parent) : QWidget(parent) {
   memory_->setUniformRowHeights(true);
   memory_->setAlternatingRowColors(true);
   memory_->setHeaderLabels({tr("Resource"), tr("Format"), tr("Size"), tr("Bytes")});
+  // Every column as wide as its widest cell (a narrow box scrolls sideways): a resource's
+  // name or its bytes are never elided.
+  memory_->setTextElideMode(Qt::ElideNone);
   memory_->header()->setStretchLastSection(false);
   memory_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  memory_->header()->setSectionResizeMode(0, QHeaderView::Stretch);
   memory_->header()->setMinimumSectionSize(60);
   memoryLayout->addWidget(memory_);
   memoryTotal_ = new QLabel;

@@ -35,8 +35,8 @@ class TimingPanel : public QWidget {
   /// Forgets the history (new scene or technique: old times are not comparable).
   void resetHistory();
 
-  /// The bars' pass names, and each as it is drawn at the panel's present size (elided
-  /// only when even a line of its own is too narrow for it).
+  /// The bars' pass names, and each as it is drawn at the panel's present size (its wrapped
+  /// lines joined: a name too wide for its room wraps, never elided).
   QStringList passNames() const;
   QStringList shownPassNames() const;
   /// Whether the three boxes stand one above the other (a narrow panel, large fonts).

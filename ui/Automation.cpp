@@ -146,13 +146,11 @@ bool Automation::waitForProbe(int timeoutMs) {
 }
 
 namespace {
-/// Runs `read` on the render thread with the main renderer (nothing before it exists).
+/// Runs `read` on the render thread with the main renderer's complete frame of the view.
 template <typename T, typename Read>
 T readMain(ViewportWidget& view, Read read) {
   T out{};
-  view.service().call([&](RenderContext& c) {
-    if (sl::Renderer* r = c.existing("main")) out = read(*r);
-  });
+  view.readCurrentFrame([&](sl::Renderer& r) { out = read(r); });
   return out;
 }
 }  // namespace

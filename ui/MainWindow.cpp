@@ -126,6 +126,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   grab_ = std::make_unique<GrabRun>(*this);
   sessions_ = std::make_unique<SessionFiles>(*this);
   presenter_ = new PresenterMode(*this);
+  // A panel grows with its first data: in presenter mode the window is kept on its screen.
+  docks_.setOnFed([this] { presenter_->keepOnScreen(); });
   splitSide_ = new SplitSideParams(*this);
   connect(viewport_, &ViewportWidget::splitChanged, splitSide_, &SplitSideParams::rebuild);
   createActions();

@@ -242,6 +242,17 @@ void PresenterMode::arrangeDocks() {
   sizeBigDock();
 }
 
+void PresenterMode::keepOnScreen() {
+  if (!active_ || fullPanel_) return;
+  const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+  if (!screen) return;
+  const int screenHeight = screen->geometry().height();
+  if (w_.frameGeometry().height() <= screenHeight && w_.minimumSizeHint().height() <= screenHeight)
+    return;
+  arrangeDocks();
+  fitScreen();
+}
+
 void PresenterMode::fitScreen() {
   // A window manager-less X server (Xvfb) ignores the full-screen request: the geometry too.
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();

@@ -68,6 +68,12 @@ class PresenterMode : public QObject {
   /// Share of the window's width the big panel takes.
   static constexpr double kPanelShare = 0.42;
 
+  /// After a frame: when the panels, filled now, make the window taller than its screen, the
+  /// docks are arranged again (a panel that no longer fits under the big one goes behind it)
+  /// and the window fits the screen. The arrangement measures the panels as they are; a panel
+  /// shown before its first frame grows when the frame arrives.
+  void keepOnScreen();
+
  private:
   void arrangeDocks();
   void sizeBigDock();

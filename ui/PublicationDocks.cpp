@@ -42,6 +42,7 @@ void PublicationDocks::feed(const sl::ViewSide& renderer, bool all) const {
   if (all) {
     queued_.clear();
     for (const Dock& d : docks_) d.panel->showPublication(renderer.publication());
+    if (onFed_) onFed_();
     return;
   }
   const bool idle = queued_.empty();
@@ -58,7 +59,10 @@ void PublicationDocks::feedNext() const {
   PublicationPanel* panel = queued_.front();
   queued_.pop_front();
   panel->showPublication(queuedFrom_->publication());
-  if (!queued_.empty()) QTimer::singleShot(0, panel, [this] { feedNext(); });
+  if (!queued_.empty())
+    QTimer::singleShot(0, panel, [this] { feedNext(); });
+  else if (onFed_)
+    onFed_();
 }
 
 void PublicationDocks::resetHistory() const {

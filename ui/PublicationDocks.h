@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -45,6 +46,9 @@ class PublicationDocks {
   /// hold the UI thread longer than one panel's work; a newer frame's feed replaces the
   /// panels still queued (they get the newest publication).
   void feed(const sl::ViewSide& renderer, bool all) const;
+  /// Called once feed() has handed a frame to the last queued panel (the window checks that
+  /// it still fits its screen: a panel grows with its first data).
+  void setOnFed(std::function<void()> onFed) { onFed_ = std::move(onFed); }
   /// Panels are still queued by feed() (scripts wait for them).
   bool feeding() const { return !queued_.empty(); }
 
@@ -80,6 +84,7 @@ class PublicationDocks {
   std::set<QString> openedByHand_;
   mutable std::deque<QPointer<PublicationPanel>> queued_;  ///< feed(): still to be fed
   mutable const sl::ViewSide* queuedFrom_ = nullptr;
+  std::function<void()> onFed_;
 };
 
 }  // namespace sl::ui

@@ -4,6 +4,7 @@
 // equal-memory match. Each runs as a job on the render service; results come back as queued
 // calls and are kept only for the view revision they were measured for.
 #include <algorithm>
+#include <functional>
 
 #include "RenderService.h"
 #include "ViewFrame.h"
@@ -242,6 +243,23 @@ QString ViewportWidget::liveErrorText() const {
 
 QString ViewportWidget::errorOverlayNote() const {
   return overlay_->errorNote;
+}
+
+bool ViewportWidget::readCurrentFrame(const std::function<void(sl::Renderer&)>& read) {
+  if (!ready_) return false;
+  // A frame of the view as it is, drawn in the same job when the one shown is older or one
+  // is on its way (which the call stops): what is read is always a complete frame.
+  std::shared_ptr<FrameOrder> order;
+  if (ordersSent_ > ordersDone_ || shownViewRevision_ != viewRevision_ || framesRendered_ == 0)
+    order = makeOrder();
+  auto out = std::make_shared<FrameOutcome>();
+  const bool ran = service_->call([&](RenderContext& c) {
+    if (order) renderOrder(c, *order, *out);
+    sl::Renderer* r = c.existing("main");
+    if (r && !r->stats().cancelled) read(*r);
+  });
+  if (order) applyOutcome(out);
+  return ran;
 }
 
 }  // namespace sl::ui

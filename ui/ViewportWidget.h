@@ -10,6 +10,7 @@
 // right half, and a note while a slow frame is being computed.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -178,6 +179,11 @@ class ViewportWidget : public QWidget {
   /// Renders the view at full size now when its last frame was reduced or is not of the view
   /// as it is (exports, grabs), or `always`; waits for it.
   void renderFullSizeNow(bool always = false);
+  /// Runs `read` on the render thread with the main renderer holding a complete frame of the
+  /// view as it is (drawn first, in the same job, when the frame shown is older or one is on
+  /// its way) and waits: scripted reads of the last frame (readback, probe, exact error).
+  /// False when the render service is not running.
+  bool readCurrentFrame(const std::function<void(sl::Renderer&)>& read);
   /// A probe of the pixel under the mouse is on its way (scripts wait for it).
   bool probePending() const { return probeWanted_ && probeAnswered_ < probeSerial_; }
 

@@ -406,7 +406,10 @@ void GuiTests::claimPca(int lessonIndex) {
             .arg(lesson.cases.size()));
   for (std::size_t k = 0; k < lesson.cases.size(); ++k) {
     // The first case is the one the lesson opens with; the next as Ctrl+Shift+N applies it.
-    if (k > 0) w_.lessons()->nextCase();
+    if (k > 0) {
+      w_.lessons()->nextCase();
+      auto_.waitForSettled();  // settling runs frame by frame from the event loop
+    }
     check(w_.lessons()->caseIndex() == int(k) && !w_.lessons()->settling(),
           tr("case %1 applied and settled").arg(k + 1));
     claimPcaCase(lesson.cases[k], int(k) + 1);

@@ -394,6 +394,17 @@ void LessonController::settle() {
   QTimer::singleShot(0, this, &LessonController::startSettling);
 }
 
+void LessonController::settleAgain() {
+  if (index_ < 0) return;
+  if (settling_ && settleConnection_) {  // started at the old size: over again at the new one
+    if (sl::ViewSide* r = w_.viewport()->mainSide()) r->resetTemporalState();
+    settleFrames_ = 0;
+    settled_ = false;
+    return;
+  }
+  if (!settling_) settle();
+}
+
 void LessonController::startSettling() {
   MainWindow& w = w_;
   sl::ViewSide* r = w.viewport()->mainSide();

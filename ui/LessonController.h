@@ -73,6 +73,9 @@ class LessonController : public QObject {
   /// the layout has given the view its final size; the Lesson dock says what it waits for.
   /// Called by apply(), and when the renderer starts with a lesson already chosen.
   void settle();
+  /// The window's layout changed the view's size after the lesson opened (presenter mode
+  /// keeping the window on its screen): its temporal state settles again at the new size.
+  void settleAgain();
   /// settle() is running or queued (a grab waits for it).
   bool settling() const { return settling_ || settleQueued_; }
   void queueSettle();

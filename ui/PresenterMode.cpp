@@ -168,6 +168,7 @@ void PresenterMode::setFullPanel(bool on) {
 }
 
 void PresenterMode::arrangeDocks() {
+  keptOnScreen_ = 0;
   big_ = pickBigDock();
   // Everything but the big panel hidden; the Lesson and Parameters tabbed behind it (a
   // lecturer's notes and knobs, one click away).
@@ -249,8 +250,16 @@ void PresenterMode::keepOnScreen() {
   const int screenHeight = screen->geometry().height();
   if (w_.frameGeometry().height() <= screenHeight && w_.minimumSizeHint().height() <= screenHeight)
     return;
+  // A few times per arrangement at most: a window that cannot fit does not loop.
+  const int tries = keptOnScreen_;
+  if (tries >= kMaxKeepOnScreen) return;
+  const QSize view = w_.viewport()->size();
   arrangeDocks();
   fitScreen();
+  keptOnScreen_ = tries + 1;
+  w_.layout()->activate();
+  if (w_.viewport()->size() != view)
+    w_.lessons()->settleAgain();  // a lesson's rotation settles again at the view's new size
 }
 
 void PresenterMode::fitScreen() {

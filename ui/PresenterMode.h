@@ -94,6 +94,8 @@ class PresenterMode : public QObject {
   QByteArray savedState_, savedGeometry_;
   QFont savedFont_;
   bool savedMaximized_ = false;
+  int keptOnScreen_ = 0;  ///< times keepOnScreen re-arranged since the last arrangement
+  static constexpr int kMaxKeepOnScreen = 3;
 };
 
 }  // namespace sl::ui

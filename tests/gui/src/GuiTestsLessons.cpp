@@ -129,8 +129,9 @@ void GuiTests::lessonOnScreen(const QString& name) {
             .arg(screen.height()));
   // Every live number the text quotes is filled once the view's error is measured (a lesson
   // with a split view: its right half's too).
-  w_.viewport()->computeErrorNow();
   auto_.waitForFrames(2);
+  w_.viewport()->computeErrorNow();
+  QCoreApplication::processEvents();
   const QString shown = w_.lessonPanel()->shownText();
   const qsizetype missing = shown.indexOf(QStringLiteral("n/a"));
   check(missing < 0, tr("%1: every number of the text is filled (%2)")

@@ -46,10 +46,12 @@ class RenderService::Thread : public RenderContext {
     return started_ && !failed_ && !stopping_;
   }
 
-  void submitFrame(Job job, bool stopRunning) {
+  bool submitFrame(Job job, bool stopRunning) {
+    bool replaced = false;
     {
       std::lock_guard lock(m_);
-      if (stopping_) return;
+      if (stopping_) return false;
+      replaced = static_cast<bool>(frame_);
       frame_ = std::move(job);
       if (stopRunning && busyFrame_) {
         stopFlag_ = true;
@@ -57,6 +59,7 @@ class RenderService::Thread : public RenderContext {
       }
     }
     cv_.notify_all();
+    return replaced;
   }
 
   void post(Job job, bool front = false) {
@@ -222,8 +225,8 @@ bool RenderService::isRunning() const {
   return thread_->running();
 }
 
-void RenderService::submitFrame(Job job, bool stopRunning) {
-  thread_->submitFrame(std::move(job), stopRunning);
+bool RenderService::submitFrame(Job job, bool stopRunning) {
+  return thread_->submitFrame(std::move(job), stopRunning);
 }
 
 void RenderService::post(Job job) {

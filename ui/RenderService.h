@@ -60,9 +60,10 @@ class RenderService : public QObject {
   void start();
   bool isRunning() const;
 
-  /// Puts `job` in the frame slot, replacing a frame that has not started. `stopRunning`:
-  /// also ask a frame in progress to stop (the view changed: its result would be stale).
-  void submitFrame(Job job, bool stopRunning);
+  /// Puts `job` in the frame slot, replacing a frame that has not started (true: one was
+  /// replaced; it never runs). `stopRunning`: also ask a frame in progress to stop (the view
+  /// changed: its result would be stale).
+  bool submitFrame(Job job, bool stopRunning);
   /// Runs `job` after the work queued before it (before the frame slot).
   void post(Job job);
   /// Runs `job` on the render thread now (after the job in progress, which is asked to stop

@@ -103,7 +103,7 @@ std::optional<double> ViewportWidget::computeErrorNow() {
   // The error of the view as it is now: when the frame shown is older (or one is on its
   // way), a frame of it is drawn in the same job as the measurement.
   std::shared_ptr<FrameOrder> order;
-  if (ordersSent_ > ordersDone_ || shownViewRevision_ != viewRevision_) order = makeOrder();
+  if (framesInFlight_ > 0 || shownViewRevision_ != viewRevision_) order = makeOrder();
   auto out = std::make_shared<FrameOutcome>();
   SideError main;
   std::optional<SideError> right;
@@ -128,7 +128,7 @@ std::optional<double> ViewportWidget::computeErrorNow() {
 void ViewportWidget::computeErrorIfStill() {
   if (errorIsCurrent() || !ready_) return;
   // Still interacting, or the frame of this view not shown yet: try again later.
-  if (dragButton_ != Qt::NoButton || !heldKeys_.empty() || ordersSent_ > ordersDone_ ||
+  if (dragButton_ != Qt::NoButton || !heldKeys_.empty() || framesInFlight_ > 0 ||
       shownViewRevision_ != viewRevision_) {
     errorTimer_.start(kErrorDelayMs);
     return;
@@ -250,7 +250,7 @@ bool ViewportWidget::readCurrentFrame(const std::function<void(sl::Renderer&)>& 
   // A frame of the view as it is, drawn in the same job when the one shown is older or one
   // is on its way (which the call stops): what is read is always a complete frame.
   std::shared_ptr<FrameOrder> order;
-  if (ordersSent_ > ordersDone_ || shownViewRevision_ != viewRevision_ || framesRendered_ == 0)
+  if (framesInFlight_ > 0 || shownViewRevision_ != viewRevision_ || framesRendered_ == 0)
     order = makeOrder();
   auto out = std::make_shared<FrameOutcome>();
   const bool ran = service_->call([&](RenderContext& c) {

@@ -36,7 +36,7 @@ ViewportWidget::ViewportWidget(QWidget* parent)
   connect(&settleTimer_, &QTimer::timeout, this, [this] {
     if (frameDivisor_ == 1) return;
     // Still interacting, or a frame on its way: the view is not still yet.
-    if (dragButton_ != Qt::NoButton || !heldKeys_.empty() || ordersSent_ > ordersDone_)
+    if (dragButton_ != Qt::NoButton || !heldKeys_.empty() || framesInFlight_ > 0)
       return settleTimer_.start();
     fullSizeNext_ = true;
     requestFrame();
@@ -93,7 +93,7 @@ void ViewportWidget::noticeEdits() {
 void ViewportWidget::pump() {
   if (!ready_ || !frameWanted_ || !service_) return;
   noticeEdits();
-  const bool inFlight = ordersSent_ > ordersDone_;
+  const bool inFlight = framesInFlight_ > 0;
   const bool changed = viewRevision_ != sentViewRevision_;
   // Paused: the last frame stays unless a step is pending or the size changed.
   if (paused_ && pendingSteps_ == 0 && lastFrameSize_ == deviceSize() && framesRendered_ > 0 &&
@@ -114,14 +114,20 @@ void ViewportWidget::pump() {
   // completes, and the view would show nothing new until the hand rests; the frame in
   // progress completes (drawn, one view behind) and the newest camera is rendered next.
   const bool interacting = dragButton_ != Qt::NoButton || !heldKeys_.empty();
-  service_->submitFrame(
+  const bool replaced = service_->submitFrame(
       [this, order](RenderContext& c) {
         auto out = std::make_shared<FrameOutcome>();
         renderOrder(c, *order, *out);
         QMetaObject::invokeMethod(
-            this, [this, out] { applyOutcome(out); }, Qt::QueuedConnection);
+            this,
+            [this, out] {
+              --framesInFlight_;
+              applyOutcome(out);
+            },
+            Qt::QueuedConnection);
       },
       inFlight && changed && !interacting);
+  if (!replaced) ++framesInFlight_;  // a replaced order never comes back
 }
 
 std::shared_ptr<FrameOrder> ViewportWidget::makeOrder() {
@@ -184,7 +190,7 @@ std::shared_ptr<FrameOrder> ViewportWidget::makeOrder() {
 
 void ViewportWidget::applyOutcome(const std::shared_ptr<FrameOutcome>& out) {
   ordersDone_ = std::max(ordersDone_, out->id);
-  if (ordersDone_ >= ordersSent_) busyTimer_.stop();
+  if (framesInFlight_ == 0) busyTimer_.stop();
   if (out->stopped) {  // never shown, never measured
     ++framesStopped_;
     if (out->id == ordersSent_) frameWanted_ = true;  // stopped by an export: draw it again
@@ -464,7 +470,7 @@ bool ViewportWidget::adaptiveActive() const {
 
 void ViewportWidget::renderFullSizeNow(bool always) {
   if (!ready_) return;
-  const bool current = ordersSent_ == ordersDone_ && shownViewRevision_ == viewRevision_ &&
+  const bool current = framesInFlight_ == 0 && shownViewRevision_ == viewRevision_ &&
                        lastFrameSize_ == deviceSize() && framesRendered_ > 0;
   if (frameDivisor_ == 1 && current && !always) return;
   fullSizeNext_ = true;

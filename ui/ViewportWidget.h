@@ -416,6 +416,9 @@ class ViewportWidget : public QWidget {
   std::uint64_t ordersSent_ = 0;  ///< id of the last order submitted
   std::uint64_t ordersDone_ = 0;
   std::uint64_t lastAppliedId_ = 0;     ///< the order whose frame is on screen
+  /// Frames submitted to the service whose outcome has not come back (a replaced one never
+  /// does; the frames of blocking calls are not counted).
+  int framesInFlight_ = 0;
   std::uint64_t framesDrawn_ = 0;       ///< id of the last outcome received (shown or stopped)
   std::uint64_t sentViewRevision_ = 0;  ///< view revision of the last order submitted
   std::uint64_t framesStopped_ = 0;     ///< orders stopped before they completed

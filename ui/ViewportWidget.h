@@ -415,7 +415,7 @@ class ViewportWidget : public QWidget {
   bool frameWanted_ = false;
   std::uint64_t ordersSent_ = 0;  ///< id of the last order submitted
   std::uint64_t ordersDone_ = 0;
-  std::uint64_t lastAppliedId_ = 0;     ///< the order whose frame is on screen
+  std::uint64_t lastAppliedId_ = 0;  ///< the order whose frame is on screen
   /// Frames submitted to the service whose outcome has not come back (a replaced one never
   /// does; the frames of blocking calls are not counted).
   int framesInFlight_ = 0;

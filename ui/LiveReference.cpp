@@ -1,5 +1,7 @@
 #include "LiveReference.h"
 
+#include <vector>
+
 #include <QObject>
 
 namespace sl::ui {
@@ -22,8 +24,10 @@ std::optional<sl::FinishedReference> LiveReference::takeFinished(std::string* fa
   if (auto f = worker_->takeFailure(); f && failure) *failure = *f;
   auto done = worker_->takeFinished();
   if (!done) return std::nullopt;
+  // The latest without its mask (a byte per pixel: not copied), the caller's with it.
+  std::vector<std::uint8_t> mask = std::move(done->trace.referenceMask);
   latest_ = *done;
-  latest_->trace.referenceMask = {};
+  done->trace.referenceMask = std::move(mask);
   return done;
 }
 

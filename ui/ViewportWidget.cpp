@@ -44,7 +44,12 @@ ViewportWidget::ViewportWidget(QWidget* parent)
   flyTimer_.setInterval(kFlyTickMs);
   connect(&flyTimer_, &QTimer::timeout, this, &ViewportWidget::flyStep);
   busyTimer_.setInterval(100);  // the busy note's seconds, while a frame is computed
-  connect(&busyTimer_, &QTimer::timeout, this, &ViewportWidget::updateOverlayWidget);
+  connect(&busyTimer_, &QTimer::timeout, this, [this] {
+    // Only while the busy note is (or was just) shown: a quick frame redraws nothing here.
+    const bool busy = !busyText().isEmpty();
+    if (busy || busyShown_) updateOverlayWidget();
+    busyShown_ = busy;
+  });
   service_ = new RenderService(this);
   connect(service_, &RenderService::ready, this, &ViewportWidget::serviceReady);
   connect(service_, &RenderService::failed, this,
@@ -494,18 +499,24 @@ void ViewportWidget::probeHover() {
     Q_EMIT pixelProbed(std::nullopt);
     return;
   }
+  // One probe on its way at a time: moves meanwhile ask for one more, at the pointer's place
+  // when the answer comes (a long frame does not queue a readback per mouse move).
+  if (probeInFlight_) {
+    probeAgain_ = true;
+    return;
+  }
   const QPoint at(x / frameDivisor_, y / frameDivisor_);  // internal pixels
-  const std::uint64_t serial = ++probeSerial_;
+  probeInFlight_ = true;
   ++probesRead_;  // asked of the render thread: one pixel read back
-  service_->post([this, at, serial](RenderContext& c) {
+  service_->post([this, at](RenderContext& c) {
     std::optional<sl::PixelProbe> probe;
     if (sl::Renderer* r = c.existing("main")) probe = r->probePixel(at.x(), at.y());
     QMetaObject::invokeMethod(
         this,
-        [this, probe, serial] {
-          probeAnswered_ = std::max(probeAnswered_, serial);
-          if (serial != probeSerial_ || !probeWanted_) return;  // the mouse moved on
-          Q_EMIT pixelProbed(probe);
+        [this, probe] {
+          probeInFlight_ = false;
+          if (std::exchange(probeAgain_, false)) return probeHover();  // the mouse moved on
+          if (probeWanted_) Q_EMIT pixelProbed(probe);
         },
         Qt::QueuedConnection);
   });

@@ -185,7 +185,7 @@ class ViewportWidget : public QWidget {
   /// False when the render service is not running.
   bool readCurrentFrame(const std::function<void(sl::Renderer&)>& read);
   /// A probe of the pixel under the mouse is on its way (scripts wait for it).
-  bool probePending() const { return probeWanted_ && probeAnswered_ < probeSerial_; }
+  bool probePending() const { return probeWanted_ && (probeInFlight_ || probeAgain_); }
 
   /// The zoom inset: `area` of the view (widget pixels) magnified by a whole factor,
   /// nearest neighbour, into the bottom-right corner; nothing: off. Ctrl+Shift+drag over the
@@ -407,9 +407,9 @@ class ViewportWidget : public QWidget {
   /// composite, the overshoot of the last tile, the event loop).
   static constexpr double kProgressiveShare = 0.5;
   std::uint64_t probesRead_ = 0;
-  std::uint64_t probeSerial_ = 0;
-  std::uint64_t probeAnswered_ = 0;  ///< the latest probe whose answer came back  ///< the latest
-                                     ///< probe asked for (older answers are dropped)
+  bool probeInFlight_ = false;  ///< a hover probe is on the render thread
+  bool probeAgain_ = false;     ///< the mouse moved meanwhile: probe again when it answers
+                                ///< probe asked for (older answers are dropped)
 
   // The frame loop: a wanted frame, the orders sent and the outcomes back.
   bool frameWanted_ = false;
@@ -423,6 +423,7 @@ class ViewportWidget : public QWidget {
   std::uint64_t sentViewRevision_ = 0;  ///< view revision of the last order submitted
   std::uint64_t framesStopped_ = 0;     ///< orders stopped before they completed
   QTimer busyTimer_;                    ///< refreshes the busy note while a frame renders
+  bool busyShown_ = false;              ///< the busy note was in the overlay at the last tick
   QString busyTechnique_;               ///< of the order in flight
 
   // What the sides looked like when last ordered; any difference means "view changed".

@@ -29,6 +29,7 @@
 #include "ViewportWidget.h"
 #include "WindowShortcuts.h"
 #include "panels/common/ChartsPanel.h"
+#include "panels/common/VariantMeasure.h"
 #include "panels/common/LessonPanel.h"
 #include "panels/common/ParamPanel.h"
 #include "panels/common/TimingPanel.h"
@@ -430,9 +431,15 @@ QDockWidget* MainWindow::addPanelDock(QWidget* panel, const QString& title, cons
 
 void MainWindow::createPanelDocks() {
   QMenu* panels = menuBar()->findChild<QMenu*>(QStringLiteral("panelsMenu"));
+  // Panels' "measure" requests (variants of the shown view) run on the render thread.
+  auto* variants = new VariantMeasure(viewport_, this);
   for (const PanelEntry& entry : publicationPanels()) {
     PublicationPanel* panel = entry.create();
     docks_.add(entry, addPanelDock(panel, entry.title, entry.id, entry.area), panel);
+    connect(panel, &PublicationPanel::variantErrorsRequested, this,
+            [variants, panel](const QString& tag, const QList<QStringList>& list) {
+              variants->start(panel, tag, list);
+            });
     connect(panel, &PublicationPanel::lightChosen, this, [this](double azimuth, double elevation) {
       // The storage analysis is for a directional light: a click makes the light one.
       viewport_->setLight(

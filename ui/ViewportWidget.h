@@ -140,6 +140,8 @@ class ViewportWidget : public QWidget {
 
   /// Frames rendered since the renderer was created.
   std::uint64_t framesRendered() const { return framesRendered_; }
+  /// The main renderer's last frame size (device pixels).
+  QSize frameSize() const { return internalSize_; }
 
   /// How long the view must be still before the error is recomputed.
   static constexpr int kErrorDelayMs = 1200;

@@ -102,6 +102,7 @@
 #define SL_RTW_BUFFER_WARP 2      // n + 1 edges per axis
 #define SL_RTW_BUFFER_MOMENTS 3   // DA-RTW moment chain, 6 floats per texel
 #define SL_RTW_BUFFER_INVERSE 4   // inverse warp tables
+#define SL_RTW_BUFFER_MOMENT_COUNTS 5  // DA-RTW: pixels and edge-normal bins per moment IM texel
 #define SL_RTW_IMAGE_IM 0         // r32ui 2D importance map
 #define SL_RTW_IMAGE_MOMENT_IM 1  // r32ui DA-RTW moment IM
 #define SL_RTW_LINEAR_GROUP 64    // local_size_x of the 1D passes (collapse, blur, inverse)
@@ -113,6 +114,19 @@
 #define SL_IM_MAX_RESOLUTION 2048
 // DA-RTW's PCA reads the IM reduced to at most this size (block maxima).
 #define SL_MOMENT_IM_MAX 128
+// DA-RTW's turn prediction (algo/rtw/TurnPrediction.h): the shadow-edge pixels of the last
+// frame counted per moment IM texel in this many bins of their light-plane normal's angle
+// (over 180 degrees), each pixel split between its two nearest bins in this many parts.
+#define SL_RTW_EDGE_BINS 4
+#define SL_RTW_EDGE_ONE 256
+// ... and the sum of their importance in 64-bit fixed point (two uints, low word first), one
+// unit = 1 / SL_RTW_IMPORTANCE_ONE; a pixel's importance is clamped to SL_RTW_IMPORTANCE_MAX
+// so that one pixel's share fits 32 bits.
+#define SL_RTW_IMPORTANCE_ONE 16777216.0
+#define SL_RTW_IMPORTANCE_MAX 255.0
+// Planes of the counts buffer, each momentRes^2 uints: pixels, the importance sum's low and
+// high words, then the SL_RTW_EDGE_BINS edge bins.
+#define SL_RTW_COUNT_PLANES (3 + SL_RTW_EDGE_BINS)
 // Largest tessellation level of the warped pass. GL guarantees 64, but llvmpipe corrupts
 // the warped map at levels 32-64 (measured: corridor, tolerance 0.01: 55.6 % error at cap
 // 64, 0.73 % at cap 16). SceneGpu splits long triangles so that 16 suffices.

@@ -45,3 +45,21 @@ float shadowEdgeAt(ivec2 px) {
     }
   return 0.0;
 }
+
+// The last frame's shadow edge at pixel px, for DA-RTW's turn prediction
+// (sl::rtw::ImportanceSnapshot::edgeBins): the central differences of its hard mask (lit 1,
+// shadowed 0; a neighbour without a surface counts as px itself). (0, 0) away from an edge and
+// where px has no surface. Its direction is the edge's normal on screen.
+vec2 shadowMaskGradient(ivec2 px) {
+  ivec2 size = textureSize(u_prevHard, 0);
+  uint c = texelFetch(u_prevHard, clamp(px, ivec2(0), size - 1), 0).r;
+  if (c == SL_MASK_EMPTY) return vec2(0.0);
+  float self = c == SL_MASK_LIT ? 1.0 : 0.0;
+  float s[4];
+  ivec2 d[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+  for (int i = 0; i < 4; ++i) {
+    uint o = texelFetch(u_prevHard, clamp(px + d[i], ivec2(0), size - 1), 0).r;
+    s[i] = o == SL_MASK_EMPTY ? self : (o == SL_MASK_LIT ? 1.0 : 0.0);
+  }
+  return vec2(s[0] - s[1], s[2] - s[3]);
+}

@@ -19,7 +19,7 @@ field() {  # field FILE.json KEY: the value as JSON
 #    any anisotropy: at its defaults it does not turn on this view.)
 for t in da-rtw rtw-backward; do
   turn=()
-  [[ $t == da-rtw ]] && turn=(--set pca.min_anisotropy=0 --set pca.min_spread=0 --set pca.metric=metres)
+  [[ $t == da-rtw ]] && turn=(--set rotation.mode=pca --set pca.min_anisotropy=0 --set pca.min_spread=0 --set pca.metric=metres)
   if ! "$cli" render --scene diagonal --technique $t "${turn[@]}" --size 320x180 --out "$out/$t.png" \
       --metrics "$out/$t.json" >"$out/$t.stdout" 2>"$out/$t.stderr"; then
     echo "FAIL: render $t: $(cat "$out/$t.stderr")"; fail=1
@@ -43,7 +43,7 @@ check "da-rtw bytes = rtw-backward bytes + moments + spread gate" test \
   $((589816 + 2 * 512 * 4))
 
 # pca.threshold=1 never holds: the warm-up stops at its cap and says so on stderr.
-err=$("$cli" render --scene diagonal --technique da-rtw --set pca.threshold=1 \
+err=$("$cli" render --scene diagonal --technique da-rtw --set rotation.mode=pca --set pca.threshold=1 \
   --set pca.min_anisotropy=0 --set pca.min_spread=0 --set pca.metric=metres --size 160x90 \
   --out "$out/th1.png" --metrics "$out/th1.json" 2>&1 >/dev/null)
 check "never held: a note on stderr" test "$err" == "note: da-rtw: the rotation still changed \

@@ -330,7 +330,8 @@ TEST(RtwClaims, DaRtwAlignsThePrincipalAxis) {
   for (const char* t : {"rtw-backward", "da-rtw"}) {
     auto r = rtwRenderer("diagonal", t, 512, 512);
     ASSERT_TRUE(r);
-    if (r->params().has("pca.min_anisotropy")) {  // turn whatever the importance, in metres
+    if (r->params().has("pca.min_anisotropy")) {  // PCA's turn whatever the importance, metres
+      ASSERT_FALSE(r->params().setFromString("rotation.mode", "pca"));
       ASSERT_FALSE(r->params().set("pca.min_anisotropy", 0.0));
       ASSERT_FALSE(r->params().set("pca.min_spread", 0.0));
       ASSERT_FALSE(r->params().setFromString("pca.metric", "metres"));
@@ -364,7 +365,9 @@ TEST(RtwClaims, DaRtwAlignsThePrincipalAxis) {
               100.0 * sharpest[1]);
   double rtwB = pathErrorOf("diagonal", "rtw-backward", 512);
   double da = pathErrorOf("diagonal", "da-rtw", 512);
-  std::printf("diagonal along its path at 512^2: rtw-backward %.3f %%, da-rtw %.3f %%\n", rtwB, da);
+  std::printf(
+      "diagonal along its path at 512^2: rtw-backward %.3f %%, da-rtw (predicted) %.3f %%\n", rtwB,
+      da);
 }
 
 /// Share of the wrong pixels that lie within `radius` px of a shadow edge of the exact
@@ -458,6 +461,7 @@ TEST(DaRtwStability, StaticSceneHoldsRotationAndMask) {
   for (double threshold : {0.9999, 1.0}) {
     auto r = rtwRenderer("diagonal", "da-rtw", 512, 256);
     ASSERT_TRUE(r);
+    ASSERT_FALSE(r->params().setFromString("rotation.mode", "pca"));
     ASSERT_FALSE(r->params().set("pca.threshold", threshold));
     ASSERT_FALSE(r->params().set("pca.min_anisotropy", 0.0));  // the poster: always turn
     ASSERT_FALSE(r->params().set("pca.min_spread", 0.0));

@@ -89,7 +89,7 @@ PY
 for t in rtw-backward da-rtw; do
   rc=0
   turn=()
-  [[ $t == da-rtw ]] && turn=(--set pca.min_anisotropy=0 --set pca.min_spread=0 --set pca.metric=metres)
+  [[ $t == da-rtw ]] && turn=(--set rotation.mode=pca --set pca.min_anisotropy=0 --set pca.min_spread=0 --set pca.metric=metres)
   timeout 120 "$app" --scene diagonal --technique $t "${turn[@]}" --grab "$out/first-$t" \
     --grab-after 1 >"$out/first-$t.stdout" 2>"$out/first-$t.stderr" || rc=$?
   [[ $rc -eq 0 ]] || { echo "FAIL: $t exited with $rc"; cat "$out/first-$t.stderr"; exit 1; }

@@ -25,8 +25,9 @@ glm::mat2 lightViewRotation(const RotationState& state) {
 
 RotationUpdate updateRotation(RotationState& state, const MomentStats& stats, float threshold,
                               float minAnisotropy, float spread, float minSpread) {
-  float t = std::isnan(threshold) ? kDefaultHoldThreshold
-                                  : std::clamp(threshold, kMinHoldThreshold, kMaxHoldThreshold);
+  float t = std::isnan(threshold)
+                ? float(kDefaultHoldThreshold)
+                : std::clamp(threshold, float(kMinHoldThreshold), float(kMaxHoldThreshold));
   ++state.frames;
   RotationUpdate u;
   if (!stats.valid || !std::isfinite(stats.ex) || !std::isfinite(stats.ey)) return u;

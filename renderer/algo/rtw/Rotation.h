@@ -27,9 +27,9 @@
 namespace sl::rtw {
 
 /// Default and range of the vibration threshold on e_x (seed 000 uses 0.9999).
-inline constexpr float kDefaultHoldThreshold = 0.9999f;
-inline constexpr float kMinHoldThreshold = 0.9f;
-inline constexpr float kMaxHoldThreshold = 1.0f;
+inline constexpr double kDefaultHoldThreshold = 0.9999;
+inline constexpr double kMinHoldThreshold = 0.9;
+inline constexpr double kMaxHoldThreshold = 1.0;
 
 struct RotationState {
   glm::mat2 R{1.0f};            ///< R_k: rotated (SM) plane -> base light plane, p = R q
@@ -67,8 +67,9 @@ struct RotationUpdate {
 /// which the separable warp already gives its texels whatever the angle. Checked after the
 /// anisotropy gate, before the hold.
 RotationUpdate updateRotation(RotationState& state, const MomentStats& stats,
-                              float threshold = kDefaultHoldThreshold, float minAnisotropy = 0.0f,
-                              float spread = 1.0f, float minSpread = 0.0f);
+                              float threshold = float(kDefaultHoldThreshold),
+                              float minAnisotropy = 0.0f, float spread = 1.0f,
+                              float minSpread = 0.0f);
 
 /// transpose(state.R): the rotation to pass as sl::FocusSettings::rotation (light view).
 glm::mat2 lightViewRotation(const RotationState& state);

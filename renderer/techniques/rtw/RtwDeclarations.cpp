@@ -34,11 +34,14 @@ std::vector<PassDecl> RtwShadowMap::passDecls(const std::string& id) {
   std::vector<PassDecl> passes;
   if (da)
     passes.push_back(
-        {"rotation estimate", "PCA and rotation",
+        {"rotation estimate", "PCA, prediction and rotation",
          "DA-RTW: the moment sums of the last frame's importance (read behind a fence, no "
-         "stall) give its mean and covariance; the principal axis (orange) gives the rotation "
-         "R' that turns the light's image plane so the axis lies on the shadow map's x axis — "
-         "unless e_x is above the vibration threshold, then R is held.",
+         "stall) give its mean and covariance and the principal axis (orange). rotation.mode = "
+         "pca turns the light's image plane so the axis lies on the shadow map's x axis, unless "
+         "e_x is above the vibration threshold. predicted: the last frame's importance is "
+         "resampled into a dozen candidate turns, each turn's warp is built as this frame "
+         "would build it, and the turn with the fewest expected wrong pixels at the last "
+         "frame's shadow edges is taken when it beats the current frame by the margin.",
          "covariance"});
   passes.push_back({"focus", "Focus the light frustum",
                     da ? "The light's orthographic frustum, rotated by R, fitted to what the "
@@ -151,6 +154,29 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                "The moment chain: channel I, xI, yI, xxI, yyI, xyI at every level (0 = full).",
                "4 B x 6 x (texels of every level of the chain of the PCA's IM)",
                floats([](const ParamSet& p) { return 6 * momentChainTexels(momentRes(p)); })});
+  d.push_back({"prediction.curve",
+               K::Curve,
+               "The predicted score (expected wrong pixels, relative units) of the turn to every "
+               "angle from -90 to 90 degrees in 5-degree steps (37 values; 0 = no prediction).",
+               "",
+               {}});
+  d.push_back({"prediction.searched",
+               K::Curve,
+               "The turns the prediction scored this frame: angle (degrees), score, pairs.",
+               "",
+               {}});
+  for (const char* n :
+       {"prediction.valid", "prediction.reason", "prediction.current_deg", "prediction.best_deg",
+        "prediction.gain", "prediction.margin", "prediction.score.current", "prediction.score.best",
+        "prediction.undersampled.current", "prediction.undersampled.best", "prediction.weight",
+        "prediction.candidates", "prediction.m.p50", "prediction.m.p95", "prediction.ms",
+        "prediction.pixels", "prediction.edge_pixels"})
+    d.push_back(
+        {n,
+         K::Number,
+         "The turn prediction from the last frame's importance (algo/rtw/TurnPrediction.h).",
+         "",
+         {}});
   d.push_back({"pca.scale.x",
                K::Number,
                "Scale of the PCA's x (metres per centred IM unit: the half extent of the frustum "
@@ -184,7 +210,9 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                         "rotation.changes",
                         "pca.threshold",
                         "pca.min_anisotropy",
-                        "pca.min_spread"})
+                        "pca.min_spread",
+                        "pca.axis_deg",
+                        "rotation.mode"})
     d.push_back({n, K::Number, "PCA and rotation (the last frame's moments).", "", {}});
   return d;
 }

@@ -2,7 +2,9 @@
 #include "RtwShadowMap.h"
 
 #include <bit>
+#include <chrono>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "algo/Focus.h"
@@ -246,41 +248,90 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
                  "coordinates in [-1, 1] (the poster); with light.fit = tight the frustum's aspect "
                  "changes with the angle, and measured on diagonal and corridor the rotation then "
                  "never settles."});
+    add({.key = "rotation.mode",
+         .label = "Turn by",
+         .group = "Rotation",
+         .type = ParamType::Enum,
+         .defaultValue = 1,
+         .minValue = 0,
+         .maxValue = 2,
+         .step = 1,
+         .enumNames = {"pca", "predicted", "fixed"},
+         .help = "How the light's image plane is turned. pca: along the importance's principal "
+                 "axis every frame (Tokuyoshi et al. 2014), held by the vibration threshold and "
+                 "the two gates. predicted: to the angle whose warp, predicted from the last "
+                 "frame's importance map, leaves the fewest expected wrong pixels, when it beats "
+                 "the current frame by more than rotation.margin. fixed: rotation.fixed_deg, for "
+                 "sweeping the true error against the angle."});
+    add({.key = "rotation.fixed_deg",
+         .label = "Fixed turn",
+         .group = "Rotation",
+         .type = ParamType::Float,
+         .defaultValue = 0,
+         .minValue = -90,
+         .maxValue = 90,
+         .step = 1,
+         .help = "rotation.mode = fixed: the turn of the shadow map's x axis about the light "
+                 "direction, degrees counter-clockwise from the frame rtw-backward uses."});
+    add({.key = "rotation.margin",
+         .label = "Turn margin",
+         .group = "Rotation",
+         .type = ParamType::Float,
+         .defaultValue = rtw::kDefaultTurnMargin,
+         .minValue = 0,
+         .maxValue = 1,
+         .step = 0.01,
+         .help = "rotation.mode = predicted: turn only when the best angle's predicted score is "
+                 "lower than the current frame's by more than this share (the role the "
+                 "vibration threshold plays for pca). " +
+                 std::string(rtw::kTurnMarginWhy)});
+    add({.key = "prediction.weight",
+         .label = "Predict over",
+         .group = "Rotation",
+         .type = ParamType::Enum,
+         .defaultValue = 0,
+         .minValue = 0,
+         .maxValue = 1,
+         .step = 1,
+         .enumNames = {"edges", "pixels"},
+         .help = "What the predicted score counts. edges: the last frame's shadow-edge pixels, "
+                 "each with its edge's direction in the light plane (a hard shadow is wrong only "
+                 "near an edge, by the texel's width across it). pixels: every pixel the camera "
+                 "sees, edges of every direction alike."});
     add({.key = "pca.threshold",
          .label = "Vibration threshold",
          .group = "Rotation",
          .type = ParamType::Float,
-         .defaultValue = 0.9999,
-         .minValue = 0.9,
-         .maxValue = 1.0,
+         .defaultValue = rtw::kDefaultHoldThreshold,
+         .minValue = rtw::kMinHoldThreshold,
+         .maxValue = rtw::kMaxHoldThreshold,
          .step = 0.0001,
          .help = "Keep the rotation while e_x > threshold (Tokuyoshi et al. 2014 use 0.9999); 1.0 "
-                 "never holds."});
+                 "never holds. rotation.mode = predicted holds a turn smaller than acos(threshold) "
+                 "(0.81 degrees at 0.9999)."});
     add({.key = "pca.min_anisotropy",
          .label = "Min anisotropy",
          .group = "Rotation",
          .type = ParamType::Float,
-         .defaultValue = 0.9,
+         .defaultValue = 0,
          .minValue = 0,
          .maxValue = 1,
          .step = 0.01,
-         .help = "Turn only while the importance is thin: (l1 - l2) / (l1 + l2) of its covariance "
-                 "at least this; below it R stays as it is. 0 = always, as the poster. Measured: "
-                 "turning pays on a thin diagonal strip (0.99-0.997) and costs on wider views "
-                 "(0.1-0.7): docs/techniques/rtw.md."});
+         .help = "rotation.mode = pca: turn only while the importance is thin: (l1 - l2) / (l1 + "
+                 "l2) of its covariance at least this; below it R stays as it is. 0 = always, as "
+                 "the poster. For the ablation: docs/techniques/rtw.md."});
     add({.key = "pca.min_spread",
          .label = "Min spread",
          .group = "Rotation",
          .type = ParamType::Float,
-         .defaultValue = 0.05,
+         .defaultValue = 0,
          .minValue = 0,
          .maxValue = 1,
          .step = 0.01,
-         .help = "Turn only while the importance is spread over the map: the wider of the "
-                 "half-mass widths of last frame's 1D importance maps (x, y; share of the map) at "
-                 "least this; below it R stays as it is. 0 = always, as the poster. Half of the "
-                 "importance in a few % of the map is given its texels by the separable warp at "
-                 "any angle (measured on corridor, 0.006: docs/techniques/rtw.md)."});
+         .help = "rotation.mode = pca: turn only while the importance is spread over the map: the "
+                 "wider of the half-mass widths of last frame's 1D importance maps (share of the "
+                 "map) at least this; below it R stays as it is. 0 = always, as the poster. For "
+                 "the ablation: docs/techniques/rtw.md."});
   }
   std::string name, desc;
   if (id == "rtw-forward") {
@@ -419,22 +470,43 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx
       if (s.x == 1 && s.y == 1) break;
     }
     momentBuffer_ = gl::Buffer::create(GLsizeiptr(offset * sizeof(float)), nullptr, rw);
+    momentCounts_ = gl::Buffer::create(
+        GLsizeiptr(SL_RTW_COUNT_PLANES * size_t(momentRes) * size_t(momentRes) * sizeof(GLuint)),
+        nullptr, rw);
     momentRes_ = momentRes;
     momentFence_.reset();
   }
 }
 
 // The rotation of this frame from the moments of the last frame's IM, read back behind
-// a fence placed a frame ago: no stall (seed 000 also uses the previous frame's IM).
+// a fence placed a frame ago: no stall (seed 000 also uses the previous frame's IM). By
+// rotation.mode: PCA's axis with the poster's hold (pca), the turn whose predicted warp is
+// best (predicted), or a fixed angle (fixed, whatever the moments say).
 void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rotation estimate");
+  const ParamSet& p = ctx.params;
+  const bool fixed = enumIs(p, "rotation.mode", "fixed"), pca = enumIs(p, "rotation.mode", "pca"),
+             predicted = enumIs(p, "rotation.mode", "predicted");
+  lastUpdate_ = {};
+  predicted_ = false;
+  if (fixed) {
+    const glm::mat2 r = rtw::rotationOfAngle(p.get("rotation.fixed_deg"));
+    ++rotation_.frames;
+    if (r != rotation_.R) {
+      lastUpdate_.stepDeg =
+          float(rtw::foldQuarterTurn(p.get("rotation.fixed_deg") - rotation_.angleDeg()));
+      lastUpdate_.rotated = true;
+      rotation_.R = r;
+      ++rotation_.changes;
+    }
+  }
   if (!momentFence_ || !momentFence_.wait()) return;
   momentFence_.reset();
   std::vector<float> top = readFloats(momentBuffer_, size_t(momentOffsets_.back()), 6);
   rtw::MomentTexel t;
   for (int c = 0; c < 6; ++c) t[c] = top[c], lastTop_[c] = top[c];
   // pca.metric: in metres (the IM's axes span the light frustum's extents) or IM units.
-  const bool metres = ctx.params.getInt("pca.metric") == 0;
+  const bool metres = p.getInt("pca.metric") == 0;
   const glm::vec2 scale = metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f);
   rtw::MomentStats stats = rtw::momentsFromTop(t, scale);
   publishNumber(ctx, "pca.scale.x", scale.x);
@@ -445,9 +517,24 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   const float spreadY = rtw::halfMassWidth({last.begin() + imRes_, last.end()});
   const float spread = std::max(spreadX, spreadY);
   publishNumber(ctx, "pca.spread", spread);
-  lastUpdate_ = rtw::updateRotation(rotation_, stats, float(ctx.params.get("pca.threshold")),
-                                    float(ctx.params.get("pca.min_anisotropy")), spread,
-                                    float(ctx.params.get("pca.min_spread")));
+  if (pca) {
+    lastUpdate_ = rtw::updateRotation(rotation_, stats, float(p.get("pca.threshold")),
+                                      float(p.get("pca.min_anisotropy")), spread,
+                                      float(p.get("pca.min_spread")));
+  } else {  // the axis shown, not turned along
+    if (predicted) ++rotation_.frames;
+    lastUpdate_.valid = stats.valid;
+    lastUpdate_.e_x = stats.ex;
+    lastUpdate_.e_y = stats.ey;
+  }
+  // PCA's axis as an absolute angle: its angle in the frame the moments were taken in, plus
+  // that frame's turn.
+  std::optional<double> axis;
+  if (stats.valid) axis = momentAngleDeg_ + double(stats.angleDeg);
+  pcaAxisDeg_ = axis.value_or(0.0);
+  if (axis) publishNumber(ctx, "pca.axis_deg", rtw::foldQuarterTurn(*axis));
+  if (predicted || ctx.wants("prediction.valid") || ctx.wants("prediction.curve"))
+    predictTurn(ctx, axis, predicted);
   publishNumber(ctx, "pca.anisotropy", stats.anisotropy);
   publishNumber(ctx, "mean.x", stats.meanX);
   publishNumber(ctx, "mean.y", stats.meanY);
@@ -460,6 +547,148 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   const char* names[6] = {"moment.I",   "moment.xI",  "moment.yI",
                           "moment.xxI", "moment.yyI", "moment.xyI"};
   for (int c = 0; c < 6; ++c) publishNumber(ctx, names[c], top[c]);
+}
+
+LightFit RtwShadowMap::fitAt(const FrameContext& ctx, const glm::mat2& rotation) const {
+  FocusSettings fs;
+  fs.rotation = glm::transpose(rotation);  // rtw::lightViewRotation: the view needs R^T
+  if (ctx.params.getInt("light.fit") == 1) fs.extent = FocusExtent::RotationInvariant;
+  LightFit fit;
+  if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
+                                     ctx.light.directionalTowards(), fs, fit))
+    throw std::runtime_error(*err);
+  return fit;
+}
+
+rtw::ImportanceSnapshot RtwShadowMap::readSnapshot() const {
+  rtw::ImportanceSnapshot s;
+  const size_t m = size_t(momentRes_), plane = m * m;
+  std::vector<GLuint> bits(plane);
+  glGetTextureImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                    GLsizei(plane * sizeof(GLuint)), bits.data());
+  std::vector<GLuint> counts(SL_RTW_COUNT_PLANES * plane);
+  glGetNamedBufferSubData(momentCounts_.id(), 0, GLsizeiptr(counts.size() * sizeof(GLuint)),
+                          counts.data());
+  s.size = int(m);
+  s.importance.resize(plane);
+  s.meanImportance.resize(plane);
+  for (size_t i = 0; i < plane; ++i) {
+    s.importance[i] = std::bit_cast<float>(bits[i]);
+    const double sum = (double(counts[2 * plane + i]) * 4294967296.0 + double(counts[plane + i])) /
+                       SL_RTW_IMPORTANCE_ONE;
+    s.meanImportance[i] = counts[i] > 0 ? float(sum / double(counts[i])) : 0.0f;
+  }
+  s.pixels.assign(counts.begin(), counts.begin() + std::ptrdiff_t(plane));
+  s.edgeBins.assign(counts.begin() + std::ptrdiff_t(3 * plane), counts.end());
+  // The 1D maps that frame's warp was built from (copied beside the moments).
+  const std::vector<float> collapsed = readFloats(spread_, 0, 2 * size_t(imRes_));
+  s.collapsedX.assign(collapsed.begin(), collapsed.begin() + imRes_);
+  s.collapsedY.assign(collapsed.begin() + imRes_, collapsed.end());
+  // pca.source = im reads the whole IM: the prediction reads it at the block-max size.
+  return rtw::reduceSnapshot(s, kMomentImMax);
+}
+
+// The turn predicted from the last frame's importance (algo/rtw/TurnPrediction.h): every
+// candidate angle's frame fitted as this frame would fit it, the snapshot resampled into it.
+void RtwShadowMap::predictTurn(FrameContext& ctx, std::optional<double> pcaAxisDeg, bool apply) {
+  const auto start = std::chrono::steady_clock::now();
+  const ParamSet& p = ctx.params;
+  const rtw::ImportanceSnapshot snapshot = readSnapshot();
+  rtw::PredictionSettings settings;
+  settings.warp = {p.getInt("blur.radius"), float(p.get("blur.sigma")),
+                   float(p.get("importance.floor"))};
+  settings.warpResolution = imRes_;
+  settings.mapResolution = smRes_;
+  // k: texels per metre a sample of importance 1 asks for (one texel per pixel at the near
+  // plane: H / (2 tan(fovY / 2) near); TurnPrediction.h).
+  settings.densityPerImportance =
+      double(ctx.height) /
+      (2.0 * std::tan(0.5 * double(ctx.camera.fovYDeg) * std::numbers::pi / 180.0) *
+       double(ctx.camera.nearM));
+  settings.weight = p.getInt("prediction.weight") == 0 ? rtw::PredictionWeight::EdgePixels
+                                                       : rtw::PredictionWeight::Pixels;
+  auto frameAt = [&](double angleDeg) {
+    const LightFit fit = fitAt(ctx, rtw::rotationOfAngle(angleDeg));
+    rtw::CandidateFrame c;
+    c.angleDeg = angleDeg;
+    c.turnDeg = angleDeg - momentAngleDeg_;
+    c.fromSnapshot = rtw::uvAffineBetween(momentViewProj_, fit.viewProj);
+    c.extentM = fit.extentM;
+    return c;
+  };
+  auto predict = [&](double angleDeg) {
+    return rtw::predictWarp(snapshot, frameAt(angleDeg), settings);
+  };
+  lastSearch_ = rtw::searchTurn(rotation_.angleDeg(), pcaAxisDeg, predict);
+  const double threshold =
+      std::clamp(p.get("pca.threshold"), rtw::kMinHoldThreshold, rtw::kMaxHoldThreshold);
+  const double holdDeg = std::acos(threshold) * 180.0 / std::numbers::pi;
+  lastDecision_ = rtw::decideTurn(lastSearch_, p.get("rotation.margin"), holdDeg);
+  predicted_ = true;
+  if (apply && lastDecision_.reason == rtw::TurnReason::Turned) {
+    const double step = rtw::foldQuarterTurn(lastDecision_.toDeg - rotation_.angleDeg());
+    rotation_.R = rtw::rotationOfAngle(lastDecision_.toDeg);
+    ++rotation_.changes;
+    rotation_.accumulatedDeg += std::abs(step);
+    lastUpdate_.rotated = true;
+    lastUpdate_.stepDeg = float(step);
+  }
+  const rtw::WarpPrediction& cur = lastSearch_.scored[size_t(lastSearch_.current)];
+  const rtw::WarpPrediction& best = lastSearch_.scored[size_t(lastSearch_.best)];
+  publishNumber(ctx, "prediction.valid", cur.valid && best.valid ? 1 : 0);
+  publishNumber(ctx, "prediction.reason", double(int(lastDecision_.reason)));
+  publishNumber(ctx, "prediction.current_deg", cur.angleDeg);
+  publishNumber(ctx, "prediction.best_deg", best.angleDeg);
+  publishNumber(ctx, "prediction.gain", lastDecision_.gain);
+  publishNumber(ctx, "prediction.margin", p.get("rotation.margin"));
+  publishNumber(ctx, "prediction.score.current", cur.score);
+  publishNumber(ctx, "prediction.score.best", best.score);
+  publishNumber(ctx, "prediction.undersampled.current", cur.undersampled);
+  publishNumber(ctx, "prediction.undersampled.best", best.undersampled);
+  publishNumber(ctx, "prediction.weight", cur.weight);
+  if (ctx.wants("prediction.pixels") || ctx.wants("prediction.edge_pixels")) {
+    double pixels = 0.0, edges = 0.0;
+    for (std::size_t i = 0; i < snapshot.importance.size(); ++i) {
+      pixels += snapshot.pixels.empty() ? 0.0 : double(snapshot.pixels[i]);
+      edges += snapshot.edgePixels(i);
+    }
+    publishNumber(ctx, "prediction.pixels", pixels);
+    publishNumber(ctx, "prediction.edge_pixels", edges);
+  }
+  publishNumber(ctx, "prediction.candidates", double(lastSearch_.scored.size()));
+  if (ctx.wants("prediction.searched")) {
+    std::vector<float> pairs;
+    for (const rtw::WarpPrediction& w : lastSearch_.scored) {
+      pairs.push_back(float(w.angleDeg));
+      pairs.push_back(w.valid ? float(w.score) : 0.0f);
+    }
+    publishValues(ctx, "prediction.searched", std::move(pairs));
+  }
+  if (ctx.wants("prediction.curve")) {  // the panel's plot: -90..90 every kTurnCurveStepDeg
+    std::vector<float> curve;
+    for (double a = -90.0; a <= 90.0 + 1e-9; a += rtw::kTurnCurveStepDeg) {
+      const double f = rtw::foldQuarterTurn(a);
+      const auto same = std::find_if(
+          lastSearch_.scored.begin(), lastSearch_.scored.end(),
+          [&](const rtw::WarpPrediction& w) { return std::abs(w.angleDeg - f) < 1e-9; });
+      const rtw::WarpPrediction w = same != lastSearch_.scored.end() ? *same : predict(f);
+      curve.push_back(w.valid ? float(w.score) : 0.0f);
+    }
+    publishValues(ctx, "prediction.curve", std::move(curve));
+  }
+  if (ctx.wants("prediction.m.p50") || ctx.wants("prediction.m.p95")) {
+    // The frame this one is rendered in: what the renderer's aliasing.p50 / p95 will measure.
+    const std::vector<double> q = {0.5, 0.95};
+    const std::vector<double> m =
+        rtw::predictedAliasingQuantiles(snapshot, frameAt(rotation_.angleDeg()), settings, q);
+    if (m.size() == 2) {
+      publishNumber(ctx, "prediction.m.p50", m[0]);
+      publishNumber(ctx, "prediction.m.p95", m[1]);
+    }
+  }
+  publishNumber(
+      ctx, "prediction.ms",
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
 }
 
 // DA-RTW's moment chain of this frame's moment IM (level 1 straight from it, then one
@@ -507,6 +736,8 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
   }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   momentExtentM_ = lastExtentM_;
+  momentViewProj_ = lastViewProj_;
+  momentAngleDeg_ = rotation_.angleDeg();
   // The chain itself (level images) and its IM, for the moment panel (debug: blocking),
   // only what is asked for.
   publishFloatBits(ctx, "importance.moments", momentIm_);
@@ -544,7 +775,10 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
   glBindTextureUnit(SL_UNIT_HARD, ctx.previous.hard.id());
   const GLuint zero = 0;
   if (importance_) glClearTexImage(importance_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  if (momentIm_) glClearTexImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  if (momentIm_) {
+    glClearTexImage(momentIm_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferData(momentCounts_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  }
   if (backward()) {
     // Straight into the two 1D maps (the collapse's max over rows and columns is the max
     // of the scatter), plus the 2D IM for the panels and DA-RTW's moment IM when present.
@@ -555,15 +789,18 @@ void RtwShadowMap::buildImportance(FrameContext& ctx, const glm::mat4& lightView
     backward_.set("u_n", imRes_);
     backward_.set("u_writeIm", importance_ ? 1 : 0);
     backward_.set("u_writeMomentIm", momentIm_ ? 1 : 0);
+    backward_.set("u_lightExtentM", lastExtentM_);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_COLLAPSED, collapsed_.id());
     if (importance_)
       glBindImageTexture(SL_RTW_IMAGE_IM, importance_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                          GL_R32UI);
-    if (momentIm_)
+    if (momentIm_) {
       glBindImageTexture(SL_RTW_IMAGE_MOMENT_IM, momentIm_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                          GL_R32UI);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RTW_BUFFER_MOMENT_COUNTS, momentCounts_.id());
+    }
     // One full-screen triangle into a framebuffer with no attachments, one fragment per
     // scattering pixel (every importance.stride-th in x and y).
     const int stride = p.getInt("importance.stride");  // u_stride: bound from its declaration
@@ -667,33 +904,19 @@ void RtwShadowMap::renderWarped(FrameContext& ctx, const glm::mat4& lightViewPro
 void RtwShadowMap::renderShadows(FrameContext& ctx) {
   const ParamSet& p = ctx.params;
   ensureResources(p.getInt("resolution"), p.getInt("im.resolution"), ctx);
-  if (config_.rotation) rotationFromLastMoments(ctx);
   if (config_.rotation) {
-    publishNumber(ctx, "e_x", lastUpdate_.e_x);
-    publishNumber(ctx, "e_y", lastUpdate_.e_y);
-    publishNumber(ctx, "rotation.held", lastUpdate_.held ? 1 : 0);
-    publishNumber(ctx, "rotation.too_round", lastUpdate_.tooRound ? 1 : 0);
-    publishNumber(ctx, "rotation.too_concentrated", lastUpdate_.tooConcentrated ? 1 : 0);
-    publishNumber(ctx, "rotation.deg", rotation_.angleDeg());
-    publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
-    publishNumber(ctx, "rotation.changes", rotation_.changes);
-    publishNumber(ctx, "pca.threshold", p.get("pca.threshold"));
-    publishNumber(ctx, "pca.min_anisotropy", p.get("pca.min_anisotropy"));
-    publishNumber(ctx, "pca.min_spread", p.get("pca.min_spread"));
+    rotationFromLastMoments(ctx);
+    publishRotation(ctx);
   }
 
   LightFit fit;
   {
     auto pass = ctx.timer.scope("focus");
-    FocusSettings fs;
-    if (config_.rotation) fs.rotation = rtw::lightViewRotation(rotation_);
-    if (p.getInt("light.fit") == 1) fs.extent = FocusExtent::RotationInvariant;
-    if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds,
-                                       ctx.light.directionalTowards(), fs, fit))
-      throw std::runtime_error(*err);
+    fit = fitAt(ctx, config_.rotation ? rotation_.R : glm::mat2(1.0f));
   }
   view_ = depthMapView(fit);
   lastExtentM_ = fit.extentM;
+  lastViewProj_ = fit.viewProj;
   ctx.addOutline(fit.viewProj, OutlineRole::LightMap);  // the unwarped light frustum
 
   buildImportance(ctx, fit.viewProj, std::max(fit.extentM.x, fit.extentM.y) / float(imRes_));
@@ -701,8 +924,10 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
   buildWarpMaps(ctx);
   if (config_.rotation) {
     // The 1D maps of this frame for the next frame's spread gate, and the fence the next
-    // frame waits on before it reads them and the moment chain's top.
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    // frame waits on before it reads them, the moment chain's top, the moment IM and its
+    // counts (the turn prediction).
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
     glCopyNamedBufferSubData(collapsed_.id(), spread_.id(), 0, 0,
                              GLsizeiptr(2 * imRes_ * sizeof(float)));
     momentFence_.place();
@@ -712,6 +937,22 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
     renderWarped(ctx, fit.viewProj, true);
   }
   if (ctx.publication) publish(ctx, fit.viewProj);
+}
+
+void RtwShadowMap::publishRotation(FrameContext& ctx) {
+  const ParamSet& p = ctx.params;
+  publishNumber(ctx, "rotation.mode", p.getInt("rotation.mode"));
+  publishNumber(ctx, "e_x", lastUpdate_.e_x);
+  publishNumber(ctx, "e_y", lastUpdate_.e_y);
+  publishNumber(ctx, "rotation.held", lastUpdate_.held ? 1 : 0);
+  publishNumber(ctx, "rotation.too_round", lastUpdate_.tooRound ? 1 : 0);
+  publishNumber(ctx, "rotation.too_concentrated", lastUpdate_.tooConcentrated ? 1 : 0);
+  publishNumber(ctx, "rotation.deg", rotation_.angleDeg());
+  publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
+  publishNumber(ctx, "rotation.changes", rotation_.changes);
+  publishNumber(ctx, "pca.threshold", p.get("pca.threshold"));
+  publishNumber(ctx, "pca.min_anisotropy", p.get("pca.min_anisotropy"));
+  publishNumber(ctx, "pca.min_spread", p.get("pca.min_spread"));
 }
 
 void RtwShadowMap::publish(FrameContext& ctx, const glm::mat4& lightViewProj) {
@@ -790,6 +1031,8 @@ MemoryStats RtwShadowMap::memory() const {
     int texels = 0;
     for (glm::ivec2 s : momentSizes_) texels += s.x * s.y;
     m.add("moment chain (6 channels, all levels)", "R32F x6", texels, 1, 6, 4);
+    m.add("turn prediction counts (pixels, importance sum, edge bins)", "R32UI", momentRes_,
+          momentRes_, SL_RTW_COUNT_PLANES, 4);
   }
   if (spread_) m.add("last frame's 1D importance (x, y; the spread gate)", "R32F", imRes_, 1, 2, 4);
   if (uniformMap_)

@@ -7,7 +7,9 @@
 
 #include <vector>
 
+#include "algo/Focus.h"
 #include "algo/rtw/Rotation.h"
+#include "algo/rtw/TurnPrediction.h"
 #include "common/shared_constants.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
@@ -47,6 +49,14 @@ class RtwShadowMap : public Technique {
  private:
   void ensureResources(int smRes, int imRes, const FrameContext& ctx);
   void rotationFromLastMoments(FrameContext& ctx);
+  /// rotation.mode = predicted (or the prediction's keys asked for): the last frame's moment IM
+  /// and counts read back (behind the moment fence), the candidate turns scored and, in
+  /// predicted mode, R turned to the decision's angle.
+  void predictTurn(FrameContext& ctx, std::optional<double> pcaAxisDeg, bool apply);
+  /// The light frustum this frame would get turned to angleDeg (the fit renderShadows makes).
+  LightFit fitAt(const FrameContext& ctx, const glm::mat2& rotation) const;
+  rtw::ImportanceSnapshot readSnapshot() const;
+  void publishRotation(FrameContext& ctx);
   void buildMoments(FrameContext& ctx);
   void buildImportance(FrameContext& ctx, const glm::mat4& lightViewProj, float lightTexelM);
   void buildWarpMaps(FrameContext& ctx);
@@ -69,6 +79,9 @@ class RtwShadowMap : public Technique {
   gl::Framebuffer smFbo_, forwardFbo_, uniformFbo_;
   gl::Buffer collapsed_, blurred_, warp_, inverse_, momentBuffer_;
   gl::Buffer spread_;  ///< DA-RTW: a copy of the last frame's 1D maps (the spread gate)
+  /// DA-RTW: per moment IM texel, the scattering pixels and the edge-normal bins
+  /// (SL_RTW_COUNT_PLANES planes of momentRes^2 uints: pixels, importance sum, edge bins).
+  gl::Buffer momentCounts_;
   gl::Texture warpView_, inverseView_;  ///< buffer textures over warp_ and inverse_
   gl::Framebuffer scatterFbo_;          ///< no attachments: the backward scatter's pass
   gl::VertexArray emptyVao_;
@@ -78,10 +91,18 @@ class RtwShadowMap : public Technique {
   int smRes_ = 0, imRes_ = 0, momentRes_ = 0;
   DepthMapView view_;
   glm::vec2 lastExtentM_{1.0f};
-  glm::vec2 momentExtentM_{1.0f};  ///< the light frustum extent the pending moments were taken in
+  glm::mat4 lastViewProj_{1.0f};
+  glm::vec2 momentExtentM_{1.0f};   ///< the light frustum extent the pending moments were taken in
+  glm::mat4 momentViewProj_{1.0f};  ///< ... and its view-projection (the prediction's snapshot)
+  double momentAngleDeg_ = 0.0;     ///< ... and the angle of R it was turned by
   rtw::RotationState rotation_;
   rtw::RotationUpdate lastUpdate_;
   std::array<float, 6> lastTop_{};
+  /// The last prediction: every candidate scored and the decision (valid when searched).
+  rtw::TurnSearch lastSearch_;
+  rtw::TurnDecision lastDecision_;
+  bool predicted_ = false;   ///< this frame made a prediction
+  double pcaAxisDeg_ = 0.0;  ///< PCA's axis as an absolute angle (when valid)
 };
 
 }  // namespace sl

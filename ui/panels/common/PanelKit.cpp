@@ -499,6 +499,11 @@ void PlotWidget::setLines(std::vector<Line> lines) {
   update();
 }
 
+void PlotWidget::setMarkers(std::vector<Marker> markers) {
+  markers_ = std::move(markers);
+  update();
+}
+
 void PlotWidget::setXRange(double lo, double hi) {
   fixedX0_ = lo;
   fixedX1_ = hi;
@@ -655,6 +660,24 @@ void PlotWidget::paintEvent(QPaintEvent*) {
     p.drawText(QRectF(a.left() + 4, y - line - 1, a.width() - 8, line),
                Qt::AlignRight | Qt::AlignBottom, l.label);
   }
+  // Markers: vertical lines, their labels stacked down from the top so none covers another.
+  int markerRow = 0;
+  for (const Marker& m : markers_) {
+    if (!std::isfinite(m.x) || m.x < r.x0 || m.x > r.x1) continue;
+    const double x = toX(m.x);
+    p.setPen(QPen(m.color, 1.6, m.style));
+    p.drawLine(QPointF(x, a.top()), QPointF(x, a.bottom()));
+    if (m.label.isEmpty()) continue;
+    const int tw = fm.horizontalAdvance(m.label) + 6;
+    const double left = x + tw + 2 < a.right() ? x + 2 : x - tw - 2;
+    const QRectF box(left, a.bottom() - (markerRow + 1) * (line + 1) - 2, tw, line);
+    QColor bg = pal.color(QPalette::Base);
+    bg.setAlpha(200);
+    p.fillRect(box, bg);
+    p.setPen(m.color);
+    p.drawText(box, Qt::AlignCenter, m.label);
+    ++markerRow;
+  }
   for (const Series& s : series_) {
     if (s.points.empty()) continue;
     QPainterPath path;
@@ -681,6 +704,14 @@ void PlotWidget::paintEvent(QPaintEvent*) {
     p.setPen(
         QPen(s.color, s.highlighted ? s.width + 1 : s.width, s.style, Qt::RoundCap, Qt::RoundJoin));
     p.drawPath(path);
+    if (s.dots) {
+      p.setBrush(s.color);
+      p.setPen(Qt::NoPen);
+      for (const QPointF& pt : s.points)
+        if (std::isfinite(pt.y()) && !(logY_ && !(pt.y() > 0)))
+          p.drawEllipse(QPointF(toX(pt.x()), toY(pt.y())), 3.0, 3.0);
+      p.setBrush(Qt::NoBrush);
+    }
   }
   p.restore();
 

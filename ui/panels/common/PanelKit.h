@@ -3,6 +3,7 @@
 // class of every panel that shows the renderer's Publication. QPainter only, no GL.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <set>
@@ -168,11 +169,19 @@ class PlotWidget : public QWidget {
     Qt::PenStyle style = Qt::SolidLine;
     qreal width = 1.6;
     bool highlighted = false;  ///< drawn thicker with a glow
+    bool dots = false;         ///< a dot at every point (sparse measurements)
   };
   struct Line {
     double y = 0.0;
     QColor color;
     QString label;
+  };
+  /// A vertical line at x (a chosen value of the x axis), its label along its top.
+  struct Marker {
+    double x = 0.0;
+    QColor color;
+    QString label;
+    Qt::PenStyle style = Qt::SolidLine;
   };
 
   explicit PlotWidget(QWidget* parent = nullptr);
@@ -181,6 +190,8 @@ class PlotWidget : public QWidget {
   void setAxisLabels(const QString& x, const QString& y);
   void setSeries(std::vector<Series> series);
   void setLines(std::vector<Line> lines);
+  void setMarkers(std::vector<Marker> markers);
+  const std::vector<Marker>& markers() const { return markers_; }
   /// Fixed ranges (lo >= hi: automatic from the data).
   void setXRange(double lo, double hi);
   void setYRange(double lo, double hi);
@@ -210,6 +221,7 @@ class PlotWidget : public QWidget {
   QString title_, xLabel_, yLabel_, placeholder_;
   std::vector<Series> series_;
   std::vector<Line> lines_;
+  std::vector<Marker> markers_;
   double fixedX0_ = 0, fixedX1_ = 0, fixedY0_ = 0, fixedY1_ = 0;
   bool logY_ = false;
   bool highlighted_ = false;
@@ -250,11 +262,24 @@ class PublicationPanel : public QWidget {
   /// Whether showProbe draws anything: the view reads the pixel back (a GPU sync) only
   /// while a visible panel says so.
   virtual bool wantsProbe() const { return false; }
+  /// The answer to variantErrorsRequested, one call per variant as it is measured: its error
+  /// (% of the covered pixels that disagree with the exact reference; NaN when not measured,
+  /// `problem` then says why), for the view of frame `frame` (the frame shown when asked).
+  virtual void showVariantError(const QString& tag, int index, double errorPct, std::uint64_t frame,
+                                const QString& problem) {
+    (void)tag, (void)index, (void)errorPct, (void)frame, (void)problem;
+  }
 
  Q_SIGNALS:
   /// The panel asks the window to move the light (degrees; e.g. a click on the Storage
   /// factor panel's hemisphere).
   void lightChosen(double azimuthDeg, double elevationDeg);
+  /// The panel asks the window to measure the view as it is shown with each variant of the
+  /// shown technique's parameters ("key=value" assignments on top of the view's), one frame
+  /// each on the render thread, against the exact reference (e.g. the Covariance panel's
+  /// error at fixed turns). A newer request with the same tag replaces an unfinished one;
+  /// the errors come back through showVariantError.
+  void variantErrorsRequested(const QString& tag, const QList<QStringList>& variants);
 
  protected:
   /// Puts `content` under a placeholder switch: showContent(false, text) shows the text.

@@ -12,13 +12,16 @@
 #include <cmath>
 
 #include <QGridLayout>
+#include <QJsonArray>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPushButton>
 #include <QVBoxLayout>
 
 #include "algo/rtw/Moments.h"
+#include "algo/rtw/TurnPrediction.h"
 #include "Theme.h"
 
 namespace sl::ui {
@@ -204,6 +207,36 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   grid->setRowStretch(line, 1);
   middle->addWidget(numbers_, 2);
   outer->addLayout(middle, 3);
+  // The turn prediction: its curve, the marked angles, the measured sweep on request.
+  predictionPlot_ = new PlotWidget;
+  predictionPlot_->setObjectName(QStringLiteral("covariancePrediction"));
+  predictionPlot_->setTitle(
+      tr("Turn prediction: expected wrong pixels of each turn ÷ the current frame's "
+         "(repeats every 90°)"));
+  predictionPlot_->setAxisLabels(tr("turn (°)"), QString());
+  predictionPlot_->setXRange(-90.0, 90.0);
+  predictionPlot_->setToolTip(
+      tr("For every turn of the light's image plane, the warp it would give is predicted from "
+         "the last frame's importance map (resampled into the turned frame, collapsed, blurred "
+         "and floored as the renderer does): each shadow-edge pixel of the last frame would be "
+         "wrong in proportion to the texel's width across its edge. 1 = the current frame. "
+         "rotation.mode = predicted turns to the lowest point when it is lower by more than "
+         "rotation.margin."));
+  outer->addWidget(predictionPlot_, 2);
+  auto* measureRow = new QHBoxLayout;
+  measureButton_ = new QPushButton(tr("Measure the error at these turns"));
+  measureButton_->setObjectName(QStringLiteral("covarianceMeasure"));
+  measureButton_->setToolTip(
+      tr("Renders this view with the turn fixed at every 15° from −90° to 90° and at the current "
+         "angle, one frame each on the render thread, and draws each error against the exact "
+         "reference, divided by the current angle's: the truth beside the prediction."));
+  connect(measureButton_, &QPushButton::clicked, this, &CovariancePanel::measureTurns);
+  measureStatus_ = new QLabel;
+  measureStatus_->setObjectName(QStringLiteral("covarianceMeasureStatus"));
+  measureStatus_->setWordWrap(true);
+  measureRow->addWidget(measureButton_);
+  measureRow->addWidget(measureStatus_, 1);
+  outer->addLayout(measureRow);
   auto* plots = new QHBoxLayout;
   anglePlot_ = new PlotWidget;
   anglePlot_->setTitle(tr("Rotation of R (°)"));
@@ -221,6 +254,9 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
 void CovariancePanel::resetHistory() {
   history_.clear();
   updateHistoryPlots();
+  measured_ = {};
+  measureStatus_->clear();
+  updatePredictionPlot();
 }
 
 void CovariancePanel::showPublication(const sl::Publication& pub) {
@@ -361,10 +397,72 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   QString stateText, stateKey;
   QColor stateColor;
   const double stepDeg = numberOr(n, "rotation.step_deg", 0.0);
+  const int mode = int(numberOr(n, "rotation.mode", 0.0));  // pca | predicted | fixed
+  const double rDeg = numberOr(n, "rotation.deg", 0.0);
+  const QString angle = QStringLiteral("%1°").arg(rDeg, 0, 'f', 1);
   if (!n.count("rotation.held")) {
     stateKey = QStringLiteral("none");
     stateText = tr("no rotation published (not DA-RTW)");
     stateColor = QColor(90, 94, 100);
+  } else if (mode == 2) {
+    stateKey = QStringLiteral("fixed");
+    stateText = tr("FIXED at %1 (rotation.fixed_deg)").arg(angle);
+    stateColor = QColor(90, 94, 100);
+  } else if (mode == 1) {
+    using sl::rtw::TurnReason;
+    const auto reason = n.count("prediction.reason")
+                            ? TurnReason(int(numberOr(n, "prediction.reason", 0.0)))
+                            : TurnReason::NoPrediction;
+    const double gainPct = 100.0 * numberOr(n, "prediction.gain", 0.0);
+    const double bestDeg = numberOr(n, "prediction.best_deg", 0.0);
+    const double marginPct = 100.0 * numberOr(n, "prediction.margin", 0.0);
+    switch (reason) {
+      case TurnReason::Turned:
+        stateKey = QStringLiteral("turned");
+        stateText = tr("TURNED to %1: predicted %2 % fewer wrong pixels than at %3°")
+                        .arg(angle)
+                        .arg(gainPct, 0, 'f', 0)
+                        .arg(numberOr(n, "prediction.current_deg", 0.0), 0, 'f', 1);
+        stateColor = QColor(200, 110, 30);
+        break;
+      case TurnReason::WithinMargin:
+        stateKey = QStringLiteral("held_margin");
+        stateText = tr("HELD at %1: the best turn, %2°, is predicted only %3 % better "
+                       "(margin %4 %)")
+                        .arg(angle)
+                        .arg(bestDeg, 0, 'f', 1)
+                        .arg(gainPct, 0, 'f', 0)
+                        .arg(marginPct, 0, 'f', 0);
+        stateColor = QColor(60, 150, 80);
+        break;
+      case TurnReason::CurrentIsBest:
+        stateKey = QStringLiteral("held_best");
+        stateText = tr("HELD at %1: no turn is predicted better").arg(angle);
+        stateColor = QColor(60, 150, 80);
+        break;
+      case TurnReason::WithinVibration:
+        stateKey = QStringLiteral("held_vibration");
+        stateText = tr("HELD at %1: the best turn, %2°, is within the vibration threshold")
+                        .arg(angle)
+                        .arg(bestDeg, 0, 'f', 1);
+        stateColor = QColor(60, 150, 80);
+        break;
+      case TurnReason::ViewMoved:
+        stateKey = QStringLiteral("view_moved");
+        stateText = tr("HELD at %1: the view moved since the last frame (its importance lies "
+                       "outside this frame)")
+                        .arg(angle);
+        stateColor = QColor(128, 131, 136);
+        break;
+      case TurnReason::NoPrediction:
+        stateKey = QStringLiteral("no_prediction");
+        stateText =
+            n.count("prediction.weight") && numberOr(n, "prediction.weight", 0.0) == 0.0
+                ? tr("NO PREDICTION — no shadow edge in the last frame: R kept at %1").arg(angle)
+                : tr("NO PREDICTION yet (no last frame): R kept at %1").arg(angle);
+        stateColor = QColor(128, 131, 136);
+        break;
+    }
   } else if (!pcaValid) {
     stateKey = QStringLiteral("no_axis");
     stateText = tr("NO AXIS — isotropic or empty importance: R kept");
@@ -394,6 +492,8 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
     stateText = tr("UNCHANGED — the axis is exactly x (e_y = 0)");
     stateColor = QColor(90, 94, 100);
   }
+  drawn_[QStringLiteral("mode")] = mode;
+  drawn_[QStringLiteral("state_text")] = stateText;
   drawn_[QStringLiteral("state")] = stateKey;
   drawn_[QStringLiteral("step_deg")] = stepDeg;
   drawn_[QStringLiteral("published_axis_deg")] = havePublished ? publishedDeg : axisDeg;
@@ -442,6 +542,134 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   drawn_[QStringLiteral("history.angle_min_deg")] = lo;
   drawn_[QStringLiteral("history.angle_max_deg")] = hi;
   updateHistoryPlots();
+
+  // The turn prediction of this frame.
+  prediction_ = {};
+  prediction_.frame = pub.frameIndex;
+  prediction_.valid = numberOr(n, "prediction.valid", 0.0) != 0.0;
+  prediction_.current = numberOr(n, "prediction.score.current", 0.0);
+  prediction_.currentDeg = numberOr(n, "prediction.current_deg", rDeg);
+  prediction_.chosenDeg = rDeg;
+  if (n.count("pca.axis_deg")) prediction_.pcaDeg = numberOr(n, "pca.axis_deg", 0.0);
+  if (auto c = pub.curves.find("prediction.curve"); c != pub.curves.end())
+    prediction_.curve.assign(c->second.begin(), c->second.end());
+  measureButton_->setEnabled(n.count("rotation.mode") > 0);
+  updatePredictionPlot();
+}
+
+namespace {
+/// Every angle in [-90, 90] equivalent to `deg` under the quarter-turn symmetry.
+std::vector<double> quarterTurnCopies(double deg) {
+  std::vector<double> out;
+  const double f = sl::rtw::foldQuarterTurn(deg);
+  for (double a : {f - 90.0, f, f + 90.0})
+    if (a >= -90.0 - 1e-9 && a <= 90.0 + 1e-9) out.push_back(a);
+  return out;
+}
+}  // namespace
+
+void CovariancePanel::updatePredictionPlot() {
+  std::vector<PlotWidget::Series> series;
+  std::vector<PlotWidget::Marker> markers;
+  const Prediction& p = prediction_;
+  QJsonArray ratios;
+  if (p.valid && p.current > 0.0 && !p.curve.empty()) {
+    PlotWidget::Series curve{tr("predicted"), {}, QColor(255, 210, 40)};
+    curve.width = 2.0;
+    for (std::size_t i = 0; i < p.curve.size(); ++i) {
+      const double a = -90.0 + sl::rtw::kTurnCurveStepDeg * double(i);
+      const double ratio = p.curve[i] > 0.0 ? p.curve[i] / p.current : std::nan("");
+      curve.points.emplace_back(a, ratio);
+      ratios.append(ratio);
+    }
+    series.push_back(std::move(curve));
+  }
+  // Measured: each angle's error over the current angle's (the sweep's last variant).
+  const Measured& m = measured_;
+  const double base = m.errorPct.empty() ? std::nan("") : m.errorPct.back();
+  QJsonArray measuredRatios;
+  if (m.done > 0 && std::isfinite(base) && base > 0.0) {
+    PlotWidget::Series truth{tr("measured"), {}, QColor(120, 200, 255), Qt::DashLine};
+    truth.dots = true;
+    for (std::size_t i = 0; i + 1 < m.anglesDeg.size(); ++i) {
+      const double r = m.errorPct[i] / base;
+      truth.points.emplace_back(m.anglesDeg[i], r);
+      measuredRatios.append(std::isfinite(r) ? QJsonValue(r) : QJsonValue());
+    }
+    series.push_back(std::move(truth));
+  }
+  auto mark = [&markers](double deg, const QColor& c, const QString& label, Qt::PenStyle style) {
+    bool first = true;
+    for (double a : quarterTurnCopies(deg)) {
+      markers.push_back({a, c, first ? label : QString(), style});
+      first = false;
+    }
+  };
+  if (p.valid || !p.curve.empty()) {
+    if (p.pcaDeg) mark(*p.pcaDeg, QColor(255, 160, 40), tr("PCA axis"), Qt::DashLine);
+    mark(p.currentDeg, QColor(230, 230, 230), tr("was"), Qt::DotLine);
+    mark(p.chosenDeg, QColor(90, 200, 110), tr("now"), Qt::SolidLine);
+  }
+  predictionPlot_->setSeries(std::move(series));
+  predictionPlot_->setMarkers(std::move(markers));
+  predictionPlot_->setLines({{1.0, QColor(200, 200, 200), QString()}});
+  predictionPlot_->setPlaceholder(
+      p.valid ? tr("Open this panel on DA-RTW for the predicted curve.")
+              : tr("No prediction in this frame (DA-RTW predicts from the last frame's "
+                   "importance and shadow edges)."));
+  drawn_[QStringLiteral("prediction.frame")] = double(p.frame);
+  drawn_[QStringLiteral("prediction.valid")] = p.valid;
+  drawn_[QStringLiteral("prediction.ratios")] = ratios;
+  drawn_[QStringLiteral("prediction.chosen_deg")] = p.chosenDeg;
+  drawn_[QStringLiteral("prediction.markers")] = int(predictionPlot_->markers().size());
+  drawn_[QStringLiteral("measured.frame")] = double(m.frame);
+  drawn_[QStringLiteral("measured.done")] = m.done;
+  drawn_[QStringLiteral("measured.total")] = int(m.anglesDeg.size());
+  drawn_[QStringLiteral("measured.ratios")] = measuredRatios;
+}
+
+void CovariancePanel::measureTurns() {
+  measured_ = {};
+  measured_.frame = prediction_.frame;
+  // The current angle last: the sweep's errors are drawn relative to it.
+  measured_.currentDeg = prediction_.chosenDeg;
+  for (double a = -90.0; a <= 90.0 + 1e-9; a += kMeasureStepDeg) measured_.anglesDeg.push_back(a);
+  double current = std::fmod(prediction_.chosenDeg, 180.0);
+  if (current > 90.0) current -= 180.0;
+  if (current < -90.0) current += 180.0;
+  measured_.anglesDeg.push_back(current);
+  measured_.errorPct.assign(measured_.anglesDeg.size(), std::nan(""));
+  QList<QStringList> variants;
+  for (double a : measured_.anglesDeg)
+    variants.push_back({QStringLiteral("rotation.mode=fixed"),
+                        QStringLiteral("rotation.fixed_deg=%1").arg(a, 0, 'g', 10)});
+  measureStatus_->setText(
+      tr("Measuring %1 turns of frame %2's view…").arg(variants.size()).arg(measured_.frame));
+  updatePredictionPlot();
+  Q_EMIT variantErrorsRequested(QStringLiteral("turns"), variants);
+}
+
+void CovariancePanel::showVariantError(const QString& tag, int index, double errorPct,
+                                       std::uint64_t frame, const QString& problem) {
+  if (tag != QLatin1String("turns") || index < 0 || index >= int(measured_.errorPct.size())) return;
+  measured_.errorPct[std::size_t(index)] = errorPct;
+  measured_.done = index + 1;
+  measured_.frame = frame;
+  if (!problem.isEmpty()) measured_.problem = problem;
+  const int total = int(measured_.anglesDeg.size());
+  QString text =
+      measured_.done < total
+          ? tr("Measured %1 of %2 turns of frame %3's view…")
+                .arg(measured_.done)
+                .arg(total)
+                .arg(frame)
+          : tr("Measured: the error of frame %1's view at every turn ÷ its error at %2° (%3 %).")
+                .arg(frame)
+                .arg(measured_.anglesDeg.back(), 0, 'f', 1)
+                .arg(measured_.errorPct.back(), 0, 'f', 3);
+  if (!measured_.problem.isEmpty()) text += QStringLiteral(" ") + measured_.problem;
+  measureStatus_->setText(text);
+  updatePredictionPlot();
 }
 
 void CovariancePanel::setRow(const QString& key, const QString& value) {
@@ -503,6 +731,16 @@ QStringList CovariancePanel::readoutProblems(const QJsonObject& drawn, const sl:
          QStringLiteral("λ1 %1, published %2").arg(eig).arg(num("eigen.1")));
   // The state names what the renderer did: its flags, and the turn it made.
   const QString state = drawn.value(QStringLiteral("state")).toString();
+  const int mode = int(num("rotation.mode"));
+  static const char* reasons[] = {"no_prediction", "turned",         "held_margin",
+                                  "held_best",     "held_vibration", "view_moved"};
+  const int reason = std::isfinite(num("prediction.reason")) ? int(num("prediction.reason")) : 0;
+  if (mode == 1 || mode == 2) {
+    const QString want =
+        mode == 2 ? QStringLiteral("fixed") : QLatin1String(reasons[std::clamp(reason, 0, 5)]);
+    expect(state == want, QStringLiteral("state %1, the renderer's %2").arg(state, want));
+    return out;
+  }
   const QString expected = num("pca.valid") == 0            ? QStringLiteral("no_axis")
                            : num("rotation.too_round") != 0 ? QStringLiteral("too_round")
                            : num("rotation.too_concentrated") != 0

@@ -1,11 +1,15 @@
 // The Covariance panel (DA-RTW, seed 000): the 1σ and 2σ ellipses of the importance
 // distribution over the IM with its principal axis, the eigenvalues, e_x against the
-// vibration threshold on a gauge, whether the rotation was held this frame, and a history
-// of the rotation angle and e_x: the view for exploring the PCA vibration threshold.
+// vibration threshold on a gauge, what the rotation did this frame and why, the predicted
+// score of every turn from -90° to 90° with the current angle, PCA's axis and the chosen
+// angle marked (and, on request, the error measured at fixed turns beside it), and a history
+// of the rotation angle and e_x: the view for exploring when turning pays.
 #pragma once
 
 #include <deque>
 #include <map>
+#include <optional>
+#include <vector>
 
 #include <QString>
 #include <QStringList>
@@ -14,6 +18,7 @@
 #include "panels/rtw/RtwPanelKeys.h"
 
 class QLabel;
+class QPushButton;
 
 namespace sl::ui {
 
@@ -33,6 +38,10 @@ class CovariancePanel : public PublicationPanel {
   /// same line's angle in the IM's texel grid, eigenvalues, "source".
   QJsonObject drawnValues() const override;
   void resetHistory() override;
+  void showVariantError(const QString& tag, int index, double errorPct, std::uint64_t frame,
+                        const QString& problem) override;
+  /// The fixed turns the measure button sweeps: every kMeasureStepDeg from -90 to 90.
+  static constexpr double kMeasureStepDeg = 15.0;
   /// What in `drawn` (drawnValues() of a frame) disagrees with the renderer's publication of
   /// that frame: the frame, R turned, the turn, e_x as shown, the axis drawn, λ1, and the state
   /// against the renderer's flags. Empty: every readout agrees.
@@ -42,6 +51,11 @@ class CovariancePanel : public PublicationPanel {
 
  private:
   void updateHistoryPlots();
+  /// The prediction plot: the predicted score over the angle relative to the current
+  /// frame's, the markers, and the measured errors relative to the current angle's.
+  void updatePredictionPlot();
+  /// Asks for the error at every fixed turn of the sweep and at the current angle.
+  void measureTurns();
 
   /// One row of the numbers beside the image: its name and value labels (the tooltip of
   /// both defines the number), hidden while the frame does not publish it.
@@ -58,7 +72,27 @@ class CovariancePanel : public PublicationPanel {
   ThresholdGauge* gauge_ = nullptr;
   PlotWidget* anglePlot_ = nullptr;
   PlotWidget* exPlot_ = nullptr;
+  PlotWidget* predictionPlot_ = nullptr;
+  QPushButton* measureButton_ = nullptr;
+  QLabel* measureStatus_ = nullptr;
 
+  /// The last frame's prediction (rotation.mode, the curve and the marked angles).
+  struct Prediction {
+    std::uint64_t frame = 0;
+    std::vector<double> curve;  ///< score at -90..90 every 5°, 0 = none
+    double current = 0.0;       ///< score of the current frame
+    double currentDeg = 0.0, chosenDeg = 0.0;
+    std::optional<double> pcaDeg;
+    bool valid = false;
+  } prediction_;
+  /// The measured sweep: angles, errors (NaN until measured), the frame it was asked for.
+  struct Measured {
+    std::vector<double> anglesDeg, errorPct;
+    double currentDeg = 0.0;
+    std::uint64_t frame = 0;
+    int done = 0;
+    QString problem;
+  } measured_;
   struct Sample {
     std::uint64_t frame;
     double angleDeg;

@@ -44,7 +44,19 @@ inline std::set<std::string> covariancePanelKeys() {
           "pca.min_anisotropy",
           "pca.min_spread",
           "rotation.too_round",
-          "rotation.too_concentrated"};
+          "rotation.too_concentrated",
+          "rotation.mode",
+          "pca.axis_deg",
+          "prediction.valid",
+          "prediction.reason",
+          "prediction.current_deg",
+          "prediction.best_deg",
+          "prediction.gain",
+          "prediction.margin",
+          "prediction.score.current",
+          "prediction.score.best",
+          "prediction.weight",
+          "prediction.curve"};
 }
 
 /// Warp functions panel: the 1D maps before and after the blur, the warp maps.

@@ -446,8 +446,9 @@ void LessonController::settleFrame() {
   MainWindow& w = w_;
   const sl::ViewSide* r = w.viewport()->mainSide();
   ++settleFrames_;
-  if (r)
-    if (const std::optional<bool> done = rtwsettle::settled(r->publication()))
+  const sl::TechniqueInfo* info = r ? sl::Renderer::findTechnique(r->techniqueId()) : nullptr;
+  if (r && info)
+    if (const std::optional<bool> done = rtwsettle::settled(*info, r->publication()))
       settled_ = *done;  // nothing yet on the first frame (it has no last frame)
   if (r && !settled_ && settleFrames_ < kMaxSettleFrames) {
     showSettlingNote();

@@ -644,7 +644,8 @@ void MainWindow::updatePublishing() {
   viewport_->setProbeWanted(docks_.probeWanted());
   std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
   if (lessons_ && lessons_->settling())  // what the lesson waits for
-    for (const std::string& key : rtwsettle::keys()) keys.insert(key);
+    if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))
+      for (const std::string& key : rtwsettle::keys(*info)) keys.insert(key);
   // A grab's published.json holds every number the technique declares (they cost no readback).
   if (grab_->running())
     if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))

@@ -90,11 +90,7 @@ struct RenderConfig {
 
 /// Techniques whose shadow map depends on earlier frames through a rotation (DA-RTW's R_k
 /// from the previous frame's IM; TechniqueInfo::temporalRotation): a single frame of
-/// DA-RTW is rtw-backward with R = I.
-bool hasTemporalRotation(const std::string& techniqueId) {
-  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(techniqueId);
-  return info && info->temporalRotation;
-}
+/// DA-RTW is rtw-backward with R = I, so unmeasured frames come first.
 constexpr int kMaxRotationWarmup = 32;
 
 struct Warmup {
@@ -103,32 +99,24 @@ struct Warmup {
   bool temporal = false;  ///< the technique has a temporal rotation
 };
 
-/// For a technique with a temporal rotation: unmeasured frames (the rotation's numbers
-/// requested) until a frame's estimate leaves R unchanged, at most
-/// kMaxRotationWarmup. The measured frames then run without publishing.
+/// For a technique with a temporal rotation: unmeasured frames (its settleKeys requested)
+/// until its settled rule says so, at most kMaxRotationWarmup. The measured frames then run
+/// without publishing.
 Warmup warmUpRotation(sl::Renderer& r, const RenderConfig& cfg) {
   Warmup w;
-  if (!hasTemporalRotation(r.techniqueId())) return w;
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r.techniqueId());
+  if (!info || !info->temporalRotation || !info->settled) return w;
   w.temporal = true;
   w.settled = false;
-  r.requestPublications({"pca.valid", "rotation.held", "rotation.step_deg"});
+  r.requestPublications(info->settleKeys);
   while (w.frames < kMaxRotationWarmup && !w.settled) {
     if (auto e = r.renderFrame(cfg.width, cfg.height, 0)) {
       r.requestPublications({});
       throw std::runtime_error(*e);
     }
     ++w.frames;
-    const auto& n = r.publication().numbers;
-    auto number = [&n](const char* key) {
-      auto it = n.find(key);
-      return it == n.end() ? std::optional<double>() : std::optional<double>(it->second);
-    };
-    auto valid = number("pca.valid");
-    if (!valid) continue;  // no estimate this frame (the last frame's moments not read yet)
-    // No principal axis (empty or isotropic IM) leaves R as it is; so does a held or
-    // zero step.
-    w.settled = *valid == 0 || number("rotation.held").value_or(0) != 0 ||
-                number("rotation.step_deg").value_or(1) == 0;
+    // The technique's own rule (TechniqueInfo::settled); nothing: no estimate this frame.
+    w.settled = info->settled(r.publication()).value_or(false);
   }
   r.requestPublications({});
   return w;

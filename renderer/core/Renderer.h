@@ -72,6 +72,8 @@ struct PublicationDecl {
 /// True when `key` matches `pattern` ('*' matches any run of characters, dots included).
 bool publicationKeyMatches(std::string_view pattern, std::string_view key);
 
+struct Publication;
+
 /// What a technique is, without creating it (no GL needed): for `list`, menus, presets.
 struct TechniqueInfo {
   std::string id;           ///< "uniform", "rtw-backward", ...
@@ -84,8 +86,14 @@ struct TechniqueInfo {
   std::vector<LightType> lights{LightType::Directional};
   /// Keeps a rotation across frames (DA-RTW: R_k from the previous frame's moments), so one
   /// frame is not what a user sees: measuring commands render unmeasured frames until it
-  /// settles. Such a technique publishes "pca.valid", "rotation.held", "rotation.step_deg".
+  /// settles (`settled`).
   bool temporalRotation = false;
+  /// With temporalRotation: the numbers `settled` reads, and the rule itself, declared once
+  /// for the command line, the lessons and the tests: after a frame whose publication holds
+  /// settleKeys, whether the state stopped changing; nothing when the frame could not tell
+  /// yet (no estimate from a last frame).
+  std::set<std::string> settleKeys;
+  std::function<std::optional<bool>(const Publication&)> settled;
   /// A deferred technique that times its tiles as repeated passes (virtual-tiled, fvsm): when
   /// `key` (a Curve it declares) is requested, the renderer publishes per tile, in the order
   /// the tiles were applied, two values: the ms of the `depthPass` scopes since the previous

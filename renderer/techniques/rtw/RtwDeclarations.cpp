@@ -212,7 +212,8 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                         "pca.min_anisotropy",
                         "pca.min_spread",
                         "pca.axis_deg",
-                        "rotation.mode"})
+                        "rotation.mode",
+                        "rotation.frames"})
     d.push_back({n, K::Number, "PCA and rotation (the last frame's moments).", "", {}});
   return d;
 }

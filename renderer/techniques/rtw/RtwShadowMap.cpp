@@ -363,7 +363,27 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   info.publications = publicationDecls(id);
   info.lights = {LightType::Directional};
   info.temporalRotation = id == "da-rtw";
+  if (info.temporalRotation) {
+    info.settleKeys = {"pca.valid", "rotation.held", "rotation.step_deg", "rotation.mode",
+                       "prediction.reason", "rotation.frames"};
+    info.settled = &rotationSettled;
+  }
   return info;
+}
+
+std::optional<bool> RtwShadowMap::rotationSettled(const Publication& pub) {
+  const double valid = pub.number("pca.valid", -1.0);
+  if (valid < 0.0) return std::nullopt;  // no estimate this frame (no last frame's moments)
+  const bool unchanged = pub.number("rotation.step_deg", 1.0) == 0.0;
+  if (pub.number("rotation.mode", 0.0) == 1.0) {  // predicted
+    // The first estimate has no shadow edges to weigh (the mask before the first frame is
+    // empty): a prediction needs one frame more; a view without edges stays unpredicted.
+    const bool predicted = pub.number("prediction.reason", 0.0) !=
+                           double(int(rtw::TurnReason::NoPrediction));
+    if (!predicted && pub.number("rotation.frames", 0.0) < 2.0) return std::nullopt;
+    return unchanged;
+  }
+  return valid == 0.0 || pub.number("rotation.held", 0.0) != 0.0 || unchanged;
 }
 
 int RtwShadowMap::momentResolution(const ParamSet& params, int imRes) {
@@ -950,6 +970,7 @@ void RtwShadowMap::publishRotation(FrameContext& ctx) {
   publishNumber(ctx, "rotation.deg", rotation_.angleDeg());
   publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
   publishNumber(ctx, "rotation.changes", rotation_.changes);
+  publishNumber(ctx, "rotation.frames", rotation_.frames);
   publishNumber(ctx, "pca.threshold", p.get("pca.threshold"));
   publishNumber(ctx, "pca.min_anisotropy", p.get("pca.min_anisotropy"));
   publishNumber(ctx, "pca.min_spread", p.get("pca.min_spread"));

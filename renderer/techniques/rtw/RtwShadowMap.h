@@ -24,6 +24,9 @@ class RtwShadowMap : public Technique {
     bool rotation = false;  ///< DA-RTW
   };
   static TechniqueInfo info(const std::string& id);
+  /// DA-RTW's TechniqueInfo::settled: the frame made an estimate and left R as it was (no axis,
+  /// held, or no step); in predicted mode once a prediction could weigh shadow edges.
+  static std::optional<bool> rotationSettled(const Publication& pub);
   /// DA-RTW's PCA reads the IM reduced to at most this size (block maxima): seed 000's
   /// moments need the distribution's shape, not 512^2 texels.
   static constexpr int kMomentImMax = SL_MOMENT_IM_MAX;  ///< common/shared_constants.h

@@ -105,6 +105,8 @@ const std::vector<GuiTests::Test>& GuiTests::all() {
       {"panels", "", [](GuiTests& t, const QString&) { return t.panelsFollowTechnique(); }},
       {"course", "[=DIR]", [](GuiTests& t, const QString& a) { return t.course(a); }},
       {"shortcuts", "", [](GuiTests& t, const QString&) { return t.shortcuts(); }},
+      {"turn-prediction", "[=DIR]",
+       [](GuiTests& t, const QString& a) { return t.turnPrediction(a); }},
   };
   return tests;
 }

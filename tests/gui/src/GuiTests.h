@@ -157,6 +157,12 @@ class GuiTests : public QObject {
   /// W do not, F6 does; a drag in the view orbits 180° per view height, a wheel notch moves
   /// 15 % of the distance; F1 lists every command and no two share a key.
   bool shortcuts();
+  /// turn-prediction[=DIR]: the Covariance panel on band-diagonal draws the predicted score of
+  /// every turn with its markers, its state says why the rotation turned, and "Measure the
+  /// error at these turns" measures the fixed turns on the render thread while the window
+  /// keeps answering; the truth and the prediction agree on the best turn. The panel's PNG
+  /// into DIR.
+  bool turnPrediction(const QString& dir);
   /// A malformed session opened through SessionFiles: refused, named, nothing changed.
   void badSessionOpen(const QString& path);
   /// lesson-claims[=DIR] (with --lesson NAME): the lesson the app started with, once settled;

@@ -206,15 +206,14 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   }
   grid->setRowStretch(line, 1);
   middle->addWidget(numbers_, 2);
-  outer->addLayout(middle, 3);
+  outer->addLayout(middle, 2);
   // The turn prediction: its curve, the marked angles, the measured sweep on request.
   predictionPlot_ = new PlotWidget;
   predictionPlot_->setObjectName(QStringLiteral("covariancePrediction"));
-  predictionPlot_->setTitle(
-      tr("Turn prediction: expected wrong pixels of each turn ÷ the current frame's "
-         "(repeats every 90°)"));
+  predictionPlot_->setTitle(tr("Turn prediction: wrong pixels ÷ now (repeats every 90°)"));
   predictionPlot_->setAxisLabels(tr("turn (°)"), QString());
   predictionPlot_->setXRange(-90.0, 90.0);
+  predictionPlot_->setLogY(true);  // ratios: a turn 4x worse and one 4x better alike
   predictionPlot_->setToolTip(
       tr("For every turn of the light's image plane, the warp it would give is predicted from "
          "the last frame's importance map (resampled into the turned frame, collapsed, blurred "
@@ -222,9 +221,9 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
          "wrong in proportion to the texel's width across its edge. 1 = the current frame. "
          "rotation.mode = predicted turns to the lowest point when it is lower by more than "
          "rotation.margin."));
-  outer->addWidget(predictionPlot_, 2);
   auto* measureRow = new QHBoxLayout;
   measureButton_ = new QPushButton(tr("Measure the error at these turns"));
+  measureButton_->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Fixed);
   measureButton_->setObjectName(QStringLiteral("covarianceMeasure"));
   measureButton_->setToolTip(
       tr("Renders this view with the turn fixed at every 15° from −90° to 90° and at the current "
@@ -236,8 +235,9 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   measureStatus_->setWordWrap(true);
   measureRow->addWidget(measureButton_);
   measureRow->addWidget(measureStatus_, 1);
-  outer->addLayout(measureRow);
+  // The prediction beside the rotation's history, one row: the panel stays as tall as before.
   auto* plots = new QHBoxLayout;
+  plots->addWidget(predictionPlot_, 2);
   anglePlot_ = new PlotWidget;
   anglePlot_->setTitle(tr("Rotation of R (°)"));
   anglePlot_->setAxisLabels(tr("frame"), QString());
@@ -245,9 +245,10 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   exPlot_->setTitle(tr("1 − e_x (log)"));
   exPlot_->setAxisLabels(tr("frame"), QString());
   exPlot_->setLogY(true);
-  plots->addWidget(anglePlot_);
-  plots->addWidget(exPlot_);
-  outer->addLayout(plots, 2);
+  plots->addWidget(anglePlot_, 1);
+  plots->addWidget(exPlot_, 1);
+  outer->addLayout(plots, 3);
+  outer->addLayout(measureRow);
   setContent(content);
 }
 

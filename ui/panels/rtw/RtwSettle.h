@@ -13,10 +13,9 @@
 
 namespace sl::ui::rtwsettle {
 
-/// The technique's state carries over frames: it declares the rotation's hold.
+/// The technique's state carries over frames (TechniqueInfo::temporalRotation).
 inline bool hasTemporalState(const sl::TechniqueInfo& info) {
-  return std::any_of(info.publications.begin(), info.publications.end(),
-                     [](const sl::PublicationDecl& d) { return d.key == "rotation.held"; });
+  return info.temporalRotation && bool(info.settled);
 }
 
 /// DA-RTW's vibration threshold: the parameter (and the published number) of that name.
@@ -25,24 +24,19 @@ inline constexpr const char* kThresholdKey = "pca.threshold";
 /// The principal axis' x component, as published and as the Covariance panel draws it.
 inline constexpr const char* kExKey = "e_x";
 
-/// The numbers to request while waiting.
-inline std::set<std::string> keys() {
-  return {"pca.valid", "rotation.held", "rotation.step_deg", "rotation.deg"};
+/// The numbers to request while waiting: the technique's own (TechniqueInfo::settleKeys) and
+/// the angle.
+inline std::set<std::string> keys(const sl::TechniqueInfo& info) {
+  std::set<std::string> k = info.settleKeys;
+  k.insert("rotation.deg");
+  return k;
 }
 
-/// After a frame: nothing when it made no estimate (the first frame has no last frame), else
-/// whether the estimate left R unchanged (no principal axis, held, or a zero step) — the
-/// same test as shadowlab-cli's warm-up.
-inline std::optional<bool> settled(const sl::Publication& pub) {
-  const auto& n = pub.numbers;
-  auto number = [&n](const char* key) {
-    auto it = n.find(key);
-    return it == n.end() ? std::optional<double>() : std::optional<double>(it->second);
-  };
-  const std::optional<double> valid = number("pca.valid");
-  if (!valid) return std::nullopt;
-  return *valid == 0 || number("rotation.held").value_or(0) != 0 ||
-         number("rotation.step_deg").value_or(1) == 0;
+/// After a frame: nothing when it could not tell yet, else whether the state stopped changing
+/// (the technique's own rule, TechniqueInfo::settled: the same as shadowlab-cli's warm-up).
+inline std::optional<bool> settled(const sl::TechniqueInfo& info, const sl::Publication& pub) {
+  if (!info.settled) return true;
+  return info.settled(pub);
 }
 
 /// The rotation's angle in the frame's publication (degrees), if published.

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Issue-3 speed figures, as ratios measured in one run (this machine is noisy):
-#  - the share of DA-RTW's rotation estimate (moments, mip chain, PCA, frustum rotation) in
-#    its whole shadow pipeline (every pass except gbuffer, resolve, composite);
+# RTW's speed figures, as ratios measured in one run (this machine is noisy):
+#  - the share of DA-RTW's rotation estimate (moments, mip chain, PCA, the turn prediction,
+#    frustum rotation) in its whole shadow pipeline (every pass except gbuffer, resolve,
+#    composite), and DA-RTW's whole overhead over rtw-backward's shadow pipeline (the scatter's
+#    counts for the prediction included);
 #  - the cost of rtw-backward against uniform at the same resolution (shadow pipeline and
 #    whole frame).
 # Techniques are interleaved round by round so that machine drift hits all alike.
@@ -33,7 +35,9 @@ for name, x in (("uniform", u), ("rtw-backward", b), ("da-rtw", d)):
     print(f"  {name:13s} shadow pipeline {x[0]:8.2f} ms   whole frame {x[1]:8.2f} ms   " +
           ", ".join(f"{k} {v:.2f}" for k, v in x[2].items()))
 share = (d[2].get("rotation estimate", 0.0) + d[2].get("moments", 0.0)) / d[0]
-print(f"rotation estimate (moments + PCA) share of the da-rtw shadow pipeline: {100*share:.2f} %  (poster: 5.8 %, target < 3 %)")
+print(f"rotation estimate (moments + PCA + turn prediction) share of the da-rtw shadow pipeline: {100*share:.2f} %  (poster: 5.8 %, target < 3 %)")
+print(f"  rotation estimate {d[2].get('rotation estimate', 0.0):.2f} ms, moments {d[2].get('moments', 0.0):.2f} ms; importance pass da-rtw {d[2].get('importance', 0.0):.2f} ms, rtw-backward {b[2].get('importance', 0.0):.2f} ms")
+print(f"da-rtw over rtw-backward, shadow pipeline: {100*(d[0]/b[0]-1):+.2f} % ({d[0]:.2f} vs {b[0]:.2f} ms)")
 print(f"rtw-backward / uniform, shadow pipeline: {b[0]/u[0]:.2f}x   whole frame: {b[1]/u[1]:.2f}x  (seed 002: ~3.5x, target < 2x)")
 PY
 rm -rf "$tmp"

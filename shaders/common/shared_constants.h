@@ -127,6 +127,9 @@
 // Planes of the counts buffer, each momentRes^2 uints: pixels, the importance sum's low and
 // high words, then the SL_RTW_EDGE_BINS edge bins.
 #define SL_RTW_COUNT_PLANES (3 + SL_RTW_EDGE_BINS)
+// Counted are every SL_RTW_COUNT_STRIDE-th scattering pixel in x and y (the weights are
+// relative: a quarter of the atomics on the hottest texels, the same shares).
+#define SL_RTW_COUNT_STRIDE 2
 // Largest tessellation level of the warped pass. GL guarantees 64, but llvmpipe corrupts
 // the warped map at levels 32-64 (measured: corridor, tolerance 0.01: 55.6 % error at cap
 // 64, 0.73 % at cap 16). SceneGpu splits long triangles so that 16 suffices.

@@ -93,6 +93,7 @@ void main() {
     int m = imageSize(u_momentIm).x;
     ivec2 g = min(ivec2(floor(uv * float(m))), ivec2(m - 1));
     imageAtomicMax(u_momentIm, g, bits);
-    countForPrediction(px, uv, imp, g.y * m + g.x, m * m);
+    if (all(equal(ivec2(gl_FragCoord.xy) % SL_RTW_COUNT_STRIDE, ivec2(0))))
+      countForPrediction(px, uv, imp, g.y * m + g.x, m * m);
   }
 }

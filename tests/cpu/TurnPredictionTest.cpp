@@ -112,10 +112,11 @@ struct Strip {
     if (std::abs(q.x) > 1.0 || std::abs(q.y) > 0.05) return 0.0;
     return 1.0 / (1.0 + 2.0 * (q.x + 1.0));
   }
-  /// A fence on it: rails along the strip and posts across it, alternating along its length.
+  /// A fence on it: rails along the strip, and a post across it in one of every five
+  /// segments of its length (most of a fence's shadow edge is its rails').
   double edgeNormal(glm::dvec2 p) const {
     const glm::dvec2 q = rotate(p, -deg);
-    return deg + (int(std::floor(q.x * 20.0)) % 2 == 0 ? 90.0 : 0.0);
+    return deg + (int(std::floor((q.x + 1.0) * 20.0)) % 5 == 0 ? 0.0 : 90.0);
   }
   ImportanceSnapshot snapshot(const PlaneFrame& from, int m) const {
     return snapshotOf(
@@ -396,6 +397,20 @@ TEST(TurnPrediction, SearchScoresEachAngleOnceAndRefinesAroundTheBest) {
   const TurnDecision d = decideTurn(s, 0.05, 0.81);
   EXPECT_EQ(d.reason, TurnReason::Turned);
   EXPECT_DOUBLE_EQ(d.toDeg, 22.5);
+  // With no turn in sight (refined only above a gain of 0.9), the coarse grid alone.
+  asked.clear();
+  const TurnSearch coarse = searchTurn(
+      -10.0, 40.0,
+      [&](double deg) {
+        asked.push_back(deg);
+        WarpPrediction p;
+        p.valid = true;
+        p.score = 1.0 + std::pow(foldQuarterTurn(deg - 22.0) / 45.0, 2.0);
+        return p;
+      },
+      0.9);
+  EXPECT_EQ(asked.size(), 8u);  // the current angle, PCA's axis, six every 15°
+  EXPECT_DOUBLE_EQ(coarse.scored[size_t(coarse.best)].angleDeg, 15.0);
 }
 
 TEST(TurnPrediction, DecisionHoldsWithinTheMarginAndTheVibrationAngle) {

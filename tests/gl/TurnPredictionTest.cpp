@@ -25,11 +25,12 @@ std::unique_ptr<Renderer> daRtw(const std::string& scene, const std::string& cam
   return r;
 }
 
-// Every scattering pixel is counted once in the moment IM's counts, and a pixel is an edge
-// pixel exactly where the last frame's hard mask differs across it (central differences, a
-// pixel without surface counting as the centre): both counted here from the G-buffer and the
-// mask read back, at the importance.stride grid GL's fragment coordinates give (row 0 =
-// bottom). A fixed turn and a still camera make the last frame's mask this frame's.
+// Every counted scattering pixel (every SL_RTW_COUNT_STRIDE-th of the importance.stride grid
+// in x and y, from GL's fragment coordinates: row 0 = bottom) is counted once in the moment
+// IM's counts, and a pixel is an edge pixel exactly where the last frame's hard mask differs
+// across it (central differences, a pixel without surface counting as the centre): both
+// counted here from the G-buffer and the mask read back. A fixed turn and a still camera make
+// the last frame's mask this frame's.
 TEST(TurnPredictionGpu, CountsAreTheScatteringPixelsAndTheirEdges) {
   for (int stride : {1, 2}) {
     SCOPED_TRACE("importance.stride " + std::to_string(stride));
@@ -47,8 +48,9 @@ TEST(TurnPredictionGpu, CountsAreTheScatteringPixelsAndTheirEdges) {
       return m == 255 ? self : m == 1;
     };
     double pixels = 0, edges = 0;
-    for (int y = 0; y < h; y += stride)
-      for (int x = 0; x < w; x += stride) {
+    const int step = stride * SL_RTW_COUNT_STRIDE;
+    for (int y = 0; y < h; y += step)
+      for (int x = 0; x < w; x += step) {
         if (rb.positions[at(x, y)].w <= 0.0f) continue;
         ++pixels;
         const bool self = rb.hardMask[at(x, y)] == 1;

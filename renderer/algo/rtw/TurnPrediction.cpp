@@ -15,9 +15,20 @@ namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
+/// floor and ceil of finite values within int range, without a library call (they run per
+/// texel per candidate).
+int floorInt(double x) {
+  const int i = int(x);
+  return i - (x < double(i) ? 1 : 0);
+}
+int ceilInt(double x) {
+  const int i = int(x);
+  return i + (x > double(i) ? 1 : 0);
+}
+
 /// Texel of coordinate c of an n-texel axis, clamped to [0, n - 1].
 int texelOf(double c, int n) {
-  return std::clamp(int(std::floor(c * n)), 0, n - 1);
+  return std::clamp(floorInt(std::clamp(c, -1.0, 2.0) * n), 0, n - 1);
 }
 
 bool insideFrame(glm::dvec2 uv) {
@@ -29,8 +40,9 @@ struct BinRange {
   int first, last;
 };
 BinRange binRange(double c, double h, int n) {
-  const int first = std::max(0, int(std::ceil((c - h) * n - 0.5)));
-  const int last = std::min(n - 1, int(std::floor((c + h) * n - 0.5)));
+  // c - h and c + h lie within [-1, 2] for texels inside the frame (h < 1).
+  const int first = std::max(0, ceilInt(std::clamp(c - h, -1.0, 2.0) * n - 0.5));
+  const int last = std::min(n - 1, floorInt(std::clamp(c + h, -1.0, 2.0) * n - 0.5));
   if (first > last) {
     const int own = texelOf(c, n);
     return {own, own};
@@ -77,22 +89,6 @@ Density blurAndFloor(const std::vector<float>& collapsed, const WarpSettings& w)
   return d;
 }
 
-/// Calls f(index, centre uv in the frame, importance) for every snapshot texel with
-/// importance > 0 (and a scattering pixel, when counts are known): its max importance.
-template <class F>
-void forEachImportantTexel(const ImportanceSnapshot& s, const CandidateFrame& frame, F&& f) {
-  const int m = s.size;
-  const bool counted = s.pixels.size() == s.importance.size();
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) {
-      const size_t idx = size_t(j) * size_t(m) + size_t(i);
-      const float value = s.importance[idx];
-      if (!(value > 0.0f) || !std::isfinite(value) || (counted && s.pixels[idx] == 0)) continue;
-      const glm::dvec2 uv((i + 0.5) / m, (j + 0.5) / m);
-      f(idx, frame.fromSnapshot.apply(uv), double(value));
-    }
-}
-
 /// One axis of the warped map: prefix sums of 1 / B, so the mean texel width over any run of
 /// texels is one difference.
 struct AxisWidths {
@@ -127,29 +123,7 @@ struct AxisDensity {
   }
 };
 
-bool validSettings(const ImportanceSnapshot& s, const CandidateFrame& frame,
-                   const PredictionSettings& p) {
-  return s.size > 0 && s.importance.size() == size_t(s.size) * size_t(s.size) &&
-         p.warpResolution > 0 && p.mapResolution > 0 && p.densityPerImportance > 0.0 &&
-         std::isfinite(p.densityPerImportance) && frame.extentM.x > 0.0 && frame.extentM.y > 0.0 &&
-         std::isfinite(frame.extentM.x) && std::isfinite(frame.extentM.y);
-}
-
 }  // namespace
-
-Collapsed resampleCollapsed(const ImportanceSnapshot& snapshot, const CandidateFrame& frame,
-                            int n) {
-  Collapsed c{std::vector<float>(size_t(std::max(n, 0)), 0.0f),
-              std::vector<float>(size_t(std::max(n, 0)), 0.0f)};
-  if (n <= 0 || snapshot.size <= 0) return c;
-  const glm::dvec2 h = footprintHalfWidths(frame, snapshot.size);
-  forEachImportantTexel(snapshot, frame, [&](size_t, glm::dvec2 uv, double value) {
-    if (!insideFrame(uv)) return;
-    fillMax(c.x, uv.x, h.x, float(value));
-    fillMax(c.y, uv.y, h.y, float(value));
-  });
-  return c;
-}
 
 namespace {
 /// The snapshot's own frame: the identity map (the camera did not move, the turn is 0).
@@ -162,68 +136,99 @@ bool isSnapshotFrame(const CandidateFrame& frame) {
          std::abs(o.y) < eps;
 }
 
-/// The 1D maps `frame` would collapse: the renderer's own for the snapshot's frame, else the
-/// snapshot resampled.
-Collapsed collapsedIn(const ImportanceSnapshot& snapshot, const CandidateFrame& frame, int n) {
-  if (isSnapshotFrame(frame) && snapshot.collapsedX.size() == size_t(n) &&
-      snapshot.collapsedY.size() == size_t(n))
-    return {snapshot.collapsedX, snapshot.collapsedY};
-  return resampleCollapsed(snapshot, frame, n);
+bool validFrame(const CandidateFrame& frame) {
+  return frame.extentM.x > 0.0 && frame.extentM.y > 0.0 && std::isfinite(frame.extentM.x) &&
+         std::isfinite(frame.extentM.y);
 }
 }  // namespace
 
-WarpPrediction predictWarp(const ImportanceSnapshot& snapshot, const CandidateFrame& frame,
-                           const PredictionSettings& settings) {
+TurnPredictor::TurnPredictor(const ImportanceSnapshot& snapshot, const PredictionSettings& settings)
+    : snapshot_(snapshot), settings_(settings) {
+  texels_.reserve(snapshot.importance.size());
+  const ImportanceSnapshot& s = snapshot;
+  const int m = s.size;
+  valid_ = m > 0 && s.importance.size() == size_t(m) * size_t(m) && settings.warpResolution > 0 &&
+           settings.mapResolution > 0 && settings.densityPerImportance > 0.0 &&
+           std::isfinite(settings.densityPerImportance);
+  if (!valid_) return;
+  const size_t plane = size_t(m) * size_t(m);
+  const bool counted = s.pixels.size() == plane;
+  const bool binned = s.edgeBins.size() == kEdgeBins * plane;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) {
+      const size_t idx = size_t(j) * size_t(m) + size_t(i);
+      const float value = s.importance[idx];
+      if (!(value > 0.0f) || !std::isfinite(value) || (counted && s.pixels[idx] == 0)) continue;
+      Texel t{{(i + 0.5) / m, (j + 0.5) / m}, value, askedOf(s, idx), pixelsOf(s, idx), 0.0, {}};
+      if (binned)
+        for (int b = 0; b < kEdgeBins; ++b) {
+          t.bins[size_t(b)] = float(double(s.edgeBins[size_t(b) * plane + idx]) / double(kEdgeOne));
+          t.edges += double(t.bins[size_t(b)]);
+        }
+      texels_.push_back(t);
+    }
+}
+
+Collapsed TurnPredictor::collapsed(const CandidateFrame& frame) const {
+  const int n = std::max(settings_.warpResolution, 0);
+  if (isSnapshotFrame(frame) && snapshot_.collapsedX.size() == size_t(n) &&
+      snapshot_.collapsedY.size() == size_t(n))
+    return {snapshot_.collapsedX, snapshot_.collapsedY};
+  Collapsed c{std::vector<float>(size_t(n), 0.0f), std::vector<float>(size_t(n), 0.0f)};
+  if (n <= 0 || snapshot_.size <= 0) return c;
+  const glm::dvec2 h = footprintHalfWidths(frame, snapshot_.size);
+  for (const Texel& t : texels_) {
+    const glm::dvec2 uv = frame.fromSnapshot.apply(t.uv);
+    if (!insideFrame(uv)) continue;
+    fillMax(c.x, uv.x, h.x, t.maxImportance);
+    fillMax(c.y, uv.y, h.y, t.maxImportance);
+  }
+  return c;
+}
+
+WarpPrediction TurnPredictor::predict(const CandidateFrame& frame) const {
   WarpPrediction out;
   out.angleDeg = frame.angleDeg;
-  if (!validSettings(snapshot, frame, settings)) return out;
-  const int n = settings.warpResolution;
-  const Collapsed c = collapsedIn(snapshot, frame, n);
-  const Density dx = blurAndFloor(c.x, settings.warp), dy = blurAndFloor(c.y, settings.warp);
+  if (!valid_ || !validFrame(frame)) return out;
+  const int n = settings_.warpResolution;
+  const Collapsed c = collapsed(frame);
+  const Density dx = blurAndFloor(c.x, settings_.warp), dy = blurAndFloor(c.y, settings_.warp);
   if (!(dx.total > 0.0) || !(dy.total > 0.0)) return out;
-  const double sn = double(settings.mapResolution) * double(n);
+  const double sn = double(settings_.mapResolution) * double(n);
   const AxisDensity g{AxisWidths(dx, frame.extentM.x, sn), AxisWidths(dy, frame.extentM.y, sn),
-                      footprintHalfWidths(frame, snapshot.size)};
+                      footprintHalfWidths(frame, snapshot_.size)};
   // The edge bins' directions in this frame: bin b's normal at b kEdgeBinDeg - turnDeg; and
   // the same directions unturned, for edges of every direction alike.
   std::array<glm::dvec2, kEdgeBins> binCosSin, uniformCosSin;
   for (int b = 0; b < kEdgeBins; ++b) {
-    const double r = b * kEdgeBinDeg * kDegToRad;
-    uniformCosSin[size_t(b)] = {std::abs(std::cos(r)), std::abs(std::sin(r))};
-  }
-  for (int b = 0; b < kEdgeBins; ++b) {
-    const double r = (b * kEdgeBinDeg - frame.turnDeg) * kDegToRad;
+    const double u = b * kEdgeBinDeg * kDegToRad, r = (b * kEdgeBinDeg - frame.turnDeg) * kDegToRad;
+    uniformCosSin[size_t(b)] = {std::abs(std::cos(u)), std::abs(std::sin(u))};
     binCosSin[size_t(b)] = {std::abs(std::cos(r)), std::abs(std::sin(r))};
   }
-  const size_t plane = size_t(snapshot.size) * size_t(snapshot.size);
-  const bool edges = settings.weight == PredictionWeight::EdgePixels &&
-                     snapshot.edgeBins.size() == kEdgeBins * plane;
+  const bool edges = settings_.weight == PredictionWeight::EdgePixels;
   double sum = 0.0, weight = 0.0, under = 0.0, outside = 0.0;
-  forEachImportantTexel(snapshot, frame, [&](size_t idx, glm::dvec2 uv, double) {
-    const double w = edges                                         ? snapshot.edgePixels(idx)
-                     : settings.weight == PredictionWeight::Pixels ? pixelsOf(snapshot, idx)
-                                                                   : 0.0;
-    if (!(w > 0.0)) return;
+  for (const Texel& t : texels_) {
+    const double w = edges ? t.edges : t.pixels;
+    if (!(w > 0.0)) continue;
+    const glm::dvec2 uv = frame.fromSnapshot.apply(t.uv);
     if (!insideFrame(uv)) {
       outside += w;
-      return;
+      continue;
     }
     // Texel widths in pixel footprints along the frame's axes: k I / g.
-    const glm::dvec2 m = g.m(uv, settings.densityPerImportance * askedOf(snapshot, idx));
+    const glm::dvec2 m = g.m(uv, settings_.densityPerImportance * t.asked);
     if (edges) {
-      for (int b = 0; b < kEdgeBins; ++b) {
-        const double wb = double(snapshot.edgeBins[size_t(b) * plane + idx]) / double(kEdgeOne);
-        sum += wb * acrossEdge(binCosSin[size_t(b)], m);
-      }
+      for (int b = 0; b < kEdgeBins; ++b)
+        if (t.bins[size_t(b)] > 0.0f)
+          sum += double(t.bins[size_t(b)]) * acrossEdge(binCosSin[size_t(b)], m);
     } else {
-      // Edges of every direction alike: the mean over the bins' directions.
       double mean = 0.0;
       for (const glm::dvec2& cs : uniformCosSin) mean += acrossEdge(cs, m);
       sum += w * mean / double(uniformCosSin.size());
     }
     weight += w;
     if (m.x * m.y > 1.0) under += w;
-  });
+  }
   if (!(weight > 0.0)) return out;
   out.valid = true;
   out.weight = weight;
@@ -233,27 +238,25 @@ WarpPrediction predictWarp(const ImportanceSnapshot& snapshot, const CandidateFr
   return out;
 }
 
-std::vector<double> predictedAliasingQuantiles(const ImportanceSnapshot& snapshot,
-                                               const CandidateFrame& frame,
-                                               const PredictionSettings& settings,
-                                               std::span<const double> q) {
-  if (!validSettings(snapshot, frame, settings)) return {};
-  const int n = settings.warpResolution;
-  const Collapsed c = collapsedIn(snapshot, frame, n);
-  const Density dx = blurAndFloor(c.x, settings.warp), dy = blurAndFloor(c.y, settings.warp);
+std::vector<double> TurnPredictor::aliasingQuantiles(const CandidateFrame& frame,
+                                                     std::span<const double> q) const {
+  if (!valid_ || !validFrame(frame)) return {};
+  const int n = settings_.warpResolution;
+  const Collapsed c = collapsed(frame);
+  const Density dx = blurAndFloor(c.x, settings_.warp), dy = blurAndFloor(c.y, settings_.warp);
   if (!(dx.total > 0.0) || !(dy.total > 0.0)) return {};
-  const double sn = double(settings.mapResolution) * double(n);
+  const double sn = double(settings_.mapResolution) * double(n);
   const AxisDensity g{AxisWidths(dx, frame.extentM.x, sn), AxisWidths(dy, frame.extentM.y, sn),
-                      footprintHalfWidths(frame, snapshot.size)};
+                      footprintHalfWidths(frame, snapshot_.size)};
   std::vector<std::pair<double, double>> mw;  // (m, pixels)
   double total = 0.0;
-  forEachImportantTexel(snapshot, frame, [&](size_t idx, glm::dvec2 uv, double) {
-    const double w = pixelsOf(snapshot, idx);
-    if (!(w > 0.0) || !insideFrame(uv)) return;
-    const glm::dvec2 m = g.m(uv, settings.densityPerImportance * askedOf(snapshot, idx));
-    mw.emplace_back(std::sqrt(m.x * m.y), w);
-    total += w;
-  });
+  for (const Texel& t : texels_) {
+    const glm::dvec2 uv = frame.fromSnapshot.apply(t.uv);
+    if (!(t.pixels > 0.0) || !insideFrame(uv)) continue;
+    const glm::dvec2 m = g.m(uv, settings_.densityPerImportance * t.asked);
+    mw.emplace_back(std::sqrt(m.x * m.y), t.pixels);
+    total += t.pixels;
+  }
   if (mw.empty()) return {};
   std::sort(mw.begin(), mw.end());
   std::vector<double> out;
@@ -272,6 +275,27 @@ std::vector<double> predictedAliasingQuantiles(const ImportanceSnapshot& snapsho
     out.push_back(value);
   }
   return out;
+}
+
+Collapsed resampleCollapsed(const ImportanceSnapshot& snapshot, const CandidateFrame& frame,
+                            int n) {
+  PredictionSettings s;
+  s.warpResolution = n;
+  CandidateFrame moved = frame;  // never the snapshot's own maps: the resampling itself
+  if (isSnapshotFrame(moved)) moved.fromSnapshot.offset.x += 1e-12;
+  return TurnPredictor(snapshot, s).collapsed(moved);
+}
+
+WarpPrediction predictWarp(const ImportanceSnapshot& snapshot, const CandidateFrame& frame,
+                           const PredictionSettings& settings) {
+  return TurnPredictor(snapshot, settings).predict(frame);
+}
+
+std::vector<double> predictedAliasingQuantiles(const ImportanceSnapshot& snapshot,
+                                               const CandidateFrame& frame,
+                                               const PredictionSettings& settings,
+                                               std::span<const double> q) {
+  return TurnPredictor(snapshot, settings).aliasingQuantiles(frame, q);
 }
 
 double ImportanceSnapshot::edgePixels(size_t i) const {
@@ -341,7 +365,8 @@ double foldQuarterTurn(double angleDeg) {
 }
 
 TurnSearch searchTurn(double currentDeg, std::optional<double> pcaAxisDeg,
-                      const std::function<WarpPrediction(double angleDeg)>& predict) {
+                      const std::function<WarpPrediction(double angleDeg)>& predict,
+                      double refineAbove) {
   TurnSearch s;
   std::map<long long, int> seen;  // folded angle in micro-degrees -> index
   auto eval = [&](double angleDeg) {
@@ -373,8 +398,12 @@ TurnSearch searchTurn(double currentDeg, std::optional<double> pcaAxisDeg,
   if (pcaAxisDeg && std::isfinite(*pcaAxisDeg)) eval(*pcaAxisDeg);
   for (double a = -45.0 + kTurnSearchStepDeg; a <= 45.0 + 1e-9; a += kTurnSearchStepDeg) eval(a);
   updateBest();
+  const WarpPrediction& cur = s.scored[size_t(s.current)];
+  const WarpPrediction& coarse = s.scored[size_t(s.best)];
+  const bool inSight =
+      cur.valid && coarse.valid && cur.score > 0.0 && 1.0 - coarse.score / cur.score >= refineAbove;
   double step = kTurnSearchStepDeg;
-  for (int r = 0; r < kTurnSearchRefinements; ++r) {
+  for (int r = 0; r < kTurnSearchRefinements && inSight; ++r) {
     step *= 0.5;
     const double centre = s.scored[size_t(s.best)].angleDeg;
     eval(centre - step);

@@ -152,6 +152,35 @@ struct Collapsed {
 };
 Collapsed resampleCollapsed(const ImportanceSnapshot& snapshot, const CandidateFrame& frame, int n);
 
+/// The prediction of one snapshot for any number of frames: the snapshot's important texels
+/// are gathered once (a frame scores a dozen candidates, the panel's curve 37), each
+/// candidate then walks only them.
+class TurnPredictor {
+ public:
+  TurnPredictor(const ImportanceSnapshot& snapshot, const PredictionSettings& settings);
+  /// predictWarp (below) for `frame`.
+  WarpPrediction predict(const CandidateFrame& frame) const;
+  /// predictedAliasingQuantiles (below) for `frame`.
+  std::vector<double> aliasingQuantiles(const CandidateFrame& frame,
+                                        std::span<const double> q) const;
+  /// resampleCollapsed, or the snapshot's own 1D maps for its own frame.
+  Collapsed collapsed(const CandidateFrame& frame) const;
+
+ private:
+  struct Texel {
+    glm::dvec2 uv;                      ///< its centre in the snapshot's frame
+    float maxImportance;                ///< what the collapse keeps
+    double asked;                       ///< mean importance of its pixels (the max when not known)
+    double pixels;                      ///< scattering pixels (1 when not counted)
+    double edges;                       ///< edge pixels, all bins
+    std::array<float, kEdgeBins> bins;  ///< edge pixels per normal bin
+  };
+  const ImportanceSnapshot& snapshot_;
+  PredictionSettings settings_;
+  std::vector<Texel> texels_;
+  bool valid_ = false;
+};
+
 /// Predicts the warp `frame` would give: resampleCollapsed (or, for the snapshot's own frame,
 /// an identity map, its collapsedX / collapsedY when they have n texels), then blur and floor
 /// (Warp.h's gaussianBlur1D and applyImportanceFloor with settings.warp, as the renderer's passes),
@@ -204,10 +233,13 @@ struct TurnSearch {
 };
 
 /// Scores the current angle, PCA's axis (when given, absolute), every kTurnSearchStepDeg in
-/// (-45, 45], then twice around the best at half the last step: at most 6 + 2 + 4 = 12
-/// predictions. `predict(angleDeg)` is called once per distinct folded angle.
+/// (-45, 45], then, when the best so far is predicted better than the current frame by at
+/// least `refineAbove` (a share of the current score; a turn is in sight), twice around it at
+/// half the last step: at most 6 + 2 + 4 = 12 predictions. `predict(angleDeg)` is called once
+/// per distinct folded angle.
 TurnSearch searchTurn(double currentDeg, std::optional<double> pcaAxisDeg,
-                      const std::function<WarpPrediction(double angleDeg)>& predict);
+                      const std::function<WarpPrediction(double angleDeg)>& predict,
+                      double refineAbove = 0.0);
 
 enum class TurnReason {
   NoPrediction,     ///< no importance landed (first frame, empty view): R kept

@@ -364,8 +364,8 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   info.lights = {LightType::Directional};
   info.temporalRotation = id == "da-rtw";
   if (info.temporalRotation) {
-    info.settleKeys = {"pca.valid", "rotation.held", "rotation.step_deg", "rotation.mode",
-                       "prediction.reason", "rotation.frames"};
+    info.settleKeys = {"pca.valid",     "rotation.held",     "rotation.step_deg",
+                       "rotation.mode", "prediction.reason", "rotation.frames"};
     info.settled = &rotationSettled;
   }
   return info;
@@ -378,8 +378,8 @@ std::optional<bool> RtwShadowMap::rotationSettled(const Publication& pub) {
   if (pub.number("rotation.mode", 0.0) == 1.0) {  // predicted
     // The first estimate has no shadow edges to weigh (the mask before the first frame is
     // empty): a prediction needs one frame more; a view without edges stays unpredicted.
-    const bool predicted = pub.number("prediction.reason", 0.0) !=
-                           double(int(rtw::TurnReason::NoPrediction));
+    const bool predicted =
+        pub.number("prediction.reason", 0.0) != double(int(rtw::TurnReason::NoPrediction));
     if (!predicted && pub.number("rotation.frames", 0.0) < 2.0) return std::nullopt;
     return unchanged;
   }
@@ -636,10 +636,11 @@ void RtwShadowMap::predictTurn(FrameContext& ctx, std::optional<double> pcaAxisD
     c.extentM = fit.extentM;
     return c;
   };
-  auto predict = [&](double angleDeg) {
-    return rtw::predictWarp(snapshot, frameAt(angleDeg), settings);
-  };
-  lastSearch_ = rtw::searchTurn(rotation_.angleDeg(), pcaAxisDeg, predict);
+  const rtw::TurnPredictor predictor(snapshot, settings);
+  auto predict = [&](double angleDeg) { return predictor.predict(frameAt(angleDeg)); };
+  // Refined only when a turn is in sight: the coarse best predicted better by half the margin.
+  lastSearch_ =
+      rtw::searchTurn(rotation_.angleDeg(), pcaAxisDeg, predict, 0.5 * p.get("rotation.margin"));
   const double threshold =
       std::clamp(p.get("pca.threshold"), rtw::kMinHoldThreshold, rtw::kMaxHoldThreshold);
   const double holdDeg = std::acos(threshold) * 180.0 / std::numbers::pi;
@@ -699,8 +700,7 @@ void RtwShadowMap::predictTurn(FrameContext& ctx, std::optional<double> pcaAxisD
   if (ctx.wants("prediction.m.p50") || ctx.wants("prediction.m.p95")) {
     // The frame this one is rendered in: what the renderer's aliasing.p50 / p95 will measure.
     const std::vector<double> q = {0.5, 0.95};
-    const std::vector<double> m =
-        rtw::predictedAliasingQuantiles(snapshot, frameAt(rotation_.angleDeg()), settings, q);
+    const std::vector<double> m = predictor.aliasingQuantiles(frameAt(rotation_.angleDeg()), q);
     if (m.size() == 2) {
       publishNumber(ctx, "prediction.m.p50", m[0]);
       publishNumber(ctx, "prediction.m.p95", m[1]);

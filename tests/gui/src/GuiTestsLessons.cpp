@@ -441,7 +441,8 @@ void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
   std::printf("     case %d: %s\n", caseNumber, c.title.c_str());
   // The left half: "R settles at 45°, ± 2°" (folded by the quarter-turn symmetry). The right
   // half, when it turns too: "turns by at least 10°" (the view's shape moves its angle).
-  const double angle = stated(text, QStringLiteral("R settles at ([\\x{2212}-]?\\d+(?:\\.\\d+)?)°"));
+  const double angle =
+      stated(text, QStringLiteral("R settles at ([\\x{2212}-]?\\d+(?:\\.\\d+)?)°"));
   const double about = stated(text, QStringLiteral("turns by at least (\\d+(?:\\.\\d+)?)°"));
   check(std::isfinite(angle), tr("case %1: the text states the settled angle").arg(caseNumber));
   sl::ViewSide* r = w_.viewport()->mainSide();

@@ -160,8 +160,10 @@ bool GuiTests::turnPrediction(const QString& dir) {
   beat.stop();
   drawn = panel->drawnValues();
   const int done = drawn.value(QStringLiteral("measured.done")).toInt();
-  check(total == 14 && done == total,
-        tr("every turn measured: %1 of %2 in %3 s").arg(done).arg(total).arg(wait.elapsed() / 1000.0));
+  check(total == 14 && done == total, tr("every turn measured: %1 of %2 in %3 s")
+                                          .arg(done)
+                                          .arg(total)
+                                          .arg(wait.elapsed() / 1000.0));
   // A 1-second bound: the jobs run on the render thread; the window only plots answers.
   check(worstGapMs < 1000,
         tr("the window kept answering while they ran (longest stall %1 ms)").arg(worstGapMs));
@@ -173,7 +175,8 @@ bool GuiTests::turnPrediction(const QString& dir) {
   // The measured ratios are against the current angle (±45°, the turned frame): the unturned
   // frame (0°) measures many times its error, as predicted.
   const double atZero = measured.size() == 13 ? measured[6].toDouble(std::nan("")) : std::nan("");
-  const double predictedAtZero = ratios.size() == 37 ? ratios[18].toDouble(std::nan("")) : std::nan("");
+  const double predictedAtZero =
+      ratios.size() == 37 ? ratios[18].toDouble(std::nan("")) : std::nan("");
   check(std::abs(std::abs(bestDeg) - 45.0) < 1e-9 && atZero > 1.5 && predictedAtZero > 1.0,
         tr("truth and prediction agree: the measured error is lowest at %1°, the unturned frame "
            "measures %2x the turned one's (predicted %3x)")

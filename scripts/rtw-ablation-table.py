@@ -14,12 +14,16 @@ RES = ("512", "1024", "2048")
 
 def label(technique, params):
     rest = [p for p in params.split(";") if p and not p.startswith("resolution=")]
-    gateoff = {"pca.metric=metres", "pca.min_anisotropy=0", "pca.min_spread=0"}
+    gateoff = {"rotation.mode=pca", "pca.metric=metres", "pca.min_anisotropy=0",
+               "pca.min_spread=0"}
+    gated = {"rotation.mode=pca", "pca.min_anisotropy=0.9", "pca.min_spread=0.05"}
     s = set(rest)
     if technique == "rtw-backward":
         return "rtw-backward" + (" " + " ".join(rest) if rest else "")
     if not rest:
-        return "**da-rtw (defaults)**"
+        return "**da-rtw (defaults: predicted)**"
+    if s == gated:
+        return "da-rtw, gated (pca, 0.9 / 0.05)"
     if {"pca.source=im", "light.fit=rotation-invariant", "importance.stride=1"} <= s:
         return "poster (`scenes/papers/000-da-rtw.json`)"
     if s == gateoff:

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # DA-RTW against the poster, one deviation at a time: one interleaved `bench` per scene with
 # rtw-backward (also on the rotation-invariant frustum: the poster's area without a rotation),
-# da-rtw at its defaults, da-rtw turning whatever the importance ("gate off": metric in metres,
-# pca.min_anisotropy=0, pca.min_spread=0), "gate off" with each switch alone set to the
-# poster's choice (and with each of the two gates alone), and the poster
+# da-rtw at its defaults (rotation.mode=predicted), the poster's rule gated as the tool once
+# defaulted to (rotation.mode=pca, pca.min_anisotropy=0.9, pca.min_spread=0.05), the rule
+# turning whatever the importance ("gate off": rotation.mode=pca, metric in metres, both gates
+# 0), "gate off" with each switch alone set to the poster's choice (and with each of the two
+# gates alone), and the poster
 # (scenes/papers/000-da-rtw.json), at 512/1024/2048, 640x360, 4 frames along the scene's path.
 # Usage: scripts/rtw-ablation.sh OUTDIR [SCENE...]   (default: the directional scenes)
 # Writes OUTDIR/ablation-SCENE.csv and .png (error against time), and OUTDIR/ablation.md: the
@@ -17,8 +19,10 @@ scenes=("$@")
   plane-box thin-pole dueling)
 cli=${SHADOWLAB_CLI:-build/app/shadowlab-cli}  # another build: SHADOWLAB_CLI=path
 res=resolution=512,1024,2048
-gateoff="$res:pca.metric=metres:pca.min_anisotropy=0:pca.min_spread=0"
-poster="$res:importance.stride=1:importance.orientation=0:pca.source=im:pca.metric=im-units"
+gateoff="$res:rotation.mode=pca:pca.metric=metres:pca.min_anisotropy=0:pca.min_spread=0"
+gated="$res:rotation.mode=pca:pca.min_anisotropy=0.9:pca.min_spread=0.05"
+poster="$res:rotation.mode=pca:importance.stride=1:importance.orientation=0:pca.source=im"
+poster+=":pca.metric=im-units"
 poster+=":light.fit=rotation-invariant:pca.threshold=0.9999:pca.min_anisotropy=0:pca.min_spread=0"
 mkdir -p "$out"
 for s in "${scenes[@]}"; do
@@ -26,6 +30,7 @@ for s in "${scenes[@]}"; do
     --technique "rtw-backward:$res" \
     --technique "rtw-backward:$res:light.fit=rotation-invariant" \
     --technique "da-rtw:$res" \
+    --technique "da-rtw:$gated" \
     --technique "da-rtw:$gateoff" \
     --technique "da-rtw:$gateoff:pca.source=im" \
     --technique "da-rtw:$gateoff:pca.metric=im-units" \

@@ -68,17 +68,29 @@ TEST(Publication, ReadsBackOnlyTheRequestedKeys) {
     return r->stats().publicationBytes;
   };
 
+  // The turn prediction's curves are computed on the CPU from the snapshot the frame reads
+  // anyway: held, never read back for the publication.
+  auto predictionBytes = [&] {
+    std::uint64_t b = 0;
+    for (const auto& [key, values] : r->publication().curves)
+      if (key.rfind("prediction.", 0) == 0) b += 4u * values.size();
+    return b;
+  };
   // Only the Covariance panel's keys: its one image (the IM it draws the ellipses over),
-  // 256^2 floats, and numbers that cost no readback. Neither the curves, the shadow maps nor
-  // the moment chain are read.
+  // 256^2 floats, the predicted curve and numbers that cost no readback. Neither the RTW
+  // curves, the shadow maps nor the moment chain are read.
   const std::uint64_t covariance = frame(ui::rtw::covariancePanelKeys());
   EXPECT_EQ(covariance, 4u * 256 * 256);
-  EXPECT_EQ(covariance, heldBytes(r->publication()));
+  EXPECT_EQ(covariance + predictionBytes(), heldBytes(r->publication()));
   EXPECT_EQ(covariance,
             declaredPublicationBytes(info, r->params(), ui::rtw::covariancePanelKeys()));
   EXPECT_EQ(r->publication().images.size(), 1u);
   EXPECT_TRUE(r->publication().images.count("importance"));
-  EXPECT_TRUE(r->publication().curves.empty());
+  EXPECT_EQ(r->publication().curves.size(), 1u);
+  EXPECT_EQ(r->publication().curves.count("prediction.curve")
+                ? r->publication().curves.at("prediction.curve").size()
+                : 0u,
+            37u);
   EXPECT_TRUE(r->publication().numbers.count("e_x"));
   for (const auto& [key, value] : r->publication().numbers)
     EXPECT_TRUE(ui::rtw::covariancePanelKeys().count(key)) << key << " was not requested";
@@ -96,7 +108,7 @@ TEST(Publication, ReadsBackOnlyTheRequestedKeys) {
                                        + 2 * 257            // warp.{x,y}
                                        + 6 * chainTexels);  // moment.<c>.<level>
   EXPECT_EQ(all, expected);
-  EXPECT_EQ(all, heldBytes(r->publication()));
+  EXPECT_EQ(all + predictionBytes(), heldBytes(r->publication()));
   EXPECT_EQ(all, declaredPublicationBytes(info, r->params(), allPanelKeys()));
   EXPECT_GT(all, 8 * covariance);
 
@@ -110,7 +122,7 @@ TEST(Publication, ReadsBackOnlyTheRequestedKeys) {
   EXPECT_EQ(everything, declaredPublicationBytes(info, r->params(), {"*"}));
   // + the two collapsed 1D maps (256 floats each) read for importance.halfmass.x and .y,
   // which the publication holds as two numbers.
-  EXPECT_EQ(everything, heldBytes(r->publication()) + 2 * 4 * 256);
+  EXPECT_EQ(everything + predictionBytes(), heldBytes(r->publication()) + 2 * 4 * 256);
   test::expectNoGlErrors(*r);
 }
 

@@ -99,14 +99,14 @@
 // --- RTW (techniques/rtw, shaders/rtw).
 #define SL_RTW_BUFFER_COLLAPSED 0  // 1D importance [x n][y n], float bits as uint
 #define SL_RTW_BUFFER_BLURRED 1
-#define SL_RTW_BUFFER_WARP 2      // n + 1 edges per axis
-#define SL_RTW_BUFFER_MOMENTS 3   // DA-RTW moment chain, 6 floats per texel
-#define SL_RTW_BUFFER_INVERSE 4   // inverse warp tables
+#define SL_RTW_BUFFER_WARP 2           // n + 1 edges per axis
+#define SL_RTW_BUFFER_MOMENTS 3        // DA-RTW moment chain, 6 floats per texel
+#define SL_RTW_BUFFER_INVERSE 4        // inverse warp tables
 #define SL_RTW_BUFFER_MOMENT_COUNTS 5  // DA-RTW: pixels and edge-normal bins per moment IM texel
-#define SL_RTW_IMAGE_IM 0         // r32ui 2D importance map
-#define SL_RTW_IMAGE_MOMENT_IM 1  // r32ui DA-RTW moment IM
-#define SL_RTW_LINEAR_GROUP 64    // local_size_x of the 1D passes (collapse, blur, inverse)
-#define SL_RTW_MOMENT_GROUP 8     // local_size_x/y of the moment passes
+#define SL_RTW_IMAGE_IM 0              // r32ui 2D importance map
+#define SL_RTW_IMAGE_MOMENT_IM 1       // r32ui DA-RTW moment IM
+#define SL_RTW_LINEAR_GROUP 64         // local_size_x of the 1D passes (collapse, blur, inverse)
+#define SL_RTW_MOMENT_GROUP 8          // local_size_x/y of the moment passes
 // Largest blur radius: rtw::gaussianWeights clamps to it, blur.comp holds 2r + 1 weights.
 #define SL_BLUR_MAX_RADIUS 32
 // Largest importance map (im.resolution): scan_warp.comp scans it in shared memory with

@@ -483,17 +483,24 @@ void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
             .arg(drawn.value(QStringLiteral("state")).toString())
             .arg(drawn.value(QStringLiteral("prediction.markers")).toInt()));
   const double lowest = stated(text, QStringLiteral("lowest points at ±(\\d+)°"));
-  if (std::isfinite(lowest) && !ratios.isEmpty()) {
+  if (std::isfinite(lowest) && ratios.size() == 37) {
     int k = 0;
     for (int i = 1; i < ratios.size(); ++i)
       if (ratios[i].toDouble(1e9) < ratios[k].toDouble(1e9)) k = i;
     const double at = -90.0 + 5.0 * k;
-    check(std::abs(std::abs(at) - lowest) <= 5.0 && ratios[k].toDouble() < 1.0,
+    check(std::abs(std::abs(at) - lowest) <= 5.0,
           tr("case %1: the predicted curve is lowest at %2° (%3 of now; stated ±%4°)")
               .arg(caseNumber)
               .arg(at)
               .arg(ratios[k].toDouble(), 0, 'f', 2)
               .arg(lowest));
+    const double unturned = stated(text, QStringLiteral("at least (\\d+) times the score now"));
+    if (std::isfinite(unturned))
+      check(ratios[18].toDouble(0.0) >= unturned,
+            tr("case %1: at 0° the prediction is %2 times the score now (stated at least %3)")
+                .arg(caseNumber)
+                .arg(ratios[18].toDouble(0.0), 0, 'f', 2)
+                .arg(unturned));
   }
   if (text.contains(QStringLiteral("no turn is predicted better by more than the margin"))) {
     const double gain = pub.number("prediction.gain", std::nan(""));

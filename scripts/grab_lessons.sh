@@ -7,6 +7,7 @@
 # for its other cases. A window larger than its screen fails the run (exit 1, naming the
 # lesson, the window and the screen). docs/lecturer/lessons.md shows the grabs in
 # docs/images/lessons/.
+# LESSONS (default "*") chooses lessons by name pattern, e.g. LESSONS="06-* 07-*".
 # usage: scripts/grab_lessons.sh OUTDIR [path/to/shadowlab] [frames before the grab (3)]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -34,6 +35,13 @@ for size in "${sizes[@]}"; do
   mkdir -p "$dest"
   for json in "$root"/scenes/lessons/*.json; do
     name=$(basename "$json" .json)
+    chosen=0
+    read -ra patterns <<<"${LESSONS:-*}"
+    for pattern in "${patterns[@]}"; do
+      # shellcheck disable=SC2053  # the pattern is a glob on purpose
+      [[ $name == $pattern ]] && chosen=1
+    done
+    [[ $chosen -eq 1 ]] || continue
     cases=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1])).get("cases", [])))' "$json")
     for k in $(seq 1 $((cases > 1 ? cases : 1))); do
       shot=$name

@@ -132,13 +132,23 @@ QImage colorize(const sl::FloatImage& image, int channel, const ValueRange& rang
   if (image.values.size() < needed) return {};
   QImage out(image.width, image.height, QImage::Format_RGB32);
   const int c = std::clamp(channel, 0, image.channels - 1);
+  // The map's colours at 4096 steps of the range, looked up per texel (a panel colours a
+  // megatexel map every frame): the 256 grey levels and the colour maps' steps are far coarser.
+  constexpr int kSteps = 4096;
+  std::array<QRgb, kSteps> colors;
+  for (int i = 0; i < kSteps; ++i) colors[std::size_t(i)] = mapColor(map, float(i) / (kSteps - 1));
+  const QRgb nanColor = mapColor(map, std::numeric_limits<float>::quiet_NaN());
   for (int y = 0; y < image.height; ++y) {
     const int srcRow = image.height - 1 - y;  // FloatImage row 0 = bottom
     auto* line = reinterpret_cast<QRgb*>(out.scanLine(y));
     const float* src = image.values.data() + static_cast<std::size_t>(srcRow) * image.width *
                                                  static_cast<std::size_t>(image.channels);
-    for (int x = 0; x < image.width; ++x)
-      line[x] = mapColor(map, range.normalize(src[x * image.channels + c]));
+    for (int x = 0; x < image.width; ++x) {
+      const float t = range.normalize(src[x * image.channels + c]);
+      line[x] = std::isnan(t)
+                    ? nanColor
+                    : colors[std::size_t(std::clamp(t, 0.0f, 1.0f) * (kSteps - 1) + 0.5f)];
+    }
   }
   return out;
 }

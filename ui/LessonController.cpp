@@ -26,6 +26,11 @@
 namespace sl::ui {
 
 namespace {
+/// A title from a file as a menu shows it: its "&" literally (a single one marks a mnemonic).
+QString menuText(const std::string& title) {
+  return QString::fromStdString(title).replace(QLatin1Char('&'), QStringLiteral("&&"));
+}
+
 /// First paragraph of a lesson explanation (the banner's "what to look at").
 QString firstParagraph(const std::string& text) {
   return QString::fromStdString(text).section(QStringLiteral("\n\n"), 0, 0).simplified();
@@ -39,9 +44,8 @@ void LessonController::createMenu(QMenu* menu) {
   lessons_ = loadLessons(&errors);
   for (const QString& e : errors) std::fprintf(stderr, "shadowlab: lesson %s\n", qPrintable(e));
   for (std::size_t i = 0; i < lessons_.size(); ++i) {
-    QAction* a = menu->addAction(
-        tr("&%1 %2").arg(i + 1).arg(QString::fromStdString(lessons_[i].preset.title)), this,
-        [this, i] { apply(static_cast<int>(i)); });
+    QAction* a = menu->addAction(tr("&%1 %2").arg(i + 1).arg(menuText(lessons_[i].preset.title)),
+                                 this, [this, i] { apply(static_cast<int>(i)); });
     if (i < 10) {  // Alt+1 … Alt+9, then Alt+0 for the tenth (as on the keyboard's row)
       const Qt::Key key = i < 9 ? static_cast<Qt::Key>(Qt::Key_1 + int(i)) : Qt::Key_0;
       a->setShortcut(QKeySequence(Qt::ALT | key));
@@ -107,9 +111,9 @@ void LessonController::createPapersMenu(QMenu* menu) {
       std::fprintf(stderr, "shadowlab: paper preset %s\n", error.c_str());
       continue;
     }
-    QAction* a = menu->addAction(
-        QString::fromStdString(p->title.empty() ? file.toStdString() : p->title), this,
-        [this, path] { startFile(path, tr("Cannot open the paper preset")); });
+    QAction* a =
+        menu->addAction(menuText(p->title.empty() ? file.toStdString() : p->title), this,
+                        [this, path] { startFile(path, tr("Cannot open the paper preset")); });
     a->setToolTip(firstParagraph(p->explanation));
   }
   if (menu->isEmpty()) menu->addAction(tr("(no presets in %1)").arg(dir.path()))->setEnabled(false);

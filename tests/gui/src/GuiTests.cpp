@@ -104,6 +104,7 @@ const std::vector<GuiTests::Test>& GuiTests::all() {
       {"storage-click", "[=DIR]", [](GuiTests& t, const QString& a) { return t.storageClick(a); }},
       {"panels", "", [](GuiTests& t, const QString&) { return t.panelsFollowTechnique(); }},
       {"course", "[=DIR]", [](GuiTests& t, const QString& a) { return t.course(a); }},
+      {"course-claims", "[=DIR]", [](GuiTests& t, const QString& a) { return t.courseClaims(a); }},
       {"shortcuts", "", [](GuiTests& t, const QString&) { return t.shortcuts(); }},
       {"turn-prediction", "[=DIR]",
        [](GuiTests& t, const QString& a) { return t.turnPrediction(a); }},

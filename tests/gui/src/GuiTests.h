@@ -150,6 +150,11 @@ class GuiTests : public QObject {
   /// lesson's sentence; Next is off at the last, Previous goes back one, and a lesson outside
   /// the course ends it. The Lesson dock at each lesson is saved to DIR.
   bool course(const QString& dir);
+  /// course-claims[=DIR] (started with --course NAME, as a lecturer: --presenter): Next from
+  /// the course's first lesson to its last; after each Next, once the lesson has settled, the
+  /// checks lesson-claims makes of a lesson opened alone (technique, layout, the window on its
+  /// screen, live numbers, the claims). The window at each lesson is saved to DIR.
+  bool courseClaims(const QString& dir);
   /// shortcuts (GuiTestsShortcuts.cpp): with a Parameters slider, then a dock's list or tree
   /// focused, V (outside view), F6 (continuous), Space (pause), O (overlay) and W held (fly)
   /// act and the focus stays; V and Space from one widget of every kind and from a floating
@@ -173,6 +178,8 @@ class GuiTests : public QObject {
   /// the settled angle; vibration: changed pixels per frame, none once held). A PNG of the window
   /// into DIR.
   bool lessonClaims(const QString& dir);
+  /// lesson-claims' checks of the lesson open now (index into the Lessons menu).
+  void checkOpenLesson(int index, const QString& dir);
   void lessonLayout(const sl::PresetLayout& layout);
   /// A lesson's strip: in view and whole, an editor per key; none without one.
   void lessonStrip(const sl::PresetLayout& layout);

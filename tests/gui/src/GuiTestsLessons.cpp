@@ -73,6 +73,11 @@ bool GuiTests::lessonClaims(const QString& dir) {
   const int index = w_.lessons()->index();
   check(index >= 0, tr("started with --lesson"));
   if (index < 0) return false;
+  checkOpenLesson(index, dir);
+  return true;
+}
+
+void GuiTests::checkOpenLesson(int index, const QString& dir) {
   const Lesson& lesson = w_.lessons()->lessons()[static_cast<std::size_t>(index)];
   const QString name = QFileInfo(lesson.path).completeBaseName();
   const sl::Preset& p = lesson.preset;
@@ -115,7 +120,6 @@ bool GuiTests::lessonClaims(const QString& dir) {
     claimFvsm(text);
   else if (name.endsWith(QLatin1String("asm-vs-rmsm")))
     claimAsm(text);
-  return true;
 }
 
 void GuiTests::lessonOnScreen(const QString& name) {
@@ -130,6 +134,11 @@ void GuiTests::lessonOnScreen(const QString& name) {
             .arg(frame.height())
             .arg(screen.width())
             .arg(screen.height()));
+  if (!screen.isEmpty() && frame.width() > screen.width())  // which panel asks for the width
+    for (const QDockWidget* dock : w_.findChildren<QDockWidget*>())
+      if (dock->isVisible())
+        std::printf("     dock %s: %d px wide, at least %d\n", qPrintable(dock->objectName()),
+                    dock->width(), dock->minimumSizeHint().width());
   // Every live number the text quotes is filled once the view's error is measured (a lesson
   // with a split view: its right half's too).
   auto_.waitForFrames(2);

@@ -265,6 +265,9 @@ TimingPanel::TimingPanel(QWidget* parent) : QWidget(parent) {
   outer->setSpacing(4);
   summary_ = new QLabel(tr("No frame yet"));
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  // Wrapped: the line grows with the frame (a split view's second technique, the timing
+  // method), and unwrapped at a presenter's font it asked for more width than the screen.
+  summary_->setWordWrap(true);
   outer->addWidget(summary_);
 
   auto* row = row_ = new QBoxLayout(QBoxLayout::LeftToRight);
@@ -301,6 +304,18 @@ TimingPanel::TimingPanel(QWidget* parent) : QWidget(parent) {
   memoryLayout->addWidget(memoryTotal_);
   row->addWidget(memoryBox, 4);
   outer->addLayout(row, 1);
+  outer->setSizeConstraint(QLayout::SetNoConstraint);  // minimumSizeHint below decides
+}
+
+QSize TimingPanel::minimumSizeHint() const {
+  int w = summary_->minimumSizeHint().width(), h = summary_->minimumSizeHint().height();
+  for (int i = 0; i < row_->count(); ++i)
+    if (const QWidget* box = row_->itemAt(i)->widget()) {
+      w = std::max(w, box->minimumSizeHint().width());
+      h += box->minimumSizeHint().height() + row_->spacing();
+    }
+  const QMargins m = layout()->contentsMargins();
+  return {w + m.left() + m.right(), h + m.top() + m.bottom()};
 }
 
 QString TimingPanel::summaryText() const {

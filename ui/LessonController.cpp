@@ -337,13 +337,13 @@ void LessonController::apply(int index, int caseIndex) {
     w.viewport()->setLight(*p.light);
     w.syncLightControls();
   }
-  if (p.compare) {  // a session or a lesson's comparison: the split view ("" = off)
-    if (auto e = w.viewport()->setSplitTechnique(p.compare->technique, p.compare->params))
-      problems << QString::fromStdString(*e);
-    else
-      w.teaching()->setSplitTechnique(QString::fromStdString(p.compare->technique),
-                                      p.compare->params);
-  }
+  // A session's or a lesson's comparison: the split view ("" = off). None named: off, so a
+  // lesson never shows the split of the lesson before it.
+  const sl::PresetCompare compare = p.compare.value_or(sl::PresetCompare{});
+  if (auto e = w.viewport()->setSplitTechnique(compare.technique, compare.params))
+    problems << QString::fromStdString(*e);
+  else
+    w.teaching()->setSplitTechnique(QString::fromStdString(compare.technique), compare.params);
   rebuildStrip();  // before the layout: presenter mode places the strip with the docks
   if (lesson.layout) w.sessions()->applyLayout(*lesson.layout, &problems);  // a session: its docks
   placeStrip();

@@ -169,6 +169,7 @@ void PresenterMode::setFullPanel(bool on) {
 
 void PresenterMode::arrangeDocks() {
   keptOnScreen_ = 0;
+  fedSinceArranged_ = 0;
   big_ = pickBigDock();
   // Everything but the big panel hidden; the Lesson and Parameters tabbed behind it (a
   // lecturer's notes and knobs, one click away).
@@ -245,6 +246,15 @@ void PresenterMode::arrangeDocks() {
 
 void PresenterMode::keepOnScreen() {
   if (!active_ || fullPanel_) return;
+  if (big_ && fedSinceArranged_ < kMaxKeepOnScreen) {
+    ++fedSinceArranged_;
+    if (big_->width() > int(w_.width() * kPanelShare) + 1) {
+      const QSize view = w_.viewport()->size();
+      sizeBigDock();
+      w_.layout()->activate();
+      if (w_.viewport()->size() != view) w_.lessons()->settleAgain();
+    }
+  }
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
   if (!screen) return;
   const int screenHeight = screen->geometry().height();

@@ -68,7 +68,10 @@ class PresenterMode : public QObject {
   /// Share of the window's width the big panel takes.
   static constexpr double kPanelShare = 0.42;
 
-  /// After a frame: when the panels, filled now, make the window taller than its screen, the
+  /// After a frame: the first few frames after an arrangement give the big panel its share of
+  /// the width again where its content, filled now, allows it (a panel still holding the last
+  /// lesson's wider content kept its width, and the next lesson's view was narrower than
+  /// when opened alone). When the panels make the window taller than its screen, the
   /// docks are arranged again (a panel that no longer fits under the big one goes behind it)
   /// and the window fits the screen. The arrangement measures the panels as they are; a panel
   /// shown before its first frame grows when the frame arrives.
@@ -94,7 +97,8 @@ class PresenterMode : public QObject {
   QByteArray savedState_, savedGeometry_;
   QFont savedFont_;
   bool savedMaximized_ = false;
-  int keptOnScreen_ = 0;  ///< times keepOnScreen re-arranged since the last arrangement
+  int keptOnScreen_ = 0;      ///< times keepOnScreen re-arranged since the last arrangement
+  int fedSinceArranged_ = 0;  ///< frames fed to the panels since the last arrangement
   static constexpr int kMaxKeepOnScreen = 3;
 };
 

@@ -90,6 +90,15 @@ void GuiTests::checkOpenLesson(int index, const QString& dir) {
             .arg(w_.lessons()->settleFrames()));
   std::printf("     window %dx%d, view %dx%d\n", w_.width(), w_.height(), w_.viewport()->width(),
               w_.viewport()->height());
+  {  // what a lesson opened after others could inherit: the camera and the light
+    const sl::Camera c = w_.viewport()->camera();
+    const sl::Light l = w_.viewport()->light();
+    std::printf(
+        "     camera (%.2f %.2f %.2f) -> (%.2f %.2f %.2f), near %.3g, far %.3g; light "
+        "azimuth %.1f°, elevation %.1f°\n",
+        c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.nearM,
+        c.farM, l.azimuthDeg, l.elevationDeg);
+  }
   if (!dir.isEmpty() && QDir().mkpath(dir))
     w_.grab().toImage().save(QDir(dir).filePath(name + QStringLiteral(".png")));
   if (p.layout) lessonLayout(*p.layout);

@@ -440,6 +440,11 @@ void MainWindow::createPanelDocks() {
             [variants, panel](const QString& tag, const QList<QStringList>& list) {
               variants->start(panel, tag, list);
             });
+    connect(panel, &PublicationPanel::parameterChosen, this,
+            [this](const QString& key, double value) {
+              if (!paramPanel()->edit(key.toStdString(), value))
+                report(tr("no parameter '%1' to set").arg(key));
+            });
     connect(panel, &PublicationPanel::lightChosen, this, [this](double azimuth, double elevation) {
       // The storage analysis is for a directional light: a click makes the light one.
       viewport_->setLight(

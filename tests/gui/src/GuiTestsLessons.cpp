@@ -78,6 +78,9 @@ bool GuiTests::lessonClaims(const QString& dir) {
 }
 
 void GuiTests::checkOpenLesson(int index, const QString& dir) {
+  // Settled: a resize once the panels are filled (presenter mode) may start it again.
+  auto_.waitForFrames(1);
+  auto_.waitForSettled();
   const Lesson& lesson = w_.lessons()->lessons()[static_cast<std::size_t>(index)];
   const QString name = QFileInfo(lesson.path).completeBaseName();
   const sl::Preset& p = lesson.preset;

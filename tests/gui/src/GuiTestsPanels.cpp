@@ -6,6 +6,8 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QTest>
 #include <QCoreApplication>
 #include <QDir>
 #include <QJsonArray>
@@ -17,6 +19,8 @@
 #include "MainWindow.h"
 #include "GuiTests.h"
 #include "ViewportWidget.h"
+#include "panels/common/ParamPanel.h"
+#include "panels/rtw/CovariancePanel.h"
 #include "panels/rtw/RtwPanels.h"
 
 namespace sl::ui {
@@ -183,6 +187,32 @@ bool GuiTests::turnPrediction(const QString& dir) {
             .arg(bestDeg)
             .arg(atZero, 0, 'f', 2)
             .arg(predictedAtZero, 0, 'f', 2));
+  // The threshold on its own scale: a click on the gauge at 1 - threshold = 1e-6 sets it
+  // finer than the Parameters panel's step (0.0001), and the Parameters panel shows it whole.
+  if (auto* covariance = qobject_cast<CovariancePanel*>(panel)) {
+    QWidget* gauge = covariance->thresholdGauge();
+    QTest::mouseClick(gauge, Qt::LeftButton, {}, covariance->thresholdGaugePoint(1e-6));
+    QCoreApplication::processEvents();
+    const double threshold = w_.viewport()->mainSide()->params().get("pca.threshold");
+    auto* spin = w_.paramPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("param:pca.threshold"));
+    const QString shown = spin ? spin->text() : QString();
+    check(std::abs(std::log10(1.0 - threshold) + 6.0) < 0.05 &&
+              std::abs(shown.toDouble() - threshold) < 1e-9,
+          tr("a click on the gauge at 1e-6 sets the threshold %1 (1 - threshold = %2), the "
+             "Parameters panel shows \"%3\"")
+              .arg(threshold, 0, 'f', 9)
+              .arg(1.0 - threshold, 0, 'e', 2)
+              .arg(shown));
+    auto_.waitForFrames(2);
+    const QJsonObject band = panel->drawnValues();
+    check(band.value(QStringLiteral("gauge.band_frames")).toInt() >= 2 &&
+              band.value(QStringLiteral("gauge.band_lo")).toDouble() <=
+                  band.value(QStringLiteral("gauge.band_hi")).toDouble(),
+          tr("the gauge shows 1 - e_x of the last %1 frames as a band")
+              .arg(band.value(QStringLiteral("gauge.band_frames")).toInt()));
+    w_.paramPanel()->edit("pca.threshold",
+                          w_.viewport()->mainSide()->params().find("pca.threshold")->defaultValue);
+  }
   if (!dir.isEmpty() && QDir().mkpath(dir)) {
     // The panel as a user gives it the left column (the docks beside it closed from their
     // title bars), after a frame that predicted again: a picture of prediction against truth.

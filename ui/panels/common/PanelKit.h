@@ -274,6 +274,10 @@ class PublicationPanel : public QWidget {
   /// The panel asks the window to move the light (degrees; e.g. a click on the Storage
   /// factor panel's hemisphere).
   void lightChosen(double azimuthDeg, double elevationDeg);
+  /// The panel asks the window to set one of the shown technique's parameters, as its editor
+  /// in the Parameters panel would (e.g. the Covariance panel's vibration threshold, dragged
+  /// on its log scale of 1 - threshold).
+  void parameterChosen(const QString& key, double value);
   /// The panel asks the window to measure the view as it is shown with each variant of the
   /// shown technique's parameters ("key=value" assignments on top of the view's), one frame
   /// each on the render thread, against the exact reference (e.g. the Covariance panel's

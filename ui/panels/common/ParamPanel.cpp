@@ -59,7 +59,30 @@ class DeclRangeSpinBox : public Base {
   T lo_, hi_;
 };
 using DeclSpinBox = DeclRangeSpinBox<QSpinBox, int>;
-using DeclDoubleSpinBox = DeclRangeSpinBox<QDoubleSpinBox, double>;
+
+/// A number with as many decimals as its value needs: at least `shown` (the step's), at most
+/// 9, so that a value finer than the step (a vibration threshold of 0.999999, set on the
+/// Covariance panel's log scale or typed) is kept and shown whole, not rounded to the step.
+class DeclDoubleSpinBox : public DeclRangeSpinBox<QDoubleSpinBox, double> {
+ public:
+  static constexpr int kMaxDecimals = 9;
+  DeclDoubleSpinBox(double lo, double hi, double wideRange, int shown)
+      : DeclRangeSpinBox(lo, hi, wideRange), shown_(std::clamp(shown, 0, kMaxDecimals)) {
+    setDecimals(kMaxDecimals);
+  }
+  QString textFromValue(double value) const override {
+    QString text = QDoubleSpinBox::textFromValue(value);
+    const int dot = text.indexOf(locale().decimalPoint());
+    if (dot < 0) return text;
+    const qsizetype keep = dot + 1 + shown_;
+    while (text.size() > keep && text.endsWith(QLatin1Char('0'))) text.chop(1);
+    if (text.size() == dot + 1) text.chop(1);  // "5." -> "5"
+    return text;
+  }
+
+ private:
+  int shown_;
+};
 
 /// Stops the wheel from changing unfocused editors while the panel is scrolled.
 class WheelGuard : public QObject {
@@ -136,6 +159,7 @@ ParamPanel::ParamPanel(QWidget* parent) : QWidget(parent) {
 
 void ParamPanel::clear() {
   refreshers_.clear();
+  sets_.clear();
   auto* placeholder = new QLabel(tr("No renderer yet."), this);
   placeholder->setAlignment(Qt::AlignCenter);
   placeholder->setEnabled(false);
@@ -146,6 +170,9 @@ void ParamPanel::clear() {
 
 void ParamPanel::setSections(std::vector<Section> sections) {
   refreshers_.clear();
+  sets_.clear();
+  for (const Section& section : sections)
+    if (section.params) sets_.push_back(section.params);
   auto* content = new QWidget;
   auto* layout = new QVBoxLayout(content);
   layout->setContentsMargins(8, 6, 8, 8);
@@ -161,6 +188,9 @@ void ParamPanel::setSections(std::vector<Section> sections) {
 
 int ParamPanel::setStrip(const std::vector<StripRow>& rows) {
   refreshers_.clear();
+  sets_.clear();
+  for (const StripRow& r : rows)
+    if (r.params) sets_.push_back(r.params);
   auto* content = new QWidget;
   auto* grid = new QGridLayout(content);
   grid->setContentsMargins(8, 4, 6, 4);
@@ -340,8 +370,8 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
         };
         spin = s;
       } else {
-        auto* s = new DeclDoubleSpinBox(lo, hi, kWideRange);
-        s->setDecimals(
+        auto* s = new DeclDoubleSpinBox(
+            lo, hi, kWideRange,
             std::max({decimalsFor(step), decimalsFor(lo), decimalsFor(decl.defaultValue)}));
         s->setSingleStep(step);
         connect(s, &QDoubleSpinBox::valueChanged, this, [this, &params, &decl](double v) {
@@ -388,6 +418,15 @@ void ParamPanel::buildRow(sl::ParamSet& params, const sl::ParamDecl& decl, QGrid
     refresh();
     Q_EMIT paramChanged(qkey);
   });
+}
+
+bool ParamPanel::edit(const std::string& key, double value) {
+  for (sl::ParamSet* params : sets_)
+    if (const sl::ParamDecl* decl = params ? params->find(key) : nullptr) {
+      if (!commit(*params, *decl, value)) refreshValues();
+      return true;
+    }
+  return false;
 }
 
 bool ParamPanel::commit(sl::ParamSet& params, const sl::ParamDecl& decl, double value) {

@@ -51,6 +51,9 @@ class ParamPanel : public QWidget {
   bool bound() const { return !refreshers_.empty(); }
   /// Re-reads every value (after changes made elsewhere, e.g. --set or presets).
   void refreshValues();
+  /// Sets `key` of the first ParamSet shown that declares it, as the key's own editor does
+  /// (paramChanged, or editRefused with ParamSet's message); false when none declares it.
+  bool edit(const std::string& key, double value);
 
  Q_SIGNALS:
   /// The panel was rebuilt (setSections) or cleared: what it edits changed.
@@ -68,6 +71,7 @@ class ParamPanel : public QWidget {
 
   QScrollArea* scroll_ = nullptr;
   std::vector<std::function<void()>> refreshers_;  ///< one per row: value -> widgets
+  std::vector<sl::ParamSet*> sets_;                ///< the ParamSets shown (edit())
 };
 
 }  // namespace sl::ui

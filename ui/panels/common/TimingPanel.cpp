@@ -308,14 +308,17 @@ TimingPanel::TimingPanel(QWidget* parent) : QWidget(parent) {
 }
 
 QSize TimingPanel::minimumSizeHint() const {
-  int w = summary_->minimumSizeHint().width(), h = summary_->minimumSizeHint().height();
+  // Narrow: the boxes one above the other (the widest box's width); short: side by side (the
+  // tallest box's height). The panel arranges itself for the shape it is given.
+  int w = summary_->minimumSizeHint().width(), h = 0;
   for (int i = 0; i < row_->count(); ++i)
     if (const QWidget* box = row_->itemAt(i)->widget()) {
       w = std::max(w, box->minimumSizeHint().width());
-      h += box->minimumSizeHint().height() + row_->spacing();
+      h = std::max(h, box->minimumSizeHint().height());
     }
   const QMargins m = layout()->contentsMargins();
-  return {w + m.left() + m.right(), h + m.top() + m.bottom()};
+  return {w + m.left() + m.right(),
+          summary_->minimumSizeHint().height() + layout()->spacing() + h + m.top() + m.bottom()};
 }
 
 QString TimingPanel::summaryText() const {

@@ -44,8 +44,9 @@ class TimingPanel : public QWidget {
 
  protected:
   void resizeEvent(QResizeEvent* event) override;
-  /// What the boxes need one above the other (as the panel arranges them when narrow): the
-  /// side-by-side row's sum of widths must never hold the window wider than its screen.
+  /// The boxes' widest width (one above the other, as the panel arranges them when narrow)
+  /// and their tallest height (side by side): the row's sum of widths must never hold the
+  /// window wider than its screen.
   QSize minimumSizeHint() const override;
   void changeEvent(QEvent* event) override;
 

@@ -10,11 +10,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <QGridLayout>
 #include <QJsonArray>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
 #include <QPushButton>
@@ -52,50 +54,81 @@ QString thresholdText(double threshold) {
 }
 }  // namespace
 
-/// e_x on a log scale of 1 - e_x (0.9 .. 0.9999999), with the threshold marked: right of it
-/// the rotation is held.
+/// e_x on a log scale of 1 - e_x (0.9 .. 0.99999999), with the threshold marked: right of it
+/// the rotation is held. The band of 1 - e_x over the last frames is drawn on the track, so a
+/// class sees where the estimate's frame-to-frame noise lies; a click or a drag on the track
+/// sets the threshold there (through the Parameters panel's editor: the same checks).
 class ThresholdGauge : public QWidget {
  public:
-  using QWidget::QWidget;
-  void set(double ex, double threshold, bool valid) {
+  explicit ThresholdGauge(QWidget* parent = nullptr) : QWidget(parent) {
+    setCursor(Qt::SizeHorCursor);
+    setToolTip(QObject::tr(
+        "Click or drag to set the vibration threshold on this scale of 1 − threshold. The "
+        "pale band: 1 − e_x over the last frames. e_x is a 32-bit float, so 1 − e_x is 0 or at "
+        "least 6e-8: a threshold closer to 1 than that never holds."));
+  }
+  void set(double ex, double threshold, bool valid, double bandLo, double bandHi, int bandFrames) {
     ex_ = ex;
     threshold_ = threshold;
     valid_ = valid;
+    bandLo_ = bandLo;
+    bandHi_ = bandHi;
+    bandFrames_ = bandFrames;
     update();
+  }
+  /// Called with the threshold at a click or drag on the track.
+  void setOnChosen(std::function<void(double)> onChosen) { onChosen_ = std::move(onChosen); }
+  /// The threshold a click at x (widget pixels) sets.
+  double thresholdAt(double x) const {
+    const QRectF t = track();
+    const double f = std::clamp((x - t.left()) / std::max(1.0, t.width()), 0.0, 1.0);
+    return 1.0 - std::pow(10.0, kL0 + f * (kL1 - kL0));
+  }
+  /// Where the value of 1 - e_x = `oneMinus` sits on the track (widget pixels).
+  double xOfOneMinus(double oneMinus) const {
+    const QRectF t = track();
+    const double l = std::log10(std::max(oneMinus, kMinOneMinusEx));
+    return t.left() + std::clamp((l - kL0) / (kL1 - kL0), 0.0, 1.0) * t.width();
   }
   QSize sizeHint() const override { return {260, 3 * fontMetrics().height() + 16}; }
   QSize minimumSizeHint() const override { return {160, 3 * fontMetrics().height() + 16}; }
 
  protected:
+  void mousePressEvent(QMouseEvent* e) override { choose(e); }
+  void mouseMoveEvent(QMouseEvent* e) override {
+    if (e->buttons() & Qt::LeftButton) choose(e);
+  }
   void paintEvent(QPaintEvent*) override {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
     const QPalette& pal = palette();
     const int line = fontMetrics().height();
-    const QRectF track(8, line + 6, width() - 16, line + 4);
-    constexpr double kL0 = -1.0, kL1 = -7.0;  // log10(1 - e_x) at the left and right ends
-    auto xOf = [&](double ex) {
-      const double l = std::log10(std::max(1.0 - ex, kMinOneMinusEx));
-      return track.left() + std::clamp((l - kL0) / (kL1 - kL0), 0.0, 1.0) * track.width();
-    };
+    const QRectF track = this->track();
+    auto xOf = [&](double ex) { return xOfOneMinus(1.0 - ex); };
     const double tx = xOf(threshold_);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(214, 128, 40, 170));
     p.drawRect(QRectF(track.left(), track.top(), tx - track.left(), track.height()));
     p.setBrush(QColor(60, 170, 90, 170));
     p.drawRect(QRectF(tx, track.top(), track.right() - tx, track.height()));
+    if (bandFrames_ > 1 && bandHi_ >= bandLo_) {  // the last frames' 1 - e_x
+      const double x0 = xOfOneMinus(bandHi_), x1 = xOfOneMinus(bandLo_);
+      p.setBrush(QColor(255, 255, 255, 70));
+      p.drawRect(QRectF(x0 - 1.5, track.top(), x1 - x0 + 3.0, track.height()));
+    }
     p.setPen(Qt::white);
     p.drawText(QRectF(track.left() + 4, track.top(), tx - track.left() - 8, track.height()),
                Qt::AlignLeft | Qt::AlignVCenter, tr("rotate"));
     p.drawText(QRectF(tx + 4, track.top(), track.right() - tx - 8, track.height()),
                Qt::AlignRight | Qt::AlignVCenter, tr("hold"));
     p.setPen(pal.color(QPalette::PlaceholderText));
-    for (int d = 1; d <= 7; ++d) {
-      const double x = xOf(1.0 - std::pow(10.0, -d));
+    const int decades = int(std::lround(kL0 - kL1));
+    for (int d = 1; d <= decades + 1; ++d) {
+      const double x = xOfOneMinus(std::pow(10.0, -d));
       p.drawLine(QPointF(x, track.bottom()), QPointF(x, track.bottom() + 3));
       const Qt::Alignment align =
-          d == 1 ? Qt::AlignLeft : (d == 7 ? Qt::AlignRight : Qt::AlignHCenter);
-      const double left = d == 1 ? x : (d == 7 ? x - 60 : x - 30);
+          d == 1 ? Qt::AlignLeft : (d == decades + 1 ? Qt::AlignRight : Qt::AlignHCenter);
+      const double left = d == 1 ? x : (d == decades + 1 ? x - 60 : x - 30);
       p.drawText(QRectF(left, track.bottom() + 3, 60, line), align, QStringLiteral("1e-%1").arg(d));
     }
     p.setPen(QPen(Qt::white, 2));
@@ -122,9 +155,29 @@ class ThresholdGauge : public QWidget {
   }
 
  private:
+  // log10(1 - e_x) at the left and right ends: 1e-8 is about float's step below 1 (6e-8).
+  static constexpr double kL0 = -1.0, kL1 = -8.0;
+  QRectF track() const {
+    const int line = fontMetrics().height();
+    return QRectF(8, line + 6, width() - 16, line + 4);
+  }
+  void choose(QMouseEvent* e) {
+    if (onChosen_) onChosen_(thresholdAt(e->position().x()));
+  }
   double ex_ = 1.0, threshold_ = 0.9999;
   bool valid_ = false;
+  double bandLo_ = 0.0, bandHi_ = 0.0;
+  int bandFrames_ = 0;
+  std::function<void(double)> onChosen_;
 };
+
+QWidget* CovariancePanel::thresholdGauge() const {
+  return gauge_;
+}
+
+QPoint CovariancePanel::thresholdGaugePoint(double oneMinusThreshold) const {
+  return QPoint(int(std::lround(gauge_->xOfOneMinus(oneMinusThreshold))), gauge_->height() / 2);
+}
 
 CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   // State and gauge across the top; the IM with the ellipses beside the numbers; the
@@ -140,6 +193,10 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   followBodyFont(state_, 1.0, true);
   outer->addWidget(state_);
   gauge_ = new ThresholdGauge;
+  gauge_->setObjectName(QStringLiteral("thresholdGauge"));
+  gauge_->setOnChosen([this](double threshold) {
+    Q_EMIT parameterChosen(QStringLiteral("pca.threshold"), threshold);
+  });
   outer->addWidget(gauge_);
   auto* middle = new QHBoxLayout;
   view_ = new ImageView;
@@ -502,7 +559,6 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   state_->setStyleSheet(
       QStringLiteral("background:%1;color:white;border-radius:4px;").arg(stateColor.name()));
   const double ex = havePublished ? pubEx : s.ex;
-  gauge_->set(ex, threshold_, pcaValid);
 
   const QString unit2 = metres ? QStringLiteral(" m²") : QStringLiteral(" (IM units)²");
   const double anisotropy = numberOr(n, "pca.anisotropy", s.anisotropy);
@@ -539,6 +595,19 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   while (history_.size() > kHistoryFrames) history_.pop_front();
   double lo = history_.front().angleDeg, hi = lo;
   for (const Sample& h : history_) lo = std::min(lo, h.angleDeg), hi = std::max(hi, h.angleDeg);
+  // The gauge's band: 1 - e_x over the last kGaugeBandFrames frames (the estimate's noise).
+  double bandLo = 1.0, bandHi = 0.0;
+  int bandFrames = 0;
+  for (auto it = history_.rbegin(); it != history_.rend() && bandFrames < kGaugeBandFrames; ++it)
+    if (std::isfinite(it->ex)) {
+      bandLo = std::min(bandLo, 1.0 - it->ex);
+      bandHi = std::max(bandHi, 1.0 - it->ex);
+      ++bandFrames;
+    }
+  gauge_->set(ex, threshold_, pcaValid, bandLo, bandHi, bandFrames);
+  drawn_[QStringLiteral("gauge.band_frames")] = bandFrames;
+  drawn_[QStringLiteral("gauge.band_lo")] = bandLo;
+  drawn_[QStringLiteral("gauge.band_hi")] = bandHi;
   drawn_[QStringLiteral("history.frames")] = int(history_.size());
   drawn_[QStringLiteral("history.angle_min_deg")] = lo;
   drawn_[QStringLiteral("history.angle_max_deg")] = hi;

@@ -48,6 +48,12 @@ class CovariancePanel : public PublicationPanel {
   static QStringList readoutProblems(const QJsonObject& drawn, const sl::Publication& pub);
 
   static constexpr std::size_t kHistoryFrames = 240;
+  /// The frames whose 1 - e_x the threshold gauge shows as a band (a second at 30 fps).
+  static constexpr int kGaugeBandFrames = 30;
+  /// The threshold gauge (a click or drag on it sets pca.threshold through parameterChosen)
+  /// and the point of it where a click sets 1 - threshold = `oneMinusThreshold`.
+  QWidget* thresholdGauge() const;
+  QPoint thresholdGaugePoint(double oneMinusThreshold) const;
 
  private:
   void updateHistoryPlots();

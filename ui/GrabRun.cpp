@@ -4,10 +4,11 @@
 #include <cstdio>
 
 #include <QAction>
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
-#include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLabel>
@@ -15,8 +16,10 @@
 #include "LessonController.h"
 #include "MainWindow.h"
 #include "ViewportWidget.h"
+#include "core/Course.h"
 #include "core/JsonNumber.h"
 #include "panels/common/TimingPanel.h"
+#include "scene/GltfLoader.h"
 
 namespace sl::ui {
 
@@ -29,7 +32,61 @@ void printErr(const QString& line) {
   std::fprintf(stderr, "shadowlab: %s\n", line.toLocal8Bit().constData());
   std::fflush(stderr);
 }
+
+QString panelFileName(const QDockWidget* dock) {
+  return QStringLiteral("panel-%1.png").arg(dock->objectName());
+}
+
+/// A file the window names itself (only a regular file or none is replaced).
+sl::OutputTarget windowTarget(const QString& name, const QString& path) {
+  return {name.toStdString(), path.toStdString(), false};
+}
 }  // namespace
+
+std::vector<sl::InputTarget> windowInputs(const MainWindow& window, bool forSession) {
+  std::vector<sl::InputTarget> inputs;
+  if (const auto& scene = window.viewport()->scene())
+    for (const std::string& f : scene->inputFiles) inputs.push_back({"the scene's file " + f, f});
+  const std::string course = sl::courseFile(sl::builtinSceneDir()).string();
+  inputs.push_back({"the course file " + course, course});
+  if (!forSession)
+    for (const Lesson& l : window.lessons()->lessons())
+      inputs.push_back({"the lesson or session " + l.path.toStdString(), l.path.toStdString()});
+  return inputs;
+}
+
+QByteArray pngBytes(const QImage& image) {
+  QByteArray png;
+  QBuffer buffer(&png);
+  buffer.open(QIODevice::WriteOnly);
+  if (image.isNull() || !image.save(&buffer, "PNG")) return {};
+  return png;
+}
+
+std::optional<QString> writeWindowOutput(const MainWindow& window, const QString& path,
+                                         const QByteArray& bytes, bool forSession) {
+  const sl::OutputTarget target = windowTarget(QFileInfo(path).fileName(), path);
+  if (auto e = sl::checkOutputTargets({target}, windowInputs(window, forSession)))
+    return QString::fromStdString(*e);
+  if (bytes.isEmpty())
+    return QCoreApplication::translate("GrabRun", "%1: nothing to write").arg(path);
+  const std::string data = bytes.toStdString();
+  if (auto e = sl::writeOutputAtomically(
+          target, [&](const std::string& tmp) { return sl::writeFileBytes(tmp, data); }))
+    return QString::fromStdString(*e);
+  return std::nullopt;
+}
+
+std::optional<QString> GrabRun::checkGrabFiles(const QString& dirPath, bool published) const {
+  const QDir dir(dirPath);
+  std::vector<sl::OutputTarget> targets;
+  QStringList names = {QStringLiteral("window.png"), QStringLiteral("viewport.png")};
+  for (const QDockWidget* dock : w_.findChildren<QDockWidget*>()) names << panelFileName(dock);
+  if (published) names << QStringLiteral("published.json");
+  for (const QString& name : names) targets.push_back(windowTarget(name, dir.filePath(name)));
+  if (auto e = sl::checkOutputTargets(targets, windowInputs(w_))) return QString::fromStdString(*e);
+  return std::nullopt;
+}
 
 GrabRun::GrabRun(MainWindow& window) : QObject(&window), w_(window) {
   timer_.setInterval(kGrabTickMs);
@@ -37,6 +94,13 @@ GrabRun::GrabRun(MainWindow& window) : QObject(&window), w_(window) {
 }
 
 void GrabRun::start(const QString& dir, int frames) {
+  // Before any frame: DIR must take every file of the grab without replacing an input of the
+  // run (a session, a scene's buffer named published.json) or writing into a FIFO or device.
+  if (auto e = checkGrabFiles(dir, true)) {
+    printErr(QStringLiteral("--grab: ") + *e);
+    QTimer::singleShot(0, this, [] { QCoreApplication::exit(2); });
+    return;
+  }
   dir_ = dir;
   frames_ = frames;
   clock_.start();
@@ -79,17 +143,14 @@ void GrabRun::finish() {
   if (const sl::ViewSide* r = viewport->mainSide()) w_.docks().feed(*r, true);
 
   QStringList failures;
-  if (!QDir().mkpath(dir_)) failures << tr("cannot create directory %1").arg(dir_);
+  if (auto e = checkGrabFiles(dir_, true)) failures << *e;  // checked again: files may have come
   if (failures.isEmpty()) failures << writeImages(dir_, true);
   if (failures.isEmpty()) {
     const QString path = QDir(dir_).absoluteFilePath(QStringLiteral("published.json"));
-    QFile file(path);
-    if (file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
-        file.write(QJsonDocument(publicationJson()).toJson()) > 0) {
+    if (auto e = writeWindowOutput(w_, path, QJsonDocument(publicationJson()).toJson()))
+      failures << *e;
+    else
       std::printf("%s\n", path.toLocal8Bit().constData());
-    } else {
-      failures << tr("cannot write %1").arg(path);
-    }
   }
   std::fflush(stdout);
   for (const QString& problem : problems_) failures << tr("grab failed: %1").arg(problem);
@@ -99,11 +160,12 @@ void GrabRun::finish() {
 
 QStringList GrabRun::writeImages(const QString& dirPath, bool printPaths) {
   QStringList failures;
+  if (auto e = checkGrabFiles(dirPath, false)) return {*e};  // nothing written
   const QDir dir(dirPath);
   auto save = [&](const QImage& image, const QString& name) {
     const QString path = dir.absoluteFilePath(name);
-    if (image.isNull() || !image.save(path)) {
-      failures << tr("cannot write %1").arg(path);
+    if (auto e = writeWindowOutput(w_, path, pngBytes(image))) {
+      failures << *e;
       return;
     }
     if (printPaths) std::printf("%s\n", path.toLocal8Bit().constData());
@@ -118,7 +180,7 @@ QStringList GrabRun::writeImages(const QString& dirPath, bool printPaths) {
     if (dock->isHidden() && !dock->toggleViewAction()->isChecked()) continue;  // closed
     dock->raise();
     QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-    save(dock->grab().toImage(), QStringLiteral("panel-%1.png").arg(dock->objectName()));
+    save(dock->grab().toImage(), panelFileName(dock));
   }
   for (QDockWidget* dock : front) dock->raise();
   QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);

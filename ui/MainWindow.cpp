@@ -521,10 +521,10 @@ void MainWindow::saveScreenshot() {
       this, tr("Save viewport image"), QDir::home().filePath(QStringLiteral("shadowlab.png")),
       tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
-  if (grabViewFullSize().save(path))
-    showStatus(tr("Saved %1").arg(path));
+  if (auto e = writeWindowOutput(*this, path, pngBytes(grabViewFullSize())))
+    report(*e, tr("Save viewport image"));
   else
-    report(tr("cannot write %1").arg(path), tr("Save viewport image"));
+    showStatus(tr("Saved %1").arg(path));
 }
 
 void MainWindow::exportFigureDialog() {
@@ -554,9 +554,8 @@ std::optional<QString> MainWindow::exportFigure(const QString& path) {
           .arg(cells.front().shaded.height)
           .arg(kind)
           .arg(kDilatePx);
-  if (!drawFigure(cells, title.toStdString(), 0, std::nullopt).save(path, "PNG"))
-    return tr("cannot write %1").arg(path);
-  return std::nullopt;
+  return writeWindowOutput(*this, path,
+                           pngBytes(drawFigure(cells, title.toStdString(), 0, std::nullopt)));
 }
 
 void MainWindow::info(const QString& message) {
@@ -708,10 +707,10 @@ void MainWindow::savePanelImage(QDockWidget* dock) {
   const QString path = QFileDialog::getSaveFileName(
       this, tr("Save panel image"), QDir::home().filePath(name), tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
-  if (dock->grab().toImage().save(path))
-    showStatus(tr("Saved %1").arg(path), kStatusMessageMs);
+  if (auto e = writeWindowOutput(*this, path, pngBytes(dock->grab().toImage())))
+    report(*e, tr("Save panel image"));
   else
-    report(tr("cannot write %1").arg(path), tr("Save panel image"));
+    showStatus(tr("Saved %1").arg(path), kStatusMessageMs);
 }
 
 void MainWindow::saveAllImages() {

@@ -1,8 +1,6 @@
 // Sessions (see SessionFiles.h): the window's state written as a preset, opened as a lesson.
 #include "SessionFiles.h"
 
-#include <fstream>
-
 #include <QAction>
 #include <QDateTime>
 #include <QDockWidget>
@@ -11,6 +9,7 @@
 #include <QMenu>
 #include <QSettings>
 
+#include "GrabRun.h"
 #include "LessonController.h"
 #include "MainWindow.h"
 #include "PresenterMode.h"
@@ -86,14 +85,10 @@ sl::Preset SessionFiles::current(const QString& path) const {
 
 bool SessionFiles::save(const QString& path) {
   const std::string text = sl::presetToJson(current(path)) + "\n";
-  {
-    std::ofstream out(path.toStdString(), std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      w_.report(tr("%1: could not write the session").arg(path), tr("Cannot save session"));
-      return false;
-    }
+  // The output policy (GrabRun.h): never over the scene's files, atomically.
+  if (auto e = writeWindowOutput(w_, path, QByteArray::fromStdString(text), true)) {
+    w_.report(*e, tr("Cannot save session"));
+    return false;
   }
   remember(path);
   w_.info(tr("Session saved to %1").arg(path));

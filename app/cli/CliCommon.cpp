@@ -1,16 +1,20 @@
 // Shared helpers of the shadowlab-cli commands; see CliCommon.h.
 #include "CliCommon.h"
 #include "algo/InputFile.h"
+#include "algo/OutputFile.h"
 
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "core/JsonInput.h"
 #include "core/Renderer.h"
@@ -37,21 +41,26 @@ int parseInt(const std::string& opt, const std::string& text, int lo, int hi) {
 }
 
 double parseDouble(const std::string& opt, const std::string& text, double lo, double hi) {
-  try {
-    std::size_t used = 0;
-    double v = std::stod(text, &used);
-    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument(text);
-    if (v < lo || v > hi) {
-      char range[96];
-      std::snprintf(range, sizeof range, " is out of range %g..%g", lo, hi);
-      throw UsageError(opt + ": " + quoteText(text) + range);
-    }
-    return v;
-  } catch (const UsageError&) {
-    throw;
-  } catch (const std::exception&) {
+  // strtod, not stod: a number too small for a normal double (1e-320) is a number (its
+  // denormal value, then checked against the range), not "expected a number".
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = text.empty() || std::isspace(static_cast<unsigned char>(text[0]))
+                       ? 0.0
+                       : std::strtod(begin, &end);
+  if (end != begin + text.size() || text.empty())
     throw UsageError(opt + ": expected a number, got '" + quoteText(text) + "'");
+  if (errno == ERANGE && std::abs(v) > 1.0)
+    throw UsageError(opt + ": " + quoteText(text, 60) +
+                     " is out of range (beyond +-1.8e308, the largest a double holds)");
+  if (!std::isfinite(v)) throw UsageError(opt + ": " + quoteText(text) + " is not a finite number");
+  if (v < lo || v > hi) {
+    char range[96];
+    std::snprintf(range, sizeof range, " is out of range %g..%g", lo, hi);
+    throw UsageError(opt + ": " + quoteText(text) + range);
   }
+  return v;
 }
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -92,8 +101,10 @@ Light parseLight(const std::string& opt, const std::string& v) {
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
+  // Any float here; Light::validate then names the bounds (kMaxLightPositionM, the cones).
   auto num = [&](std::size_t i, const char* field) {
-    return float(parseDouble(opt + " (" + kind + " " + field + ")", f[i], -1e6, 1e6));
+    const double maxFloat = std::numeric_limits<float>::max();
+    return float(parseDouble(opt + " (" + kind + " " + field + ")", f[i], -maxFloat, maxFloat));
   };
   Light l;
   if (kind == "dir" || kind == "directional") {
@@ -162,155 +173,38 @@ const CameraPath& pickPath(const Scene& scene, const std::string& which) {
                    "' (paths: " + (known.empty() ? "none" : known) + ")");
 }
 
-namespace {
-
-/// The folder a file goes into ("." for a bare name).
-fs::path folderOf(const std::string& path) {
-  fs::path parent = fs::path(path).parent_path();
-  return parent.empty() ? fs::path(".") : parent;
+std::optional<std::string> writeFile(const std::string& path, const std::string& bytes) {
+  return writeFileBytes(path, bytes);
 }
 
-/// The same file for two paths (whether or not they exist yet): symbolic links and ".."
-/// resolved, hard links compared by identity.
-bool sameFile(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  if (fs::equivalent(a, b, ec)) return true;
-  const fs::path ca = fs::weakly_canonical(fs::absolute(a), ec);
-  const fs::path cb = fs::weakly_canonical(fs::absolute(b), ec);
-  return ca == cb;
-}
-
-/// Creates `folder` when missing and checks that it takes a new file (a probe file is
-/// created and removed); an error or nothing.
-std::optional<std::string> probeFolder(const fs::path& folder) {
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec)) {
-    fs::create_directories(folder, ec);
-    if (ec || !fs::is_directory(folder, ec))
-      return "cannot create the folder '" + folder.string() + "' (" +
-             (ec ? ec.message() : std::string("not a folder")) + ")";
-  }
-  const std::string probe = (folder / (".shadowlab-probe-" + std::to_string(getpid()))).string();
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
-  if (fd < 0) {
-    const int err = errno;
-    return "cannot write in the folder '" + folder.string() + "' (" + std::strerror(err) + ")";
-  }
-  ::close(fd);
-  ::unlink(probe.c_str());
-  return std::nullopt;
-}
-
-}  // namespace
-
-std::optional<std::string> writeFile(const std::string& path, const std::string& text) {
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) return path + ": cannot write (" + std::strerror(errno) + ")";
-  bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  int err = ok ? 0 : errno;
-  if (std::fflush(f) != 0 && ok) ok = false, err = errno;
-  if (std::fclose(f) != 0 && ok) ok = false, err = errno;
-  if (!ok) return path + ": cannot write (" + std::strerror(err) + ")";
-  return std::nullopt;
-}
-
-/// True for a FIFO that no process reads now: opening it for writing would block forever.
-bool fifoWithoutReader(const std::string& path) {
-  std::error_code ec;
-  if (fs::status(path, ec).type() != fs::file_type::fifo) return false;
-  const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd >= 0) {
-    ::close(fd);
-    return false;
-  }
-  return errno == ENXIO;
-}
-
-void checkOutputs(const std::vector<OutputFile>& outputs, const std::vector<OutputFile>& inputs) {
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const OutputFile& o = outputs[i];
-    if (o.path.empty()) continue;
-    for (std::size_t k = 0; k < i; ++k)
-      if (!outputs[k].path.empty() && sameFile(outputs[k].path, o.path))
-        throw UsageError(o.option + ": '" + o.path + "' is the same file as " + outputs[k].option +
-                         " (one would overwrite the other)");
-    for (const OutputFile& in : inputs)
-      if (!in.path.empty() && sameFile(in.path, o.path))
-        throw UsageError(o.option + ": '" + o.path + "' is the same file as " + in.option +
-                         " (the input would be overwritten)");
-    std::error_code ec;
-    const fs::file_status st = fs::status(o.path, ec);
-    if (fs::is_directory(st)) throw UsageError(o.option + ": '" + o.path + "' is a folder");
-    if (fs::exists(st) && !fs::is_regular_file(st)) {  // a device or pipe: written in place
-      if (fifoWithoutReader(o.path))
-        throw UsageError(o.option + ": '" + o.path +
-                         "' is a FIFO that nothing reads (writing would wait forever): start "
-                         "its reader first");
-      if (::access(o.path.c_str(), W_OK) != 0)
-        throw UsageError(o.option + ": '" + o.path + "' is not writable (" + std::strerror(errno) +
-                         ")");
-      continue;
-    }
-    if (auto e = probeFolder(folderOf(o.path))) throw UsageError(o.option + ": " + *e);
-  }
+void checkOutputs(const std::vector<OutputFile>& outputs, const std::vector<InputTarget>& inputs) {
+  if (auto e = checkOutputTargets(outputs, inputs)) throw UsageError(*e);
 }
 
 void checkOutputsAgainstScene(const std::vector<OutputFile>& outputs, const Scene& scene) {
   for (const OutputFile& o : outputs)
     for (const std::string& in : scene.inputFiles)
       if (!o.path.empty() && sameFile(in, o.path))
-        throw UsageError(o.option + ": '" + o.path + "' is the same file as '" + in +
+        throw UsageError(o.name + ": '" + o.path + "' is the same file as '" + in +
                          "', which the scene " + scene.name +
                          " loaded (the input would be overwritten)");
 }
 
 void checkOutputFolder(const std::string& option, const std::string& folder) {
-  if (auto e = probeFolder(folder)) throw UsageError(option + ": " + *e);
+  if (auto e = probeOutputFolder(folder)) throw UsageError(option + ": " + *e);
 }
 
-void writeAtomically(const std::string& path,
+void writeAtomically(const OutputFile& target,
                      const std::function<std::optional<std::string>(const std::string&)>& write) {
-  auto fail = [&](std::string why, const std::string& tmp) {
-    // The writer's message names the temporary file: name the real one.
-    for (std::size_t at; !tmp.empty() && (at = why.find(tmp)) != std::string::npos;)
-      why.replace(at, tmp.size(), path);
-    if (why.rfind(path, 0) != 0) why = path + ": " + why;
-    throw std::runtime_error(why);
-  };
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (fs::exists(st) && !fs::is_regular_file(st)) {  // /dev/null, /dev/stdout, a pipe
-    if (fifoWithoutReader(path)) fail("a FIFO that nothing reads any more: not written", "");
-    if (auto e = write(path)) fail(*e, "");
-    return;
-  }
-  const fs::path folder = folderOf(path);
-  fs::create_directories(folder, ec);
-  if (ec) fail("cannot create the folder '" + folder.string() + "' (" + ec.message() + ")", "");
-  static int counter = 0;
-  const fs::path name = fs::path(path).filename();
-  const std::string tmp =
-      (folder / ("." + name.stem().string() + ".tmp" + std::to_string(getpid()) + "-" +
-                 std::to_string(++counter) + name.extension().string()))
-          .string();
-  if (auto e = write(tmp)) {
-    fs::remove(tmp, ec);
-    fail(*e, tmp);
-  }
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    fail("cannot write (" + ec.message() + ")", tmp);
-  }
+  if (auto e = writeOutputAtomically(target, write)) throw std::runtime_error(*e);
 }
 
-void writeText(const std::string& path, const std::string& text) {
-  writeAtomically(path, [&](const std::string& p) { return writeFile(p, text + "\n"); });
+void writeText(const OutputFile& target, const std::string& text) {
+  writeAtomically(target, [&](const std::string& p) { return writeFile(p, text + "\n"); });
 }
 
-void writePng(const std::string& path, const ImageRGBA8& img) {
-  writeAtomically(path, [&](const std::string& p) { return writeImage(p, img); });
+void writePng(const OutputFile& target, const ImageRGBA8& img) {
+  writeAtomically(target, [&](const std::string& p) { return writeImage(p, img); });
 }
 
 std::string formatDuration(double seconds) {

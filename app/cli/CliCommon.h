@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "algo/Camera.h"
+#include "algo/OutputFile.h"
 #include "metrics/Image.h"
 #include "scene/Scene.h"
 
@@ -71,34 +72,47 @@ Camera pickCamera(const Scene& scene, const std::string& which,
 /// scene's paths when there is none such.
 const CameraPath& pickPath(const Scene& scene, const std::string& which);
 
-/// An output file of a command and the option that names it ("--csv").
-struct OutputFile {
-  std::string option, path;
-};
+/// An output file of a command and the option that names it ("--csv"); `userNamed` false for
+/// a file the command names itself in an output folder (algo/OutputFile.h: only a regular
+/// file or none is replaced there). The policy is algo/OutputFile.h's, shared with the GUI.
+using OutputFile = sl::OutputTarget;
 /// Output paths, checked before the work starts so that no result is lost at the end:
 /// UsageError (exit 2) naming the option(s) when two outputs (or an output and one of
-/// `inputs`) are the same file, an output is a folder, or its folder cannot be created or
-/// takes no new file (a probe file is created and removed). Creates missing folders.
+/// `inputs`) are the same file, an output is a folder, a FIFO or device where only a regular
+/// file may be, or its folder cannot be created or takes no new file (a probe file is created
+/// and removed). Creates missing folders.
 void checkOutputs(const std::vector<OutputFile>& outputs,
-                  const std::vector<OutputFile>& inputs = {});
+                  const std::vector<sl::InputTarget>& inputs = {});
 /// After the scene loaded: UsageError naming the option when an output is one of the files
 /// the scene read (its file, buffers and images: Scene::inputFiles).
 void checkOutputsAgainstScene(const std::vector<OutputFile>& outputs, const Scene& scene);
 /// A folder that will receive outputs (compare --out-dir): created, and probed as above.
 void checkOutputFolder(const std::string& option, const std::string& folder);
 
-/// Writes `path` atomically: `write` fills a temporary file in the same folder (same
-/// extension), which is then renamed into place; an existing non-regular file (/dev/null,
-/// /dev/stdout) is written in place. `write` returns an error or nothing. Any failure
-/// throws std::runtime_error (exit 1) naming `path`; no partial file is left behind.
-void writeAtomically(const std::string& path,
+/// Writes `target` atomically (sl::writeOutputAtomically: a temporary file in the same folder,
+/// renamed into place; a device or FIFO the user named written in place). `write` returns an
+/// error or nothing. Any failure throws std::runtime_error (exit 1) naming the path; no
+/// partial file is left behind. A plain path is a file the user named.
+void writeAtomically(const OutputFile& target,
                      const std::function<std::optional<std::string>(const std::string&)>& write);
 /// Writes `bytes` to `path` (created or truncated), every write, flush and close checked; an
 /// error naming `path` ("p: cannot write (No space left on device)") or nothing.
 std::optional<std::string> writeFile(const std::string& path, const std::string& bytes);
 /// Text (plus a newline) and PNG through writeAtomically (parent folders are created).
-void writeText(const std::string& path, const std::string& text);
-void writePng(const std::string& path, const ImageRGBA8& img);
+void writeText(const OutputFile& target, const std::string& text);
+void writePng(const OutputFile& target, const ImageRGBA8& img);
+/// The same for a file the user named (`--csv PATH`).
+inline void writeAtomically(
+    const std::string& path,
+    const std::function<std::optional<std::string>(const std::string&)>& write) {
+  writeAtomically(OutputFile{path, path}, write);
+}
+inline void writeText(const std::string& path, const std::string& text) {
+  writeText(OutputFile{path, path}, text);
+}
+inline void writePng(const std::string& path, const ImageRGBA8& img) {
+  writePng(OutputFile{path, path}, img);
+}
 
 /// Seconds as "m:ss" (or "h:mm:ss").
 std::string formatDuration(double seconds);

@@ -500,7 +500,7 @@ int cmdRender(Args& a) {
     std::error_code ec;
     const fs::file_status st = fs::status(o.path, ec);
     if (o.path.empty() || (fs::exists(st) && !fs::is_regular_file(st))) continue;  // /dev/null
-    if (auto e = sl::checkImageFormat(o.path)) throw UsageError(o.option + ": " + *e);
+    if (auto e = sl::checkImageFormat(o.path)) throw UsageError(o.name + ": " + *e);
   }
   checkOutputs(outputs, {{"--scene", cfg.scene}, {"--preset", cfg.preset}});
   const std::shared_ptr<sl::Scene> scene = loadScene(cfg.scene);
@@ -592,6 +592,15 @@ int cmdCompare(Args& a) {
                          : std::string("compare: ") + sl::ShadowReference::unavailableReason());
   if (!base.wrongPixels.empty())
     throw UsageError("--wrong-pixels: a render option (one configuration), not compare's");
+  // compare's images and errors are the main camera's: an outside view would be ignored.
+  for (const std::string& kv : base.sets) {
+    const auto eq = kv.find('=');
+    if (kv.substr(0, eq) == "view.outside" && eq != std::string::npos &&
+        kv.substr(eq + 1) != "off" && kv.substr(eq + 1) != "0" && kv.substr(eq + 1) != "false")
+      throw UsageError(
+          "--set view.outside: compare writes the main camera's images and errors, "
+          "not the outside view (render --set view.outside=on draws it)");
+  }
   if (base.out.empty()) base.out = "shadowlab-out";
   checkOutputFolder("--out-dir", base.out);
   // The configurations: each --technique ID[:KEY=V1,V2...] expanded (as bench does), or every
@@ -619,8 +628,8 @@ int cmdCompare(Args& a) {
   std::vector<OutputFile> outputs;
   for (const sl::cli::ConfigSpec& spec : specs)
     for (const char* ext : {".png", ".error.png", ".json"})
-      outputs.push_back({"--out-dir (" + spec.label + ")", stemOf(spec.label) + ext});
-  outputs.push_back({"--out-dir (summary)", (fs::path(base.out) / "summary.json").string()});
+      outputs.push_back({"--out-dir (" + spec.label + ")", stemOf(spec.label) + ext, false});
+  outputs.push_back({"--out-dir (summary)", (fs::path(base.out) / "summary.json").string(), false});
   if (!montage.empty()) outputs.push_back({"--montage", montage});
   checkOutputs(outputs, {{"--scene", base.scene}, {"--preset", base.preset}});
   const std::shared_ptr<sl::Scene> scene = loadScene(base.scene);  // once: its warnings once
@@ -691,10 +700,12 @@ int cmdCompare(Args& a) {
     }
     j["configuration"] = spec.label;
     const std::string stem = stemOf(spec.label);
-    writePng(stem + ".png", err.frame.color);
-    writePng(stem + ".error.png",
+    // Files compare names in --out-dir: only regular files are replaced there.
+    auto inOutDir = [](const std::string& path) { return OutputFile{path, path, false}; };
+    writePng(inOutDir(stem + ".png"), err.frame.color);
+    writePng(inOutDir(stem + ".error.png"),
              sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask));
-    writeText(stem + ".json", j.dump(2, ' ', false, json::error_handler_t::replace));
+    writeText(inOutDir(stem + ".json"), j.dump(2, ' ', false, json::error_handler_t::replace));
     summary.push_back(j);
     const double ms = j["total_ms"].get<double>();
     const auto texels = j["texels"].get<std::uint64_t>();
@@ -721,7 +732,8 @@ int cmdCompare(Args& a) {
            sl::makeErrorImage(err.frame.color, err.frame.hardMask, err.referenceMask, dilate)});
     }
   }
-  writeText((fs::path(base.out) / "summary.json").string(),
+  const std::string summaryPath = (fs::path(base.out) / "summary.json").string();
+  writeText(OutputFile{summaryPath, summaryPath, false},
             summary.dump(2, ' ', false, json::error_handler_t::replace));
   std::printf(
       "wrote images (<configuration>.png, <configuration>.error.png) and metrics (*.json, "
@@ -755,10 +767,15 @@ int main(int argc, char** argv) {
   Args a;
   for (int i = 1; i < argc; ++i) a.rest.emplace_back(argv[i]);
   try {
-    if (a.rest.empty() || a.rest[0] == "--help" || a.rest[0] == "-h") {
+    // No command is bad input: one line on stderr, exit 2 (the usage is --help's, on stdout).
+    if (a.rest.empty())
+      throw UsageError(
+          "no command (commands: list, version, render, compare, bench, chart, stability, "
+          "storage, reproduce; shadowlab-cli --help shows the usage)");
+    if (a.rest[0] == "--help" || a.rest[0] == "-h") {
       std::cout << kUsage << kBenchUsage << kChartUsage << kStabilityUsage << kStorageUsage
                 << kReproduceUsage;
-      return a.rest.empty() ? 2 : 0;
+      return 0;
     }
     const std::string& cmd = a.rest[0];
     // `shadowlab-cli COMMAND --help`: that command's usage, exit 0.

@@ -93,6 +93,7 @@ const std::vector<GuiTests::Test>& GuiTests::all() {
       {"omni-probe", "[=DIR]", [](GuiTests& t, const QString& a) { return t.omniProbe(a); }},
       {"session-save", "=FILE", [](GuiTests& t, const QString& a) { return t.sessionSave(a); }},
       {"session-check", "", [](GuiTests& t, const QString&) { return t.sessionCheck(); }},
+      {"output-policy", "=DIR", [](GuiTests& t, const QString& a) { return t.outputPolicy(a); }},
       {"presenter", "[=DIR]", [](GuiTests& t, const QString& a) { return t.presenter(a); }},
       {"split-params", "[=DIR]", [](GuiTests& t, const QString& a) { return t.splitParams(a); }},
       {"lesson-claims", "[=DIR]", [](GuiTests& t, const QString& a) { return t.lessonClaims(a); }},

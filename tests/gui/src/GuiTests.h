@@ -22,6 +22,7 @@
 #include "core/Renderer.h"
 
 class QAction;
+class QTimer;
 
 namespace sl::ui {
 
@@ -101,6 +102,11 @@ class GuiTests : public QObject {
   /// session-check: the same "metric ..." lines for the state the window started in
   /// (tests/gui/session_roundtrip.sh starts it with --open-session FILE and compares).
   bool sessionCheck();
+  /// output-policy=DIR: the window's writers (Save session, Export figure, the image
+  /// exports' writeWindowOutput) refuse the scene's own files in DIR (its glTF, and its
+  /// buffer named viewport.png), a symbolic link to one, a FIFO (at once, not waiting for a
+  /// reader); each leaves the file as it was; a new file is written whole, no temporary left.
+  bool outputPolicy(const QString& dir);
   /// presenter[=DIR] (GuiTestsPresenter.cpp): presenter mode at the screen's size: the
   /// window fits, body text >= 22 px x min(w / 1920, h / 1080), one panel with an image >=
   /// 35 % of the screen's height, the changed overlay's vivid pixels = the renderer's count,
@@ -222,6 +228,9 @@ class GuiTests : public QObject {
   /// The main view's error against the reference, with its per-pixel readback.
   sl::Renderer::ErrorResult measureView();
   void check(bool ok, const QString& what);
+  /// Starts `driver` closing each message box as a user would, its text read into `text`
+  /// first (the caller stops it).
+  void readAndCloseDialogs(QTimer& driver, QString& text);
 
   MainWindow& w_;
   Automation& auto_;

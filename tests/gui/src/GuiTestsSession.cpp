@@ -178,18 +178,22 @@ bool GuiTests::sessionSave(const QString& path) {
   return true;
 }
 
-void GuiTests::badSessionOpen(const QString& path) {
-  const ViewState before = viewState();
-  QString messageText;
-  QTimer driver;  // closes the error dialog as a user would, reading it first
+void GuiTests::readAndCloseDialogs(QTimer& driver, QString& text) {
   driver.setInterval(50);
-  connect(&driver, &QTimer::timeout, this, [&messageText] {
+  connect(&driver, &QTimer::timeout, this, [&text] {
     if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
-      messageText = box->text();
+      text = box->text();
       box->accept();
     }
   });
   driver.start();
+}
+
+void GuiTests::badSessionOpen(const QString& path) {
+  const ViewState before = viewState();
+  QString messageText;
+  QTimer driver;  // closes the error dialog as a user would, reading it first
+  readAndCloseDialogs(driver, messageText);
   w_.statusBar()->clearMessage();
   const bool opened = w_.sessions()->open(path);
   driver.stop();

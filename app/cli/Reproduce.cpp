@@ -2,6 +2,7 @@
 #include "Reproduce.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -103,6 +105,10 @@ Predicate readPredicate(const Reader& r, const json& o, const std::string& path)
   if (p.op == "within") {
     p.tolerance = r.number(o, path, "tolerance");
     if (p.tolerance < 0.0) r.fail(jsonPath(path, "tolerance"), "must not be negative");
+    if (p.tolerance >= kMaxWithinTolerance)
+      r.fail(jsonPath(path, "tolerance"),
+             "must be below " + num(kMaxWithinTolerance) + " (kMaxWithinTolerance: within " +
+                 num(100.0 * kMaxWithinTolerance) + " % of a value admits 0 and its double)");
     if (p.value == 0.0) r.fail(jsonPath(path, "value"), "within needs a non-zero value (relative)");
   } else if (o.contains("tolerance")) {
     r.fail(jsonPath(path, "tolerance"), "only 'within' takes a tolerance");
@@ -184,6 +190,33 @@ bool metricKnown(const std::string& m) {
   return known.count(m) || m.rfind("pass:", 0) == 0 || m.rfind("pass_share:", 0) == 0;
 }
 
+/// Two configurations that render alike: the same technique and every parameter (its own
+/// and the shared ones, defaults included) at the same value.
+bool sameConfiguration(const ConfigSpec& a, const ConfigSpec& b) {
+  if (a.techniqueId != b.techniqueId) return false;
+  const TechniqueInfo* info = findTechniqueInfo(a.techniqueId);
+  if (!info) return false;
+  auto values = [&](const ConfigSpec& c) {
+    ParamSet own(info->params), shared(rendererParamDecls());
+    for (const auto& [k, v] : c.sets) (own.has(k) ? own : shared).setFromString(k, v);
+    std::map<std::string, std::string> out;
+    for (const ParamSet* set : {&own, &shared})
+      for (const ParamDecl& d : set->decls()) out[d.key] = set->format(d.key);
+    return out;
+  };
+  return values(a) == values(b);
+}
+
+/// A value that compares consecutive frames (flicker, changes) needs two of them in both runs.
+void requireTwoFrames(const Reader& r, const Measurement& m, const std::string& path,
+                      const std::string& what) {
+  for (const auto& [name, size] : {std::pair{"full", m.full}, std::pair{"quick", m.quick}})
+    if (size.frames < 2)
+      r.fail(jsonPath(path, name), what + " compares consecutive frames: the " + name +
+                                       " run has " + std::to_string(size.frames) +
+                                       " frame, at least 2 are needed");
+}
+
 Measurement readMeasurement(const Reader& r, const json& o, const std::string& path,
                             const RunSize& fullDefault, const RunSize& quickDefault) {
   r.keys(o, path,
@@ -211,6 +244,9 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
         m.value != "part_s_spread" && m.value != "imbalance" && m.value.rfind("split:", 0) != 0)
       r.fail(jsonPath(path, "value"),
              "expected s, mx, mz, imbalance, parts, part_s_spread or split:I");
+    if (m.storageA == m.storageB)
+      r.fail(jsonPath(path, "storage_b"),
+             "the same arguments as storage: a comparison with itself measures nothing");
     for (const auto* args : {&m.storageA, &m.storageB}) {
       if (args->empty()) continue;
       try {
@@ -262,6 +298,7 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
       r.fail(jsonPath(path, "statistic"), "expected median, min, max, final or changes");
     if (m.configs.size() != 1)
       r.fail(jsonPath(path, "b"), "a publication measures one configuration");
+    if (m.statistic == "changes") requireTwoFrames(r, m, path, "changes");
     const TechniqueInfo* info = findTechniqueInfo(m.configs[0].techniqueId);
     bool published = false;
     for (const PublicationDecl& d : info->publications) {
@@ -288,6 +325,10 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
                "' (error_pct, false_lit_pct, false_shadow_pct, aliasing_mean, aliasing_p95, "
                "aliasing_max, flicker_pct, total_ms, shadow_ms, bytes, texels, pass:NAME, "
                "pass_share:NAME)");
+  if (m.configs.size() == 2 && sameConfiguration(m.configs[0], m.configs[1]))
+    r.fail(jsonPath(path, "b"), "the same configuration as a (" + m.configs[0].label +
+                                    "): a comparison with itself measures nothing");
+  if (m.metric == "flicker_pct") requireTwoFrames(r, m, path, "flicker_pct");
   m.combine = r.str(o, path, "combine", false, m.configs.size() == 2 ? "ratio" : "a");
   if (m.combine != "ratio" && m.combine != "difference" && m.combine != "a")
     r.fail(jsonPath(path, "combine"), "expected ratio, difference or a");
@@ -416,7 +457,10 @@ MeasuredValue measureRendered(const std::string& id, const Measurement& m, bool 
   for (std::size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i])) {
       out.why = m.configs[i].label + ": " + m.metric + " not measured (" +
-                (m.metric.rfind("pass", 0) == 0 ? "no such pass" : "no covered pixel") + ")";
+                (m.metric.rfind("pass", 0) == 0 ? "no such pass"
+                 : m.metric == "flicker_pct"    ? "no pixel covered in two consecutive frames"
+                                                : "no covered pixel") +
+                ")";
       return out;
     }
   double value = values[0];
@@ -523,8 +567,14 @@ MeasuredValue measure(const std::string& id, const Measurement& m, bool quick,
   }
 }
 
+/// `s` as one word of a POSIX shell: as is when every character is one no shell treats
+/// specially (letters, digits and _@%+=:,./-), else in single quotes (a quote inside as '\'').
 std::string shellQuote(const std::string& s) {
-  if (s.find_first_of(" '\"$;&|<>()*?") == std::string::npos && !s.empty()) return s;
+  const bool plain = !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) ||
+           std::string_view("_@%+=:,./-").find(c) != std::string_view::npos;
+  });
+  if (plain) return s;
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
@@ -565,7 +615,8 @@ std::vector<std::string> commandsFor(const std::string& id, const Measurement& m
     out.push_back(c);
   } else {
     for (const ConfigSpec& cfg : m.configs) {
-      std::string c = "shadowlab-cli render" + where + " --technique " + cfg.techniqueId;
+      std::string c =
+          "shadowlab-cli render" + where + " --technique " + shellQuote(cfg.techniqueId);
       for (const auto& [k, v] : cfg.sets) c += " --set " + shellQuote(k + "=" + v);
       c += " --size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
            " --frames " + std::to_string(size.frames) + " --out " + id + ".png --metrics " + id +
@@ -634,6 +685,11 @@ std::vector<Claim> loadClaims(const fs::path& file) {
     if (claim.id.empty() || claim.id.size() > 64 ||
         claim.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
       r.fail(jsonPath(path, "id"), "expected 1..64 of a-z, 0-9 and '-'");
+    for (std::size_t k = 0; k < out.size(); ++k)
+      if (out[k].id == claim.id)
+        r.fail(jsonPath(path, "id"), "'" + claim.id + "' is also the id of " +
+                                         jsonPath("claims", k) +
+                                         " (ids name the report's sections and figures)");
     claim.words = r.str(c, path, "words", true);
     claim.paperNumber = r.str(c, path, "paper_number", true);
     claim.note = r.str(c, path, "note", false);
@@ -774,6 +830,31 @@ std::string reportMarkdown(const std::vector<Claim>& claims,
   return md.str();
 }
 
+/// The report's files against the claims read (algo/OutputFile.h), before any claim runs: the
+/// claims folder is not --out (report.json would be read as claims the next time) and no
+/// file the report writes is a claims file.
+void checkReproduceOutputs(const std::string& out, const fs::path& source,
+                           const std::vector<Claim>& claims) {
+  std::error_code ec;
+  if (fs::is_directory(source, ec) && sameFile(source.string(), out))
+    throw UsageError("--out: '" + out + "' is the claims folder (" + source.string() +
+                     "): report.json would be read as claims; give another folder");
+  std::vector<InputTarget> inputs;
+  std::set<std::string> files;
+  for (const Claim& c : claims) files.insert(c.file);
+  for (const std::string& f : files) inputs.push_back({"--claims (" + f + ")", f});
+  const fs::path dir(out);
+  std::vector<OutputFile> outputs;
+  for (const char* name : {"REPORT.md", "report.json"})
+    outputs.push_back({"--out (" + std::string(name) + ")", (dir / name).string(), false});
+  for (const Claim& c : claims)
+    for (const char* suffix :
+         {"", "-mechanism", "-eta", "-hemisphere", "-mechanism-eta", "-mechanism-hemisphere"})
+      outputs.push_back(
+          {"--out (" + c.id + suffix + ".png)", (dir / figureName(c.id, suffix)).string(), false});
+  checkOutputs(outputs, inputs);
+}
+
 int cmdReproduce(Args& a) {
   std::string out, claimsPath;
   bool quick = false;
@@ -810,8 +891,7 @@ int cmdReproduce(Args& a) {
       throw UsageError("--claim: no claim '" + id + "' (in " + source.string() +
                        (seeds.empty() ? "" : " for the seeds given") + ")");
   if (claims.empty()) throw UsageError("--seed: no claim for the seeds given");
-  checkOutputFolder("--out", out);
-  checkOutputFolder("--out", (fs::path(out) / "figures").string());
+  checkReproduceOutputs(out, source, claims);
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<ClaimOutcome> outcomes;
@@ -831,7 +911,8 @@ int cmdReproduce(Args& a) {
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writeText((fs::path(out) / "REPORT.md").string(),
+  const std::string reportMd = (fs::path(out) / "REPORT.md").string();
+  writeText(OutputFile{reportMd, reportMd, false},
             reportMarkdown(claims, outcomes, quick, glDescription, seconds));
   json j = json::array();
   for (std::size_t i = 0; i < claims.size(); ++i) {
@@ -853,16 +934,17 @@ int cmdReproduce(Args& a) {
     e["seconds"] = o.seconds;
     j.push_back(e);
   }
-  writeText((fs::path(out) / "report.json").string(),
+  const std::string reportJson = (fs::path(out) / "report.json").string();
+  writeText(OutputFile{reportJson, reportJson, false},
             j.dump(2, ' ', false, json::error_handler_t::replace));
   std::map<std::string, int> count;
   for (const ClaimOutcome& o : outcomes) ++count[o.verdict];
   std::printf(
       "%zu claims: %d reproduced, %d partly, %d not reproduced, %d not measured (%s) -> %s\n",
       claims.size(), count["reproduced"], count["partly"], count["not reproduced"],
-      count["not measured"], formatDuration(seconds).c_str(),
-      (fs::path(out) / "REPORT.md").string().c_str());
-  return 0;
+      count["not measured"], formatDuration(seconds).c_str(), reportMd.c_str());
+  // A claim that could not be measured is a failed run, not a verdict (exit 1).
+  return count["not measured"] > 0 ? 1 : 0;
 }
 
 }  // namespace sl::cli

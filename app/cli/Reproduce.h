@@ -19,6 +19,10 @@ namespace sl::cli {
 inline constexpr const char* kMeasurementKinds[] = {"error-compare", "time-ratio", "memory-ratio",
                                                     "publication", "cpu"};
 
+/// The largest relative tolerance of "within" (exclusive): within 100 % of a value admits 0 and
+/// twice the value, which no claim means.
+inline constexpr double kMaxWithinTolerance = 1.0;
+
 /// A claim's predicate on the measured value: "<=", ">=", "<", ">" against `value`, or
 /// "within": |measured / value − 1| <= tolerance.
 struct Predicate {

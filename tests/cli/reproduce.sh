@@ -3,14 +3,20 @@
 # The report's structure: at least 25 claims from all five papers, each with the paper's
 # words, its number, a measurement (or why not), a verdict of the four, a threshold and the
 # commands that re-run it; report.json agrees with REPORT.md and every figure it names exists.
-# Bad claims files: exit 2, one line naming the file and the JSON path.
+# Bad claims files: exit 2, one line naming the file and the JSON path; a claim that could not be
+# measured exits 1; the report's commands are shell-quoted (a pasted command runs nothing else).
 set -uo pipefail
 cli=$1 out=$3/reproduce
 rm -rf "$out"
 mkdir -p "$out"
 fail=0
-if ! timeout 600 "$cli" reproduce --quick --out "$out/q" >"$out/stdout.txt" 2>"$out/stderr.txt"; then
-  echo "FAIL: reproduce --quick exited $?"; tail -5 "$out/stderr.txt"; exit 1
+rc=0
+timeout 600 "$cli" reproduce --quick --out "$out/q" >"$out/stdout.txt" 2>"$out/stderr.txt" || rc=$?
+# Exit 1 exactly when a claim could not be measured (0 otherwise).
+want=0
+grep -q '"verdict": "not measured"' "$out/q/report.json" 2>/dev/null && want=1
+if [ $rc -ne $want ]; then
+  echo "FAIL: reproduce --quick exited $rc, expected $want"; tail -5 "$out/stderr.txt"; exit 1
 fi
 tail -1 "$out/stdout.txt"
 python3 - "$out/q" <<'PY' || fail=1
@@ -72,6 +78,40 @@ bad param "claims[0].measure.a: technique 'uniform' has no parameter 'resolutoin
 bad storage "claims[0].measure.storage: --scheme: unknown 'fast'" "$head\"measure\": {\"kind\": \"cpu\", \"storage\": [\"--scheme\", \"fast\"], \"value\": \"s\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
 bad json "not valid JSON" "$head"
 bad camera "claims[0].measure.camera: missing (a publication is measured from a still camera)" "$head\"measure\": {\"kind\": \"publication\", \"scene\": \"diagonal\", \"a\": {\"technique\": \"da-rtw\"}, \"number\": \"rotation.deg\", \"statistic\": \"max\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
+# A claim that could not be measured (a pass no technique times) and a scene name that is a
+# command: exit 1, "not measured", and the report's commands quoted.
+cat >"$out/unmeasured.json" <<'JSON'
+{"seed": "004", "source": "t", "claims": [
+ {"id": "no-pass", "words": "w", "paper_number": "1",
+  "measure": {"kind": "time-ratio", "scene": "plane-box", "metric": "pass:nothing",
+              "a": {"technique": "uniform"}, "b": {"technique": "uniform", "params": {"resolution": "512"}},
+              "quick": {"size": "64x36", "frames": 2, "warmup": 0}},
+  "expect": {"op": "<", "value": 1}},
+ {"id": "quoted", "words": "w", "paper_number": "1",
+  "measure": {"kind": "error-compare", "scene": "`touch INJECTED`x",
+              "a": {"technique": "uniform"}, "quick": {"size": "64x36", "frames": 2, "warmup": 0}},
+  "expect": {"op": "<", "value": 1}}]}
+JSON
+rc=0
+"$cli" reproduce --quick --claims "$out/unmeasured.json" --out "$out/unmeasured" >/dev/null 2>&1 || rc=$?
+[ $rc -eq 1 ] || { echo "FAIL: a claim not measured: exit $rc, expected 1"; fail=1; }
+mkdir -p "$out/paste"
+python3 - "$out/unmeasured/report.json" "$out/paste" <<'PY' || fail=1
+import json, os, subprocess, sys
+rep, sandbox = json.load(open(sys.argv[1])), sys.argv[2]
+assert [e["verdict"] for e in rep] == ["not measured", "not measured"], [e["verdict"] for e in rep]
+scene = "`touch INJECTED`x"
+for e in rep:
+    for cmd in e["commands"]:
+        assert cmd.startswith("shadowlab-cli "), cmd
+        # Pasted into a shell: the words it gives, and nothing run.
+        words = subprocess.run(["bash", "-c", "printf '%s\n' " + cmd[len("shadowlab-cli "):]],
+                               cwd=sandbox, capture_output=True, text=True).stdout.splitlines()
+        if e["id"] == "quoted" and "--scene" in words:
+            assert words[words.index("--scene") + 1] == scene, words
+assert not os.listdir(sandbox), f"a pasted command ran: {os.listdir(sandbox)}"
+print("ok: not measured exits 1; pasted commands give the claim's words and run nothing")
+PY
 "$cli" reproduce --seed 005 --out "$out/bad" >/dev/null 2>"$out/seed.err"
 [ $? -eq 2 ] && grep -q -- '--seed: expected 000' "$out/seed.err" || { echo "FAIL: --seed 005"; fail=1; }
 [ $fail -eq 0 ] && echo "ok: reproduce"

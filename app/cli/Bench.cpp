@@ -11,6 +11,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -158,6 +159,21 @@ std::string count(double v) {
   return std::isfinite(v) ? std::to_string(std::uint64_t(v)) : std::string();
 }
 
+/// `--chart-y log` with a measured error of 0 (a log axis has no 0): "--chart-y log: TECHNIQUE
+/// PARAMS measured error_pct 0, which a log axis cannot show (...)"; else nothing.
+std::optional<std::string> logAxisProblem(const std::vector<ChartRow>& rows,
+                                          const std::string& chartY) {
+  if (chartY != "log") return std::nullopt;
+  for (const ChartRow& r : rows) {
+    if (r.errorPct > 0.0) continue;
+    std::string label = r.technique;
+    for (const auto& [k, v] : r.params) label += " " + k + "=" + v;
+    return "--chart-y log: " + cutText(label, 120) +
+           " measured error_pct 0, which a log axis cannot show (use --chart-y auto or linear)";
+  }
+  return std::nullopt;
+}
+
 /// Point labels: per technique, the values of the parameters that vary between its rows
 /// (all its parameters when it has one row); the legend names those parameters.
 void writeChart(const std::vector<ChartRow>& rows, ChartSpec spec, const std::string& png) {
@@ -243,6 +259,7 @@ int cmdChart(Args& a) {
     throw UsageError("--chart-y: expected auto, linear or log, got '" + chartY + "'");
   checkOutputs({{"--chart", png}}, {{"--csv", csvPath}});
   ChartCsv csv = readChartCsv(csvPath, chartX);
+  if (auto e = logAxisProblem(csv.rows, chartY)) throw UsageError(*e);  // before any drawing
   csv.spec.yScale = chartY;
   writeChart(csv.rows, csv.spec, png);
   return 0;
@@ -393,11 +410,17 @@ int cmdBench(Args& a) {
       std::printf("%-34s failed: %s\n", configs[i].label.c_str(), s.failure.c_str());
       continue;
     }
-    char error[32] = "n/a";
-    if (std::isfinite(s.errorPct)) std::snprintf(error, sizeof error, "%.3f", s.errorPct);
-    std::printf("%-34s %9.2f %9.3f %9s %9.3f %9.3f %9.4f %9s\n", configs[i].label.c_str(),
-                s.totalMs, s.bytes / (1024.0 * 1024.0), error, s.aliasingMean, s.aliasingP95,
-                s.flickerPct, front);
+    // Not measured (no covered pixel, one frame): n/a, never a number.
+    auto cell = [](double v, const char* format) {
+      if (!std::isfinite(v)) return std::string("n/a");
+      char buf[32];
+      std::snprintf(buf, sizeof buf, format, v);
+      return std::string(buf);
+    };
+    std::printf("%-34s %9.2f %9.3f %9s %9s %9s %9s %9s\n", configs[i].label.c_str(), s.totalMs,
+                s.bytes / (1024.0 * 1024.0), cell(s.errorPct, "%.3f").c_str(),
+                cell(s.aliasingMean, "%.3f").c_str(), cell(s.aliasingP95, "%.3f").c_str(),
+                cell(s.flickerPct, "%.4f").c_str(), front);
   }
   std::printf("medians over %d frames (%s, %dx%d, timing %s, %d reference evaluations) -> %s\n",
               cfg.frames, cameraText.c_str(), cfg.width, cfg.height, timingMethod.c_str(),
@@ -420,6 +443,9 @@ int cmdBench(Args& a) {
                         : std::string()) +
           "no covered pixel in any frame); the CSV is written");
     }
+    // Measured, so exit 1 (the CSV is written); `chart --csv` refuses it up front.
+    if (auto e = logAxisProblem(rows, cfg.chartY))
+      throw std::runtime_error(cfg.chart + ": not written: " + *e + "; the CSV is written");
     ChartSpec spec;
     spec.yScale = cfg.chartY;
     spec.x = cfg.chartX;

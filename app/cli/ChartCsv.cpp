@@ -80,6 +80,8 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
   auto gl = std::find(header.begin(), header.end(), "gl");
   // A failed configuration (bench wrote its failure; older CSVs have no such column).
   auto failureColumn = std::find(header.begin(), header.end(), "failure");
+  // The pixels the error is over (bench's column; older CSVs have none): 0 is no measurement.
+  auto coveredColumn = std::find(header.begin(), header.end(), "covered_pixels");
   std::vector<ChartRow> rows;
   std::vector<std::string> first;
   std::size_t unmeasured = 0;  // rows with an empty error_pct (no covered pixel)
@@ -128,8 +130,14 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
       // drew them anyway, at a negative time or 150 % error).
       r.totalMs = parseDouble("total_ms", f[cMs], 0, 1e300);
       r.bytes = parseDouble("bytes", f[cBytes], 0, 1e300);
-      // An empty error cell: bench measured nothing (no covered pixel); not plotted.
-      if (f[cErr].empty()) {
+      // An empty error cell, or an error over no covered pixel: nothing was measured; not
+      // plotted (never a perfect 0 on the Pareto front).
+      const bool noPixel =
+          coveredColumn != header.end() &&
+          !f[std::size_t(coveredColumn - header.begin())].empty() &&
+          parseDouble("covered_pixels", f[std::size_t(coveredColumn - header.begin())], 0, 1e300) ==
+              0.0;
+      if (f[cErr].empty() || noPixel) {
         ++unmeasured;
         continue;
       }

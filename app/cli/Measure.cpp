@@ -283,11 +283,15 @@ ConfigSummary summarise(const std::vector<FrameSample>& all) {
     s.lightAreaM2 = s.halfMassX = s.halfMassY = s.rotationDeg = s.anisotropy = nan;
     return s;
   }
-  auto med = [&](auto get) {
+  // A value over the frames that measured it (`measured`); none: NaN (not measured, an empty
+  // cell), never 0.
+  auto medOver = [&](auto measured, auto get) {
     std::vector<double> v;
-    for (const FrameSample& f : frames) v.push_back(double(get(f)));
-    return median(v);
+    for (const FrameSample& f : frames)
+      if (measured(f)) v.push_back(double(get(f)));
+    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
   };
+  auto med = [&](auto get) { return medOver([](const FrameSample&) { return true; }, get); };
   s.totalMs = med([](const FrameSample& f) { return f.totalMs; });
   std::map<std::string, std::vector<double>> passes;
   for (const FrameSample& f : frames)
@@ -296,29 +300,25 @@ ConfigSummary summarise(const std::vector<FrameSample>& all) {
   s.timingMethod = frames.back().timingMethod;
   s.texels = med([](const FrameSample& f) { return f.texels; });
   s.bytes = med([](const FrameSample& f) { return f.bytes; });
-  // The error is measured only on frames with a covered pixel; none: NaN (an empty cell).
-  auto medMeasured = [&](auto get) {
-    std::vector<double> v;
-    for (const FrameSample& f : frames)
-      if (f.error.covered > 0) v.push_back(double(get(f)));
-    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
-  };
-  s.errorPct = medMeasured([](const FrameSample& f) { return f.error.errorPct; });
-  s.falseLitPct = medMeasured([](const FrameSample& f) { return f.error.falseLitPct; });
-  s.falseShadowPct = medMeasured([](const FrameSample& f) { return f.error.falseShadowPct; });
-  s.covered = med([](const FrameSample& f) { return f.error.covered; });
-  s.aliasingMean = med([](const FrameSample& f) { return f.aliasing.mean; });
-  s.aliasingP95 = med([](const FrameSample& f) { return f.aliasing.p95; });
-  s.aliasingMax = med([](const FrameSample& f) { return f.aliasing.max; });
-  std::vector<double> flicker;
-  for (const FrameSample& f : frames)
-    if (f.flicker) flicker.push_back(f.flicker->pct);
-  s.flickerPct = median(flicker);
+  // The error over the frames with a covered pixel; covered over the same frames, so it is 0
+  // exactly when the error was measured on none.
+  auto hasCovered = [](const FrameSample& f) { return f.error.covered > 0; };
+  s.errorPct = medOver(hasCovered, [](const FrameSample& f) { return f.error.errorPct; });
+  s.falseLitPct = medOver(hasCovered, [](const FrameSample& f) { return f.error.falseLitPct; });
+  s.falseShadowPct =
+      medOver(hasCovered, [](const FrameSample& f) { return f.error.falseShadowPct; });
+  s.covered = medOver(hasCovered, [](const FrameSample& f) { return f.error.covered; });
+  if (!std::isfinite(s.covered)) s.covered = 0.0;
+  // Aliasing over the frames with a pixel to summarise, flicker over the consecutive frames
+  // that compared one.
+  auto hasAliasing = [](const FrameSample& f) { return f.aliasing.pixels > 0; };
+  s.aliasingMean = medOver(hasAliasing, [](const FrameSample& f) { return f.aliasing.mean; });
+  s.aliasingP95 = medOver(hasAliasing, [](const FrameSample& f) { return f.aliasing.p95; });
+  s.aliasingMax = medOver(hasAliasing, [](const FrameSample& f) { return f.aliasing.max; });
+  s.flickerPct = medOver([](const FrameSample& f) { return f.flicker && f.flicker->compared > 0; },
+                         [](const FrameSample& f) { return f.flicker->pct; });
   auto medPublished = [&](auto get) {
-    std::vector<double> v;
-    for (const FrameSample& f : frames)
-      if (std::isfinite(get(f))) v.push_back(get(f));
-    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median(v);
+    return medOver([&](const FrameSample& f) { return std::isfinite(get(f)); }, get);
   };
   s.lightAreaM2 = medPublished([](const FrameSample& f) { return f.lightAreaM2; });
   s.halfMassX = medPublished([](const FrameSample& f) { return f.halfMassX; });

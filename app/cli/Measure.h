@@ -150,8 +150,12 @@ struct ConfigSummary {
   std::map<std::string, double> passMs;
   std::string timingMethod;
   double texels = 0, bytes = 0;
+  /// Over the frames with a covered pixel; NaN (not measured) when none had one. `covered`
+  /// is the median over the same frames: 0 exactly when the error was measured on none.
   double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
+  /// m over the frames with a covered pixel that has a shadow-map coordinate; NaN when none.
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
+  /// Over the consecutive frames that compared a covered pixel; NaN when none (one frame).
   double flickerPct = 0;
   double lightAreaM2 = 0, halfMassX = 0, halfMassY = 0;  ///< NaN when not published
   double rotationDeg = 0;  ///< DA-RTW's image-plane angle R (NaN without a rotation)

@@ -46,7 +46,7 @@ int runSingle(Args& a) {
     else if (o == "--warmup")
       warmup = parseInt(o, a.take(i, o), 0, 100000);
     else if (o == "--orbit")
-      orbit = parseDouble(o, a.take(i, o), -180.0, 180.0);
+      orbit = parseDouble(o, a.take(i, o), -kMaxOrbitDegPerFrame, kMaxOrbitDegPerFrame);
     else if (o == "--camera")
       camera = a.take(i, o);
     else if (o == "--light")
@@ -63,6 +63,10 @@ int runSingle(Args& a) {
   if (sceneName.empty()) throw UsageError("--scene: missing (which scene)");
   if (technique.empty()) throw UsageError("--technique: missing (which technique)");
   if (jsonPath.empty()) throw UsageError("--json: missing (where to write the frames)");
+  if (warmup >= frames)
+    throw UsageError("--warmup: " + std::to_string(warmup) + " of --frames " +
+                     std::to_string(frames) +
+                     " leaves no frame to measure (warm-up frames are not counted)");
   checkOutputs({{"--json", jsonPath}}, {{"--scene", sceneName}});
 
   ConfigSpec spec;
@@ -125,14 +129,23 @@ int runSingle(Args& a) {
   j["summary"] = summaryJson(sum);
   if (withReference) j["reference_evaluations"] = referenceEvaluations;
   writeText(jsonPath, j.dump(2, ' ', false, json::error_handler_t::replace));
-  std::printf(
-      "%s on %s, %d frames%s: rotation_changes %d (max step %.4g deg, last at frame %d), "
-      "mask_change_frames %d (max %.4g%%, last at frame %d)%s -> %s\n",
-      spec.label.c_str(), scene->name.c_str(), frames,
-      orbit != 0.0 ? (", orbit " + fmt(orbit) + " deg/frame").c_str() : " (static)",
-      sum.rotationChanges, sum.maxRotationStepDeg, sum.lastRotationChangeFrame,
-      sum.maskChangeFrames, sum.maxMaskChangedPct, sum.lastMaskChangeFrame,
-      sum.hasRotation ? "" : " [no rotation: reported as 0 deg, e_x 1, held]", jsonPath.c_str());
+  // Changes between frames: "n/a (fewer than 2 frames ...)" when nothing was compared.
+  const std::string rotation =
+      sum.rotationStepsMeasured
+          ? std::to_string(sum.rotationChanges) + " (max step " + fmt(sum.maxRotationStepDeg) +
+                " deg, last at frame " + std::to_string(sum.lastRotationChangeFrame) + ")"
+          : "n/a (" + StabilitySummary::notMeasuredReason("rotation_changes") + ")";
+  const std::string mask =
+      sum.maskChangesMeasured
+          ? std::to_string(sum.maskChangeFrames) + " (max " + fmt(sum.maxMaskChangedPct) +
+                "%, last at frame " + std::to_string(sum.lastMaskChangeFrame) + ")"
+          : "n/a (" + StabilitySummary::notMeasuredReason("mask_change_frames") + ")";
+  std::printf("%s on %s, %d frames%s: rotation_changes %s, mask_change_frames %s%s -> %s\n",
+              spec.label.c_str(), scene->name.c_str(), frames,
+              orbit != 0.0 ? (", orbit " + fmt(orbit) + " deg/frame").c_str() : " (static)",
+              rotation.c_str(), mask.c_str(),
+              sum.hasRotation ? "" : " [no rotation: reported as 0 deg, e_x 1, held]",
+              jsonPath.c_str());
   if (sum.failed())
     std::fprintf(stderr, "shadowlab-cli: %s: %d of %d frames failed (not measured), first %s\n",
                  spec.label.c_str(), sum.renderErrors, frames, sum.failure.c_str());

@@ -56,17 +56,23 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
     s.glErrors += int(f.glErrors.size());
     if (f.failed()) continue;
     ++renderedFrames;
-    const double step = std::abs(frames[k].rotationStepDeg);
-    if (step > kRotationEpsDeg) {
-      ++s.rotationChanges;
-      s.lastRotationChangeFrame = int(k);
+    if (frames[k].stepMeasured) {
+      s.rotationStepsMeasured = true;
+      const double step = std::abs(frames[k].rotationStepDeg);
+      if (step > kRotationEpsDeg) {
+        ++s.rotationChanges;
+        s.lastRotationChangeFrame = int(k);
+      }
+      s.maxRotationStepDeg = std::max(s.maxRotationStepDeg, step);
     }
-    s.maxRotationStepDeg = std::max(s.maxRotationStepDeg, step);
-    if (f.maskChange && f.maskChange->changed > 0) {
-      ++s.maskChangeFrames;
-      s.lastMaskChangeFrame = int(k);
+    if (f.maskChange) {
+      s.maskChangesMeasured = true;
+      if (f.maskChange->changed > 0) {
+        ++s.maskChangeFrames;
+        s.lastMaskChangeFrame = int(k);
+      }
+      s.maxMaskChangedPct = std::max(s.maxMaskChangedPct, f.maskChange->pct);
     }
-    if (f.maskChange) s.maxMaskChangedPct = std::max(s.maxMaskChangedPct, f.maskChange->pct);
     if (f.hasReference) {
       ++referenceFrames;
       cov.push_back(double(f.error.covered));
@@ -77,10 +83,12 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
       fl.push_back(f.error.falseLitPct);
       fs.push_back(f.error.falseShadowPct);
     }
-    am.push_back(f.aliasing.mean);
-    ap.push_back(f.aliasing.p95);
-    ax.push_back(f.aliasing.max);
-    if (f.flicker) flick.push_back(f.flicker->pct);
+    if (f.aliasing.pixels > 0) {  // no covered pixel with a shadow-map coordinate: none
+      am.push_back(f.aliasing.mean);
+      ap.push_back(f.aliasing.p95);
+      ax.push_back(f.aliasing.max);
+    }
+    if (f.flicker && f.flicker->compared > 0) flick.push_back(f.flicker->pct);
     ms.push_back(f.totalMs);
     s.nonFiniteNumbers += int(f.nonFiniteNumbers.size());
   }
@@ -94,10 +102,16 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
     s.falseShadowPct = median(fs);
   }
   s.covered = median(cov);
-  s.aliasingMean = median(am);
-  s.aliasingP95 = median(ap);
-  s.aliasingMax = median(ax);
-  s.flickerPct = median(flick);
+  // Not measured (NaN), never 0: aliasing without a pixel to summarise, flicker without two
+  // consecutive frames compared against the reference.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto medianOrNan = [&](const std::vector<double>& v) { return v.empty() ? nan : median(v); };
+  s.aliasingMean = medianOrNan(am);
+  s.aliasingP95 = medianOrNan(ap);
+  s.aliasingMax = medianOrNan(ax);
+  s.flickerPct = medianOrNan(flick);
+  s.flickerPctMean = flick.empty() ? nan : 0.0;
+  s.flickerPctMax = flick.empty() ? nan : 0.0;
   for (double v : flick) s.flickerPctMean += v / double(flick.size());
   for (double v : flick) s.flickerPctMax = std::max(s.flickerPctMax, v);
   s.totalMs = median(ms);
@@ -137,13 +151,12 @@ std::vector<std::vector<StabilityFrame>> runFrames(
       StabilityFrame fr;
       fr.sample = runners[i]->renderAndMeasure(cameras[f], opts, reference);
       // The rotation step is from the last frame that rendered; a failed frame has none.
-      double previous = 0.0;
-      for (auto it = out[i].rbegin(); it != out[i].rend(); ++it)
+      for (auto it = out[i].rbegin(); it != out[i].rend() && !fr.sample.failed(); ++it)
         if (!it->sample.failed()) {
-          previous = it->sample.rotationDeg;
+          fr.rotationStepDeg = angleStepDeg(it->sample.rotationDeg, fr.sample.rotationDeg);
+          fr.stepMeasured = true;
           break;
         }
-      if (!fr.sample.failed()) fr.rotationStepDeg = angleStepDeg(previous, fr.sample.rotationDeg);
       out[i].push_back(std::move(fr));
       progress.step("frame " + std::to_string(f + 1) + "/" + std::to_string(cameras.size()) + "  " +
                         runners[i]->spec().label,
@@ -162,15 +175,15 @@ json frameJson(std::size_t k, const StabilityFrame& fr) {
   }
   json j = {{"frame", k},
             {"rotation_deg", s.rotationDeg},
-            {"rotation_step_deg", fr.rotationStepDeg},
+            {"rotation_step_deg", fr.stepMeasured ? json(fr.rotationStepDeg) : json(nullptr)},
             {"e_x", s.ex},
             {"held", s.held},
-            {"mask_changed_pct", s.maskChange ? s.maskChange->pct : 0.0},
-            {"mask_changed_pixels", s.maskChange ? s.maskChange->changed : 0},
+            {"mask_changed_pct", s.maskChange ? json(s.maskChange->pct) : json(nullptr)},
+            {"mask_changed_pixels", s.maskChange ? json(s.maskChange->changed) : json(nullptr)},
             {"total_ms", s.totalMs}};
   if (s.hasReference) {
     j["error_pct"] = s.error.covered > 0 ? json(s.error.errorPct) : json(nullptr);
-    j["flicker_pct"] = s.flicker ? s.flicker->pct : 0.0;
+    j["flicker_pct"] = s.flicker && s.flicker->compared > 0 ? json(s.flicker->pct) : json(nullptr);
   }
   if (!s.renderError.empty()) j["render_error"] = s.renderError;
   if (!s.glErrors.empty()) j["gl_errors"] = s.glErrors;

@@ -3,6 +3,7 @@
 // suite's expectations use. See Stability.cpp and Suite.cpp.
 #pragma once
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -17,6 +18,10 @@
 
 namespace sl::cli {
 
+/// The largest orbit a frame (degrees, either way): `stability --orbit` and a suite's
+/// `orbit_deg_per_frame`. A larger step is the same view as a smaller one the other way.
+inline constexpr double kMaxOrbitDegPerFrame = 180.0;
+
 /// Signed smallest difference of two angles in degrees, in [-180, 180).
 double angleStepDeg(double from, double to);
 /// A camera orbiting the point it looks at on the ground (y = scene floor), so a slow
@@ -29,6 +34,7 @@ std::string fmt(double v);
 struct StabilityFrame {
   FrameSample sample;
   double rotationStepDeg = 0.0;  ///< change of rotation_deg since the previous frame
+  bool stepMeasured = false;     ///< a previous frame rendered (the first has no step)
 };
 
 /// Aggregates of one configuration over the counted frames (index >= warmup).
@@ -49,15 +55,24 @@ struct StabilitySummary {
   double totalMsMax = 0;                                     ///< the worst frame
   int renderErrors = 0, glErrors = 0, nonFiniteNumbers = 0;  ///< failed frames: all of them
   bool hasRotation = false;
+  /// Whether a counted frame had a previous frame to compare with: without one (fewer than
+  /// two frames) the rotation steps and mask changes are not measured (NaN in metrics()).
+  bool rotationStepsMeasured = false, maskChangesMeasured = false;
   /// The first failed frame and why ("" when every frame rendered). A failed frame is
   /// counted in render_errors and measures nothing: every other metric is over the frames
   /// that rendered, and NaN (not measured) when none did.
   std::string failure;
   bool failed() const { return !failure.empty(); }
 
-  /// The metrics that are NaN when nothing was measured (no covered pixel).
-  static bool isErrorMetric(const std::string& name) {
-    return name == "error_pct" || name == "false_lit_pct" || name == "false_shadow_pct";
+  /// Why `name` is NaN (not measured) when it is: no covered pixel, no shadow-map coordinate,
+  /// fewer than two frames to compare.
+  static std::string notMeasuredReason(const std::string& name) {
+    if (name.rfind("aliasing_", 0) == 0) return "no covered pixel with a shadow-map coordinate";
+    if (name.rfind("flicker_", 0) == 0)
+      return "no pixel covered in two consecutive frames with the reference";
+    if (name.find("rotation") != std::string::npos || name.find("mask_change") != std::string::npos)
+      return "fewer than 2 frames: nothing to compare";
+    return "no covered pixel";
   }
   /// The metrics that count what went wrong, still meaningful when frames failed.
   static bool isFailureCount(const std::string& name) {
@@ -65,13 +80,16 @@ struct StabilitySummary {
   }
   /// The metrics by name (the names expectations use).
   std::map<std::string, double> metrics() const {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    auto steps = [&](double v) { return rotationStepsMeasured ? v : nan; };
+    auto changes = [&](double v) { return maskChangesMeasured ? v : nan; };
     return {{"frames", framesCounted},
-            {"rotation_changes", rotationChanges},
-            {"max_rotation_step_deg", maxRotationStepDeg},
-            {"last_rotation_change_frame", lastRotationChangeFrame},
-            {"mask_change_frames", maskChangeFrames},
-            {"max_mask_changed_pct", maxMaskChangedPct},
-            {"last_mask_change_frame", lastMaskChangeFrame},
+            {"rotation_changes", steps(rotationChanges)},
+            {"max_rotation_step_deg", steps(maxRotationStepDeg)},
+            {"last_rotation_change_frame", steps(lastRotationChangeFrame)},
+            {"mask_change_frames", changes(maskChangeFrames)},
+            {"max_mask_changed_pct", changes(maxMaskChangedPct)},
+            {"last_mask_change_frame", changes(lastMaskChangeFrame)},
             {"error_pct", errorPct},
             {"false_lit_pct", falseLitPct},
             {"false_shadow_pct", falseShadowPct},

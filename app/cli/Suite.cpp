@@ -24,8 +24,8 @@ using nlohmann::json;
 namespace sl::cli {
 namespace {
 
-/// Why an error metric is not checked: no frame of the technique covered a pixel.
-constexpr const char* kNotMeasured = "not measured (no covered pixel)";
+/// How a metric that measured nothing reads: "not measured (why)", never a value.
+constexpr const char* kNotMeasured = "not measured (";
 
 std::string valueText(const json& v) {
   if (v.is_string()) return v.get<std::string>();
@@ -353,6 +353,10 @@ std::vector<SuiteCase> parseSuite(const JsonReader& r, const json& root, double 
     if (sc.motion != "static" && sc.motion != "orbit" && sc.motion != "path")
       r.expected(c["motion"], jsonPath(where, "motion"), "static, orbit or path");
     sc.orbitDegPerFrame = r.number(c, where, "orbit_deg_per_frame", 0.2);
+    if (!(std::abs(sc.orbitDegPerFrame) <= kMaxOrbitDegPerFrame))
+      r.fail(jsonPath(where, "orbit_deg_per_frame"),
+             fmt(sc.orbitDegPerFrame) + " is out of range -" + fmt(kMaxOrbitDegPerFrame) + ".." +
+                 fmt(kMaxOrbitDegPerFrame) + " degrees a frame (kMaxOrbitDegPerFrame)");
     sc.path = r.string(c, where, "path", "");
     sc.warmup = r.integer(c, where, "warmup_frames", 0, 0, kMaxFrames);
     const int frames = r.integer(c, where, "frames", 30, 1, kMaxFrames);
@@ -509,11 +513,21 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
     if (s.failed())
       report << "   " << t.spec.label << ": " << s.renderErrors << " of " << sc.frames
              << " frames failed, first " << s.failure << "\n";
-    char error[32] = "n/a";  // no covered pixel: not measured
-    if (std::isfinite(s.errorPct)) std::snprintf(error, sizeof error, "%.3f", s.errorPct);
-    std::snprintf(line, sizeof line, "   %-30s %8s %8.3f %9.4f %9.4f %8d %9.4f %8d %8.1f\n",
-                  t.spec.label.c_str(), error, s.aliasingP95, s.flickerPct, s.flickerPctMax,
-                  s.maskChangeFrames, s.maxMaskChangedPct, s.rotationChanges, s.totalMs);
+    // A metric that measured nothing reads n/a, never a number.
+    const std::map<std::string, double> m = s.metrics();
+    auto cell = [&](const char* metric, const char* format) {
+      const double v = m.at(metric);
+      if (!std::isfinite(v)) return std::string("n/a");
+      char buf[32];
+      std::snprintf(buf, sizeof buf, format, v);
+      return std::string(buf);
+    };
+    std::snprintf(
+        line, sizeof line, "   %-30s %8s %8s %9s %9s %8s %9s %8s %8s\n", t.spec.label.c_str(),
+        cell("error_pct", "%.3f").c_str(), cell("aliasing_p95", "%.3f").c_str(),
+        cell("flicker_pct", "%.4f").c_str(), cell("flicker_pct_max", "%.4f").c_str(),
+        cell("mask_change_frames", "%.0f").c_str(), cell("max_mask_changed_pct", "%.4f").c_str(),
+        cell("rotation_changes", "%.0f").c_str(), cell("total_ms", "%.1f").c_str());
     report << line;
     json tj = summaryJson(s);
     tj["technique"] = t.spec.techniqueId;
@@ -566,12 +580,12 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
   auto skipReason = [&](const std::string& label, const std::string& metric) -> std::string {
     for (const SuiteTechnique& t : sc.techniques)
       if (t.spec.label == label && !t.skipped.empty()) return t.skipped;
-    if (StabilitySummary::isErrorMetric(metric) &&
-        !std::isfinite(byLabel.at(label).metrics().at(metric)))
-      return kNotMeasured;
+    if (!std::isfinite(byLabel.at(label).metrics().at(metric)))
+      return kNotMeasured + StabilitySummary::notMeasuredReason(metric) + ")";
     return "";
   };
-  int checkedExpectations = 0, notMeasured = 0;  // checked; skipped for want of pixels
+  int checkedExpectations = 0, notMeasured = 0;  // checked; skipped as not measured
+  std::vector<std::string> notMeasuredWhy;       // their reasons, each once
   for (const Expectation& e : sc.expect) {
     ExpectationResult r;
     r.why = e.why;
@@ -656,10 +670,18 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
       expJson.back()["status"] = r.status;
       expJson.back()["xfail"] = e.xfail;
     }
-    if (r.status == "skipped")
-      notMeasured += r.detail.find(kNotMeasured) != std::string::npos ? 1 : 0;
-    else
+    if (r.status == "skipped") {
+      // "not measured (why)": counted, each reason once.
+      if (const auto at = r.detail.find(kNotMeasured); at != std::string::npos) {
+        ++notMeasured;
+        const std::size_t from = at + std::string_view(kNotMeasured).size();
+        const std::string why = r.detail.substr(from, r.detail.find(')', from) - from);
+        if (std::find(notMeasuredWhy.begin(), notMeasuredWhy.end(), why) == notMeasuredWhy.end())
+          notMeasuredWhy.push_back(why);
+      }
+    } else {
       ++checkedExpectations;
+    }
     count(tally, sc, r, e.xfail);
   }
   // Expectations that all went unchecked because no frame covered a pixel: the case measured
@@ -668,8 +690,10 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
     ExpectationResult r;
     r.text = "the case checks at least one of its expectations";
     r.status = "FAIL";
+    std::string why;
+    for (const std::string& w : notMeasuredWhy) why += (why.empty() ? "" : "; ") + w;
     r.detail = "checked none: " + std::to_string(notMeasured) + " of " +
-               std::to_string(sc.expect.size()) + " " + kNotMeasured;
+               std::to_string(sc.expect.size()) + " not measured (" + why + ")";
     count(tally, sc, r, "");
     expJson.push_back({{"status", r.status}, {"detail", r.detail}, {"text", r.text}});
   }

@@ -106,7 +106,8 @@ const std::vector<PublicationDecl>& rendererPublicationDecls() {
        "m, " +
            std::to_string(SL_ALIASING_BINS_PER_OCTAVE) +
            " bins per octave: within half a bin), the exact max, the pixel count, the bin width "
-           "in octaves.",
+           "in octaves. Without a covered pixel (pixel count 0) p50, p95 and max are not "
+           "measured: absent, never 0.",
        "4 B x (4 + " + std::to_string(SL_ALIASING_BINS) + " bins)",
        [](const ParamSet&) { return std::uint64_t(4 * (4 + SL_ALIASING_BINS)); }},
       {"mask.*", PublicationKind::Number,

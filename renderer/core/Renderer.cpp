@@ -602,10 +602,13 @@ void publishAliasingStats(RendererState& s) {
     if (pub.wants(key)) pub.numbers[key] = v;
   };
   number("aliasing.pixels", data[0]);
+  number("aliasing.bin_octaves", h.binOctaves());
+  // No covered pixel with a shadow-map coordinate: m is not measured, so its statistics are
+  // not published (absent, "n/a"), never 0.
+  if (data[0] == 0) return;
   number("aliasing.max", maxM);
   number("aliasing.p50", histogramPercentile(h, 50.0, maxM));
   number("aliasing.p95", histogramPercentile(h, 95.0, maxM));
-  number("aliasing.bin_octaves", h.binOctaves());
 }
 
 bool wantsMaskChange(RendererState& s, bool publishing) {

@@ -67,10 +67,22 @@ std::optional<std::string> Camera::validate() const {
   if (!(farM > nearM) || !std::isfinite(farM)) return "camera: need 0 < near < far (finite)";
   if (!(farM <= kMaxFarM))
     return "camera: far must be at most " + number(kMaxFarM) + " m (got " + number(farM) + ")";
+  if (auto e = depthPrecisionError(nearM, farM)) return "camera: " + *e;
   glm::vec3 f = forward();
   if (glm::length(glm::cross(f, glm::normalize(up))) < 1e-4f)
     return "camera: up vector is parallel to the view direction";
   return std::nullopt;
+}
+
+std::optional<std::string> Camera::depthPrecisionError(float nearM, float farM) {
+  if (!(double(farM) > double(nearM) * double(kMaxFarOverNear))) return std::nullopt;
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "near %.3g m is too close for far %.3g m (far / near %.3g, at most %.0f: "
+                "kMaxFarOverNear, float depth precision); near at least %.3g m",
+                double(nearM), double(farM), double(farM) / double(nearM), double(kMaxFarOverNear),
+                double(farM) / double(kMaxFarOverNear));
+  return std::string(buf);
 }
 
 std::array<glm::vec3, 8> Camera::frustumCorners(float aspect, float n, float f) const {

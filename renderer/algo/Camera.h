@@ -43,11 +43,21 @@ struct Camera {
   /// The farthest far plane (a thousand times the largest scene extent the loader accepts;
   /// 3e38 leaves nothing on screen).
   static constexpr float kMaxFarM = 1e8f;
+  /// The largest far / near ratio (2^20). Depth is float: window depth near the far plane is
+  /// about 1 - near / distance, and a float below 1 is spaced 2^-24, so at far / near = 2^20
+  /// the farthest half of the view is still 2^-19 (32 steps) away from 1. A 1e-6 m near
+  /// plane with a 200 m far one (2e8) rounded 13 % of the geometry onto the far plane, where
+  /// the depth test drops it.
+  static constexpr float kMaxFarOverNear = 1048576.0f;
 
   /// An error naming what is wrong (NaN position, eye == target, a zero up vector, near
-  /// below kMinNearM, far not above near or beyond kMaxFarM, fov out of (1, 170) degrees, up
+  /// below kMinNearM, far not above near or beyond kMaxFarM or kMaxFarOverNear times near,
+  /// fov out of (1, 170) degrees, up
   /// parallel to the view direction), or nothing when usable. Each starts "camera: ".
   std::optional<std::string> validate() const;
+  /// "near N m is too close for far F m (far / near ..., at most ...: kMaxFarOverNear ...)"
+  /// when far / near exceeds kMaxFarOverNear, else nothing (no "camera: " prefix).
+  static std::optional<std::string> depthPrecisionError(float nearM, float farM);
   /// validate()'s error without its "camera: ", for a message whose own words already name
   /// the camera ("camera 'tracker' ignored: ...", a JSON path "camera: ...").
   static std::string withoutPrefix(const std::string& error);

@@ -139,6 +139,17 @@ std::optional<std::string> Light::validate() const {
   if (!finite(positionM)) return kind + " light: position is not finite";
   if (!std::isfinite(rangeM)) return kind + " light: range is not finite";
   if (rangeM < 0.0f) return kind + " light: range must be >= 0 metres (0 = infinite)";
+  const float reach =
+      std::max({std::abs(positionM.x), std::abs(positionM.y), std::abs(positionM.z)});
+  if (reach > kMaxLightPositionM || rangeM > kMaxLightPositionM) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "%s light: %s %.3g m is beyond %.0e m from the origin (kMaxLightPositionM: "
+                  "float distances to the light would overflow)",
+                  kind.c_str(), reach > kMaxLightPositionM ? "position" : "range",
+                  double(reach > kMaxLightPositionM ? reach : rangeM), double(kMaxLightPositionM));
+    return std::string(buf);
+  }
   if (type == LightType::Point) return std::nullopt;
   if (!finite(direction)) return "spot light: direction is not finite";
   if (!(glm::length(direction) > 1e-6f)) return "spot light: direction is zero";

@@ -22,6 +22,14 @@ enum class LightType : int { Directional = 0, Spot = 1, Point = 2 };
 /// cones; the glTF loader, whose format allows up to 90, narrows them to this and warns.
 inline constexpr float kMaxSpotConeDeg = 89.0f;
 
+/// The farthest a spot or point light may be from the origin (largest |x|, |y| or |z|) and
+/// the longest range, in metres: ten times the scene extent the glTF loader accepts
+/// (kMaxSceneExtentM, 1e5 m). Positions are floats in world space; beyond ~1.8e19 m the
+/// light's distances squared overflow a float and the scene darkens with the reference
+/// agreeing (an error of 0 %). Every input (--light, glTF, presets, sessions, suites, claims)
+/// goes through Light::validate.
+inline constexpr float kMaxLightPositionM = 1e6f;
+
 /// "directional", "spot", "point".
 std::string_view lightTypeName(LightType type);
 /// The type named `name` (as lightTypeName writes it), or nothing.
@@ -70,9 +78,9 @@ struct Light {
   /// The hard shadow mask ignores it (illuminates() only).
   float falloff(const glm::vec3& P) const;
 
-  /// An error naming what is wrong (non-finite field, zero spot direction, outer cone angle
-  /// out of (0, kMaxSpotConeDeg] degrees, inner > outer, negative range, elevation out of
-  /// -90..90), or nothing when usable.
+  /// An error naming what is wrong (non-finite field, a position or range beyond
+  /// kMaxLightPositionM, zero spot direction, outer cone angle out of (0, kMaxSpotConeDeg]
+  /// degrees, inner > outer, negative range, elevation out of -90..90), or nothing when usable.
   std::optional<std::string> validate() const;
   /// A short human description: "directional az 35 el 50", "point at (0, 4, 0) range 10 m",
   /// "spot at (0, 4, 0) dir (0, -1, 0) cone 30/20 deg range inf".

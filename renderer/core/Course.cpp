@@ -39,6 +39,10 @@ CourseLesson parseCourseLesson(const JsonReader& r, const nlohmann::json& j,
   if (!minutes) r.fail(path, "needs \"minutes\" (the time the lesson takes)");
   l.minutes = r.integer(*minutes, jsonPath(path, "minutes"), 1, kMaxCourseMinutes);
   l.thread = r.string(j, path, "thread", "");
+  if (l.thread.size() > kMaxCourseThreadBytes)
+    r.fail(jsonPath(path, "thread"),
+           "a text of " + std::to_string(l.thread.size()) + " bytes, over the limit of " +
+               std::to_string(kMaxCourseThreadBytes) + " (kMaxCourseThreadBytes: one sentence)");
   return l;
 }
 

@@ -3,6 +3,7 @@
 // the course's thread to it. Read by the GUI's --course and Lessons menu; checked by tests.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -10,10 +11,14 @@
 
 namespace sl {
 
+/// The longest `thread` (bytes): one sentence, shown under the lesson's title. A 15 MB one
+/// took 52 s and 1.16 GB to lay out.
+inline constexpr std::size_t kMaxCourseThreadBytes = 300;
+
 struct CourseLesson {
   std::string lesson;  ///< file name in the lesson folder, e.g. "01-perspective-aliasing.json"
   int minutes = 0;     ///< the time the lesson takes in class
-  std::string thread;  ///< one sentence: why this lesson comes here
+  std::string thread;  ///< one sentence: why this lesson comes here (plain text)
 };
 
 struct Course {
@@ -31,7 +36,8 @@ std::filesystem::path courseFile(const std::filesystem::path& sceneDir);
 /// Reads `{"courses": [{"name", "minutes", "lessons": [{"lesson", "minutes", "thread"}]}]}`.
 /// Refused, with one line "FILE: PATH: what is wrong" in `error`, when the JSON is malformed,
 /// a lesson is not a file in `lessonDir`, a lesson is listed twice in one course, the
-/// lessons' minutes add up to more than the course's, or two courses share a name.
+/// lessons' minutes add up to more than the course's, a thread is longer than
+/// kMaxCourseThreadBytes, or two courses share a name.
 std::optional<std::vector<Course>> loadCourses(const std::filesystem::path& file,
                                                const std::filesystem::path& lessonDir,
                                                std::string* error);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "algo/InputFile.h"
@@ -66,16 +68,20 @@ std::optional<std::pair<std::string, std::string>> cameraFieldError(const Camera
   if (std::isfinite(cam.farM) && !(cam.farM <= Camera::kMaxFarM))
     return std::pair{keys.far,
                      "must be at most " + number(Camera::kMaxFarM) + " m, got " + number(cam.farM)};
+  if (std::isfinite(cam.nearM) && std::isfinite(cam.farM))
+    if (auto e = Camera::depthPrecisionError(cam.nearM, cam.farM)) return std::pair{keys.near, *e};
   return std::nullopt;
 }
 
 namespace {
 
 /// Follows the JSON path while a SAX parse runs, so that a number the parser cannot hold
-/// (1e999) is named by where it is, not only by "not valid JSON".
+/// (1e999) is named by where it is, not only by "not valid JSON"; and stops at a key an object
+/// gives twice (the parser would keep the last value silently).
 class PathTracker : public nlohmann::json_sax<json> {
  public:
-  std::string failedToken;  ///< set by parse_error: the token the parser stopped at
+  std::string failedToken;   ///< set by parse_error: the token the parser stopped at
+  std::string duplicateKey;  ///< set by key(): a key its object already had (path() names it)
   /// The path of the value being read ("cases[0].frames"; "" at the top level).
   std::string path() const {
     std::string p;
@@ -93,6 +99,10 @@ class PathTracker : public nlohmann::json_sax<json> {
   bool start_object(std::size_t) override { return open(false); }
   bool key(string_t& k) override {
     levels_.back().key = k;
+    if (!levels_.back().keys.insert(k).second) {
+      duplicateKey = k;
+      return false;
+    }
     return true;
   }
   bool end_object() override { return close(); }
@@ -107,8 +117,9 @@ class PathTracker : public nlohmann::json_sax<json> {
  private:
   struct Level {
     bool array = false;
-    std::size_t index = 0;  ///< arrays: the element being read
-    std::string key;        ///< objects: the member being read
+    std::size_t index = 0;       ///< arrays: the element being read
+    std::string key;             ///< objects: the member being read
+    std::set<std::string> keys;  ///< objects: the members read so far
   };
   std::vector<Level> levels_;
 
@@ -143,8 +154,17 @@ json JsonReader::parseFile() const {
                          " levels (at byte " + std::to_string(deep) +
                          "): refused (kMaxJsonInputDepth)");
   try {
-    return json::parse(bytes.begin(), bytes.end(), nullptr, /*allow_exceptions=*/true,
-                       /*ignore_comments=*/true);
+    json doc = json::parse(bytes.begin(), bytes.end(), nullptr, /*allow_exceptions=*/true,
+                           /*ignore_comments=*/true);
+    // A key given twice in one object: the parser kept the last value; refused, named.
+    PathTracker tracker;
+    json::sax_parse(bytes.begin(), bytes.end(), &tracker, json::input_format_t::json,
+                    /*strict=*/true, /*ignore_comments=*/true);
+    if (!tracker.duplicateKey.empty())
+      throw JsonInputError(file_ + ": " + tracker.path() +
+                           ": the key is given twice in one object (JSON keys are unique; "
+                           "which value would count is not defined)");
+    return doc;
   } catch (const json::parse_error& e) {
     // "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error ..."
     std::string what = e.what();

@@ -132,16 +132,21 @@ void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> m
   }
 }
 
-void DepthMapArray::ensure(int resolution, int layers, const std::string& what,
-                           const std::string& lower, std::uint64_t maxBytes) {
-  if (maps_ && maps_.width() == resolution && maps_.layers() == layers) return;
+std::optional<std::string> DepthMapArray::sizeError(int resolution, int layers,
+                                                    const std::string& what,
+                                                    const std::string& lower) {
   const std::uint64_t bytes =
       4ull * std::uint64_t(resolution) * std::uint64_t(resolution) * std::uint64_t(layers);
-  if (bytes > maxBytes)
-    throw std::runtime_error(what + " of " + std::to_string(resolution) + "^2 need " +
-                             std::to_string(bytes >> 20) + " MiB of depth maps, more than the " +
-                             std::to_string(maxBytes >> 20) + " MiB one array may take; lower " +
-                             lower);
+  if (bytes <= kMaxBytes) return std::nullopt;
+  return what + " of " + std::to_string(resolution) + "^2 need " + std::to_string(bytes >> 20) +
+         " MiB of depth maps, more than the " + std::to_string(kMaxBytes >> 20) +
+         " MiB one array may take (DepthMapArray::kMaxBytes); lower " + lower;
+}
+
+void DepthMapArray::ensure(int resolution, int layers, const std::string& what,
+                           const std::string& lower) {
+  if (maps_ && maps_.width() == resolution && maps_.layers() == layers) return;
+  if (auto e = sizeError(resolution, layers, what, lower)) throw std::runtime_error(*e);
   maps_ = {};  // the old array goes before the new one comes
   layerFbos_.clear();
   layeredFbo_ = {};

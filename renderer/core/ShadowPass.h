@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -111,15 +112,22 @@ void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> m
 class DepthMapArray {
  public:
   /// The largest array allocated: beyond it ensure() refuses (a message, nothing allocated).
-  static constexpr std::uint64_t kDefaultMaxBytes = 4ull << 30;
+  /// Mesa's llvmpipe completes the framebuffer of a 2 GiB array (cascades, 2 x 16384^2) and
+  /// not of a 3 GiB one (3 x 16384^2: incomplete attachment, status 0x36054).
+  static constexpr std::uint64_t kMaxBytes = 2ull << 30;
+
+  /// "<what> of <res>^2 need <N> MiB of depth maps, more than the <M> MiB one array may take
+  /// (DepthMapArray::kMaxBytes); lower <lower>" when `layers` maps of `resolution`^2 exceed
+  /// kMaxBytes, else nothing. No GL: a technique's checkParams refuses the parameters with it
+  /// before the first frame (the worst case of its maps), and ensure() before allocating.
+  static std::optional<std::string> sizeError(int resolution, int layers, const std::string& what,
+                                              const std::string& lower);
 
   /// (Re)allocates `layers` maps of `resolution`^2. `what` names them in messages and
   /// framebuffer labels ("cascades: 4 partitions"); `lower` says what to lower when the
-  /// array would exceed `maxBytes` ("resolution or partitions"): std::runtime_error
-  /// "<what> of <res>^2 need <N> MiB of depth maps, more than the <M> MiB one array may take;
-  /// lower <lower>".
-  void ensure(int resolution, int layers, const std::string& what, const std::string& lower,
-              std::uint64_t maxBytes = kDefaultMaxBytes);
+  /// array would exceed kMaxBytes ("resolution or partitions"): std::runtime_error with
+  /// sizeError's message.
+  void ensure(int resolution, int layers, const std::string& what, const std::string& lower);
   explicit operator bool() const { return bool(maps_); }
   const gl::Texture& texture() const { return maps_; }
   GLuint layerFramebuffer(int layer) const { return layerFbos_.at(std::size_t(layer)).id(); }

@@ -65,8 +65,15 @@ constexpr std::size_t kMaxTriangles = std::size_t(1) << 25;
 /// Memory a flattened triangle costs, all copies together (the flattened mesh, GPU buffers, the
 /// reference's BVH): a 1 M-triangle mesh on 8 nodes took 3.9 GB, ~490 bytes a triangle.
 constexpr std::uint64_t kBytesPerTriangle = 490;
-/// The memory the flattened scene may take by that estimate (~8.7 M triangles): refused before
-/// anything is allocated (32 nodes of that mesh, under kMaxTriangles, would have taken ~15 GB).
+/// Memory a flattened primitive costs besides its triangles, all copies together (its mesh
+/// record and vectors, its GPU buffers and vertex array, the reference's geometry): one mesh
+/// of 5,000 and of 10,000 one-triangle primitives, `render` at 64x36, peaked at 513,584 and
+/// 820,240 KB: ~61 KiB a primitive (the same without the reference). 100,000 of them (a
+/// 4.7 MB file) grew to 3.9 GB and died of std::bad_alloc; by this estimate, 5.8 GiB.
+constexpr std::uint64_t kBytesPerPrimitive = std::uint64_t(61) << 10;
+/// The memory the flattened scene may take by those estimates (~8.7 M triangles): refused
+/// before anything is allocated (32 nodes of that mesh, under kMaxTriangles, would have taken
+/// ~15 GB).
 constexpr std::uint64_t kMaxSceneBytes = std::uint64_t(4) << 30;
 /// Longest side and pixel count of a decoded image (larger ones are not decoded).
 constexpr int kMaxImageSide = 16384;
@@ -880,7 +887,9 @@ class Flattener {
       return model_.accessors[std::size_t(accessor)].count;
     };
     std::vector<std::size_t> perMesh(model_.meshes.size(), 0);
+    std::vector<std::size_t> primitivesOf(model_.meshes.size(), 0);
     for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
+      primitivesOf[m] = model_.meshes[m].primitives.size();
       for (const tinygltf::Primitive& prim : model_.meshes[m].primitives) {
         int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
         auto pos = prim.attributes.find("POSITION");
@@ -896,19 +905,24 @@ class Flattener {
       }
     }
     std::size_t total = 0;
+    std::uint64_t primitives = 0;
     for (const NodeInstance& inst : instances_) {
       const int mesh = model_.nodes[std::size_t(inst.node)].mesh;
       if (mesh < 0 || std::size_t(mesh) >= perMesh.size()) continue;
       total += perMesh[std::size_t(mesh)];
-      if (total <= kMaxTriangles && std::uint64_t(total) * kBytesPerTriangle > kMaxSceneBytes) {
+      primitives += primitivesOf[std::size_t(mesh)];
+      const std::uint64_t bytes =
+          std::uint64_t(total) * kBytesPerTriangle + primitives * kBytesPerPrimitive;
+      if (total <= kMaxTriangles && bytes > kMaxSceneBytes) {
         char gib[32];
-        std::snprintf(gib, sizeof gib, "%.1f",
-                      double(std::uint64_t(total) * kBytesPerTriangle) / double(1u << 30));
-        fail("the flattened scene would have " + std::to_string(total) + "+ triangles (" +
-             std::to_string(instances_.size()) +
+        std::snprintf(gib, sizeof gib, "%.1f", double(bytes) / double(1u << 30));
+        fail("the flattened scene would have " + std::to_string(total) + "+ triangles in " +
+             std::to_string(primitives) + "+ primitives (" + std::to_string(instances_.size()) +
              " node instances; a mesh counts once per node that uses it), about " + gib +
-             " GiB at ~" + std::to_string(kBytesPerTriangle) + " bytes a triangle: over the " +
-             "limit of " + byteLimitText(kMaxSceneBytes) + " (kMaxSceneBytes)");
+             " GiB at ~" + std::to_string(kBytesPerTriangle) + " bytes a triangle and ~" +
+             std::to_string(kBytesPerPrimitive >> 10) +
+             " KiB a primitive (kBytesPerPrimitive): over the limit of " +
+             byteLimitText(kMaxSceneBytes) + " (kMaxSceneBytes)");
       }
       if (total > kMaxTriangles)
         fail("the flattened scene would have more than " + std::to_string(kMaxTriangles) +
@@ -1269,6 +1283,20 @@ class Flattener {
     return "camera " + std::to_string(scene_.cameras.size() + 1);
   }
 
+  /// `nearM`, raised (with a warning) to far / Camera::kMaxFarOverNear where the depth buffer
+  /// could not tell the far half of the view apart (a 1e-6 m znear with a 200 m zfar).
+  float nearWithinDepthPrecision(float nearM, float farM, const std::string& where) {
+    if (!Camera::depthPrecisionError(nearM, farM)) return nearM;
+    const float raised = farM / Camera::kMaxFarOverNear;
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  ": znear %.3g m raised to %.3g m (far %.3g m; kMaxFarOverNear, float depth "
+                  "precision)",
+                  double(nearM), double(raised), double(farM));
+    warn(where + buf);
+    return raised;
+  }
+
   void addCameras() {
     for (const NodeInstance& inst : instances_) {
       const tinygltf::Node& node = model_.nodes[std::size_t(inst.node)];
@@ -1279,6 +1307,7 @@ class Flattener {
       glm::quat rotation;
       decomposePose(inst.world, position, rotation);
       float far = lens->farM > 0.0f ? lens->farM : farFromBounds(position, lens->nearM);
+      lens->nearM = nearWithinDepthPrecision(lens->nearM, far, "camera " + nodeName(inst.node));
       glm::vec3 forward = glm::normalize(rotation * glm::vec3(0.0f, 0.0f, -1.0f));
       // Orbit target: what the camera looks at, else the point nearest the scene centre.
       float dist = firstHit(position, forward);
@@ -1398,6 +1427,8 @@ class Flattener {
           for (const CameraKey& k : path.keys)
             far = std::max(far, farFromBounds(k.position, lens->nearM));
         path.farM = far;
+        path.nearM =
+            nearWithinDepthPrecision(path.nearM, far, "camera path " + inQuotes(path.name));
         scene_.paths.push_back(std::move(path));
       }
     }

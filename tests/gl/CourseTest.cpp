@@ -144,6 +144,24 @@ TEST(Courses, BadCourseFilesAreRefusedNamingTheEntry) {
             "courses[0].length: unknown key 'length' (known: name, minutes, lessons)");
 }
 
+// A thread is one sentence (kMaxCourseThreadBytes): the hostile fixture's 400 bytes are
+// refused (a 15 MB one took 52 s and 1.16 GB to lay out in the Lesson dock).
+TEST(Courses, ThreadsLongerThanASentenceAreRefused) {
+  const fs::path fixture =
+      fs::path(SHADOWLAB_TEST_DATA) / ".." / "fixtures" / "hostile" / "courses-thread-400.json";
+  std::string error;
+  EXPECT_FALSE(loadCourses(fixture, kLessons, &error));
+  EXPECT_EQ(error, fixture.string() +
+                       ": courses[0].lessons[0].thread: a text of 400 bytes, over the limit of "
+                       "300 (kMaxCourseThreadBytes: one sentence)");
+  const std::string atLimit(kMaxCourseThreadBytes, 'w');
+  const fs::path ok = writeCourses("thread-at-limit.json",
+                                   R"({"courses": [{"name": "a", "minutes": 9, "lessons": [
+                          {"lesson": "01-perspective-aliasing.json", "minutes": 5, "thread": ")" +
+                                       atLimit + R"("}]}]})");
+  EXPECT_TRUE(loadCourses(ok, kLessons, &error)) << error;
+}
+
 TEST(Courses, UnknownCourseNamesTheKnownOnes) {
   const std::vector<Course> courses{{"90", 90, {}}, {"45", 45, {}}};
   EXPECT_EQ(unknownCourseMessage(courses, "30"), "unknown course '30' (known: 90, 45)");

@@ -227,6 +227,13 @@ TechniqueInfo CascadedShadowMap::info() {
        "",
        {}},
   };
+  // Every partition's map, before the first frame (a 16384^2 array is refused here, not by it).
+  info.checkParams = [](const ParamSet& ps) {
+    const int k = int(ps.getInt("partitions"));
+    return DepthMapArray::sizeError(int(ps.getInt("resolution")), k,
+                                    "cascades: " + std::to_string(k) + " partitions",
+                                    "resolution or partitions");
+  };
   return info;
 }
 

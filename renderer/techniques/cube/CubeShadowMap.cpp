@@ -76,6 +76,12 @@ TechniqueInfo CubeShadowMap::info() {
       {"cube.far_m", PublicationKind::Number, "The faces' far plane (m).", "", {}},
   };
   info.lights = {LightType::Point, LightType::Spot};
+  // Up to six faces (a point light's), before the first frame.
+  info.checkParams = [](const ParamSet& ps) {
+    return DepthMapArray::sizeError(int(ps.getInt("resolution")), omni::kCubeFaces,
+                                    "cube: up to " + std::to_string(omni::kCubeFaces) + " faces",
+                                    "resolution");
+  };
   return info;
 }
 
@@ -95,8 +101,8 @@ void CubeShadowMap::renderShadows(FrameContext& ctx) {
     omni::CubeFit fit;
     if (auto err = omni::fitCube(ctx.light, ctx.scene.bounds, fit)) throw std::runtime_error(*err);
     fit_ = fit;
-    faces_.ensure(res, fit_.layers, "cube: " + std::to_string(fit_.layers) + " faces", "resolution",
-                  2ull << 30);
+    faces_.ensure(res, fit_.layers, "cube: " + std::to_string(fit_.layers) + " faces",
+                  "resolution");
     views_.clear();
     for (int f = 0; f < omni::kCubeFaces; ++f) {
       DepthMapView v;

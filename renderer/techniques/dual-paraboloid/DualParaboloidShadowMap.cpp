@@ -83,6 +83,11 @@ TechniqueInfo DualParaboloidShadowMap::info() {
       {"dp.far_m", PublicationKind::Number, "The depth range's far end (m).", "", {}},
   };
   info.lights = {LightType::Point, LightType::Spot};
+  // Both halves (a point light's), before the first frame.
+  info.checkParams = [](const ParamSet& ps) {
+    return DepthMapArray::sizeError(int(ps.getInt("resolution")), 2, "dual-paraboloid: 2 maps",
+                                    "resolution");
+  };
   return info;
 }
 
@@ -116,8 +121,7 @@ void DualParaboloidShadowMap::renderShadows(FrameContext& ctx) {
   farM_ = 1.01f * std::max(far, 1e-3f);
 
   auto pass = ctx.timer.scope("paraboloid halves");
-  maps_.ensure(res, halves_, "dual-paraboloid: " + std::to_string(halves_) + " maps", "resolution",
-               2ull << 30);
+  maps_.ensure(res, halves_, "dual-paraboloid: " + std::to_string(halves_) + " maps", "resolution");
   glEnable(GL_CLIP_DISTANCE0);
   for (int i = 0; i < halves_; ++i) {
     beginDepthPass(maps_.layerFramebuffer(i), res, res);

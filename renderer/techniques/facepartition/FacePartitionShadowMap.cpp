@@ -150,6 +150,12 @@ TechniqueInfo FacePartitionShadowMap::info() {
       number("depth.far", "Far plane of the frustum clipped to the scene (m)."),
   };
   info.lights = {LightType::Directional};
+  // Every slot's map, before the first frame (a 16384^2 array is refused here, not by it).
+  info.checkParams = [](const ParamSet& ps) {
+    return DepthMapArray::sizeError(int(ps.getInt("resolution")), mapsFor(ps),
+                                    "face-partition: " + std::to_string(mapsFor(ps)) + " maps",
+                                    "resolution or face.zsplits");
+  };
   return info;
 }
 

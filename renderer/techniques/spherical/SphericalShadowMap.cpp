@@ -90,6 +90,10 @@ TechniqueInfo SphericalShadowMap::info() {
       {"sph.far_m", PublicationKind::Number, "The depth range's far end (m).", "", {}},
   };
   info.lights = {LightType::Point, LightType::Spot};
+  info.checkParams = [](const ParamSet& ps) {
+    return DepthMapArray::sizeError(int(ps.getInt("resolution")), omni::kLatLongHalves,
+                                    "spherical: 2 halves", "resolution");
+  };
   return info;
 }
 
@@ -120,7 +124,7 @@ void SphericalShadowMap::renderShadows(FrameContext& ctx) {
   farM_ = 1.01f * std::max(far, 1e-3f);
 
   auto pass = ctx.timer.scope("lat-long halves");
-  maps_.ensure(res, omni::kLatLongHalves, "spherical: 2 halves", "resolution", 2ull << 30);
+  maps_.ensure(res, omni::kLatLongHalves, "spherical: 2 halves", "resolution");
   for (int i = 0; i < omni::kLatLongHalves; ++i) {
     beginDepthPass(maps_.layerFramebuffer(i), res, res);
     depthProgram_.use();

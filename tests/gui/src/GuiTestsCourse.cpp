@@ -50,6 +50,8 @@ bool GuiTests::course(const QString& dir) {
     check(thread->isVisibleTo(w_.lessonPanel()) &&
               thread->text() == QString::fromStdString(want.thread),
           tr("%1: the dock shows the course's sentence for it").arg(file));
+    // The course file's words as plain text: markup (an <img> of a local file) is not run.
+    check(thread->textFormat() == Qt::PlainText, tr("%1: the sentence is plain text").arg(file));
     check(next->isEnabled() == (k + 1 < count) && previous->isEnabled() == (k > 0),
           tr("%1: Next %2, Previous %3")
               .arg(file, next->isEnabled() ? tr("on") : tr("off"),

@@ -97,11 +97,13 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   course_->setObjectName(QStringLiteral("lessonCourse"));
   followBodyFont(course_, 1.0, true);
   course_->setWordWrap(true);
+  course_->setTextFormat(Qt::PlainText);  // the course file's words, never markup
   course_->hide();
   layout->addWidget(course_);
   thread_ = new QLabel;
   thread_->setObjectName(QStringLiteral("lessonCourseThread"));
   thread_->setWordWrap(true);
+  thread_->setTextFormat(Qt::PlainText);  // the course file's words: no rich text (images)
   thread_->setForegroundRole(QPalette::PlaceholderText);
   thread_->hide();
   layout->addWidget(thread_);

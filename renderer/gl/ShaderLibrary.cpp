@@ -1,7 +1,8 @@
 #include "ShaderLibrary.h"
 
+#include <algorithm>
 #include <cstdlib>
-#include <fstream>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -9,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "algo/GlslUniforms.h"
+#include "algo/InputFile.h"
 #include "scene/DataDir.h"
 
 #ifndef SHADOWLAB_SHADER_DIR
@@ -19,12 +21,53 @@ namespace sl::gl {
 
 namespace {
 
+/// A shader file: a regular file of at most kMaxShaderFileBytes (the shader folder may come
+/// from SHADOWLAB_SHADER_DIR: no FIFO, device or endless file is read).
 std::string readFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ShaderError(path.string() + ": cannot open shader file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  try {
+    const std::vector<unsigned char> bytes =
+        readRegularFile(path, kMaxShaderFileBytes, "kMaxShaderFileBytes");
+    return std::string(bytes.begin(), bytes.end());
+  } catch (const InputFileError& e) {
+    throw ShaderError(cutText(path.string(), kMaxQuotedPathBytes) + ": " + e.what());
+  }
+}
+
+/// The file named by an `#include "FILE"` line (spaces around allowed), or nothing for any
+/// other line. No regular expression: a line of any length is one linear scan.
+std::optional<std::string> includedName(const std::string& line) {
+  std::size_t i = line.find_first_not_of(" \t");
+  if (i == std::string::npos || line[i] != '#') return std::nullopt;
+  i = line.find_first_not_of(" \t", i + 1);
+  if (i == std::string::npos || line.compare(i, 7, "include") != 0) return std::nullopt;
+  i = line.find_first_not_of(" \t", i + 7);
+  if (i == std::string::npos || line[i] != '"') return std::nullopt;
+  const std::size_t close = line.find('"', i + 1);
+  if (close == std::string::npos || line.find_first_not_of(" \t\r", close + 1) != std::string::npos)
+    return std::nullopt;
+  return line.substr(i + 1, close - i - 1);
+}
+
+/// The file an `#include` in a shader's text names, inside the shader folder `root`:
+/// ShaderError unless it is a relative path of at most kMaxShaderIncludeBytes that stays
+/// inside `root` once symbolic links and ".." are resolved.
+std::string checkedInclude(const std::filesystem::path& root, const std::string& including,
+                           const std::string& name) {
+  const std::string where = "shaders/" + cutText(including, kMaxQuotedPathBytes) + ": #include \"" +
+                            cutText(name, kMaxQuotedPathBytes) + "\"";
+  if (name.empty() || name.size() > kMaxShaderIncludeBytes)
+    throw ShaderError(where + ": a file name of 1.." + std::to_string(kMaxShaderIncludeBytes) +
+                      " bytes expected (kMaxShaderIncludeBytes)");
+  const std::filesystem::path rel(name);
+  std::error_code ec;
+  const std::filesystem::path base = std::filesystem::weakly_canonical(root, ec);
+  const std::filesystem::path full = std::filesystem::weakly_canonical(root / rel, ec);
+  const auto [endBase, endFull] = std::mismatch(base.begin(), base.end(), full.begin(), full.end());
+  if (rel.is_absolute() || ec || endBase != base.end() || endFull == full.end())
+    throw ShaderError(where + ": outside the shader folder " +
+                      cutText(root.string(), kMaxQuotedPathBytes) +
+                      " (includes are relative to it and stay inside)");
+  return name;
 }
 
 std::string stageName(GLenum stage) {
@@ -54,6 +97,8 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
   std::istringstream in(log);
   std::string line, out;
   while (std::getline(in, line)) {
+    line = cutText(line, kMaxMessageBytes);  // a log quoting a huge token: bounded, and the
+                                             // regular expressions below recurse per byte
     std::smatch m;
     if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nv)) {
       size_t idx = std::stoul(m[1]);
@@ -71,7 +116,10 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
 void expand(const std::filesystem::path& root, const std::string& file, const ProgramDesc& desc,
             std::vector<std::string>& files, std::set<std::string>& included, std::string& out,
             int depth) {
-  if (depth > 16) throw ShaderError("shaders/" + file + ": #include nesting too deep");
+  if (depth > kMaxShaderIncludeDepth)
+    throw ShaderError("shaders/" + cutText(file, kMaxQuotedPathBytes) +
+                      ": #include nesting deeper than " + std::to_string(kMaxShaderIncludeDepth) +
+                      " (kMaxShaderIncludeDepth)");
   std::string resolved = file;
   if (!resolved.empty() && resolved[0] == '@') {
     auto it = desc.aliases.find(resolved);
@@ -88,12 +136,13 @@ void expand(const std::filesystem::path& root, const std::string& file, const Pr
   std::istringstream in(text);
   std::string line;
   int lineNo = 0;
-  static const std::regex inc(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
   while (std::getline(in, line)) {
     ++lineNo;
-    std::smatch m;
-    if (std::regex_match(line, m, inc)) {
-      expand(root, m[1], desc, files, included, out, depth + 1);
+    if (std::optional<std::string> name = includedName(line)) {
+      // An alias ("@lookup") is the program's choice (C++); a file named in the text must
+      // stay inside the shader folder.
+      if ((*name)[0] != '@') *name = checkedInclude(root, resolved, *name);
+      expand(root, *name, desc, files, included, out, depth + 1);
       out += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
     } else if (line.rfind("#version", 0) == 0) {
       out += "\n";  // the library writes the version line

@@ -5,6 +5,8 @@
 // error names the file and line; a failed rebuild keeps the last good program in use.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -26,6 +28,16 @@ struct ProgramDesc {
   std::map<std::string, std::string> aliases;          ///< "@lookup" -> "uniform/lookup.glsl"
   std::vector<std::string> defines;                    ///< "NAME" or "NAME VALUE"
 };
+
+/// The shader folder is an input (SHADOWLAB_SHADER_DIR may name any folder): a shader file is
+/// a regular file of at most kMaxShaderFileBytes; an `#include "FILE"` in a shader's text
+/// names a relative path of at most kMaxShaderIncludeBytes inside the folder, nested at most
+/// kMaxShaderIncludeDepth deep. Anything else is a ShaderError naming the file.
+inline constexpr std::uint64_t kMaxShaderFileBytes = std::uint64_t(1) << 20;
+inline constexpr std::size_t kMaxShaderIncludeBytes = 256;
+inline constexpr int kMaxShaderIncludeDepth = 16;
+/// A path quoted in a shader error is cut to this many bytes.
+inline constexpr std::size_t kMaxQuotedPathBytes = 120;
 
 class ShaderError : public std::runtime_error {
  public:

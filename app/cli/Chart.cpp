@@ -3,14 +3,17 @@
 #include "Chart.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "CliCommon.h"
@@ -48,18 +51,30 @@ std::optional<std::string> savePng(const QImage& image, const std::string& path)
   return writeFile(path, png.toStdString());
 }
 
+/// A folder only this user can enter, for Qt's runtime files: <tmp>/shadowlab-runtime-UID when
+/// it is a real folder (not a symbolic link) this user owns with mode 0700, created so (never
+/// a chmod: a planted link must not change its target's mode); else a new mkdtemp folder.
+std::optional<std::string> privateRuntimeFolder() {
+  std::error_code ec;
+  const std::filesystem::path tmp = std::filesystem::temp_directory_path(ec);
+  if (ec) return std::nullopt;
+  const std::string fixed = (tmp / ("shadowlab-runtime-" + std::to_string(getuid()))).string();
+  if (::mkdir(fixed.c_str(), 0700) == 0 || errno == EEXIST) {
+    struct stat st {};
+    if (::lstat(fixed.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && st.st_uid == getuid() &&
+        (st.st_mode & 0777) == 0700)
+      return fixed;
+  }
+  std::string pattern = (tmp / "shadowlab-runtime-XXXXXX").string();
+  if (::mkdtemp(pattern.data()) == nullptr) return std::nullopt;
+  return pattern;
+}
+
 void ensureOffscreenApplication() {
   if (QCoreApplication::instance()) return;
   setenv("QT_QPA_PLATFORM", "offscreen", 1);
-  if (!std::getenv("XDG_RUNTIME_DIR")) {  // Qt warns without one; give it a private folder
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("shadowlab-runtime-" + std::to_string(getuid()));
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    std::filesystem::permissions(dir, std::filesystem::perms::owner_all,
-                                 std::filesystem::perm_options::replace, ec);
-    if (!ec) setenv("XDG_RUNTIME_DIR", dir.c_str(), 1);
-  }
+  if (!std::getenv("XDG_RUNTIME_DIR"))  // Qt warns without one; give it a private folder
+    if (auto dir = privateRuntimeFolder()) setenv("XDG_RUNTIME_DIR", dir->c_str(), 1);
   static int argc = 1;
   static char name[] = "shadowlab-cli";
   static char* argv[] = {name, nullptr};

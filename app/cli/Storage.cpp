@@ -215,8 +215,11 @@ int cmdStorage(Args& a) {
   std::printf(
       "storage factor (Lloyd et al. 2006): scheme %s, near %s, far %s, fov %s deg, "
       "light azimuth %s elevation %s\n",
-      partition::schemeName(chosen.scheme), fmt(o.nearM).c_str(), fmt(o.farM).c_str(),
-      fmt(o.fovDeg).c_str(), fmt(o.azimuthDeg).c_str(), fmt(o.elevationDeg).c_str());
+      // The scheme asked for, with the eta given (the analysis' own name for it is "eta").
+      (o.eta ? o.scheme + " with eta " + fmt(*o.eta) : partition::schemeName(chosen.scheme))
+          .c_str(),
+      fmt(o.nearM).c_str(), fmt(o.farM).c_str(), fmt(o.fovDeg).c_str(), fmt(o.azimuthDeg).c_str(),
+      fmt(o.elevationDeg).c_str());
   std::printf("S = %s  M_x = %s  M_z = %s  (%zu shadow map%s)\n", fmt(res.s).c_str(),
               fmt(res.mx).c_str(), fmt(res.mz).c_str(), res.parts.size(),
               res.parts.size() == 1 ? "" : "s");

@@ -88,7 +88,11 @@ def sline(path):
 t, e, eta = sline(sys.argv[1]), sline(sys.argv[2]), float(sys.argv[3])
 ok = -1 < eta < 1 and all(abs(a - b) <= 1e-5 * abs(a) for a, b in zip(t, e))
 print(("ok  " if ok else "FAIL") + f" tsm focus {sys.argv[4]}: eta {eta}, S M_x M_z {t}; one warp at that eta: {e}")
-sys.exit(0 if ok else 1)
+# The scheme asked for is named with its eta ("scheme eta" named the analysis' internals).
+head = open(sys.argv[2]).readline()
+named = f"scheme lispsm with eta {sys.argv[3]}," in head
+print(("ok  " if named else "FAIL") + f" --scheme lispsm --eta: {head.strip()}")
+sys.exit(0 if ok and named else 1)
 PY
 done
 check() {

@@ -490,13 +490,38 @@ TEST(GltfLoaderLimits, TooManyTrianglesAreRefusedBeforeReading) {
   const std::size_t half = 3 * ((std::size_t(1) << 24) + 1);
   writeFile(dir / "two.gltf",
             gltfText(R"({"mesh":0},{"mesh":0})", "0,1", triangleDataUri(), "", half));
-  expectRefused(dir / "two.gltf", {"16777217+ triangles (2 node instances", "about 7.7 GiB",
-                                   "over the limit of 4096 MiB (kMaxSceneBytes)"});
+  expectRefused(dir / "two.gltf", {"16777217+ triangles in 1+ primitives (2 node instances",
+                                   "about 7.7 GiB", "over the limit of 4096 MiB (kMaxSceneBytes)"});
   // 8 M triangles on one node: within both limits, refused only by the buffer it lacks.
   const std::size_t within = 3 * 8000000;
   writeFile(dir / "within.gltf", gltfText(R"({"mesh":0})", "0", triangleDataUri(), "", within));
   const SceneLoadResult r = loadGltf(dir / "within.gltf");
   EXPECT_EQ(r.error.find("kMaxSceneBytes"), std::string::npos) << r.error;
+}
+
+/// One node whose mesh has `count` primitives, each the one triangle.
+std::string primitivesText(std::size_t count) {
+  std::string prims;
+  for (std::size_t i = 0; i < count; ++i)
+    prims += std::string(i ? "," : "") + R"({"attributes":{"POSITION":0}})";
+  std::string text = gltfText(R"({"mesh":0})", "0");
+  const std::string one = R"("primitives":[{"attributes":{"POSITION":0}}])";
+  text.replace(text.find(one), one.size(), R"("primitives":[)" + prims + "]");
+  return text;
+}
+
+// A primitive costs its buffers and records besides its triangles (kBytesPerPrimitive, ~61
+// KiB): 100,000 one-triangle primitives (6 GB by it) are refused before anything is read;
+// 1,000 load.
+TEST(GltfLoaderLimits, ManySmallPrimitivesCountTheirOwnCost) {
+  fs::path dir = outDir("primitives");
+  writeFile(dir / "many.gltf", primitivesText(100000));
+  expectRefused(dir / "many.gltf", {"100000+ triangles in 100000+ primitives", "kBytesPerPrimitive",
+                                    "over the limit of 4096 MiB (kMaxSceneBytes)"});
+  writeFile(dir / "some.gltf", primitivesText(1000));
+  const SceneLoadResult r = loadGltf(dir / "some.gltf");
+  ASSERT_TRUE(r) << r.error;
+  EXPECT_EQ(r.scene->primitives.size(), 1000u);
 }
 
 // ---- many cameras --------------------------------------------------------------------------

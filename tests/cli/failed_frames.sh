@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A failed frame is never a measurement: a frame renderFrame refuses (here a camera 1e30 m
-# away, a suite orbit of 1e308 degrees per frame) is counted and named, left out of the
+# away) is counted and named, left out of the
 # medians and the Pareto fronts; a configuration with no frame that rendered is a failed row
 # with empty numbers; bench exits 1 naming it; chart leaves failed rows out; a suite whose
 # configuration failed frames fails.
@@ -84,26 +84,28 @@ s = json.load(open(sys.argv[1]))
 assert s == [{"configuration": "uniform", "failure": "frame 0: camera: position equals target"}], s
 ' "$out/compare/summary.json"
 
-# 2. A suite whose orbit overflows on frame 1: the case fails, the frame is named.
-cat >"$out/orbit.json" <<'JSON'
+# 2. A suite along that path (an orbit of 1e308 degrees a frame did it; orbits are bounded now):
+#    the case fails, the first failed frame named.
+cat >"$out/orbit.json" <<JSON
 {"size": [64, 36],
- "cases": [{"name": "overflowing-orbit", "scene": "plane-box", "motion": "orbit",
-            "orbit_deg_per_frame": 1e308, "frames": 3, "warmup_frames": 0,
+ "cases": [{"name": "path-out-of-range", "scene": "$out/every-frame-fails.gltf", "motion": "path",
+            "path": "dolly", "light": {"azimuth_deg": 30, "elevation_deg": 45},
+            "frames": 3, "warmup_frames": 0,
             "techniques": ["uniform"],
             "expect": [{"technique": "uniform", "metric": "gl_errors", "op": "==", "value": 0},
                        {"technique": "uniform", "metric": "total_ms", "op": ">", "value": 0}]}]}
 JSON
 "$cli" stability --suite "$out/orbit.json" --json "$out/orbit-out.json" >"$out/orbit.txt" 2>&1
 check "suite: exits 1" test $? -eq 1
-check "suite: the configuration fails, frame 1 named" \
-  grep -q "FAIL: uniform renders every frame (2 of 3 frames failed, first frame 1: camera" "$out/orbit.txt"
+check "suite: the configuration fails, frame 0 named" \
+  grep -q "FAIL: uniform renders every frame (3 of 3 frames failed, first frame 0: camera" "$out/orbit.txt"
 check "suite: an expectation on the failed configuration fails" \
   grep -q "FAIL: uniform total_ms > 0" "$out/orbit.txt"
 check "suite: the JSON names the failed configuration and counts its frames" python3 -c '
 import json, sys
 case = json.load(open(sys.argv[1]))["cases"][0]
 t = case["techniques"]["uniform"]
-assert t["render_errors"] == 2 and t["failure"].startswith("frame 1: camera"), t
+assert t["render_errors"] == 3 and t["failure"].startswith("frame 0: camera"), t
 assert case["failed_configurations"][0]["technique"] == "uniform", case
 ' "$out/orbit-out.json"
 

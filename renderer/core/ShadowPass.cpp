@@ -137,10 +137,10 @@ std::optional<std::string> DepthMapArray::sizeError(int resolution, int layers,
                                                     const std::string& lower) {
   const std::uint64_t bytes =
       4ull * std::uint64_t(resolution) * std::uint64_t(resolution) * std::uint64_t(layers);
-  if (bytes <= kMaxBytes) return std::nullopt;
+  if (bytes <= kMaxDepthMapArrayBytes) return std::nullopt;
   return what + " of " + std::to_string(resolution) + "^2 need " + std::to_string(bytes >> 20) +
-         " MiB of depth maps, more than the " + std::to_string(kMaxBytes >> 20) +
-         " MiB one array may take (DepthMapArray::kMaxBytes); lower " + lower;
+         " MiB of depth maps, more than the " + std::to_string(kMaxDepthMapArrayBytes >> 20) +
+         " MiB one array may take (kMaxDepthMapArrayBytes); lower " + lower;
 }
 
 void DepthMapArray::ensure(int resolution, int layers, const std::string& what,

@@ -106,27 +106,27 @@ DepthMapView focusedMapView(const FrameContext& ctx, const LightFit& fit, bool l
 /// Throws std::logic_error for more than SL_MAX_DEPTH_MAPS maps.
 void bindDepthLookup(const gl::Program& resolve, std::span<const DepthMapView> maps);
 
+/// The largest array of depth maps a technique allocates (DepthMapArray): Mesa's llvmpipe
+/// completes the framebuffer of a 2 GiB array (cascades, 2 x 16384^2) and not of a 3 GiB one
+/// (3 x 16384^2: incomplete attachment, status 0x36054).
+inline constexpr std::uint64_t kMaxDepthMapArrayBytes = 2ull << 30;
+
 /// An array of square depth maps (DEPTH_COMPONENT32F, one layer per map: cascades, faces,
 /// cube faces, paraboloid halves) with a framebuffer per layer and one over every layer (for
 /// layered rendering), reallocated only when the resolution or the layer count changes.
 class DepthMapArray {
  public:
-  /// The largest array allocated: beyond it ensure() refuses (a message, nothing allocated).
-  /// Mesa's llvmpipe completes the framebuffer of a 2 GiB array (cascades, 2 x 16384^2) and
-  /// not of a 3 GiB one (3 x 16384^2: incomplete attachment, status 0x36054).
-  static constexpr std::uint64_t kMaxBytes = 2ull << 30;
-
   /// "<what> of <res>^2 need <N> MiB of depth maps, more than the <M> MiB one array may take
-  /// (DepthMapArray::kMaxBytes); lower <lower>" when `layers` maps of `resolution`^2 exceed
-  /// kMaxBytes, else nothing. No GL: a technique's checkParams refuses the parameters with it
-  /// before the first frame (the worst case of its maps), and ensure() before allocating.
+  /// (kMaxDepthMapArrayBytes); lower <lower>" when `layers` maps of `resolution`^2 exceed
+  /// kMaxDepthMapArrayBytes, else nothing. No GL: a technique's checkParams refuses the parameters
+  /// with it before the first frame (the worst case of its maps), and ensure() before allocating.
   static std::optional<std::string> sizeError(int resolution, int layers, const std::string& what,
                                               const std::string& lower);
 
   /// (Re)allocates `layers` maps of `resolution`^2. `what` names them in messages and
   /// framebuffer labels ("cascades: 4 partitions"); `lower` says what to lower when the
-  /// array would exceed kMaxBytes ("resolution or partitions"): std::runtime_error with
-  /// sizeError's message.
+  /// array would exceed kMaxDepthMapArrayBytes ("resolution or partitions"): std::runtime_error
+  /// with sizeError's message.
   void ensure(int resolution, int layers, const std::string& what, const std::string& lower);
   explicit operator bool() const { return bool(maps_); }
   const gl::Texture& texture() const { return maps_; }

@@ -2,8 +2,9 @@
 # "Not measured" is a value, never 0: a stability run of one frame has no mask or rotation
 # changes to count (null in its JSON, n/a in its line), nor flicker; bench over one frame has
 # an empty flicker cell and prints n/a; a suite whose camera sees only sky (hostile fixture
-# suite-sky-only.json) does not pass "aliasing_max < 1": the expectation is not measured and
-# the case, having checked nothing, fails (exit 1).
+# suite-sky-only.json) does not pass "aliasing_max < 1", nor does a 64^2 map "beat" the default
+# map on aliasing: both expectations are not measured and the case, having checked nothing,
+# fails (exit 1).
 set -uo pipefail
 cli=$1 out=$3/not_measured
 here=$(cd "$(dirname "$0")" && pwd)
@@ -45,14 +46,18 @@ rc=0
 [ $rc -eq 1 ] || { echo "FAIL: sky suite exited $rc, expected 1"; cat "$out/sky.txt"; fail=1; }
 grep -q "skipped: uniform aliasing_max < 1: not measured (no covered pixel with a shadow-map coordinate)" \
   "$out/sky.txt" || { echo "FAIL: sky: no not-measured line"; cat "$out/sky.txt"; fail=1; }
+grep -q "skipped: uniform 64 aliasing_mean < uniform aliasing_mean: not measured" "$out/sky.txt" ||
+  { echo "FAIL: sky: the pair was not skipped as not measured"; cat "$out/sky.txt"; fail=1; }
 grep -q "FAIL: the case checks at least one of its expectations" "$out/sky.txt" ||
   { echo "FAIL: sky: the case did not fail"; fail=1; }
 python3 - "$out/sky.json" <<'PY' || fail=1
 import json, sys
 j = json.load(open(sys.argv[1]))
-t = j["cases"][0]["techniques"]["uniform"]
-assert t["aliasing_max"] is None and t["error_pct"] is None, t
+for label in ("uniform", "uniform 64"):
+    t = j["cases"][0]["techniques"][label]
+    assert t["aliasing_max"] is None and t["aliasing_mean"] is None and t["error_pct"] is None, t
 assert j["passed"] == 0, j["passed"]
+assert [e["status"] for e in j["cases"][0]["expectations"]][:2] == ["skipped", "skipped"], j["cases"][0]
 print("ok: sky suite: aliasing and error null, nothing passed")
 PY
 [ $fail -eq 0 ] && echo "ok: not measured"

@@ -78,8 +78,9 @@ bad param "claims[0].measure.a: technique 'uniform' has no parameter 'resolutoin
 bad storage "claims[0].measure.storage: --scheme: unknown 'fast'" "$head\"measure\": {\"kind\": \"cpu\", \"storage\": [\"--scheme\", \"fast\"], \"value\": \"s\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
 bad json "not valid JSON" "$head"
 bad camera "claims[0].measure.camera: missing (a publication is measured from a still camera)" "$head\"measure\": {\"kind\": \"publication\", \"scene\": \"diagonal\", \"a\": {\"technique\": \"da-rtw\"}, \"number\": \"rotation.deg\", \"statistic\": \"max\"}, \"expect\": {\"op\": \"<\", \"value\": 1}}]}"
-# A claim that could not be measured (a pass no technique times) and a scene name that is a
-# command: exit 1, "not measured", and the report's commands quoted.
+# Claims that could not be measured (a pass no technique times; an error and an aliasing "< 1"
+# from a camera that sees only sky, hostile fixture sky-view.gltf: they were "reproduced" with
+# 0) and a scene name that is a command: exit 1, "not measured", and the report's commands quoted.
 cat >"$out/unmeasured.json" <<'JSON'
 {"seed": "004", "source": "t", "claims": [
  {"id": "no-pass", "words": "w", "paper_number": "1",
@@ -90,8 +91,18 @@ cat >"$out/unmeasured.json" <<'JSON'
  {"id": "quoted", "words": "w", "paper_number": "1",
   "measure": {"kind": "error-compare", "scene": "`touch INJECTED`x",
               "a": {"technique": "uniform"}, "quick": {"size": "64x36", "frames": 2, "warmup": 0}},
+  "expect": {"op": "<", "value": 1}},
+ {"id": "sky-error", "words": "w", "paper_number": "1",
+  "measure": {"kind": "error-compare", "scene": "SKY", "camera": "eye",
+              "a": {"technique": "uniform"}, "quick": {"size": "64x36", "frames": 2, "warmup": 0}},
+  "expect": {"op": "<", "value": 1}},
+ {"id": "sky-aliasing", "words": "w", "paper_number": "1",
+  "measure": {"kind": "error-compare", "scene": "SKY", "camera": "eye", "metric": "aliasing_p95",
+              "a": {"technique": "uniform"}, "quick": {"size": "64x36", "frames": 2, "warmup": 0}},
   "expect": {"op": "<", "value": 1}}]}
 JSON
+sky=$(cd "$(dirname "$0")/../fixtures/hostile" && pwd)/sky-view.gltf
+sed -i "s|\"SKY\"|\"$sky\"|" "$out/unmeasured.json"
 rc=0
 "$cli" reproduce --quick --claims "$out/unmeasured.json" --out "$out/unmeasured" >/dev/null 2>&1 || rc=$?
 [ $rc -eq 1 ] || { echo "FAIL: a claim not measured: exit $rc, expected 1"; fail=1; }
@@ -99,7 +110,9 @@ mkdir -p "$out/paste"
 python3 - "$out/unmeasured/report.json" "$out/paste" <<'PY' || fail=1
 import json, os, subprocess, sys
 rep, sandbox = json.load(open(sys.argv[1])), sys.argv[2]
-assert [e["verdict"] for e in rep] == ["not measured", "not measured"], [e["verdict"] for e in rep]
+assert [e["verdict"] for e in rep] == ["not measured"] * 4, [e["verdict"] for e in rep]
+for e in rep[2:]:
+    assert "not measured (no covered pixel)" in json.dumps(e), e
 scene = "`touch INJECTED`x"
 for e in rep:
     for cmd in e["commands"]:

@@ -246,14 +246,9 @@ void PresenterMode::arrangeDocks() {
 
 void PresenterMode::keepOnScreen() {
   if (!active_ || fullPanel_) return;
-  if (big_ && fedSinceArranged_ < kMaxKeepOnScreen) {
+  if (big_ && fedSinceArranged_ < kFeedsResized) {
     ++fedSinceArranged_;
-    if (big_->width() > int(w_.width() * kPanelShare) + 1) {
-      const QSize view = w_.viewport()->size();
-      sizeBigDock();
-      w_.layout()->activate();
-      if (w_.viewport()->size() != view) w_.lessons()->settleAgain();
-    }
+    if (big_->width() > int(w_.width() * kPanelShare) + 1) resizeView([this] { sizeBigDock(); });
   }
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
   if (!screen) return;
@@ -263,10 +258,16 @@ void PresenterMode::keepOnScreen() {
   // A few times per arrangement at most: a window that cannot fit does not loop.
   const int tries = keptOnScreen_;
   if (tries >= kMaxKeepOnScreen) return;
+  resizeView([this] {
+    arrangeDocks();
+    fitScreen();
+  });
+  keptOnScreen_ = tries + 1;  // arrangeDocks counted from 0 again
+}
+
+void PresenterMode::resizeView(const std::function<void()>& change) {
   const QSize view = w_.viewport()->size();
-  arrangeDocks();
-  fitScreen();
-  keptOnScreen_ = tries + 1;
+  change();
   w_.layout()->activate();
   if (w_.viewport()->size() != view)
     w_.lessons()->settleAgain();  // a lesson's rotation settles again at the view's new size

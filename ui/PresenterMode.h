@@ -11,6 +11,8 @@
 // Explicit fonts follow the body size through Theme.h's bodyRelativeFont / followBodyFont.
 #pragma once
 
+#include <functional>
+
 #include <QByteArray>
 #include <QFont>
 #include <QList>
@@ -80,6 +82,9 @@ class PresenterMode : public QObject {
  private:
   void arrangeDocks();
   void sizeBigDock();
+  /// Runs `change` (a re-arrangement or a new width of the big panel) and lays the window out;
+  /// a lesson whose view changed size settles again.
+  void resizeView(const std::function<void()>& change);
   void fitScreen();
   QDockWidget* pickBigDock() const;
 
@@ -100,6 +105,8 @@ class PresenterMode : public QObject {
   int keptOnScreen_ = 0;      ///< times keepOnScreen re-arranged since the last arrangement
   int fedSinceArranged_ = 0;  ///< frames fed to the panels since the last arrangement
   static constexpr int kMaxKeepOnScreen = 3;
+  /// The frames after an arrangement that may give the big panel its share of the width again.
+  static constexpr int kFeedsResized = 3;
 };
 
 }  // namespace sl::ui

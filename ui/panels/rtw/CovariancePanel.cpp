@@ -78,12 +78,6 @@ class ThresholdGauge : public QWidget {
   }
   /// Called with the threshold at a click or drag on the track.
   void setOnChosen(std::function<void(double)> onChosen) { onChosen_ = std::move(onChosen); }
-  /// The threshold a click at x (widget pixels) sets.
-  double thresholdAt(double x) const {
-    const QRectF t = track();
-    const double f = std::clamp((x - t.left()) / std::max(1.0, t.width()), 0.0, 1.0);
-    return 1.0 - std::pow(10.0, kL0 + f * (kL1 - kL0));
-  }
   /// Where the value of 1 - e_x = `oneMinus` sits on the track (widget pixels).
   double xOfOneMinus(double oneMinus) const {
     const QRectF t = track();
@@ -161,8 +155,12 @@ class ThresholdGauge : public QWidget {
     const int line = fontMetrics().height();
     return QRectF(8, line + 6, width() - 16, line + 4);
   }
+  /// A click at x (widget pixels) sets 1 - threshold to the scale's value there.
   void choose(QMouseEvent* e) {
-    if (onChosen_) onChosen_(thresholdAt(e->position().x()));
+    const QRectF t = track();
+    const double f =
+        std::clamp((e->position().x() - t.left()) / std::max(1.0, t.width()), 0.0, 1.0);
+    if (onChosen_) onChosen_(1.0 - std::pow(10.0, kL0 + f * (kL1 - kL0)));
   }
   double ex_ = 1.0, threshold_ = 0.9999;
   bool valid_ = false;

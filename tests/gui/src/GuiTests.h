@@ -186,6 +186,7 @@ class GuiTests : public QObject {
   bool lessonClaims(const QString& dir);
   /// lesson-claims' checks of the lesson open now (index into the Lessons menu).
   void checkOpenLesson(int index, const QString& dir);
+  void lessonReadable(const sl::PresetLayout& layout);
   void lessonLayout(const sl::PresetLayout& layout);
   /// A lesson's strip: in view and whole, an editor per key; none without one.
   void lessonStrip(const sl::PresetLayout& layout);

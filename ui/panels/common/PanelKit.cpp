@@ -493,6 +493,12 @@ PlotWidget::PlotWidget(QWidget* parent) : QWidget(parent) {
   setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
 }
 
+void PlotWidget::setTitle(const QString& title) {
+  if (title_ == title) return;
+  title_ = title;
+  update();
+}
+
 void PlotWidget::setAxisLabels(const QString& x, const QString& y) {
   xLabel_ = x;
   yLabel_ = y;
@@ -500,8 +506,12 @@ void PlotWidget::setAxisLabels(const QString& x, const QString& y) {
 }
 
 void PlotWidget::setSeries(std::vector<Series> series) {
+  const bool sameNames =
+      std::equal(series.begin(), series.end(), series_.begin(), series_.end(),
+                 [](const Series& a, const Series& b) { return a.name == b.name; });
   series_ = std::move(series);
   update();
+  if (!sameNames) updateGeometry();  // the legend's rows
 }
 
 void PlotWidget::setLines(std::vector<Line> lines) {
@@ -553,10 +563,33 @@ int PlotWidget::titleHeight() const {
   return std::max(fontMetrics().height(), bounds.height());
 }
 
+std::vector<QRectF> PlotWidget::legendLayout(double top, int* height) const {
+  const QFontMetrics fm = fontMetrics();
+  const int line = fm.height();
+  std::vector<QRectF> entries;
+  double x = 6.0, y = top;
+  const double right = width() - 6.0;
+  for (const Series& s : series_) {
+    if (s.name.isEmpty()) continue;
+    const double w = 24.0 + fm.horizontalAdvance(s.name) + 4.0;  // the sample line, the name
+    if (x > 6.0 && x + w > right) x = 6.0, y += line;            // wrap
+    entries.emplace_back(x, y, w, line);
+    x += w + 12.0;
+  }
+  if (height) *height = entries.empty() ? 0 : static_cast<int>(y - top) + line + 2;
+  return entries;
+}
+
+std::vector<QRectF> PlotWidget::legendEntries() const {
+  return legendLayout(titleHeight() + 4, nullptr);
+}
+
 QRectF PlotWidget::plotArea() const {
   const int line = fontMetrics().height();
   const int left = fontMetrics().horizontalAdvance(QStringLiteral("-0.0000")) + 12;
-  return QRectF(rect()).adjusted(left, titleHeight() + 8, -10, -(2 * line + 8));
+  int legend = 0;
+  legendLayout(titleHeight() + 4, &legend);
+  return QRectF(rect()).adjusted(left, titleHeight() + 8 + legend, -10, -(2 * line + 8));
 }
 
 PlotWidget::Ranges PlotWidget::ranges() const {
@@ -725,17 +758,19 @@ void PlotWidget::paintEvent(QPaintEvent*) {
   }
   p.restore();
 
-  // Legend (top right) and hover readout (top left).
-  int ly = static_cast<int>(a.top()) + 4;
-  for (const Series& s : series_) {
-    if (s.name.isEmpty()) continue;
-    const int tw = fm.horizontalAdvance(s.name);
-    const int x = static_cast<int>(a.right()) - tw - 30;
-    p.setPen(QPen(s.color, 2, s.style));
-    p.drawLine(x, ly + line / 2, x + 20, ly + line / 2);
-    p.setPen(pal.color(QPalette::Text));
-    p.drawText(x + 24, ly, tw + 4, line, Qt::AlignLeft | Qt::AlignVCenter, s.name);
-    ly += line;
+  // Legend (its own band under the title) and hover readout (top left of the curves).
+  {
+    const std::vector<QRectF> entries = legendEntries();
+    std::size_t i = 0;
+    for (const Series& s : series_) {
+      if (s.name.isEmpty()) continue;
+      const QRectF& e = entries[i++];
+      const double y = e.center().y();
+      p.setPen(QPen(s.color, 2, s.style));
+      p.drawLine(QPointF(e.left(), y), QPointF(e.left() + 20, y));
+      p.setPen(pal.color(QPalette::Text));
+      p.drawText(e.adjusted(24, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, s.name);
+    }
   }
   if (hoverX_ >= a.left() && hoverX_ <= a.right()) {
     const double x = r.x0 + (hoverX_ - a.left()) / a.width() * (r.x1 - r.x0);

@@ -114,6 +114,8 @@ class ImageView : public QWidget {
 
   QSize sizeHint() const override { return {320, 300}; }
   QSize minimumSizeHint() const override { return {120, 110}; }
+  /// The size an image is readable at from the back of a lecture hall, on its longer side.
+  static constexpr int kReadableSide = 160;
 
  protected:
   void paintEvent(QPaintEvent* event) override;
@@ -186,7 +188,7 @@ class PlotWidget : public QWidget {
 
   explicit PlotWidget(QWidget* parent = nullptr);
 
-  void setTitle(const QString& title) { title_ = title, update(); }
+  void setTitle(const QString& title);
   void setAxisLabels(const QString& x, const QString& y);
   void setSeries(std::vector<Series> series);
   void setLines(std::vector<Line> lines);
@@ -199,8 +201,16 @@ class PlotWidget : public QWidget {
   void setPlaceholder(const QString& text);
   void setHighlighted(bool on);
   const std::vector<Series>& series() const { return series_; }
+  /// Where the curves are drawn and where the legend's entries stand (widget pixels): the
+  /// legend has a band of its own between the title and the curves, never over them.
+  QRectF curveArea() const { return plotArea(); }
+  std::vector<QRectF> legendEntries() const;
 
   QSize sizeHint() const override { return {320, 190}; }
+  /// The size a plot is readable at from the back of a lecture hall: the widget, and the
+  /// curves under its title and legend.
+  static constexpr int kReadableHeight = 120;
+  static constexpr int kReadableCurves = 60;
   QSize minimumSizeHint() const override { return {140, 100}; }
 
  protected:
@@ -215,6 +225,9 @@ class PlotWidget : public QWidget {
   Ranges ranges() const;
   QRectF plotArea() const;
   int titleHeight() const;  ///< the title wrapped to the widget's width (never cut)
+  /// The legend's entries laid out left to right, wrapping, in a band starting at `top`;
+  /// `height` is the band's.
+  std::vector<QRectF> legendLayout(double top, int* height) const;
   QString fullTitle() const;
   double yToT(double y, const Ranges& r) const;
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <memory>
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QJsonArray>
 #include <QLabel>
 #include <QPainter>
@@ -36,11 +36,21 @@ QString cell(double v) {
 }
 
 constexpr int kMaxDisplayTexels = 512;  ///< larger maps are point-sampled for display
+constexpr int kMapSpacing = 2;          ///< px between two maps (each is framed in its colour)
+constexpr int kPanelMargins = 16;       ///< px: the content's margins and the dock's frame
 
 /// The partition overlay's colour of map `i` (algo/PartitionColours).
 QColor partitionQColor(int i) {
   const glm::vec3 c = partitionColour(i);
   return QColor::fromRgbF(c.r, c.g, c.b);
+}
+
+/// The numbered causes of the warp column's fallbacks, one line each ("" without any).
+QString notesText(const QStringList& notes) {
+  QString text;
+  for (qsizetype i = 0; i < notes.size(); ++i)
+    text += QObject::tr("(%1) uniform: %2<br>").arg(i + 1).arg(notes[i]);
+  return text;
 }
 
 double number(const sl::Publication& pub, const std::string& key, double fallback = -1.0) {
@@ -52,12 +62,19 @@ PartitionsPanel::PartitionsPanel(QWidget* parent) : PublicationPanel(parent) {
   auto* content = new QWidget;
   auto* layout = new QVBoxLayout(content);
   layout->setContentsMargins(4, 4, 4, 4);
-  maps_ = new QHBoxLayout;
+  maps_ = new QGridLayout;
+  maps_->setSpacing(kMapSpacing);
   layout->addLayout(maps_, 1);
   table_ = new QLabel;
   table_->setObjectName(QStringLiteral("partitionTable"));
   table_->setTextFormat(Qt::RichText);
   table_->setWordWrap(true);
+  table_->setToolTip(
+      tr("m: texels per pixel over last frame's pixels that selected the map (p95 to 1/8 "
+         "octave). Dashed (cyan) on each map: its slice of the view frustum. Colours as the "
+         "view's partition overlay. partition.warp: warped maps are fitted tightly, not "
+         "stabilised (their texels change size along the warp); only uniform partitions are "
+         "stabilised."));
   layout->addWidget(table_);
   setContent(content);
 }
@@ -74,11 +91,16 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
   while (int(views_.size()) < k) {
     auto* v = new ImageView;
     v->setObjectName(QStringLiteral("partitionMap%1").arg(views_.size()));
-    maps_->addWidget(v);
+    // Its width follows the panel's (arrangeMaps puts as many in a row as the width holds at
+    // their minimum): a row of maps never holds the panel at the width it was arranged for.
+    v->setMinimumWidth(1);
     views_.push_back(v);
   }
+  shown_ = k;
+  arrangeMaps();
   QJsonArray parts;
   QString rows;
+  QStringList notes;     // the fallbacks' causes, numbered in the warp column
   bool anyWarp = false;  // a partition asked for a warp (warped or fell back)
   for (int i = 0; i < int(views_.size()); ++i) {
     ImageView* v = views_[size_t(i)];
@@ -145,8 +167,12 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
     } else if (cause > 0) {
       const auto c =
           sl::warp::FallbackCause(std::clamp(cause, 0, int(sl::warp::FallbackCause::Degenerate)));
-      warpText =
-          tr("uniform: %1").arg(QString::fromUtf8(sl::warp::fallbackCauseText(c)).toHtmlEscaped());
+      // A cause is a sentence: numbered here, written out under the table (a column of
+      // sentences makes every row as tall as its cause).
+      const QString because = QString::fromUtf8(sl::warp::fallbackCauseText(c)).toHtmlEscaped();
+      qsizetype note = notes.indexOf(because);
+      if (note < 0) note = (notes << because, notes.size() - 1);
+      warpText = tr("uniform (%1)").arg(note + 1);
       anyWarp = true;
     }
     rows += QStringLiteral(
@@ -176,22 +202,37 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
   const double dn = number(pub, "depth.near"), df = number(pub, "depth.far");
   const bool fitted = number(pub, "depth.fitted", 0.0) > 0.5;
   table_->setText(
-      tr("<table cellspacing=6><tr><th>map</th><th>depth (m)</th>"
+      tr("<table cellspacing=2 cellpadding=2><tr><th>map</th><th>depth (m)</th>"
          "<th>width (m)</th><th>texels</th><th>texels/m</th><th>m p95</th>"
-         "<th>m max</th><th>warp</th></tr>%1</table>Split range %2 – %3 m (%4). m: "
-         "texels per pixel over last frame's pixels that selected the map (p95 to "
-         "1/8 octave). Dashed (cyan): each map's slice of the view frustum. Colours as the "
-         "view's <i>partition</i> overlay.%5")
+         "<th>m max</th><th>warp</th></tr>%1</table>%6Split range %2 – %3 m (%4).%5")
           .arg(rows, formatValue(dn), formatValue(df),
                fitted ? tr("fitted to last frame's G-buffer depths")
                       : tr("view frustum ∩ scene bounds"),
-               anyWarp ? tr(" <b>partition.warp</b>: warped maps are fitted tightly, "
-                            "not stabilised (their texels change size along the "
-                            "warp); only uniform partitions are stabilised.")
-                       : QString()));
+               anyWarp ? tr(" Warped maps are fitted tightly, not stabilised.") : QString(),
+               notesText(notes)));
   drawn_ = {{QStringLiteral("partitions"), k},       {QStringLiteral("depth_near_m"), dn},
             {QStringLiteral("depth_far_m"), df},     {QStringLiteral("depth_fitted"), fitted},
             {QStringLiteral("warp_asked"), anyWarp}, {QStringLiteral("parts"), parts}};
+}
+
+void PartitionsPanel::resizeEvent(QResizeEvent* event) {
+  PublicationPanel::resizeEvent(event);
+  arrangeMaps();
+}
+
+void PartitionsPanel::arrangeMaps() {
+  if (views_.empty()) return;
+  const int spacing = std::max(0, maps_->horizontalSpacing());
+  const int each = views_.front()->minimumSizeHint().width() + spacing;
+  const int room = std::max(1, width() - kPanelMargins + spacing);
+  const int columns = std::clamp(room / std::max(1, each), 1, std::max(1, shown_));
+  if (columns == columns_ && maps_->count() == shown_) return;
+  columns_ = columns;
+  for (ImageView* v : views_) maps_->removeWidget(v);
+  for (int c = 0; c < maps_->columnCount(); ++c) maps_->setColumnStretch(c, 0);
+  for (int i = 0; i < shown_ && i < int(views_.size()); ++i)
+    maps_->addWidget(views_[size_t(i)], i / columns, i % columns);
+  for (int c = 0; c < columns; ++c) maps_->setColumnStretch(c, 1);
 }
 
 void PartitionsPanel::highlightPass(const QString& passId) {

@@ -1,6 +1,7 @@
-// The Partitions panel: every partition's depth map side by side, framed in its colour of
-// the view's partition overlay, captioned with its split distances, texel count and texels
-// per metre; a table of the same numbers below.
+// The Partitions panel: every partition's depth map, side by side in as many rows as the
+// panel's width needs for each to stay at its minimum size, framed in its colour of the
+// view's partition overlay, captioned with its split distances; a table of their numbers
+// below (a map's fallback to a uniform warp as a numbered note under it).
 #pragma once
 
 #include <vector>
@@ -9,7 +10,7 @@
 #include "panels/partition/PartitionPanelKeys.h"
 
 class QLabel;
-class QHBoxLayout;
+class QGridLayout;
 
 namespace sl::ui {
 
@@ -24,8 +25,16 @@ class PartitionsPanel : public PublicationPanel {
   void highlightPass(const QString& passId) override;
   QJsonObject drawnValues() const override;
 
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
  private:
-  QHBoxLayout* maps_ = nullptr;
+  /// The shown maps in rows of as many as the width holds at their minimum width.
+  void arrangeMaps();
+
+  QGridLayout* maps_ = nullptr;
+  int shown_ = 0;    ///< maps shown (the frame's partition count)
+  int columns_ = 0;  ///< as arranged
   std::vector<ImageView*> views_;
   QLabel* table_ = nullptr;
   QJsonObject drawn_;

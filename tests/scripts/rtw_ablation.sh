@@ -35,10 +35,6 @@ fi
 expect_content "the tables failed" "$box/out/ablation.md" old
 expect_no_temporary "the tables failed" "$box/out"
 
-if timeout 20 "$box/root/scripts/rtw-ablation.sh" "$box/out" diagonal >/dev/null &&
-  grep -q '^\*\*`diagonal`\*\*' "$box/out/ablation.md"; then
-  ok "a good run wrote the tables"
-else
-  failed "a good run: no tables in ablation.md"
-fi
+expect_good_run "a good run" "$box/out/ablation.md" '^\*\*`diagonal`\*\*' \
+  root/scripts/rtw-ablation.sh "$box/out" diagonal
 finish

@@ -3,7 +3,8 @@
 # repository's scripts/ under $box/root (the scripts find their files from where they lie, so
 # nothing of the repository can be overwritten), a stub shadowlab-cli ($stub_cli) that records
 # each call in $box/cli.calls and writes the files its --csv, --chart, --out and --metrics name
-# (a CSV row for --csv; STUB_NO_CSV=1: none), and checks that print "ok ..." or "FAIL ...".
+# (a CSV row for --csv; STUB_NO_CSV=1: none), a scene file $scene, and checks that print
+# "ok ..." or "FAIL ...".
 # usage: source sandbox.bash REPOSITORY OUTDIR
 set -uo pipefail
 repo=$1 box=$2
@@ -29,6 +30,9 @@ done
 echo "stub bench output"
 EOF
 chmod +x "$stub_cli"
+mkdir -p "$box/scenes"
+scene=$box/scenes/room.gltf
+echo '{"asset": {"version": "2.0"}}' >"$scene"
 fail=0
 
 ok() { echo "ok   $*"; }
@@ -66,11 +70,37 @@ expect_content() {
   fi
 }
 
+# expect_link_refused WHAT LINK INPUT 'message part' COMMAND...: with LINK a symbolic link to
+# the file INPUT, COMMAND is refused (expect_refused) and INPUT keeps its content; LINK is
+# removed after.
+expect_link_refused() {
+  local what=$1 link=$2 input=$3 part=$4 before
+  shift 4
+  before=$(cat "$input")
+  ln -s "$input" "$link"
+  expect_refused "$what" "$part" "$@"
+  expect_content "$what" "$input" "$before"
+  rm -f "$link"
+}
+
 # expect_no_temporary WHAT DIR: no temporary file (a hidden .NAME.XXXXXX) is left in DIR.
 expect_no_temporary() {
   local left
   left=$(find "$2" -name '.*.*' 2>/dev/null | head -n 3)
   if [[ -z $left ]]; then ok "$1: no temporary file left"; else failed "$1: left $left"; fi
+}
+
+# expect_good_run WHAT FILE PATTERN COMMAND...: COMMAND succeeds within 20 s, FILE holds a line
+# matching PATTERN (grep) and no temporary file is left in $box/out.
+expect_good_run() {
+  local what=$1 file=$2 pattern=$3
+  shift 3
+  if (cd "$box" && timeout 20 "$@") >/dev/null 2>&1 && grep -q -- "$pattern" "$file"; then
+    ok "$what: '$file' written"
+  else
+    failed "$what: the run failed or '$file' does not hold '$pattern'"
+  fi
+  expect_no_temporary "$what" "$box/out"
 }
 
 finish() {

@@ -8,19 +8,51 @@
 # lesson, the window and the screen). docs/lecturer/lessons.md shows the grabs in
 # docs/images/lessons/.
 # LESSONS (default "*") chooses lessons by name pattern, e.g. LESSONS="06-* 07-*".
+# The PNGs follow the output policy (scripts/lib/output.sh): one that is a lesson file, a folder,
+# a FIFO or a device is refused before the first grab (exit 2); each is replaced only when its
+# grab succeeded, never half-copied.
 # usage: scripts/grab_lessons.sh OUTDIR [path/to/shadowlab] [frames before the grab (3)]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+source "$root/scripts/lib/output.sh"
 out=${1:?usage: scripts/grab_lessons.sh OUTDIR [shadowlab] [frames]}
 app=${2:-$root/build/app/shadowlab}
 frames=${3:-3}
 sizes=(${SIZES:-1920x1080 1280x800})
 [[ -x "$app" ]] || { echo "grab_lessons: no executable $app (build first)" >&2; exit 1; }
-mkdir -p "$out"
+output_folder OUTDIR "$out"
 out=$(cd "$out" && pwd)
+# The shots: every chosen lesson, and its other cases as <lesson>-case<K>.
+shots=()
+for json in "$root"/scenes/lessons/*.json; do
+  name=$(basename "$json" .json)
+  chosen=0
+  read -ra patterns <<<"${LESSONS:-*}"
+  for pattern in "${patterns[@]}"; do
+    # shellcheck disable=SC2053  # the pattern is a glob on purpose
+    [[ $name == $pattern ]] && chosen=1
+  done
+  [[ $chosen -eq 1 ]] || continue
+  output_input "the lesson" "$json"
+  cases=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1])).get("cases", [])))' "$json")
+  for k in $(seq 1 $((cases > 1 ? cases : 1))); do
+    shot=$name
+    [[ $k -gt 1 ]] && shot=$name-case$k
+    shots+=("$name $k $shot")
+  done
+done
+output_input "the program" "$app"
+# Every PNG of every size, checked before the first grab.
+first=1
+for size in "${sizes[@]}"; do
+  dest=$out
+  [[ $first -eq 0 ]] && dest=$out/$size
+  for entry in "${shots[@]}"; do output_check "the grab" "$dest/${entry##* }.png"; done
+  first=0
+done
 source "$root/tests/gui/xvfb.bash"
 work=$(mktemp -d "${TMPDIR:-/tmp}/shadowlab-grab-lessons.XXXXXX")
-trap 'rm -rf "$work"; stop_xvfb' EXIT
+trap 'rm -rf "$work"; stop_xvfb; output_cleanup' EXIT
 # The size of a PNG (its IHDR), without an image library.
 png_size() {
   python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print("%dx%d" % struct.unpack(">II", d[16:24]))' "$1"
@@ -32,36 +64,23 @@ for size in "${sizes[@]}"; do
   start_xvfb
   dest=$out
   [[ $first -eq 0 ]] && dest=$out/$size
-  mkdir -p "$dest"
-  for json in "$root"/scenes/lessons/*.json; do
-    name=$(basename "$json" .json)
-    chosen=0
-    read -ra patterns <<<"${LESSONS:-*}"
-    for pattern in "${patterns[@]}"; do
-      # shellcheck disable=SC2053  # the pattern is a glob on purpose
-      [[ $name == $pattern ]] && chosen=1
-    done
-    [[ $chosen -eq 1 ]] || continue
-    cases=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1])).get("cases", [])))' "$json")
-    for k in $(seq 1 $((cases > 1 ? cases : 1))); do
-      shot=$name
-      [[ $k -gt 1 ]] && shot=$name-case$k
-      rm -rf "${work:?}/$shot"
-      if timeout 300 "$app" --lesson "$name" --lesson-case "$k" --presenter --grab "$work/$shot" \
-        --grab-after "$frames" >"$work/$shot.log" 2>&1 && [[ -f "$work/$shot/window.png" ]]; then
-        got=$(png_size "$work/$shot/window.png")
-        if (( ${got%x*} > ${size%x*} || ${got#*x} > ${size#*x} )); then
-          echo "grab_lessons: $shot: the window ($got) is larger than the ${size} screen" >&2
-          fail=1
-        fi
-        cp "$work/$shot/window.png" "$dest/$shot.png"
-        echo "$dest/$shot.png ($got)"
-      else
-        echo "grab_lessons: $shot at $size failed:" >&2
-        tail -n 20 "$work/$shot.log" >&2
+  for entry in "${shots[@]}"; do
+    read -r name k shot <<<"$entry"
+    rm -rf "${work:?}/$shot"
+    if timeout 300 "$app" --lesson "$name" --lesson-case "$k" --presenter --grab "$work/$shot" \
+      --grab-after "$frames" >"$work/$shot.log" 2>&1 && [[ -f "$work/$shot/window.png" ]]; then
+      got=$(png_size "$work/$shot/window.png")
+      if (( ${got%x*} > ${size%x*} || ${got#*x} > ${size#*x} )); then
+        echo "grab_lessons: $shot: the window ($got) is larger than the ${size} screen" >&2
         fail=1
       fi
-    done
+      output_write "$dest/$shot.png" cat "$work/$shot/window.png"
+      echo "$dest/$shot.png ($got)"
+    else
+      echo "grab_lessons: $shot at $size failed:" >&2
+      tail -n 20 "$work/$shot.log" >&2
+      fail=1
+    fi
   done
   stop_xvfb
   first=0

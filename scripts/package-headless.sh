@@ -6,6 +6,10 @@
 #
 #   scripts/package-headless.sh [--build DIR (build-headless)] [--out FOLDER (DIR/shadowlab-headless)]
 #
+# FOLDER is replaced whole: an existing FOLDER that is not an earlier headless folder (no
+# bin/shadowlab-cli), or one that holds the source tree or --build, is refused before the
+# build (exit 2), never deleted.
+#
 # Copy FOLDER to a Linux machine with an OpenGL 4.5 EGL driver and run
 #   FOLDER/bin/shadowlab-cli render --scene diagonal --technique rtw-backward --out x.png
 set -euo pipefail
@@ -17,11 +21,26 @@ while (($#)); do
   case "$1" in
     --build) build="${2:?--build: missing folder}"; shift 2 ;;
     --out) out="${2:?--out: missing folder}"; shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "package-headless.sh: unknown option '$1'" >&2; exit 2 ;;
   esac
 done
 [ -n "$out" ] || out="$build/shadowlab-headless"
+# FOLDER is removed before the new one moves in: never a folder of other files, the sources
+# or the build.
+refuse() {
+  echo "package-headless.sh: --out '$out' $1 (refused: it would be deleted)" >&2
+  exit 2
+}
+resolved=$(realpath -m -- "$out")
+for kept in "$src" "$(realpath -m -- "$build")"; do
+  [[ $kept/ != "${resolved%/}"/* ]] || refuse "holds '$kept'"
+done
+if [[ -e $resolved && ! -d $resolved ]]; then
+  refuse "is not a folder"
+elif [[ -d $resolved && ! -x $resolved/bin/shadowlab-cli && -n $(ls -A "$resolved") ]]; then
+  refuse "is a folder of other files (no bin/shadowlab-cli)"
+fi
 export CCACHE_BASEDIR="$src" CCACHE_NOHASHDIR=1
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_GUI=OFF \
   -DSHADOWLAB_REFERENCE=OFF -DSHADOWLAB_OIIO=OFF -DSHADOWLAB_BUILD_TESTS=OFF \

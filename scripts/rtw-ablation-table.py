@@ -1,13 +1,20 @@
 #!/usr/bin/env python3
 """The tables of docs/results/rtw-ablation.md from scripts/rtw-ablation.sh's CSVs.
 
-Usage: rtw-ablation-table.py OUTDIR SCENE...   (reads OUTDIR/ablation-SCENE.csv)
+Usage: rtw-ablation-table.py OUTDIR SCENE... [--out FILE]   (reads OUTDIR/ablation-SCENE.csv)
+The tables go to standard output, or with --out to FILE (scripts/lib/output_policy.py: a FILE
+that is one of the CSVs, a folder or a FIFO is refused before any is read, exit 2; FILE is
+replaced only when every table was made).
 Per scene, one row per configuration: the error at 512, 1024, 2048 (a check mark where it is
 no worse than rtw-backward at the same resolution within 1.05 x + 0.005 points), and at 1024
 the light frustum's area, the collapsed importance's half-mass widths and the rotation.
 """
 import csv
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from output_policy import check_outputs, print_or_write, take_option  # noqa: E402
 
 RES = ("512", "1024", "2048")
 
@@ -32,7 +39,19 @@ def label(technique, params):
 
 
 def main():
-    out, scenes = sys.argv[1], sys.argv[2:]
+    args = sys.argv[1:]
+    table = take_option(args, "--out")
+    if not args:
+        print("usage: rtw-ablation-table.py OUTDIR SCENE... [--out FILE]", file=sys.stderr)
+        sys.exit(2)
+    out, scenes = args[0], args[1:]
+    if table is not None:
+        csvs = [f"{out}/ablation-{s}.csv" for s in scenes]
+        check_outputs([("--out", table)], [(f"the CSV '{c}'", c) for c in csvs])
+    print_or_write(table, lambda: tables(out, scenes))
+
+
+def tables(out, scenes):
     for scene in scenes:
         rows = list(csv.DictReader(open(f"{out}/ablation-{scene}.csv")))
         configs = {}

@@ -9,9 +9,12 @@
 # (scenes/papers/000-da-rtw.json), at 512/1024/2048, 640x360, 4 frames along the scene's path.
 # Usage: scripts/rtw-ablation.sh OUTDIR [SCENE...]   (default: the directional scenes)
 # Writes OUTDIR/ablation-SCENE.csv and .png (error against time), and OUTDIR/ablation.md: the
-# tables of docs/results/rtw-ablation.md.
+# tables of docs/results/rtw-ablation.md. The outputs follow the output policy
+# (scripts/lib/output.sh): one that is a scene file, a folder, a FIFO or a device is refused
+# before the first bench (exit 2), and ablation.md is replaced only when every table was made.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/lib/output.sh
 out=${1:?usage: scripts/rtw-ablation.sh OUTDIR [SCENE...]}
 shift
 scenes=("$@")
@@ -24,7 +27,13 @@ gated="$res:rotation.mode=pca:pca.min_anisotropy=0.9:pca.min_spread=0.05"
 poster="$res:rotation.mode=pca:importance.stride=1:importance.orientation=0:pca.source=im"
 poster+=":pca.metric=im-units"
 poster+=":light.fit=rotation-invariant:pca.threshold=0.9999:pca.min_anisotropy=0:pca.min_spread=0"
-mkdir -p "$out"
+output_folder OUTDIR "$out"
+for s in "${scenes[@]}"; do output_input "the scene" "$s"; done
+for s in "${scenes[@]}"; do
+  output_check "the CSV" "$out/ablation-$s.csv"
+  output_check "the chart" "$out/ablation-$s.png"
+done
+output_check "the tables" "$out/ablation.md"
 for s in "${scenes[@]}"; do
   "$cli" bench --scene "$s" --frames 4 --warmup 1 --size 640x360 \
     --technique "rtw-backward:$res" \
@@ -42,4 +51,4 @@ for s in "${scenes[@]}"; do
     --technique "da-rtw:$poster" \
     --csv "$out/ablation-$s.csv" --chart "$out/ablation-$s.png" --chart-y log
 done
-python3 "$(dirname "$0")/rtw-ablation-table.py" "$out" "${scenes[@]}" >"$out/ablation.md"
+python3 scripts/rtw-ablation-table.py "$out" "${scenes[@]}" --out "$out/ablation.md"

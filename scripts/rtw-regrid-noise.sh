@@ -5,8 +5,12 @@
 # falls against the texel grid; the spread of their errors is what any turn's error carries on
 # top of what it gains. scripts/rtw-regrid-noise.py summarises it (docs/results/rtw-rotation.md).
 # Usage: scripts/rtw-regrid-noise.sh OUTDIR [RESOLUTION] [SCENE...]
+# The outputs follow the output policy (scripts/lib/output.sh): a CSV or log that is a scene
+# file, a folder, a FIFO or a device is refused before the first render (exit 2); a log is
+# replaced when its bench ends, never half-written.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/lib/output.sh
 out=${1:?usage: scripts/rtw-regrid-noise.sh OUTDIR [RESOLUTION] [SCENE...]}
 res=${2:-1024}
 shift $(($# >= 2 ? 2 : 1))
@@ -14,7 +18,16 @@ cli=${SHADOWLAB_CLI:-build/app/shadowlab-cli}
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=(band-aligned diagonal corridor default blob plane-box thin-pole
   dueling helmet sunroom figure car)
-mkdir -p "$out"
+output_folder OUTDIR "$out"
+for scene in "${scenes[@]}"; do output_input "the scene" "$scene"; done
+output_check "the probe image" "$out/.probe.png"
+for scene in "${scenes[@]}"; do
+  name=$(basename "$scene")
+  for i in 0 1 2 3 4 5 6 7; do
+    output_check "the CSV" "$out/regrid-${name%.*}@$i-$res.csv"
+    output_check "the log" "$out/regrid-${name%.*}@$i-$res.log"
+  done
+done
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene")
   name=${name%.*}
@@ -22,10 +35,13 @@ for scene in "${scenes[@]}"; do
     "$cli" render --scene "$scene" --camera "$i" --technique uniform --size 16x16 --no-reference \
       --out "$out/.probe.png" >/dev/null 2>&1 || break
     echo "== $name@$i" >&2
+    output_temp "$out/regrid-$name@$i-$res.log"
+    rc=0
     "$cli" bench --scene "$scene" --camera "$i" --frames 1 --warmup 1 --size 640x360 \
       --technique "da-rtw:resolution=$res:rotation.mode=fixed:rotation.fixed_deg=0,1,2,3,4" \
-      --csv "$out/regrid-$name@$i-$res.csv" >"$out/regrid-$name@$i-$res.log" 2>&1 ||
-      echo "bench failed: $name@$i" >&2
+      --csv "$out/regrid-$name@$i-$res.csv" >"$OUTPUT_TEMP" 2>&1 || rc=$?
+    output_commit "$OUTPUT_TEMP" "$out/regrid-$name@$i-$res.log"
+    ((rc == 0)) || echo "bench failed: $name@$i" >&2
   done
 done
 rm -f "$out/.probe.png"

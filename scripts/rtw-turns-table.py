@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """The tables and the chart of docs/results/rtw-rotation.md from scripts/rtw-turns.sh's output.
 
-Usage: rtw-turns-table.py OUTDIR [--svg FILE.svg] [--regrid DIR]
+Usage: rtw-turns-table.py OUTDIR [--svg FILE.svg] [--regrid DIR] [--out FILE]
+The tables go to standard output, or with --out to FILE. --out and --svg follow the output
+policy (scripts/lib/output_policy.py): one that is a file read here (a CSV or JSON of OUTDIR or
+DIR), the other output, a folder or a FIFO is refused before anything is read (exit 2); each
+is replaced only when complete.
 Reads OUTDIR/turns-SCENE@VIEW-RES.csv (bench: rtw-backward, fixed turns, da-rtw at its
 defaults and with rotation.mode=pca) and OUTDIR/prediction-SCENE@VIEW-RES-{edges,pixels}.json
 (the unturned frame's predicted score of every turn). Prints, per view:
@@ -28,6 +32,10 @@ import math
 import os
 import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from output_policy import (check_outputs, print_or_write, take_option,  # noqa: E402
+                           write_atomically)
 
 
 def fold(a):
@@ -88,9 +96,24 @@ def regrid_spread(folder, scene, view, res):
 
 
 def main():
-    out = sys.argv[1]
-    svg = sys.argv[sys.argv.index("--svg") + 1] if "--svg" in sys.argv else None
-    regrid = sys.argv[sys.argv.index("--regrid") + 1] if "--regrid" in sys.argv else None
+    args = sys.argv[1:]
+    svg = take_option(args, "--svg")
+    regrid = take_option(args, "--regrid")
+    table = take_option(args, "--out")
+    if not args:
+        print("usage: rtw-turns-table.py OUTDIR [--svg FILE.svg] [--regrid DIR] [--out FILE]",
+              file=sys.stderr)
+        sys.exit(2)
+    out = args[0]
+    inputs = [os.path.join(out, "turns-*.csv"), os.path.join(out, "prediction-*.json")]
+    if regrid:
+        inputs.append(os.path.join(regrid, "regrid-*.csv"))
+    check_outputs([(name, path) for name, path in (("--out", table), ("--svg", svg)) if path],
+                  [(f"the input '{p}'", p) for pattern in inputs for p in glob.glob(pattern)])
+    print_or_write(table, lambda: tables(out, svg, regrid))
+
+
+def tables(out, svg, regrid):
     views = []
     for path in sorted(glob.glob(os.path.join(out, "turns-*.csv"))):
         m = re.match(r"turns-(.+)@(.+)-(\d+)\.csv$", os.path.basename(path))
@@ -241,7 +264,7 @@ def write_svg(path, points):
                      f'{pad + 18}" y="{y}">prediction.weight = {wname}</text>')
         y += 16
     parts.append("</svg>")
-    open(path, "w").write("\n".join(parts) + "\n")
+    write_atomically(path, "\n".join(parts) + "\n")
 
 
 if __name__ == "__main__":

@@ -14,8 +14,12 @@
 #   PREDICT_ONLY=1 renders the predictions only (the truth's CSVs kept).
 #   The turns: every 15° in [-45, 45] (a separable warp of a square map repeats every 90°:
 #   measured to the last digit, docs/results/rtw-rotation.md); FULL=1 sweeps [-90, 90].
+# The outputs follow the output policy (scripts/lib/output.sh): every file a view may write
+# that is a scene file, a folder, a FIFO or a device is refused before the first render
+# (exit 2); a log is replaced when its bench ends, never half-written.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/lib/output.sh
 out=${1:?usage: scripts/rtw-turns.sh OUTDIR [RESOLUTION] [SCENE[@VIEW]...]}
 res=${2:-1024}
 shift $(($# >= 2 ? 2 : 1))
@@ -26,7 +30,33 @@ specs=("$@")
 [ ${#specs[@]} -gt 0 ] || specs=(band-diagonal band-aligned diagonal corridor default blob
   plane-box thin-pole dueling helmet sunroom figure car
   scenes/third-party/rigged-figure/RiggedFigure.gltf)
-mkdir -p "$out"
+
+# The name of a scene's files, and every file a view of it writes (checked before the work).
+scene_name() {
+  local name
+  name=$(basename "$1")
+  echo "${name%.*}"
+}
+check_view_outputs() {
+  local tag w
+  tag="$(scene_name "$1")@$2-$res"
+  if [ "${PREDICT_ONLY:-0}" != 1 ]; then
+    output_check "the CSV" "$out/turns-$tag.csv"
+    output_check "the log" "$out/turns-$tag.log"
+  fi
+  for w in edges pixels; do output_check "the prediction" "$out/prediction-$tag-$w.json"; done
+}
+output_folder OUTDIR "$out"
+for spec in "${specs[@]}"; do output_input "the scene" "${spec%@*}"; done
+output_check "the probe image" "$out/.probe.png"
+output_check "the prediction image" "$out/.prediction.png"
+for spec in "${specs[@]}"; do
+  if [[ $spec == *@* ]]; then
+    check_view_outputs "${spec%@*}" "${spec#*@}"
+  else
+    for v in 0 1 2 3 4 5 6 7 path default; do check_view_outputs "$spec" "$v"; done
+  fi
+done
 if [ "${FULL:-0}" = 1 ]; then angles=$(seq -s, -90 15 90); else angles=$(seq -s, -45 15 45); fi
 
 # The views of a scene: every bookmark index that renders, then "path" when it has one; a
@@ -48,10 +78,8 @@ views_of() {
 }
 
 run_view() {
-  local scene=$1 view=$2 name tag where=()
-  name=$(basename "$scene")
-  name=${name%.*}
-  tag="$name@$view-$res"
+  local scene=$1 view=$2 tag where=() log rc=0
+  tag="$(scene_name "$scene")@$view-$res"
   case $view in
     path) where=(--path 0) ;;
     default) where=() ;;
@@ -60,15 +88,21 @@ run_view() {
   local f=$frames
   [ "$view" = path ] || f=1  # a still view renders the same frame again
   echo "== $tag" >&2
-  [ "${PREDICT_ONLY:-0}" = 1 ] || "$cli" bench --scene "$scene" "${where[@]}" --frames "$f" --warmup "$warmup" --size 640x360 \
-    --technique "rtw-backward:resolution=$res" \
-    --technique "da-rtw:resolution=$res:rotation.mode=fixed:rotation.fixed_deg=$angles" \
-    --technique "da-rtw:resolution=$res" \
-    --technique "da-rtw:resolution=$res:rotation.mode=pca" \
-    --csv "$out/turns-$tag.csv" >"$out/turns-$tag.log" 2>&1 || {
-    echo "bench failed: $tag (see $out/turns-$tag.log)" >&2
-    return 0
-  }
+  if [ "${PREDICT_ONLY:-0}" != 1 ]; then
+    output_temp "$out/turns-$tag.log"
+    log=$OUTPUT_TEMP
+    "$cli" bench --scene "$scene" "${where[@]}" --frames "$f" --warmup "$warmup" --size 640x360 \
+      --technique "rtw-backward:resolution=$res" \
+      --technique "da-rtw:resolution=$res:rotation.mode=fixed:rotation.fixed_deg=$angles" \
+      --technique "da-rtw:resolution=$res" \
+      --technique "da-rtw:resolution=$res:rotation.mode=pca" \
+      --csv "$out/turns-$tag.csv" >"$log" 2>&1 || rc=$?
+    output_commit "$log" "$out/turns-$tag.log"
+    if ((rc != 0)); then
+      echo "bench failed: $tag (see $out/turns-$tag.log)" >&2
+      return 0
+    fi
+  fi
   local w
   for w in edges pixels; do
     "$cli" render --scene "$scene" "${where[@]}" --technique da-rtw --size 640x360 --frames 2 \

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "Measure.h"
+#include "algo/claims/ClaimVerdict.h"
 
 namespace sl::cli {
 
@@ -19,24 +20,24 @@ namespace sl::cli {
 inline constexpr const char* kMeasurementKinds[] = {"error-compare", "time-ratio", "memory-ratio",
                                                     "publication", "cpu"};
 
-/// The largest relative tolerance of "within" (exclusive): within 100 % of a value admits 0 and
-/// twice the value, which no claim means.
-inline constexpr double kMaxWithinTolerance = 1.0;
+/// A claim's predicate on the measured value (algo/claims/ClaimVerdict.h).
+using Predicate = claims::Predicate;
 
-/// A claim's predicate on the measured value: "<=", ">=", "<", ">" against `value`, or
-/// "within": |measured / value − 1| <= tolerance.
-struct Predicate {
-  std::string op;
-  double value = 0.0;
-  double tolerance = 0.0;
-  bool holds(double measured) const;
-  std::string text() const;  ///< "<= 1", "within 0.1 % of 85.74"
-};
+/// Who makes a claim: "seed" (a source document says it; quoted verbatim), "tool"
+/// (ShadowLab's own reading or design) or "check" (an implementation check that holds by
+/// construction or arithmetic). The report's headline counts seed claims only.
+inline constexpr const char* kClaimKinds[] = {"seed", "tool", "check"};
+
+/// The fewest frames a full run compares errors over (paired frame by frame), and the fewest
+/// interleaved repetitions a full run compares timings over; --quick may use fewer, and its
+/// verdicts are then indicative only.
+inline constexpr int kMinErrorFrames = 20;
+inline constexpr int kMinTimingRepetitions = 3;
 
 /// Frame size and frames of one run (a claim has one for the full run and one for --quick).
 struct RunSize {
   int width = 640, height = 360;
-  int frames = 4;
+  int frames = kMinErrorFrames;
   int warmup = 2;
 };
 
@@ -66,7 +67,10 @@ struct Measurement {
 struct Claim {
   std::string file;  ///< the claims file it came from
   std::string id, seed, source;
-  std::string words;        ///< the paper's words, quoted
+  std::string kind;         ///< seed, tool or check (kClaimKinds)
+  std::string quote;        ///< the seed's own words, verbatim ("[...]" marks a gap)
+  std::string translation;  ///< the quote in English, when the seed is not
+  std::string statement;    ///< a tool or check claim in ShadowLab's words
   std::string paperNumber;  ///< the paper's number, as the paper gives it
   std::string note;         ///< which reading of the paper the measurement takes
   Measurement measurement;
@@ -87,21 +91,25 @@ std::vector<Claim> loadClaimFolder(const std::filesystem::path& folder);
 struct MeasuredValue {
   bool measured = false;
   double value = std::numeric_limits<double>::quiet_NaN();
+  /// The value's 95 % paired bootstrap interval over the frames (low == high == value for an
+  /// exact measurement: cpu, memory, a published count).
+  claims::Interval interval;
   std::string text;  ///< what was measured, with the parts of the value
   std::string why;   ///< not measured: why (a failed frame, a number never published)
   std::vector<std::string> figures;  ///< PNGs, relative to the output folder
 };
 
 struct ClaimOutcome {
-  std::string verdict;  ///< "reproduced", "partly", "not reproduced" or "not measured"
+  std::string verdict;      ///< claims::verdictName: reproduced, ..., not testable here
+  bool indicative = false;  ///< measured by --quick: fewer frames than a verdict needs
   MeasuredValue main;
   std::optional<MeasuredValue> mechanism;
   std::vector<std::string> commands;  ///< the commands that re-run it
   double seconds = 0.0;
 };
 
-/// The verdict the value gives: not measured, else reproduced when expect holds, partly when
-/// only `partly` holds, else not reproduced.
+/// The verdict the value's interval gives (claims::judge): not testable here when nothing
+/// was measured.
 std::string verdictFor(const Claim& claim, const MeasuredValue& value);
 /// The commands that re-run the claim: `bench`, `render` or `storage` with the claim's
 /// configurations, and `reproduce --claim ID`.
@@ -109,8 +117,9 @@ std::vector<std::string> rerunCommands(const Claim& claim, bool quick);
 /// Measures a claim; the rendered kinds need a current GL context. Figures go to
 /// outDir/figures/.
 ClaimOutcome runClaim(const Claim& claim, bool quick, const std::filesystem::path& outDir);
-/// REPORT.md: a summary table, then per claim the words, number, measurement, verdict and
-/// commands.
+/// REPORT.md: the seed claims' verdicts per seed, a table each for the seed, tool and check
+/// claims, then per claim the quote (or statement), number, measurement with its interval,
+/// verdict and commands, and the threats to validity.
 std::string reportMarkdown(const std::vector<Claim>& claims,
                            const std::vector<ClaimOutcome>& outcomes, bool quick,
                            const std::string& glDescription, double seconds);

@@ -20,10 +20,11 @@ std::filesystem::path writeClaims(const std::string& name, const std::string& te
   std::ofstream(file) << R"({
   "seed": "000",
   "source": "test",
-  "sizes": {"quick": {"size": "96x54", "frames": 1, "warmup": 1}},
+  "sizes": {"quick": {"size": "96x54", "frames": 2, "warmup": 1}},
   "claims": [{
     "id": ")" << name << R"(",
-    "words": "A shadow map of 1024 texels a side has at most 1.1 times the wrong pixels of uniform 1024.",
+    "kind": "tool",
+    "statement": "A shadow map of 1024 texels a side has at most 1.1 times the wrong pixels of uniform 1024.",
     "paper_number": "<= 1.1",
     "measure": {"kind": "error-compare", "scene": "plane-box",
                 "a": {"technique": ")"
@@ -46,8 +47,9 @@ TEST(Reproduce, ABrokenTechniqueMakesTheClaimNotReproduced) {
   ASSERT_EQ(broken.size(), 1u);
   const cli::ClaimOutcome o = cli::runClaim(broken[0], true, testOut("reproduce"));
   ASSERT_TRUE(o.main.measured) << o.main.why;
-  EXPECT_GT(o.main.value, 1.1) << o.main.text;  // every shadow false lit
+  EXPECT_GT(o.main.interval.low, 1.1) << o.main.text;  // every shadow false lit, every frame
   EXPECT_EQ(o.verdict, "not reproduced") << o.main.text;
+  EXPECT_TRUE(o.indicative);  // 2 frames of a quick run
 
   // The control: the same claim on uniform itself measures 1 and is reproduced. (A claims
   // file may not compare a configuration with itself: the control is built here.)
@@ -77,7 +79,7 @@ TEST(Reproduce, AConfigurationThatCannotRenderIsNotMeasured) {
   const cli::ClaimOutcome o = cli::runClaim(c, true, testOut("reproduce"));
   EXPECT_FALSE(o.main.measured);
   EXPECT_NE(o.main.why.find("cascades"), std::string::npos) << o.main.why;
-  EXPECT_EQ(o.verdict, "not measured");
+  EXPECT_EQ(o.verdict, "not testable here");
 }
 
 TEST(Reproduce, TheVerdictFollowsTheValueAndTheThreshold) {
@@ -85,18 +87,19 @@ TEST(Reproduce, TheVerdictFollowsTheValueAndTheThreshold) {
   c.expect = {"<=", 1.0, 0.0};
   cli::MeasuredValue v;
   v.why = "frame 0: refused";
-  EXPECT_EQ(cli::verdictFor(c, v), "not measured");
+  EXPECT_EQ(cli::verdictFor(c, v), "not testable here");
   v.measured = true;
   v.value = 2.0;
+  v.interval = {2.0, 1.8, 2.2, 20};
   EXPECT_EQ(cli::verdictFor(c, v), "not reproduced");
-  c.partly = cli::Predicate{"<=", 2.5, 0.0};
-  EXPECT_EQ(cli::verdictFor(c, v), "partly");
-  v.value = 0.5;
+  v.interval = {1.0, 0.9, 1.1, 20};  // straddles the threshold
+  EXPECT_EQ(cli::verdictFor(c, v), "inconclusive");
+  v.interval = {0.5, 0.4, 0.6, 20};
   EXPECT_EQ(cli::verdictFor(c, v), "reproduced");
   c.expect = {"within", 85.7365, 1e-6};
-  v.value = 85.7365;
+  v.interval = {85.7365, 85.7365, 85.7365, 0};
   EXPECT_EQ(cli::verdictFor(c, v), "reproduced");
-  v.value = std::numeric_limits<double>::quiet_NaN();
+  v.interval.low = v.interval.high = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(cli::verdictFor(c, v), "reproduced");
 }
 

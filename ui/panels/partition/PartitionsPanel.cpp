@@ -180,7 +180,7 @@ void PartitionsPanel::showPublication(const sl::Publication& pub) {
                 "style='white-space:pre'>%3</td>"
                 "<td style='white-space:pre'>%4</td><td style='white-space:pre'>%5</td><td "
                 "style='white-space:pre'>%6</td><td style='white-space:pre'>%7</td>"
-                "<td style='white-space:pre'>%8</td><td>%9</td></tr>")
+                "<td style='white-space:pre'>%8</td><td style='white-space:pre'>%9</td></tr>")
                 .arg(colour.name())
                 .arg(i)
                 .arg(cell(nearM) + QStringLiteral("–") + cell(farM), cell(extent),

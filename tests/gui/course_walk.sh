@@ -4,14 +4,14 @@
 # course-claims=DIR, see tests/gui/src/GuiTestsCourse.cpp). After each Next the lesson must
 # pass the checks it passes when opened alone (lesson_claims.sh): settled, its layout, the
 # window on its screen, its live numbers filled, its claims measured. By default the
-# 45-minute course at 1920x1080; COURSE_WALK_ALL=1 walks both courses on both screens (the
-# 90-minute course holds every lesson).
+# 45-minute course at 1920x1080 and the 90-minute course (every lesson) at 1280x800;
+# COURSE_WALK_ALL=1 walks both courses on both screens.
 # usage: course_walk.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 tests=$4
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/xvfb.bash"
-walks=("45 1920x1080")
+walks=("45 1920x1080" "90 1280x800")
 [[ "${COURSE_WALK_ALL:-0}" == 1 ]] && walks=("45 1920x1080" "90 1920x1080" "45 1280x800" "90 1280x800")
 fail=0
 for walk in "${walks[@]}"; do

@@ -441,8 +441,9 @@ MeasuredValue measureRendered(const std::string& id, const Measurement& m, bool 
   const RunSize size = quick ? m.quick : m.full;
   std::shared_ptr<Scene> scene = loadScene(m.scene);
   std::string cameraText;
-  const std::vector<Camera> cameras =
-      measureCameras(*scene, m.path, m.camera, size.frames, cameraText);
+  // Along a path, bench's spacing: a frame every 1/kDefaultPathHz s between the measured ones.
+  const MeasureCameras cameras =
+      measureCameras(*scene, m.path, m.camera, size.frames, kDefaultPathHz, cameraText);
   checkFrameSize(size.width, size.height);
   std::vector<std::unique_ptr<ConfigRunner>> runners;
   for (const ConfigSpec& c : m.configs)
@@ -473,9 +474,10 @@ MeasuredValue measureRendered(const std::string& id, const Measurement& m, bool 
       return out;
     }
   }
-  const std::string where = scene->name + ", " + cameraText + ", " + std::to_string(size.width) +
-                            "x" + std::to_string(size.height) + ", " + std::to_string(size.frames) +
-                            " frames";
+  const std::string where = scene->name + ", " + cameraText +
+                            (cameras.alongPath ? ", " + num(cameras.pathHz) + " Hz" : "") + ", " +
+                            std::to_string(size.width) + "x" + std::to_string(size.height) + ", " +
+                            std::to_string(size.frames) + " frames";
   if (m.kind == "publication") {
     std::vector<double> v;
     for (const FrameSample& f : samples[0]) {

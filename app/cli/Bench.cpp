@@ -26,11 +26,13 @@ namespace sl::cli {
 
 const char* const kBenchUsage =
     "       shadowlab-cli bench --scene NAME|FILE --technique ID[:KEY=V1,V2,...]...\n"
-    "                           [--path NAME|INDEX | --camera NAME|INDEX] [--frames N]\n"
-    "                           [--warmup N] [--size WxH] [--light LIGHT]\n"
+    "                           [--path NAME|INDEX [--path-hz HZ] | --camera NAME|INDEX]\n"
+    "                           [--frames N] [--warmup N] [--size WxH] [--light LIGHT]\n"
     "                           [--set KEY=VALUE]... --csv FILE.csv [--chart FILE.png]\n"
     "                           [--chart-y auto|linear|log] [--x ms|bytes] [--no-reference]\n"
-    "         (--no-reference: no ray-traced reference, timings only: the error cells empty)\n";
+    "         (--no-reference: no ray-traced reference, timings only: the error cells empty)\n"
+    "         (--path-hz: along a path each configuration also renders a frame every 1/HZ s\n"
+    "          of path time between the measured ones; 0: none; see docs/user-guide/bench.md)\n";
 
 namespace {
 
@@ -39,6 +41,8 @@ struct BenchConfig {
   std::vector<std::string> techniques;  ///< --technique texts
   std::vector<std::string> sets;        ///< --set for every configuration
   std::string path, camera;
+  double pathHz = kDefaultPathHz;  ///< along a path: a frame every 1/HZ s (Measure.h)
+  bool pathHzGiven = false;
   int frames = 12;
   int warmup = 3;
   int width = 640, height = 360;
@@ -71,7 +75,10 @@ BenchConfig parseBench(Args& a) {
       c.path = a.take(i, o);
     else if (o == "--camera")
       c.camera = a.take(i, o);
-    else if (o == "--frames")
+    else if (o == "--path-hz") {
+      c.pathHz = parsePathHz(o, a.take(i, o));
+      c.pathHzGiven = true;
+    } else if (o == "--frames")
       c.frames = parseInt(o, a.take(i, o), 1, 100000);
     else if (o == "--warmup")
       c.warmup = parseInt(o, a.take(i, o), 0, 1000);
@@ -99,6 +106,10 @@ BenchConfig parseBench(Args& a) {
   if (c.csv.empty()) throw UsageError("--csv: missing (where to write the results)");
   if (!c.path.empty() && !c.camera.empty())
     throw UsageError("--camera: give either a camera path (--path) or a bookmark (--camera)");
+  if (c.pathHzGiven && !c.camera.empty())
+    throw UsageError(
+        "--path-hz: goes with a camera path, not --camera (a fixed camera renders "
+        "no frames in between)");
   return c;
 }
 
@@ -288,12 +299,20 @@ int cmdBench(Args& a) {
 
   // One camera per frame: along the path, or a fixed bookmark.
   std::string cameraText;
-  const std::vector<Camera> cameras =
-      measureCameras(*scene, cfg.path, cfg.camera, cfg.frames, cameraText);
+  const MeasureCameras cameras =
+      measureCameras(*scene, cfg.path, cfg.camera, cfg.frames, cfg.pathHz, cameraText);
+  if (cfg.pathHzGiven && !cameras.alongPath)
+    std::fprintf(stderr,
+                 "note: --path-hz: %s has no camera path: a fixed camera, no frames in between\n",
+                 scene->name.c_str());
+  // "path walk, 30 Hz": the spacing of the frames each configuration rendered.
+  std::string spacingText = cameraText;
+  if (cameras.alongPath) spacingText += ", " + number(cameras.pathHz) + " Hz";
 
   std::vector<std::vector<FrameSample>> samples(configs.size());
   std::string glDescription, timingMethod;
   int referenceEvaluations = 0;
+  std::size_t framesRendered = 0;  // by each configuration (the first's), measured or not
   {
     gl::EglContext ctx;
     checkFrameSize(cfg.width, cfg.height);
@@ -313,9 +332,11 @@ int cmdBench(Args& a) {
     std::optional<ReferenceCache> reference;
     if (cfg.reference) reference.emplace(*scene);
 
-    std::fprintf(stderr, "bench: %zu configurations x %d frames on %s (%s), %dx%d\n",
-                 runners.size(), cfg.frames, scene->name.c_str(), cameraText.c_str(), cfg.width,
-                 cfg.height);
+    std::fprintf(stderr, "bench: %zu configurations x %d frames on %s (%s), %dx%d", runners.size(),
+                 cfg.frames, scene->name.c_str(), spacingText.c_str(), cfg.width, cfg.height);
+    if (cameras.alongPath)
+      std::fprintf(stderr, ", %zu unmeasured frames in between for each", cameras.betweenCount());
+    std::fprintf(stderr, "\n");
     ProgressBar progress("bench", runners.size() * std::size_t(cfg.frames));
     std::size_t inFrame = 0;
     // Warm-up at the first camera (shader variants compile on first use (llvmpipe JIT), maps
@@ -338,6 +359,7 @@ int cmdBench(Args& a) {
                        });
     progress.finish();
     referenceEvaluations = reference ? reference->evaluations() : 0;
+    framesRendered = runners.front()->framesRendered();
   }
 
   // CSV: one row per configuration.
@@ -369,7 +391,7 @@ int cmdBench(Args& a) {
   const std::vector<bool> frontBytes = frontAgainst([](const ConfigSummary& s) { return s.bytes; });
 
   std::ostringstream csv;
-  csv << "scene,camera,technique,params,label,frames,width,height,timing_method,total_ms,"
+  csv << "scene,camera,technique,params,label,frames,path_hz,width,height,timing_method,total_ms,"
          "total_ms_frames";
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
   csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
@@ -379,7 +401,8 @@ int cmdBench(Args& a) {
     const ConfigSummary& s = sums[i];
     csv << csvField(scene->name) << "," << csvField(cameraText) << ","
         << csvField(configs[i].techniqueId) << "," << csvField(configs[i].paramsText()) << ","
-        << csvField(configs[i].label) << "," << samples[i].size() << "," << cfg.width << ","
+        << csvField(configs[i].label) << "," << samples[i].size() << ","
+        << (cameras.alongPath ? number(cameras.pathHz) : std::string()) << "," << cfg.width << ","
         << cfg.height << "," << csvField(s.timingMethod) << "," << number(s.totalMs) << ",";
     for (std::size_t f = 0; f < s.frameMs.size(); ++f)  // the spread behind the median
       csv << (f ? ";" : "") << number(s.frameMs[f]);
@@ -422,9 +445,11 @@ int cmdBench(Args& a) {
                 cell(s.aliasingMean, "%.3f").c_str(), cell(s.aliasingP95, "%.3f").c_str(),
                 cell(s.flickerPct, "%.4f").c_str(), front);
   }
-  std::printf("medians over %d frames (%s, %dx%d, timing %s, %d reference evaluations) -> %s\n",
-              cfg.frames, cameraText.c_str(), cfg.width, cfg.height, timingMethod.c_str(),
-              referenceEvaluations, cfg.csv.c_str());
+  std::printf(
+      "medians over %d frames (%s, %dx%d, timing %s, %d reference evaluations, %zu frames "
+      "rendered by each configuration) -> %s\n",
+      cfg.frames, spacingText.c_str(), cfg.width, cfg.height, timingMethod.c_str(),
+      referenceEvaluations, framesRendered, cfg.csv.c_str());
 
   if (!cfg.chart.empty()) {
     std::vector<ChartRow> rows;
@@ -449,7 +474,7 @@ int cmdBench(Args& a) {
     ChartSpec spec;
     spec.yScale = cfg.chartY;
     spec.x = cfg.chartX;
-    spec.title = std::string(chartHeadline(cfg.chartX)) + ": " + scene->name + ", " + cameraText;
+    spec.title = std::string(chartHeadline(cfg.chartX)) + ": " + scene->name + ", " + spacingText;
     spec.subtitle = std::to_string(cfg.width) + "x" + std::to_string(cfg.height) + ", " +
                     std::to_string(cfg.frames) + " frames (medians), timing " + timingMethod +
                     ", " + glDescription;

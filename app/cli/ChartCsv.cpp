@@ -78,6 +78,8 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
   // Memory is read only when charted (a CSV without it still charts against time).
   const std::size_t cBytes = x == ChartX::Bytes ? column("bytes") : cMs;
   auto gl = std::find(header.begin(), header.end(), "gl");
+  // The spacing of the path's frames (bench's column; older CSVs have none: measured frames only).
+  auto pathHz = std::find(header.begin(), header.end(), "path_hz");
   // A failed configuration (bench wrote its failure; older CSVs have no such column).
   auto failureColumn = std::find(header.begin(), header.end(), "failure");
   // The pixels the error is over (bench's column; older CSVs have none): 0 is no measurement.
@@ -162,6 +164,8 @@ ChartCsv readChartCsv(const std::string& csvPath, ChartX x) {
   ChartSpec spec;
   spec.x = x;
   spec.title = std::string(chartHeadline(x)) + ": " + first[cScene] + ", " + first[cCamera];
+  if (pathHz != header.end() && !first[std::size_t(pathHz - header.begin())].empty())
+    spec.title += ", " + cutText(first[std::size_t(pathHz - header.begin())], 20) + " Hz";
   spec.subtitle = first[cW] + "x" + first[cH] + ", " + first[cFrames] +
                   " frames (medians), timing " + first[cTiming] +
                   (gl == header.end() ? "" : ", " + first[std::size_t(gl - header.begin())]);

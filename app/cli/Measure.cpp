@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -184,22 +185,39 @@ void ConfigRunner::forgetPreviousFrame() {
   previousReference_.clear();
 }
 
+std::set<std::string> ConfigRunner::numberKeys(const MeasureOptions& options) const {
+  // Only the numbers (rotation, PCA): no image or curve is read back while measuring.
+  std::set<std::string> keys;
+  if (options.publishing && publishingWanted_)
+    if (const TechniqueInfo* info = findTechniqueInfo(renderer_->techniqueId()))
+      for (const PublicationDecl& d : info->publications)
+        if (d.kind == PublicationKind::Number) keys.insert(d.key);
+  return keys;
+}
+
+std::optional<std::string> ConfigRunner::renderUnmeasured(const Camera& camera,
+                                                          const MeasureOptions& options) {
+  Renderer& r = *renderer_;
+  r.setCamera(camera);
+  // The same request as a measured frame: a technique that computes more when asked does the
+  // same work in every frame.
+  r.requestPublications(numberKeys(options));
+  ++framesRendered_;
+  return r.renderFrame(options.width, options.height, 0);
+}
+
 FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOptions& options,
                                            ReferenceCache* reference) {
   FrameSample s;
   Renderer& r = *renderer_;
   r.setCamera(camera);
-  // Only the numbers (rotation, PCA): no image or curve is read back while measuring.
-  std::set<std::string> numberKeys;
-  if (options.publishing && publishingWanted_)
-    if (const TechniqueInfo* info = findTechniqueInfo(r.techniqueId()))
-      for (const PublicationDecl& d : info->publications)
-        if (d.kind == PublicationKind::Number) numberKeys.insert(d.key);
-  r.requestPublications(std::move(numberKeys));
+  r.requestPublications(numberKeys(options));
   auto collectGlErrors = [&s] {
     for (std::string& e : drainGlErrors()) s.glErrors.push_back(std::move(e));
   };
-  collectGlErrors();  // anything since the last frame (set-up) counts against this one
+  // Anything since the last measured frame (set-up, in-between frames) counts against this one.
+  collectGlErrors();
+  ++framesRendered_;
   if (auto e = r.renderFrame(options.width, options.height, 0)) s.renderError = *e;
   collectGlErrors();
   if (s.failed()) {
@@ -330,41 +348,108 @@ ConfigSummary summarise(const std::vector<FrameSample>& all) {
   return s;
 }
 
-std::vector<Camera> measureCameras(const Scene& scene, const std::string& path,
-                                   const std::string& camera, int frames, std::string& cameraText) {
+double parsePathHz(const std::string& opt, const std::string& text) {
+  return parseDouble(opt, text, 0.0, kMaxPathHz);
+}
+
+std::size_t MeasureCameras::betweenCount() const {
+  std::size_t n = 0;
+  for (const std::vector<Camera>& b : between) n += b.size();
+  return n;
+}
+
+MeasureCameras pathCameras(const CameraPath& path, int frames, double hz, const std::string& opt) {
+  MeasureCameras out;
+  out.pathHz = hz;
+  out.alongPath = true;
+  const double start = path.startS(), end = path.durationS();
+  auto timeOf = [&](int f) {
+    return frames > 1 ? start + (end - start) * double(f) / double(frames - 1) : start;
+  };
+  // In-between frames before frame f: k = 1, 2, ... with t_f - k / hz > t_{f-1}, i.e.
+  // k < gap * hz (a frame landing on t_{f-1} within float noise is that measured frame).
+  auto countBefore = [&](int f) -> double {
+    if (hz <= 0.0 || f == 0) return 0.0;
+    return std::max(0.0, std::ceil((timeOf(f) - timeOf(f - 1)) * hz - 1e-6) - 1.0);
+  };
+  double total = 0.0;
+  for (int f = 0; f < frames; ++f) total += countBefore(f);
+  if (total > double(kMaxInBetweenFrames)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "%s: %g Hz along path '%s' (%g s) is %.0f frames between the measured ones, "
+                  "over the limit of %zu (kMaxInBetweenFrames); use a lower rate or 0",
+                  opt.c_str(), hz, cutText(path.name, 60).c_str(), end - start, total,
+                  kMaxInBetweenFrames);
+    throw UsageError(text);
+  }
+  for (int f = 0; f < frames; ++f) {
+    out.measured.push_back(path.sampleFrame(f, frames));
+    std::vector<Camera> before;
+    const int n = int(countBefore(f));
+    for (int k = n; k >= 1; --k) before.push_back(path.sample(float(timeOf(f) - double(k) / hz)));
+    out.between.push_back(std::move(before));
+  }
+  return out;
+}
+
+MeasureCameras measureCameras(const Scene& scene, const std::string& path,
+                              const std::string& camera, int frames, double pathHz,
+                              std::string& cameraText) {
   if (!path.empty() && !camera.empty())
     throw UsageError("--camera: give either a camera path (--path) or a bookmark (--camera)");
-  std::vector<Camera> cameras;
   if (camera.empty() && !scene.paths.empty()) {
     const CameraPath& p = pickPath(scene, path);
-    for (int f = 0; f < frames; ++f) cameras.push_back(p.sampleFrame(f, frames));
     cameraText = cutText("path " + p.name);  // a glTF animation name: any length
-  } else {
-    if (!path.empty()) (void)pickPath(scene, path);  // names the missing path
-    cameras.assign(std::size_t(frames), pickCamera(scene, camera));
-    cameraText = cutText("camera " + (camera.empty() ? std::string("(first bookmark)") : camera));
+    return pathCameras(p, frames, pathHz);
   }
-  return cameras;
+  if (!path.empty()) (void)pickPath(scene, path);  // names the missing path
+  MeasureCameras out;
+  out.measured.assign(std::size_t(frames), pickCamera(scene, camera));
+  out.between.resize(std::size_t(frames));
+  cameraText = cutText("camera " + (camera.empty() ? std::string("(first bookmark)") : camera));
+  return out;
+}
+
+FrameSample renderBetweenAndMeasure(ConfigRunner& runner, const std::vector<Camera>& between,
+                                    const Camera& camera, const MeasureOptions& options,
+                                    ReferenceCache* reference) {
+  for (std::size_t k = 0; k < between.size(); ++k)
+    if (auto e = runner.renderUnmeasured(between[k], options)) {
+      FrameSample s;
+      s.renderError = "in-between frame " + std::to_string(k + 1) + " of " +
+                      std::to_string(between.size()) + " before it: " + *e;
+      runner.forgetPreviousFrame();
+      return s;
+    }
+  return runner.renderAndMeasure(camera, options, reference);
 }
 
 std::vector<std::vector<FrameSample>> runInterleaved(
-    const std::vector<std::unique_ptr<ConfigRunner>>& runners, const std::vector<Camera>& cameras,
+    const std::vector<std::unique_ptr<ConfigRunner>>& runners, const MeasureCameras& cameras,
     const MeasureOptions& options, ReferenceCache* reference, int warmup,
     const std::function<void(std::size_t, int, const FrameSample&)>& onSample) {
   std::vector<std::vector<FrameSample>> samples(runners.size());
-  if (runners.empty() || cameras.empty()) return samples;
+  if (runners.empty() || cameras.measured.empty()) return samples;
   MeasureOptions warm = options;
   warm.keepImages = false;
   for (int w = 0; w < warmup; ++w)
-    for (const auto& r : runners) (void)r->renderAndMeasure(cameras.front(), warm, nullptr);
+    for (const auto& r : runners)
+      (void)r->renderAndMeasure(cameras.measured.front(), warm, nullptr);
   for (const auto& r : runners) r->forgetPreviousFrame();
-  const int frames = int(cameras.size());
+  const int frames = int(cameras.measured.size());
+  static const std::vector<Camera> kNone;
   for (int f = 0; f < frames; ++f) {
     MeasureOptions o = options;
     o.keepImages = options.keepImages && f + 1 == frames;  // the last frame's images only
+    const std::vector<Camera>& between =
+        std::size_t(f) < cameras.between.size() ? cameras.between[std::size_t(f)] : kNone;
     for (std::size_t k = 0; k < runners.size(); ++k) {
       const std::size_t i = (k + std::size_t(f)) % runners.size();
-      FrameSample s = runners[i]->renderAndMeasure(cameras[std::size_t(f)], o, reference);
+      // This configuration's in-between frames right before its measured frame: the other
+      // configurations' frames between them touch none of its state.
+      FrameSample s = renderBetweenAndMeasure(*runners[i], between,
+                                              cameras.measured[std::size_t(f)], o, reference);
       if (onSample) onSample(i, f, s);
       samples[i].push_back(std::move(s));
     }

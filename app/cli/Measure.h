@@ -11,6 +11,7 @@
 #include <memory>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -131,14 +132,26 @@ class ConfigRunner {
   /// compared), and the next frame compares with none.
   FrameSample renderAndMeasure(const Camera& camera, const MeasureOptions& options,
                                ReferenceCache* reference);
+  /// Renders one frame from `camera` that is not measured (an in-between frame along a
+  /// path): the renderer's temporal state advances as in any frame, with the same
+  /// publications asked for, but nothing is read back or compared, and the previous frame
+  /// the next measurement compares with stays the last measured one. GL errors count
+  /// against the next measured frame. renderFrame's error, or nothing.
+  std::optional<std::string> renderUnmeasured(const Camera& camera, const MeasureOptions& options);
+  /// Frames this runner rendered, measured or not (warm-up included).
+  std::size_t framesRendered() const { return framesRendered_; }
   /// Forgets the previous frame (no mask change or flicker against it); the renderer's
   /// temporal state (DA-RTW's rotation) stays, so warm-up frames settle it.
   void forgetPreviousFrame();
 
  private:
+  /// The published numbers a frame asks for (MeasureOptions::publishing).
+  std::set<std::string> numberKeys(const MeasureOptions& options) const;
+
   ConfigSpec spec_;
   std::unique_ptr<Renderer> renderer_;
   bool publishingWanted_ = true;  ///< off once a frame showed there is nothing to read
+  std::size_t framesRendered_ = 0;
   std::vector<std::uint8_t> previousMask_, previousReference_;
 };
 
@@ -168,21 +181,65 @@ struct ConfigSummary {
 
 ConfigSummary summarise(const std::vector<FrameSample>& all);
 
-/// One camera per frame: `frames` along a camera path (`path`, or the scene's first when
-/// neither is given and it has one), else a fixed bookmark (`camera`). `cameraText` names
+/// Path time between the frames a configuration renders along a camera path (`--path-hz`,
+/// a suite case's "path_hz"): between two measured frames it renders one every 1/HZ s, so
+/// its temporal state (DA-RTW's rotation, a page cache, hysteresis) is what a real-time user
+/// at HZ frames a second would see. 0: the measured frames only (the spacing before there
+/// were in-between frames: a 10 s path in 12 frames is 0.9 s a frame).
+inline constexpr double kDefaultPathHz = 30.0;
+inline constexpr double kMaxPathHz = 240.0;
+/// The most in-between frames one configuration renders in a run (a glTF path may last
+/// hours): more is refused naming --path-hz.
+inline constexpr std::size_t kMaxInBetweenFrames = 100000;
+/// A --path-hz value (`opt` names it): a number in 0..kMaxPathHz, else UsageError.
+double parsePathHz(const std::string& opt, const std::string& text);
+
+/// The cameras of a run: one per measured frame and, before each, the unmeasured frames
+/// each configuration renders right before it (in path order).
+struct MeasureCameras {
+  std::vector<Camera> measured;
+  /// Per measured frame (same size as `measured`): empty for the first frame, a fixed
+  /// camera, path time too short for one, or path_hz 0.
+  std::vector<std::vector<Camera>> between;
+  double pathHz = 0.0;  ///< the spacing used; 0 with a fixed camera (no path)
+  bool alongPath = false;
+  std::size_t betweenCount() const;  ///< in-between frames of one configuration, in all
+};
+
+/// `frames` measured cameras spread evenly along `path` (CameraPath::sampleFrame: frame f
+/// at path time t_f = start + f / (frames - 1) of its duration) and, with `hz` > 0, before
+/// frame f > 0 the cameras at t_f - k / hz for k = ..., 2, 1 while later than t_{f-1}: the
+/// last comes 1/hz before t_f, as a real-time frame would. UsageError naming `opt` when
+/// there would be more than kMaxInBetweenFrames.
+MeasureCameras pathCameras(const CameraPath& path, int frames, double hz,
+                           const std::string& opt = "--path-hz");
+
+/// One camera per measured frame: `frames` along a camera path (`path`, or the scene's first
+/// when neither is given and it has one; in-between frames every 1/`pathHz` s, see
+/// pathCameras), else a fixed bookmark (`camera`, no in-between frames). `cameraText` names
 /// it ("path walk", "camera (first bookmark)"). UsageError when both are given or the name
 /// is not the scene's.
-std::vector<Camera> measureCameras(const Scene& scene, const std::string& path,
-                                   const std::string& camera, int frames, std::string& cameraText);
+MeasureCameras measureCameras(const Scene& scene, const std::string& path,
+                              const std::string& camera, int frames, double pathHz,
+                              std::string& cameraText);
 
-/// Every configuration renders every camera, interleaved frame by frame (the starting
-/// configuration rotates so none always runs right after the reference), after `warmup`
-/// unmeasured frames of each at the first camera (shaders compile, maps are allocated,
-/// DA-RTW's rotation settles). `onSample(config, frame, sample)` sees each sample before it
-/// is stored. Returns the samples per configuration, in frame order.
+/// Every configuration renders every measured camera, interleaved frame by frame (the
+/// starting configuration rotates so none always runs right after the reference), after
+/// `warmup` unmeasured frames of each at the first camera (shaders compile, maps are
+/// allocated, DA-RTW's rotation settles). Right before each of its measured frames a
+/// configuration renders that frame's in-between cameras (ConfigRunner::renderUnmeasured: no
+/// reference, nothing read back). `onSample(config, frame, sample)` sees each sample before
+/// it is stored. Returns the samples per configuration, in frame order.
 std::vector<std::vector<FrameSample>> runInterleaved(
-    const std::vector<std::unique_ptr<ConfigRunner>>& runners, const std::vector<Camera>& cameras,
+    const std::vector<std::unique_ptr<ConfigRunner>>& runners, const MeasureCameras& cameras,
     const MeasureOptions& options, ReferenceCache* reference, int warmup,
     const std::function<void(std::size_t, int, const FrameSample&)>& onSample);
+
+/// Renders `between` (a measured frame's in-between cameras) with `runner`, then measures
+/// `camera`. A failed in-between frame fails the measured frame (its temporal state is not
+/// the one measured): the sample says so and nothing is rendered after it.
+FrameSample renderBetweenAndMeasure(ConfigRunner& runner, const std::vector<Camera>& between,
+                                    const Camera& camera, const MeasureOptions& options,
+                                    ReferenceCache* reference);
 
 }  // namespace sl::cli

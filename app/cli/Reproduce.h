@@ -34,6 +34,11 @@ inline constexpr const char* kClaimKinds[] = {"seed", "tool", "check"};
 inline constexpr int kMinErrorFrames = 20;
 inline constexpr int kMinTimingRepetitions = 3;
 
+/// Along a camera path a full run renders bench's frames in between (kDefaultPathHz); a
+/// --quick run the measured frames only (0), or its ~300 frames a configuration would make
+/// the quick run of every claim take many times the few minutes it is for.
+inline constexpr double kQuickPathHz = 0.0;
+
 /// Frame size and frames of one run (a claim has one for the full run and one for --quick).
 struct RunSize {
   int width = 640, height = 360;

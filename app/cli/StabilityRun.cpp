@@ -144,12 +144,15 @@ json summaryJson(const StabilitySummary& s) {
 
 std::vector<std::vector<StabilityFrame>> runFrames(
     std::vector<std::unique_ptr<ConfigRunner>>& runners, const std::vector<Camera>& cameras,
-    const MeasureOptions& opts, ReferenceCache* reference, ProgressBar& progress) {
+    const MeasureOptions& opts, ReferenceCache* reference, ProgressBar& progress,
+    const std::vector<std::vector<Camera>>& between) {
   std::vector<std::vector<StabilityFrame>> out(runners.size());
+  const std::vector<Camera> none;
   for (std::size_t f = 0; f < cameras.size(); ++f) {
     for (std::size_t i = 0; i < runners.size(); ++i) {
       StabilityFrame fr;
-      fr.sample = runners[i]->renderAndMeasure(cameras[f], opts, reference);
+      fr.sample = renderBetweenAndMeasure(*runners[i], f < between.size() ? between[f] : none,
+                                          cameras[f], opts, reference);
       // The rotation step is from the last frame that rendered; a failed frame has none.
       for (auto it = out[i].rbegin(); it != out[i].rend() && !fr.sample.failed(); ++it)
         if (!it->sample.failed()) {

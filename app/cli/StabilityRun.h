@@ -113,10 +113,13 @@ StabilitySummary summariseStability(const std::vector<StabilityFrame>& frames, i
 nlohmann::json summaryJson(const StabilitySummary& s);
 nlohmann::json frameJson(std::size_t k, const StabilityFrame& fr);
 
-/// Runs `runners` over `cameras`, interleaved frame by frame.
+/// Runs `runners` over `cameras`, interleaved frame by frame; right before its frame f each
+/// renders `between[f]` unmeasured (a path's in-between frames, MeasureCameras; none when
+/// `between` is shorter).
 std::vector<std::vector<StabilityFrame>> runFrames(
     std::vector<std::unique_ptr<ConfigRunner>>& runners, const std::vector<Camera>& cameras,
-    const MeasureOptions& opts, ReferenceCache* reference, ProgressBar& progress);
+    const MeasureOptions& opts, ReferenceCache* reference, ProgressBar& progress,
+    const std::vector<std::vector<Camera>>& between = {});
 
 /// `stability --suite`: runs the suite file's cases, prints the tables and expectations,
 /// writes `jsonPath` (when not empty); 1 when an expectation fails. Suite.cpp.

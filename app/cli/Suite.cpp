@@ -95,6 +95,7 @@ struct SuiteCase {
   std::string motion = "static";  ///< static | orbit | path
   double orbitDegPerFrame = 0.2;
   std::string path;
+  double pathHz = kDefaultPathHz;  ///< "path_hz": along the path, a frame every 1/HZ s
   int frames = 30, warmup = 0;
   int width = 320, height = 180;
   std::string sizeWhere = "size";  ///< where the size came from: "size", "cases[i].size", "--size"
@@ -329,7 +330,7 @@ std::vector<SuiteCase> parseSuite(const JsonReader& r, const json& root, double 
     const std::string where = jsonPath("cases", ci);
     r.onlyKeys(c, where,
                {"name", "what", "scene", "camera", "light", "motion", "orbit_deg_per_frame", "path",
-                "frames", "warmup_frames", "size", "techniques", "expect"});
+                "path_hz", "frames", "warmup_frames", "size", "techniques", "expect"});
     SuiteCase sc;
     sc.name = r.string(c, where, "name", "");
     if (sc.name.empty()) r.fail(where, "missing \"name\"");
@@ -358,6 +359,16 @@ std::vector<SuiteCase> parseSuite(const JsonReader& r, const json& root, double 
              fmt(sc.orbitDegPerFrame) + " is out of range -" + fmt(kMaxOrbitDegPerFrame) + ".." +
                  fmt(kMaxOrbitDegPerFrame) + " degrees a frame (kMaxOrbitDegPerFrame)");
     sc.path = r.string(c, where, "path", "");
+    if (JsonReader::member(c, "path_hz")) {
+      const std::string hzPath = jsonPath(where, "path_hz");
+      if (sc.motion != "path")
+        r.fail(hzPath, "goes with \"motion\": \"path\" (a " + sc.motion +
+                           " camera renders no frames in between)");
+      sc.pathHz = r.number(c["path_hz"], hzPath);
+      if (!(sc.pathHz >= 0.0 && sc.pathHz <= kMaxPathHz))
+        r.fail(hzPath, fmt(sc.pathHz) + " is out of range 0.." + fmt(kMaxPathHz) +
+                           " frames a second of path time (kMaxPathHz)");
+    }
     sc.warmup = r.integer(c, where, "warmup_frames", 0, 0, kMaxFrames);
     const int frames = r.integer(c, where, "frames", 30, 1, kMaxFrames);
     // Scaled, still bounded: every frame's camera and record is built (10^6 x 100 frames
@@ -451,9 +462,12 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
   std::shared_ptr<Scene> scene = loadScene(sc.sceneName);
   Camera cam = caseCamera(sc, *scene);
   std::vector<Camera> cameras;
+  std::vector<std::vector<Camera>> between;  // along a path: the in-between frames
   if (sc.motion == "path") {
-    const CameraPath& path = pickPath(*scene, sc.path);
-    for (int f = 0; f < sc.frames; ++f) cameras.push_back(path.sampleFrame(f, sc.frames));
+    MeasureCameras along = pathCameras(pickPath(*scene, sc.path), sc.frames, sc.pathHz,
+                                       "case '" + quoteText(sc.name, 60) + "': path_hz");
+    cameras = std::move(along.measured);
+    between = std::move(along.between);
   } else {
     if (sc.motion == "orbit") cam = orbitCentred(cam, *scene);
     for (int f = 0; f < sc.frames; ++f) {
@@ -476,7 +490,7 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
     opts.width = sc.width;
     opts.height = sc.height;
     opts.publishing = true;
-    auto frames = runFrames(runners, cameras, opts, &reference, progress);
+    auto frames = runFrames(runners, cameras, opts, &reference, progress, between);
     for (std::size_t i = 0; i < runners.size(); ++i)
       byLabel[ran[i]->spec.label] = summariseStability(frames[i], sc.warmup);
   }
@@ -485,9 +499,9 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
   // The table of this case.
   std::ostringstream& report = tally.report;
   report << "\n== " << sc.name << ": " << sc.what << "\n   " << scene->name << ", " << sc.motion
-         << (sc.motion == "orbit" ? " " + fmt(sc.orbitDegPerFrame) + " deg/frame" : "") << ", "
-         << sc.frames << " frames (warm-up " << sc.warmup << "), " << sc.width << "x" << sc.height
-         << "\n";
+         << (sc.motion == "orbit" ? " " + fmt(sc.orbitDegPerFrame) + " deg/frame" : "")
+         << (sc.motion == "path" ? " " + fmt(sc.pathHz) + " Hz" : "") << ", " << sc.frames
+         << " frames (warm-up " << sc.warmup << "), " << sc.width << "x" << sc.height << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "   %-30s %8s %8s %9s %9s %8s %9s %8s %8s\n", "technique",
                 "error %", "m p95", "flicker %", "flick max", "mask chg", "max chg %", "rot chg",
@@ -498,6 +512,7 @@ json runCase(const SuiteCase& sc, ProgressBar& progress, Tally& tally) {
   caseJson["what"] = sc.what;
   caseJson["scene"] = scene->name;
   caseJson["motion"] = sc.motion;
+  if (sc.motion == "path") caseJson["path_hz"] = sc.pathHz;
   caseJson["frames"] = sc.frames;
   caseJson["warmup_frames"] = sc.warmup;
   caseJson["size"] = {sc.width, sc.height};

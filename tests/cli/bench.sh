@@ -13,9 +13,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 rm -f "$out"/*.csv "$out"/*.png
 
-# Along plane-box's camera path (3 frames), three resolutions, with the chart.
+# Along plane-box's camera path (3 frames), three resolutions, with the chart. --path-hz 0
+# throughout: uniform keeps no state, and the frames in between (tests/cli/path_hz.sh) would
+# take this test from seconds to minutes.
 "$cli" bench --scene plane-box --technique uniform:resolution=4096,512,64 --frames 3 \
-  --size 320x180 --csv "$out/path.csv" --chart "$out/path.png" 2>"$out/path.stderr"
+  --path-hz 0 --size 320x180 --csv "$out/path.csv" --chart "$out/path.png" 2>"$out/path.stderr"
 # A static bookmark: consecutive frames are identical, so no flicker.
 "$cli" bench --scene plane-box --camera overview --technique uniform:resolution=256,1024 \
   --frames 3 --size 320x180 --csv "$out/static.csv" 2>/dev/null
@@ -82,12 +84,12 @@ PY
 
 # x: memory. A sweep where the fronts differ (RTW small but slow), charted after the run.
 "$cli" bench --scene plane-box --technique uniform:resolution=256,1024 \
-  --technique rtw-backward:resolution=256 --frames 2 --warmup 1 --size 320x180 \
+  --technique rtw-backward:resolution=256 --frames 2 --warmup 1 --path-hz 0 --size 320x180 \
   --csv "$out/sweep.csv" --chart "$out/ms.png" 2>/dev/null
 "$cli" chart --csv "$out/sweep.csv" --chart "$out/bytes.png" --x bytes
 "$cli" chart --csv "$here/../../docs/images/bench-diagonal.csv" --chart "$out/old.png" --x bytes
 "$cli" bench --scene plane-box --technique uniform:resolution=256,512 --frames 2 --warmup 1 \
-  --size 320x180 --csv "$out/direct.csv" --chart "$out/direct.png" --x bytes 2>/dev/null
+  --path-hz 0 --size 320x180 --csv "$out/direct.csv" --chart "$out/direct.png" --x bytes 2>/dev/null
 
 python3 - "$out" <<'PY'
 import csv, struct, sys

@@ -134,6 +134,15 @@ class AllLit : public UniformShadowMap {
   std::string lookupShader() const override { return testShader("all_lit_lookup.glsl"); }
 };
 
+class Counting : public UniformShadowMap {
+ public:
+  using UniformShadowMap::UniformShadowMap;
+  void renderShadows(FrameContext& ctx) override {
+    countedFrames().push_back({this, ctx.camera.position});
+    UniformShadowMap::renderShadows(ctx);
+  }
+};
+
 template <typename T>
 TechniqueEntry entry(TechniqueInfo info) {
   return {std::move(info), [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
@@ -175,6 +184,15 @@ TechniqueEntry typoKeyTechnique() {
 
 TechniqueEntry allLitTechnique() {
   return entry<AllLit>(infoOf("test-all-lit", "Uniform, everything lit"));
+}
+
+TechniqueEntry countingTechnique() {
+  return entry<Counting>(infoOf("test-count", "Uniform, frames counted"));
+}
+
+std::vector<CountedFrame>& countedFrames() {
+  static std::vector<CountedFrame> frames;
+  return frames;
 }
 
 std::unique_ptr<Renderer> makeTestRenderer(const std::string& scene, const std::string& technique) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "core/Renderer.h"
 
@@ -23,6 +24,15 @@ TechniqueEntry typoKeyTechnique();
 /// uniform whose lookup reads every texel as the far plane: everything lit ("test-all-lit"),
 /// wrong on purpose (a claim measured on it is not reproduced).
 TechniqueEntry allLitTechnique();
+
+/// uniform that logs every frame it renders shadows for ("test-count"): which instance (one
+/// per renderer) and the camera's position, in the order they ran (countedFrames()).
+TechniqueEntry countingTechnique();
+struct CountedFrame {
+  const void* instance;
+  glm::vec3 cameraPosition;
+};
+std::vector<CountedFrame>& countedFrames();
 
 /// A renderer offering the four test techniques, with a built-in scene and its first camera.
 std::unique_ptr<Renderer> makeTestRenderer(const std::string& scene, const std::string& technique);

@@ -920,10 +920,11 @@ std::string reportMarkdown(const std::vector<Claim>& claims,
       {"seed", "## Seed claims: what the source documents say\n\n"},
       {"tool", "## Tool claims: ShadowLab's own readings (not the seeds')\n\n"},
       {"check", "## Implementation checks (hold by construction or arithmetic)\n\n"}};
-  for (const auto& [kind, title] : tables) {
+  for (const auto& table : tables) {
+    const auto& kind = table.first;  // a named copy: clang 14 cannot capture a binding
     if (std::none_of(claims.begin(), claims.end(), [&](const Claim& c) { return c.kind == kind; }))
       continue;
-    md << "\n" << title;
+    md << "\n" << table.second;
     claimTable(md, claims, outcomes, kind);
   }
   std::string lastSeed;

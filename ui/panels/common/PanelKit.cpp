@@ -493,12 +493,6 @@ PlotWidget::PlotWidget(QWidget* parent) : QWidget(parent) {
   setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
 }
 
-void PlotWidget::setTitle(const QString& title) {
-  if (title_ == title) return;
-  title_ = title;
-  update();
-}
-
 void PlotWidget::setAxisLabels(const QString& x, const QString& y) {
   xLabel_ = x;
   yLabel_ = y;
@@ -506,12 +500,8 @@ void PlotWidget::setAxisLabels(const QString& x, const QString& y) {
 }
 
 void PlotWidget::setSeries(std::vector<Series> series) {
-  const bool sameNames =
-      std::equal(series.begin(), series.end(), series_.begin(), series_.end(),
-                 [](const Series& a, const Series& b) { return a.name == b.name; });
   series_ = std::move(series);
   update();
-  if (!sameNames) updateGeometry();  // the legend's rows
 }
 
 void PlotWidget::setLines(std::vector<Line> lines) {

@@ -188,7 +188,7 @@ class PlotWidget : public QWidget {
 
   explicit PlotWidget(QWidget* parent = nullptr);
 
-  void setTitle(const QString& title);
+  void setTitle(const QString& title) { title_ = title, update(); }
   void setAxisLabels(const QString& x, const QString& y);
   void setSeries(std::vector<Series> series);
   void setLines(std::vector<Line> lines);

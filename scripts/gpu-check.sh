@@ -92,6 +92,26 @@ else
 fi
 width=${size%x*} height=${size#*x}
 
+# Every file this run writes, checked before the first step (the headless folder carries no
+# scripts/lib, so the output policy's rules for a fixed set of names are spelt out here): an
+# existing one must be a regular file (a link is followed), never a folder, FIFO, device or
+# socket, which a rename would move into or a redirection would block on.
+if [[ -e $out || -L $out ]] && [[ ! -d $out ]]; then fail_usage "--out '$out' is not a folder"; fi
+if [[ -e $out/raw || -L $out/raw ]] && [[ ! -d $out/raw ]]; then
+  fail_usage "--out: '$out/raw' exists and is not a folder"
+fi
+for f in gpu-check.csv gpu-check.md raw/make-scenes.log raw/da-rtw.log raw/bench.log \
+  raw/da-rtw.png raw/da-rtw.json raw/bench.csv; do
+  p=$out/$f
+  if [[ -L $p && ! -e $p ]]; then fail_usage "--out: '$p' is a link to nothing"; fi
+  if [[ -e $p && ! -f $p ]]; then
+    if [[ -d $p ]]; then
+      fail_usage "--out: '$p' is a folder, not a file this run can write"
+    else
+      fail_usage "--out: '$p' is not a regular file (a FIFO, device or socket)"
+    fi
+  fi
+done
 mkdir -p "$out/raw" 2>/dev/null || fail_usage "--out: cannot create $out/raw"
 out=$(cd "$out" && pwd -P)
 raw=$out/raw
@@ -312,6 +332,7 @@ END {
   }
 }
 ' "$raw/da-rtw.json" "$raw/bench.csv"
-mv -f "$csv_tmp" "$out/gpu-check.csv"
-mv -f "$md_tmp" "$out/gpu-check.md"
+# -T: the name itself is replaced (a folder made since the check fails the move, never takes it).
+mv -fT "$csv_tmp" "$out/gpu-check.csv"
+mv -fT "$md_tmp" "$out/gpu-check.md"
 echo "$self: wrote $out/gpu-check.csv and $out/gpu-check.md (raw outputs in $raw, $elapsed s)" >&2

@@ -49,9 +49,34 @@ class ViewOverlay : public QWidget {
   QRect insetRect;                     ///< where paintEvent drew the inset (widget px)
   int insetFactor = 0;
 
-  /// The inset's place: the largest whole magnification of `zoomArea` that fits in 45 % of
-  /// the view's width and height, in the bottom-right corner.
+  /// One box of text (or the zoom inset) the overlay draws, in widget pixels.
+  enum class Role {
+    Banner,
+    Paused,
+    OutsideLegend,
+    LeftCaption,
+    RightCaption,
+    Legend,
+    Note,
+    Inset,
+    InsetLabel
+  };
+  struct Box {
+    Role role;
+    QRectF rect;
+  };
+  /// Where every box goes at the widget's size and font, the order they are placed in: the
+  /// banner top left, the pause badge and the outside view's legend top right, the captions at
+  /// the bottom, the overlay legend bottom left, the note (reduced resolution, "computing ...")
+  /// and the zoom inset bottom right. A box never covers one placed before it: a top box moves
+  /// down under it, a bottom box up over it; the inset shrinks to a smaller magnification, or
+  /// is left out, when it would cover another box.
+  QVector<Box> layout() const;
+  /// Places the zoom inset (insetRect, insetFactor) as layout() does: the largest whole
+  /// magnification of `zoomArea` that fits in 45 % of the view's width and height, in the
+  /// bottom-right corner, clear of the other boxes.
   void placeInset();
+  static const char* roleName(Role role);
   /// The legends of the renderer's overlays (view.overlay), the changed overlay's count and
   /// the outside view's line colours, from the shared parameters and the last main frame.
   void setLegends(const sl::ParamSet& shared, const sl::FrameStats& stats, bool outside);
@@ -65,6 +90,11 @@ class ViewOverlay : public QWidget {
 
  protected:
   void paintEvent(QPaintEvent*) override;
+
+ private:
+  /// The one-line text of the overlay legend (the aliasing bar's caption, the changed count,
+  /// the warp grid's note); empty for the error legend, which has rows.
+  QString legendText() const;
 };
 
 }  // namespace sl::ui

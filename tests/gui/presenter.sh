@@ -6,7 +6,8 @@
 # panel image >= 35 % of the screen's height, the changed overlay's pixels = the renderer's
 # count, the pointer ring, the zoom inset, the ticks; every dock's fonts (widgets, dock titles,
 # Qt Charts) >= 80 % of the body and the Timing panel's pass names whole with it big; the big
-# panel full screen (F12) and back. PNGs in <out>/presenter.
+# panel full screen (F12) and back; the view's overlay boxes (banner, badge, legends, captions,
+# note, inset) never cover each other. PNGs in <out>/presenter.
 # usage: presenter.sh <shadowlab> <tests/data dir> <out dir> <shadowlab-gui-tests>
 set -euo pipefail
 app=$1

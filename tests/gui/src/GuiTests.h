@@ -115,6 +115,10 @@ class GuiTests : public QObject {
   /// drawn whole with it the big panel; the big panel full screen (F12) and back; PNGs into DIR.
   bool presenter(const QString& dir);
   void checkPresenterFonts(const QString& dir, const QSize& screen);
+  /// The view's overlay with everything on (banner, pause badge, outside legend, split
+  /// captions, each legend, note, zoom inset) at `view`'s size and two smaller: no box covers
+  /// another or leaves the view; overlay-boxes.png into DIR.
+  void checkOverlayBoxes(const QString& dir, const QSize& view);
   void checkFullPanel(const QString& dir, const QRect& screen);
   /// split-params[=DIR] (GuiTestsPresenter.cpp): the compare side's own parameter panel
   /// (a resolution edit changes its memory, not the main side's) and "equal memory".

@@ -33,6 +33,7 @@
 #include "SplitSideParams.h"
 #include "TeachingBar.h"
 #include "Theme.h"
+#include "ViewOverlay.h"
 #include "ViewportWidget.h"
 #include "common/shared_constants.h"
 #include "panels/common/PanelKit.h"
@@ -254,6 +255,9 @@ bool GuiTests::presenter(const QString& dir) {
             .arg(formatTick(-0.0218, 1.0), formatTick(1e-7, 2.0), formatTick(-2.5, 10.0),
                  formatTick(0.5, 1.0), formatTick(-0.001, 0.0)));
 
+  // 7b. The view's notes and badges never cover its text, at the presenter's font.
+  checkOverlayBoxes(dir, v->size());
+
   if (!dir.isEmpty()) {
     const QString name = QStringLiteral("presenter-%1x%2").arg(sr.width()).arg(sr.height());
     const bool saved = w_.grab().save(QDir(dir).filePath(name + QStringLiteral(".png"))) &&
@@ -277,6 +281,101 @@ bool GuiTests::presenter(const QString& dir) {
         tr("presenter mode off (from the full panel): view shown, body text back to %1 px")
             .arg(QFontInfo(QApplication::font()).pixelSize()));
   return true;
+}
+
+void GuiTests::checkOverlayBoxes(const QString& dir, const QSize& view) {
+  // What the overlay shows together, with the longest texts a lesson and a slow frame give:
+  // a lesson (banner, pause badge, legend, note), a comparison (split captions, badge,
+  // legend, note, zoom inset), the outside view (banner, badge, its legend, note), each with
+  // every overlay legend in turn, at the view's size and 80 % of it (docks grown); and
+  // everything at once at the view's size. (A smaller view keeps the boxes apart, but the
+  // last placed may leave it.)
+  QWidget host;
+  ViewOverlay o(&host);
+  const QString bannerTitle =
+      tr("Lesson 6 \u00b7 where the rotation wins: DA-RTW turns the light frame");
+  const QString bannerText =
+      tr("The importance map's covariance is stretched along the "
+         "diagonal; PCA's principal axis points along it and the warp, "
+         "turned, gives the diagonal its texels.");
+  const QVector<QPair<QColor, QString>> outsideLegend = {
+      {Qt::red, tr("camera frustum (to the scene's far end)")},
+      {Qt::green, tr("light frustum, map 0")},
+      {Qt::blue, tr("warped map's frustum, to its centre")}};
+  QImage zoom(view, QImage::Format_RGB32);
+  zoom.fill(QColor(90, 110, 140));
+  enum Show { Banner = 1, Split = 2, Outside = 4, Inset = 8 };
+  const int lesson = Banner, compare = Split | Inset, outsideView = Banner | Outside,
+            everything = Banner | Split | Outside | Inset;
+  auto show = [&](int what, const QSize& size) {
+    o.bannerTitle = what & Banner ? bannerTitle : QString();
+    o.bannerText = what & Banner ? bannerText : QString();
+    o.outsideLegend = what & Outside ? outsideLegend : decltype(outsideLegend){};
+    o.split = what & Split ? zoom.scaled(64, 64) : QImage();
+    o.leftCaption = tr("da-rtw \u00b7 error 0.746 % (frame 1234) \u00b7 m p95 3.21 \u00b7 4.0 MiB");
+    o.rightCaption = tr("rtw-backward \u00b7 error 2.067 % (frame 1234) \u00b7 m p95 5.19");
+    o.zoomSource = what & Inset ? zoom : QImage();
+    o.zoomArea = QRect(size.width() / 3, size.height() / 3, 40, 30);
+    o.resize(size);
+  };
+  o.pausedText = tr("PAUSED at frame 1234  \u00b7  . step  \u00b7  Space resume");
+  o.resolutionNote =
+      tr("internal 960x540 (frames over 100 ms)  \u00b7  computing fvsm \u2026 "
+         "4.2 s (the last complete frame is shown)");
+  o.errorNote = tr("view changed: tracing its reference\u2026");
+  o.changedCount = std::make_pair(std::uint64_t(123456), std::uint64_t(654321));
+  const ViewOverlay::Legend legends[] = {ViewOverlay::Legend::Aliasing, ViewOverlay::Legend::Error,
+                                         ViewOverlay::Legend::Changed,
+                                         ViewOverlay::Legend::WarpGrid};
+  struct Case {
+    int what;
+    QSize size;
+  };
+  QVector<Case> cases;
+  for (const QSize size : {view, view * 0.8})
+    for (const int what : {lesson, compare, outsideView}) cases.append({what, size});
+  cases.append({everything, view});
+  int layouts = 0, boxesSeen = 0, overlaps = 0, outside = 0;
+  QString first;
+  for (const Case& c : cases)
+    for (const ViewOverlay::Legend legend : legends) {
+      show(c.what, c.size);
+      o.legend = legend;
+      const QVector<ViewOverlay::Box> boxes = o.layout();
+      ++layouts;
+      boxesSeen += int(boxes.size());
+      const QString where = QStringLiteral("%1x%2").arg(c.size.width()).arg(c.size.height());
+      for (int i = 0; i < boxes.size(); ++i) {
+        if (!QRectF(o.rect()).contains(boxes[i].rect)) {
+          ++outside;
+          if (first.isEmpty())
+            first = tr("%1 leaves the %2 view").arg(ViewOverlay::roleName(boxes[i].role), where);
+        }
+        for (int j = i + 1; j < boxes.size(); ++j)
+          if (boxes[i].rect.intersects(boxes[j].rect)) {
+            ++overlaps;
+            if (first.isEmpty())
+              first = tr("%1 covers %2 in the %3 view")
+                          .arg(ViewOverlay::roleName(boxes[j].role),
+                               ViewOverlay::roleName(boxes[i].role), where);
+          }
+      }
+    }
+  // Every case draws the badge, the note and a legend; the comparison two captions and the
+  // inset (two boxes); so at least 3 boxes a layout.
+  check(overlaps == 0 && outside == 0 && boxesSeen >= 3 * layouts,
+        tr("the view's boxes (banner, badge, legends, captions, note, inset) never cover each "
+           "other and stay in the view: %1 layouts, %2 boxes, %3 overlaps, %4 outside%5")
+            .arg(layouts)
+            .arg(boxesSeen)
+            .arg(overlaps)
+            .arg(outside)
+            .arg(first.isEmpty() ? QString() : QStringLiteral(" (first: %1)").arg(first)));
+  if (!dir.isEmpty()) {  // everything at once, to look at
+    show(everything, view);
+    o.legend = ViewOverlay::Legend::Aliasing;
+    o.grab().save(QDir(dir).filePath(QStringLiteral("overlay-boxes.png")));
+  }
 }
 
 void GuiTests::checkPresenterFonts(const QString& dir, const QSize& screen) {

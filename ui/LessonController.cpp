@@ -11,6 +11,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QMenu>
+#include <QStatusBar>
 #include <QTimer>
 
 #include "LaunchOptions.h"
@@ -20,6 +21,7 @@
 #include "SessionFiles.h"
 #include "TeachingBar.h"
 #include "ViewportWidget.h"
+#include "panels/common/PanelKit.h"
 #include "panels/common/ParamPanel.h"
 #include "panels/rtw/RtwSettle.h"
 
@@ -30,6 +32,9 @@ namespace {
 QString menuText(const std::string& title) {
   return QString::fromStdString(title).replace(QLatin1Char('&'), QStringLiteral("&&"));
 }
+
+/// How much of a fit note identifies it on the status line (shownMessage may shorten the rest).
+constexpr int kFitNoteLead = 24;
 
 /// First paragraph of a lesson explanation (the banner's "what to look at").
 QString firstParagraph(const std::string& text) {
@@ -426,6 +431,9 @@ void LessonController::startSettling() {
   settleFrames_ = 0;
   if (!temporal || w.viewport()->paused()) {
     settling_ = false;
+    // The panels show the lesson's frame once it is drawn: measured after it.
+    connect(w.viewport(), &ViewportWidget::frameRendered, this, &LessonController::reportFitSoon,
+            Qt::SingleShotConnection);
     if (w.viewport()->paused()) w.viewport()->stepFrame();
     w.viewport()->requestFrame();
     return;
@@ -465,6 +473,7 @@ void LessonController::settleFrame() {
   }
   disconnect(settleConnection_);
   settling_ = false;
+  reportFitSoon();
   // The plots start at the settled state: what the lesson is about (lesson 7's vibration of a
   // tenth of a degree) is not squeezed under the settling turn's tens of degrees.
   w.docks().resetHistory();
@@ -476,6 +485,38 @@ void LessonController::settleFrame() {
                         "parameters.")
                          .arg(settleFrames_));
   w.viewport()->requestFrame();
+}
+
+void LessonController::reportFitSoon() {
+  // After the events this frame queued (the panels' new data, their layouts).
+  QTimer::singleShot(0, this, &LessonController::reportFit);
+}
+
+void LessonController::reportFit() {
+  if (!fitNote_.isEmpty() &&
+      w_.statusBar()->currentMessage().startsWith(fitNote_.left(kFitNoteLead)))
+    w_.statusBar()->clearMessage();  // the last lesson's, or this one's at another size
+  fitNote_.clear();
+  if (index_ < 0) return;
+  const auto& layout = lessons_[static_cast<std::size_t>(index_)].preset.layout;
+  if (!layout) return;
+  QStringList panels;
+  for (const std::string& id : layout->docks) {
+    const QDockWidget* dock = w_.findChild<QDockWidget*>(QString::fromStdString(id));
+    if (!dock || !dock->isVisible() || dock->visibleRegion().isEmpty()) continue;
+    const QStringList parts = unreadableParts(*dock);
+    if (!parts.isEmpty())
+      panels << (parts.size() == 1 ? tr("%1 (%2)").arg(dock->windowTitle(), parts.front())
+                                   : tr("%1 (%2 parts, the first %3)")
+                                         .arg(dock->windowTitle())
+                                         .arg(parts.size())
+                                         .arg(parts.front()));
+  }
+  if (panels.isEmpty()) return;
+  fitNote_ = tr("Too small to read at this window size: %1. F12 shows the big panel full "
+                "screen; closing other panels gives these room.")
+                 .arg(panels.join(QStringLiteral("; ")));
+  w_.showStatus(fitNote_, 0);
 }
 
 QDockWidget* LessonController::stripDock() const {

@@ -97,6 +97,11 @@ class LessonController : public QObject {
   std::vector<const std::string*> shownTexts() const;
   /// A text shown now quotes a live number ("{error_pct}").
   bool quotesLiveNumbers() const;
+  /// What the status line said when the lesson had settled at its size, if a panel the
+  /// lesson names is on screen below a readable size (unreadableParts): "Too small to read
+  /// at this window size: Warp functions (a plot 25 px tall, ...)", naming every such
+  /// panel and what gives it room; empty when every one reads.
+  const QString& fitNote() const { return fitNote_; }
 
  private:
   MainWindow& w_;
@@ -123,6 +128,11 @@ class LessonController : public QObject {
   /// Outside presenter mode: the strip's dock shown under the right column (hidden without
   /// rows); presenter mode places it itself.
   void placeStrip();
+  /// Measures the lesson's panels once it has settled and says, on the status line, which
+  /// are too small to read (fitNote).
+  void reportFit();
+  void reportFitSoon();
+  QString fitNote_;
   bool settling_ = false, settleQueued_ = false, settled_ = true;
   int settleFrames_ = 0;
 };

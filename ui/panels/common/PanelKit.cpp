@@ -853,4 +853,30 @@ void PublicationPanel::showContent(bool on, const QString& placeholder) {
   stack_->setCurrentIndex(on && stack_->count() > 1 ? 1 : 0);
 }
 
+QStringList unreadableParts(const QWidget& panel) {
+  QStringList small;
+  for (const PlotWidget* plot : panel.findChildren<PlotWidget*>()) {
+    if (!plot->isVisible() || plot->visibleRegion().isEmpty()) continue;
+    bool over = false;
+    for (const QRectF& entry : plot->legendEntries())
+      over = over || entry.intersects(plot->curveArea());
+    const int curves = static_cast<int>(plot->curveArea().height());
+    if (plot->height() < PlotWidget::kReadableHeight || curves < PlotWidget::kReadableCurves ||
+        over)
+      small << QObject::tr("a plot %1 px tall, its curves %2 px%3")
+                   .arg(plot->height())
+                   .arg(curves)
+                   .arg(over ? QObject::tr(", its legend over the curves") : QString());
+  }
+  for (const ImageView* image : panel.findChildren<ImageView*>()) {
+    if (!image->isVisible() || image->visibleRegion().isEmpty() || !image->hasImage()) continue;
+    const QRectF r = image->shownImageRect();
+    if (std::max(r.width(), r.height()) < ImageView::kReadableSide)
+      small << QObject::tr("an image drawn %1 x %2 px")
+                   .arg(r.width(), 0, 'f', 0)
+                   .arg(r.height(), 0, 'f', 0);
+  }
+  return small;
+}
+
 }  // namespace sl::ui

@@ -15,6 +15,7 @@
 #include <QJsonObject>
 #include <QPointF>
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 
 #include "core/Renderer.h"
@@ -307,5 +308,11 @@ class PublicationPanel : public QWidget {
   QStackedWidget* stack_ = nullptr;
   QLabel* placeholder_ = nullptr;
 };
+
+/// The plots and images of `panel` shown on screen below the size they read at from the back
+/// of a lecture hall (PlotWidget::kReadableHeight and kReadableCurves, ImageView::kReadableSide)
+/// or with a legend over the curves: one phrase each ("a plot 25 px tall, its curves 10 px").
+/// Hidden ones, and ones behind another tab, are not counted.
+QStringList unreadableParts(const QWidget& panel);
 
 }  // namespace sl::ui

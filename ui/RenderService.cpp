@@ -1,14 +1,8 @@
-// The render service's thread (see RenderService.h): a surfaceless EGL context (as the CLI's),
-// a queue of jobs, one frame slot, the stop flag.
+// The render service (RenderService.h): its thread (render/RenderWorker) with the window's
+// context, a surfaceless EGL context (as the CLI's) and the renderers made on it.
 #include "RenderService.h"
 
-#include <chrono>
-#include <condition_variable>
-#include <deque>
-#include <future>
 #include <map>
-#include <mutex>
-#include <thread>
 
 #include <QMetaObject>
 
@@ -17,110 +11,20 @@
 
 namespace sl::ui {
 
-class RenderService::Thread : public RenderContext {
+namespace {
+
+/// The render thread's GL context and its renderers, made and destroyed on that thread.
+class GlRenderContext : public RenderContext {
  public:
-  explicit Thread(RenderService* owner) : owner_(owner) {}
-
-  ~Thread() override { stop(); }
-
-  void start() {
-    std::lock_guard lock(m_);
-    if (thread_.joinable()) return;
-    thread_ = std::thread([this] { run(); });
+  explicit GlRenderContext(const std::atomic<bool>& stopFlag)
+      : stopFlag_(stopFlag), context_(std::make_unique<sl::gl::EglContext>(true)) {
+    description_ = renderer("main").glDescription();
+  }
+  ~GlRenderContext() override {
+    renderers_.clear();  // with the context current, before it goes
+    context_.reset();
   }
 
-  void stop() {
-    {
-      std::lock_guard lock(m_);
-      stopping_ = true;
-      stopFlag_ = true;
-      jobs_.clear();
-      frame_ = nullptr;
-    }
-    cv_.notify_all();
-    if (thread_.joinable()) thread_.join();
-  }
-
-  bool running() const {
-    std::lock_guard lock(m_);
-    return started_ && !failed_ && !stopping_;
-  }
-
-  bool submitFrame(Job job, bool stopRunning) {
-    bool replaced = false;
-    {
-      std::lock_guard lock(m_);
-      if (stopping_) return false;
-      replaced = static_cast<bool>(frame_);
-      frame_ = std::move(job);
-      if (stopRunning && busyFrame_) {
-        stopFlag_ = true;
-        ++framesStopped_;
-      }
-    }
-    cv_.notify_all();
-    return replaced;
-  }
-
-  void post(Job job, bool front = false) {
-    {
-      std::lock_guard lock(m_);
-      if (stopping_) return;
-      if (front)
-        jobs_.push_front(std::move(job));
-      else
-        jobs_.push_back(std::move(job));
-    }
-    cv_.notify_all();
-  }
-
-  bool call(const Job& job) {
-    if (std::this_thread::get_id() == thread_.get_id()) {  // from a job: run it now
-      job(*this);
-      return true;
-    }
-    std::promise<void> done;
-    std::future<void> finished = done.get_future();
-    {
-      std::lock_guard lock(m_);
-      if (stopping_ || failed_ || !thread_.joinable()) return false;
-      jobs_.push_front([&job, &done](RenderContext& c) {
-        try {
-          job(c);
-        } catch (...) {
-          done.set_exception(std::current_exception());
-          return;
-        }
-        done.set_value();
-      });
-      if (busyFrame_) {  // the caller waits: the frame in progress is not finished first
-        stopFlag_ = true;
-        ++framesStopped_;
-      }
-    }
-    cv_.notify_all();
-    while (finished.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-      std::lock_guard lock(m_);
-      if (failed_ || stopping_) return false;  // never run: the thread has no context
-    }
-    finished.get();  // rethrows the job's exception
-    return true;
-  }
-
-  Activity activity() const {
-    std::lock_guard lock(m_);
-    Activity a;
-    a.busy = busy_;
-    a.frame = busyFrame_;
-    a.framesStopped = framesStopped_;
-    if (busy_)
-      a.elapsedMs =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since_)
-              .count();
-    return a;
-  }
-
-  // RenderContext (render thread only)
   sl::Renderer& renderer(const std::string& name) override {
     auto it = renderers_.find(name);
     if (it != renderers_.end()) return *it->second;
@@ -138,107 +42,67 @@ class RenderService::Thread : public RenderContext {
   const std::string& glDescription() const override { return description_; }
 
  private:
-  void run() {
-    try {
-      context_ = std::make_unique<sl::gl::EglContext>(true);
-      description_ = renderer("main").glDescription();
-    } catch (const std::exception& e) {
-      {
-        std::lock_guard lock(m_);
-        failed_ = true;
-      }
-      const QString message = QString::fromUtf8(e.what());
-      QMetaObject::invokeMethod(
-          owner_, [o = owner_, message] { Q_EMIT o->failed(message); }, Qt::QueuedConnection);
-      return;
-    }
-    {
-      std::lock_guard lock(m_);
-      started_ = true;
-    }
-    const QString description = QString::fromStdString(description_);
-    QMetaObject::invokeMethod(
-        owner_, [o = owner_, description] { Q_EMIT o->ready(description); }, Qt::QueuedConnection);
-    for (;;) {
-      Job job;
-      bool isFrame = false;
-      {
-        std::unique_lock lock(m_);
-        cv_.wait(lock, [this] { return stopping_ || !jobs_.empty() || frame_; });
-        if (stopping_) break;
-        if (!jobs_.empty()) {
-          job = std::move(jobs_.front());
-          jobs_.pop_front();
-        } else {
-          job = std::move(frame_);
-          frame_ = nullptr;
-          isFrame = true;
-        }
-        stopFlag_ = false;  // whatever starts now starts unasked
-        busy_ = true;
-        busyFrame_ = isFrame;
-        since_ = std::chrono::steady_clock::now();
-      }
-      try {
-        job(*this);
-      } catch (const std::exception&) {
-        // A job reports its own problems through its result; one that throws is dropped.
-      }
-      std::lock_guard lock(m_);
-      busy_ = false;
-      busyFrame_ = false;
-    }
-    for (auto& [name, r] : renderers_) r.reset();  // with the context current
-    renderers_.clear();
-    context_.reset();
-  }
-
-  RenderService* owner_;
-  mutable std::mutex m_;
-  std::condition_variable cv_;
-  std::deque<Job> jobs_;
-  Job frame_;
-  bool stopping_ = false, started_ = false, failed_ = false;
-  bool busy_ = false, busyFrame_ = false;
-  std::uint64_t framesStopped_ = 0;
-  std::chrono::steady_clock::time_point since_;
-  std::atomic<bool> stopFlag_{false};
-  std::thread thread_;
-  // Render thread only:
+  const std::atomic<bool>& stopFlag_;
   std::unique_ptr<sl::gl::EglContext> context_;
   std::map<std::string, std::unique_ptr<sl::Renderer>> renderers_;
   std::string description_;
 };
 
-RenderService::RenderService(QObject* parent)
-    : QObject(parent), thread_(std::make_unique<Thread>(this)) {}
+}  // namespace
+
+RenderService::RenderService(QObject* parent) : QObject(parent) {
+  RenderWorker::Events events;
+  events.ready = [this](const std::string& description) {
+    QMetaObject::invokeMethod(
+        this, [this, d = QString::fromStdString(description)] { Q_EMIT ready(d); },
+        Qt::QueuedConnection);
+  };
+  events.failed = [this](const std::string& message) {
+    QMetaObject::invokeMethod(
+        this, [this, m = QString::fromStdString(message)] { Q_EMIT failed(m); },
+        Qt::QueuedConnection);
+  };
+  worker_ = std::make_unique<RenderWorker>(
+      [](const std::atomic<bool>& stopFlag) -> std::unique_ptr<RenderContext> {
+        return std::make_unique<GlRenderContext>(stopFlag);
+      },
+      std::move(events));
+}
 
 RenderService::~RenderService() {
-  thread_->stop();
+  worker_->stop();
 }
 
 void RenderService::start() {
-  thread_->start();
+  worker_->start();
 }
 
 bool RenderService::isRunning() const {
-  return thread_->running();
+  return worker_->running();
 }
 
 bool RenderService::submitFrame(Job job, bool stopRunning) {
-  return thread_->submitFrame(std::move(job), stopRunning);
+  return worker_->submitFrame(RenderTag::kViewFrame, std::move(job), stopRunning);
 }
 
 void RenderService::post(Job job) {
-  thread_->post(std::move(job));
+  worker_->post({}, std::move(job));
+}
+
+bool RenderService::post(const std::string& tag, Job job, Dropped dropped) {
+  return worker_->post(tag, std::move(job), std::move(dropped));
+}
+
+void RenderService::cancel(const std::string& tag) {
+  worker_->cancel(tag);
 }
 
 bool RenderService::call(const Job& job) {
-  return thread_->call(job);
+  return worker_->call(job);
 }
 
 RenderService::Activity RenderService::activity() const {
-  return thread_->activity();
+  return worker_->activity();
 }
 
 }  // namespace sl::ui

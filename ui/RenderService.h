@@ -4,79 +4,78 @@
 // jobs here and receives their results as queued calls (qrenderdoc's ReplayManager is the
 // model).
 //
-// Work is of two kinds. Jobs run in the order posted. The FRAME slot holds at most one
-// frame not yet started: a newer frame replaces it (a camera drag does not queue frames),
-// and may ask the frame in progress to stop (the renderer reads the stop flag between its
-// steps and units; a stopped frame is dropped, never shown or measured). A blocking call()
-// is for explicit actions only (exports, scripted reads): it stops the frame in progress
-// and runs before anything else queued.
+// Every job may carry a tag (RenderTag below). A newer job with the same tag replaces the one
+// of that tag not yet started: the older never runs, post() returns true and the older's
+// `dropped` callback runs (AsyncInvoke(tag, ...) in qrenderdoc). Untagged jobs run in the
+// order posted and are never replaced. cancel(tag) drops the unstarted job of a tag and asks
+// the one in progress to stop when it has that tag. Frames are jobs whose tag starts with
+// "frame:": they run only when no other job waits, so a frame tag is a slot holding at most
+// one frame not yet started (a camera drag does not queue frames); submitFrame() may also ask
+// the frame of its tag in progress to stop (the renderer reads the stop flag between its
+// steps and units; a stopped frame is dropped, never shown or measured). A blocking call() is
+// for explicit actions only (exports, scripted reads): it stops the frame in progress and
+// runs before anything else queued. Every job either runs or is dropped, once; `dropped`
+// runs on the thread whose action dropped it (the poster's for a replacement, the
+// canceller's, the one destroying the service), outside the service's lock.
 //
-// No GL header here: the context and renderers live in the .cpp.
+// The queue policy and the thread are plain C++ (render/JobQueue.h, render/RenderWorker.h:
+// CPU-tested with a fake context); no GL header here: the context and renderers live in the
+// .cpp.
 #pragma once
 
-#include <atomic>
-#include <functional>
 #include <memory>
 #include <string>
 
 #include <QObject>
 #include <QString>
 
-namespace sl {
-class Renderer;
-}  // namespace sl
+#include "render/RenderContext.h"
+#include "render/RenderWorker.h"
 
 namespace sl::ui {
 
-/// What a job on the render thread uses: the thread's renderers, made on first use and kept
-/// until the service stops, and the stop flag of the work in progress.
-class RenderContext {
- public:
-  virtual ~RenderContext() = default;
-  /// The renderer called `name` ("main", "split", "charts"), created on first use; the first
-  /// one made owns the context's debug output.
-  virtual sl::Renderer& renderer(const std::string& name) = 0;
-  /// The renderer called `name` if it exists, else null (no GL).
-  virtual sl::Renderer* existing(const std::string& name) = 0;
-  /// Set when a newer frame replaced the one in progress, a blocking call waits, or the
-  /// service stops (renderers read it: Renderer::setCancelFlag).
-  virtual const std::atomic<bool>& stopFlag() const = 0;
-  /// The GL_RENDERER / version line of the context.
-  virtual const std::string& glDescription() const = 0;
+/// The tags of the window's render jobs: one unstarted job per tag.
+struct RenderTag {
+  static constexpr char kViewFrame[] = "frame:view";  ///< the view's frame (both halves)
+  static constexpr char kError[] = "error";           ///< a still view's error trace
+  static constexpr char kProbe[] = "probe";           ///< the hover probe's readback
+  static constexpr char kCharts[] = "charts";         ///< the Charts panel's sweep frame
+  static constexpr char kVariants[] = "variants";     ///< a panel's parameter variants
 };
 
 class RenderService : public QObject {
   Q_OBJECT
 
  public:
-  using Job = std::function<void(RenderContext&)>;
+  using Job = RenderWorker::Job;
+  using Dropped = RenderWorker::Dropped;
+  /// What the render thread is doing: a frame or job in progress and for how long.
+  using Activity = RenderWorker::Activity;
 
   explicit RenderService(QObject* parent = nullptr);
-  /// Stops the frame in progress, drops queued work, frees every renderer with the context
-  /// current and joins the thread.
+  /// Stops the job in progress, drops queued work (their `dropped` run here), frees every
+  /// renderer with the context current and joins the thread.
   ~RenderService() override;
 
   /// Starts the thread and creates its context; ready() or failed() follows (queued).
   void start();
   bool isRunning() const;
 
-  /// Puts `job` in the frame slot, replacing a frame that has not started (true: one was
-  /// replaced; it never runs). `stopRunning`: also ask a frame in progress to stop (the view
-  /// changed: its result would be stale).
+  /// Puts `job` in the view's frame slot (RenderTag::kViewFrame), replacing a frame that has
+  /// not started (true: one was replaced; it never runs). `stopRunning`: also ask the view's
+  /// frame in progress to stop (the view changed: its result would be stale).
   bool submitFrame(Job job, bool stopRunning);
-  /// Runs `job` after the work queued before it (before the frame slot).
+  /// Runs `job` untagged, after the jobs queued before it (before any frame).
   void post(Job job);
+  /// Runs `job` under `tag`: replaces an unstarted job of that tag (true; its `dropped`
+  /// runs before this returns).
+  bool post(const std::string& tag, Job job, Dropped dropped = {});
+  /// Drops the unstarted job of `tag` and asks the one in progress to stop if it has it.
+  void cancel(const std::string& tag);
   /// Runs `job` on the render thread now (after the job in progress, which is asked to stop
   /// if it is a frame) and waits for it. False when the service is not running.
   bool call(const Job& job);
 
-  /// What the render thread is doing: a frame or job in progress and for how long.
-  struct Activity {
-    bool busy = false;
-    bool frame = false;  ///< the frame slot's work (else a job)
-    double elapsedMs = 0.0;
-    std::uint64_t framesStopped = 0;  ///< frames asked to stop since the start
-  };
   Activity activity() const;
 
  Q_SIGNALS:
@@ -86,8 +85,7 @@ class RenderService : public QObject {
   void failed(const QString& message);
 
  private:
-  class Thread;
-  std::unique_ptr<Thread> thread_;
+  std::unique_ptr<RenderWorker> worker_;
 };
 
 }  // namespace sl::ui

@@ -136,7 +136,8 @@ void ViewportWidget::computeErrorIfStill() {
   if (failedFrameUnmeasured()) return;
   const std::uint64_t revision = viewRevision_;
   const bool split = split_ && !splitImage_.isNull();
-  service_->post([this, revision, split](RenderContext& c) {
+  // A newer request replaces one not started (its view is older).
+  service_->post(RenderTag::kError, [this, revision, split](RenderContext& c) {
     const SideError main = computeSideError(c, "main");
     std::optional<SideError> right;
     if (split) right = computeSideError(c, "split");

@@ -508,7 +508,7 @@ void ViewportWidget::probeHover() {
   const QPoint at(x / frameDivisor_, y / frameDivisor_);  // internal pixels
   probeInFlight_ = true;
   ++probesRead_;  // asked of the render thread: one pixel read back
-  service_->post([this, at](RenderContext& c) {
+  service_->post(RenderTag::kProbe, [this, at](RenderContext& c) {
     std::optional<sl::PixelProbe> probe;
     if (sl::Renderer* r = c.existing("main")) probe = r->probePixel(at.x(), at.y());
     QMetaObject::invokeMethod(

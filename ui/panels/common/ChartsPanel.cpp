@@ -251,6 +251,7 @@ bool ChartsPanel::startSweep() {
 
 void ChartsPanel::cancelSweep() {
   if (!running()) return;
+  if (viewport_) viewport_->service().cancel(RenderTag::kCharts);  // its result is dropped
   finish(false);
 }
 
@@ -320,7 +321,8 @@ void ChartsPanel::measureNext() {
   const bool first = frameIndex_ == 0;
   const std::uint64_t serial = sweepSerial_;
   QPointer<ChartsPanel> self(this);
-  viewport_->service().post([=](RenderContext& c) {
+  // Tagged: a new sweep's first frame replaces the old sweep's unstarted one.
+  viewport_->service().post(RenderTag::kCharts, [=](RenderContext& c) {
     FrameMeasure m;
     try {
       sl::Renderer& r = c.renderer("charts");

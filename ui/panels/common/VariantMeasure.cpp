@@ -68,7 +68,7 @@ void VariantMeasure::measureNext() {
   const int width = size.width(), height = size.height();
   const std::uint64_t serial = serial_;
   QPointer<VariantMeasure> self(this);
-  viewport_->service().post([=](RenderContext& c) {
+  viewport_->service().post(RenderTag::kVariants, [=](RenderContext& c) {
     double pct = std::numeric_limits<double>::quiet_NaN();
     std::string problem;
     try {

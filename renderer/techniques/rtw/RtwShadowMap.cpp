@@ -431,34 +431,30 @@ void RtwShadowMap::resetTemporalState() {
   carried_.reset();
   lastUpdate_ = {};
   momentFence_.reset();
-  spareMoments_ = {};
+  spareSpread_ = {};
+  spareFence_.reset();
+  snapshot_.reset();
   swappedThisFrame_ = false;
 }
 
 void RtwShadowMap::commitFrame() {
   carried_.commit();
+  snapshot_.reset();  // the next frame reads this frame's moments
   swappedThisFrame_ = false;
 }
 
 void RtwShadowMap::discardFrame() {
   carried_.discard();
-  if (swappedThisFrame_) swapMoments();  // the last complete frame's moments again
+  if (swappedThisFrame_) swapMoments();  // the last complete frame's again
   swappedThisFrame_ = false;
 }
 
 void RtwShadowMap::swapMoments() {
-  if (!spareMoments_.chain) {
-    const GLbitfield rw = GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT;
-    spareMoments_.im = gl::Texture::create2D(GL_R32UI, momentRes_, momentRes_);
-    spareMoments_.chain = gl::Buffer::create(GLsizeiptr(momentBuffer_.size()), nullptr, rw);
-    spareMoments_.counts = gl::Buffer::create(GLsizeiptr(momentCounts_.size()), nullptr, rw);
-    spareMoments_.spread = gl::Buffer::create(GLsizeiptr(spread_.size()), nullptr, rw);
-  }
-  std::swap(momentIm_, spareMoments_.im);
-  std::swap(momentBuffer_, spareMoments_.chain);
-  std::swap(momentCounts_, spareMoments_.counts);
-  std::swap(spread_, spareMoments_.spread);
-  std::swap(momentFence_, spareMoments_.fence);
+  if (!spareSpread_)
+    spareSpread_ = gl::Buffer::create(GLsizeiptr(spread_.size()), nullptr,
+                                      GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+  std::swap(spread_, spareSpread_);
+  std::swap(momentFence_, spareFence_);
 }
 
 void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx) {
@@ -480,14 +476,16 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx
     momentIm_ = {};
     collapsed_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     spread_ = config_.rotation
-                  ? gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw)
+                  ? gl::Buffer::create(GLsizeiptr((2 * imRes + 6) * sizeof(float)), nullptr, rw)
                   : gl::Buffer{};
     blurred_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     warp_ = gl::Buffer::create(GLsizeiptr(2 * (imRes + 1) * sizeof(float)), nullptr, rw);
     warpView_ = gl::Texture::createBufferView(GL_R32F, warp_);
     imRes_ = imRes;
     momentFence_.reset();
-    spareMoments_ = {};
+    spareSpread_ = {};
+    spareFence_.reset();
+    snapshot_.reset();
   }
   // The 2D IM: always for forward analysis (its render target), else only while asked for.
   const bool wantIm = !backward() || ctx.wants("importance");
@@ -525,7 +523,9 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx
         nullptr, rw);
     momentRes_ = momentRes;
     momentFence_.reset();
-    spareMoments_ = {};
+    spareSpread_ = {};
+    spareFence_.reset();
+    snapshot_.reset();
   }
 }
 
@@ -553,7 +553,8 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   }
   // Read, not consumed: a discarded frame (discardFrame) leaves them to the next one.
   if (!momentFence_ || !momentFence_.wait()) return;
-  std::vector<float> top = readFloats(momentBuffer_, size_t(momentOffsets_.back()), 6);
+  // The chain's top, copied behind that frame's 1D maps (renderShadows).
+  std::vector<float> top = readFloats(spread_, 2 * size_t(imRes_), 6);
   rtw::MomentTexel t;
   for (int c = 0; c < 6; ++c) t[c] = top[c], lastTop_[c] = top[c];
   // pca.metric: in metres (the IM's axes span the light frustum's extents) or IM units.
@@ -644,7 +645,10 @@ rtw::ImportanceSnapshot RtwShadowMap::readSnapshot() const {
 void RtwShadowMap::predictTurn(FrameContext& ctx, std::optional<double> pcaAxisDeg, bool apply) {
   const auto start = std::chrono::steady_clock::now();
   const ParamSet& p = ctx.params;
-  const rtw::ImportanceSnapshot snapshot = readSnapshot();
+  // Read once per committed frame: a discarded frame has overwritten the IM and its counts,
+  // but its reading of the last complete frame's stays (commitFrame forgets it).
+  if (!snapshot_) snapshot_ = readSnapshot();
+  const rtw::ImportanceSnapshot& snapshot = *snapshot_;
   rtw::PredictionSettings settings;
   settings.warp = {p.getInt("blur.radius"), float(p.get("blur.sigma")),
                    float(p.get("importance.floor"))};
@@ -986,6 +990,9 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
     glCopyNamedBufferSubData(collapsed_.id(), spread_.id(), 0, 0,
                              GLsizeiptr(2 * imRes_ * sizeof(float)));
+    glCopyNamedBufferSubData(momentBuffer_.id(), spread_.id(),
+                             GLintptr(momentOffsets_.back() * sizeof(float)),
+                             GLintptr(2 * imRes_ * sizeof(float)), GLsizeiptr(6 * sizeof(float)));
     momentFence_.place();
   }
   {
@@ -1091,15 +1098,12 @@ MemoryStats RtwShadowMap::memory() const {
     m.add("turn prediction counts (pixels, importance sum, edge bins)", "R32UI", momentRes_,
           momentRes_, SL_RTW_COUNT_PLANES, 4);
   }
-  if (spread_) m.add("last frame's 1D importance (x, y; the spread gate)", "R32F", imRes_, 1, 2, 4);
-  if (spareMoments_.chain) {  // the same again: the last complete frame's, while a frame writes
-    m.add("moment IM of the last complete frame", "R32UI", momentRes_, momentRes_, 1, 4);
-    m.add("moment chain of the last complete frame", "R32F x6",
-          int(spareMoments_.chain.size() / (6 * 4)), 1, 6, 4);
-    m.add("turn prediction counts of the last complete frame", "R32UI", momentRes_, momentRes_,
-          SL_RTW_COUNT_PLANES, 4);
-    m.add("1D importance of the last complete frame", "R32F", imRes_, 1, 2, 4);
-  }
+  if (spread_)
+    m.add("last frame's 1D importance (x, y; the spread gate) and moment top", "R32F",
+          2 * imRes_ + 6, 1, 1, 4);
+  if (spareSpread_)  // the last complete frame's, while a frame writes its own (swapMoments)
+    m.add("1D importance and moment top of the last complete frame", "R32F", 2 * imRes_ + 6, 1, 1,
+          4);
   if (uniformMap_)
     m.addDebugView("unwarped contrast map (while a panel shows it)", "DEPTH_COMPONENT32F", smRes_,
                    smRes_, 1, 4);

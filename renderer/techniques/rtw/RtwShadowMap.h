@@ -5,6 +5,7 @@
 // Every GPU pass mirrors a function of algo/rtw/ (the CPU reference; parity-tested).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "algo/Focus.h"
@@ -54,8 +55,8 @@ class RtwShadowMap : public Technique {
 
  private:
   void ensureResources(int smRes, int imRes, const FrameContext& ctx);
-  /// Exchanges the moment IM, its counts, the moment chain, the spread copy and their fence
-  /// with spareMoments_ (created at the same sizes on first use).
+  /// Exchanges what the next frame reads of this frame's moments (spread_: the 1D maps and the
+  /// moment chain's top, and its fence) with the spare set (created on first use).
   void swapMoments();
   void rotationFromLastMoments(FrameContext& ctx);
   /// rotation.mode = predicted (or the prediction's keys asked for): the last frame's moment IM
@@ -110,15 +111,14 @@ class RtwShadowMap : public Technique {
     double momentAngleDeg = 0.0;     ///< ... and the angle of R it was turned by
   };
   FrameCarried<Carried> carried_;
-  /// The other set of what one frame leaves for the next (momentIm_, momentCounts_,
-  /// momentBuffer_, spread_, momentFence_): a frame reads the last complete frame's, swaps, and
-  /// writes its own into the other set; a discarded frame swaps back (discardFrame).
-  struct MomentSet {
-    gl::Texture im;
-    gl::Buffer chain, counts, spread;
-    gl::Fence fence;
-  } spareMoments_;
+  /// The other set of spread_ and momentFence_: a frame reads the last complete frame's, swaps,
+  /// and writes its own into the other; a discarded frame swaps back (discardFrame).
+  gl::Buffer spareSpread_;
+  gl::Fence spareFence_;
   bool swappedThisFrame_ = false;
+  /// The turn prediction's reading of the last complete frame's moment IM and counts (which a
+  /// frame overwrites): kept when a frame is discarded, forgotten when one commits.
+  std::optional<rtw::ImportanceSnapshot> snapshot_;
   rtw::RotationUpdate lastUpdate_;
   std::array<float, 6> lastTop_{};
   /// The last prediction: every candidate scored and the decision (valid when searched).

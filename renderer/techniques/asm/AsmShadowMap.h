@@ -45,7 +45,10 @@ class AsmShadowMap : public Technique {
   /// A new scene (Renderer::setScene) or a reset: the cached pages are dropped; the next frame
   /// starts from the coarse map. (Not keyed on the scene's address: a new scene may be
   /// allocated where the old one was.)
-  void resetTemporalState() override { carried_.reset(); }
+  void resetTemporalState() override {
+    carried_->key = {};
+    carried_.commit();  // between frames: the committed key too
+  }
   /// The page cache the next frame starts from is the last complete frame's: a discarded
   /// frame's allocations are forgotten, the pool slots it overwrote restored and the page table
   /// uploaded again.

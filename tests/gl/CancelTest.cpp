@@ -215,8 +215,9 @@ enum class Stop {
 
 /// Renders `technique` (wrapped as "test-stop-<id>") on its scene: three complete frames with
 /// the camera moving, so that state across frames exists; then, unless `stop` is None, a frame
-/// at another view stopped there; then that view again, complete. Returns what that last frame
-/// shows.
+/// at another view stopped there; then a view near the third, complete (the held state a
+/// stopped frame would have left shows there: the cascades' held range, ASM's pages). Returns
+/// what that last frame shows.
 FrameReadback renderAfterStop(const std::string& technique, Stop stop) {
   const TechniqueInfo* info = Renderer::findTechnique(technique);
   EXPECT_TRUE(info);
@@ -233,14 +234,16 @@ FrameReadback renderAfterStop(const std::string& technique, Stop stop) {
   // A pool the frames fill: the stopped frame evicts (and overwrites) cached pages.
   if (technique == "asm") {
     EXPECT_FALSE(r->params().set("pool.pages", 40));
+    EXPECT_FALSE(r->params().set("asm.pages.per.frame", 8));  // refined over several frames
   }
   std::atomic<bool> flag{false};
   r->setCancelFlag(&flag);
   const Camera first = r->camera();
-  Camera second = first, third = first, moved = first;
+  Camera second = first, third = first, moved = first, after = first;
   second.orbit(10.0f, 5.0f);
   third.orbit(4.0f, -3.0f);
   moved.orbit(-25.0f, 8.0f);
+  after.orbit(6.0f, -2.0f);
   for (const Camera& c : {first, second, third}) {
     r->setCamera(c);
     EXPECT_FALSE(r->renderFrame(160, 120, 0));
@@ -263,6 +266,7 @@ FrameReadback renderAfterStop(const std::string& technique, Stop stop) {
     }
     flag = false;
   }
+  r->setCamera(after);
   EXPECT_FALSE(r->renderFrame(160, 120, 0));
   EXPECT_TRUE(r->stats().complete());
   test::expectNoGlErrors(*r);

@@ -262,9 +262,35 @@ bool PagedMap::ensure(const pages::VirtualLayout& layout, int poolPages, int min
     poolColumns_ = columns;
     createDepthTarget(poolMap_, poolFbo_, columns * layout_.pageSize, rows * layout_.pageSize,
                       technique + " page pool");
+    keptPool_ = {};
+    kept_.clear();
     changed = true;
   }
   return changed;
+}
+
+namespace {
+/// Copies slot `slot` of a pool of `columns` pages per row of `pageSize`² texels.
+void copySlot(const gl::Texture& from, const gl::Texture& to, int slot, int columns, int pageSize) {
+  const int x = (slot % columns) * pageSize, y = (slot / columns) * pageSize;
+  glCopyImageSubData(from.id(), GL_TEXTURE_2D, 0, x, y, 0, to.id(), GL_TEXTURE_2D, 0, x, y, 0,
+                     pageSize, pageSize, 1);
+}
+}  // namespace
+
+void PagedMap::keepSlots(std::span<const int> slots) {
+  if (!keptPool_)
+    keptPool_ = gl::Texture::create2D(poolMap_.format(), poolMap_.width(), poolMap_.height());
+  for (const int slot : slots) {
+    if (std::find(kept_.begin(), kept_.end(), slot) != kept_.end()) continue;
+    copySlot(poolMap_, keptPool_, slot, poolColumns_, layout_.pageSize);
+    kept_.push_back(slot);
+  }
+}
+
+void PagedMap::restoreKept() {
+  for (const int slot : kept_) copySlot(keptPool_, poolMap_, slot, poolColumns_, layout_.pageSize);
+  kept_.clear();
 }
 
 void PagedMap::uploadTable(const pages::PageTable& table) {
@@ -377,6 +403,9 @@ void PagedMap::addMemory(MemoryStats& m) const {
   if (poolMap_)
     m.add("page pool", gl::formatName(poolMap_.format()), poolMap_.width(), poolMap_.height(), 1,
           gl::bytesPerTexel(poolMap_.format()));
+  if (keptPool_)
+    m.add("page pool as the last complete frame left it", gl::formatName(keptPool_.format()),
+          keptPool_.width(), keptPool_.height(), 1, gl::bytesPerTexel(keptPool_.format()));
   if (superpage_)
     m.add("superpage target", gl::formatName(superpage_.format()), superpage_.width(),
           superpage_.height(), 1, gl::bytesPerTexel(superpage_.format()));

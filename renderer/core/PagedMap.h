@@ -99,6 +99,13 @@ class PagedMap {
                                 const pages::PageTable& table, int superpageSize, bool clearPool,
                                 gl::GpuTimer* timer, const std::string& renderPass,
                                 const std::string& copyPass);
+  /// Transactional frames (Technique::commitFrame) for a pool kept as a cache (asm): before a
+  /// frame renders into `slots`, the texels of those not kept yet this frame are copied into a
+  /// second pool (created on first use, listed by addMemory); restoreKept() copies them back
+  /// (the frame is discarded), forgetKept() forgets them (committed). A new pool forgets them.
+  void keepSlots(std::span<const int> slots);
+  void restoreKept();
+  void forgetKept() { kept_.clear(); }
   /// Frees the superpage target (the page-by-page path does not need it).
   void releaseSuperpageTarget();
   const gl::Texture& superpageTexture() const { return superpage_; }
@@ -127,6 +134,8 @@ class PagedMap {
   gl::Framebuffer poolFbo_;
   gl::Texture pageTable_;  ///< R32UI, finest pages per side, one mip level per quadtree level
   gl::Texture superpage_;  ///< DEPTH_COMPONENT32F, one superpage (renderSuperpages only)
+  gl::Texture keptPool_;   ///< the pool's size: slots as the last complete frame left them
+  std::vector<int> kept_;  ///< the slots keptPool_ holds for the frame in progress
   gl::Framebuffer superpageFbo_;
 };
 

@@ -156,10 +156,12 @@ struct Targets {
   int width = 0, height = 0;
   gl::Texture position, normal, albedo, depth, hard, filtered, aliasing, texel, mapIndex, color;
   gl::Texture reference;  // R8UI reference mask of the last computeError() (error overlay)
-  /// R8UI: the previous frame's hard mask, copied before the resolve while the mask change
-  /// is counted (changed overlay, "mask.*"); `resolved`: a resolve wrote `hard` at this size.
-  gl::Texture prevHard;
-  bool resolved = false;
+  /// The last COMPLETE frame's hard mask, aliasing m and map index (copied when a frame
+  /// commits): what the next frame reads as the previous one (FrameContext::previous, the mask
+  /// change), so that a stopped frame's partial resolve is never read. `committed`: they hold
+  /// a complete frame's at this size.
+  gl::Texture prevHard, prevAliasing, prevMapIndex;
+  bool committed = false;
   gl::Framebuffer gbuffer, resolve, composite;
 };
 
@@ -248,6 +250,8 @@ struct RendererState {
     t.mapIndex = gl::Texture::create2D(GL_R8UI, w, h);
     t.reference = gl::Texture::create2D(GL_R8UI, w, h);
     t.prevHard = gl::Texture::create2D(GL_R8UI, w, h);
+    t.prevAliasing = gl::Texture::create2D(GL_R32F, w, h);
+    t.prevMapIndex = gl::Texture::create2D(GL_R8UI, w, h);
     t.color = gl::Texture::create2D(GL_RGBA8, w, h);
     t.gbuffer = gl::Framebuffer::create();
     t.gbuffer.attach(GL_COLOR_ATTACHMENT0, t.position);
@@ -653,7 +657,7 @@ struct FrameSetup {
   float aspect = 1.0f;
   bool publishing = false;       ///< publications requested this frame
   bool countMaskChange = false;  ///< the changed overlay or a "mask.*" key is on
-  bool hadMask = false;          ///< the hard mask holds a previous frame's at this size
+  bool hadMask = false;          ///< a complete frame's mask at this size is kept (prevHard)
   bool showOutsideView = false;  ///< view.outside
 };
 
@@ -716,7 +720,7 @@ void shadowsStep(RendererState& s, Frame& f) {
       .width = setup.width,
       .height = setup.height,
       .gbuffer = {.position = t.position, .normal = t.normal},
-      .previous = {.hard = t.hard, .aliasing = t.aliasing, .mapIndex = t.mapIndex},
+      .previous = {.hard = t.prevHard, .aliasing = t.prevAliasing, .mapIndex = t.prevMapIndex},
       .params = params,
       .timer = *s.timer,
       .shaders = s.shaders,
@@ -726,13 +730,6 @@ void shadowsStep(RendererState& s, Frame& f) {
   };
   for (const gl::Program* p : s.technique->programs()) bindParams(*p, params);
   s.technique->renderShadows(ctx);
-}
-
-/// Before the main resolve overwrites it: the previous frame's hard mask, for the mask change.
-void keepPreviousMaskStep(RendererState&, Frame& f) {
-  const Targets& t = f.mainCamera.targets;
-  glCopyImageSubData(t.hard.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.prevHard.id(), GL_TEXTURE_2D, 0, 0,
-                     0, 0, t.width, t.height, 1);
 }
 
 /// The main camera's progressive resolve (ResolveProgress): where it goes on, and afterwards
@@ -812,21 +809,12 @@ void resolveStep(RendererState& s, Frame& f) {
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
-  // A one-call deferred resolve the flag may have stopped between its units left a partial
-  // mask: not a previous frame to count the mask change against.
-  const bool maybeCut =
-      s.technique->resolveMode() == ResolveMode::Deferred && !s.frameProgress && cancelRequested(s);
-  if (c.mainCamera) t.resolved = !maybeCut;
 }
 
 /// The mask change (changed overlay, "mask.*"): the pixels whose hard test flipped since the
-/// previous frame; on the first frame of a size the copy makes the overlay empty.
+/// last complete frame; nothing on the first frame of a size.
 void maskChangeStep(RendererState& s, Frame& f) {
   const Targets& t = f.mainCamera.targets;
-  if (!f.setup.hadMask) {
-    keepPreviousMaskStep(s, f);
-    return;
-  }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   const FrameStats::MaskChangeCount count = countMaskChange(s, t);
   f.results.maskChange = count;
@@ -865,7 +853,9 @@ void compositeStep(RendererState& s, Frame& f) {
   glBindTextureUnit(SL_UNIT_ALIASING, t.aliasing.id());
   glBindTextureUnit(SL_UNIT_TEXEL, t.texel.id());
   glBindTextureUnit(SL_UNIT_MAP_INDEX, t.mapIndex.id());
-  glBindTextureUnit(SL_UNIT_PREV_HARD, t.prevHard.id());
+  // The changed overlay: against the last complete frame's mask (none yet: against itself, empty).
+  const bool hasPrevious = cam.mainCamera && f.setup.hadMask;
+  glBindTextureUnit(SL_UNIT_PREV_HARD, hasPrevious ? t.prevHard.id() : t.hard.id());
   bindLight(c, s.light);
   c.set("u_cameraPos", cam.eye);
   bindParams(c, s.rendererParams);  // shading.ambient, view.overlay
@@ -999,9 +989,9 @@ struct FrameStep {
   const char* timedPass;
   StepFailure failure;
   /// The host's stop flag is read before the step. Not before the first (a frame stopped at
-  /// once still has its G-buffer) nor before the main resolve: the technique's maps of this
-  /// frame, and its temporal state, go with their resolve (a deferred resolve stops between
-  /// its units itself), so the next frame reads the targets of the frame the state is from.
+  /// once still has its G-buffer) nor before the main resolve (the maps of this frame go with
+  /// their resolve; a deferred resolve stops between its units itself). Wherever a frame stops,
+  /// endFrame discards what it changed (the frame is transactional).
   bool stopsBefore;
   /// When it runs (null: every frame).
   bool (*when)(const RendererState&, const Frame&);
@@ -1023,13 +1013,6 @@ constexpr FrameStep kFrameSteps[] = {
      .stopsBefore = true,
      .when = nullptr,
      .run = shadowsStep},
-    {.name = "keep previous mask",
-     .timedPass = "resolve",
-     .failure = StepFailure::NamesTechnique,
-     .stopsBefore = false,
-     .when = [](const RendererState&,
-                const Frame& f) { return f.setup.countMaskChange && f.setup.hadMask; },
-     .run = keepPreviousMaskStep},
     {.name = "resolve",
      .timedPass = "resolve",
      .failure = StepFailure::NamesTechnique,
@@ -1040,7 +1023,8 @@ constexpr FrameStep kFrameSteps[] = {
      .timedPass = "resolve",
      .failure = StepFailure::NamesTechnique,
      .stopsBefore = true,
-     .when = [](const RendererState&, const Frame& f) { return f.setup.countMaskChange; },
+     .when = [](const RendererState&,
+                const Frame& f) { return f.setup.countMaskChange && f.setup.hadMask; },
      .run = maskChangeStep},
     {.name = "aliasing statistics",
      .timedPass = "resolve",
@@ -1094,6 +1078,26 @@ std::string frameSignatureOf(const RendererState& s, const ParamSet& params, int
                 width, height, c.position.x, c.position.y, c.position.z, c.target.x, c.target.y,
                 c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, s.light.describe().c_str());
   return buf;
+}
+
+/// The end of a frame's transaction: a complete frame (FrameStats::complete) keeps its resolve
+/// targets as the previous frame's and commits the technique's state across frames; any other
+/// call (stopped, failed, a progressive call short of its last unit) discards that state, and
+/// the next frame starts from the last complete one (Technique::commitFrame).
+void endFrame(RendererState& s, bool complete) {
+  const TechniqueEntry* entry = findEntry(s, s.techniqueId);
+  const bool carriesState = s.technique && entry && entry->info.temporalState;
+  if (!complete) {
+    if (carriesState) s.technique->discardFrame();
+    return;
+  }
+  Targets& t = s.targets;
+  for (auto [from, to] : {std::pair{&t.hard, &t.prevHard}, std::pair{&t.aliasing, &t.prevAliasing},
+                          std::pair{&t.mapIndex, &t.prevMapIndex}})
+    glCopyImageSubData(from->id(), GL_TEXTURE_2D, 0, 0, 0, 0, to->id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       t.width, t.height, 1);
+  t.committed = true;
+  if (carriesState) s.technique->commitFrame();
 }
 
 /// FrameStats of the frame the steps rendered, or of the part a frame the host's flag stopped
@@ -1194,7 +1198,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
                 .aspect = aspect,
                 .publishing = publishing,
                 .countMaskChange = wantsMaskChange(s, publishing),
-                .hadMask = s.targets.resolved,
+                .hadMask = s.targets.committed,
                 .showOutsideView = s.rendererParams.getBool("view.outside")},
       .mainCamera = {.targets = s.targets,
                      .view = s.camera.view(),
@@ -1216,6 +1220,7 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
       enterPass(nullptr);
       s.lastFrameCancelled = true;
       fillStats(s, f, &step);
+      endFrame(s, false);
       if (publishing) s.publication = std::move(lastComplete);  // not a frame's publication
       return std::nullopt;
     }
@@ -1230,11 +1235,13 @@ std::optional<std::string> Renderer::renderFrame(int width, int height, unsigned
     } catch (const std::exception& e) {
       enterPass(nullptr);
       s.timer->endFrame();
+      endFrame(s, false);
       return neutral(*stepFailureMessage(s, step.failure, e));
     }
   }
   enterPass(nullptr);
   fillStats(s, f, nullptr);
+  endFrame(s, s.stats.complete());
   return std::nullopt;
 }
 

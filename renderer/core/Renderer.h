@@ -88,6 +88,12 @@ struct TechniqueInfo {
   /// frame is not what a user sees: measuring commands render unmeasured frames until it
   /// settles (`settled`).
   bool temporalRotation = false;
+  /// Keeps state from one frame to the next that changes what later frames show (DA-RTW's
+  /// rotation and moments, ASM's page cache, the cascades' held depth range, rmsm's budget
+  /// pool): the renderer then commits it only when a frame completes and discards it
+  /// otherwise (Technique::commitFrame). Declared here once; the cancellation tests cover
+  /// every technique that declares it.
+  bool temporalState = false;
   /// With temporalRotation: the numbers `settled` reads, and the rule itself, declared once
   /// for the command line, the lessons and the tests: after a frame whose publication holds
   /// settleKeys, whether the state stopped changing; nothing when the frame could not tell
@@ -333,10 +339,12 @@ class Renderer {
   /// frame's. A flag already set when renderFrame starts stops it after its first step (the
   /// G-buffer). The shadow passes and the main resolve they feed go together (the flag is not
   /// read between them; a deferred resolve reads it between its units, one-call or progressive).
-  /// The next frame is what it would have been had the stopped frame completed unseen: stopped
-  /// before its shadow passes, nothing changed; after them, a technique's temporal state
-  /// (DA-RTW's rotation, ASM's page cache) holds that frame's, as do the resolve targets it
-  /// reads; a progressive resolve goes on from the units done (or starts over for a new view).
+  /// Frames are transactional: a stopped frame leaves no trace, the next frame is byte for
+  /// byte what a renderer that never saw it renders. A technique's state across frames
+  /// (TechniqueInfo::temporalState: DA-RTW's rotation, ASM's page cache...) and the previous
+  /// frame's resolve targets the next frame reads (the shadow-edge term's mask, the mask change,
+  /// per-map statistics) are the last COMPLETE frame's. Only a progressive resolve's units go
+  /// on: the next call of the same view resumes from the units done (pixels, not state).
   void setCancelFlag(const std::atomic<bool>* flag);
   /// Fills the target with the neutral background and renders nothing: no pass runs, no
   /// temporal state changes (a view too small to show anything).

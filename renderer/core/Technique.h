@@ -15,6 +15,7 @@
 
 #include "algo/Camera.h"
 #include "algo/Params.h"
+#include "core/FrameCarried.h"
 #include "core/FrameStats.h"
 #include "core/Renderer.h"
 #include "gl/GpuTimer.h"
@@ -172,6 +173,18 @@ class Technique {
   /// Shadow-related GPU resources of the last frame.
   virtual MemoryStats memory() const = 0;
   virtual std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) = 0;
+  /// State carried across frames (TechniqueInfo::temporalState declares that a technique has
+  /// any) is transactional: a frame reads what the last COMPLETE frame left and works on a
+  /// pending copy (FrameCarried); the renderer calls commitFrame() once the frame is complete
+  /// (FrameStats::complete) and discardFrame() for any other call: stopped by the host's flag
+  /// (before or after the shadow passes, within a resolve), failed, or a progressive call
+  /// that has not finished its units. A discarded frame leaves no trace: the next frame is
+  /// byte for byte what a renderer that never saw it renders. GPU-resident state counts too
+  /// (a pending copy, or what the frame overwrote restored on discard). Called with the GL
+  /// context current, only for techniques that declare temporalState.
+  virtual void commitFrame() {}
+  virtual void discardFrame() {}
+  /// Forgets the carried state, committed and pending (a new scene, the user's reset).
   virtual void resetTemporalState() {}
   /// Pages per side of each map the lookup selects (a paged map: rmsm and asm, one map per
   /// quadtree level), for the page-border overlay (SL_OVERLAY_PAGES: a pixel's page is its map

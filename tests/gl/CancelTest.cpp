@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 #include <thread>
 
@@ -28,17 +29,23 @@ void slowVirtualTiled(Renderer& r, int tileResolution = 1024) {
   ASSERT_FALSE(r.params().set("tile.resolution", tileResolution));
 }
 
-/// Armed: the flag a StopAfterShadows technique sets right after its shadow passes.
-std::atomic<bool>* gStopAfterShadows = nullptr;
+/// Where a Stopping technique sets the host's flag while armed.
+enum class StopAt {
+  AfterShadows,  ///< right after its shadow passes
+  InResolve,     ///< as its deferred resolve starts: it stops after its first unit
+};
+/// Armed: the flag a Stopping technique sets, and where.
+std::atomic<bool>* gStopFlag = nullptr;
+StopAt gStopAt = StopAt::AfterShadows;
 
-/// A built-in technique that sets gStopAfterShadows once its shadow passes are done: a frame
-/// stopped exactly between its shadows and the rest.
-class StopAfterShadows : public Technique {
+/// A built-in technique that sets gStopFlag at gStopAt while armed: a frame stopped exactly
+/// between its shadows and the rest, or within its resolve.
+class Stopping : public Technique {
  public:
-  explicit StopAfterShadows(std::unique_ptr<Technique> inner) : inner_(std::move(inner)) {}
+  explicit Stopping(std::unique_ptr<Technique> inner) : inner_(std::move(inner)) {}
   void renderShadows(FrameContext& ctx) override {
     inner_->renderShadows(ctx);
-    if (gStopAfterShadows) *gStopAfterShadows = true;
+    if (gStopFlag && gStopAt == StopAt::AfterShadows) *gStopFlag = true;
   }
   ResolveMode resolveMode() const override { return inner_->resolveMode(); }
   std::string lookupShader() const override { return inner_->lookupShader(); }
@@ -46,6 +53,7 @@ class StopAfterShadows : public Technique {
     inner_->bindLookup(resolve, firstUnit);
   }
   void resolveDeferred(const ResolveTargets& targets, const ParamSet& params) override {
+    if (gStopFlag && gStopAt == StopAt::InResolve) *gStopFlag = true;
     inner_->resolveDeferred(targets, params);
   }
   std::vector<const gl::Program*> programs() const override { return inner_->programs(); }
@@ -53,6 +61,8 @@ class StopAfterShadows : public Technique {
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override {
     return inner_->reloadShaders(lib);
   }
+  void commitFrame() override { inner_->commitFrame(); }
+  void discardFrame() override { inner_->discardFrame(); }
   void resetTemporalState() override { inner_->resetTemporalState(); }
   std::vector<int> pageGrid() const override { return inner_->pageGrid(); }
 
@@ -66,13 +76,18 @@ const TechniqueEntry& builtInEntry(std::string_view id) {
   throw std::logic_error("no built-in technique " + std::string(id));
 }
 
-/// da-rtw as "test-da-rtw-stop", stopping its frame after the shadows while armed.
-TechniqueEntry daRtwStoppingAfterShadows() {
+/// The technique a stoppingEntry wraps (read when the renderer creates it).
+std::string gWrappedId;
+
+/// The built-in technique `id` (its declaration, temporalState included) as "test-stop-<id>",
+/// stopping its frame at gStopAt while armed.
+TechniqueEntry stoppingEntry(const std::string& id) {
+  gWrappedId = id;
   TechniqueEntry e;
-  e.info = builtInEntry("da-rtw").info;
-  e.info.id = "test-da-rtw-stop";
+  e.info = builtInEntry(id).info;
+  e.info.id = "test-stop-" + id;
   e.create = [](const gl::ShaderLibrary& lib) -> std::unique_ptr<Technique> {
-    return std::make_unique<StopAfterShadows>(builtInEntry("da-rtw").create(lib));
+    return std::make_unique<Stopping>(builtInEntry(gWrappedId).create(lib));
   };
   return e;
 }
@@ -190,129 +205,99 @@ TEST(Cancel, FlagFromAnotherThreadStopsASlowFrame) {
   expectThreadStopsSlowFrame(*fvsm, "fvsm");
 }
 
-/// Renders `frames` at `cameras` (complete frames) and returns the last one's colour and hard
-/// mask; with `cancelled` a frame at `cancelledCamera` is stopped before the last one, by a
-/// flag set before it or (`delayShare` > 0) from another thread after that share of the
-/// previous frame's wall time.
-struct Shown {
-  std::vector<std::uint8_t> color, hardMask;
-  std::vector<float> aliasing;
+/// Where a frame of the transactional tests is stopped.
+enum class Stop {
+  None,           ///< not stopped: a renderer that never saw the frame
+  BeforeShadows,  ///< the flag set before renderFrame: it stops after its G-buffer
+  AfterShadows,   ///< right after the technique's shadow passes (its resolve still runs)
+  MidResolve,     ///< after the first unit of a deferred resolve
 };
-Shown renderSequence(const std::string& technique, const std::string& scene,
-                     const std::vector<Camera>& cameras, const Camera* cancelledCamera,
-                     double delayShare, bool* wasCancelled = nullptr) {
-  auto r = test::makeRenderer(scene, technique);
+
+/// Renders `technique` (wrapped as "test-stop-<id>") on its scene: three complete frames with
+/// the camera moving, so that state across frames exists; then, unless `stop` is None, a frame
+/// at another view stopped there; then a view near the third, complete (the held state a
+/// stopped frame would have left shows there: the cascades' held range, ASM's pages). Returns
+/// what that last frame shows.
+FrameReadback renderAfterStop(const std::string& technique, Stop stop) {
+  const TechniqueInfo* info = Renderer::findTechnique(technique);
+  EXPECT_TRUE(info);
+  if (!info) return {};
+  RendererOptions options;
+  options.extraTechniques = {stoppingEntry(technique)};
+  auto r = test::makeRenderer(sceneFor(*info), "test-stop-" + technique, options);
   EXPECT_TRUE(r);
   if (!r) return {};
-  if (technique == "virtual-tiled") slowVirtualTiled(*r);
-  std::atomic<bool> stop{false};
-  r->setCancelFlag(&stop);
-  double lastMs = 0.0;
-  for (std::size_t i = 0; i < cameras.size(); ++i) {
-    if (cancelledCamera && i + 1 == cameras.size()) {
-      const double delayMs = delayShare * lastMs;
-      r->setCamera(*cancelledCamera);
-      std::thread host;
-      if (delayMs > 0.0)
-        host = std::thread([&] {
-          std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(delayMs));
-          stop = true;
-        });
-      else
-        stop = true;
-      EXPECT_FALSE(r->renderFrame(160, 120, 0));
-      if (host.joinable()) host.join();
-      if (wasCancelled) *wasCancelled = r->stats().cancelled;
-      stop = false;
-    }
-    r->setCamera(cameras[i]);
-    const auto start = std::chrono::steady_clock::now();
-    EXPECT_FALSE(r->renderFrame(160, 120, 0));
-    lastMs = msSince(start);
-    EXPECT_FALSE(r->stats().cancelled);
-  }
-  const FrameReadback rb = r->readback();
-  test::expectNoGlErrors(*r);
-  return {rb.color.pixels, rb.hardMask, rb.aliasing};
-}
-
-/// After a stopped frame the next frame is byte for byte what a renderer that never saw the
-/// stopped one renders (same earlier frames): uniform, da-rtw (its rotation follows the
-/// frames), virtual-tiled (stopped mid-resolve from another thread too).
-TEST(Cancel, NextFrameEqualsAFreshRenderersFrame) {
-  for (const char* technique : {"uniform", "da-rtw", "virtual-tiled", "cascades"}) {
-    SCOPED_TRACE(technique);
-    const std::string scene = "diagonal";
-    auto probe = test::makeRenderer(scene, technique);
-    ASSERT_TRUE(probe);
-    const Camera first = probe->camera();
-    probe.reset();
-    Camera second = first, moved = first;
-    second.orbit(10.0f, 5.0f);
-    moved.orbit(-25.0f, 8.0f);
-    // Three frames so that DA-RTW's rotation has a history to keep.
-    const std::vector<Camera> cameras = {first, second, second};
-    const Shown fresh = renderSequence(technique, scene, cameras, nullptr, 0.0);
-    ASSERT_FALSE(fresh.color.empty());
-    bool cancelled = false;
-    const Shown before = renderSequence(technique, scene, cameras, &moved, 0.0, &cancelled);
-    EXPECT_TRUE(cancelled);
-    EXPECT_EQ(before.color, fresh.color);
-    EXPECT_EQ(before.hardMask, fresh.hardMask);
-    EXPECT_EQ(before.aliasing, fresh.aliasing);
-    if (std::string(technique) == "virtual-tiled") {  // stopped within the resolve
-      const Shown mid = renderSequence(technique, scene, cameras, &moved, 1.0 / 3.0, &cancelled);
-      EXPECT_TRUE(cancelled);
-      EXPECT_EQ(mid.color, fresh.color);
-      EXPECT_EQ(mid.hardMask, fresh.hardMask);
-    }
-  }
-}
-
-/// A frame stopped right after its shadow passes (DA-RTW, with the shadow-edge term reading the
-/// previous frame's mask): its resolve still ran, so the next frame is the one that follows the
-/// stopped frame had it completed unseen, byte for byte — the rotation and the mask it reads
-/// are that frame's.
-TEST(Cancel, StoppedAfterTheShadowsTheNextFrameFollowsThatFrame) {
-  RendererOptions options;
-  options.extraTechniques = {daRtwStoppingAfterShadows()};
-  const auto run = [&](bool stopB) {
-    auto r = test::makeRenderer("diagonal", "test-da-rtw-stop", options);
-    EXPECT_TRUE(r);
-    if (!r) return FrameReadback{};
+  if (technique == "da-rtw") {  // the shadow-edge term reads the previous frame's mask
     EXPECT_FALSE(r->params().set("importance.edge", 1));
-    std::atomic<bool> stop{false};
-    r->setCancelFlag(&stop);
-    const Camera first = r->camera();
-    Camera second = first, moved = first;
-    second.orbit(10.0f, 5.0f);
-    moved.orbit(-25.0f, 8.0f);
-    for (const Camera& c : {first, second, second}) {
-      r->setCamera(c);
-      EXPECT_FALSE(r->renderFrame(160, 120, 0));
-    }
-    r->setCamera(moved);
-    gStopAfterShadows = stopB ? &stop : nullptr;
-    EXPECT_FALSE(r->renderFrame(160, 120, 0));
-    gStopAfterShadows = nullptr;
-    EXPECT_EQ(r->stats().cancelled, stopB);
-    if (stopB) {
-      const std::vector<std::string>& opened = r->stats().passOrder;
-      EXPECT_NE(std::find(opened.begin(), opened.end(), "resolve"), opened.end());
-      EXPECT_EQ(std::find(opened.begin(), opened.end(), "composite"), opened.end());
-    }
-    stop = false;
-    r->setCamera(second);
+  }
+  if (technique == "virtual-tiled") slowVirtualTiled(*r, 128);
+  // A pool the frames fill: the stopped frame evicts (and overwrites) cached pages.
+  if (technique == "asm") {
+    EXPECT_FALSE(r->params().set("pool.pages", 40));
+    EXPECT_FALSE(r->params().set("asm.pages.per.frame", 8));  // refined over several frames
+  }
+  std::atomic<bool> flag{false};
+  r->setCancelFlag(&flag);
+  const Camera first = r->camera();
+  Camera second = first, third = first, moved = first, after = first;
+  second.orbit(10.0f, 5.0f);
+  third.orbit(4.0f, -3.0f);
+  moved.orbit(-25.0f, 8.0f);
+  after.orbit(6.0f, -2.0f);
+  for (const Camera& c : {first, second, third}) {
+    r->setCamera(c);
     EXPECT_FALSE(r->renderFrame(160, 120, 0));
     EXPECT_TRUE(r->stats().complete());
-    test::expectNoGlErrors(*r);
-    return r->readback();
-  };
-  const FrameReadback unseen = run(true), shown = run(false);
-  ASSERT_FALSE(shown.color.pixels.empty());
-  EXPECT_EQ(unseen.color.pixels, shown.color.pixels);
-  EXPECT_EQ(unseen.hardMask, shown.hardMask);
-  EXPECT_EQ(unseen.aliasing, shown.aliasing);
+  }
+  r->setCamera(moved);
+  if (stop != Stop::None) {
+    flag = stop == Stop::BeforeShadows;
+    gStopAt = stop == Stop::MidResolve ? StopAt::InResolve : StopAt::AfterShadows;
+    gStopFlag = stop == Stop::BeforeShadows ? nullptr : &flag;
+    EXPECT_FALSE(r->renderFrame(160, 120, 0));
+    gStopFlag = nullptr;
+    EXPECT_TRUE(r->stats().cancelled);
+    EXPECT_EQ(r->stats().stoppedBefore == "shadows", stop == Stop::BeforeShadows);
+    if (technique == "asm" && stop == Stop::AfterShadows) {  // it overwrote cached pages
+      const std::vector<ResourceInfo>& held = r->stats().memory.resources;
+      EXPECT_TRUE(std::any_of(held.begin(), held.end(), [](const ResourceInfo& res) {
+        return res.name == "page pool as the last complete frame left it";
+      }));
+    }
+    flag = false;
+  }
+  r->setCamera(after);
+  EXPECT_FALSE(r->renderFrame(160, 120, 0));
+  EXPECT_TRUE(r->stats().complete());
+  test::expectNoGlErrors(*r);
+  return r->readback();
+}
+
+/// Frames are transactional: a frame stopped before its shadows, right after them or within
+/// its resolve leaves no trace; the next frame is byte for byte (colour, hard mask, aliasing)
+/// what a renderer that never saw it renders. Every technique with state across frames
+/// (TechniqueInfo::temporalState), uniform as a stateless control, and virtual-tiled for a
+/// stop within a (deferred, unit by unit) resolve.
+TEST(Cancel, AStoppedFrameLeavesNoTrace) {
+  std::vector<std::pair<std::string, Stop>> cases;
+  for (const TechniqueInfo& info : Renderer::techniques())
+    if (info.temporalState || info.id == "uniform")
+      for (Stop stop : {Stop::BeforeShadows, Stop::AfterShadows}) cases.emplace_back(info.id, stop);
+  ASSERT_GT(cases.size(), 2u) << "some technique declares temporalState";
+  cases.emplace_back("virtual-tiled", Stop::MidResolve);
+  std::map<std::string, FrameReadback> unseen;
+  for (const auto& [technique, stop] : cases) {
+    SCOPED_TRACE(technique + (stop == Stop::BeforeShadows  ? " stopped before the shadows"
+                              : stop == Stop::AfterShadows ? " stopped after the shadows"
+                                                           : " stopped within the resolve"));
+    if (!unseen.count(technique)) unseen[technique] = renderAfterStop(technique, Stop::None);
+    const FrameReadback& fresh = unseen[technique];
+    ASSERT_FALSE(fresh.color.pixels.empty());
+    const FrameReadback next = renderAfterStop(technique, stop);
+    EXPECT_EQ(next.color.pixels, fresh.color.pixels);
+    EXPECT_EQ(next.hardMask, fresh.hardMask);
+    EXPECT_EQ(next.aliasing, fresh.aliasing);
+  }
 }
 
 /// A progressive resolve stopped between its units (or before its resolve) goes on where it

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -183,6 +184,7 @@ TechniqueInfo AsmShadowMap::info() {
                      "refined where camera pixels lie on shadow edges, starting from a coarse "
                      "map, kept between frames as a cache. Directional light only.",
                      std::move(p)};
+  info.temporalState = true;  // the page cache
   info.passes.push_back(
       {"asm coarse", "Coarse map",
        "After an invalidation (the light or the geometry moved, the layout changed): every page "
@@ -263,6 +265,29 @@ AsmShadowMap::AsmShadowMap(const gl::ShaderLibrary& lib)
       edgesProgram_(lib, edgesProgramDesc()),
       compactProgram_(lib, compactProgramDesc()) {}
 
+void AsmShadowMap::commitFrame() {
+  carried_.commit();
+  map_.forgetKept();
+}
+
+void AsmShadowMap::discardFrame() {
+  carried_.discard();
+  map_.restoreKept();
+  if (carried_->cache) map_.uploadTable(carried_->cache->table());
+}
+
+void AsmShadowMap::keepCommittedPages(std::span<const int> slots) {
+  const std::optional<adaptive::PageCache>& committed = carried_.committed().cache;
+  const adaptive::PageCache& now = *carried_->cache;
+  if (!committed || committed->pool().capacity() != now.pool().capacity() ||
+      committed->layout().pageSize != now.layout().pageSize)
+    return;  // a new pool: the committed pages are gone with the old one
+  std::vector<int> held;
+  for (const int slot : slots)
+    if (committed->lastUsed(slot) >= 0) held.push_back(slot);
+  if (!held.empty()) map_.keepSlots(held);
+}
+
 void AsmShadowMap::renderShadows(FrameContext& ctx) {
   if (auto e = checkAsmParams(ctx.params)) throw std::runtime_error("asm: " + *e);
   const pages::VirtualLayout layout = pagedLayoutOf(ctx.params);
@@ -286,22 +311,25 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
                      poolPages,
                      coarseLevel};
   last_ = FrameResult{};
-  if (cache_) cache_->beginFrame();
+  if (carried_->cache) carried_->cache->beginFrame();
   {
     auto pass = ctx.timer.scope("asm coarse");
-    if (!cache_ || !(key == cacheKey_)) {
-      if (!cache_ || cache_->pool().capacity() != poolPages ||
-          cache_->coarseLevel() != coarseLevel ||
-          !(cache_->layout().virtualResolution == layout.virtualResolution &&
-            cache_->layout().pageSize == layout.pageSize))
-        cache_ = std::make_unique<adaptive::PageCache>(layout, poolPages, coarseLevel);
-      cacheKey_ = key;
+    if (!carried_->cache || !(key == carried_->key)) {
+      if (!carried_->cache || carried_->cache->pool().capacity() != poolPages ||
+          carried_->cache->coarseLevel() != coarseLevel ||
+          !(carried_->cache->layout().virtualResolution == layout.virtualResolution &&
+            carried_->cache->layout().pageSize == layout.pageSize))
+        carried_->cache.emplace(layout, poolPages, coarseLevel);
+      carried_->key = key;
       std::vector<int> slots;
-      const std::vector<pages::PageId> coarse = cache_->invalidate(slots);
-      map_.uploadTable(cache_->table());
+      const std::vector<pages::PageId> coarse = carried_->cache->invalidate(slots);
+      std::vector<int> pool(std::size_t(carried_->cache->pool().capacity()));
+      std::iota(pool.begin(), pool.end(), 0);
+      keepCommittedPages(pool);  // the whole pool is cleared
+      map_.uploadTable(carried_->cache->table());
       map_.renderPages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, coarse, slots, true);
       last_.invalidated = true;
-      capStops_ = 0;
+      carried_->capStops = 0;
       last_.coarsePages = int(coarse.size());
     }
   }
@@ -351,7 +379,7 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
         last_.requestsLeft = 0;
         for (pages::PageKey k : pages::sortUnique(readCompacted()))
           if (k != pages::kNoPage && (k & adaptive::kTouchBit) == 0 &&
-              cache_->table().slot(pages::unpackPage(k)) < 0)
+              carried_->cache->table().slot(pages::unpackPage(k)) < 0)
             ++last_.requestsLeft;
         if (last_.requestsLeft == 0) last_.stop = kConverged;  // the cap was not needed
       }
@@ -372,24 +400,25 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "asm.evicted", evicted);
   publishNumber(ctx, "asm.refused", lastRun.refused);
   publishNumber(ctx, "asm.deferred", lastRun.deferred);
-  publishNumber(ctx, "asm.cached", cache_->pool().usedCount());
-  publishNumber(ctx, "asm.invalidations", cache_->invalidations());
+  publishNumber(ctx, "asm.cached", carried_->cache->pool().usedCount());
+  publishNumber(ctx, "asm.invalidations", carried_->cache->invalidations());
   publishNumber(ctx, "asm.pool", poolPages);
   publishNumber(ctx, "asm.stop", last_.stop);
   publishNumber(ctx, "asm.requests.left", last_.requestsLeft);
-  if (last_.stop == kIterationCap) ++capStops_;
-  publishNumber(ctx, "asm.cap.stops", capStops_);
+  if (last_.stop == kIterationCap) ++carried_->capStops;
+  publishNumber(ctx, "asm.cap.stops", carried_->capStops);
   publishNumber(ctx, "asm.superpages", last_.superpages);
   publishNumber(ctx, "asm.scene_draws", last_.sceneDraws);
   last_.requested = pages::sortUnique(last_.requestKeys);
-  map_.publish(ctx,
-               {.table = &cache_->table(),
-                .levelStates =
-                    [&](int l) { return adaptive::cacheLevelStates(*cache_, last_.requested, l); },
-                .requests = last_.requestKeys,
-                .poolLevels = [&] { return adaptive::cachePoolLevels(*cache_); },
-                .requested = int(last_.requested.size()),
-                .allocated = cache_->pool().usedCount()});
+  map_.publish(ctx, {.table = &carried_->cache->table(),
+                     .levelStates =
+                         [&](int l) {
+                           return adaptive::cacheLevelStates(*carried_->cache, last_.requested, l);
+                         },
+                     .requests = last_.requestKeys,
+                     .poolLevels = [&] { return adaptive::cachePoolLevels(*carried_->cache); },
+                     .requested = int(last_.requested.size()),
+                     .allocated = carried_->cache->pool().usedCount()});
 }
 
 void AsmShadowMap::findEdges(FrameContext& ctx) {
@@ -448,18 +477,19 @@ bool AsmShadowMap::iterate(FrameContext& ctx, int iteration, int& budget) {
   last_.uniquePerIteration.push_back(last_.unique);
   for (pages::PageKey k : last_.compacted)
     if (k != pages::kNoPage && (k & adaptive::kTouchBit) == 0) last_.requestKeys.push_back(k);
-  r = cache_->refine(last_.unique, budget);
+  r = carried_->cache->refine(last_.unique, budget);
   budget -= int(r.allocated.size());
-  if (!r.allocated.empty()) map_.uploadTable(cache_->table());
+  if (!r.allocated.empty()) map_.uploadTable(carried_->cache->table());
   pass.reset();
   if (timed) pass.emplace(ctx.timer, iterationPass("pages", iteration));
   if (!r.allocated.empty()) {
+    keepCommittedPages(r.slots);
     if (superpages_) {
       // The lecture's loop: bin the new pages into superpages, render each, copy its pages.
       const std::vector<pages::Superpage> bins =
-          pages::binSuperpages(r.allocated, cache_->layout(), SL_RMSM_SUPERPAGE);
-      map_.renderSuperpages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, bins, cache_->table(),
-                            SL_RMSM_SUPERPAGE, false, nullptr, {}, {});
+          pages::binSuperpages(r.allocated, carried_->cache->layout(), SL_RMSM_SUPERPAGE);
+      map_.renderSuperpages(depthProgram_, ctx.sceneGpu, view_.lightViewProj, bins,
+                            carried_->cache->table(), SL_RMSM_SUPERPAGE, false, nullptr, {}, {});
       last_.superpages += int(bins.size());
       last_.sceneDraws += int(bins.size());
     } else {

@@ -15,6 +15,8 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "algo/asm/AdaptivePages.h"
@@ -43,7 +45,15 @@ class AsmShadowMap : public Technique {
   /// A new scene (Renderer::setScene) or a reset: the cached pages are dropped; the next frame
   /// starts from the coarse map. (Not keyed on the scene's address: a new scene may be
   /// allocated where the old one was.)
-  void resetTemporalState() override { cacheKey_ = {}; }
+  void resetTemporalState() override {
+    carried_->key = {};
+    carried_.commit();  // between frames: the committed key too
+  }
+  /// The page cache the next frame starts from is the last complete frame's: a discarded
+  /// frame's allocations are forgotten, the pool slots it overwrote restored and the page table
+  /// uploaded again.
+  void commitFrame() override;
+  void discardFrame() override;
 
   /// What the last frame did (tests, publications).
   struct FrameResult {
@@ -75,7 +85,7 @@ class AsmShadowMap : public Technique {
   /// the iteration cap, the per-frame page budget, the pool (only pages used this frame).
   enum Stop : int { kConverged = 0, kIterationCap = 1, kBudget = 2, kPoolFull = 3 };
   const FrameResult& lastFrame() const { return last_; }
-  const adaptive::PageCache* cache() const { return cache_.get(); }
+  const adaptive::PageCache* cache() const { return carried_->cache ? &*carried_->cache : nullptr; }
   /// The last iteration's shadow test (rgba32ui: mask, served key, refine key) and its
   /// per-pixel keys (r32ui), the page table.
   const gl::Texture& testedImage() const { return tested_; }
@@ -90,13 +100,15 @@ class AsmShadowMap : public Technique {
   /// adaptive::kMaxIterations are not timed on their own (the caller's "asm more" pass).
   bool iterate(FrameContext& ctx, int iteration, int& budget);
   void findEdges(FrameContext& ctx);
+  /// Before this frame renders into `slots`: those holding a page of the last complete frame's
+  /// cache are kept aside (PagedMap::keepSlots) for discardFrame.
+  void keepCommittedPages(std::span<const int> slots);
   /// The compacted request list findEdges wrote (count clamped to the list's capacity).
   std::vector<pages::PageKey> readCompacted() const;
 
   DepthProgram depthProgram_;
   gl::Program testProgram_, edgesProgram_, compactProgram_;
   PagedMap map_;
-  std::unique_ptr<adaptive::PageCache> cache_;
   /// What the cached pages were rendered for: any change drops them (and so does a new scene,
   /// resetTemporalState). The default key matches no frame (lightViewProj is zero).
   struct CacheKey {
@@ -105,14 +117,21 @@ class AsmShadowMap : public Technique {
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
     int virtualResolution = 0, pageSize = 0, poolPages = 0, coarseLevel = 0;
     bool operator==(const CacheKey&) const = default;
-  } cacheKey_;
+  };
+  /// What ASM carries across frames (TechniqueInfo::temporalState): the page cache, what its
+  /// pages were rendered for, and the frames since the last invalidation the cap stopped.
+  struct Carried {
+    std::optional<adaptive::PageCache> cache;
+    CacheKey key;
+    int capStops = 0;
+  };
+  FrameCarried<Carried> carried_;
   gl::Texture tested_;      ///< RGBA32UI per camera pixel
   gl::Texture requests_;    ///< R32UI per camera pixel
   gl::Buffer requestList_;  ///< count + one key per pixel
   DepthMapView view_;
   FrameResult last_;
   bool superpages_ = false;  ///< this frame's asm.render = superpages
-  int capStops_ = 0;         ///< frames since the last invalidation that the iteration cap stopped
 };
 
 }  // namespace sl

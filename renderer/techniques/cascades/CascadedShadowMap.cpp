@@ -123,6 +123,7 @@ TechniqueInfo CascadedShadowMap::info() {
                      "2006): k orthographic maps, each fitted to one depth slice of the view "
                      "frustum, selected per pixel by view depth. Directional light only.",
                      std::move(p)};
+  info.temporalState = true;  // depth.fit's held range (stabilize: hysteresis)
   info.passes = {
       {"depth range", "Depth range reduction",
        "Min and max view depth over this frame's G-buffer's covered pixels (a compute "
@@ -242,8 +243,7 @@ CascadedShadowMap::CascadedShadowMap(const gl::ShaderLibrary& lib)
 
 void CascadedShadowMap::resetTemporalState() {
   rangeFence_.reset();
-  lastRange_.reset();
-  heldRange_.reset();
+  range_.reset();
 }
 
 std::optional<glm::dvec2> CascadedShadowMap::readDepthRange() {
@@ -256,11 +256,11 @@ std::optional<glm::dvec2> CascadedShadowMap::readDepthRange() {
     std::memcpy(&hi, &bits[1], 4);
     // Nothing covered: no range (the whole visible range is cut).
     if (bits[1] != 0u && bits[0] != kFloatMaxBits && hi >= lo)
-      lastRange_ = glm::dvec2(lo, hi);
+      range_->last = glm::dvec2(lo, hi);
     else
-      lastRange_.reset();
+      range_->last.reset();
   }
-  return lastRange_;
+  return range_->last;
 }
 
 void CascadedShadowMap::reduceDepthRange(const FrameContext& ctx) {
@@ -303,14 +303,15 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
     if (auto r = readDepthRange()) {
       const glm::dvec2 measured(r->x / 1.05, r->y * 1.05);
       if (s.stabilize) {
-        heldRange_ = partition::holdDepthRange(heldRange_, measured);
-        s.visibleDepthM = heldRange_;
+        range_->held = partition::holdDepthRange(range_->held, measured);
+        s.visibleDepthM = range_->held;
       } else {
         s.visibleDepthM = measured;
       }
     }
   } else {
-    resetTemporalState();
+    rangeFence_.reset();
+    *range_ = {};       // this frame's (committed with it)
     rangeBuffer_ = {};  // held only while used (memory())
   }
 
@@ -347,8 +348,8 @@ void CascadedShadowMap::renderShadows(FrameContext& ctx) {
   publishNumber(ctx, "depth.near", fit_.nearM);
   publishNumber(ctx, "depth.far", fit_.farM);
   publishNumber(ctx, "depth.fitted", s.visibleDepthM ? 1.0 : 0.0);
-  publishNumber(ctx, "depth.measured.near", fitDepth && lastRange_ ? lastRange_->x : 0.0);
-  publishNumber(ctx, "depth.measured.far", fitDepth && lastRange_ ? lastRange_->y : 0.0);
+  publishNumber(ctx, "depth.measured.near", fitDepth && range_->last ? range_->last->x : 0.0);
+  publishNumber(ctx, "depth.measured.far", fitDepth && range_->last ? range_->last->y : 0.0);
   for (int i = 0; i < k; ++i) {
     const partition::CascadePart& p = fit_.parts[size_t(i)];
     const std::string key = "partition." + std::to_string(i);

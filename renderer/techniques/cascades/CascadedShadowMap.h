@@ -30,6 +30,8 @@ class CascadedShadowMap : public Technique {
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
   void resetTemporalState() override;
+  void commitFrame() override { range_.commit(); }
+  void discardFrame() override { range_.discard(); }
 
  private:
   /// Last frame's min/max view depth of the G-buffer, read behind its fence (no stall).
@@ -42,8 +44,12 @@ class CascadedShadowMap : public Technique {
   DepthMapArray maps_;      ///< one layer per partition
   gl::Buffer rangeBuffer_;  ///< 2 uints: min and max view depth bits
   gl::Fence rangeFence_;
-  std::optional<glm::dvec2> lastRange_;  ///< the last range read back (kept while unchanged)
-  std::optional<glm::dvec2> heldRange_;  ///< stabilised: the range the splits cut (hysteresis)
+  /// What depth.fit carries across frames (TechniqueInfo::temporalState).
+  struct DepthRanges {
+    std::optional<glm::dvec2> last;  ///< the last range read back (kept while unchanged)
+    std::optional<glm::dvec2> held;  ///< stabilised: the range the splits cut (hysteresis)
+  };
+  FrameCarried<DepthRanges> range_;
   partition::CascadeFit fit_;
   std::vector<DepthMapView> views_;
   glm::vec3 eye_{0.0f}, forward_{0.0f, 0.0f, -1.0f};

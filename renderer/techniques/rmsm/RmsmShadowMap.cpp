@@ -96,6 +96,7 @@ TechniqueInfo RmsmShadowMap::info() {
                      "only those pages are rendered, into one physical pool behind a page table. "
                      "Directional light only.",
                      std::move(p)};
+  info.temporalState = true;  // pool.budget: the pool is the last frame's fit
   info.passes = {
       {"rmsm requests", "Page requests, dedup, compaction",
        "Per camera pixel (compute): light uv (s, t) and LOD l = floor(log2(sqrt(|dX x dY|))) in "
@@ -176,10 +177,10 @@ void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   const pages::VirtualLayout layout = pagedLayoutOf(ctx.params);
   const auto budget = std::uint64_t(ctx.params.get("pool.budget"));
   if (budget == 0) {
-    budgetPool_ = {};
+    *budgetPool_ = {};
     ensurePool(layout, ctx.params.getInt("pool.pages"), 0);
-  } else if (budgetPool_.pages() > 0) {
-    ensurePool(layout, budgetPool_.pages(), budgetPool_.columns);  // last frame's fit
+  } else if (budgetPool_->pages() > 0) {
+    ensurePool(layout, budgetPool_->pages(), budgetPool_->columns);  // last frame's fit
   } else {
     ensurePool(layout, layout.topPages(), 0);  // refitted below, once the sort's size is known
   }
@@ -240,7 +241,7 @@ void RmsmShadowMap::fitPoolToBudget(const pages::VirtualLayout& layout, std::uin
         std::to_string(rest) +
         " bytes of the page table, request and sort buffers and superpage target; raise "
         "pool.budget");
-  budgetPool_ = *shape;
+  *budgetPool_ = *shape;
   ensurePool(layout, shape->pages(), shape->columns);
 }
 

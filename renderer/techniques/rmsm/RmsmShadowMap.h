@@ -48,6 +48,9 @@ class RmsmShadowMap : public Technique {
   /// rmsm.render's values.
   static constexpr int kRenderSuperpages = 0, kRenderPages = 1;
   const FrameResult& lastFrame() const { return last_; }
+  void commitFrame() override { budgetPool_.commit(); }
+  void discardFrame() override { budgetPool_.discard(); }
+  void resetTemporalState() override { budgetPool_.reset(); }
   /// The pool (pages side by side) after the last frame's render step.
   const gl::Texture& poolTexture() const { return map_.poolTexture(); }
   /// The per-pixel request keys of the last frame (r32ui, camera size) and the page table.
@@ -88,7 +91,8 @@ class RmsmShadowMap : public Technique {
   std::uint32_t compactedCount_ = 0;  ///< the compacted list's length (clamped), sortUnique
   DepthMapView view_;
   FrameResult last_;
-  pages::PoolShape budgetPool_;  ///< pool.budget's fit of the last frame (empty: none)
+  /// pool.budget's fit of the last frame (empty: none); carried across frames.
+  FrameCarried<pages::PoolShape> budgetPool_;
 };
 
 }  // namespace sl

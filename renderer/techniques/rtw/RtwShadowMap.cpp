@@ -363,6 +363,7 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   info.publications = publicationDecls(id);
   info.lights = {LightType::Directional};
   info.temporalRotation = id == "da-rtw";
+  info.temporalState = info.temporalRotation;  // the rotation and the moments it is read from
   if (info.temporalRotation) {
     info.settleKeys = {"pca.valid",     "rotation.held",     "rotation.step_deg",
                        "rotation.mode", "prediction.reason", "rotation.frames"};
@@ -427,9 +428,33 @@ RtwShadowMap::RtwShadowMap(const gl::ShaderLibrary& lib, Config config)
       emptyVao_(gl::createVertexArray()) {}
 
 void RtwShadowMap::resetTemporalState() {
-  rotation_.reset();
+  carried_.reset();
   lastUpdate_ = {};
   momentFence_.reset();
+  spareSpread_ = {};
+  spareFence_.reset();
+  snapshot_.reset();
+  swappedThisFrame_ = false;
+}
+
+void RtwShadowMap::commitFrame() {
+  carried_.commit();
+  snapshot_.reset();  // the next frame reads this frame's moments
+  swappedThisFrame_ = false;
+}
+
+void RtwShadowMap::discardFrame() {
+  carried_.discard();
+  if (swappedThisFrame_) swapMoments();  // the last complete frame's again
+  swappedThisFrame_ = false;
+}
+
+void RtwShadowMap::swapMoments() {
+  if (!spareSpread_)
+    spareSpread_ = gl::Buffer::create(GLsizeiptr(spread_.size()), nullptr,
+                                      GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+  std::swap(spread_, spareSpread_);
+  std::swap(momentFence_, spareFence_);
 }
 
 void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx) {
@@ -451,13 +476,16 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx
     momentIm_ = {};
     collapsed_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     spread_ = config_.rotation
-                  ? gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw)
+                  ? gl::Buffer::create(GLsizeiptr((2 * imRes + 6) * sizeof(float)), nullptr, rw)
                   : gl::Buffer{};
     blurred_ = gl::Buffer::create(GLsizeiptr(2 * imRes * sizeof(float)), nullptr, rw);
     warp_ = gl::Buffer::create(GLsizeiptr(2 * (imRes + 1) * sizeof(float)), nullptr, rw);
     warpView_ = gl::Texture::createBufferView(GL_R32F, warp_);
     imRes_ = imRes;
     momentFence_.reset();
+    spareSpread_ = {};
+    spareFence_.reset();
+    snapshot_.reset();
   }
   // The 2D IM: always for forward analysis (its render target), else only while asked for.
   const bool wantIm = !backward() || ctx.wants("importance");
@@ -495,6 +523,9 @@ void RtwShadowMap::ensureResources(int smRes, int imRes, const FrameContext& ctx
         nullptr, rw);
     momentRes_ = momentRes;
     momentFence_.reset();
+    spareSpread_ = {};
+    spareFence_.reset();
+    snapshot_.reset();
   }
 }
 
@@ -511,23 +542,24 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   predicted_ = false;
   if (fixed) {
     const glm::mat2 r = rtw::rotationOfAngle(p.get("rotation.fixed_deg"));
-    ++rotation_.frames;
-    if (r != rotation_.R) {
+    ++carried_->rotation.frames;
+    if (r != carried_->rotation.R) {
       lastUpdate_.stepDeg =
-          float(rtw::foldQuarterTurn(p.get("rotation.fixed_deg") - rotation_.angleDeg()));
+          float(rtw::foldQuarterTurn(p.get("rotation.fixed_deg") - carried_->rotation.angleDeg()));
       lastUpdate_.rotated = true;
-      rotation_.R = r;
-      ++rotation_.changes;
+      carried_->rotation.R = r;
+      ++carried_->rotation.changes;
     }
   }
+  // Read, not consumed: a discarded frame (discardFrame) leaves them to the next one.
   if (!momentFence_ || !momentFence_.wait()) return;
-  momentFence_.reset();
-  std::vector<float> top = readFloats(momentBuffer_, size_t(momentOffsets_.back()), 6);
+  // The chain's top, copied behind that frame's 1D maps (renderShadows).
+  std::vector<float> top = readFloats(spread_, 2 * size_t(imRes_), 6);
   rtw::MomentTexel t;
   for (int c = 0; c < 6; ++c) t[c] = top[c], lastTop_[c] = top[c];
   // pca.metric: in metres (the IM's axes span the light frustum's extents) or IM units.
   const bool metres = p.getInt("pca.metric") == 0;
-  const glm::vec2 scale = metres ? 0.5f * momentExtentM_ : glm::vec2(1.0f);
+  const glm::vec2 scale = metres ? 0.5f * carried_->momentExtentM : glm::vec2(1.0f);
   rtw::MomentStats stats = rtw::momentsFromTop(t, scale);
   publishNumber(ctx, "pca.scale.x", scale.x);
   publishNumber(ctx, "pca.scale.y", scale.y);
@@ -538,11 +570,11 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   const float spread = std::max(spreadX, spreadY);
   publishNumber(ctx, "pca.spread", spread);
   if (pca) {
-    lastUpdate_ = rtw::updateRotation(rotation_, stats, float(p.get("pca.threshold")),
+    lastUpdate_ = rtw::updateRotation(carried_->rotation, stats, float(p.get("pca.threshold")),
                                       float(p.get("pca.min_anisotropy")), spread,
                                       float(p.get("pca.min_spread")));
   } else {  // the axis shown, not turned along
-    if (predicted) ++rotation_.frames;
+    if (predicted) ++carried_->rotation.frames;
     lastUpdate_.valid = stats.valid;
     lastUpdate_.e_x = stats.ex;
     lastUpdate_.e_y = stats.ey;
@@ -550,7 +582,7 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   // PCA's axis as an absolute angle: its angle in the frame the moments were taken in, plus
   // that frame's turn.
   std::optional<double> axis;
-  if (stats.valid) axis = momentAngleDeg_ + double(stats.angleDeg);
+  if (stats.valid) axis = carried_->momentAngleDeg + double(stats.angleDeg);
   pcaAxisDeg_ = axis.value_or(0.0);
   if (axis) publishNumber(ctx, "pca.axis_deg", rtw::foldQuarterTurn(*axis));
   if (predicted || ctx.wants("prediction.valid") || ctx.wants("prediction.curve"))
@@ -613,7 +645,10 @@ rtw::ImportanceSnapshot RtwShadowMap::readSnapshot() const {
 void RtwShadowMap::predictTurn(FrameContext& ctx, std::optional<double> pcaAxisDeg, bool apply) {
   const auto start = std::chrono::steady_clock::now();
   const ParamSet& p = ctx.params;
-  const rtw::ImportanceSnapshot snapshot = readSnapshot();
+  // Read once per committed frame: a discarded frame has overwritten the IM and its counts,
+  // but its reading of the last complete frame's stays (commitFrame forgets it).
+  if (!snapshot_) snapshot_ = readSnapshot();
+  const rtw::ImportanceSnapshot& snapshot = *snapshot_;
   rtw::PredictionSettings settings;
   settings.warp = {p.getInt("blur.radius"), float(p.get("blur.sigma")),
                    float(p.get("importance.floor"))};
@@ -631,26 +666,26 @@ void RtwShadowMap::predictTurn(FrameContext& ctx, std::optional<double> pcaAxisD
     const LightFit fit = fitAt(ctx, rtw::rotationOfAngle(angleDeg));
     rtw::CandidateFrame c;
     c.angleDeg = angleDeg;
-    c.turnDeg = angleDeg - momentAngleDeg_;
-    c.fromSnapshot = rtw::uvAffineBetween(momentViewProj_, fit.viewProj);
+    c.turnDeg = angleDeg - carried_->momentAngleDeg;
+    c.fromSnapshot = rtw::uvAffineBetween(carried_->momentViewProj, fit.viewProj);
     c.extentM = fit.extentM;
     return c;
   };
   const rtw::TurnPredictor predictor(snapshot, settings);
   auto predict = [&](double angleDeg) { return predictor.predict(frameAt(angleDeg)); };
   // Refined only when a turn is in sight: the coarse best predicted better by half the margin.
-  lastSearch_ =
-      rtw::searchTurn(rotation_.angleDeg(), pcaAxisDeg, predict, 0.5 * p.get("rotation.margin"));
+  lastSearch_ = rtw::searchTurn(carried_->rotation.angleDeg(), pcaAxisDeg, predict,
+                                0.5 * p.get("rotation.margin"));
   const double threshold =
       std::clamp(p.get("pca.threshold"), rtw::kMinHoldThreshold, rtw::kMaxHoldThreshold);
   const double holdDeg = std::acos(threshold) * 180.0 / std::numbers::pi;
   lastDecision_ = rtw::decideTurn(lastSearch_, p.get("rotation.margin"), holdDeg);
   predicted_ = true;
   if (apply && lastDecision_.reason == rtw::TurnReason::Turned) {
-    const double step = rtw::foldQuarterTurn(lastDecision_.toDeg - rotation_.angleDeg());
-    rotation_.R = rtw::rotationOfAngle(lastDecision_.toDeg);
-    ++rotation_.changes;
-    rotation_.accumulatedDeg += std::abs(step);
+    const double step = rtw::foldQuarterTurn(lastDecision_.toDeg - carried_->rotation.angleDeg());
+    carried_->rotation.R = rtw::rotationOfAngle(lastDecision_.toDeg);
+    ++carried_->rotation.changes;
+    carried_->rotation.accumulatedDeg += std::abs(step);
     lastUpdate_.rotated = true;
     lastUpdate_.stepDeg = float(step);
   }
@@ -700,7 +735,8 @@ void RtwShadowMap::predictTurn(FrameContext& ctx, std::optional<double> pcaAxisD
   if (ctx.wants("prediction.m.p50") || ctx.wants("prediction.m.p95")) {
     // The frame this one is rendered in: what the renderer's aliasing.p50 / p95 will measure.
     const std::vector<double> q = {0.5, 0.95};
-    const std::vector<double> m = predictor.aliasingQuantiles(frameAt(rotation_.angleDeg()), q);
+    const std::vector<double> m =
+        predictor.aliasingQuantiles(frameAt(carried_->rotation.angleDeg()), q);
     if (m.size() == 2) {
       publishNumber(ctx, "prediction.m.p50", m[0]);
       publishNumber(ctx, "prediction.m.p95", m[1]);
@@ -755,9 +791,9 @@ void RtwShadowMap::buildMoments(FrameContext& ctx) {
     glDispatchCompute(groups(dst.x, SL_RTW_MOMENT_GROUP), groups(dst.y, SL_RTW_MOMENT_GROUP), 1);
   }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  momentExtentM_ = lastExtentM_;
-  momentViewProj_ = lastViewProj_;
-  momentAngleDeg_ = rotation_.angleDeg();
+  carried_->momentExtentM = lastExtentM_;
+  carried_->momentViewProj = lastViewProj_;
+  carried_->momentAngleDeg = carried_->rotation.angleDeg();
   // The chain itself (level images) and its IM, for the moment panel (debug: blocking),
   // only what is asked for.
   publishFloatBits(ctx, "importance.moments", momentIm_);
@@ -927,12 +963,16 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
   if (config_.rotation) {
     rotationFromLastMoments(ctx);
     publishRotation(ctx);
+    // This frame's moments go into the other set: the last complete frame's stay readable
+    // until the frame is committed.
+    swapMoments();
+    swappedThisFrame_ = true;
   }
 
   LightFit fit;
   {
     auto pass = ctx.timer.scope("focus");
-    fit = fitAt(ctx, config_.rotation ? rotation_.R : glm::mat2(1.0f));
+    fit = fitAt(ctx, config_.rotation ? carried_->rotation.R : glm::mat2(1.0f));
   }
   view_ = depthMapView(fit);
   lastExtentM_ = fit.extentM;
@@ -950,6 +990,9 @@ void RtwShadowMap::renderShadows(FrameContext& ctx) {
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
     glCopyNamedBufferSubData(collapsed_.id(), spread_.id(), 0, 0,
                              GLsizeiptr(2 * imRes_ * sizeof(float)));
+    glCopyNamedBufferSubData(momentBuffer_.id(), spread_.id(),
+                             GLintptr(momentOffsets_.back() * sizeof(float)),
+                             GLintptr(2 * imRes_ * sizeof(float)), GLsizeiptr(6 * sizeof(float)));
     momentFence_.place();
   }
   {
@@ -967,10 +1010,10 @@ void RtwShadowMap::publishRotation(FrameContext& ctx) {
   publishNumber(ctx, "rotation.held", lastUpdate_.held ? 1 : 0);
   publishNumber(ctx, "rotation.too_round", lastUpdate_.tooRound ? 1 : 0);
   publishNumber(ctx, "rotation.too_concentrated", lastUpdate_.tooConcentrated ? 1 : 0);
-  publishNumber(ctx, "rotation.deg", rotation_.angleDeg());
+  publishNumber(ctx, "rotation.deg", carried_->rotation.angleDeg());
   publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
-  publishNumber(ctx, "rotation.changes", rotation_.changes);
-  publishNumber(ctx, "rotation.frames", rotation_.frames);
+  publishNumber(ctx, "rotation.changes", carried_->rotation.changes);
+  publishNumber(ctx, "rotation.frames", carried_->rotation.frames);
   publishNumber(ctx, "pca.threshold", p.get("pca.threshold"));
   publishNumber(ctx, "pca.min_anisotropy", p.get("pca.min_anisotropy"));
   publishNumber(ctx, "pca.min_spread", p.get("pca.min_spread"));
@@ -1055,7 +1098,12 @@ MemoryStats RtwShadowMap::memory() const {
     m.add("turn prediction counts (pixels, importance sum, edge bins)", "R32UI", momentRes_,
           momentRes_, SL_RTW_COUNT_PLANES, 4);
   }
-  if (spread_) m.add("last frame's 1D importance (x, y; the spread gate)", "R32F", imRes_, 1, 2, 4);
+  if (spread_)
+    m.add("last frame's 1D importance (x, y; the spread gate) and moment top", "R32F",
+          2 * imRes_ + 6, 1, 1, 4);
+  if (spareSpread_)  // the last complete frame's, while a frame writes its own (swapMoments)
+    m.add("1D importance and moment top of the last complete frame", "R32F", 2 * imRes_ + 6, 1, 1,
+          4);
   if (uniformMap_)
     m.addDebugView("unwarped contrast map (while a panel shows it)", "DEPTH_COMPONENT32F", smRes_,
                    smRes_, 1, 4);

@@ -5,6 +5,7 @@
 // Every GPU pass mirrors a function of algo/rtw/ (the CPU reference; parity-tested).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "algo/Focus.h"
@@ -46,11 +47,17 @@ class RtwShadowMap : public Technique {
   MemoryStats memory() const override;
   std::optional<std::string> reloadShaders(const gl::ShaderLibrary& lib) override;
   void resetTemporalState() override;
+  /// DA-RTW: the rotation and the moments the next frame reads are the last complete frame's.
+  void commitFrame() override;
+  void discardFrame() override;
 
-  const rtw::RotationState& rotation() const { return rotation_; }
+  const rtw::RotationState& rotation() const { return carried_->rotation; }
 
  private:
   void ensureResources(int smRes, int imRes, const FrameContext& ctx);
+  /// Exchanges what the next frame reads of this frame's moments (spread_: the 1D maps and the
+  /// moment chain's top, and its fence) with the spare set (created on first use).
+  void swapMoments();
   void rotationFromLastMoments(FrameContext& ctx);
   /// rotation.mode = predicted (or the prediction's keys asked for): the last frame's moment IM
   /// and counts read back (behind the moment fence), the candidate turns scored and, in
@@ -95,10 +102,23 @@ class RtwShadowMap : public Technique {
   DepthMapView view_;
   glm::vec2 lastExtentM_{1.0f};
   glm::mat4 lastViewProj_{1.0f};
-  glm::vec2 momentExtentM_{1.0f};   ///< the light frustum extent the pending moments were taken in
-  glm::mat4 momentViewProj_{1.0f};  ///< ... and its view-projection (the prediction's snapshot)
-  double momentAngleDeg_ = 0.0;     ///< ... and the angle of R it was turned by
-  rtw::RotationState rotation_;
+  /// What DA-RTW carries across frames (TechniqueInfo::temporalState): R, and what the moments
+  /// the next frame reads were taken in.
+  struct Carried {
+    rtw::RotationState rotation;
+    glm::vec2 momentExtentM{1.0f};   ///< the light frustum extent the pending moments were taken in
+    glm::mat4 momentViewProj{1.0f};  ///< ... and its view-projection (the prediction's snapshot)
+    double momentAngleDeg = 0.0;     ///< ... and the angle of R it was turned by
+  };
+  FrameCarried<Carried> carried_;
+  /// The other set of spread_ and momentFence_: a frame reads the last complete frame's, swaps,
+  /// and writes its own into the other; a discarded frame swaps back (discardFrame).
+  gl::Buffer spareSpread_;
+  gl::Fence spareFence_;
+  bool swappedThisFrame_ = false;
+  /// The turn prediction's reading of the last complete frame's moment IM and counts (which a
+  /// frame overwrites): kept when a frame is discarded, forgotten when one commits.
+  std::optional<rtw::ImportanceSnapshot> snapshot_;
   rtw::RotationUpdate lastUpdate_;
   std::array<float, 6> lastTop_{};
   /// The last prediction: every candidate scored and the decision (valid when searched).

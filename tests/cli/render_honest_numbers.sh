@@ -36,11 +36,13 @@ check "rtw-backward: no rotation_settled" \
 check "da-rtw differs from rtw-backward" \
   bash -c "! cmp -s '$out/da-rtw.png' '$out/rtw-backward.png'"
 # The measured frames run without publishing: da-rtw holds its documented resources only
-# (rtw-backward's + the moment IM and its chain + the last frame's two 512-texel 1D maps of the
-# spread gate + the turn prediction's 7 planes of 128^2 counts), not the panels' 2D IM.
-check "da-rtw bytes = rtw-backward bytes + moments + spread gate + prediction counts" test \
-  "$(( $(field "$out/da-rtw.json" bytes) - $(field "$out/rtw-backward.json" bytes) ))" == \
-  $((589816 + 2 * 512 * 4 + 7 * 128 * 128 * 4))
+# (rtw-backward's + the moment IM and its chain + what the next frame reads: the two 512-texel
+# 1D maps of the spread gate and the moment chain's 6-float top, in two sets, this frame's and
+# the last complete frame's, as a stopped frame leaves no trace + the turn prediction's 7
+# planes of 128^2 counts), not the panels' 2D IM.
+check "da-rtw bytes = rtw-backward bytes + moments + spread gate (two sets) + prediction counts" \
+  test "$(( $(field "$out/da-rtw.json" bytes) - $(field "$out/rtw-backward.json" bytes) ))" == \
+  $((589816 + 2 * (2 * 512 + 6) * 4 + 7 * 128 * 128 * 4))
 
 # pca.threshold=1 never holds: the warm-up stops at its cap and says so on stderr.
 err=$("$cli" render --scene diagonal --technique da-rtw --set rotation.mode=pca --set pca.threshold=1 \

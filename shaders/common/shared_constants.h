@@ -162,7 +162,7 @@
 #define SL_RMSM_SAME_SURFACE_NORMAL_COS 0.9
 // Adaptive shadow maps (asm): the shadow-test pass writes per pixel (mask, served page key,
 // refine key, map edge) into an rgba32ui image; the edge pass turns it into one key per pixel in
-// the RMSM request image (SL_RMSM_IMAGE_REQUESTS), compacted by rmsm/compact.comp. A key with
+// the RMSM request image (SL_RMSM_IMAGE_REQUESTS), compacted by common/paged/compact.comp. A key with
 // SL_ASM_TOUCH_BIT is no request: the pixel used that page (the cache's LRU).
 #define SL_ASM_IMAGE_TESTED 1
 #define SL_ASM_TOUCH_BIT 0x80000000u

@@ -7,8 +7,8 @@
 namespace sl {
 
 EyeDepthBuffer::EyeDepthBuffer(const gl::ShaderLibrary& lib)
-    : program_(lib, {"virtual-tiled/eye_depth",
-                     {{GL_COMPUTE_SHADER, "virtual-tiled/eye_depth.comp"}},
+    : program_(lib, {"common/tiled/eye_depth",
+                     {{GL_COMPUTE_SHADER, "common/tiled/eye_depth.comp"}},
                      {},
                      {}}) {}
 

@@ -1,9 +1,9 @@
 // The eye-space depth buffer of the tiled techniques (Giegl & Wimmer 2007, §3.2 "Eye-Space
 // Depth Buffer", fvsm's step 1): one R32F float per pixel, the linear depth along the camera's
 // view axis (metres; 0 = no surface), written once per frame from the G-buffer
-// (shaders/virtual-tiled/eye_depth.comp). `virtual-tiled`'s and `fvsm`'s deferred tile passes
+// (shaders/common/tiled/eye_depth.comp). `virtual-tiled`'s and `fvsm`'s deferred tile passes
 // and fvsm's SMTMM rebuild each pixel's position from it with eq. 1
-// (shaders/virtual-tiled/eye_depth.glsl; CPU mirror algo/fvsm eyePosition).
+// (shaders/common/tiled/eye_depth.glsl; CPU mirror algo/fvsm eyePosition).
 #pragma once
 
 #include <optional>
@@ -33,7 +33,7 @@ class EyeDepthBuffer {
   /// untimed, from its G-buffer and camera (ResolveTargets::cameraView / cameraProj).
   void updateForResolve(const ResolveTargets& targets);
   /// Binds the buffer (SL_UNIT_EYE_DEPTH) and eq. 1's terms of the last update's camera to
-  /// `program` (one that includes virtual-tiled/eye_depth.glsl; it must be in use).
+  /// `program` (one that includes common/tiled/eye_depth.glsl; it must be in use).
   void bind(const gl::Program& program) const;
 
   const gl::Texture& texture() const { return texture_; }

@@ -388,7 +388,7 @@ void PagedMap::setLayoutUniforms(const gl::Program& p, const glm::mat4& viewProj
 
 void PagedMap::bindLookup(const gl::Program& p, int firstUnit, const DepthMapView& view) const {
   // Every level is one "map" of the shared bias model with the same light matrix; they
-  // differ in texel size only (shadowMapTexels in rmsm/page_fetch.glsl).
+  // differ in texel size only (shadowMapTexels in common/paged/page_fetch.glsl).
   const std::vector<DepthMapView> views(std::size_t(layout_.levels()), view);
   bindDepthLookup(p, views);
   setLayoutUniforms(p, view.lightViewProj);

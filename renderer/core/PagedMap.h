@@ -1,7 +1,7 @@
 // The GL side of a paged virtual shadow map, shared by `rmsm` (Lefohn et al. 2007) and `asm`
 // (Fernando et al. 2001): the physical pool (one depth texture, pages side by side) with its
 // framebuffer, the page table's mip chain (R32UI, one level per quadtree level), rendering
-// pages into their pool slots and binding both for the paged lookup (rmsm/page_fetch.glsl).
+// pages into their pool slots and binding both for the paged lookup (common/paged/page_fetch.glsl).
 // The CPU side (layout, page table, pool allocator) is algo/pages.
 #pragma once
 
@@ -109,7 +109,7 @@ class PagedMap {
   /// Frees the superpage target (the page-by-page path does not need it).
   void releaseSuperpageTarget();
   const gl::Texture& superpageTexture() const { return superpage_; }
-  /// The layout's uniforms of rmsm/request.glsl.
+  /// The layout's uniforms of common/paged/request.glsl.
   void setLayoutUniforms(const gl::Program& p, const glm::mat4& viewProj) const;
   /// The paged lookup's bindings: every level a map of the shared bias model with `view`'s
   /// matrix, the pool at unit firstUnit, the page table at firstUnit + 1.

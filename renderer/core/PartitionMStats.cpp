@@ -17,9 +17,8 @@ const char* const kKeys[] = {"m.p95", "m.max", "m.pixels"};
 }  // namespace
 
 PartitionMStats::PartitionMStats(const gl::ShaderLibrary& lib)
-    : program_(
-          lib,
-          {"cascades/partition_m", {{GL_COMPUTE_SHADER, "cascades/partition_m.comp"}}, {}, {}}) {}
+    : program_(lib,
+               {"common/partition_m", {{GL_COMPUTE_SHADER, "common/partition_m.comp"}}, {}, {}}) {}
 
 PassDecl PartitionMStats::passDecl() {
   return {"partition m", "Aliasing per partition",

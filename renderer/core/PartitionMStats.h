@@ -1,6 +1,6 @@
 // Per-map perspective aliasing m of the previous frame's resolve, for every multi-map
 // technique (cascades, face-partition): a 1/8-octave histogram of m per selected map
-// (shaders/cascades/partition_m.comp), published as partition.<i>.m.p95 / .max / .pixels for
+// (shaders/common/partition_m.comp), published as partition.<i>.m.p95 / .max / .pixels for
 // the Partitions panel, measured only while one of those keys is requested.
 #pragma once
 

@@ -7,8 +7,7 @@
 namespace sl {
 
 gl::ProgramDesc applyTileProgramDesc() {
-  return {
-      "virtual-tiled/apply_tile", {{GL_COMPUTE_SHADER, "virtual-tiled/apply_tile.comp"}}, {}, {}};
+  return {"common/tiled/apply_tile", {{GL_COMPUTE_SHADER, "common/tiled/apply_tile.comp"}}, {}, {}};
 }
 
 void appendTileBiasParams(std::vector<ParamDecl>& params) {

@@ -1,7 +1,7 @@
 // The GL side of a tiled virtual shadow map, shared by `virtual-tiled` (the brute force) and
 // `fvsm` (Giegl & Wimmer, GI 2007): a tile's depth target, the tiles' bias parameters, the uv
 // range a tile serves, and the deferred application of one tile over the screen
-// (shaders/virtual-tiled/apply_tile.comp), each pixel's position rebuilt from the eye-space
+// (shaders/common/tiled/apply_tile.comp), each pixel's position rebuilt from the eye-space
 // depth buffer (core/EyeDepthBuffer.h). The tile views themselves are core/ShadowPass's
 // focusedMapView and subRectView.
 #pragma once
@@ -40,7 +40,7 @@ void tileApplyRange(glm::dvec2 uvMin, glm::dvec2 uvMax, glm::dvec2& applyMin, gl
 /// tiles' own) and restores the resolve's framebuffer, viewport and depth state.
 void endTiles(const ResolveTargets& targets);
 
-/// The deferred application of one tile (shaders/virtual-tiled/apply_tile.comp): writes the resolve
+/// The deferred application of one tile (shaders/common/tiled/apply_tile.comp): writes the resolve
 /// targets of the pixels in screen rectangle [rectMin, rectMax) whose light uv in `full` lies in
 /// [uvMin, uvMax), with the tile as map 0 of the shared bias model (its texture on
 /// SL_UNIT_LOOKUP_FIRST); each pixel's position rebuilt from the eye-space depth buffer

@@ -4,7 +4,7 @@
 // (u_edgeTest = SL_ASM_EDGE_SCREEN) or when test.comp found its texel on a shadow edge of the
 // map (SL_ASM_EDGE_MAP, Fernando et al. 2001); such a pixel with
 // a refine key asks for that page; every other covered pixel touches the page it used
-// (key | SL_ASM_TOUCH_BIT: the cache's LRU). Then rmsm/compact.comp dedups and compacts.
+// (key | SL_ASM_TOUCH_BIT: the cache's LRU). Then common/paged/compact.comp dedups and compacts.
 #include "common/shared_constants.h"
 layout(local_size_x = SL_RMSM_GROUP, local_size_y = SL_RMSM_GROUP) in;
 layout(rgba32ui, binding = SL_ASM_IMAGE_TESTED) readonly uniform uimage2D u_tested;

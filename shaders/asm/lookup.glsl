@@ -1,10 +1,10 @@
 // ASM lookup (C++: AsmShadowMap::bindLookup; Fernando et al. 2001): the finest page the
 // adaptive quadtree holds at the point, whatever the pixel's footprint (the page table's
 // level 0 entry is its finest allocated ancestor, sl::pages::PageTable::finalised); that
-// page's level is the selected "map" (rmsm/page_fetch.glsl: the pages and the pool are RMSM's).
+// page's level is the selected "map" (common/paged/page_fetch.glsl: the pages and the pool are RMSM's).
 #include "common/shared_constants.h"
-#include "rmsm/request.glsl"
-#include "rmsm/page_fetch.glsl"
+#include "common/paged/request.glsl"
+#include "common/paged/page_fetch.glsl"
 
 int selectShadowMap(vec3 P) {
   vec4 c = u_rmsmViewProj * vec4(P, 1.0);

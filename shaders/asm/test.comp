@@ -1,7 +1,7 @@
 // ASM shadow test, per camera pixel (C++: AsmShadowMap::findEdges; Fernando et al. 2001, the
 // lecture's "lookup shadow map texel"): the resolve pass's hard test through the quadtree as it
 // stands (asm/lookup.glsl, the shared bias model), the page that test read, and the page at
-// the pixel's LOD (rmsm/request.glsl) when that page is finer (sl::adaptive::refineKey), and
+// the pixel's LOD (common/paged/request.glsl) when that page is finer (sl::adaptive::refineKey), and
 // whether the texel the test read lies on a shadow edge of the map (Fernando et al. 2001; C++
 // reference: sl::adaptive::mapTexelOnShadowEdge): the same depth test at that texel and at its
 // 4 neighbours in the map, whatever the pixel faces, do not all agree.

@@ -162,8 +162,8 @@
 #define SL_RMSM_SAME_SURFACE_NORMAL_COS 0.9
 // Adaptive shadow maps (asm): the shadow-test pass writes per pixel (mask, served page key,
 // refine key, map edge) into an rgba32ui image; the edge pass turns it into one key per pixel in
-// the RMSM request image (SL_RMSM_IMAGE_REQUESTS), compacted by rmsm/compact.comp. A key with
-// SL_ASM_TOUCH_BIT is no request: the pixel used that page (the cache's LRU).
+// the RMSM request image (SL_RMSM_IMAGE_REQUESTS), compacted by common/paged/compact.comp. A key
+// with SL_ASM_TOUCH_BIT is no request: the pixel used that page (the cache's LRU).
 #define SL_ASM_IMAGE_TESTED 1
 #define SL_ASM_TOUCH_BIT 0x80000000u
 // asm.edge (sl::adaptive::EdgeTest): what makes a pixel an edge pixel. SCREEN: its shadow mask
@@ -173,11 +173,11 @@
 #define SL_ASM_EDGE_MAP 1
 
 // --- The tiled techniques' eye-space depth buffer (virtual-tiled and fvsm: Giegl & Wimmer
-// 2007 §3.2; techniques/virtual-tiled EyeDepthBuffer, shaders/virtual-tiled/eye_depth.*): r32f,
+// 2007 §3.2; core/EyeDepthBuffer, shaders/common/tiled/eye_depth.*): r32f,
 // metres along the camera's view axis, 0 = no surface. Sampled on the unit after the tile's
 // own lookup texture (SL_UNIT_LOOKUP_FIRST) by the tile apply and SMTMM passes.
 #define SL_UNIT_EYE_DEPTH 11
-#define SL_IMAGE_EYE_DEPTH 5  // written by virtual-tiled/eye_depth.comp
+#define SL_IMAGE_EYE_DEPTH 5  // written by common/tiled/eye_depth.comp
 
 // --- Fitted virtual shadow maps (techniques/fvsm, shaders/fvsm; algo/fvsm).
 // Cap of a quantised SMTMM need (log2 texels of the whole virtual map along one axis): a

@@ -3,7 +3,7 @@
 // with the depth test EQUAL against the technique's own depth pre-pass (u_depthOnly: that
 // pass, writing nothing else), and each fragment whose light uv in the full (virtual) map
 // lies in the leaf's [u_tileUvMin, u_tileUvMax) is shadowed with the leaf — map 0 of the
-// shared bias model, as in the deferred pass (virtual-tiled/apply_tile.comp) — and written to
+// shared bias model, as in the deferred pass (common/tiled/apply_tile.comp) — and written to
 // the resolve targets; the others are discarded (the paper's "pixels outside the tile are
 // suppressed"). The world position is the rasterised one, not rebuilt from eye depth.
 // Aliasing m: screen-space derivatives of the leaf's texel coordinate (full-map uv times its
@@ -22,7 +22,7 @@ uniform vec2 u_tileUvMax;
 uniform vec2 u_texelsPerFullUv;  // the leaf's texels per unit of full-map uv
 uniform uint u_mapIndex;
 
-#include "virtual-tiled/tile_lookup.glsl"
+#include "common/tiled/tile_lookup.glsl"
 
 layout(location = 0) out uint o_hard;
 layout(location = 1) out float o_filtered;

@@ -2,9 +2,9 @@
 // §4.3; CPU reference: sl::fvsm::smtmmEntry / buildSmtmm, algo/fvsm/Fvsm.cpp, which this
 // mirrors line by line in float): one invocation per entry, sampling the pixel at the centre
 // of the entry's block. Linear eye depth is read from the eye-space depth buffer (step 1,
-// virtual-tiled/eye_depth.comp); the pixel's footprint is the parallelogram P ± a ± b built
+// common/tiled/eye_depth.comp); the pixel's footprint is the parallelogram P ± a ± b built
 // from the signed depth step towards the neighbour nearer in depth, each corner an eye-space
-// position by eq. 1 (virtual-tiled/eye_depth.glsl: eyeDepthAt, eyePosition), projected into
+// position by eq. 1 (common/tiled/eye_depth.glsl: eyeDepthAt, eyePosition), projected into
 // the virtual map's uv. Built with SL_FVSM_PACKED_ENTRY it writes the paper's 4-byte entry
 // (sl::fvsm::packSmtmmEntry) instead of four floats.
 #include "common/shared_constants.h"
@@ -19,7 +19,7 @@ uniform ivec2 u_smtmmSize;
 uniform mat4 u_eyeToSmUv;    // eye -> the virtual map's uv (x, y; w divided)
 uniform int u_footprint;     // SL_FVSM_FOOTPRINT_BOX or _CHORD (fvsm.need.footprint)
 
-#include "virtual-tiled/eye_depth.glsl"
+#include "common/tiled/eye_depth.glsl"
 
 vec2 toSmUv(vec3 e) {
   vec4 c = u_eyeToSmUv * vec4(e, 1.0);

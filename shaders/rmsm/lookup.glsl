@@ -1,10 +1,10 @@
 // RMSM lookup (C++: RmsmShadowMap::bindLookup): the pixel asks for the LOD its footprint
-// needs (rmsm/request.glsl, as the request pass did), the page table at that LOD gives the
+// needs (common/paged/request.glsl, as the request pass did), the page table at that LOD gives the
 // finest allocated page covering it, and that page's level is the selected "map"
-// (rmsm/page_fetch.glsl: the level's texels through the page table and the pool).
+// (common/paged/page_fetch.glsl: the level's texels through the page table and the pool).
 #include "common/shared_constants.h"
-#include "rmsm/request.glsl"
-#include "rmsm/page_fetch.glsl"
+#include "common/paged/request.glsl"
+#include "common/paged/page_fetch.glsl"
 
 int selectShadowMap(vec3 P) {
   vec2 pixelSt;

@@ -5,7 +5,7 @@ layout(local_size_x = SL_RMSM_GROUP, local_size_y = SL_RMSM_GROUP) in;
 layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;
 layout(binding = SL_UNIT_G_NORMAL) uniform sampler2D u_gNormal;
 layout(r32ui, binding = SL_RMSM_IMAGE_REQUESTS) writeonly uniform uimage2D u_requests;
-#include "rmsm/request.glsl"
+#include "common/paged/request.glsl"
 
 void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);

@@ -1,7 +1,7 @@
 // The tiled techniques' eye-space depth buffer (core/EyeDepthBuffer; Giegl &
 // Wimmer 2007 §3.2, eq. 1) on real frames of diagonal and corridor: it holds −z_eye of the
 // G-buffer's positions, and the world positions rebuilt from it with eq. 1 — on the GPU by the
-// very GLSL the tile apply and SMTMM passes include (virtual-tiled/eye_depth.glsl), on the CPU
+// very GLSL the tile apply and SMTMM passes include (common/tiled/eye_depth.glsl), on the CPU
 // by algo/fvsm eyePosition — are the G-buffer's within float rounding.
 #include <algorithm>
 #include <cmath>

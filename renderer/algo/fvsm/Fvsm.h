@@ -50,7 +50,7 @@ struct EyeDepthView {
 
 /// Eye-space position of screen position `pixel` (pixel units, (0, 0) = the bottom-left
 /// corner of the frame; a pixel's centre is at +0.5) at linear depth `eyeDepthM` (eq. 1):
-/// d ((ndc + b) tanHalfFov, −1). The GPU's is shaders/virtual-tiled/eye_depth.glsl.
+/// d ((ndc + b) tanHalfFov, −1). The GPU's is shaders/common/tiled/eye_depth.glsl.
 glm::dvec3 eyePosition(const EyeDepthView& view, glm::dvec2 pixel, double eyeDepthM);
 
 /// One SMTMM entry. `smUv`: where in the virtual shadow map ([0, 1]²) the pixel looks;

@@ -28,7 +28,7 @@ gl::ProgramDesc edgesProgramDesc() {
   return {"asm/edges", {{GL_COMPUTE_SHADER, "asm/edges.comp"}}, {}, {}};
 }
 gl::ProgramDesc compactProgramDesc() {
-  return {"asm/compact", {{GL_COMPUTE_SHADER, "rmsm/compact.comp"}}, {}, {}};
+  return {"asm/compact", {{GL_COMPUTE_SHADER, "common/paged/compact.comp"}}, {}, {}};
 }
 
 std::string iterationPass(const char* what, int i) {

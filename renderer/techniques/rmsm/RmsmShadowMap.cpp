@@ -24,7 +24,7 @@ gl::ProgramDesc requestProgramDesc() {
   return {"rmsm/requests", {{GL_COMPUTE_SHADER, "rmsm/requests.comp"}}, {}, {}};
 }
 gl::ProgramDesc compactProgramDesc() {
-  return {"rmsm/compact", {{GL_COMPUTE_SHADER, "rmsm/compact.comp"}}, {}, {}};
+  return {"rmsm/compact", {{GL_COMPUTE_SHADER, "common/paged/compact.comp"}}, {}, {}};
 }
 gl::ProgramDesc sortProgramDesc() {
   return {"rmsm/sort", {{GL_COMPUTE_SHADER, "rmsm/sort.comp"}}, {}, {}};

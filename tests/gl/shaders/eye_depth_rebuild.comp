@@ -1,10 +1,10 @@
 // Test only (tests/gl/EyeDepthTest.cpp): every pixel's world position rebuilt from the tiled
 // techniques' eye-space depth buffer with the very functions apply_tile.comp and smtmm.comp
-// use (virtual-tiled/eye_depth.glsl, eq. 1); w = 1 where the buffer holds a surface, else 0.
+// use (common/tiled/eye_depth.glsl, eq. 1); w = 1 where the buffer holds a surface, else 0.
 #include "common/shared_constants.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) writeonly uniform image2D o_world;
-#include "virtual-tiled/eye_depth.glsl"
+#include "common/tiled/eye_depth.glsl"
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);

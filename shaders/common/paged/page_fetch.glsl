@@ -4,7 +4,7 @@
 // virtual.resolution >> level texels whose texels live in pages of one physical pool behind
 // the page table (finalised on the CPU: sl::pages::PageTable::finalised). A texel of a
 // neighbouring page that holds a coarser page (PCF, normal offset) is read from that page.
-// Needs rmsm/request.glsl (the layout's uniforms) included before.
+// Needs common/paged/request.glsl (the layout's uniforms) included before.
 uniform sampler2D u_rmsmPool;         // DEPTH_COMPONENT32F: the pages side by side
 uniform usampler2D u_rmsmPageTable;   // R32UI mip chain: slot << 5 | page level, per entry
 uniform int u_rmsmPoolColumns;        // pages per row of the pool

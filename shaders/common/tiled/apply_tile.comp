@@ -1,10 +1,10 @@
 // Deferred shadowing with ONE tile of a virtual shadow map (Giegl & Wimmer 2007, §3.2; C++:
-// sl::applyTile in techniques/virtual-tiled): every pixel of the dispatched screen rectangle
+// sl::applyTile in core/TiledVirtualMap): every pixel of the dispatched screen rectangle
 // whose light uv in the full (virtual) map lies in the tile's [u_tileUvMin, u_tileUvMax)
 // is shadowed with the tile — map 0 of the shared bias model (tile_lookup.glsl) — and
 // written to the resolve targets; the others are left as they are (a later tile, or
 // the clear). Each pixel's world position is rebuilt from the eye-space depth buffer with
-// eq. 1 (virtual-tiled/eye_depth.glsl), not read from the G-buffer's positions. Aliasing m:
+// eq. 1 (common/tiled/eye_depth.glsl), not read from the G-buffer's positions. Aliasing m:
 // finite differences over the pixel's 2x2 quad of the tile's texel coordinate (full-map uv
 // times the tile's texels per uv).
 #include "common/shared_constants.h"
@@ -28,8 +28,8 @@ uniform uint u_mapIndex;
 uniform bool u_onlyEmpty;
 layout(binding = SL_UNIT_HARD) uniform usampler2D u_hardSoFar;
 
-#include "virtual-tiled/eye_depth.glsl"
-#include "virtual-tiled/tile_lookup.glsl"
+#include "common/tiled/eye_depth.glsl"
+#include "common/tiled/tile_lookup.glsl"
 
 // The full map's uv of eye-space position e (the pixels outside the tile stop here: one
 // matrix, no world position).

@@ -1,9 +1,9 @@
 // The tiled techniques' eye-space depth buffer (Giegl & Wimmer 2007, §3.2 and fvsm's step 1,
-// §4.2; C++: sl::EyeDepthBuffer::update in techniques/virtual-tiled): per pixel the linear
+// §4.2; C++: sl::EyeDepthBuffer::update in core/EyeDepthBuffer): per pixel the linear
 // depth along the camera's view axis, −z_eye in metres (0: no surface), from the G-buffer's
 // world position. This is the one pass of virtual-tiled and fvsm that reads the position
 // texture: the tile passes and the SMTMM rebuild positions from this buffer with eq. 1
-// (virtual-tiled/eye_depth.glsl).
+// (common/tiled/eye_depth.glsl).
 #include "common/shared_constants.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = SL_UNIT_G_POSITION) uniform sampler2D u_gPosition;

@@ -1,5 +1,6 @@
-// RMSM steps 2 and 3 (C++: RmsmShadowMap::requestPages; reference sl::pages::dedupRequests
-// and compactRequests): a request stays only when its left and lower neighbours ask for a
+// RMSM steps 2 and 3, also ASM's compaction of its edge requests (C++:
+// RmsmShadowMap::requestPages, AsmShadowMap; reference sl::pages::dedupRequests and
+// compactRequests): a request stays only when its left and lower neighbours ask for a
 // different page; the survivors are appended to one buffer (an atomic counter: compaction
 // in arbitrary order, which sort + unique make canonical).
 #include "common/shared_constants.h"

@@ -502,8 +502,9 @@ void LessonController::reportFit() {
   if (!layout) return;
   QStringList panels;
   for (const std::string& id : layout->docks) {
+    // A hidden dock's, or one behind another tab, are not counted (unreadableParts).
     const QDockWidget* dock = w_.findChild<QDockWidget*>(QString::fromStdString(id));
-    if (!dock || !dock->isVisible() || dock->visibleRegion().isEmpty()) continue;
+    if (!dock) continue;
     const QStringList parts = unreadableParts(*dock);
     if (!parts.isEmpty())
       panels << (parts.size() == 1 ? tr("%1 (%2)").arg(dock->windowTitle(), parts.front())

@@ -1,6 +1,7 @@
 #include "ViewOverlay.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <QPainter>
@@ -80,6 +81,10 @@ QRectF clearOf(QRectF r, const QVector<ViewOverlay::Box>& placed, bool down) {
 }
 
 }  // namespace
+
+std::array<QString, 2> ViewOverlay::errorRows() {
+  return {tr("false lit (light leak)"), tr("false shadowed")};
+}
 
 const char* ViewOverlay::roleName(Role role) {
   switch (role) {
@@ -182,8 +187,8 @@ QVector<ViewOverlay::Box> ViewOverlay::layout() const {
               2.0 * line + 22};
     } else if (legend == Legend::Error) {
       const int tw =
-          std::max({fm.horizontalAdvance(tr("false lit (light leak)")),
-                    fm.horizontalAdvance(tr("false shadowed")), fm.horizontalAdvance(errorNote)}) +
+          std::max({fm.horizontalAdvance(errorRows()[0]), fm.horizontalAdvance(errorRows()[1]),
+                    fm.horizontalAdvance(errorNote)}) +
           44;
       const int rows = errorNote.isEmpty() ? 2 : 3;
       size = {double(tw), rows * line + 12.0};
@@ -228,9 +233,13 @@ QVector<ViewOverlay::Box> ViewOverlay::layout() const {
 }
 
 void ViewOverlay::placeInset() {
+  takeInset(layout());
+}
+
+void ViewOverlay::takeInset(const QVector<Box>& boxes) {
   insetRect = QRect();
   insetFactor = 0;
-  for (const Box& b : layout())
+  for (const Box& b : boxes)
     if (b.role == Role::Inset) {
       insetRect = b.rect.toRect();
       insetFactor = insetRect.width() / std::max(1, zoomArea.width());
@@ -360,7 +369,7 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
     const double tw = r.width();
     box(r);
     const QColor colors[] = {QColor(255, 0, 255), QColor(0, 255, 255)};
-    const QString texts[] = {tr("false lit (light leak)"), tr("false shadowed")};
+    const std::array<QString, 2> texts = errorRows();
     for (int i = 0; i < 2; ++i) {
       const double y = r.top() + 6 + i * line;
       p.fillRect(QRectF(r.left() + 10, y + 3, 18, line - 6), colors[i]);
@@ -387,8 +396,7 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
     p.setPen(QColor(255, 217, 26));
     p.drawText(r, Qt::AlignCenter, legendText());
   }
-  insetRect = rectOf(Role::Inset).toRect();
-  insetFactor = insetRect.isEmpty() ? 0 : insetRect.width() / std::max(1, zoomArea.width());
+  takeInset(boxes);
   if (insetFactor > 0) {  // the zoom inset: nearest neighbour, whole texels per pixel
     const QRectF source(zoomArea.topLeft() * zoomSource.devicePixelRatio(),
                         zoomArea.size() * zoomSource.devicePixelRatio());

@@ -3,6 +3,7 @@
 // zoom inset and the presenter's pointer ring. Plain QPainter, no GL.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -95,6 +96,10 @@ class ViewOverlay : public QWidget {
   /// The one-line text of the overlay legend (the aliasing bar's caption, the changed count,
   /// the warp grid's note); empty for the error legend, which has rows.
   QString legendText() const;
+  /// The error legend's two rows (false lit, false shadowed), beside their colours.
+  static std::array<QString, 2> errorRows();
+  /// insetRect and insetFactor from a layout's Inset box (none: empty, 0).
+  void takeInset(const QVector<Box>& boxes);
 };
 
 }  // namespace sl::ui

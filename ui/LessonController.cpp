@@ -426,7 +426,7 @@ void LessonController::startSettling() {
     return;
   }
   const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId());
-  const bool temporal = info && rtwsettle::hasTemporalState(*info);
+  const bool temporal = info && rtwsettle::settlesRotation(*info);
   settled_ = true;
   settleFrames_ = 0;
   if (!temporal || w.viewport()->paused()) {

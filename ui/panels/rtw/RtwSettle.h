@@ -13,8 +13,10 @@
 
 namespace sl::ui::rtwsettle {
 
-/// The technique's state carries over frames (TechniqueInfo::temporalRotation).
-inline bool hasTemporalState(const sl::TechniqueInfo& info) {
+/// The technique's rotation carries over frames and settles by a declared rule
+/// (TechniqueInfo::temporalRotation and settled); not the wider TechniqueInfo::temporalState,
+/// which cascades and the paged maps declare too.
+inline bool settlesRotation(const sl::TechniqueInfo& info) {
   return info.temporalRotation && bool(info.settled);
 }
 

@@ -1,7 +1,7 @@
 // Scripted control of the window (see Automation.h).
 #include "Automation.h"
 
-#include "RenderService.h"
+#include "service/RenderService.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -9,10 +9,10 @@
 #include <QStatusBar>
 #include <QTimer>
 
-#include "LaunchOptions.h"
-#include "LessonController.h"
-#include "MainWindow.h"
-#include "ViewportWidget.h"
+#include "launch/LaunchOptions.h"
+#include "teaching/LessonController.h"
+#include "window/MainWindow.h"
+#include "view/ViewportWidget.h"
 #include "core/Renderer.h"
 
 namespace sl::ui {

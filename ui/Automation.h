@@ -14,7 +14,7 @@
 #include <QObject>
 #include <QString>
 
-#include "ViewportWidget.h"
+#include "view/ViewportWidget.h"
 #include "core/Renderer.h"
 
 namespace sl {

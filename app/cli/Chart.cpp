@@ -34,7 +34,7 @@
 #include <QtCharts/QChart>
 #include <QtCharts/QLegend>
 
-#include "ChartKit.h"
+#include "figures/ChartKit.h"
 #endif
 
 namespace sl::cli {

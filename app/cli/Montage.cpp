@@ -1,4 +1,4 @@
-// The compare montage (Montage.h): ui/FigureKit.h on Qt's offscreen platform.
+// The compare montage (Montage.h): ui/figures/FigureKit.h on Qt's offscreen platform.
 #include "Montage.h"
 
 #include <stdexcept>
@@ -7,7 +7,7 @@
 #include "CliCommon.h"
 
 #if SHADOWLAB_CLI_CHARTS
-#include "FigureKit.h"
+#include "figures/FigureKit.h"
 #endif
 
 namespace sl::cli {

@@ -1,12 +1,12 @@
 // `compare --montage`: the compared configurations side by side for handouts, drawn by
-// ui/FigureKit.h (the GUI's File > Export figure draws the same figure).
+// ui/figures/FigureKit.h (the GUI's File > Export figure draws the same figure).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "FigureTypes.h"
+#include "figures/FigureTypes.h"
 
 namespace sl::cli {
 

@@ -1,5 +1,5 @@
 // Draws the storage-factor plots (Lloyd et al. 2006, Figs. 6-7) offscreen into PNGs with the
-// shared pieces of ui/StorageChartKit.h. See StorageCharts.h.
+// shared pieces of ui/figures/StorageChartKit.h. See StorageCharts.h.
 #include "StorageCharts.h"
 
 #include <cstdio>
@@ -12,7 +12,7 @@
 #include <QGraphicsScene>
 #include <QImage>
 
-#include "StorageChartKit.h"
+#include "figures/StorageChartKit.h"
 #endif
 
 namespace sl::cli {

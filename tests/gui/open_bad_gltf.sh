@@ -2,7 +2,7 @@
 # Opening a broken glTF from the GUI — File > Open glTF… with Qt's file dialog, and dropping
 # the file on the window (a QDropEvent with its URL), driven by shadowlab-gui-tests --test
 # bad-gltf=FILE,FILE,… (see tests/gui/src/GuiTests.cpp) — shows an error dialog and a status
-# message naming the file, both elided to a sane length (ui/MessageText.h), and the previous
+# message naming the file, both elided to a sane length (ui/window/MessageText.h), and the previous
 # scene stays loaded and keeps rendering. Every fixture in tests/data that fails to load, a
 # generated one whose 40 MB buffer URI the loader's message may echo, and every hostile glTF
 # of tests/fixtures/hostile that the CLI refuses.

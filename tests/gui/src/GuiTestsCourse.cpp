@@ -9,8 +9,8 @@
 #include <QLabel>
 #include <QPushButton>
 
-#include "LessonController.h"
-#include "MainWindow.h"
+#include "teaching/LessonController.h"
+#include "window/MainWindow.h"
 #include "GuiTests.h"
 
 namespace sl::ui {

@@ -13,8 +13,8 @@
 #include <QTimer>
 
 #include "GuiTests.h"
-#include "MainWindow.h"
-#include "ViewportWidget.h"
+#include "window/MainWindow.h"
+#include "view/ViewportWidget.h"
 
 namespace sl::ui {
 

@@ -26,12 +26,12 @@
 
 #include <glm/glm.hpp>
 
-#include "LessonController.h"
-#include "MainWindow.h"
-#include "PresenterMode.h"
-#include "PublicationDocks.h"
+#include "teaching/LessonController.h"
+#include "window/MainWindow.h"
+#include "teaching/PresenterMode.h"
+#include "window/PublicationDocks.h"
 #include "GuiTests.h"
-#include "ViewportWidget.h"
+#include "view/ViewportWidget.h"
 #include "panels/common/LessonPanel.h"
 #include "panels/common/PanelKit.h"
 #include "panels/common/ParamPanel.h"

@@ -14,10 +14,10 @@
 #include <QRegularExpression>
 #include <QTimer>
 
-#include "MainWindow.h"
+#include "window/MainWindow.h"
 #include "GuiTests.h"
-#include "TeachingBar.h"
-#include "ViewportWidget.h"
+#include "teaching/TeachingBar.h"
+#include "view/ViewportWidget.h"
 
 namespace sl::ui {
 

@@ -1,5 +1,5 @@
 // The output-policy GUI test (see GuiTests.h): every file the window writes goes through
-// algo/OutputFile.h's policy (ui/GrabRun.h, writeWindowOutput); tests/gui/grab_outputs.sh
+// algo/OutputFile.h's policy (ui/launch/GrabRun.h, writeWindowOutput); tests/gui/grab_outputs.sh
 // starts it on a scene whose buffer is named like a grab's output and checks --grab itself.
 #include <QDir>
 #include <QElapsedTimer>
@@ -8,10 +8,10 @@
 #include <QImage>
 #include <QTimer>
 
-#include "GrabRun.h"
+#include "launch/GrabRun.h"
 #include "GuiTests.h"
-#include "MainWindow.h"
-#include "SessionFiles.h"
+#include "window/MainWindow.h"
+#include "window/SessionFiles.h"
 
 namespace sl::ui {
 

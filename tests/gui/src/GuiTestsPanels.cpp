@@ -16,9 +16,9 @@
 #include <QElapsedTimer>
 #include <QStringList>
 
-#include "MainWindow.h"
+#include "window/MainWindow.h"
 #include "GuiTests.h"
-#include "ViewportWidget.h"
+#include "view/ViewportWidget.h"
 #include "panels/common/ParamPanel.h"
 #include "panels/rtw/CovariancePanel.h"
 #include "panels/rtw/RtwPanels.h"

@@ -26,15 +26,15 @@
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegend>
 
-#include "LessonController.h"
-#include "MainWindow.h"
-#include "PresenterMode.h"
+#include "teaching/LessonController.h"
+#include "window/MainWindow.h"
+#include "teaching/PresenterMode.h"
 #include "GuiTests.h"
-#include "SplitSideParams.h"
-#include "TeachingBar.h"
-#include "Theme.h"
-#include "ViewOverlay.h"
-#include "ViewportWidget.h"
+#include "window/SplitSideParams.h"
+#include "teaching/TeachingBar.h"
+#include "window/Theme.h"
+#include "view/ViewOverlay.h"
+#include "view/ViewportWidget.h"
 #include "common/shared_constants.h"
 #include "panels/common/PanelKit.h"
 #include "panels/common/ParamPanel.h"

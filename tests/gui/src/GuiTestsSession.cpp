@@ -15,13 +15,13 @@
 #include <QStatusBar>
 #include <QTimer>
 
-#include "LaunchOptions.h"
-#include "LessonController.h"
-#include "MainWindow.h"
+#include "launch/LaunchOptions.h"
+#include "teaching/LessonController.h"
+#include "window/MainWindow.h"
 #include "GuiTests.h"
-#include "SessionFiles.h"
-#include "TeachingBar.h"
-#include "ViewportWidget.h"
+#include "window/SessionFiles.h"
+#include "teaching/TeachingBar.h"
+#include "view/ViewportWidget.h"
 #include "panels/common/ParamPanel.h"
 
 namespace sl::ui {

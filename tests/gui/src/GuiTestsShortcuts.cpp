@@ -20,10 +20,10 @@
 #include <QWheelEvent>
 
 #include "GuiTests.h"
-#include "MainWindow.h"
-#include "PassStepper.h"
-#include "ViewportWidget.h"
-#include "WindowShortcuts.h"
+#include "window/MainWindow.h"
+#include "teaching/PassStepper.h"
+#include "view/ViewportWidget.h"
+#include "window/WindowShortcuts.h"
 #include "panels/common/ParamPanel.h"
 
 namespace sl::ui {

@@ -11,9 +11,9 @@
 #include <QMouseEvent>
 #include <QStatusBar>
 
-#include "MainWindow.h"
+#include "window/MainWindow.h"
 #include "GuiTests.h"
-#include "ViewportWidget.h"
+#include "view/ViewportWidget.h"
 #include "algo/partition/StoragePlots.h"
 #include "panels/analysis/StoragePanel.h"
 

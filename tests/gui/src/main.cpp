@@ -1,7 +1,7 @@
 // shadowlab-gui-tests: the GUI tests' program (not installed). `shadowlab-gui-tests --test
 // NAME[=ARG] [shadowlab's options]` opens the window as `shadowlab` does with the same options
-// (ui/Launch.h), then runs GUI test NAME on it (GuiTests.h). Exit codes: 0 pass, 1 fail (or a
-// runtime failure), 2 bad command line: no --test, an unknown test name, or shadowlab's.
+// (ui/launch/Launch.h), then runs GUI test NAME on it (GuiTests.h). Exit codes: 0 pass, 1 fail (or
+// a runtime failure), 2 bad command line: no --test, an unknown test name, or shadowlab's.
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -9,8 +9,8 @@
 #include <QString>
 
 #include "GuiTests.h"
-#include "Launch.h"
-#include "MainWindow.h"
+#include "launch/Launch.h"
+#include "window/MainWindow.h"
 
 int main(int argc, char** argv) {
   // --test NAME[=ARG] (or --test=NAME[=ARG]) is ours; every other argument is shadowlab's.

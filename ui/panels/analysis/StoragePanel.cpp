@@ -1,5 +1,6 @@
 // The Storage factor panel (see StoragePanel.h): the analysis of algo/partition for the
-// frame's camera, light and scheme, drawn with ui/StorageChartKit.h (as shadowlab-cli's PNGs).
+// frame's camera, light and scheme, drawn with ui/figures/StorageChartKit.h (as shadowlab-cli's
+// PNGs).
 #include "panels/analysis/StoragePanel.h"
 
 #include <algorithm>
@@ -16,8 +17,8 @@
 #include <QVBoxLayout>
 #include <QtCharts/QChartView>
 
-#include "StorageChartKit.h"
-#include "Theme.h"
+#include "figures/StorageChartKit.h"
+#include "window/Theme.h"
 
 namespace sl::ui {
 

@@ -22,11 +22,11 @@
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegend>
 
-#include "ChartKit.h"
-#include "MessageText.h"
-#include "Theme.h"
-#include "RenderService.h"
-#include "ViewportWidget.h"
+#include "figures/ChartKit.h"
+#include "window/MessageText.h"
+#include "window/Theme.h"
+#include "service/RenderService.h"
+#include "view/ViewportWidget.h"
 #include "core/ViewSide.h"
 
 namespace sl::ui {

@@ -15,8 +15,8 @@
 #include <QUrl>
 #include <QVBoxLayout>
 
-#include "MessageText.h"
-#include "Theme.h"
+#include "window/MessageText.h"
+#include "window/Theme.h"
 #include "scene/GltfLoader.h"
 
 namespace sl::ui {

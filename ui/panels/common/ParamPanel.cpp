@@ -25,7 +25,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include "Theme.h"
+#include "window/Theme.h"
 
 namespace sl::ui {
 

@@ -6,8 +6,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "RenderService.h"
-#include "ViewportWidget.h"
+#include "service/RenderService.h"
+#include "view/ViewportWidget.h"
 #include "core/ViewSide.h"
 #include "panels/common/PanelKit.h"
 

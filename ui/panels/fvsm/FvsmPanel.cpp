@@ -10,7 +10,7 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
-#include "Theme.h"
+#include "window/Theme.h"
 
 namespace sl::ui {
 

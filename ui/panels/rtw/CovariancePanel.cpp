@@ -24,7 +24,7 @@
 
 #include "algo/rtw/Moments.h"
 #include "algo/rtw/TurnPrediction.h"
-#include "Theme.h"
+#include "window/Theme.h"
 
 namespace sl::ui {
 

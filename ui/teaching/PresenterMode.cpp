@@ -1,0 +1,290 @@
+// Presenter mode (see PresenterMode.h).
+#include "teaching/PresenterMode.h"
+
+#include <algorithm>
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDockWidget>
+#include <QLayout>
+#include <QMenu>
+#include <QScreen>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include "teaching/LessonController.h"
+#include "window/MainWindow.h"
+#include "window/Theme.h"
+#include "view/ViewportWidget.h"
+#include "core/Renderer.h"
+
+namespace sl::ui {
+
+namespace {
+constexpr int kStateVersion = 0x5e55;  ///< saveState/restoreState tag of the saved layout
+}
+
+PresenterMode::PresenterMode(MainWindow& window) : QObject(&window), w_(window) {}
+
+void PresenterMode::createActions(QMenu* view) {
+  // A checkable action of the View menu, also the window's own: the full panel hides the
+  // menu's tool bars, the window keeps the shortcut.
+  auto toggle = [&](const QString& text, const char* name, Qt::Key key, const QString& tip,
+                    void (PresenterMode::*slot)(bool)) {
+    QAction* a = view->addAction(text);
+    a->setObjectName(QString::fromLatin1(name));
+    a->setCheckable(true);
+    a->setShortcut(key);
+    a->setShortcutContext(Qt::ApplicationShortcut);
+    a->setToolTip(tip);
+    connect(a, &QAction::toggled, this, slot);
+    w_.addAction(a);
+    return a;
+  };
+  action_ = toggle(
+      tr("&Presenter mode (large fonts, high contrast, one big panel)"), "presenterAction",
+      Qt::Key_F11,
+      tr("For a projector: fonts scaled to the screen, white on black, the window filling the "
+         "screen, one panel beside the view as large as it fits, a ring around the pointer "
+         "(F11)"),
+      &PresenterMode::setActive);
+  fullPanelAction_ =
+      toggle(tr("Big panel &full screen (presenter mode)"), "fullPanelAction", Qt::Key_F12,
+             tr("Presenter mode's big panel over the whole screen, the view hidden; again to bring "
+                "the view back beside it (F12)"),
+             &PresenterMode::setFullPanel);
+  panelMenu_ = view->addMenu(tr("Presenter &panel"));
+  panelMenu_->setObjectName(QStringLiteral("presenterPanelMenu"));
+  connect(panelMenu_, &QMenu::aboutToShow, this, [this] {
+    panelMenu_->clear();
+    auto* group = new QActionGroup(panelMenu_);
+    auto add = [&](const QString& title, const QString& name) {
+      QAction* a = panelMenu_->addAction(title, this, [this, name] { choosePanel(name); });
+      a->setCheckable(true);
+      a->setChecked(chosen_ == name);
+      group->addAction(a);
+    };
+    add(tr("Automatic (the lesson's, else the first showing this technique)"), QString());
+    for (const PublicationDocks::Dock& d : w_.docks().docks())
+      add(d.dock->windowTitle(), d.dock->objectName());
+  });
+}
+
+QDockWidget* PresenterMode::bigDock() const {
+  return active_ ? big_.data() : nullptr;
+}
+
+void PresenterMode::choosePanel(const QString& dockName) {
+  chosen_ = dockName;
+  if (active_) arrangeDocks();
+}
+
+void PresenterMode::setLessonPanel(const QString& dockName, const QStringList& others) {
+  lessonPanel_ = dockName;
+  lessonOthers_ = others;
+  if (!active_) return;
+  arrangeDocks();
+  fitScreen();
+}
+
+QDockWidget* PresenterMode::pickBigDock() const {
+  for (const QString& name : {chosen_, lessonPanel_})
+    if (!name.isEmpty())
+      if (auto* dock = w_.findChild<QDockWidget*>(name)) return dock;
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(w_.viewport()->techniqueId());
+  if (info)
+    if (QDockWidget* dock = w_.docks().firstShowing(*info)) return dock;
+  return w_.lessonDock();
+}
+
+void PresenterMode::setActive(bool on) {
+  if (on == active_) return;
+  auto* app = qobject_cast<QApplication*>(QCoreApplication::instance());
+  if (on) {
+    savedState_ = w_.saveState(kStateVersion);
+    savedGeometry_ = w_.saveGeometry();
+    savedMaximized_ = w_.isMaximized();
+    savedFont_ = QApplication::font();
+    const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+    const double dpi = screen ? screen->logicalDotsPerInch() : 96.0;
+    const int px = presenterBodyPixelSize(screen ? screen->size() : QSize(1920, 1080), dpi);
+    if (app) applyPresenterTheme(*app, px, dpi);
+    active_ = true;
+    w_.rebuildParamPanel();  // its titles scale the font they were built with
+    // The docks first: with every dock shown at the large font the window's minimum may be
+    // larger than the screen. Then the screen's geometry (a window manager-less X server,
+    // e.g. Xvfb, ignores the full-screen request), full screen, the big panel's width.
+    arrangeDocks();
+    fitScreen();
+    w_.viewport()->setPointerHighlight(true);
+    w_.viewport()->setPresenting(true);  // full-size frames only: numbers a class reads
+  } else {
+    setFullPanel(false);
+    active_ = false;
+    w_.viewport()->setPointerHighlight(false);
+    w_.viewport()->setPresenting(false);
+    if (app) {
+      applyTheme(*app);
+      QApplication::setFont(savedFont_);
+    }
+    w_.showNormal();
+    w_.restoreGeometry(savedGeometry_);
+    w_.restoreState(savedState_, kStateVersion);
+    w_.rebuildParamPanel();
+    if (savedMaximized_) w_.showMaximized();
+    big_.clear();
+  }
+  if (action_ && action_->isChecked() != on) action_->setChecked(on);
+  w_.updatePublishing();
+  w_.viewport()->requestFrame();
+}
+
+void PresenterMode::setFullPanel(bool on) {
+  if (on && !active_) setActive(true);
+  if (on == fullPanel_) {
+    if (fullPanelAction_ && fullPanelAction_->isChecked() != on) fullPanelAction_->setChecked(on);
+    return;
+  }
+  fullPanel_ = on;
+  if (on) {
+    // The view, the tool bars and the status line go; the big panel takes the window (a
+    // main window without a visible central widget gives its dock areas all the room).
+    hiddenForPanel_.clear();
+    for (QToolBar* bar : w_.findChildren<QToolBar*>(Qt::FindDirectChildrenOnly))
+      if (bar->isVisible()) hiddenForPanel_.push_back(bar);
+    if (w_.statusBar()->isVisible()) hiddenForPanel_.push_back(w_.statusBar());
+    for (QWidget* widget : hiddenForPanel_) widget->hide();
+    w_.viewport()->hide();
+  } else {
+    w_.viewport()->show();
+    for (QWidget* widget : hiddenForPanel_)
+      if (widget) widget->show();
+    hiddenForPanel_.clear();
+  }
+  arrangeDocks();
+  if (fullPanelAction_ && fullPanelAction_->isChecked() != on) fullPanelAction_->setChecked(on);
+  w_.viewport()->requestFrame();
+}
+
+void PresenterMode::arrangeDocks() {
+  keptOnScreen_ = 0;
+  fedSinceArranged_ = 0;
+  big_ = pickBigDock();
+  // Everything but the big panel hidden; the Lesson and Parameters tabbed behind it (a
+  // lecturer's notes and knobs, one click away).
+  for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) {
+    dock->setFloating(false);
+    if (dock != big_) dock->hide();
+  }
+  if (!big_) return;
+  w_.addDockWidget(Qt::RightDockWidgetArea, big_);
+  big_->show();
+  // The lesson's other panels under the big one (the lesson's own big panel only: a panel
+  // the user chose stands alone); split before anything is tabbed behind it (Qt adds a dock
+  // split off a tabbed one as one more tab).
+  QList<QDockWidget*> column{big_};
+  // The lesson's strip (its few parameters) at the bottom of the column, on every screen:
+  // first, so that the panels below the big one are only added where they still fit with it.
+  QDockWidget* strip = fullPanel_ ? nullptr : w_.lessons()->stripDock();
+  if (strip == big_) strip = nullptr;
+  if (strip) {
+    w_.addDockWidget(Qt::RightDockWidgetArea, strip);
+    w_.splitDockWidget(big_, strip, Qt::Vertical);
+    strip->show();
+  }
+  const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+  const int screenHeight = screen ? screen->geometry().height() : 0;
+  int belowHeight = strip ? strip->sizeHint().height() : 0;  // what stands under the big panel
+  if (!fullPanel_ && chosen_.isEmpty() && big_->objectName() == lessonPanel_ &&
+      screenHeight >= kMinScreenHeightForPanelsBelow)
+    for (const QString& name : lessonOthers_) {
+      QDockWidget* dock = w_.findChild<QDockWidget*>(name);
+      if (!dock || dock == big_ || dock == strip || dock == w_.lessonDock() ||
+          dock == w_.paramDock() || column.size() > kMaxPanelsBelow)
+        continue;
+      w_.addDockWidget(Qt::RightDockWidgetArea, dock);
+      w_.splitDockWidget(column.back(), dock, Qt::Vertical);  // above the strip
+      dock->show();
+      w_.layout()->activate();
+      // Only where the window still fits the screen and the big panel keeps its share of the
+      // height (what stands under it, at its least, takes the rest); else one more tab behind
+      // the big panel.
+      const int under = belowHeight + dock->minimumSizeHint().height();
+      if (screenHeight > 0 && (w_.minimumSizeHint().height() > screenHeight ||
+                               under > screenHeight * (1.0 - kMinBigPanelShare))) {
+        w_.tabifyDockWidget(big_, dock);
+        continue;
+      }
+      belowHeight = under;
+      column << dock;
+    }
+  for (QDockWidget* behind : {w_.lessonDock(), w_.paramDock()}) {
+    if (!behind || behind == big_ || fullPanel_) continue;
+    w_.addDockWidget(Qt::RightDockWidgetArea, behind);
+    w_.tabifyDockWidget(big_, behind);
+    behind->show();
+  }
+  big_->raise();
+  // The big panel keeps its share of the height; the strip, as tall as its rows, comes out of
+  // what the panels under it share.
+  const int stripHeight = strip ? strip->sizeHint().height() : 0;
+  const int bigHeight =
+      column.size() > 1 ? int(w_.height() * kMinBigPanelShare) : w_.height() - stripHeight;
+  QList<int> heights{bigHeight};
+  for (int i = 1; i < column.size(); ++i)
+    heights << (w_.height() - bigHeight - stripHeight) / int(column.size() - 1);
+  if (strip) {
+    column << strip;
+    heights << stripHeight;
+  }
+  if (column.size() > 1) w_.resizeDocks(column, heights, Qt::Vertical);
+  w_.layout()->invalidate();
+  w_.layout()->activate();
+  sizeBigDock();
+}
+
+void PresenterMode::keepOnScreen() {
+  if (!active_ || fullPanel_) return;
+  if (big_ && fedSinceArranged_ < kFeedsResized) {
+    ++fedSinceArranged_;
+    if (big_->width() > int(w_.width() * kPanelShare) + 1) resizeView([this] { sizeBigDock(); });
+  }
+  const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+  if (!screen) return;
+  const int screenHeight = screen->geometry().height();
+  if (w_.frameGeometry().height() <= screenHeight && w_.minimumSizeHint().height() <= screenHeight)
+    return;
+  // A few times per arrangement at most: a window that cannot fit does not loop.
+  const int tries = keptOnScreen_;
+  if (tries >= kMaxKeepOnScreen) return;
+  resizeView([this] {
+    arrangeDocks();
+    fitScreen();
+  });
+  keptOnScreen_ = tries + 1;  // arrangeDocks counted from 0 again
+}
+
+void PresenterMode::resizeView(const std::function<void()>& change) {
+  const QSize view = w_.viewport()->size();
+  change();
+  w_.layout()->activate();
+  if (w_.viewport()->size() != view)
+    w_.lessons()->settleAgain();  // a lesson's rotation settles again at the view's new size
+}
+
+void PresenterMode::fitScreen() {
+  // A window manager-less X server (Xvfb) ignores the full-screen request: the geometry too.
+  const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+  if (screen) w_.setGeometry(screen->geometry());
+  w_.showFullScreen();
+  sizeBigDock();
+}
+
+void PresenterMode::sizeBigDock() {
+  if (!big_) return;
+  const double share = fullPanel_ ? 1.0 : kPanelShare;
+  w_.resizeDocks({big_}, {int(w_.width() * share)}, Qt::Horizontal);
+}
+
+}  // namespace sl::ui

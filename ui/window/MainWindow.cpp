@@ -1,0 +1,731 @@
+// The main window (see MainWindow.h): scenes, techniques, renderer events, the light, the
+// status line, publication requests, pause. Its construction is in MainWindowSetup.cpp;
+// panels observe the renderer through the viewport and the window owns none of the rendering.
+#include "window/MainWindow.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QScreen>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
+#include <QUrl>
+
+#include "launch/GrabRun.h"
+#include "launch/LaunchOptions.h"
+#include "teaching/LessonController.h"
+#include "window/MessageText.h"
+#include "teaching/PassStepper.h"
+#include "teaching/PresenterMode.h"
+#include "window/SplitSideParams.h"
+#include "window/SessionFiles.h"
+#include "window/ShortcutsDialog.h"
+#include "teaching/TeachingBar.h"
+#include "view/ViewportWidget.h"
+#include "panels/common/ChartsPanel.h"
+#include "panels/common/LessonPanel.h"
+#include "panels/common/ParamPanel.h"
+#include "panels/rtw/RtwSettle.h"
+#include "core/LiveText.h"
+#include "panels/common/TimingPanel.h"
+#include "panels/light/LightPanel.h"
+#include "scene/GltfLoader.h"
+
+namespace sl::ui {
+
+namespace {
+const QString kOpenItem = QStringLiteral("\x01open");  ///< data of the "Open…" scene item
+constexpr int kStatusMessageMs = 10000;
+/// 2: the debug panels; 3: each technique's panels side by side (older layouts are not
+/// restored).
+constexpr int kSettingsVersion = 3;
+
+bool isGltfFile(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  return suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
+}
+
+bool isSessionFile(const QString& path) {
+  return QFileInfo(path).suffix().toLower() == QLatin1String("json");
+}
+
+/// The first local file of a drag that is a glTF scene or (a .json) a session.
+QString droppedPathOf(const QMimeData* mime) {
+  if (!mime || !mime->hasUrls()) return {};
+  for (const QUrl& url : mime->urls())
+    if (url.isLocalFile() && (isGltfFile(url.toLocalFile()) || isSessionFile(url.toLocalFile())))
+      return url.toLocalFile();
+  return {};
+}
+
+void printErr(const QString& line) {
+  std::fprintf(stderr, "shadowlab: %s\n", line.toLocal8Bit().constData());
+  std::fflush(stderr);
+}
+
+/// "llvmpipe (LLVM 15.0.6, 256 bits)" out of Renderer::glDescription()'s
+/// "RENDERER | VERSION".
+QString shortGlName(const QString& description) {
+  return description.section(QStringLiteral(" | "), 0, 0).trimmed();
+}
+}  // namespace
+
+MainWindow::MainWindow(bool interactive, QWidget* parent)
+    : QMainWindow(parent), interactive_(interactive), dialogs_(interactive) {
+  setObjectName(QStringLiteral("mainWindow"));
+  setWindowTitle(QStringLiteral("ShadowLab"));
+  setAcceptDrops(true);
+  setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+  // The bottom panels reach under the right column: a technique's panels side by side.
+  setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
+  setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+  setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+  setCorner(Qt::TopLeftCorner, Qt::LeftDockWidgetArea);
+
+  viewport_ = new ViewportWidget(this);
+  viewport_->setObjectName(QStringLiteral("viewport"));
+  // Scripted runs (grabs, ui/Automation.h) measure full-size frames: no adaptive resolution.
+  viewport_->setAdaptiveAllowed(interactive_);
+  setCentralWidget(viewport_);
+  connect(viewport_, &ViewportWidget::rendererReady, this, &MainWindow::onRendererReady);
+  connect(viewport_, &ViewportWidget::rendererAboutToBeDestroyed, this,
+          &MainWindow::onRendererAboutToBeDestroyed);
+  connect(viewport_, &ViewportWidget::frameRendered, this, &MainWindow::onFrameRendered);
+  connect(viewport_, &ViewportWidget::renderProblem, this, &MainWindow::onRenderProblem);
+  connect(viewport_, &ViewportWidget::errorUnmeasured, this, &MainWindow::onErrorUnmeasured);
+  connect(viewport_, &ViewportWidget::initializationFailed, this,
+          &MainWindow::onInitializationFailed);
+  connect(viewport_, &ViewportWidget::errorComputed, this, &MainWindow::onErrorComputed);
+  connect(viewport_, &ViewportWidget::pixelProbed, this,
+          [this](const std::optional<sl::PixelProbe>& probe) { docks_.showProbe(probe); });
+  connect(viewport_, &ViewportWidget::viewChanged, this, [this] {
+    if (viewport_->continuous()) return updateLiveErrorLabel();
+    if (!viewport_->errorIsCurrent()) errorLabel_->setText(tr("error —"));
+  });
+
+  lessons_ = std::make_unique<LessonController>(*this);
+  passes_ = std::make_unique<PassStepper>(*this);
+  teaching_ = std::make_unique<TeachingBar>(*this);
+  grab_ = std::make_unique<GrabRun>(*this);
+  sessions_ = std::make_unique<SessionFiles>(*this);
+  presenter_ = new PresenterMode(*this);
+  // A panel grows with its first data: in presenter mode the window is kept on its screen.
+  docks_.setOnFed([this] { presenter_->keepOnScreen(); });
+  splitSide_ = new SplitSideParams(*this);
+  connect(viewport_, &ViewportWidget::splitChanged, splitSide_, &SplitSideParams::rebuild);
+  createActions();
+  createToolBar();
+  addToolBarBreak();
+  teaching_->create();
+  createDocks();
+  createStatusBar();
+  applyDefaultLayout();
+  if (interactive_) restoreSettings();
+}
+
+MainWindow::~MainWindow() {
+  // Free the renderer (and let the panels drop their references) while this window is
+  // still whole: the viewport's teardown signals arrive here.
+  delete viewport_;
+  viewport_ = nullptr;
+  // The parts hold a reference to this window: free them while it is still whole.
+  grab_.reset();
+  teaching_.reset();
+  passes_.reset();
+  lessons_.reset();
+}
+
+void MainWindow::startGrab(const QString& dir, int frames) {
+  grab_->start(dir, frames);
+}
+
+bool MainWindow::startLesson(const QString& lesson, int caseIndex) {
+  return lessons_->start(lesson, caseIndex);
+}
+
+void MainWindow::setScripted(bool scripted) {
+  scripted_ = scripted;
+  dialogs_ = interactive_ || scripted;
+}
+
+void MainWindow::setPresenterMode(bool on) {
+  presenter_->setActive(on);
+}
+
+void MainWindow::restoreSettings() {
+  QSettings settings;
+  if (settings.value(QStringLiteral("window/version")).toInt() != kSettingsVersion) return;
+  restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+  restoreState(settings.value(QStringLiteral("window/state")).toByteArray(), kSettingsVersion);
+  for (const QString& id : settings.value(QStringLiteral("window/openedByHand")).toStringList())
+    docks_.setOpenedByHand(id, true);
+}
+
+void MainWindow::saveSettings() {
+  if (!interactive_) return;
+  QSettings settings;
+  settings.setValue(QStringLiteral("window/version"), kSettingsVersion);
+  settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+  settings.setValue(QStringLiteral("window/state"), saveState(kSettingsVersion));
+  QStringList byHand;
+  for (const QString& id : docks_.openedByHand()) byHand << id;
+  settings.setValue(QStringLiteral("window/openedByHand"), byHand);
+  if (!sceneSpec_.isEmpty()) settings.setValue(QStringLiteral("scene/last"), sceneSpec_);
+  if (!viewport_->techniqueId().empty())
+    settings.setValue(QStringLiteral("technique/last"),
+                      QString::fromStdString(viewport_->techniqueId()));
+}
+
+QString MainWindow::initialSceneName() const {
+  if (interactive_) {
+    const QString last = QSettings().value(QStringLiteral("scene/last")).toString();
+    if (!last.isEmpty()) return last;
+  }
+  return defaultSceneName();
+}
+
+QString MainWindow::defaultSceneName() {
+  const auto names = sl::builtinSceneNames();
+  if (names.empty() || std::find(names.begin(), names.end(), "default") != names.end())
+    return QStringLiteral("default");
+  return QString::fromStdString(names.front());
+}
+
+QString MainWindow::lastTechnique() const {
+  return interactive_ ? QSettings().value(QStringLiteral("technique/last")).toString() : QString();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  saveSettings();
+  if (shortcuts_) shortcuts_->close();
+  QMainWindow::closeEvent(event);
+}
+
+// --- Scenes -------------------------------------------------------------------------------
+
+bool MainWindow::loadScene(const QString& nameOrPath) {
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  sl::SceneLoadResult result = sl::loadSceneByNameOrPath(nameOrPath.toStdString());
+  QApplication::restoreOverrideCursor();
+  if (!result) {
+    report(tr("cannot load scene '%1': %2").arg(nameOrPath, QString::fromStdString(result.error)),
+           tr("Cannot open scene"));
+    syncSceneCombo();  // back to the scene still shown
+    return false;
+  }
+  for (const std::string& warning : result.scene->warnings)
+    printErr(tr("scene '%1': %2").arg(nameOrPath, QString::fromStdString(warning)));
+  sceneSpec_ = nameOrPath;
+  viewport_->setScene(result.scene);
+  timingPanel_->resetHistory();
+  docks_.resetHistory();
+  const sl::Scene& scene = *viewport_->scene();
+  sceneLabel_->setText(
+      tr("%1 · %2 triangles")
+          .arg(shownMessage(QString::fromStdString(scene.name)))
+          .arg(QLocale::c().toString(static_cast<qulonglong>(scene.triangleCount()))));
+  sceneLabel_->setToolTip(shownMessage(QString::fromStdString(scene.sourcePath)));
+  if (!result.scene->warnings.empty())
+    info(tr("Scene loaded with %1 warning(s) (see stderr): %2")
+             .arg(result.scene->warnings.size())
+             .arg(QString::fromStdString(result.scene->warnings.front())));
+  else
+    info(tr("Loaded %1").arg(QString::fromStdString(scene.sourcePath)));
+  syncSceneCombo();
+  refreshBookmarks();
+  syncLightControls();
+  updateTitle();
+  return true;
+}
+
+void MainWindow::syncSceneCombo() {
+  if (sceneSpec_.isEmpty()) return;
+  int index = sceneCombo_->findData(sceneSpec_);
+  if (index < 0) {  // a file: list it above the separator
+    const int separator = sceneCombo_->count() - 2;
+    sceneCombo_->insertItem(separator, QFileInfo(sceneSpec_).fileName(), sceneSpec_);
+    sceneCombo_->setItemData(separator, sceneSpec_, Qt::ToolTipRole);
+    index = separator;
+  }
+  sceneCombo_->setCurrentIndex(index);
+}
+
+void MainWindow::onSceneComboActivated(int index) {
+  const QString data = sceneCombo_->itemData(index).toString();
+  if (data == kOpenItem) {
+    syncSceneCombo();
+    openSceneDialog();
+  } else if (!data.isEmpty() && data != sceneSpec_) {
+    loadScene(data);
+  }
+}
+
+void MainWindow::openSceneDialog() {
+  // A script drives Qt's own dialog (and never touches the user's settings).
+  const bool test = scripted_;
+  const QString dir =
+      interactive_ ? QSettings().value(QStringLiteral("scene/openDir"), QDir::homePath()).toString()
+                   : QDir::currentPath();
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open glTF scene"), dir, tr("glTF scenes (*.gltf *.glb);;All files (*)"), nullptr,
+      test ? QFileDialog::DontUseNativeDialog : QFileDialog::Options());
+  if (path.isEmpty()) return;
+  if (interactive_)
+    QSettings().setValue(QStringLiteral("scene/openDir"), QFileInfo(path).absolutePath());
+  loadScene(path);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (!droppedPathOf(event->mimeData()).isEmpty()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  // A glTF loads as the scene; a .json opens as a session (File > Open session…).
+  const QString path = droppedPathOf(event->mimeData());
+  if (path.isEmpty()) return;
+  event->acceptProposedAction();
+  if (isSessionFile(path))
+    sessions_->open(path);
+  else
+    loadScene(path);
+}
+
+void MainWindow::refreshBookmarks() {
+  bookmarkCombo_->clear();
+  const auto& scene = viewport_->scene();
+  if (scene) {
+    for (std::size_t i = 0; i < scene->cameras.size(); ++i) {
+      const std::string& name = scene->cameras[i].name;
+      bookmarkCombo_->addItem(
+          name.empty() ? tr("Camera %1").arg(i + 1) : shownMessage(QString::fromStdString(name)),
+          static_cast<int>(i));
+    }
+  }
+  bookmarkCombo_->addItem(tr("Overview"), -1);
+  bookmarkCombo_->setCurrentIndex(0);
+}
+
+// --- Technique and parameters -----------------------------------------------------------
+
+void MainWindow::setTechnique(const QString& id) {
+  if (auto error = viewport_->setTechnique(id.toStdString())) {
+    report(QString::fromStdString(*error));
+  } else {
+    timingPanel_->resetHistory();
+    docks_.resetHistory();
+    if (rendererBound_) rebuildParamPanel();
+    passes_->stop();
+    if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id.toStdString())) {
+      // The technique's own panels; presenter mode keeps its one big panel.
+      if (!presenter_->active()) docks_.showOnlyFor(*info);
+      docks_.raiseFor(*info);
+    }
+  }
+  syncTechniqueCombo();
+  updateTitle();
+}
+
+void MainWindow::onTechniqueComboActivated(int index) {
+  const QString id = techniqueCombo_->itemData(index).toString();
+  if (id.toStdString() != viewport_->techniqueId()) setTechnique(id);
+}
+
+void MainWindow::syncTechniqueCombo() {
+  const int index = techniqueCombo_->findData(QString::fromStdString(viewport_->techniqueId()));
+  if (index >= 0) techniqueCombo_->setCurrentIndex(index);
+}
+
+void MainWindow::setPendingAssignments(const QStringList& assignments) {
+  pendingAssignments_ = assignments;
+}
+
+void MainWindow::rebuildParamPanel() {
+  sl::ViewSide* renderer = viewport_->mainSide();
+  if (!renderer) return paramPanel_->clear();
+  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(renderer->techniqueId());
+  std::vector<ParamPanel::Section> sections;
+  sections.push_back(
+      {info ? QString::fromStdString(info->name) : QString::fromStdString(renderer->techniqueId()),
+       info ? QString::fromStdString(info->description) : QString(), &renderer->params()});
+  sections.push_back({tr("View and shading"), QString(), &renderer->rendererParams()});
+  paramPanel_->setSections(std::move(sections));
+}
+
+// --- Renderer events ----------------------------------------------------------------------
+
+void MainWindow::onRendererReady() {
+  sl::ViewSide* renderer = viewport_->mainSide();
+  if (!renderer) return;
+  for (const QString& kv : pendingAssignments_)
+    if (auto error =
+            assignParameter(renderer->params(), renderer->rendererParams(), kv.toStdString()))
+      report(QString::fromStdString(*error));
+  pendingAssignments_.clear();
+  rendererBound_ = true;
+  grab_->resetFrameCount();
+  rebuildParamPanel();
+  splitSide_->rebuild();  // a split technique set before the renderer existed
+  syncTechniqueCombo();
+  if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(renderer->techniqueId()))
+    docks_.raiseFor(*info);
+  teaching_->syncOverlayCombo();
+  updatePublishing();
+  teaching_->restoreSplit();
+  lessons_->queueSettle();  // a lesson chosen before the renderer started
+  updateTitle();
+  const QString gl = viewport_->glDescription();
+  glLabel_->setText(shortGlName(gl));
+  glLabel_->setToolTip(gl);
+  info(tr("Renderer ready: %1").arg(shortGlName(gl)));
+  viewport_->requestFrame();
+}
+
+void MainWindow::onRendererAboutToBeDestroyed() {
+  rendererBound_ = false;
+  paramPanel_->clear();
+  splitSide_->clear();
+  if (teaching_) teaching_->setRendererAvailable(false);
+}
+
+void MainWindow::onFrameRendered() {
+  const sl::ViewSide* renderer = viewport_->mainSide();
+  if (!renderer) return;
+  splitSide_->onFrameRendered();
+  const sl::FrameStats& stats = renderer->stats();
+  if (const QString failure = viewport_->frameFailure(); !failure.isEmpty()) {
+    frameLabel_->setText(tr("frame n/a (failed)"));
+    frameLabel_->setToolTip(failure);
+  } else {
+    frameLabel_->setToolTip({});
+    frameLabel_->setText(tr("frame %1 ms (%2)")
+                             .arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1)
+                             .arg(stats.timingMethod.empty()
+                                      ? tr("untimed")
+                                      : QString::fromStdString(stats.timingMethod)));
+  }
+  // As wide as its text at the current font (presenter mode's is larger): never cut.
+  frameLabel_->setMinimumWidth(frameLabel_->sizeHint().width());
+  timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
+  timingPanel_->showStats(stats, viewport_->frameFailure());
+  if (viewport_->continuous()) updateLiveErrorLabel();
+  if (rendererBound_) grab_->countFrame();
+  if (docks_.isCurrent(*renderer, false)) docks_.feed(*renderer, false);
+  passes_->onFrameRendered();
+  refreshLiveTexts();
+}
+
+void MainWindow::refreshLiveTexts() {
+  lessonPanel_->refreshLiveNumbers();
+  if (lessons_->quotesLiveNumbers()) updateBanner();
+}
+
+void MainWindow::onRenderProblem(const QString& message) {
+  report(message);  // a grab notes it
+}
+
+void MainWindow::onInitializationFailed(const QString& message) {
+  if (failed_) return;
+  failed_ = true;
+  grab_->stop();
+  report(message, tr("OpenGL problem"));
+  QCoreApplication::exit(1);
+}
+
+void MainWindow::onErrorUnmeasured(const QString& why) {
+  refreshLiveTexts();
+  errorLabel_->setEnabled(true);
+  if (viewport_->continuous()) return updateLiveErrorLabel();
+  errorLabel_->setText(tr("error n/a (%1)").arg(why));
+  errorLabel_->setToolTip(tr("The error of this view was not measured: %1").arg(why));
+}
+
+void MainWindow::onErrorComputed(double errorPct) {
+  refreshLiveTexts();
+  errorLabel_->setEnabled(true);
+  if (viewport_->continuous()) return updateLiveErrorLabel();
+  errorLabel_->setText(tr("error %1 %").arg(errorPct, 0, 'f', errorPct < 1 ? 3 : 2));
+  errorLabel_->setToolTip({});
+}
+
+void MainWindow::updateLiveErrorLabel() {
+  if (!errorLabel_) return;  // (a lesson may turn continuous rendering on during setup)
+  // Greyed while the number is an earlier view's (or there is none yet).
+  if (const QString failure = viewport_->frameFailure(); !failure.isEmpty()) {
+    errorLabel_->setEnabled(true);  // a failed frame is never measured, nor shown as 0
+    errorLabel_->setText(tr("error n/a (the frame failed)"));
+    errorLabel_->setToolTip(failure);
+    return;
+  }
+  const auto live = viewport_->liveError();
+  errorLabel_->setEnabled(live && !live->age.stale);
+  errorLabel_->setText(viewport_->liveErrorText());
+}
+
+// --- Light, camera, misc -------------------------------------------------------------------
+
+void MainWindow::syncLightControls() {
+  if (lightPanel_) lightPanel_->showLight(viewport_->light());
+}
+
+void MainWindow::updateTitle() {
+  QString title = QStringLiteral("ShadowLab");
+  if (const auto& scene = viewport_->scene())
+    title += QStringLiteral(" — ") + shownMessage(QString::fromStdString(scene->name));
+  if (const sl::TechniqueInfo* t = sl::Renderer::findTechnique(viewport_->techniqueId()))
+    title += QStringLiteral(" — ") + QString::fromStdString(t->name);
+  setWindowTitle(title);
+}
+
+void MainWindow::showShortcuts() {
+  if (!shortcuts_) shortcuts_ = new ShortcutsDialog(commandActions_, this);
+  shortcuts_->show();
+  shortcuts_->raise();
+  shortcuts_->activateWindow();
+}
+
+QImage MainWindow::grabViewFullSize() {
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);  // grabView renders a frame: at full size
+  QImage image = viewport_->grabView();
+  viewport_->setAdaptiveAllowed(adaptive);
+  return image;
+}
+
+QImage MainWindow::grabWindowFullSize() {
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);
+  QImage image = grab().toImage();
+  viewport_->setAdaptiveAllowed(adaptive);
+  return image;
+}
+
+void MainWindow::saveScreenshot() {
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Save viewport image"), QDir::home().filePath(QStringLiteral("shadowlab.png")),
+      tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  if (auto e = writeWindowOutput(*this, path, pngBytes(grabViewFullSize())))
+    report(*e, tr("Save viewport image"));
+  else
+    showStatus(tr("Saved %1").arg(path));
+}
+
+void MainWindow::exportFigureDialog() {
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export figure"), QDir::home().filePath(QStringLiteral("shadowlab-figure.png")),
+      tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  if (auto e = exportFigure(path))
+    report(*e, tr("Export figure"));
+  else
+    showStatus(tr("Saved %1").arg(path));
+}
+
+std::optional<QString> MainWindow::exportFigure(const QString& path) {
+  constexpr int kDilatePx = 1;  // single-pixel error lines survive printing
+  const std::vector<FigureCell> cells = viewport_->figureCells(kDilatePx);
+  if (cells.empty()) return tr("export figure: no frame to export yet");
+  const sl::Light& light = viewport_->light();
+  const QString kind = light.type == sl::LightType::Directional ? tr("directional")
+                       : light.type == sl::LightType::Spot      ? tr("spot")
+                                                                : tr("point");
+  const QString title =
+      tr("%1, %2x%3, %4 light; below each image its errors against the exact reference "
+         "(magenta: wrongly lit, cyan: wrongly shadowed; drawn %5 px wider)")
+          .arg(sceneSpec_)
+          .arg(cells.front().shaded.width)
+          .arg(cells.front().shaded.height)
+          .arg(kind)
+          .arg(kDilatePx);
+  return writeWindowOutput(*this, path,
+                           pngBytes(drawFigure(cells, title.toStdString(), 0, std::nullopt)));
+}
+
+void MainWindow::info(const QString& message) {
+  if (lastProblemClock_.isValid() && lastProblemClock_.elapsed() < kStatusMessageMs) return;
+  showStatus(message);
+}
+
+void MainWindow::showStatus(const QString& message, int timeoutMs) {
+  statusBar()->showMessage(shownMessage(message), timeoutMs);
+  statusBar()->setToolTip(messageDetails(message));  // cleared with the message (createStatusBar)
+}
+
+void MainWindow::report(const QString& message, const QString& dialogTitle) {
+  printErr(message);
+  // A scripted run fails on any problem, also one reported before its grab started (a
+  // lesson's scene that does not load, a light the technique refuses).
+  if (!interactive_ && grab_) grab_->noteProblem(message);
+  showStatus(message);
+  lastProblemClock_.start();
+  if (!dialogs_ || dialogTitle.isEmpty()) return;
+  QMessageBox box(QMessageBox::Warning, dialogTitle, shownMessage(message), QMessageBox::Ok, this);
+  box.setTextFormat(Qt::PlainText);  // a file's text is never markup
+  if (box.text() != message) {
+    const QString details = messageDetails(message);
+    box.setDetailedText(
+        details.isEmpty()
+            ? tr("The message is %1 characters long; the whole of it is on the standard error "
+                 "output.")
+                  .arg(message.size())
+            : details);
+  }
+  box.exec();
+}
+
+// --- Publications, pause and frame stepping, images ---------------------------------------
+
+void MainWindow::onChartsConfigurationChosen(const QString& id, const QStringList& assignments) {
+  if (id.toStdString() != viewport_->techniqueId()) setTechnique(id);
+  sl::ViewSide* r = viewport_->mainSide();
+  if (!r || id.toStdString() != r->techniqueId()) return;
+  for (const QString& a : assignments) {
+    const std::string key = a.section(QLatin1Char('='), 0, 0).toStdString();
+    sl::ParamSet& set = r->params().has(key) ? r->params() : r->rendererParams();
+    if (auto e = set.setFromString(key, a.section(QLatin1Char('='), 1).toStdString()))
+      report(QString::fromStdString(*e));
+  }
+  rebuildParamPanel();
+  viewport_->requestFrame();
+  info(tr("Charts: showing %1 %2").arg(id, assignments.join(QLatin1Char(' '))));
+}
+
+std::string MainWindow::fillLiveText(const std::string& text) const {
+  auto side = [this](const sl::ViewSide* r, std::optional<double> errorPct, bool failed) {
+    sl::LiveSide s;
+    if (!r) return s;
+    s.errorPct = errorPct;
+    if (!failed) s.frameMs = r->stats().totalMs;
+    s.memoryMB = static_cast<double>(r->stats().memory.bytes()) / (1024.0 * 1024.0);
+    s.publication = &r->publication();
+    return s;
+  };
+  // The error the caption shows: the current view's, or in continuous rendering the latest
+  // reference's (never a number that was not measured).
+  auto live = [](std::optional<double> current,
+                 const std::optional<ViewportWidget::LiveError>& latest) -> std::optional<double> {
+    if (current) return current;
+    if (latest && latest->unmeasured.isEmpty()) return latest->errorPct;
+    return std::nullopt;
+  };
+  if (!viewport_) return sl::fillLiveText(text, {}, nullptr);
+  const bool failed = !viewport_->frameFailure().isEmpty();
+  const sl::LiveSide left =
+      side(viewport_->mainSide(),
+           failed ? std::nullopt : live(viewport_->errorPct(), viewport_->liveError()), failed);
+  const sl::ViewSide* split = viewport_->splitSide();
+  const sl::LiveSide right = side(
+      split, failed ? std::nullopt : live(viewport_->splitErrorPct(), viewport_->splitLiveError()),
+      failed);
+  return sl::fillLiveText(text, left, split ? &right : nullptr);
+}
+
+void MainWindow::updatePublishing() {
+  sl::ViewSide* r = viewport_ ? viewport_->mainSide() : nullptr;
+  if (!r) return;
+  viewport_->setProbeWanted(docks_.probeWanted());
+  std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
+  if (lessons_ && lessons_->settling())  // what the lesson waits for
+    if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))
+      for (const std::string& key : rtwsettle::keys(*info)) keys.insert(key);
+  // A grab's published.json holds every number the technique declares (they cost no readback).
+  if (grab_->running())
+    if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))
+      for (const sl::PublicationDecl& d : info->publications)
+        if (d.kind == sl::PublicationKind::Number) keys.insert(d.key);
+  // What the lesson's text quotes, on either side of the split view.
+  std::set<std::string> splitKeys;
+  if (lessons_)
+    for (const std::string* text : lessons_->shownTexts()) {
+      keys.merge(sl::livePublicationKeys(*text, false));
+      splitKeys.merge(sl::livePublicationKeys(*text, true));
+    }
+  r->requestPublications(std::move(keys));
+  viewport_->setSplitPublications(std::move(splitKeys));
+}
+
+void MainWindow::updateBanner() {
+  if (!passes_->bannerTitle().isEmpty())
+    viewport_->setBanner(passes_->bannerTitle(), passes_->bannerText());
+  else
+    viewport_->setBanner(lessons_->bannerTitle(), lessons_->bannerText());
+}
+
+void MainWindow::setPaused(bool paused) {
+  if (pauseAction_->isChecked() != paused) {
+    pauseAction_->setChecked(paused);  // re-enters through toggled
+    return;
+  }
+  viewport_->setPaused(paused);
+  if (!paused) passes_->stop();
+  info(paused ? tr("Paused: . renders one frame, ] steps through its passes, Space resumes.")
+              : tr("Running."));
+}
+
+void MainWindow::stepFrame() {
+  if (!viewport_->paused()) setPaused(true);
+  viewport_->stepFrame();
+  passes_->restartAtNextFrame();  // stepping passes: start again at the new frame's first
+}
+
+bool MainWindow::waitForFrames(int frames, int timeoutMs) {
+  const std::uint64_t target = viewport_->framesRendered() + static_cast<std::uint64_t>(frames);
+  QElapsedTimer clock;
+  clock.start();
+  while (viewport_->framesRendered() < target) {
+    viewport_->requestFrame();
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    if (clock.elapsed() > timeoutMs) return false;
+  }
+  // The panels get the frame one per turn of the event loop: done when all have it.
+  while (docks_.feeding()) {
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    if (clock.elapsed() > timeoutMs) return false;
+  }
+  return true;
+}
+
+void MainWindow::savePanelImage(QDockWidget* dock) {
+  const QString name = QStringLiteral("shadowlab-%1.png").arg(dock->objectName());
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Save panel image"), QDir::home().filePath(name), tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  if (auto e = writeWindowOutput(*this, path, pngBytes(dock->grab().toImage())))
+    report(*e, tr("Save panel image"));
+  else
+    showStatus(tr("Saved %1").arg(path), kStatusMessageMs);
+}
+
+void MainWindow::saveAllImages() {
+  const QString dir = QFileDialog::getExistingDirectory(this, tr("Save window and all panels into"),
+                                                        QDir::homePath());
+  if (dir.isEmpty()) return;
+  // Every image at full size: adaptive resolution held off while they are drawn.
+  const bool adaptive = viewport_->adaptiveAllowed();
+  viewport_->setAdaptiveAllowed(false);
+  const QStringList failures = grab_->writeImages(dir, false);
+  viewport_->setAdaptiveAllowed(adaptive);
+  if (failures.isEmpty())
+    showStatus(tr("Saved the window and every panel in %1").arg(dir), kStatusMessageMs);
+  else
+    report(failures.join(QLatin1Char('\n')), tr("Save images"));
+}
+
+}  // namespace sl::ui

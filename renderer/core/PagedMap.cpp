@@ -170,15 +170,6 @@ std::vector<int> PagedMap::pageGrid() const {
   return n;
 }
 
-void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help) {
-  for (ParamDecl& d : decls)
-    if (d.key == key) {
-      d.help = std::move(help);
-      return;
-    }
-  throw std::logic_error("setParamHelp: no parameter '" + key + "'");
-}
-
 int poolColumnsFor(int pages) {
   int c = 1;
   while (c * c < pages) ++c;

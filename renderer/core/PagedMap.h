@@ -26,8 +26,6 @@ class GpuTimer;
 /// (bias, PCF; no `resolution`), virtual.resolution, page.size, lod.bias, pool.pages (rmsm's
 /// help texts; a technique replaces a help text with setParamHelp).
 std::vector<ParamDecl> pagedMapParamDecls();
-/// Replaces the help text of `key` in `decls`; throws std::logic_error when it is absent.
-void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help);
 
 /// The Pages panel's publications, declared once for rmsm and asm (pages.table.*, pages.served,
 /// pages.requests.heat, pages.pool.levels, pages.pool.depth, pages.pool.columns,

@@ -89,6 +89,19 @@ std::vector<ParamDecl> pagedMapParamDecls() {
   return p;
 }
 
+ParamDecl pagedRenderParamDecl(std::string key, std::string group, std::string help) {
+  return {.key = std::move(key),
+          .label = "Render",
+          .group = std::move(group),
+          .type = ParamType::Enum,
+          .defaultValue = kPagedRenderPages,
+          .minValue = 0,
+          .maxValue = 1,
+          .step = 1,
+          .enumNames = {"superpages", "pages"},
+          .help = std::move(help)};
+}
+
 std::vector<PublicationDecl> pagedMapPublicationDecls() {
   return {
       {"pages.table.*",

@@ -146,23 +146,16 @@ TechniqueInfo AsmShadowMap::info() {
                "until-done (Fernando et al. 2001): iterate until no page is requested, with no "
                "page budget, stopped only by asm.iterations.cap (asm.stop, asm.requests.left "
                "say when the cap stopped it and what it left) or a full pool."});
-  add({.key = "asm.render",
-       .label = "Render",
-       .group = "ASM",
-       .type = ParamType::Enum,
-       .defaultValue = kRenderPages,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"superpages", "pages"},
-       .help = "How an iteration renders its new pages. superpages (the lecture's ASM loop: "
-               "'bin requests into superpages, render shadow data into superpages, copy shadow "
-               "data from superpage to quadtree'): the new pages are binned into " +
-               std::to_string(SL_RMSM_SUPERPAGE) +
-               "² blocks of one level, each block is rendered once into a superpage target "
-               "and its new pages are copied into their pool slots (one scene draw per "
-               "superpage; the target's 4 MiB count in memory()). pages (the tool's default): "
-               "one scene draw per new page, straight into its slot, no superpage target."});
+  add(pagedRenderParamDecl(
+      "asm.render", "ASM",
+      "How an iteration renders its new pages. superpages (the lecture's ASM loop: "
+      "'bin requests into superpages, render shadow data into superpages, copy shadow "
+      "data from superpage to quadtree'): the new pages are binned into " +
+          std::to_string(SL_RMSM_SUPERPAGE) +
+          "² blocks of one level, each block is rendered once into a superpage target "
+          "and its new pages are copied into their pool slots (one scene draw per "
+          "superpage; the target's 4 MiB count in memory()). pages (the tool's default): "
+          "one scene draw per new page, straight into its slot, no superpage target."));
   add({.key = "asm.iterations.cap",
        .label = "Iteration cap",
        .group = "ASM",

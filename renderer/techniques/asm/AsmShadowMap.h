@@ -81,7 +81,7 @@ class AsmShadowMap : public Technique {
     int sceneDraws = 0;
   };
   /// asm.render: rmsm.render's values, the same order.
-  static constexpr int kRenderSuperpages = 0, kRenderPages = 1;
+  static constexpr int kRenderSuperpages = kPagedRenderSuperpages, kRenderPages = kPagedRenderPages;
   /// FrameResult::stop (asm.stop): no new page was requested (the paper's end of the loop),
   /// the iteration cap, the per-frame page budget, the pool (only pages used this frame).
   enum Stop : int { kConverged = 0, kIterationCap = 1, kBudget = 2, kPoolFull = 3 };

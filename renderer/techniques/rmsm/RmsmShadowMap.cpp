@@ -34,24 +34,16 @@ gl::ProgramDesc uniqueProgramDesc() {
 
 TechniqueInfo RmsmShadowMap::info() {
   std::vector<ParamDecl> p = pagedMapParamDecls();
-  p.push_back(ParamDecl{
-      .key = "rmsm.render",
-      .label = "Render",
-      .group = "Pages",
-      .type = ParamType::Enum,
-      .defaultValue = kRenderPages,
-      .minValue = 0,
-      .maxValue = 1,
-      .step = 1,
-      .enumNames = {"superpages", "pages"},
-      .help = "superpages (Lefohn et al.): the allocated pages are binned into " +
-              std::to_string(SL_RMSM_SUPERPAGE) +
-              "² blocks of one level; each block is "
-              "rendered once into a superpage target, then its pages are copied into their "
-              "pool slots (one scene draw per superpage): the paper's pipeline. pages (the "
-              "tool's default): one scene draw per allocated page, straight into its slot, no "
-              "superpage target (its 4 MiB count in memory() and so in pool.budget; on "
-              "llvmpipe superpages made the frame 1.4-2.1x slower: docs/techniques/rmsm.md)."});
+  p.push_back(pagedRenderParamDecl(
+      "rmsm.render", "Pages",
+      "superpages (Lefohn et al.): the allocated pages are binned into " +
+          std::to_string(SL_RMSM_SUPERPAGE) +
+          "² blocks of one level; each block is "
+          "rendered once into a superpage target, then its pages are copied into their "
+          "pool slots (one scene draw per superpage): the paper's pipeline. pages (the "
+          "tool's default): one scene draw per allocated page, straight into its slot, no "
+          "superpage target (its 4 MiB count in memory() and so in pool.budget; on "
+          "llvmpipe superpages made the frame 1.4-2.1x slower: docs/techniques/rmsm.md)."));
   p.push_back(ParamDecl{
       .key = "lod.derivatives",
       .label = "LOD derivatives",

@@ -47,7 +47,7 @@ class RmsmShadowMap : public Technique {
     std::int64_t renderTexels = 0;
   };
   /// rmsm.render's values.
-  static constexpr int kRenderSuperpages = 0, kRenderPages = 1;
+  static constexpr int kRenderSuperpages = kPagedRenderSuperpages, kRenderPages = kPagedRenderPages;
   const FrameResult& lastFrame() const { return last_; }
   void commitFrame() override { budgetPool_.commit(); }
   void discardFrame() override { budgetPool_.discard(); }

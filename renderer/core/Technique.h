@@ -197,6 +197,9 @@ const std::vector<TechniqueEntry>& techniqueRegistry();
 
 /// Parameters most shadow-map techniques share (resolution, bias, PCF), declared once.
 std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution);
+/// Replaces the help text of `key` in `decls` (a technique's own words for a shared
+/// declaration); throws std::logic_error when it is absent.
+void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help);
 /// The "shadow map" publication of a technique with one `resolution`^2 depth map.
 PublicationDecl shadowMapPublicationDecl();
 

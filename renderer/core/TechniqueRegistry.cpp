@@ -1,5 +1,7 @@
 // The list of techniques. Adding a technique: its folder under techniques/ and shaders/,
 // and one line here.
+#include <stdexcept>
+
 #include "core/Technique.h"
 #include "techniques/asm/AsmShadowMap.h"
 #include "techniques/cascades/CascadedShadowMap.h"
@@ -61,6 +63,15 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
       entry<FittedVirtualShadowMap>(),
   };
   return list;
+}
+
+void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help) {
+  for (ParamDecl& d : decls)
+    if (d.key == key) {
+      d.help = std::move(help);
+      return;
+    }
+  throw std::logic_error("setParamHelp: no parameter '" + key + "'");
 }
 
 std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution) {

@@ -173,7 +173,7 @@
 #define SL_ASM_EDGE_MAP 1
 
 // --- The tiled techniques' eye-space depth buffer (virtual-tiled and fvsm: Giegl & Wimmer
-// 2007 §3.2; core/EyeDepthBuffer, shaders/common/tiled/eye_depth.*): r32f,
+// 2007 §3.2; core/tiled/EyeDepthBuffer, shaders/common/tiled/eye_depth.*): r32f,
 // metres along the camera's view axis, 0 = no surface. Sampled on the unit after the tile's
 // own lookup texture (SL_UNIT_LOOKUP_FIRST) by the tile apply and SMTMM passes.
 #define SL_UNIT_EYE_DEPTH 11

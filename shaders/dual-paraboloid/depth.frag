@@ -13,6 +13,6 @@ void main() {
   if (materialAlphaRejectsLevel0(v_uv)) discard;
   vec3 dir = dpDirection(u_dpHalfIndex, gl_FragCoord.xy / u_mapTexels);
   vec3 N = v_plane.xyz;
-  float t = dot(N, N) > 0.0 ? dpPlaneDistance(dir, -v_plane.w * N, N) : -1.0;
-  gl_FragDepth = t > 0.0 ? clamp(dpWindowDepth(t), 0.0, 1.0) : gl_FragCoord.z;
+  float t = dot(N, N) > 0.0 ? omniPlaneDistance(dir, -v_plane.w * N, N) : -1.0;
+  gl_FragDepth = t > 0.0 ? clamp(omniStoredDistance(t), 0.0, 1.0) : gl_FragCoord.z;
 }

@@ -17,7 +17,7 @@ uniform int u_tessOn;
 uniform float u_toleranceTexels;
 uniform float u_mapTexels;
 
-vec2 mapped(vec3 P) { return dpUv(u_dpHalfIndex, P - u_dpLight) * u_mapTexels; }
+vec2 mapped(vec3 P) { return dpUv(u_dpHalfIndex, P - u_omniLight) * u_mapTexels; }
 
 float edgeLevel(vec3 a, vec3 b) {
   vec2 ta = mapped(a), tb = mapped(b);
@@ -38,9 +38,9 @@ void main() {
   float len = length(n);
   tp_plane = len > 0.0 ? vec4(n / len, -dot(n / len, p0)) : vec4(0.0);
   // Wholly in the other hemisphere (beyond the clip margin of the evaluation stage).
-  float z0 = dpLocal(u_dpHalfIndex, normalize(p0 - u_dpLight)).z;
-  float z1 = dpLocal(u_dpHalfIndex, normalize(p1 - u_dpLight)).z;
-  float z2 = dpLocal(u_dpHalfIndex, normalize(p2 - u_dpLight)).z;
+  float z0 = dpLocal(u_dpHalfIndex, normalize(p0 - u_omniLight)).z;
+  float z1 = dpLocal(u_dpHalfIndex, normalize(p1 - u_omniLight)).z;
+  float z2 = dpLocal(u_dpHalfIndex, normalize(p2 - u_omniLight)).z;
   if (z0 < -0.05 && z1 < -0.05 && z2 < -0.05) {
     gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = 0.0;
     gl_TessLevelInner[0] = 0.0;

@@ -16,10 +16,10 @@ void main() {
   vec3 P = b.x * te_worldPos[0] + b.y * te_worldPos[1] + b.z * te_worldPos[2];
   v_uv = b.x * te_uv[0] + b.y * te_uv[1] + b.z * te_uv[2];
   v_plane = tp_plane;
-  vec3 d = P - u_dpLight;
+  vec3 d = P - u_omniLight;
   float L = max(length(d), 1e-9);
   vec3 l = dpLocal(u_dpHalfIndex, d / L);
   gl_ClipDistance[0] = l.z + 0.05;
   vec2 p = l.xy / max(1.0 + l.z, 1e-3);
-  gl_Position = vec4(p, dpWindowDepth(L) * 2.0 - 1.0, 1.0);
+  gl_Position = vec4(p, omniStoredDistance(L) * 2.0 - 1.0, 1.0);
 }

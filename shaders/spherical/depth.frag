@@ -20,5 +20,5 @@ void main() {
   if (u_sphExact != 0 && !sphBaryInside(tuv, 1e-5)) discard;
   if (materialAlphaRejectsLevel0((1.0 - tuv.y - tuv.z) * g_uvA + tuv.y * g_uvB + tuv.z * g_uvC))
     discard;
-  gl_FragDepth = clamp(sphStoredDistance(tuv.x), 0.0, 1.0);
+  gl_FragDepth = clamp(omniStoredDistance(tuv.x), 0.0, 1.0);
 }

@@ -36,8 +36,8 @@ float wrapped(float d) {
 }
 
 void main() {
-  vec3 v0 = vg_worldPos[0] - u_sphLight, v1 = vg_worldPos[1] - u_sphLight,
-       v2 = vg_worldPos[2] - u_sphLight;
+  vec3 v0 = vg_worldPos[0] - u_omniLight, v1 = vg_worldPos[1] - u_omniLight,
+       v2 = vg_worldPos[2] - u_omniLight;
   vec3 n = cross(v1 - v0, v2 - v0);
   // Degenerate, or edge-on to the light: no texel's ray meets its area.
   if (abs(dot(n, v0)) <= 1e-7 * length(n) * length(v0)) return;
@@ -69,13 +69,13 @@ void main() {
     vec3 arcN = cross(p, q);
     if (length(arcN) <= 1e-7) continue;
     vec3 nn = normalize(arcN);
-    vec3 e = u_sphPole - dot(u_sphPole, nn) * nn;
+    vec3 e = u_omniAxis - dot(u_omniAxis, nn) * nn;
     if (length(e) <= 1e-7) continue;
     e = normalize(e);
     for (int s = 0; s < 2; ++s) {
       vec3 x = s == 0 ? e : -e;
       if (dot(cross(p, x), nn) < 0.0 || dot(cross(x, q), nn) < 0.0) continue;
-      float lat = asin(clamp(dot(x, u_sphPole), -1.0, 1.0));
+      float lat = asin(clamp(dot(x, u_omniAxis), -1.0, 1.0));
       latMin = min(latMin, lat);
       latMax = max(latMax, lat);
     }
@@ -83,12 +83,12 @@ void main() {
   float lo = min(lon0, min(lon1, lon2)), hi = max(lon0, max(lon1, lon2));
   // A pole inside: every longitude, up to the pole.
   const float eps = 1e-5;
-  if (sphBaryInside(sphRayTriangle(u_sphPole, vg_worldPos[0], vg_worldPos[1], vg_worldPos[2]), eps)) {
+  if (sphBaryInside(sphRayTriangle(u_omniAxis, vg_worldPos[0], vg_worldPos[1], vg_worldPos[2]), eps)) {
     latMax = 0.5 * kSphPi;
     lo = -kSphPi;
     hi = kSphPi;
   }
-  if (sphBaryInside(sphRayTriangle(-u_sphPole, vg_worldPos[0], vg_worldPos[1], vg_worldPos[2]), eps)) {
+  if (sphBaryInside(sphRayTriangle(-u_omniAxis, vg_worldPos[0], vg_worldPos[1], vg_worldPos[2]), eps)) {
     latMin = -0.5 * kSphPi;
     lo = -kSphPi;
     hi = kSphPi;

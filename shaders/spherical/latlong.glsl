@@ -1,20 +1,16 @@
 // The latitude-longitude mapping in GLSL (CPU: algo/omni/LatLongMapping.h; the spherical
 // parameterisation of the omni-light slides, beside the cube and the dual paraboloid):
-// longitude about u_sphPole from u_sphX is u, latitude is v; the map is 2H x H texels, kept
-// as two halves of H x H (layer 0: longitudes [-pi, 0), layer 1: [0, pi)).
-#include "common/light_distance.glsl"
-uniform vec3 u_sphLight;              // world, metres
-uniform vec3 u_sphX, u_sphY, u_sphPole;  // omni::LatLongFrame (x × y = pole)
-uniform float u_sphNearM, u_sphFarM;  // stored = (L - near) / (far - near)
+// longitude about the pole u_omniAxis from u_omniX is u, latitude is v; the map is 2H x H
+// texels, kept as two halves of H x H (layer 0: longitudes [-pi, 0), layer 1: [0, pi)). The
+// light, frame (x × y = pole) and depth range: common/omni/frame.glsl.
+#include "common/omni/frame.glsl"
 
 const float kSphPi = 3.14159265358979;
-
-vec3 sphLocal(vec3 d) { return vec3(dot(d, u_sphX), dot(d, u_sphY), dot(d, u_sphPole)); }
 
 // (longitude in (-pi, pi], latitude in [-pi/2, pi/2]) of d (omni::latLong); the latitude
 // through atan, well conditioned near the poles.
 vec2 sphLatLong(vec3 d) {
-  vec3 l = sphLocal(d);
+  vec3 l = omniLocal(d);
   float lon = atan(l.y, l.x);
   if (lon <= -kSphPi) lon = kSphPi;
   return vec2(lon, atan(l.z, length(l.xy)));
@@ -23,8 +19,8 @@ vec2 sphLatLong(vec3 d) {
 // The unit world direction of a longitude and latitude (omni::latLongDirection).
 vec3 sphDirection(vec2 lonLat) {
   float c = cos(lonLat.y);
-  return normalize(c * cos(lonLat.x) * u_sphX + c * sin(lonLat.x) * u_sphY +
-                   sin(lonLat.y) * u_sphPole);
+  return normalize(c * cos(lonLat.x) * u_omniX + c * sin(lonLat.x) * u_omniY +
+                   sin(lonLat.y) * u_omniAxis);
 }
 
 // d's uv in half `map`, beyond its edges too (omni::latLongUvInHalf): the longitude within
@@ -59,9 +55,6 @@ ivec2 sphWrapTexel(ivec2 t, int H) {
   return t;
 }
 
-float sphStoredDistance(float distanceM) { return storedLightDistance(distanceM, u_sphNearM, u_sphFarM); }
-float sphPlaneDistance(vec3 dir, vec3 P, vec3 N) { return planeDistanceAlongRay(u_sphLight, dir, P, N); }
-
 // Moeller-Trumbore from the light along unit `dir` against triangle (a, b, c): (t, u, v),
 // t the distance (-1 behind or parallel), u and v the barycentrics of b and c, NOT range
 // checked (omni::rayTriangleDistance checks them).
@@ -70,7 +63,7 @@ vec3 sphRayTriangle(vec3 dir, vec3 a, vec3 b, vec3 c) {
   vec3 p = cross(dir, e2);
   float det = dot(e1, p);
   if (abs(det) < 1e-12 * length(e1) * length(e2)) return vec3(-1.0, 0.0, 0.0);
-  vec3 s = u_sphLight - a;
+  vec3 s = u_omniLight - a;
   vec3 q = cross(s, e1);
   float t = dot(e2, q) / det;
   return vec3(t > 0.0 ? t : -1.0, dot(s, p) / det, dot(dir, q) / det);

@@ -1,4 +1,4 @@
-// The tiled techniques' eye-space depth buffer (core/EyeDepthBuffer; Giegl &
+// The tiled techniques' eye-space depth buffer (core/tiled/EyeDepthBuffer; Giegl &
 // Wimmer 2007 §3.2, eq. 1) on real frames of diagonal and corridor: it holds −z_eye of the
 // G-buffer's positions, and the world positions rebuilt from it with eq. 1 — on the GPU by the
 // very GLSL the tile apply and SMTMM passes include (common/tiled/eye_depth.glsl), on the CPU
@@ -11,7 +11,7 @@
 #include "algo/fvsm/Fvsm.h"
 #include "gl/Gl.h"
 #include "gl/ShaderLibrary.h"
-#include "core/EyeDepthBuffer.h"
+#include "core/tiled/EyeDepthBuffer.h"
 
 namespace sl {
 namespace {

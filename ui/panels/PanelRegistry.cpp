@@ -8,7 +8,6 @@
 #include "panels/perspective/PerspectivePanels.h"
 #include "panels/partition/PartitionPanels.h"
 #include "panels/rtw/RtwPanels.h"
-#include "panels/spherical/SphericalPanels.h"
 
 namespace sl::ui {
 
@@ -21,7 +20,6 @@ const std::vector<PanelEntry>& publicationPanels() {
              perspectivePanels(),
              partitionPanels(),
              omniPanels(),
-             sphericalPanels(),
              pagesPanels(),
              fvsmPanels(),
          })

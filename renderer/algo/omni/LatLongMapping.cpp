@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "OmniMapping.h"
+
 namespace sl::omni {
 
 namespace {
@@ -28,12 +30,7 @@ glm::dvec3 local(const LatLongFrame& f, const glm::dvec3& d) {
 LatLongFrame latLongFrame(const glm::dvec3& pole) {
   LatLongFrame f;
   f.pole = glm::normalize(pole);
-  const glm::dvec3 a = glm::abs(f.pole);
-  const glm::dvec3 seed = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0)
-                          : a.y <= a.z             ? glm::dvec3(0, 1, 0)
-                                                   : glm::dvec3(0, 0, 1);
-  f.y = glm::normalize(glm::cross(f.pole, seed));
-  f.x = glm::cross(f.y, f.pole);
+  completeFrame(f.pole, f.x, f.y);
   return f;
 }
 

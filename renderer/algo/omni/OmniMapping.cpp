@@ -124,16 +124,20 @@ std::uint32_t cubeFacesInCone(const glm::dvec3& axis, double halfAngleRad) {
   return mask;
 }
 
-ParaboloidFrame paraboloidFrame(const glm::dvec3& axis) {
-  ParaboloidFrame f;
-  f.axis = glm::normalize(axis);
-  const glm::dvec3 a = glm::abs(f.axis);
+void completeFrame(const glm::dvec3& axis, glm::dvec3& x, glm::dvec3& y) {
+  const glm::dvec3 a = glm::abs(axis);
   // The world axis least aligned with `axis` seeds x.
   const glm::dvec3 seed = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0)
                           : a.y <= a.z             ? glm::dvec3(0, 1, 0)
                                                    : glm::dvec3(0, 0, 1);
-  f.y = glm::normalize(glm::cross(f.axis, seed));
-  f.x = glm::cross(f.y, f.axis);
+  y = glm::normalize(glm::cross(axis, seed));
+  x = glm::cross(y, axis);
+}
+
+ParaboloidFrame paraboloidFrame(const glm::dvec3& axis) {
+  ParaboloidFrame f;
+  f.axis = glm::normalize(axis);
+  completeFrame(f.axis, f.x, f.y);
   return f;
 }
 

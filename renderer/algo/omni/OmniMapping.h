@@ -77,6 +77,9 @@ struct ParaboloidFrame {
 };
 /// A frame about unit `axis` (x chosen stably: the world axis least aligned with it).
 ParaboloidFrame paraboloidFrame(const glm::dvec3& axis);
+/// Unit x and y completing unit `axis` to a right-handed frame (x × y = axis), x chosen stably:
+/// the world axis least aligned with `axis` seeds it (paraboloidFrame, latLongFrame).
+void completeFrame(const glm::dvec3& axis, glm::dvec3& x, glm::dvec3& y);
 
 /// A direction on the dual paraboloid: its hemisphere and uv in [0, 1]^2 (the disc of
 /// radius 0.5 around (0.5, 0.5) holds the hemisphere; the rim is the split plane).

@@ -5,7 +5,7 @@
 // pool), the pool's free-list allocator, allocation of a frame's unique page requests (the pool
 // running out coarsens the finest requested pages, group by group, and counts them, never fails)
 // and the binning of pages into superpages. Plain C++: the GL side
-// (renderer/core/PagedMap) renders what this allocates; the keys are the GPU's
+// (renderer/core/paged/PagedMap) renders what this allocates; the keys are the GPU's
 // (shaders/common/shared_constants.h SL_PAGE_*).
 #pragma once
 

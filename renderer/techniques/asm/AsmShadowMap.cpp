@@ -27,9 +27,6 @@ gl::ProgramDesc testProgramDesc() {
 gl::ProgramDesc edgesProgramDesc() {
   return {"asm/edges", {{GL_COMPUTE_SHADER, "asm/edges.comp"}}, {}, {}};
 }
-gl::ProgramDesc compactProgramDesc() {
-  return {"asm/compact", {{GL_COMPUTE_SHADER, "common/paged/compact.comp"}}, {}, {}};
-}
 
 std::string iterationPass(const char* what, int i) {
   return std::string("asm ") + what + " " + std::to_string(i);
@@ -149,23 +146,16 @@ TechniqueInfo AsmShadowMap::info() {
                "until-done (Fernando et al. 2001): iterate until no page is requested, with no "
                "page budget, stopped only by asm.iterations.cap (asm.stop, asm.requests.left "
                "say when the cap stopped it and what it left) or a full pool."});
-  add({.key = "asm.render",
-       .label = "Render",
-       .group = "ASM",
-       .type = ParamType::Enum,
-       .defaultValue = kRenderPages,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"superpages", "pages"},
-       .help = "How an iteration renders its new pages. superpages (the lecture's ASM loop: "
-               "'bin requests into superpages, render shadow data into superpages, copy shadow "
-               "data from superpage to quadtree'): the new pages are binned into " +
-               std::to_string(SL_RMSM_SUPERPAGE) +
-               "² blocks of one level, each block is rendered once into a superpage target "
-               "and its new pages are copied into their pool slots (one scene draw per "
-               "superpage; the target's 4 MiB count in memory()). pages (the tool's default): "
-               "one scene draw per new page, straight into its slot, no superpage target."});
+  add(pagedRenderParamDecl(
+      "asm.render", "ASM",
+      "How an iteration renders its new pages. superpages (the lecture's ASM loop: "
+      "'bin requests into superpages, render shadow data into superpages, copy shadow "
+      "data from superpage to quadtree'): the new pages are binned into " +
+          std::to_string(SL_RMSM_SUPERPAGE) +
+          "² blocks of one level, each block is rendered once into a superpage target "
+          "and its new pages are copied into their pool slots (one scene draw per "
+          "superpage; the target's 4 MiB count in memory()). pages (the tool's default): "
+          "one scene draw per new page, straight into its slot, no superpage target."));
   add({.key = "asm.iterations.cap",
        .label = "Iteration cap",
        .group = "ASM",
@@ -263,7 +253,7 @@ AsmShadowMap::AsmShadowMap(const gl::ShaderLibrary& lib)
     : depthProgram_(lib),
       testProgram_(lib, testProgramDesc()),
       edgesProgram_(lib, edgesProgramDesc()),
-      compactProgram_(lib, compactProgramDesc()) {}
+      requests_(lib, "asm/compact") {}
 
 void AsmShadowMap::commitFrame() {
   carried_.commit();
@@ -337,9 +327,8 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
   const int w = ctx.width, h = ctx.height;
   if (!tested_ || tested_.width() != w || tested_.height() != h) {
     tested_ = gl::Texture::create2D(GL_RGBA32UI, w, h);
-    requests_ = gl::Texture::create2D(GL_R32UI, w, h);
-    requestList_ = gl::Buffer::create(GLsizeiptr(4) * (1 + GLsizeiptr(w) * h), nullptr);
   }
+  requests_.ensure(w, h);
   superpages_ = ctx.params.getInt("asm.render") == kRenderSuperpages;
   if (!superpages_) map_.releaseSuperpageTarget();
   const bool untilDone = ctx.params.getInt("asm.loop") == 1;
@@ -377,7 +366,7 @@ void AsmShadowMap::renderShadows(FrameContext& ctx) {
         // pages it would still have asked for.
         findEdges(ctx);
         last_.requestsLeft = 0;
-        for (pages::PageKey k : pages::sortUnique(readCompacted()))
+        for (pages::PageKey k : pages::sortUnique(requests_.compacted()))
           if (k != pages::kNoPage && (k & adaptive::kTouchBit) == 0 &&
               carried_->cache->table().slot(pages::unpackPage(k)) < 0)
             ++last_.requestsLeft;
@@ -438,29 +427,11 @@ void AsmShadowMap::findEdges(FrameContext& ctx) {
   edgesProgram_.use();
   edgesProgram_.set("u_edgeTest", ctx.params.getInt("asm.edge"));
   glBindImageTexture(SL_ASM_IMAGE_TESTED, tested_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32UI);
-  glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+  glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.image().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      GL_R32UI);
   glDispatchCompute(gx, gy, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  // RMSM's dedup + compaction.
-  const std::uint32_t zero = 0;
-  glNamedBufferSubData(requestList_.id(), 0, 4, &zero);
-  compactProgram_.use();
-  glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
-                     GL_R32UI);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RMSM_BUFFER_REQUESTS, requestList_.id());
-  glDispatchCompute(gx, gy, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-}
-
-std::vector<pages::PageKey> AsmShadowMap::readCompacted() const {
-  std::uint32_t count = 0;
-  glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
-  const std::size_t capacity = std::size_t(requestList_.size() / 4 - 1);
-  std::vector<pages::PageKey> keys(std::min<std::size_t>(count, capacity), 0u);
-  if (!keys.empty())
-    glGetNamedBufferSubData(requestList_.id(), 4, GLsizeiptr(4 * keys.size()), keys.data());
-  return keys;
+  requests_.compact();  // RMSM's dedup + compaction
 }
 
 bool AsmShadowMap::iterate(FrameContext& ctx, int iteration, int& budget) {
@@ -472,7 +443,7 @@ bool AsmShadowMap::iterate(FrameContext& ctx, int iteration, int& budget) {
   pass.reset();
   adaptive::Refinement r;
   if (timed) pass.emplace(ctx.timer, iterationPass("allocate", iteration));
-  last_.compacted = readCompacted();
+  last_.compacted = requests_.compacted();
   last_.unique = pages::sortUnique(last_.compacted);
   last_.uniquePerIteration.push_back(last_.unique);
   for (pages::PageKey k : last_.compacted)
@@ -515,10 +486,7 @@ MemoryStats AsmShadowMap::memory() const {
   if (tested_)
     m.add("shadow test (per pixel: mask, page, refine)", "RGBA32UI", tested_.width(),
           tested_.height(), 1, 16);
-  if (requests_)
-    m.add("edge requests (per pixel)", "R32UI", requests_.width(), requests_.height(), 1, 4);
-  if (requestList_)
-    m.add("compacted requests (count + keys)", "R32UI", int(requestList_.size() / 4), 1, 1, 4);
+  requests_.addMemory(m, "edge requests (per pixel)");
   return m;
 }
 
@@ -526,7 +494,7 @@ std::optional<std::string> AsmShadowMap::reloadShaders(const gl::ShaderLibrary& 
   if (auto e = depthProgram_.rebuild(lib)) return e;
   if (auto e = testProgram_.rebuild(lib)) return e;
   if (auto e = edgesProgram_.rebuild(lib)) return e;
-  return compactProgram_.rebuild(lib);
+  return requests_.reloadShaders(lib);
 }
 
 }  // namespace sl

@@ -22,7 +22,8 @@
 #include "algo/asm/AdaptivePages.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
-#include "core/PagedMap.h"
+#include "core/paged/PageRequestList.h"
+#include "core/paged/PagedMap.h"
 
 namespace sl {
 
@@ -36,7 +37,7 @@ class AsmShadowMap : public Technique {
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
   std::vector<const gl::Program*> programs() const override {
     std::vector<const gl::Program*> p = depthProgram_.programs();
-    p.insert(p.end(), {&testProgram_, &edgesProgram_, &compactProgram_});
+    p.insert(p.end(), {&testProgram_, &edgesProgram_, &requests_.program()});
     return p;
   }
   std::vector<int> pageGrid() const override { return map_.pageGrid(); }
@@ -80,7 +81,7 @@ class AsmShadowMap : public Technique {
     int sceneDraws = 0;
   };
   /// asm.render: rmsm.render's values, the same order.
-  static constexpr int kRenderSuperpages = 0, kRenderPages = 1;
+  static constexpr int kRenderSuperpages = kPagedRenderSuperpages, kRenderPages = kPagedRenderPages;
   /// FrameResult::stop (asm.stop): no new page was requested (the paper's end of the loop),
   /// the iteration cap, the per-frame page budget, the pool (only pages used this frame).
   enum Stop : int { kConverged = 0, kIterationCap = 1, kBudget = 2, kPoolFull = 3 };
@@ -89,7 +90,7 @@ class AsmShadowMap : public Technique {
   /// The last iteration's shadow test (rgba32ui: mask, served key, refine key) and its
   /// per-pixel keys (r32ui), the page table.
   const gl::Texture& testedImage() const { return tested_; }
-  const gl::Texture& requestImage() const { return requests_; }
+  const gl::Texture& requestImage() const { return requests_.image(); }
   const gl::Texture& pageTableTexture() const { return map_.pageTableTexture(); }
   const glm::mat4& lightViewProj() const { return view_.lightViewProj; }
   const DepthMapView& mapView() const { return view_; }
@@ -103,11 +104,9 @@ class AsmShadowMap : public Technique {
   /// Before this frame renders into `slots`: those holding a page of the last complete frame's
   /// cache are kept aside (PagedMap::keepSlots) for discardFrame.
   void keepCommittedPages(std::span<const int> slots);
-  /// The compacted request list findEdges wrote (count clamped to the list's capacity).
-  std::vector<pages::PageKey> readCompacted() const;
 
   DepthProgram depthProgram_;
-  gl::Program testProgram_, edgesProgram_, compactProgram_;
+  gl::Program testProgram_, edgesProgram_;
   PagedMap map_;
   /// What the cached pages were rendered for: any change drops them (and so does a new scene,
   /// resetTemporalState). The default key matches no frame (lightViewProj is zero).
@@ -126,9 +125,8 @@ class AsmShadowMap : public Technique {
     int capStops = 0;
   };
   FrameCarried<Carried> carried_;
-  gl::Texture tested_;      ///< RGBA32UI per camera pixel
-  gl::Texture requests_;    ///< R32UI per camera pixel
-  gl::Buffer requestList_;  ///< count + one key per pixel
+  gl::Texture tested_;        ///< RGBA32UI per camera pixel
+  PageRequestList requests_;  ///< per pixel (edges), then compacted
   DepthMapView view_;
   FrameResult last_;
   bool superpages_ = false;  ///< this frame's asm.render = superpages

@@ -7,6 +7,7 @@
 #include "common/shared_constants.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
+#include "core/omni/OmniDeclarations.h"
 
 namespace sl {
 
@@ -32,9 +33,8 @@ gl::ProgramDesc layeredProgramDesc() {
 
 TechniqueInfo CubeShadowMap::info() {
   std::vector<ParamDecl> p = shadowMapParamDecls(1024);
-  for (ParamDecl& d : p)
-    if (d.key == "resolution")
-      d.help = "Width and height of EACH cube face in texels (a point light has six faces).";
+  setParamHelp(p, "resolution",
+               "Width and height of EACH cube face in texels (a point light has six faces).");
   p.push_back({.key = "cube.layered",
                .label = "One layered pass",
                .group = "Cube",
@@ -58,15 +58,12 @@ TechniqueInfo CubeShadowMap::info() {
                   "corners (3√3 times the centre's per steradian).",
                   "omni"}};
   info.publications = {
-      {"face.*.map", PublicationKind::ImageSet,
-       "Every rendered face's map: the distance from the light along each texel centre's ray, "
-       "(d - cube.near_m) / (cube.far_m - cube.near_m), 1 = nothing; i = face 0..5 (+x, -x, "
-       "+y, -y, +z, -z).",
-       "4 B x min(resolution, 2048)^2 x faces (6 for a point light)",
-       [](const ParamSet& ps) {
-         const int r = ps.getInt("resolution");
-         return publishedImageBytes(r, r) * 6;
-       }},
+      omniMapsPublicationDecl(
+          "face.*.map",
+          "Every rendered face's map: the distance from the light along each texel centre's "
+          "ray, (d - cube.near_m) / (cube.far_m - cube.near_m), 1 = nothing; i = face 0..5 (+x, "
+          "-x, +y, -y, +z, -z).",
+          "4 B x min(resolution, 2048)^2 x faces (6 for a point light)", omni::kCubeFaces),
       {"cube.faces",
        PublicationKind::Number,
        "How many faces were rendered (6, fewer for a spot).",
@@ -77,11 +74,8 @@ TechniqueInfo CubeShadowMap::info() {
   };
   info.lights = {LightType::Point, LightType::Spot};
   // Up to six faces (a point light's), before the first frame.
-  info.checkParams = [](const ParamSet& ps) {
-    return DepthMapArray::sizeError(int(ps.getInt("resolution")), omni::kCubeFaces,
-                                    "cube: up to " + std::to_string(omni::kCubeFaces) + " faces",
-                                    "resolution");
-  };
+  info.checkParams =
+      omniMapsCheck(omni::kCubeFaces, "cube: up to " + std::to_string(omni::kCubeFaces) + " faces");
   return info;
 }
 

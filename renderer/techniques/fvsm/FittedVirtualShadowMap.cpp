@@ -11,7 +11,7 @@
 #include "core/LightBinding.h"
 #include "core/Publish.h"
 #include "core/SceneGpu.h"
-#include "core/TiledVirtualMap.h"
+#include "core/tiled/TiledVirtualMap.h"
 
 namespace sl {
 

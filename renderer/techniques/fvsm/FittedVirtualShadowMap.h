@@ -1,9 +1,9 @@
 // Fitted virtual shadow maps (Giegl & Wimmer, GI 2007; docs/techniques.md §6): the eye-space
-// depth buffer (core/EyeDepthBuffer) and the SMTMM pass on the GPU
+// depth buffer (core/tiled/EyeDepthBuffer) and the SMTMM pass on the GPU
 // (shaders/fvsm/smtmm.comp), read back; the tile grid, its max pyramid and the
 // kd-tree traversal on the CPU with the reference itself (algo/fvsm); then every kd leaf is
 // rendered at the resolution it needs and applied by deferred shadowing inside its screen
-// rectangle (core/TiledVirtualMap applyTile, shared with `virtual-tiled`), or by
+// rectangle (core/tiled/TiledVirtualMap applyTile, shared with `virtual-tiled`), or by
 // multi-pass shadowing (§3.1, fvsm.apply; shaders/fvsm/multipass.frag). Pixels no leaf
 // reached (the SMTMM samples one pixel per block) get a fallback map over the whole fit. The
 // virtual map is the focused orthographic fit or its LiSPSM warp (fvsm.warp), the leaves its
@@ -16,7 +16,7 @@
 #include "algo/fvsm/Fvsm.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
-#include "core/TiledVirtualMap.h"
+#include "core/tiled/TiledVirtualMap.h"
 
 namespace sl {
 

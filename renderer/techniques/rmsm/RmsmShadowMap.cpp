@@ -23,9 +23,6 @@ namespace {
 gl::ProgramDesc requestProgramDesc() {
   return {"rmsm/requests", {{GL_COMPUTE_SHADER, "rmsm/requests.comp"}}, {}, {}};
 }
-gl::ProgramDesc compactProgramDesc() {
-  return {"rmsm/compact", {{GL_COMPUTE_SHADER, "common/paged/compact.comp"}}, {}, {}};
-}
 gl::ProgramDesc sortProgramDesc() {
   return {"rmsm/sort", {{GL_COMPUTE_SHADER, "rmsm/sort.comp"}}, {}, {}};
 }
@@ -37,24 +34,16 @@ gl::ProgramDesc uniqueProgramDesc() {
 
 TechniqueInfo RmsmShadowMap::info() {
   std::vector<ParamDecl> p = pagedMapParamDecls();
-  p.push_back(ParamDecl{
-      .key = "rmsm.render",
-      .label = "Render",
-      .group = "Pages",
-      .type = ParamType::Enum,
-      .defaultValue = kRenderPages,
-      .minValue = 0,
-      .maxValue = 1,
-      .step = 1,
-      .enumNames = {"superpages", "pages"},
-      .help = "superpages (Lefohn et al.): the allocated pages are binned into " +
-              std::to_string(SL_RMSM_SUPERPAGE) +
-              "² blocks of one level; each block is "
-              "rendered once into a superpage target, then its pages are copied into their "
-              "pool slots (one scene draw per superpage): the paper's pipeline. pages (the "
-              "tool's default): one scene draw per allocated page, straight into its slot, no "
-              "superpage target (its 4 MiB count in memory() and so in pool.budget; on "
-              "llvmpipe superpages made the frame 1.4-2.1x slower: docs/techniques/rmsm.md)."});
+  p.push_back(pagedRenderParamDecl(
+      "rmsm.render", "Pages",
+      "superpages (Lefohn et al.): the allocated pages are binned into " +
+          std::to_string(SL_RMSM_SUPERPAGE) +
+          "² blocks of one level; each block is "
+          "rendered once into a superpage target, then its pages are copied into their "
+          "pool slots (one scene draw per superpage): the paper's pipeline. pages (the "
+          "tool's default): one scene draw per allocated page, straight into its slot, no "
+          "superpage target (its 4 MiB count in memory() and so in pool.budget; on "
+          "llvmpipe superpages made the frame 1.4-2.1x slower: docs/techniques/rmsm.md)."));
   p.push_back(ParamDecl{
       .key = "lod.derivatives",
       .label = "LOD derivatives",
@@ -167,9 +156,9 @@ TechniqueInfo RmsmShadowMap::info() {
 RmsmShadowMap::RmsmShadowMap(const gl::ShaderLibrary& lib)
     : depthProgram_(lib),
       requestProgram_(lib, requestProgramDesc()),
-      compactProgram_(lib, compactProgramDesc()),
       sortProgram_(lib, sortProgramDesc()),
-      uniqueProgram_(lib, uniqueProgramDesc()) {}
+      uniqueProgram_(lib, uniqueProgramDesc()),
+      requests_(lib, "rmsm/compact") {}
 
 void RmsmShadowMap::renderShadows(FrameContext& ctx) {
   // One lookup "map" per level (rmsm/lookup.glsl): a deeper tree is cut below its root.
@@ -248,29 +237,18 @@ void RmsmShadowMap::fitPoolToBudget(const pages::VirtualLayout& layout, std::uin
 void RmsmShadowMap::requestPages(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rmsm requests");
   const int w = ctx.width, h = ctx.height;
-  if (!requests_ || requests_.width() != w || requests_.height() != h) {
-    requests_ = gl::Texture::create2D(GL_R32UI, w, h);
-    requestList_ = gl::Buffer::create(GLsizeiptr(4) * (1 + GLsizeiptr(w) * h), nullptr);
-  }
+  requests_.ensure(w, h);
   const GLuint gx = GLuint((w + SL_RMSM_GROUP - 1) / SL_RMSM_GROUP);
   const GLuint gy = GLuint((h + SL_RMSM_GROUP - 1) / SL_RMSM_GROUP);
   requestProgram_.use();
   map_.setLayoutUniforms(requestProgram_, view_.lightViewProj);
   glBindTextureUnit(SL_UNIT_G_POSITION, ctx.gbuffer.position.id());
   glBindTextureUnit(SL_UNIT_G_NORMAL, ctx.gbuffer.normal.id());
-  glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+  glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.image().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      GL_R32UI);
   glDispatchCompute(gx, gy, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-
-  const std::uint32_t zero = 0;
-  glNamedBufferSubData(requestList_.id(), 0, 4, &zero);
-  compactProgram_.use();
-  glBindImageTexture(SL_RMSM_IMAGE_REQUESTS, requests_.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
-                     GL_R32UI);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_RMSM_BUFFER_REQUESTS, requestList_.id());
-  glDispatchCompute(gx, gy, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  requests_.compact();
 }
 
 void RmsmShadowMap::bitonicSort(const gl::Buffer& keys, std::uint32_t count) const {
@@ -291,10 +269,7 @@ void RmsmShadowMap::sortUnique(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rmsm sort");
   // The list's length sizes the sort (a power of two at least 2, padded with SL_PAGE_NONE,
   // which sorts last): 4 bytes read back.
-  std::uint32_t count = 0;
-  glGetNamedBufferSubData(requestList_.id(), 0, 4, &count);
-  const std::uint32_t capacity = std::uint32_t(requestList_.size() / 4 - 1);
-  count = std::min(count, capacity);
+  const std::uint32_t count = requests_.count();
   compactedCount_ = count;
   // Buffers of this frame's sort size (reallocated when the power of two changes): the bytes
   // follow the list, not the pixel count (a few KiB, not MiBs).
@@ -305,7 +280,7 @@ void RmsmShadowMap::sortUnique(FrameContext& ctx) {
     uniqueKeys_ = gl::Buffer::create(bytes, nullptr);
   }
   if (!uniqueCount_) uniqueCount_ = gl::Buffer::create(4, nullptr);
-  if (count > 0) glCopyNamedBufferSubData(requestList_.id(), sortKeys_.id(), 4, 0, 4 * count);
+  if (count > 0) glCopyNamedBufferSubData(requests_.list().id(), sortKeys_.id(), 4, 0, 4 * count);
   const std::uint32_t none = SL_PAGE_NONE, zero = 0;
   if (n > count)
     glClearNamedBufferSubData(sortKeys_.id(), GL_R32UI, GLintptr(4) * count,
@@ -328,15 +303,10 @@ void RmsmShadowMap::sortUnique(FrameContext& ctx) {
 void RmsmShadowMap::allocate(FrameContext& ctx) {
   auto pass = ctx.timer.scope("rmsm allocate");
   // The compacted list too: the Pages panel's heat map of this frame's requests.
-  auto read = [](const gl::Buffer& b, GLintptr offset, std::size_t n) {
-    std::vector<pages::PageKey> keys(n, 0u);
-    if (n > 0) glGetNamedBufferSubData(b.id(), offset, GLsizeiptr(4 * n), keys.data());
-    return keys;
-  };
-  last_.compacted = read(requestList_, 4, compactedCount_);
+  last_.compacted = requests_.keys(compactedCount_);
   std::uint32_t unique = 0;
   glGetNamedBufferSubData(uniqueCount_.id(), 0, 4, &unique);
-  last_.unique = read(uniqueKeys_, 0, std::min<std::size_t>(unique, compactedCount_));
+  last_.unique = readPageKeys(uniqueKeys_, 0, std::min<std::size_t>(unique, compactedCount_));
   pool_->releaseAll();
   last_.allocation = pages::allocatePages(last_.unique, *pool_, *table_);
   last_.superpages = pages::binSuperpages(last_.allocation.pages, layout_, SL_RMSM_SUPERPAGE);
@@ -367,10 +337,7 @@ void RmsmShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const 
 MemoryStats RmsmShadowMap::memory() const {
   MemoryStats m;
   map_.addMemory(m);
-  if (requests_)
-    m.add("page requests (per pixel)", "R32UI", requests_.width(), requests_.height(), 1, 4);
-  if (requestList_)
-    m.add("compacted requests (count + keys)", "R32UI", int(requestList_.size() / 4), 1, 1, 4);
+  requests_.addMemory(m, "page requests (per pixel)");
   if (sortKeys_) m.add("sorted requests", "R32UI", int(sortKeys_.size() / 4), 1, 1, 4);
   if (uniqueKeys_) m.add("unique requests", "R32UI", int(uniqueKeys_.size() / 4), 1, 1, 4);
   if (uniqueCount_) m.add("unique count", "R32UI", 1, 1, 1, 4);
@@ -380,7 +347,7 @@ MemoryStats RmsmShadowMap::memory() const {
 std::optional<std::string> RmsmShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
   if (auto e = depthProgram_.rebuild(lib)) return e;
   if (auto e = requestProgram_.rebuild(lib)) return e;
-  if (auto e = compactProgram_.rebuild(lib)) return e;
+  if (auto e = requests_.reloadShaders(lib)) return e;
   if (auto e = sortProgram_.rebuild(lib)) return e;
   return uniqueProgram_.rebuild(lib);
 }

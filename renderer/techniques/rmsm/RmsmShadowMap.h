@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "algo/pages/VirtualPages.h"
-#include "core/PagedMap.h"
+#include "core/paged/PageRequestList.h"
+#include "core/paged/PagedMap.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 
@@ -26,7 +27,7 @@ class RmsmShadowMap : public Technique {
   void bindLookup(const gl::Program& resolve, int firstUnit) const override;
   std::vector<const gl::Program*> programs() const override {
     std::vector<const gl::Program*> p = depthProgram_.programs();
-    p.insert(p.end(), {&requestProgram_, &compactProgram_, &sortProgram_, &uniqueProgram_});
+    p.insert(p.end(), {&requestProgram_, &requests_.program(), &sortProgram_, &uniqueProgram_});
     return p;
   }
   std::vector<int> pageGrid() const override { return map_.pageGrid(); }
@@ -46,7 +47,7 @@ class RmsmShadowMap : public Technique {
     std::int64_t renderTexels = 0;
   };
   /// rmsm.render's values.
-  static constexpr int kRenderSuperpages = 0, kRenderPages = 1;
+  static constexpr int kRenderSuperpages = kPagedRenderSuperpages, kRenderPages = kPagedRenderPages;
   const FrameResult& lastFrame() const { return last_; }
   void commitFrame() override { budgetPool_.commit(); }
   void discardFrame() override { budgetPool_.discard(); }
@@ -54,7 +55,7 @@ class RmsmShadowMap : public Technique {
   /// The pool (pages side by side) after the last frame's render step.
   const gl::Texture& poolTexture() const { return map_.poolTexture(); }
   /// The per-pixel request keys of the last frame (r32ui, camera size) and the page table.
-  const gl::Texture& requestImage() const { return requests_; }
+  const gl::Texture& requestImage() const { return requests_.image(); }
   const gl::Texture& pageTableTexture() const { return map_.pageTableTexture(); }
   const pages::PageTable* pageTable() const { return table_.get(); }
   const pages::VirtualLayout& layout() const { return layout_; }
@@ -77,13 +78,12 @@ class RmsmShadowMap : public Technique {
   void renderPages(FrameContext& ctx);
 
   DepthProgram depthProgram_;
-  gl::Program requestProgram_, compactProgram_, sortProgram_, uniqueProgram_;
+  gl::Program requestProgram_, sortProgram_, uniqueProgram_;
   pages::VirtualLayout layout_;
   std::unique_ptr<pages::PageTable> table_;
   std::unique_ptr<pages::PagePool> pool_;
-  PagedMap map_;            ///< the pool and the page table's textures
-  gl::Texture requests_;    ///< R32UI per camera pixel
-  gl::Buffer requestList_;  ///< count + one key per pixel
+  PagedMap map_;              ///< the pool and the page table's textures
+  PageRequestList requests_;  ///< per pixel, then compacted
   /// The sort's keys and the unique list: this frame's compacted length rounded up to a power
   /// of two (at least 2) each.
   gl::Buffer sortKeys_, uniqueKeys_;

@@ -1,12 +1,10 @@
-// Spherical (lat-long) shadow map (SphericalShadowMap.h): frame and depth range, the depth
-// pass per half of the map, the lookup's uniforms.
+// Spherical (lat-long) shadow map (SphericalShadowMap.h): the pole's frame, the depth pass per
+// half of the map, the lookup's uniforms (the frame, depth range and halves' array:
+// core/omni/OmniRayMap).
 #include "SphericalShadowMap.h"
 
-#include <algorithm>
-#include <stdexcept>
-
+#include "algo/omni/LatLongMapping.h"
 #include "common/shared_constants.h"
-#include "core/Publish.h"
 #include "core/SceneGpu.h"
 
 namespace sl {
@@ -22,32 +20,21 @@ gl::ProgramDesc depthDesc() {
           {}};
 }
 
-const glm::dvec3 kAxes[3] = {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
-
 }  // namespace
 
 TechniqueInfo SphericalShadowMap::info() {
   std::vector<ParamDecl> p = shadowMapParamDecls(2048);
-  for (ParamDecl& d : p)
-    if (d.key == "resolution")
-      d.help =
-          "Height of the latitude-longitude map in texels (latitude, 180°); its width is "
-          "twice that (longitude, 360°), so texels are square in angle on the equator and "
-          "the map holds 2 x resolution^2 texels, as the dual paraboloid at the same "
-          "resolution.";
-  p.push_back({.key = "sph.axis",
-               .label = "Pole axis",
-               .group = "Spherical",
-               .type = ParamType::Enum,
-               .defaultValue = 0,
-               .minValue = 0,
-               .maxValue = 2,
-               .step = 1,
-               .enumNames = {"y", "x", "z"},
-               .help = "The poles (latitude ±90°) lie along +axis and -axis: every texel of the "
-                       "map's top or bottom row meets there, so texels near a pole are about "
-                       "2 x resolution / pi times smaller than on the equator (oversampled); "
-                       "the seam (longitude ±180°) is a half-plane through the axis."});
+  setParamHelp(p, "resolution",
+               "Height of the latitude-longitude map in texels (latitude, 180°); its width is "
+               "twice that (longitude, 360°), so texels are square in angle on the equator and "
+               "the map holds 2 x resolution^2 texels, as the dual paraboloid at the same "
+               "resolution.");
+  p.push_back(omniAxisParamDecl(
+      "sph.axis", "Pole axis", "Spherical",
+      "The poles (latitude ±90°) lie along +axis and -axis: every texel of the map's top or "
+      "bottom row meets there, so texels near a pole are about 2 x resolution / pi times "
+      "smaller than on the equator (oversampled); the seam (longitude ±180°) is a half-plane "
+      "through the axis."));
   p.push_back({.key = "sph.exactCoverage",
                .label = "Exact coverage",
                .group = "Spherical",
@@ -79,80 +66,40 @@ TechniqueInfo SphericalShadowMap::info() {
                   "keeps it where its own ray hits it, at that ray's distance.",
                   "spherical"}};
   info.publications = {
-      {"sph.half.*.map", PublicationKind::ImageSet,
-       "Each half of the lat-long map (window depth = distance / far), i = 0 (longitudes "
-       "-180°..0°), 1 (0°..180°).",
-       "4 B x min(resolution, 2048)^2 x 2 halves",
-       [](const ParamSet& ps) {
-         const int r = ps.getInt("resolution");
-         return publishedImageBytes(r, r) * 2;
-       }},
+      omniMapsPublicationDecl("sph.half.*.map",
+                              "Each half of the lat-long map (window depth = distance / far), "
+                              "i = 0 (longitudes -180°..0°), 1 (0°..180°).",
+                              "4 B x min(resolution, 2048)^2 x 2 halves", 2),
       {"sph.far_m", PublicationKind::Number, "The depth range's far end (m).", "", {}},
   };
   info.lights = {LightType::Point, LightType::Spot};
-  info.checkParams = [](const ParamSet& ps) {
-    return DepthMapArray::sizeError(int(ps.getInt("resolution")), omni::kLatLongHalves,
-                                    "spherical: 2 halves", "resolution");
-  };
+  info.checkParams = omniMapsCheck(omni::kLatLongHalves, "spherical: 2 halves");
   return info;
 }
 
 SphericalShadowMap::SphericalShadowMap(const gl::ShaderLibrary& lib)
-    : depthProgram_(lib, depthDesc()) {}
-
-void SphericalShadowMap::setMapping(const gl::Program& program) const {
-  program.set("u_sphLight", lightPosM_);
-  program.set("u_sphX", glm::vec3(frame_.x));
-  program.set("u_sphY", glm::vec3(frame_.y));
-  program.set("u_sphPole", glm::vec3(frame_.pole));
-  program.set("u_sphNearM", nearM_);
-  program.set("u_sphFarM", farM_);
-}
+    : OmniRayMap(lib, depthDesc(), "lat-long map (two halves, array)") {}
 
 void SphericalShadowMap::renderShadows(FrameContext& ctx) {
   const int res = ctx.params.getInt("resolution");
   const bool exact = ctx.params.getBool("sph.exactCoverage");
-  if (auto err = ctx.light.validate()) throw std::runtime_error(*err);
-  if (!ctx.scene.bounds.valid()) throw std::runtime_error("scene: empty bounds (no geometry)");
-  lightPosM_ = ctx.light.positionM;
-  frame_ = omni::latLongFrame(kAxes[std::clamp(ctx.params.getInt("sph.axis"), 0, 2)]);
-  float far = 0.0f;
-  for (const glm::vec3& c : ctx.scene.bounds.corners())
-    far = std::max(far, glm::length(c - lightPosM_));
-  if (ctx.light.rangeM > 0.0f) far = std::min(far, ctx.light.rangeM);
-  nearM_ = 0.0f;
-  farM_ = 1.01f * std::max(far, 1e-3f);
+  const omni::LatLongFrame frame = omni::latLongFrame(omniAxisOf(ctx.params, "sph.axis"));
+  fitFrame(ctx, frame.x, frame.y, frame.pole);
 
   auto pass = ctx.timer.scope("lat-long halves");
-  maps_.ensure(res, omni::kLatLongHalves, "spherical: 2 halves", "resolution");
+  ensureHalves(res, omni::kLatLongHalves, "spherical: 2 halves");
   for (int i = 0; i < omni::kLatLongHalves; ++i) {
-    beginDepthPass(maps_.layerFramebuffer(i), res, res);
-    depthProgram_.use();
-    setMapping(depthProgram_);
+    beginHalf(i, res);
     depthProgram_.set("u_sphHalfIndex", i);
     depthProgram_.set("u_sphExact", exact ? 1 : 0);
     depthProgram_.set("u_mapTexels", float(res));
     ctx.sceneGpu.draw(depthProgram_, SL_UNIT_MATERIAL);
   }
-  publishNumber(ctx, "sph.far_m", farM_);
-  for (int i = 0; i < omni::kLatLongHalves; ++i)
-    publishDepthLayer(ctx, "sph.half." + std::to_string(i) + ".map", maps_.texture(), i);
+  publishHalves(ctx, "sph.far_m", "sph.half.", omni::kLatLongHalves);
 }
 
 void SphericalShadowMap::bindLookup(const gl::Program& resolve, int firstUnit) const {
-  glBindTextureUnit(GLuint(firstUnit), maps_.texture().id());
-  resolve.set("u_sphMaps", firstUnit);
-  setMapping(resolve);
-}
-
-MemoryStats SphericalShadowMap::memory() const {
-  MemoryStats m;
-  maps_.addMemory(m, "lat-long map (two halves, array)");
-  return m;
-}
-
-std::optional<std::string> SphericalShadowMap::reloadShaders(const gl::ShaderLibrary& lib) {
-  return depthProgram_.rebuild(lib);
+  bindHalves(resolve, firstUnit, "u_sphMaps");
 }
 
 }  // namespace sl

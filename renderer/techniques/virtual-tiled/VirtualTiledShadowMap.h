@@ -3,15 +3,15 @@
 // cut into n x n tiles, each rendered at
 // tile.resolution (16 x 16 x 4096² = a 65536² virtual map) into ONE reused depth texture and
 // applied at once by deferred shadowing: a compute pass over the screen rebuilds each pixel's
-// world position from the eye-space depth buffer (eq. 1, core/EyeDepthBuffer.h) and shadows the
-// pixels whose light uv falls in that tile. The baseline fitted virtual shadow maps are
+// world position from the eye-space depth buffer (eq. 1, core/tiled/EyeDepthBuffer.h) and shadows
+// the pixels whose light uv falls in that tile. The baseline fitted virtual shadow maps are
 // measured against.
 #pragma once
 
-#include "core/EyeDepthBuffer.h"
+#include "core/tiled/EyeDepthBuffer.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
-#include "core/TiledVirtualMap.h"
+#include "core/tiled/TiledVirtualMap.h"
 
 namespace sl {
 

@@ -1,5 +1,5 @@
 // Deferred shadowing with ONE tile of a virtual shadow map (Giegl & Wimmer 2007, §3.2; C++:
-// sl::applyTile in core/TiledVirtualMap): every pixel of the dispatched screen rectangle
+// sl::applyTile in core/tiled/TiledVirtualMap): every pixel of the dispatched screen rectangle
 // whose light uv in the full (virtual) map lies in the tile's [u_tileUvMin, u_tileUvMax)
 // is shadowed with the tile — map 0 of the shared bias model (tile_lookup.glsl) — and
 // written to the resolve targets; the others are left as they are (a later tile, or

@@ -1,5 +1,5 @@
 // The tiled techniques' eye-space depth buffer (Giegl & Wimmer 2007, §3.2 and fvsm's step 1,
-// §4.2; C++: sl::EyeDepthBuffer::update in core/EyeDepthBuffer): per pixel the linear
+// §4.2; C++: sl::EyeDepthBuffer::update in core/tiled/EyeDepthBuffer): per pixel the linear
 // depth along the camera's view axis, −z_eye in metres (0: no surface), from the G-buffer's
 // world position. This is the one pass of virtual-tiled and fvsm that reads the position
 // texture: the tile passes and the SMTMM rebuild positions from this buffer with eq. 1

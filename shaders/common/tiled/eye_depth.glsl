@@ -2,7 +2,7 @@
 // position from its screen position and its linear depth in the tiled techniques' eye-space
 // depth buffer (eye_depth.comp), and its world position through the inverse view. Eq. 1 is
 // z_e times two constant matrices applied to the window position; sl::EyeDepthBuffer::bind
-// (core/EyeDepthBuffer) sets their product, an affine map per axis, from the camera's
+// (core/tiled/EyeDepthBuffer) sets their product, an affine map per axis, from the camera's
 // projection P and the frame size: OpenGL's clip w is −z_eye = d, so x_e / d = (ndc_x + b_x) /
 // a_x with ndc_x = 2 x_w / width − 1, a_x = P[0][0], b_x = P[2][0] (the paper's eq. 1 in its
 // own convention, w = z_e).

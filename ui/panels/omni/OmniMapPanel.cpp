@@ -5,11 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include <QCheckBox>
 #include <QLabel>
 #include <QPainter>
-#include <QPen>
-#include <QVBoxLayout>
 
 #include "algo/omni/OmniMapping.h"
 #include "common/shared_constants.h"
@@ -18,9 +15,6 @@ namespace sl::ui {
 
 namespace {
 constexpr int kMaxCellTexels = 256;  ///< each face / disc is point-sampled to at most this
-/// The one density scale of both mappings: log2 texels per steradian (256^2 cube faces: 14;
-/// 4096^2 paraboloid rims: 22).
-constexpr float kDensityLog2Min = 12.0f, kDensityLog2Max = 24.0f;
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 /// Cross cells (column, row from the bottom, rotated 180°) of faces 0..5 (+x, -x, +y, -y,
@@ -34,33 +28,15 @@ const Cell kCross[omni::kCubeFaces] = {{0, 1, false}, {2, 1, false}, {1, 2, true
                                        {1, 0, true},  {1, 1, false}, {3, 1, false}};
 }  // namespace
 
-OmniMapPanel::OmniMapPanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
-  density_ =
-      new QCheckBox(tr("Texel density (log2 texels per steradian, one scale for cube "
-                       "and paraboloid)"));
-  density_->setObjectName(QStringLiteral("omniDensity"));
-  layout->addWidget(density_);
-  view_ = new ImageView;
-  view_->setObjectName(QStringLiteral("omniMap"));
-  layout->addWidget(view_, 1);
-  info_ = new QLabel;
-  info_->setObjectName(QStringLiteral("omniInfo"));
-  info_->setWordWrap(true);
-  layout->addWidget(info_);
-  probeInfo_ = new QLabel(tr("Hover over the view: a marker shows the texel its pixel looks up."));
-  probeInfo_->setObjectName(QStringLiteral("omniProbe"));
-  probeInfo_->setWordWrap(true);
-  layout->addWidget(probeInfo_);
-  setContent(content);
-  connect(density_, &QCheckBox::toggled, this, [this] { redraw(); });
-}
-
-std::set<std::string> OmniMapPanel::observedKeys() const {
-  return {"face.*.map", "cube.faces", "cube.near_m", "cube.far_m", "half.*.map", "dp.far_m"};
-}
+OmniMapPanel::OmniMapPanel(QWidget* parent)
+    : OmniPanelBase({.name = QStringLiteral("omni"),
+                     .densityText = tr("Texel density (log2 texels per steradian, one scale for "
+                                       "cube and paraboloid)"),
+                     .mapNoun = tr("an omni map"),
+                     .keys = {"face.*.map", "cube.faces", "cube.near_m", "cube.far_m", "half.*.map",
+                              "dp.far_m"},
+                     .passes = {QStringLiteral("cube faces"), QStringLiteral("paraboloid halves")}},
+                    parent) {}
 
 void OmniMapPanel::showPublication(const sl::Publication& pub) {
   auto image = [&](const std::string& key) -> const sl::FloatImage* {
@@ -89,13 +65,7 @@ void OmniMapPanel::showPublication(const sl::Publication& pub) {
   resolution_ = any->width;
   const int cell = std::min(resolution_, kMaxCellTexels);
   const int cols = cube ? 4 : 2, rows = cube ? 3 : 1;
-  depth_ = std::make_shared<sl::FloatImage>();
-  density_log2_ = std::make_shared<sl::FloatImage>();
-  for (auto* img : {depth_.get(), density_log2_.get()}) {
-    img->width = cols * cell;
-    img->height = rows * cell;
-    img->values.assign(size_t(img->width) * size_t(img->height), kNaN);
-  }
+  allocateLayout(cols * cell, rows * cell);
   const omni::ParaboloidFrame frame = omni::paraboloidFrame({0, 1, 0});  // density only
   for (int m = 0; m < (cube ? omni::kCubeFaces : 2); ++m) {
     const sl::FloatImage* src = cube ? faces[size_t(m)] : halves[size_t(m)];
@@ -151,31 +121,17 @@ void OmniMapPanel::showPublication(const sl::Publication& pub) {
 
 void OmniMapPanel::redraw() {
   if (!depth_) return;
-  const bool density = density_->isChecked();
-  const sl::FloatImage& shown = density ? *density_log2_ : *depth_;
-  const ValueRange range = density ? ValueRange{kDensityLog2Min, kDensityLog2Max}
-                                   : finiteRange(shown.values, 1, 0, 1.0f);
-  const ColorMap map = density ? ColorMap::Viridis : ColorMap::Grey;
-  view_->setImage(colorize(shown, 0, range, map), shown.width, shown.height);
-  view_->setLegend(range, map, density ? tr("log2 texels/sr") : QString(), density);
-  drawn_[QStringLiteral("density_shown")] = density;
-  drawn_[QStringLiteral("scale_min")] = double(range.lo);
-  drawn_[QStringLiteral("scale_max")] = double(range.hi);
+  showLayout();
   auto depth = depth_, log2d = density_log2_;
   view_->setValueReader([depth, log2d, nearM = nearM_, farM = farM_](int x, int y) {
     const size_t at = size_t(y) * size_t(depth->width) + size_t(x);
     const float d = depth->values[at], l = log2d->values[at];
     if (std::isnan(l)) return QObject::tr("no texel");
-    const QString stored =
-        d >= 1.0f ? QObject::tr("1 (empty)")
-        : farM > nearM
-            ? QObject::tr("%1 m (stored %2)")
-                  .arg(formatValue(omni::distanceFromStored(d, nearM, farM)), formatValue(d))
-            : formatValue(d);
-    return QObject::tr("distance = %1, %2 texels/sr").arg(stored, formatValue(std::exp2(l)));
+    return QObject::tr("distance = %1, %2 texels/sr")
+        .arg(storedDistanceText(d, nearM, farM), formatValue(std::exp2(l)));
   });
   view_->setCaption(kind_ == QLatin1String("cube") ? tr("cube faces") : tr("paraboloid discs"));
-  view_->setOverlay([this](QPainter& p, const QRectF& r) { drawProbe(p, r); });
+  view_->setOverlay([this](QPainter& p, const QRectF& r) { drawProbeMarker(p, r); });
 }
 
 std::optional<QPointF> OmniMapPanel::probeInLayout() const {
@@ -191,66 +147,20 @@ std::optional<QPointF> OmniMapPanel::probeInLayout() const {
                  (c.row + (c.rotate ? 1.0 - v : v)) * cell);
 }
 
-void OmniMapPanel::drawProbe(QPainter& painter, const QRectF& imageRect) const {
-  const std::optional<QPointF> at = probeInLayout();
-  if (!at) return;
-  const QPointF p(imageRect.left() + at->x() / depth_->width * imageRect.width(),
-                  imageRect.bottom() - at->y() / depth_->height * imageRect.height());
-  painter.setRenderHint(QPainter::Antialiasing);
-  for (const auto& [colour, width] :
-       {std::pair{QColor(0, 0, 0), 4.0}, {QColor(255, 64, 200), 2.0}}) {
-    painter.setPen(QPen(colour, width));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawEllipse(p, 7.0, 7.0);
-    painter.drawLine(p - QPointF(13, 0), p - QPointF(8, 0));
-    painter.drawLine(p + QPointF(8, 0), p + QPointF(13, 0));
-    painter.drawLine(p - QPointF(0, 13), p - QPointF(0, 8));
-    painter.drawLine(p + QPointF(0, 8), p + QPointF(0, 13));
-  }
-}
-
-void OmniMapPanel::showProbe(const std::optional<sl::PixelProbe>& probe) {
-  probe_ = probe;
-  if (!probe) {
-    probeInfo_->setText(tr("Hover over the view: a marker shows the texel its pixel looks up."));
-  } else if (!probe->covered) {
-    probeInfo_->setText(tr("Pixel (%1, %2): no surface.").arg(probe->x).arg(probe->y));
-  } else if (!probeInLayout()) {
-    probeInfo_->setText(
-        tr("Pixel (%1, %2): not looked up in an omni map.").arg(probe->x).arg(probe->y));
-  } else {
-    const bool cube = kind_ == QLatin1String("cube");
-    const QString map = cube ? tr("face %1").arg(QString::fromUtf8(omni::cubeFaceName(probe->map)))
-                             : tr("hemisphere %1").arg(probe->map);
-    probeInfo_->setText(tr("Pixel (%1, %2) looks up %3 at uv (%4, %5), texel (%6, %7): %8, m = %9.")
-                            .arg(probe->x)
-                            .arg(probe->y)
-                            .arg(map)
-                            .arg(probe->mapUv.x, 0, 'f', 3)
-                            .arg(probe->mapUv.y, 0, 'f', 3)
-                            .arg(int(probe->mapUv.x * resolution_))
-                            .arg(int(probe->mapUv.y * resolution_))
-                            .arg(probe->hard == SL_MASK_LIT ? tr("lit") : tr("shadowed"))
-                            .arg(formatValue(probe->aliasing)));
-  }
-  view_->update();
-}
-
-void OmniMapPanel::highlightPass(const QString& passId) {
-  view_->setHighlighted(passId == QLatin1String("cube faces") ||
-                        passId == QLatin1String("paraboloid halves"));
-}
-
-QJsonObject OmniMapPanel::drawnValues() const {
-  QJsonObject drawn = drawn_;
-  if (const std::optional<QPointF> at = probeInLayout()) {
-    drawn[QStringLiteral("probe_map")] = probe_->map;
-    drawn[QStringLiteral("probe_u")] = probe_->mapUv.x;
-    drawn[QStringLiteral("probe_v")] = probe_->mapUv.y;
-    drawn[QStringLiteral("probe_layout_x")] = at->x();  // texels of the drawn layout, v up
-    drawn[QStringLiteral("probe_layout_y")] = at->y();
-  }
-  return drawn;
+QString OmniMapPanel::probeText(const sl::PixelProbe& probe) const {
+  const bool cube = kind_ == QLatin1String("cube");
+  const QString map = cube ? tr("face %1").arg(QString::fromUtf8(omni::cubeFaceName(probe.map)))
+                           : tr("hemisphere %1").arg(probe.map);
+  return tr("Pixel (%1, %2) looks up %3 at uv (%4, %5), texel (%6, %7): %8, m = %9.")
+      .arg(probe.x)
+      .arg(probe.y)
+      .arg(map)
+      .arg(probe.mapUv.x, 0, 'f', 3)
+      .arg(probe.mapUv.y, 0, 'f', 3)
+      .arg(int(probe.mapUv.x * resolution_))
+      .arg(int(probe.mapUv.y * resolution_))
+      .arg(probe.hard == SL_MASK_LIT ? tr("lit") : tr("shadowed"))
+      .arg(formatValue(probe.aliasing));
 }
 
 }  // namespace sl::ui

@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 
 #include "panels/omni/OmniMapPanel.h"
+#include "panels/omni/SphericalMapPanel.h"
 
 namespace sl::ui {
 
@@ -11,6 +12,9 @@ std::vector<PanelEntry> omniPanels() {
   return {
       {QStringLiteral("omni"), QCoreApplication::translate("sl::ui::MainWindow", "Omni map"),
        Qt::BottomDockWidgetArea, [] { return new OmniMapPanel; }},
+      {QStringLiteral("spherical"),
+       QCoreApplication::translate("sl::ui::MainWindow", "Spherical map"), Qt::LeftDockWidgetArea,
+       [] { return new SphericalMapPanel; }},
   };
 }
 

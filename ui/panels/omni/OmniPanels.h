@@ -1,5 +1,6 @@
-// The omni-directional family of publication panels (cube and dual-paraboloid shadow maps,
-// seed 001): the Omni map panel.
+// The omni-directional family of publication panels: the Omni map panel (the cube and
+// dual-paraboloid shadow maps, seed 001) and the Spherical map panel (the `spherical`
+// latitude-longitude map), both on OmniPanelBase.
 #pragma once
 
 #include <vector>

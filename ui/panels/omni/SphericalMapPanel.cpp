@@ -3,14 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
-#include <QCheckBox>
 #include <QLabel>
 #include <QPainter>
 #include <QPen>
-#include <QVBoxLayout>
 
 #include "algo/omni/LatLongMapping.h"
 #include "algo/omni/OmniMapping.h"
@@ -20,37 +17,16 @@ namespace sl::ui {
 
 namespace {
 constexpr int kMaxHalfTexels = 256;  ///< each half is point-sampled to at most this
-/// The Omni map panel's density scale (log2 texels per steradian), so the three compare.
-constexpr float kDensityLog2Min = 12.0f, kDensityLog2Max = 24.0f;
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
 }  // namespace
 
-SphericalMapPanel::SphericalMapPanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
-  density_ =
-      new QCheckBox(tr("Texel density (log2 texels per steradian, the Omni map panel's scale)"));
-  density_->setObjectName(QStringLiteral("sphericalDensity"));
-  layout->addWidget(density_);
-  view_ = new ImageView;
-  view_->setObjectName(QStringLiteral("sphericalMap"));
-  layout->addWidget(view_, 1);
-  info_ = new QLabel;
-  info_->setObjectName(QStringLiteral("sphericalInfo"));
-  info_->setWordWrap(true);
-  layout->addWidget(info_);
-  probeInfo_ = new QLabel(tr("Hover over the view: a marker shows the texel its pixel looks up."));
-  probeInfo_->setObjectName(QStringLiteral("sphericalProbe"));
-  probeInfo_->setWordWrap(true);
-  layout->addWidget(probeInfo_);
-  setContent(content);
-  connect(density_, &QCheckBox::toggled, this, [this] { redraw(); });
-}
-
-std::set<std::string> SphericalMapPanel::observedKeys() const {
-  return {"sph.half.*.map", "sph.far_m"};
-}
+SphericalMapPanel::SphericalMapPanel(QWidget* parent)
+    : OmniPanelBase({.name = QStringLiteral("spherical"),
+                     .densityText = tr(
+                         "Texel density (log2 texels per steradian, the Omni map panel's scale)"),
+                     .mapNoun = tr("a lat-long map"),
+                     .keys = {"sph.half.*.map", "sph.far_m"},
+                     .passes = {QStringLiteral("lat-long halves")}},
+                    parent) {}
 
 void SphericalMapPanel::showPublication(const sl::Publication& pub) {
   const sl::FloatImage* halves[omni::kLatLongHalves] = {nullptr, nullptr};
@@ -68,13 +44,7 @@ void SphericalMapPanel::showPublication(const sl::Publication& pub) {
   showContent(true);
   resolution_ = halves[0]->height;
   const int cell = std::min(resolution_, kMaxHalfTexels);
-  depth_ = std::make_shared<sl::FloatImage>();
-  density_log2_ = std::make_shared<sl::FloatImage>();
-  for (auto* img : {depth_.get(), density_log2_.get()}) {
-    img->width = omni::kLatLongHalves * cell;
-    img->height = cell;
-    img->values.assign(size_t(img->width) * size_t(img->height), kNaN);
-  }
+  allocateLayout(omni::kLatLongHalves * cell, cell);
   // Density depends on latitude only: any frame.
   const omni::LatLongFrame frame = omni::latLongFrame({0, 1, 0});
   for (int y = 0; y < cell; ++y) {
@@ -115,31 +85,17 @@ void SphericalMapPanel::showPublication(const sl::Publication& pub) {
 
 void SphericalMapPanel::redraw() {
   if (!depth_) return;
-  const bool density = density_->isChecked();
-  const sl::FloatImage& shown = density ? *density_log2_ : *depth_;
-  const ValueRange range = density ? ValueRange{kDensityLog2Min, kDensityLog2Max}
-                                   : finiteRange(shown.values, 1, 0, 1.0f);
-  const ColorMap map = density ? ColorMap::Viridis : ColorMap::Grey;
-  view_->setImage(colorize(shown, 0, range, map), shown.width, shown.height);
-  view_->setLegend(range, map, density ? tr("log2 texels/sr") : QString(), density);
-  drawn_[QStringLiteral("density_shown")] = density;
-  drawn_[QStringLiteral("scale_min")] = double(range.lo);
-  drawn_[QStringLiteral("scale_max")] = double(range.hi);
+  showLayout();
   auto depth = depth_, log2d = density_log2_;
   view_->setValueReader([depth, log2d, farM = farM_](int x, int y) {
     const size_t at = size_t(y) * size_t(depth->width) + size_t(x);
     const float d = depth->values[at], l = log2d->values[at];
     const double lonDeg = (x + 0.5) / depth->width * 360.0 - 180.0;
     const double latDeg = (y + 0.5) / depth->height * 180.0 - 90.0;
-    const QString stored =
-        d >= 1.0f    ? QObject::tr("1 (empty)")
-        : farM > 0.0 ? QObject::tr("%1 m (stored %2)")
-                           .arg(formatValue(omni::distanceFromStored(d, 0.0, farM)), formatValue(d))
-                     : formatValue(d);
     return QObject::tr("longitude %1°, latitude %2°: distance = %3, %4 texels/sr")
         .arg(lonDeg, 0, 'f', 1)
         .arg(latDeg, 0, 'f', 1)
-        .arg(stored, formatValue(std::exp2(l)));
+        .arg(storedDistanceText(d, 0.0, farM), formatValue(std::exp2(l)));
   });
   view_->setCaption(tr("latitude-longitude map"));
   view_->setOverlay([this](QPainter& p, const QRectF& r) { drawOverlay(p, r); });
@@ -175,64 +131,23 @@ void SphericalMapPanel::drawOverlay(QPainter& painter, const QRectF& r) const {
   painter.drawText(r.adjusted(6, 4, -6, -4), Qt::AlignBottom | Qt::AlignHCenter, tr("south pole"));
   painter.drawText(r.adjusted(6, 4, -6, -4), Qt::AlignVCenter | Qt::AlignLeft, tr("seam"));
   painter.drawText(r.adjusted(6, 4, -6, -4), Qt::AlignVCenter | Qt::AlignRight, tr("seam"));
-  const std::optional<QPointF> at = probeInLayout();
-  if (!at) return;
-  const QPointF p(r.left() + at->x() / depth_->width * r.width(),
-                  r.bottom() - at->y() / depth_->height * r.height());
-  for (const auto& [colour, width] :
-       {std::pair{QColor(0, 0, 0), 4.0}, {QColor(255, 64, 200), 2.0}}) {
-    painter.setPen(QPen(colour, width));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawEllipse(p, 7.0, 7.0);
-    painter.drawLine(p - QPointF(13, 0), p - QPointF(8, 0));
-    painter.drawLine(p + QPointF(8, 0), p + QPointF(13, 0));
-    painter.drawLine(p - QPointF(0, 13), p - QPointF(0, 8));
-    painter.drawLine(p + QPointF(0, 8), p + QPointF(0, 13));
-  }
+  drawProbeMarker(painter, r);
 }
 
-void SphericalMapPanel::showProbe(const std::optional<sl::PixelProbe>& probe) {
-  probe_ = probe;
-  if (!probe) {
-    probeInfo_->setText(tr("Hover over the view: a marker shows the texel its pixel looks up."));
-  } else if (!probe->covered) {
-    probeInfo_->setText(tr("Pixel (%1, %2): no surface.").arg(probe->x).arg(probe->y));
-  } else if (!probeInLayout()) {
-    probeInfo_->setText(
-        tr("Pixel (%1, %2): not looked up in a lat-long map.").arg(probe->x).arg(probe->y));
-  } else {
-    const double lonDeg = (probe->map + double(probe->mapUv.x)) * 180.0 - 180.0;
-    const double latDeg = double(probe->mapUv.y) * 180.0 - 90.0;
-    probeInfo_->setText(
-        tr("Pixel (%1, %2) looks up half %3 at longitude %4°, latitude %5°, texel (%6, %7): "
-           "%8, m = %9.")
-            .arg(probe->x)
-            .arg(probe->y)
-            .arg(probe->map)
-            .arg(lonDeg, 0, 'f', 1)
-            .arg(latDeg, 0, 'f', 1)
-            .arg(int((probe->map + probe->mapUv.x) * resolution_))
-            .arg(int(probe->mapUv.y * resolution_))
-            .arg(probe->hard == SL_MASK_LIT ? tr("lit") : tr("shadowed"))
-            .arg(formatValue(probe->aliasing)));
-  }
-  view_->update();
-}
-
-void SphericalMapPanel::highlightPass(const QString& passId) {
-  view_->setHighlighted(passId == QLatin1String("lat-long halves"));
-}
-
-QJsonObject SphericalMapPanel::drawnValues() const {
-  QJsonObject drawn = drawn_;
-  if (const std::optional<QPointF> at = probeInLayout()) {
-    drawn[QStringLiteral("probe_map")] = probe_->map;
-    drawn[QStringLiteral("probe_u")] = probe_->mapUv.x;
-    drawn[QStringLiteral("probe_v")] = probe_->mapUv.y;
-    drawn[QStringLiteral("probe_layout_x")] = at->x();
-    drawn[QStringLiteral("probe_layout_y")] = at->y();
-  }
-  return drawn;
+QString SphericalMapPanel::probeText(const sl::PixelProbe& probe) const {
+  const double lonDeg = (probe.map + double(probe.mapUv.x)) * 180.0 - 180.0;
+  const double latDeg = double(probe.mapUv.y) * 180.0 - 90.0;
+  return tr("Pixel (%1, %2) looks up half %3 at longitude %4°, latitude %5°, texel (%6, %7): "
+            "%8, m = %9.")
+      .arg(probe.x)
+      .arg(probe.y)
+      .arg(probe.map)
+      .arg(lonDeg, 0, 'f', 1)
+      .arg(latDeg, 0, 'f', 1)
+      .arg(int((probe.map + probe.mapUv.x) * resolution_))
+      .arg(int(probe.mapUv.y * resolution_))
+      .arg(probe.hard == SL_MASK_LIT ? tr("lit") : tr("shadowed"))
+      .arg(formatValue(probe.aliasing));
 }
 
 }  // namespace sl::ui

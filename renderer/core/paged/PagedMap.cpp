@@ -89,6 +89,19 @@ std::vector<ParamDecl> pagedMapParamDecls() {
   return p;
 }
 
+ParamDecl pagedRenderParamDecl(std::string key, std::string group, std::string help) {
+  return {.key = std::move(key),
+          .label = "Render",
+          .group = std::move(group),
+          .type = ParamType::Enum,
+          .defaultValue = kPagedRenderPages,
+          .minValue = 0,
+          .maxValue = 1,
+          .step = 1,
+          .enumNames = {"superpages", "pages"},
+          .help = std::move(help)};
+}
+
 std::vector<PublicationDecl> pagedMapPublicationDecls() {
   return {
       {"pages.table.*",
@@ -168,15 +181,6 @@ std::vector<int> PagedMap::pageGrid() const {
   std::vector<int> n;
   for (int l = 0; l < layout_.levels(); ++l) n.push_back(layout_.pagesPerSide(l));
   return n;
-}
-
-void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help) {
-  for (ParamDecl& d : decls)
-    if (d.key == key) {
-      d.help = std::move(help);
-      return;
-    }
-  throw std::logic_error("setParamHelp: no parameter '" + key + "'");
 }
 
 int poolColumnsFor(int pages) {

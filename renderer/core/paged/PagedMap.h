@@ -26,8 +26,13 @@ class GpuTimer;
 /// (bias, PCF; no `resolution`), virtual.resolution, page.size, lod.bias, pool.pages (rmsm's
 /// help texts; a technique replaces a help text with setParamHelp).
 std::vector<ParamDecl> pagedMapParamDecls();
-/// Replaces the help text of `key` in `decls`; throws std::logic_error when it is absent.
-void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help);
+/// The values of a paged technique's render step (rmsm.render, asm.render, in this order): the
+/// pages binned into superpages, each rendered once and its pages copied into the pool
+/// (PagedMap::renderSuperpages), or each page rendered straight into its slot (renderPages).
+inline constexpr int kPagedRenderSuperpages = 0, kPagedRenderPages = 1;
+/// The declaration of a paged technique's render step `key` (pages by default; `help` says
+/// what the technique does with each value).
+ParamDecl pagedRenderParamDecl(std::string key, std::string group, std::string help);
 
 /// The Pages panel's publications, declared once for rmsm and asm (pages.table.*, pages.served,
 /// pages.requests.heat, pages.pool.levels, pages.pool.depth, pages.pool.columns,

@@ -2,7 +2,7 @@
 // `fvsm` (Giegl & Wimmer, GI 2007): a tile's depth target, the tiles' bias parameters, the uv
 // range a tile serves, and the deferred application of one tile over the screen
 // (shaders/common/tiled/apply_tile.comp), each pixel's position rebuilt from the eye-space
-// depth buffer (core/EyeDepthBuffer.h). The tile views themselves are core/ShadowPass's
+// depth buffer (core/tiled/EyeDepthBuffer.h). The tile views themselves are core/ShadowPass's
 // focusedMapView and subRectView.
 #pragma once
 
@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/EyeDepthBuffer.h"
+#include "core/tiled/EyeDepthBuffer.h"
 #include "core/ShadowPass.h"
 #include "core/Technique.h"
 

@@ -4,6 +4,7 @@
 #include "GltfLoader.h"
 
 #include "algo/InputFile.h"
+#include "algo/TriangleBvh.h"
 #include "scene/DataDir.h"
 
 #include <algorithm>
@@ -436,148 +437,6 @@ struct NodeInstance {
   int node = -1;
   glm::dmat4 world{1.0};
   glm::dmat4 parentWorld{1.0};
-};
-
-/// Distance along a ray to triangle (a, b, c), either side (Moeller-Trumbore), or +inf.
-float rayTriangle(const glm::vec3& origin, const glm::vec3& dir, const glm::vec3& a,
-                  const glm::vec3& b, const glm::vec3& c) {
-  constexpr float miss = std::numeric_limits<float>::infinity();
-  glm::vec3 e1 = b - a;
-  glm::vec3 e2 = c - a;
-  glm::vec3 pv = glm::cross(dir, e2);
-  float det = glm::dot(e1, pv);
-  if (std::abs(det) < 1e-12f) return miss;
-  float inv = 1.0f / det;
-  glm::vec3 tv = origin - a;
-  float u = glm::dot(tv, pv) * inv;
-  if (u < 0.0f || u > 1.0f) return miss;
-  glm::vec3 qv = glm::cross(tv, e1);
-  float v = glm::dot(dir, qv) * inv;
-  if (v < 0.0f || u + v > 1.0f) return miss;
-  float dist = glm::dot(e2, qv) * inv;
-  return dist > 0.0f ? dist : miss;
-}
-
-/// A bounding volume hierarchy over the triangles of a scene's primitives, for first-hit
-/// rays: O(n log n) to build (median splits), about O(log n) a ray. Built and walked with
-/// explicit stacks (no recursion). The hit is the one a test of every triangle finds.
-class TriangleBvh {
- public:
-  explicit TriangleBvh(const std::vector<MeshPrimitive>& prims) : prims_(prims) {
-    struct Build {
-      Ref ref;
-      glm::vec3 centroid;
-    };
-    std::vector<Build> items;
-    for (std::size_t p = 0; p < prims.size(); ++p)
-      for (std::size_t t = 0; t + 2 < prims[p].indices.size(); t += 3) {
-        auto [a, b, c] = corners({std::uint32_t(p), std::uint32_t(t)});
-        items.push_back({{std::uint32_t(p), std::uint32_t(t)}, (a + b + c) / 3.0f});
-      }
-    if (items.empty()) return;
-    struct Range {
-      std::size_t node, begin, end;
-    };
-    nodes_.push_back({});
-    std::vector<Range> todo{{0, 0, items.size()}};
-    while (!todo.empty()) {
-      const Range r = todo.back();
-      todo.pop_back();
-      Aabb box, centroids;
-      for (std::size_t i = r.begin; i < r.end; ++i) {
-        auto [a, b, c] = corners(items[i].ref);
-        box.extend(a), box.extend(b), box.extend(c);
-        centroids.extend(items[i].centroid);
-      }
-      // Padded, so that a hit a rounding error outside its triangle is not culled.
-      const glm::vec3 mag = glm::max(glm::abs(box.min), glm::abs(box.max)) + box.size();
-      const float pad = 1e-5f * std::max({mag.x, mag.y, mag.z});
-      Node& node = nodes_[r.node];
-      node.lo = box.min - pad;
-      node.hi = box.max + pad;
-      const glm::vec3 spread = centroids.size();
-      const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0
-                       : spread.y >= spread.z                       ? 1
-                                                                    : 2;
-      if (r.end - r.begin <= kLeafSize || !(spread[axis] > 0.0f)) {
-        node.first = std::uint32_t(r.begin);
-        node.count = std::uint32_t(r.end - r.begin);
-        continue;
-      }
-      const std::size_t mid = r.begin + (r.end - r.begin) / 2;
-      std::nth_element(
-          items.begin() + std::ptrdiff_t(r.begin), items.begin() + std::ptrdiff_t(mid),
-          items.begin() + std::ptrdiff_t(r.end),
-          [axis](const Build& x, const Build& y) { return x.centroid[axis] < y.centroid[axis]; });
-      const std::size_t left = nodes_.size();
-      nodes_[r.node].first = std::uint32_t(left);  // `node` is invalidated by the push_back
-      nodes_.push_back({});
-      nodes_.push_back({});
-      todo.push_back({left, r.begin, mid});
-      todo.push_back({left + 1, mid, r.end});
-    }
-    refs_.reserve(items.size());
-    for (const Build& item : items) refs_.push_back(item.ref);
-  }
-
-  float firstHit(const glm::vec3& origin, const glm::vec3& dir) const {
-    float best = std::numeric_limits<float>::infinity();
-    if (nodes_.empty()) return best;
-    std::vector<std::uint32_t> stack{0};
-    while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      stack.pop_back();
-      if (!mayHit(node, origin, dir, best)) continue;
-      if (node.count == 0) {
-        stack.push_back(node.first);
-        stack.push_back(node.first + 1);
-        continue;
-      }
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-        auto [a, b, c] = corners(refs_[i]);
-        best = std::min(best, rayTriangle(origin, dir, a, b, c));
-      }
-    }
-    return best;
-  }
-
- private:
-  static constexpr std::size_t kLeafSize = 4;
-  struct Ref {
-    std::uint32_t prim, index;  ///< primitive, offset of the triangle's first index
-  };
-  struct Node {
-    glm::vec3 lo{0.0f}, hi{0.0f};
-    std::uint32_t first = 0;  ///< leaf: first ref; inner: left child (right = first + 1)
-    std::uint32_t count = 0;  ///< refs in a leaf, 0 for an inner node
-  };
-
-  std::array<glm::vec3, 3> corners(Ref r) const {
-    const MeshPrimitive& prim = prims_[r.prim];
-    return {prim.positions[prim.indices[r.index]], prim.positions[prim.indices[r.index + 1]],
-            prim.positions[prim.indices[r.index + 2]]};
-  }
-
-  /// Whether the ray can meet the node's box at a distance in [0, maxDist].
-  static bool mayHit(const Node& n, const glm::vec3& o, const glm::vec3& d, float maxDist) {
-    float tNear = 0.0f, tFar = maxDist;
-    for (int a = 0; a < 3; ++a) {
-      if (d[a] == 0.0f) {
-        if (o[a] < n.lo[a] || o[a] > n.hi[a]) return false;
-        continue;
-      }
-      float t0 = (n.lo[a] - o[a]) / d[a], t1 = (n.hi[a] - o[a]) / d[a];
-      if (t0 > t1) std::swap(t0, t1);
-      tNear = std::max(tNear, t0);
-      tFar = std::min(tFar, t1);
-      if (tNear > tFar) return false;
-    }
-    return true;
-  }
-
-  const std::vector<MeshPrimitive>& prims_;
-  std::vector<Ref> refs_;
-  std::vector<Node> nodes_;
 };
 
 /// How a material maps its base colour texture: which TEXCOORD set, which transform.
@@ -1209,7 +1068,13 @@ class Flattener {
   /// built on the first call: a ray per camera through every triangle was O(cameras x
   /// triangles), 111 s for 10^5 cameras each on a node with a mesh.
   float firstHit(const glm::vec3& origin, const glm::vec3& dir) {
-    if (!bvh_) bvh_.emplace(scene_.primitives);
+    if (!bvh_) {
+      std::vector<TriangleMeshView> meshes;
+      meshes.reserve(scene_.primitives.size());
+      for (const MeshPrimitive& prim : scene_.primitives)
+        meshes.push_back({prim.positions, prim.indices});
+      bvh_.emplace(std::move(meshes));
+    }
     return bvh_->firstHit(origin, dir);
   }
 

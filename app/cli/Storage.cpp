@@ -49,7 +49,7 @@ struct StorageOptions {
   std::optional<double> focus;  // --focus: tsm
   int partitions = 0;           // 0: the scheme's default (4 for cascades, 1 otherwise)
   partition::SplitScheme split = partition::SplitScheme::Log;
-  double lambda = 0.5;
+  double lambda = partition::kDefaultSplitLambda;
   bool partitionWarp = true;
   int grid = 101;
   std::string csv, out;

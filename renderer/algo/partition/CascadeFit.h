@@ -23,8 +23,8 @@ namespace sl::partition {
 struct CascadeSettings {
   int partitions = 4;  ///< k, 1..8
   SplitScheme split = SplitScheme::Practical;
-  double lambda = 0.5;    ///< practical split blend
-  int resolution = 1024;  ///< texels per side of every partition's map
+  double lambda = kDefaultSplitLambda;  ///< practical split blend
+  int resolution = 1024;                ///< texels per side of every partition's map
   /// Stabilised: the split range quantised to 1/8 octave, each frustum the slice's bounding
   /// sphere (extent quantised, centre snapped to whole texels). Else fitted tightly.
   bool stabilize = true;

@@ -48,7 +48,7 @@ struct SchemeSettings {
   double eta = 0.0;                      ///< Scheme::Eta
   int partitions = 1;                    ///< k for Cascades, FaceCascades
   SplitScheme split = SplitScheme::Log;  ///< how the k parts are cut
-  double lambda = 0.5;                   ///< practical split blend
+  double lambda = kDefaultSplitLambda;   ///< practical split blend
   std::vector<double> customSplits;      ///< k + 1 distances overriding `split` when set
   bool partitionWarp = true;             ///< Cascades: LiSPSM per part (else uniform)
   double tsmFocusFraction = 0.5;         ///< Scheme::Tsm

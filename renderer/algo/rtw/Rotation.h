@@ -26,7 +26,10 @@
 
 namespace sl::rtw {
 
-/// Default and range of the vibration threshold on e_x (seed 000 uses 0.9999).
+/// The vibration threshold on e_x: the parameter's key (also the number published under it),
+/// default and range (seed 000 uses 0.9999). DA-RTW's declaration, its panel and
+/// updateRotation read them here.
+inline constexpr const char* kHoldThresholdKey = "pca.threshold";
 inline constexpr double kDefaultHoldThreshold = 0.9999;
 inline constexpr double kMinHoldThreshold = 0.9;
 inline constexpr double kMaxHoldThreshold = 1.0;

@@ -208,7 +208,7 @@ std::vector<PublicationDecl> RtwShadowMap::publicationDecls(const std::string& i
                         "rotation.deg",
                         "rotation.step_deg",
                         "rotation.changes",
-                        "pca.threshold",
+                        rtw::kHoldThresholdKey,
                         "pca.min_anisotropy",
                         "pca.min_spread",
                         "pca.axis_deg",

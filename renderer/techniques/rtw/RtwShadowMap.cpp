@@ -298,7 +298,7 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
                  "each with its edge's direction in the light plane (a hard shadow is wrong only "
                  "near an edge, by the texel's width across it). pixels: every pixel the camera "
                  "sees, edges of every direction alike."});
-    add({.key = "pca.threshold",
+    add({.key = rtw::kHoldThresholdKey,
          .label = "Vibration threshold",
          .group = "Rotation",
          .type = ParamType::Float,
@@ -570,9 +570,9 @@ void RtwShadowMap::rotationFromLastMoments(FrameContext& ctx) {
   const float spread = std::max(spreadX, spreadY);
   publishNumber(ctx, "pca.spread", spread);
   if (pca) {
-    lastUpdate_ = rtw::updateRotation(carried_->rotation, stats, float(p.get("pca.threshold")),
-                                      float(p.get("pca.min_anisotropy")), spread,
-                                      float(p.get("pca.min_spread")));
+    lastUpdate_ = rtw::updateRotation(
+        carried_->rotation, stats, float(p.get(rtw::kHoldThresholdKey)),
+        float(p.get("pca.min_anisotropy")), spread, float(p.get("pca.min_spread")));
   } else {  // the axis shown, not turned along
     if (predicted) ++carried_->rotation.frames;
     lastUpdate_.valid = stats.valid;
@@ -677,7 +677,7 @@ void RtwShadowMap::predictTurn(FrameContext& ctx, std::optional<double> pcaAxisD
   lastSearch_ = rtw::searchTurn(carried_->rotation.angleDeg(), pcaAxisDeg, predict,
                                 0.5 * p.get("rotation.margin"));
   const double threshold =
-      std::clamp(p.get("pca.threshold"), rtw::kMinHoldThreshold, rtw::kMaxHoldThreshold);
+      std::clamp(p.get(rtw::kHoldThresholdKey), rtw::kMinHoldThreshold, rtw::kMaxHoldThreshold);
   const double holdDeg = std::acos(threshold) * 180.0 / std::numbers::pi;
   lastDecision_ = rtw::decideTurn(lastSearch_, p.get("rotation.margin"), holdDeg);
   predicted_ = true;
@@ -1014,7 +1014,7 @@ void RtwShadowMap::publishRotation(FrameContext& ctx) {
   publishNumber(ctx, "rotation.step_deg", lastUpdate_.stepDeg);
   publishNumber(ctx, "rotation.changes", carried_->rotation.changes);
   publishNumber(ctx, "rotation.frames", carried_->rotation.frames);
-  publishNumber(ctx, "pca.threshold", p.get("pca.threshold"));
+  publishNumber(ctx, rtw::kHoldThresholdKey, p.get(rtw::kHoldThresholdKey));
   publishNumber(ctx, "pca.min_anisotropy", p.get("pca.min_anisotropy"));
   publishNumber(ctx, "pca.min_spread", p.get("pca.min_spread"));
 }

@@ -162,7 +162,7 @@ class ThresholdGauge : public QWidget {
         std::clamp((e->position().x() - t.left()) / std::max(1.0, t.width()), 0.0, 1.0);
     if (onChosen_) onChosen_(1.0 - std::pow(10.0, kL0 + f * (kL1 - kL0)));
   }
-  double ex_ = 1.0, threshold_ = 0.9999;
+  double ex_ = 1.0, threshold_ = sl::rtw::kDefaultHoldThreshold;
   bool valid_ = false;
   double bandLo_ = 0.0, bandHi_ = 0.0;
   int bandFrames_ = 0;
@@ -193,7 +193,7 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   gauge_ = new ThresholdGauge;
   gauge_->setObjectName(QStringLiteral("thresholdGauge"));
   gauge_->setOnChosen([this](double threshold) {
-    Q_EMIT parameterChosen(QStringLiteral("pca.threshold"), threshold);
+    Q_EMIT parameterChosen(QString::fromLatin1(sl::rtw::kHoldThresholdKey), threshold);
   });
   outer->addWidget(gauge_);
   auto* middle = new QHBoxLayout;
@@ -356,7 +356,7 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   const bool metres = !(n.count("pca.scale.x") && sx == 1.0 && sy == 1.0);
   const sl::rtw::MomentStats s =
       sl::rtw::momentsFromTop(sums, glm::vec2(static_cast<float>(sx), static_cast<float>(sy)));
-  threshold_ = numberOr(n, "pca.threshold", threshold_);
+  threshold_ = numberOr(n, sl::rtw::kHoldThresholdKey, threshold_);
 
   // The axis in metres and as drawn on the IM's texel grid.
   const double axisDeg = std::atan2(s.ey, s.ex) * 180.0 / kPi;

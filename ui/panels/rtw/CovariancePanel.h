@@ -14,6 +14,7 @@
 #include <QString>
 #include <QStringList>
 
+#include "algo/rtw/Rotation.h"
 #include "panels/common/PanelKit.h"
 #include "panels/rtw/RtwPanelKeys.h"
 
@@ -106,7 +107,7 @@ class CovariancePanel : public PublicationPanel {
     bool held;
   };
   std::deque<Sample> history_;
-  double threshold_ = 0.9999;
+  double threshold_ = sl::rtw::kDefaultHoldThreshold;
   QJsonObject drawn_;
 };
 

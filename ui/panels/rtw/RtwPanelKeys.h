@@ -6,6 +6,8 @@
 #include <set>
 #include <string>
 
+#include "algo/rtw/Rotation.h"
+
 namespace sl::ui::rtw {
 
 /// Importance map panel: the raw IM and the collapsed / blurred 1D maps.
@@ -26,7 +28,7 @@ inline std::set<std::string> covariancePanelKeys() {
           "moment.xyI",
           "light.extent.x",
           "light.extent.y",
-          "pca.threshold",
+          sl::rtw::kHoldThresholdKey,
           "pca.valid",
           "e_x",
           "e_y",

@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "algo/rtw/Rotation.h"
 #include "core/Renderer.h"
 
 namespace sl::ui::rtwsettle {
@@ -21,7 +22,7 @@ inline bool settlesRotation(const sl::TechniqueInfo& info) {
 }
 
 /// DA-RTW's vibration threshold: the parameter (and the published number) of that name.
-inline constexpr const char* kThresholdKey = "pca.threshold";
+inline constexpr const char* kThresholdKey = sl::rtw::kHoldThresholdKey;
 
 /// The principal axis' x component, as published and as the Covariance panel draws it.
 inline constexpr const char* kExKey = "e_x";

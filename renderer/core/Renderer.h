@@ -100,6 +100,10 @@ struct TechniqueInfo {
   /// yet (no estimate from a last frame).
   std::set<std::string> settleKeys;
   std::function<std::optional<bool>(const Publication&)> settled;
+  /// What a pattern of the technique's own in the aliasing overlay (view.overlay = aliasing)
+  /// comes from, one or two sentences the overlay's legend shows under its colour bar; empty
+  /// when the technique draws none (m then only follows distance and slope).
+  std::string aliasingPattern;
   /// A deferred technique that times its tiles as repeated passes (virtual-tiled, fvsm): when
   /// `key` (a Curve it declares) is requested, the renderer publishes per tile, in the order
   /// the tiles were applied, two values: the ms of the `depthPass` scopes since the previous

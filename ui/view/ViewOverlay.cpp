@@ -128,6 +128,13 @@ QString ViewOverlay::legendText() const {
   return {};
 }
 
+int ViewOverlay::aliasingNoteHeight(double legendWidth) const {
+  const int w = std::max(1, int(legendWidth) - 20);  // the bar's width
+  return fontMetrics()
+      .boundingRect(QRect(0, 0, w, 100000), Qt::AlignLeft | Qt::TextWordWrap, aliasingNote)
+      .height();
+}
+
 QVector<ViewOverlay::Box> ViewOverlay::layout() const {
   QVector<Box> boxes;
   const QFontMetrics fm = fontMetrics();
@@ -185,6 +192,11 @@ QVector<ViewOverlay::Box> ViewOverlay::layout() const {
       // As wide as its caption (and at least the bar's 260 px), never cutting it.
       size = {std::min<double>(W - 24, std::max(260, fm.horizontalAdvance(legendText()) + 24)),
               2.0 * line + 22};
+      if (!aliasingNote.isEmpty()) {
+        // The note wraps in the bar's width, or up to 28 lines' height wide where it is longer.
+        size.setWidth(std::min(W - 24, std::max(size.width(), 28.0 * line)));
+        size.rheight() += aliasingNoteHeight(size.width()) + 4;
+      }
     } else if (legend == Legend::Error) {
       const int tw =
           std::max({fm.horizontalAdvance(errorRows()[0]), fm.horizontalAdvance(errorRows()[1]),
@@ -364,6 +376,10 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
     p.drawText(labels, Qt::AlignRight, QStringLiteral("\u2265 16"));
     p.drawText(QRectF(bar.left(), labels.bottom(), bar.width(), line), Qt::AlignHCenter,
                legendText());
+    if (!aliasingNote.isEmpty())
+      p.drawText(QRectF(bar.left(), labels.bottom() + line + 4, bar.width(),
+                        aliasingNoteHeight(r.width())),
+                 Qt::AlignLeft | Qt::TextWordWrap, aliasingNote);
   } else if (legend == Legend::Error) {
     const QRectF r = legendRect;
     const double tw = r.width();

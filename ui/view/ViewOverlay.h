@@ -38,7 +38,10 @@ class ViewOverlay : public QWidget {
   /// The light gizmo (widget pixels): lines, and the light's own point when on screen.
   QVector<QLineF> gizmoLines;
   std::optional<QPointF> gizmoPoint;
-  QString errorNote;       ///< under the error legend: the reference's state, empty when current
+  QString errorNote;  ///< under the error legend: the reference's state, empty when current
+  /// Under the aliasing legend: what the main technique's own pattern in m comes from
+  /// (TechniqueInfo::aliasingPattern), empty when it draws none.
+  QString aliasingNote;
   QString resolutionNote;  ///< adaptive resolution: the internal size and why (empty: full)
   /// The changed overlay's count (pixels whose hard test flipped since the last frame, of
   /// those covered in both), or nothing yet.
@@ -96,6 +99,8 @@ class ViewOverlay : public QWidget {
   /// The one-line text of the overlay legend (the aliasing bar's caption, the changed count,
   /// the warp grid's note); empty for the error legend, which has rows.
   QString legendText() const;
+  /// The height of aliasingNote wrapped in an aliasing legend `legendWidth` wide.
+  int aliasingNoteHeight(double legendWidth) const;
   /// The error legend's two rows (false lit, false shadowed), beside their colours.
   static std::array<QString, 2> errorRows();
   /// insetRect and insetFactor from a layout's Inset box (none: empty, 0).

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "algo/partition/Splits.h"
 #include "common/shared_constants.h"
 #include "core/PartitionMStats.h"
 #include "core/Publish.h"
@@ -60,7 +61,7 @@ TechniqueInfo CascadedShadowMap::info() {
        .label = "Practical lambda",
        .group = "Cascades",
        .type = ParamType::Float,
-       .defaultValue = 0.5,
+       .defaultValue = partition::kDefaultSplitLambda,
        .minValue = 0.0,
        .maxValue = 1.0,
        .step = 0.05,
@@ -124,6 +125,9 @@ TechniqueInfo CascadedShadowMap::info() {
                      "frustum, selected per pixel by view depth. Directional light only.",
                      std::move(p)};
   info.temporalState = true;  // depth.fit's held range (stabilize: hysteresis)
+  info.aliasingPattern =
+      "Steps across the view: each cascade has its own texel size, so m jumps at every split "
+      "distance (the partition overlay colours the cascades).";
   info.passes = {
       {"depth range", "Depth range reduction",
        "Min and max view depth over this frame's G-buffer's covered pixels (a compute "

@@ -364,6 +364,10 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   info.lights = {LightType::Directional};
   info.temporalRotation = id == "da-rtw";
   info.temporalState = info.temporalRotation;  // the rotation and the moments it is read from
+  info.aliasingPattern =
+      "Straight bands along the light's axes: the warp is separable, so a whole row and column "
+      "of the map get the density of their most important point (a steep face, something near "
+      "the camera) and the ground along them is oversampled (blue).";
   if (info.temporalRotation) {
     info.settleKeys = {"pca.valid",     "rotation.held",     "rotation.step_deg",
                        "rotation.mode", "prediction.reason", "rotation.frames"};

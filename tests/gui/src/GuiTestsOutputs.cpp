@@ -28,7 +28,7 @@ bool GuiTests::outputPolicy(const QString& dirPath) {
   const QString buffer = dir.filePath(QStringLiteral("viewport.png"));
   const QString link = dir.filePath(QStringLiteral("link.json"));
   const QString fifo = dir.filePath(QStringLiteral("fifo.png"));
-  check(QFileInfo(w_.sceneSpec()).canonicalFilePath() == QFileInfo(scene).canonicalFilePath(),
+  check(QFileInfo(auto_.sceneShown()).canonicalFilePath() == QFileInfo(scene).canonicalFilePath(),
         tr("the window shows %1").arg(scene));
   const QByteArray sceneBytes = contents(scene), bufferBytes = contents(buffer);
   check(!sceneBytes.isEmpty() && !bufferBytes.isEmpty(), tr("the scene's files are there"));
@@ -47,7 +47,7 @@ bool GuiTests::outputPolicy(const QString& dirPath) {
           tr("after Save session %1 the scene's files are unchanged").arg(path));
   }
   // File > Export figure onto the buffer: refused, named.
-  const std::optional<QString> figure = w_.exportFigure(buffer);
+  const std::optional<QString> figure = auto_.exportFigure(buffer);
   check(figure && figure->contains(QStringLiteral("the same file as the scene's file")),
         tr("Export figure onto the scene's buffer refused: %1").arg(figure.value_or(QString())));
   check(contents(buffer) == bufferBytes, tr("the buffer is unchanged"));

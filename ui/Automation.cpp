@@ -14,6 +14,8 @@
 #include "launch/LaunchOptions.h"
 #include "teaching/LessonController.h"
 #include "window/MainWindow.h"
+#include "window/SessionFiles.h"
+#include "teaching/TeachingBar.h"
 #include "window/StatusLine.h"
 #include "window/WindowImages.h"
 #include "view/ViewportWidget.h"
@@ -103,6 +105,31 @@ void Automation::stepFrame() {
 
 void Automation::setPresenterMode(bool on) {
   w_.setPresenterMode(on);
+}
+
+void Automation::setSplit(const QString& techniqueId,
+                          const std::map<std::string, std::string>& params) {
+  w_.teaching()->setSplitTechnique(techniqueId, params);
+}
+
+void Automation::toggleSplit() {
+  w_.teaching()->toggleSplit();
+}
+
+void Automation::cycleOverlay() {
+  w_.teaching()->cycleOverlay();
+}
+
+bool Automation::saveSession(const QString& path) {
+  return w_.sessions()->save(path);
+}
+
+bool Automation::openSession(const QString& path) {
+  return w_.sessions()->open(path);
+}
+
+QStringList Automation::recentSessions() const {
+  return w_.sessions()->recent();
 }
 
 bool Automation::waitForFrames(int frames, int timeoutMs) {

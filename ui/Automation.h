@@ -7,12 +7,14 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 
 #include <QImage>
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include "view/ViewportWidget.h"
 #include "core/Renderer.h"
@@ -63,6 +65,18 @@ class Automation : public QObject {
   void stepFrame();
   /// As F11 (View > Presenter mode).
   void setPresenterMode(bool on);
+  /// As the teaching bar's "Compare with": `techniqueId` on the split view's right half with
+  /// its own parameters (KEY -> text); empty: the split view off.
+  void setSplit(const QString& techniqueId, const std::map<std::string, std::string>& params = {});
+  /// As the teaching bar's Split button / View > Split view.
+  void toggleSplit();
+  /// As View > Next overlay.
+  void cycleOverlay();
+  /// As File > Save session / Open session (no dialog); false (reported) on failure.
+  bool saveSession(const QString& path);
+  bool openSession(const QString& path);
+  /// File > Recent sessions, newest first.
+  QStringList recentSessions() const;
 
   /// Renders until `frames` more frames are drawn; false on timeout.
   [[nodiscard]] bool waitForFrames(int frames, int timeoutMs = 30000);

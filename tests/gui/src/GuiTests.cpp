@@ -772,7 +772,7 @@ bool GuiTests::teaching(const QString& dir) {
   const sl::ParamDecl* overlay = shared.find("view.overlay");
   QStringList values;
   for (std::size_t i = 0; overlay && i < overlay->enumNames.size(); ++i) {
-    w_.teaching()->cycleOverlay();
+    auto_.cycleOverlay();
     waitForFrames(1);
     values << QString::fromStdString(shared.format("view.overlay"));
     saveImage(w_.viewport()->grabView(), QStringLiteral("overlay-%1.png").arg(values.back()));
@@ -782,7 +782,7 @@ bool GuiTests::teaching(const QString& dir) {
         tr("O cycles the overlays: %1").arg(values.join(QStringLiteral(", "))));
 
   // 3. Split view: the other technique on the right half, both errors measured.
-  w_.teaching()->toggleSplit();
+  auto_.toggleSplit();
   waitForFrames(2);
   const auto error = w_.viewport()->computeErrorNow();
   waitForFrames(1);
@@ -793,7 +793,7 @@ bool GuiTests::teaching(const QString& dir) {
             .arg(QString::fromStdString(w_.viewport()->splitTechnique()))
             .arg(w_.viewport()->splitErrorPct().value_or(-1), 0, 'f', 3));
   saveImage(w_.viewport()->grabView(), QStringLiteral("split.png"));
-  w_.teaching()->toggleSplit();
+  auto_.toggleSplit();
   check(w_.viewport()->splitTechnique().empty(), tr("F7 again ends the split view"));
 
   // 3b. Outside view: V shows the third camera (the renderer reports it); a left drag orbits

@@ -186,7 +186,7 @@ bool GuiTests::liveError(const QString& dir) {
   // The split view's right half (uniform at 512, the left at its own resolution): its own
   // live error within the time limit, its age in its caption, equal to the synchronous
   // error of the same still frame; a camera move makes it stale, then fresh again.
-  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
+  auto_.setSplit(QStringLiteral("uniform"), {{"resolution", "512"}});
   auto waitSplitFresh = [&]() -> qint64 {
     QElapsedTimer splitClock;
     splitClock.start();
@@ -237,7 +237,7 @@ bool GuiTests::liveError(const QString& dir) {
   check(splitAgainMs >= 0, tr("the right half fresh again %1 ms after the move").arg(splitAgainMs));
   if (!dir.isEmpty())
     view->grabView().save(QDir(dir).filePath(QStringLiteral("live-error-split.png")));
-  w_.teaching()->setSplitTechnique(QString());
+  auto_.setSplit(QString());
 
   // Leave right after a move (a trace possibly running): the window closes (a running trace is
   // cancelled and joined), exit 0.
@@ -379,10 +379,10 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   auto_.setPresenterMode(false);
   waitForFrames(1, 300000);
   check(view->adaptiveActive(), tr("presenter mode off: active again"));
-  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"));
+  auto_.setSplit(QStringLiteral("uniform"));
   waitForFrames(1, 300000);
   check(!view->adaptiveActive(), tr("split view: adaptive resolution not used"));
-  w_.teaching()->setSplitTechnique(QString());
+  auto_.setSplit(QString());
   waitForFrames(1, 300000);
   check(view->adaptiveActive(), tr("split view off: active again"));
   check(auto_.openLesson(QStringLiteral("1")) && auto_.waitForSettled(300000),

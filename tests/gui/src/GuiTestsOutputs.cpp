@@ -40,7 +40,7 @@ bool GuiTests::outputPolicy(const QString& dirPath) {
   readAndCloseDialogs(driver, dialogText);
   for (const QString& path : {scene, buffer, link}) {
     dialogText.clear();
-    const bool saved = w_.sessions()->save(path);
+    const bool saved = auto_.saveSession(path);
     check(!saved && dialogText.contains(QStringLiteral("is the same file as")),
           tr("Save session %1 refused: \"%2\"").arg(path, dialogText.left(200)));
     check(contents(scene) == sceneBytes && contents(buffer) == bufferBytes,
@@ -61,7 +61,7 @@ bool GuiTests::outputPolicy(const QString& dirPath) {
             .arg(toFifo.value_or(QString())));
   // A new session: written whole, nothing left beside it.
   const QString fresh = dir.filePath(QStringLiteral("fresh-session.json"));
-  check(w_.sessions()->save(fresh) && QFileInfo(fresh).size() > 0, tr("a new session saved"));
+  check(auto_.saveSession(fresh) && QFileInfo(fresh).size() > 0, tr("a new session saved"));
   const QStringList left = dir.entryList({QStringLiteral(".*tmp*")}, QDir::Hidden | QDir::Files);
   check(left.isEmpty(), tr("no temporary file left (%1)").arg(left.join(QStringLiteral(", "))));
   driver.stop();

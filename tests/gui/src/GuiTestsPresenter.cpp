@@ -510,7 +510,7 @@ bool GuiTests::splitParams(const QString& dir) {
   ViewportWidget* v = w_.viewport();
   sl::ViewSide* main = v->mainSide();
   const std::string other = "rtw-backward";
-  w_.teaching()->setSplitTechnique(QString::fromStdString(other));  // as "Compare with" does
+  auto_.setSplit(QString::fromStdString(other));  // as "Compare with" does
   if (v->splitTechnique() != other) {
     check(false, tr("the split view shows %1").arg(QString::fromStdString(other)));
     return false;
@@ -633,7 +633,7 @@ bool GuiTests::splitParams(const QString& dir) {
   checkEqualMemory(tr("re-matched"));
   // A second pair: rmsm's memory is its physical pool, so equal memory sets pool.pages (its
   // virtual.resolution, a resolution in name, spends no byte).
-  w_.teaching()->setSplitTechnique(QStringLiteral("rmsm"));
+  auto_.setSplit(QStringLiteral("rmsm"));
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   split = v->splitSide();
   check(split && v->splitTechnique() == "rmsm", tr("the split view shows rmsm"));

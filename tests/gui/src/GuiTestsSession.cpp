@@ -103,7 +103,7 @@ bool GuiTests::sessionSave(const QString& path) {
   w_.viewport()->setCamera(camera);
   w_.viewport()->setLight(sl::Light::directional(-35.0f, 38.5f));
   w_.syncLightControls();
-  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
+  auto_.setSplit(QStringLiteral("uniform"), {{"resolution", "512"}});
   w_.timingDock()->hide();
   printSessionMetrics();
 
@@ -128,22 +128,22 @@ bool GuiTests::sessionSave(const QString& path) {
   check(sawDialog && QFileInfo(path).isFile(),
         tr("File > Save session… showed the file dialog and wrote %1").arg(path));
   const QString absolute = QFileInfo(path).absoluteFilePath();
-  check(!w_.sessions()->recent().isEmpty() && w_.sessions()->recent().first() == absolute,
+  check(!auto_.recentSessions().isEmpty() && auto_.recentSessions().first() == absolute,
         tr("Recent sessions starts with it"));
 
   // Recent sessions: at most 8, and a deleted file is dropped with a message.
   const QString gone = path + QStringLiteral(".gone.json");
   for (int i = 0; i < SessionFiles::kMaxRecent + 2; ++i)
-    w_.sessions()->save(path + QStringLiteral(".%1.json").arg(i));
-  check(w_.sessions()->recent().size() == SessionFiles::kMaxRecent,
+    auto_.saveSession(path + QStringLiteral(".%1.json").arg(i));
+  check(auto_.recentSessions().size() == SessionFiles::kMaxRecent,
         tr("Recent sessions keeps %1 (%2)")
             .arg(SessionFiles::kMaxRecent)
-            .arg(w_.sessions()->recent().size()));
-  w_.sessions()->save(gone);
-  w_.sessions()->save(path);
+            .arg(auto_.recentSessions().size()));
+  auto_.saveSession(gone);
+  auto_.saveSession(path);
   QFile::remove(gone);
   auto_.clearStatusMessage();
-  const QStringList recent = w_.sessions()->recent();
+  const QStringList recent = auto_.recentSessions();
   check(!recent.contains(QFileInfo(gone).absoluteFilePath()) && recent.first() == absolute,
         tr("a deleted session is dropped from Recent sessions (%1 left)").arg(recent.size()));
   check(auto_.statusMessage().contains(QFileInfo(gone).fileName()),
@@ -195,7 +195,7 @@ void GuiTests::badSessionOpen(const QString& path) {
   QTimer driver;  // closes the error dialog as a user would, reading it first
   readAndCloseDialogs(driver, messageText);
   auto_.clearStatusMessage();
-  const bool opened = w_.sessions()->open(path);
+  const bool opened = auto_.openSession(path);
   driver.stop();
   check(!opened, tr("%1 is refused").arg(QFileInfo(path).fileName()));
   check(messageText.contains(QFileInfo(path).fileName()),

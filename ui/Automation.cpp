@@ -3,8 +3,10 @@
 
 #include "service/RenderService.h"
 
+#include <QAction>
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QFontInfo>
 #include <QLabel>
 #include <QStatusBar>
 #include <QTimer>
@@ -12,6 +14,10 @@
 #include "launch/LaunchOptions.h"
 #include "teaching/LessonController.h"
 #include "window/MainWindow.h"
+#include "window/SessionFiles.h"
+#include "teaching/TeachingBar.h"
+#include "window/StatusLine.h"
+#include "window/WindowImages.h"
 #include "view/ViewportWidget.h"
 #include "core/Renderer.h"
 
@@ -85,6 +91,47 @@ std::optional<QString> Automation::setParameter(const QString& keyEqualsValue) {
   return std::nullopt;
 }
 
+void Automation::toggleContinuous() {
+  w_.continuousAction()->trigger();
+}
+
+void Automation::setPaused(bool paused) {
+  w_.setPaused(paused);
+}
+
+void Automation::stepFrame() {
+  w_.stepFrame();
+}
+
+void Automation::setPresenterMode(bool on) {
+  w_.setPresenterMode(on);
+}
+
+void Automation::setSplit(const QString& techniqueId,
+                          const std::map<std::string, std::string>& params) {
+  w_.teaching()->setSplitTechnique(techniqueId, params);
+}
+
+void Automation::toggleSplit() {
+  w_.teaching()->toggleSplit();
+}
+
+void Automation::cycleOverlay() {
+  w_.teaching()->cycleOverlay();
+}
+
+bool Automation::saveSession(const QString& path) {
+  return w_.sessions()->save(path);
+}
+
+bool Automation::openSession(const QString& path) {
+  return w_.sessions()->open(path);
+}
+
+QStringList Automation::recentSessions() const {
+  return w_.sessions()->recent();
+}
+
 bool Automation::waitForFrames(int frames, int timeoutMs) {
   return w_.waitForFrames(frames, timeoutMs);
 }
@@ -101,11 +148,27 @@ bool Automation::waitForSettled(int timeoutMs) {
 }
 
 QString Automation::errorReadout() const {
-  return w_.errorLabel()->text();
+  return w_.statusLine()->errorLabel()->text();
+}
+
+bool Automation::errorReadoutCurrent() const {
+  return w_.statusLine()->errorLabel()->isEnabled();
+}
+
+int Automation::statusTextPixelSize() const {
+  return QFontInfo(w_.statusLine()->errorLabel()->font()).pixelSize();
 }
 
 QString Automation::statusMessage() const {
   return w_.statusBar()->currentMessage();
+}
+
+void Automation::clearStatusMessage() {
+  w_.statusBar()->clearMessage();
+}
+
+QString Automation::sceneShown() const {
+  return w_.sceneSpec();
 }
 
 QString Automation::resolutionNote() const {
@@ -122,11 +185,15 @@ const sl::Publication* Automation::publication() const {
 }
 
 QImage Automation::grabWindow() const {
-  return w_.grabWindowFullSize();
+  return w_.images().grabWindowFullSize();
 }
 
 QImage Automation::grabView() const {
-  return w_.grabViewFullSize();
+  return w_.images().grabViewFullSize();
+}
+
+std::optional<QString> Automation::exportFigure(const QString& path) {
+  return w_.images().exportFigure(path);
 }
 
 QImage Automation::renderedFrame() const {

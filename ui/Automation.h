@@ -7,12 +7,14 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 
 #include <QImage>
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include "view/ViewportWidget.h"
 #include "core/Renderer.h"
@@ -55,8 +57,29 @@ class Automation : public QObject {
   /// problem (unknown key, value out of range), or nothing.
   std::optional<QString> setParameter(const QString& keyEqualsValue);
 
+  /// As F6 (View > Render continuously): continuous rendering on when off, off when on.
+  void toggleContinuous();
+  /// As Space / the pause button: no new frames until resumed or stepped.
+  void setPaused(bool paused);
+  /// As `.`: one frame while paused (pausing first when running).
+  void stepFrame();
+  /// As F11 (View > Presenter mode).
+  void setPresenterMode(bool on);
+  /// As the teaching bar's "Compare with": `techniqueId` on the split view's right half with
+  /// its own parameters (KEY -> text); empty: the split view off.
+  void setSplit(const QString& techniqueId, const std::map<std::string, std::string>& params = {});
+  /// As the teaching bar's Split button / View > Split view.
+  void toggleSplit();
+  /// As View > Next overlay.
+  void cycleOverlay();
+  /// As File > Save session / Open session (no dialog); false (reported) on failure.
+  bool saveSession(const QString& path);
+  bool openSession(const QString& path);
+  /// File > Recent sessions, newest first.
+  QStringList recentSessions() const;
+
   /// Renders until `frames` more frames are drawn; false on timeout.
-  bool waitForFrames(int frames, int timeoutMs = 30000);
+  [[nodiscard]] bool waitForFrames(int frames, int timeoutMs = 30000);
   /// Waits until the probe of the pixel under the mouse has come back (it is read on the
   /// render thread); false on timeout.
   bool waitForProbe(int timeoutMs = 10000);
@@ -65,8 +88,17 @@ class Automation : public QObject {
 
   /// The status line's error readout ("error 0.420 %", "error n/a (no covered pixel)").
   QString errorReadout() const;
+  /// False while the error readout is greyed: its number is an earlier view's (continuous
+  /// rendering, the live reference not yet of this view) or there is none yet.
+  bool errorReadoutCurrent() const;
+  /// The status line's text size in pixels (presenter mode enlarges it).
+  int statusTextPixelSize() const;
   /// The status bar's current message (empty: none).
   QString statusMessage() const;
+  /// Clears the status bar's message (a script then reads the next one).
+  void clearStatusMessage();
+  /// The scene shown: its built-in name or the path it was opened from.
+  QString sceneShown() const;
   /// The view's resolution note ("internal resolution 240×150: frame took 610 ms" while
   /// adaptive resolution reduced it), empty at full size.
   QString resolutionNote() const;
@@ -83,6 +115,8 @@ class Automation : public QObject {
   /// The view's frame as rendered (both halves, no overlay; device pixels), a frame of the
   /// current view drawn first when the one shown is older.
   QImage renderedFrame() const;
+  /// As File > Export figure to `path`; the problem, or nothing.
+  std::optional<QString> exportFigure(const QString& path);
 
   // Reads of the main renderer's last frame, run on the render thread (the UI waits).
   /// The pixel (x, y) of the last frame (internal pixels), or nothing outside it.

@@ -15,6 +15,7 @@
 
 #include "teaching/LessonController.h"
 #include "window/MainWindow.h"
+#include "window/StatusLine.h"
 #include "view/ViewportWidget.h"
 #include "core/Course.h"
 #include "core/JsonNumber.h"
@@ -234,7 +235,7 @@ QJsonObject GrabRun::publicationJson() const {
   o[QStringLiteral("frame_ms")] =
       viewport->frameFailure().isEmpty() ? QJsonValue(r->stats().totalMs) : QJsonValue();
   // What the status line showed for the error ("error 0.420 %", "error n/a (why)").
-  o[QStringLiteral("error_readout")] = w_.errorLabel()->text();
+  o[QStringLiteral("error_readout")] = w_.statusLine()->errorLabel()->text();
   // The Timing panel's summary line (a failed frame: "total <b>n/a</b> (the frame failed: …)").
   o[QStringLiteral("timing_summary")] = w_.timingPanel()->summaryText();
   // Never 0 for a frame that measured nothing: null, and why.

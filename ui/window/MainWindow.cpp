@@ -37,6 +37,8 @@
 #include "window/SplitSideParams.h"
 #include "window/SessionFiles.h"
 #include "window/ShortcutsDialog.h"
+#include "window/StatusLine.h"
+#include "window/WindowImages.h"
 #include "teaching/TeachingBar.h"
 #include "view/ViewportWidget.h"
 #include "panels/common/ChartsPanel.h"
@@ -80,11 +82,6 @@ void printErr(const QString& line) {
   std::fflush(stderr);
 }
 
-/// "llvmpipe (LLVM 15.0.6, 256 bits)" out of Renderer::glDescription()'s
-/// "RENDERER | VERSION".
-QString shortGlName(const QString& description) {
-  return description.section(QStringLiteral(" | "), 0, 0).trimmed();
-}
 }  // namespace
 
 MainWindow::MainWindow(bool interactive, QWidget* parent)
@@ -109,22 +106,20 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
           &MainWindow::onRendererAboutToBeDestroyed);
   connect(viewport_, &ViewportWidget::frameRendered, this, &MainWindow::onFrameRendered);
   connect(viewport_, &ViewportWidget::renderProblem, this, &MainWindow::onRenderProblem);
-  connect(viewport_, &ViewportWidget::errorUnmeasured, this, &MainWindow::onErrorUnmeasured);
+  // A lesson's texts quote the error (the status line shows it: StatusLine).
+  connect(viewport_, &ViewportWidget::errorUnmeasured, this, &MainWindow::refreshLiveTexts);
   connect(viewport_, &ViewportWidget::initializationFailed, this,
           &MainWindow::onInitializationFailed);
-  connect(viewport_, &ViewportWidget::errorComputed, this, &MainWindow::onErrorComputed);
+  connect(viewport_, &ViewportWidget::errorComputed, this, &MainWindow::refreshLiveTexts);
   connect(viewport_, &ViewportWidget::pixelProbed, this,
           [this](const std::optional<sl::PixelProbe>& probe) { docks_.showProbe(probe); });
-  connect(viewport_, &ViewportWidget::viewChanged, this, [this] {
-    if (viewport_->continuous()) return updateLiveErrorLabel();
-    if (!viewport_->errorIsCurrent()) errorLabel_->setText(tr("error —"));
-  });
 
   lessons_ = std::make_unique<LessonController>(*this);
   passes_ = std::make_unique<PassStepper>(*this);
   teaching_ = std::make_unique<TeachingBar>(*this);
   grab_ = std::make_unique<GrabRun>(*this);
   sessions_ = std::make_unique<SessionFiles>(*this);
+  images_ = new WindowImages(*this, *grab_);
   presenter_ = new PresenterMode(*this);
   // A panel grows with its first data: in presenter mode the window is kept on its screen.
   docks_.setOnFed([this] { presenter_->keepOnScreen(); });
@@ -237,11 +232,7 @@ bool MainWindow::loadScene(const QString& nameOrPath) {
   timingPanel_->resetHistory();
   docks_.resetHistory();
   const sl::Scene& scene = *viewport_->scene();
-  sceneLabel_->setText(
-      tr("%1 · %2 triangles")
-          .arg(shownMessage(QString::fromStdString(scene.name)))
-          .arg(QLocale::c().toString(static_cast<qulonglong>(scene.triangleCount()))));
-  sceneLabel_->setToolTip(shownMessage(QString::fromStdString(scene.sourcePath)));
+  status_->showScene(scene);
   if (!result.scene->warnings.empty())
     info(tr("Scene loaded with %1 warning(s) (see stderr): %2")
              .arg(result.scene->warnings.size())
@@ -391,8 +382,7 @@ void MainWindow::onRendererReady() {
   lessons_->queueSettle();  // a lesson chosen before the renderer started
   updateTitle();
   const QString gl = viewport_->glDescription();
-  glLabel_->setText(shortGlName(gl));
-  glLabel_->setToolTip(gl);
+  status_->showGl(gl);
   info(tr("Renderer ready: %1").arg(shortGlName(gl)));
   viewport_->requestFrame();
 }
@@ -409,22 +399,8 @@ void MainWindow::onFrameRendered() {
   if (!renderer) return;
   splitSide_->onFrameRendered();
   const sl::FrameStats& stats = renderer->stats();
-  if (const QString failure = viewport_->frameFailure(); !failure.isEmpty()) {
-    frameLabel_->setText(tr("frame n/a (failed)"));
-    frameLabel_->setToolTip(failure);
-  } else {
-    frameLabel_->setToolTip({});
-    frameLabel_->setText(tr("frame %1 ms (%2)")
-                             .arg(stats.totalMs, 0, 'f', stats.totalMs < 10 ? 2 : 1)
-                             .arg(stats.timingMethod.empty()
-                                      ? tr("untimed")
-                                      : QString::fromStdString(stats.timingMethod)));
-  }
-  // As wide as its text at the current font (presenter mode's is larger): never cut.
-  frameLabel_->setMinimumWidth(frameLabel_->sizeHint().width());
   timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
   timingPanel_->showStats(stats, viewport_->frameFailure());
-  if (viewport_->continuous()) updateLiveErrorLabel();
   if (rendererBound_) grab_->countFrame();
   if (docks_.isCurrent(*renderer, false)) docks_.feed(*renderer, false);
   passes_->onFrameRendered();
@@ -448,36 +424,6 @@ void MainWindow::onInitializationFailed(const QString& message) {
   QCoreApplication::exit(1);
 }
 
-void MainWindow::onErrorUnmeasured(const QString& why) {
-  refreshLiveTexts();
-  errorLabel_->setEnabled(true);
-  if (viewport_->continuous()) return updateLiveErrorLabel();
-  errorLabel_->setText(tr("error n/a (%1)").arg(why));
-  errorLabel_->setToolTip(tr("The error of this view was not measured: %1").arg(why));
-}
-
-void MainWindow::onErrorComputed(double errorPct) {
-  refreshLiveTexts();
-  errorLabel_->setEnabled(true);
-  if (viewport_->continuous()) return updateLiveErrorLabel();
-  errorLabel_->setText(tr("error %1 %").arg(errorPct, 0, 'f', errorPct < 1 ? 3 : 2));
-  errorLabel_->setToolTip({});
-}
-
-void MainWindow::updateLiveErrorLabel() {
-  if (!errorLabel_) return;  // (a lesson may turn continuous rendering on during setup)
-  // Greyed while the number is an earlier view's (or there is none yet).
-  if (const QString failure = viewport_->frameFailure(); !failure.isEmpty()) {
-    errorLabel_->setEnabled(true);  // a failed frame is never measured, nor shown as 0
-    errorLabel_->setText(tr("error n/a (the frame failed)"));
-    errorLabel_->setToolTip(failure);
-    return;
-  }
-  const auto live = viewport_->liveError();
-  errorLabel_->setEnabled(live && !live->age.stale);
-  errorLabel_->setText(viewport_->liveErrorText());
-}
-
 // --- Light, camera, misc -------------------------------------------------------------------
 
 void MainWindow::syncLightControls() {
@@ -498,64 +444,6 @@ void MainWindow::showShortcuts() {
   shortcuts_->show();
   shortcuts_->raise();
   shortcuts_->activateWindow();
-}
-
-QImage MainWindow::grabViewFullSize() {
-  const bool adaptive = viewport_->adaptiveAllowed();
-  viewport_->setAdaptiveAllowed(false);  // grabView renders a frame: at full size
-  QImage image = viewport_->grabView();
-  viewport_->setAdaptiveAllowed(adaptive);
-  return image;
-}
-
-QImage MainWindow::grabWindowFullSize() {
-  const bool adaptive = viewport_->adaptiveAllowed();
-  viewport_->setAdaptiveAllowed(false);
-  QImage image = grab().toImage();
-  viewport_->setAdaptiveAllowed(adaptive);
-  return image;
-}
-
-void MainWindow::saveScreenshot() {
-  const QString path = QFileDialog::getSaveFileName(
-      this, tr("Save viewport image"), QDir::home().filePath(QStringLiteral("shadowlab.png")),
-      tr("PNG images (*.png)"));
-  if (path.isEmpty()) return;
-  if (auto e = writeWindowOutput(*this, path, pngBytes(grabViewFullSize())))
-    report(*e, tr("Save viewport image"));
-  else
-    showStatus(tr("Saved %1").arg(path));
-}
-
-void MainWindow::exportFigureDialog() {
-  const QString path = QFileDialog::getSaveFileName(
-      this, tr("Export figure"), QDir::home().filePath(QStringLiteral("shadowlab-figure.png")),
-      tr("PNG images (*.png)"));
-  if (path.isEmpty()) return;
-  if (auto e = exportFigure(path))
-    report(*e, tr("Export figure"));
-  else
-    showStatus(tr("Saved %1").arg(path));
-}
-
-std::optional<QString> MainWindow::exportFigure(const QString& path) {
-  constexpr int kDilatePx = 1;  // single-pixel error lines survive printing
-  const std::vector<FigureCell> cells = viewport_->figureCells(kDilatePx);
-  if (cells.empty()) return tr("export figure: no frame to export yet");
-  const sl::Light& light = viewport_->light();
-  const QString kind = light.type == sl::LightType::Directional ? tr("directional")
-                       : light.type == sl::LightType::Spot      ? tr("spot")
-                                                                : tr("point");
-  const QString title =
-      tr("%1, %2x%3, %4 light; below each image its errors against the exact reference "
-         "(magenta: wrongly lit, cyan: wrongly shadowed; drawn %5 px wider)")
-          .arg(sceneSpec_)
-          .arg(cells.front().shaded.width)
-          .arg(cells.front().shaded.height)
-          .arg(kind)
-          .arg(kDilatePx);
-  return writeWindowOutput(*this, path,
-                           pngBytes(drawFigure(cells, title.toStdString(), 0, std::nullopt)));
 }
 
 void MainWindow::info(const QString& message) {
@@ -700,32 +588,6 @@ bool MainWindow::waitForFrames(int frames, int timeoutMs) {
     if (clock.elapsed() > timeoutMs) return false;
   }
   return true;
-}
-
-void MainWindow::savePanelImage(QDockWidget* dock) {
-  const QString name = QStringLiteral("shadowlab-%1.png").arg(dock->objectName());
-  const QString path = QFileDialog::getSaveFileName(
-      this, tr("Save panel image"), QDir::home().filePath(name), tr("PNG images (*.png)"));
-  if (path.isEmpty()) return;
-  if (auto e = writeWindowOutput(*this, path, pngBytes(dock->grab().toImage())))
-    report(*e, tr("Save panel image"));
-  else
-    showStatus(tr("Saved %1").arg(path), kStatusMessageMs);
-}
-
-void MainWindow::saveAllImages() {
-  const QString dir = QFileDialog::getExistingDirectory(this, tr("Save window and all panels into"),
-                                                        QDir::homePath());
-  if (dir.isEmpty()) return;
-  // Every image at full size: adaptive resolution held off while they are drawn.
-  const bool adaptive = viewport_->adaptiveAllowed();
-  viewport_->setAdaptiveAllowed(false);
-  const QStringList failures = grab_->writeImages(dir, false);
-  viewport_->setAdaptiveAllowed(adaptive);
-  if (failures.isEmpty())
-    showStatus(tr("Saved the window and every panel in %1").arg(dir), kStatusMessageMs);
-  else
-    report(failures.join(QLatin1Char('\n')), tr("Save images"));
 }
 
 }  // namespace sl::ui

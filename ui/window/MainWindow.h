@@ -2,7 +2,8 @@
 // Timing, Lesson, Light, Charts and the publication panels of panels/PanelRegistry.h),
 // toolbars for scene / technique / camera, the status line. Its parts live in their own
 // classes: TeachingBar (overlays, split view, pause), PassStepper, LessonController,
-// GrabRun (`--grab`), SessionFiles, PresenterMode, SplitSideParams; they and ui/Automation.h
+// GrabRun (`--grab`), SessionFiles, PresenterMode, SplitSideParams, StatusLine (the status
+// line's readouts), WindowImages (saved images, figures, full-size grabs); they and ui/Automation.h
 // (scripted control) reach the window's widgets through the accessors below, none is a friend.
 #pragma once
 
@@ -43,9 +44,11 @@ class PresenterMode;
 class SessionFiles;
 class ShortcutsDialog;
 class SplitSideParams;
+class StatusLine;
 class TeachingBar;
 class TimingPanel;
 class ViewportWidget;
+class WindowImages;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -95,7 +98,7 @@ class MainWindow : public QMainWindow {
   bool interactive() const { return interactive_; }
 
   // The window's parts, for its helpers (GrabRun, LessonController, PassStepper, PresenterMode,
-  // SessionFiles, SplitSideParams, TeachingBar) and ui/Automation.h.
+  // SessionFiles, SplitSideParams, TeachingBar, WindowImages) and ui/Automation.h.
   ViewportWidget* viewport() const { return viewport_; }
   PublicationDocks& docks() { return docks_; }
   const QString& sceneSpec() const { return sceneSpec_; }  ///< name or path of the scene shown
@@ -115,7 +118,8 @@ class MainWindow : public QMainWindow {
   QDockWidget* chartsDock() const { return chartsDock_; }
   QComboBox* sceneCombo() const { return sceneCombo_; }
   QComboBox* techniqueCombo() const { return techniqueCombo_; }
-  QLabel* errorLabel() const { return errorLabel_; }  ///< the status line's error readout
+  StatusLine* statusLine() const { return status_; }  ///< the status line's readouts
+  WindowImages& images() const { return *images_; }
   QAction* openAction() const { return openAction_; }
   QAction* continuousAction() const { return continuousAction_; }
   QAction* pauseAction() const { return pauseAction_; }
@@ -142,14 +146,6 @@ class MainWindow : public QMainWindow {
   void refreshLiveTexts();
   void rebuildParamPanel();
   void syncLightControls();
-  /// The view as shown (ViewportWidget::grabView), rendered for it at full size: adaptive
-  /// resolution is held off for that frame (File > Save viewport image, Automation).
-  QImage grabViewFullSize();
-  /// The whole window likewise (its view at full size).
-  QImage grabWindowFullSize();
-  /// File > Export figure to `path` (ViewportWidget::figureCells, ui/figures/FigureKit.h); the
-  /// problem, or nothing.
-  std::optional<QString> exportFigure(const QString& path);
   void refreshBookmarks();
   /// Shows `message` in the status bar, elided (shownMessage()); its full text as the status
   /// bar's tooltip while it is shown, when short enough (messageDetails()).
@@ -179,10 +175,6 @@ class MainWindow : public QMainWindow {
   void onFrameRendered();
   void onRenderProblem(const QString& message);
   void onInitializationFailed(const QString& message);
-  void onErrorComputed(double errorPct);
-  void onErrorUnmeasured(const QString& why);
-  /// Continuous rendering: the live error with its reference's age (greyed when stale).
-  void updateLiveErrorLabel();
   void onSceneComboActivated(int index);
   void onTechniqueComboActivated(int index);
   void onChartsConfigurationChosen(const QString& id, const QStringList& assignments);
@@ -192,10 +184,6 @@ class MainWindow : public QMainWindow {
   void syncTechniqueCombo();
   void updateTitle();
   void showShortcuts();
-  void saveScreenshot();
-  void exportFigureDialog();
-  void savePanelImage(QDockWidget* dock);
-  void saveAllImages();
 
   const bool interactive_;
   ViewportWidget* viewport_ = nullptr;
@@ -224,10 +212,7 @@ class MainWindow : public QMainWindow {
   QComboBox* bookmarkCombo_ = nullptr;
   LightPanel* lightPanel_ = nullptr;  ///< the Light dock (ui/panels/light)
 
-  QLabel* sceneLabel_ = nullptr;
-  QLabel* frameLabel_ = nullptr;
-  QLabel* errorLabel_ = nullptr;
-  QLabel* glLabel_ = nullptr;
+  StatusLine* status_ = nullptr;  ///< the status line's readouts (a child QObject)
 
   QString sceneSpec_;  ///< name or path of the scene shown
   QStringList pendingAssignments_;
@@ -246,6 +231,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SessionFiles> sessions_;
   PresenterMode* presenter_ = nullptr;    ///< a child QObject of the window
   SplitSideParams* splitSide_ = nullptr;  ///< the split view's parameters (a child QObject)
+  WindowImages* images_ = nullptr;        ///< File's images, full-size grabs (a child QObject)
 };
 
 }  // namespace sl::ui

@@ -23,6 +23,8 @@
 #include "teaching/PassStepper.h"
 #include "teaching/PresenterMode.h"
 #include "window/SplitSideParams.h"
+#include "window/StatusLine.h"
+#include "window/WindowImages.h"
 #include "window/SessionFiles.h"
 #include "teaching/TeachingBar.h"
 #include "window/Theme.h"
@@ -73,9 +75,9 @@ void MainWindow::createActions() {
   });
   reload->setShortcut(Qt::Key_F5);
   QAction* screenshot =
-      file->addAction(tr("Save &viewport image…"), this, &MainWindow::saveScreenshot);
-  QAction* figure = file->addAction(tr("Export &figure… (view and split view, with errors)"), this,
-                                    &MainWindow::exportFigureDialog);
+      file->addAction(tr("Save &viewport image…"), images_, &WindowImages::saveViewImage);
+  QAction* figure = file->addAction(tr("Export &figure… (view and split view, with errors)"),
+                                    images_, &WindowImages::exportFigureDialog);
   figure->setToolTip(
       tr("A labelled PNG for handouts: each half of the view above its error "
          "image (wrong pixels drawn wider for print), with technique, texels, "
@@ -83,7 +85,7 @@ void MainWindow::createActions() {
   screenshot->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
   saveImageMenu_ = file->addMenu(tr("Save &panel image"));
   QAction* saveAll =
-      file->addAction(tr("Save window and &all panels…"), this, &MainWindow::saveAllImages);
+      file->addAction(tr("Save window and &all panels…"), images_, &WindowImages::saveAllImages);
   saveAll->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S));
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
@@ -102,15 +104,6 @@ void MainWindow::createActions() {
   continuousAction_->setToolTip(
       tr("Redraw every frame (for techniques that converge over frames)"));
   connect(continuousAction_, &QAction::toggled, viewport_, &ViewportWidget::setContinuous);
-  connect(continuousAction_, &QAction::toggled, this, [this](bool on) {
-    if (on || !errorLabel_) return updateLiveErrorLabel();
-    errorLabel_->setEnabled(true);
-    errorLabel_->setText(viewport_->errorPct()
-                             ? tr("error %1 %").arg(*viewport_->errorPct(), 0, 'f', 3)
-                         : viewport_->errorNotMeasured().isEmpty()
-                             ? tr("error —")
-                             : tr("error n/a (%1)").arg(viewport_->errorNotMeasured()));
-  });
   QAction* resetTemporal = view->addAction(tr("Reset &temporal state"), this, [this] {
     if (auto* r = viewport_->mainSide()) r->resetTemporalState();
     viewport_->requestFrame();
@@ -314,29 +307,8 @@ void MainWindow::createDocks() {
 }
 
 void MainWindow::createStatusBar() {
-  QStatusBar* bar = statusBar();
-  auto permanent = [bar](const QString& name, const QString& tip) {
-    auto* label = new QLabel;
-    label->setObjectName(name);
-    label->setToolTip(tip);
-    label->setContentsMargins(8, 0, 8, 0);
-    bar->addPermanentWidget(label);
-    return label;
-  };
-  sceneLabel_ = permanent(QStringLiteral("sceneStatus"), tr("Scene shown"));
-  frameLabel_ = permanent(QStringLiteral("frameStatus"),
-                          tr("Time of the last frame, and how it was measured"));
-  errorLabel_ =
-      permanent(QStringLiteral("errorStatus"),
-                tr("Shadow error of the current view against the exact ray-traced reference "
-                   "(percent of covered pixels; computed once the view is still, or Ctrl+E)"));
-  glLabel_ = permanent(QStringLiteral("glStatus"), tr("OpenGL renderer"));
-  frameLabel_->setMinimumWidth(frameLabel_->fontMetrics().horizontalAdvance(
-                                   QStringLiteral("frame 999.9 ms (glFinish+wallclock)")) +
-                               16);
-  frameLabel_->setText(tr("frame —"));
-  errorLabel_->setText(tr("error —"));
-  glLabel_->setText(tr("GL —"));
+  status_ = new StatusLine(*statusBar(), *viewport_, this);
+  connect(continuousAction_, &QAction::toggled, status_, &StatusLine::onContinuousChanged);
   statusBar()->showMessage(tr("Starting the renderer…"));
   connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& shown) {
     if (shown.isEmpty()) statusBar()->setToolTip(QString());
@@ -423,7 +395,7 @@ QDockWidget* MainWindow::addPanelDock(QWidget* panel, const QString& title, cons
   addDockWidget(area, dock);
   // Right-click anywhere in a panel: save it as a PNG.
   auto* save = new QAction(tr("Save image of this panel…"), dock);
-  connect(save, &QAction::triggered, this, [this, dock] { savePanelImage(dock); });
+  connect(save, &QAction::triggered, this, [this, dock] { images_->savePanelImage(dock); });
   dock->addAction(save);
   dock->setContextMenuPolicy(Qt::ActionsContextMenu);
   return dock;
@@ -474,7 +446,7 @@ void MainWindow::createPanelDocks() {
           &MainWindow::onChartsConfigurationChosen);
   for (QDockWidget* dock : {paramDock_, timingDock_}) {
     auto* save = new QAction(tr("Save image of this panel…"), dock);
-    connect(save, &QAction::triggered, this, [this, dock] { savePanelImage(dock); });
+    connect(save, &QAction::triggered, this, [this, dock] { images_->savePanelImage(dock); });
     dock->addAction(save);
     dock->setContextMenuPolicy(Qt::ActionsContextMenu);
   }
@@ -510,7 +482,7 @@ void MainWindow::createPanelDocks() {
   }
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {
     QAction* a = saveImageMenu_->addAction(dock->windowTitle() + QStringLiteral("…"));
-    connect(a, &QAction::triggered, this, [this, dock] { savePanelImage(dock); });
+    connect(a, &QAction::triggered, this, [this, dock] { images_->savePanelImage(dock); });
   }
   lessons_->connectPanel(lessonPanel_);
 }

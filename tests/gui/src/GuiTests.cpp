@@ -142,7 +142,7 @@ void GuiTests::start(const Test& test, const QString& argument) {
 
 void GuiTests::run(const Test& test) {
   std::printf("GUI test %s: technique %s, scene %s\n", test.name,
-              w_.viewport()->techniqueId().c_str(), qPrintable(w_.sceneSpec()));
+              w_.viewport()->techniqueId().c_str(), qPrintable(auto_.sceneShown()));
   const bool ran = test.run(*this, argument_);
   const bool pass = ran && failures_ == 0;
   std::printf("%s\n", pass ? "PASS" : "FAIL");
@@ -163,7 +163,7 @@ bool GuiTests::splitResize(const QString& splitTechnique) {
   const QSize viewBefore = w_.viewport()->size();
   w_.viewport()->setFixedSize(viewBefore);
   QCoreApplication::processEvents();
-  auto_.waitForFrames(3);
+  waitForFrames(3);
   const auto mainBefore = w_.viewport()->computeErrorNow();
   const auto splitBefore = w_.viewport()->splitErrorPct();
   // Every size a window dragged to its smallest can leave the view (each half 0-2 pixels).
@@ -174,11 +174,11 @@ bool GuiTests::splitResize(const QString& splitTechnique) {
                                     [&problems](const QString& p) { problems << p; });
     w_.viewport()->setFixedSize(side, side);
     QCoreApplication::processEvents();
-    auto_.waitForFrames(8);  // long enough for temporal state (DA-RTW's moments) to settle there
+    waitForFrames(8);  // long enough for temporal state (DA-RTW's moments) to settle there
     const QSize shrunk = w_.viewport()->size();
     w_.viewport()->setFixedSize(viewBefore);
     QCoreApplication::processEvents();
-    auto_.waitForFrames(3);
+    waitForFrames(3);
     const auto mainAfter = w_.viewport()->computeErrorNow();
     const auto splitAfter = w_.viewport()->splitErrorPct();
     check(shrunk == QSize(side, side) && w_.viewport()->size() == viewBefore,
@@ -215,7 +215,7 @@ bool GuiTests::splitResize(const QString& splitTechnique) {
   // error image), as wide as the two halves, twice as high plus the text.
   const QString figure = QDir::temp().filePath(QStringLiteral("shadowlab-gui-test-figure.png"));
   QFile::remove(figure);
-  const auto exportError = w_.exportFigure(figure);
+  const auto exportError = auto_.exportFigure(figure);
   const QImage fig(figure);
   const int halfW = w_.viewport()->width() / 2, viewH = w_.viewport()->height();
   check(!exportError && !fig.isNull() && fig.width() >= 2 * halfW &&
@@ -243,7 +243,7 @@ bool GuiTests::omniProbe(const QString& dir) {
   dock->show();
   dock->raise();
   QCoreApplication::processEvents();
-  auto_.waitForFrames(3);
+  waitForFrames(3);
   ViewportWidget* view = w_.viewport();
   sl::ViewSide* renderer = view->mainSide();
   const bool cube = view->techniqueId() == "cube";
@@ -314,7 +314,7 @@ bool GuiTests::omniProbe(const QString& dir) {
       QCoreApplication::sendEvent(view, &move);
       auto_.waitForProbe();
     }
-    auto_.waitForFrames(2);
+    waitForFrames(2);
     return auto_.viewReadouts().probesRead - before;
   };
   const std::uint64_t shownReads = hoverFrames();
@@ -505,9 +505,9 @@ bool GuiTests::charts(const QString& dir) {
   if (!chartsAxis(dir)) return false;
   // A click on the first point (the slot the scatter series' clicked signal calls), from
   // another technique.
-  w_.setTechnique(QStringLiteral("rtw-backward"));
+  if (auto e = auto_.setTechnique(QStringLiteral("rtw-backward"))) check(false, *e);
   w_.chartsPanel()->choose(0);
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   r = w_.viewport()->mainSide();
   check(r && r->techniqueId() == "uniform",
         QStringLiteral("clicking a point switches the technique to uniform"));
@@ -532,7 +532,7 @@ bool GuiTests::chartsUnmeasured() {
   sky.position = scene.bounds.max + glm::vec3(0.0f, 10.0f, 0.0f);
   sky.target = sky.position + glm::vec3(0.0f, 10.0f, -1.0f);
   w_.viewport()->setCamera(sky);
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   w_.chartsPanel()->setSweepText(QStringLiteral("uniform:resolution=256"));
   w_.chartsPanel()->setFramesPerConfig(1);
   bool finished = false, completed = false;
@@ -619,6 +619,12 @@ void GuiTests::check(bool ok, const QString& what) {
   if (!ok) ++failures_;
 }
 
+bool GuiTests::waitForFrames(int frames, int timeoutMs) {
+  if (auto_.waitForFrames(frames, timeoutMs)) return true;
+  check(false, tr("%1 frame(s) rendered within %2 s").arg(frames).arg(timeoutMs / 1000.0));
+  return false;
+}
+
 bool GuiTests::params() {
   sl::ViewSide* r = w_.viewport()->mainSide();
   w_.paramDock()->show();
@@ -634,7 +640,7 @@ bool GuiTests::params() {
   const sl::ParamDecl& ambientDecl = *r->rendererParams().find(ambientKey);
   const double before = r->rendererParams().get(ambientKey);
   const double target = before < 0.5 ? 0.9 : 0.1;
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   const double lumBefore = meanLuminance(auto_.renderedFrame());
   const std::uint64_t frameBefore = r->stats().frameIndex;
   typeInto(ambient, number(target));
@@ -653,10 +659,10 @@ bool GuiTests::params() {
             .arg(lumAfter, 0, 'f', 2));
 
   // 2. Out of range: refused with the declaration's message, nothing changes.
-  w_.statusBar()->clearMessage();
+  auto_.clearStatusMessage();
   const std::uint64_t revision = r->rendererParams().revision();
   typeInto(ambient, QStringLiteral("5"));
-  const QString message = w_.statusBar()->currentMessage();
+  const QString message = auto_.statusMessage();
   const QString range = QString::fromStdString(sl::describeRange(ambientDecl));
   check(std::abs(r->rendererParams().get(ambientKey) - target) < 1e-9 &&
             r->rendererParams().revision() == revision,
@@ -691,15 +697,15 @@ bool GuiTests::params() {
           tr("typing %1 into Resolution sets the technique's resolution (now %2)")
               .arg(wanted)
               .arg(r->params().getInt(resKey)));
-    auto_.waitForFrames(1);
+    waitForFrames(1);
     bool resized = false;
     for (const sl::ResourceInfo& info : r->stats().memory.resources)
       resized = resized || info.width == wanted;
     check(resized, tr("the next frame's shadow resources include a %1-texel-wide map").arg(wanted));
-    w_.statusBar()->clearMessage();
+    auto_.clearStatusMessage();
     const QString tooBig = QString::number(static_cast<long long>(res->maxValue) * 2);
     typeInto(spin, tooBig);
-    const QString refusal = w_.statusBar()->currentMessage();
+    const QString refusal = auto_.statusMessage();
     check(r->params().getInt(resKey) == wanted &&
               refusal.contains(QString::fromStdString(sl::describeRange(*res))),
           tr("typing %1 into Resolution is refused: \"%2\"").arg(tooBig, refusal));
@@ -717,7 +723,7 @@ bool GuiTests::teaching(const QString& dir) {
   // 1. Step through the passes of one frame: each raises the panel showing its output.
   PassStepper& passes = *w_.passes();
   passes.step(+1);
-  for (int i = 0; i < 50 && passes.index() < 0; ++i) auto_.waitForFrames(1, 2000);
+  for (int i = 0; i < 50 && passes.index() < 0; ++i) waitForFrames(1, 2000);
   check(passes.index() == 0 && w_.viewport()->paused(),
         tr("] starts stepping at the first pass, paused (%1 passes)").arg(passes.steps().size()));
   QStringList seen;
@@ -753,7 +759,7 @@ bool GuiTests::teaching(const QString& dir) {
   const std::uint64_t frame = r->stats().frameIndex;
   passes.step(+1);  // past the last pass: the next frame, from its first pass
   for (int i = 0; i < 50 && (passes.waitingForFrame() || passes.index() != 0); ++i)
-    auto_.waitForFrames(1, 2000);
+    waitForFrames(1, 2000);
   check(passes.index() == 0 && w_.viewport()->mainSide()->stats().frameIndex == frame + 1,
         tr("] after the last pass renders exactly one more frame (%1 -> %2)")
             .arg(frame)
@@ -766,8 +772,8 @@ bool GuiTests::teaching(const QString& dir) {
   const sl::ParamDecl* overlay = shared.find("view.overlay");
   QStringList values;
   for (std::size_t i = 0; overlay && i < overlay->enumNames.size(); ++i) {
-    w_.teaching()->cycleOverlay();
-    auto_.waitForFrames(1);
+    auto_.cycleOverlay();
+    waitForFrames(1);
     values << QString::fromStdString(shared.format("view.overlay"));
     saveImage(w_.viewport()->grabView(), QStringLiteral("overlay-%1.png").arg(values.back()));
   }
@@ -776,10 +782,10 @@ bool GuiTests::teaching(const QString& dir) {
         tr("O cycles the overlays: %1").arg(values.join(QStringLiteral(", "))));
 
   // 3. Split view: the other technique on the right half, both errors measured.
-  w_.teaching()->toggleSplit();
-  auto_.waitForFrames(2);
+  auto_.toggleSplit();
+  waitForFrames(2);
   const auto error = w_.viewport()->computeErrorNow();
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   check(!w_.viewport()->splitTechnique().empty() && error && w_.viewport()->splitErrorPct(),
         tr("F7 splits the view: %1 %2 % | %3 %4 %")
             .arg(QString::fromStdString(w_.viewport()->techniqueId()))
@@ -787,7 +793,7 @@ bool GuiTests::teaching(const QString& dir) {
             .arg(QString::fromStdString(w_.viewport()->splitTechnique()))
             .arg(w_.viewport()->splitErrorPct().value_or(-1), 0, 'f', 3));
   saveImage(w_.viewport()->grabView(), QStringLiteral("split.png"));
-  w_.teaching()->toggleSplit();
+  auto_.toggleSplit();
   check(w_.viewport()->splitTechnique().empty(), tr("F7 again ends the split view"));
 
   // 3b. Outside view: V shows the third camera (the renderer reports it); a left drag orbits
@@ -796,7 +802,7 @@ bool GuiTests::teaching(const QString& dir) {
   check(outside != nullptr, tr("View > Outside view exists"));
   if (outside) {
     outside->trigger();
-    auto_.waitForFrames(2);
+    waitForFrames(2);
     const sl::ViewSide* view = w_.viewport()->mainSide();
     check(w_.viewport()->outsideView() && view->stats().outsideCamera.has_value() &&
               !view->stats().outlines.frusta.empty(),
@@ -816,7 +822,7 @@ bool GuiTests::teaching(const QString& dir) {
     QApplication::sendEvent(w_.viewport(), &press);
     QApplication::sendEvent(w_.viewport(), &move);
     QApplication::sendEvent(w_.viewport(), &release);
-    auto_.waitForFrames(1);
+    waitForFrames(1);
     const sl::Camera after = w_.viewport()->camera();
     check(after.position == before.position && after.target == before.target &&
               shared.get("view.outside.azimuth_deg") != azimuth,
@@ -825,7 +831,7 @@ bool GuiTests::teaching(const QString& dir) {
               .arg(azimuth)
               .arg(shared.get("view.outside.azimuth_deg")));
     outside->trigger();
-    auto_.waitForFrames(1);
+    waitForFrames(1);
     check(!w_.viewport()->outsideView() && !view->stats().outsideCamera.has_value(),
           tr("V again ends the outside view"));
   }
@@ -834,13 +840,13 @@ bool GuiTests::teaching(const QString& dir) {
   const std::vector<Lesson>& lessons = w_.lessons()->lessons();
   for (std::size_t i = 0; i < lessons.size(); ++i) {
     w_.lessons()->apply(static_cast<int>(i));
-    auto_.waitForFrames(2);
+    waitForFrames(2);
     const sl::Preset& p = lessons[i].preset;
-    check(w_.sceneSpec() == QString::fromStdString(p.scene) &&
+    check(auto_.sceneShown() == QString::fromStdString(p.scene) &&
               (p.technique.empty() || w_.viewport()->techniqueId() == p.technique),
           tr("lesson %1 (%2): scene %3, technique %4")
               .arg(i + 1)
-              .arg(QString::fromStdString(p.title), w_.sceneSpec(),
+              .arg(QString::fromStdString(p.title), auto_.sceneShown(),
                    QString::fromStdString(w_.viewport()->techniqueId())));
     saveImage(w_.grab().toImage(), QStringLiteral("lesson-%1.png").arg(i + 1));
   }
@@ -869,7 +875,7 @@ bool GuiTests::badFiles(const QString& paths, QAction* open, const QString& menu
 
 GuiTests::ViewState GuiTests::viewState() const {
   return ViewState{w_.viewport()->scene(),
-                   w_.sceneSpec(),
+                   auto_.sceneShown(),
                    w_.viewport()->techniqueId(),
                    w_.viewport()->splitTechnique(),
                    w_.viewport()->mainSide()->params(),
@@ -885,7 +891,7 @@ void GuiTests::badFileOpen(const QString& path, QAction* open, const QString& me
   const QString absolute = QFileInfo(path).absoluteFilePath();
   const QString how = drop ? tr("dropped") : menuName;
   std::printf("---- %s, %s\n", qPrintable(fileName), qPrintable(how));
-  w_.statusBar()->clearMessage();
+  auto_.clearStatusMessage();
 
   // Drive the modal dialogs the way a user would: pick the file, read the error, close it.
   bool sawFileDialog = false, sawMessage = false;
@@ -934,7 +940,7 @@ void GuiTests::badFileOpen(const QString& path, QAction* open, const QString& me
   driver.stop();
   const qint64 ms = clock.elapsed();
 
-  const QString status = w_.statusBar()->currentMessage();
+  const QString status = auto_.statusMessage();
   auto quoted = [](const QString& text) {  // what this log prints of a shown text
     return text.size() > 120 ? text.left(120) + QStringLiteral("…") : text;
   };

@@ -233,6 +233,8 @@ class GuiTests : public QObject {
   /// The main view's error against the reference, with its per-pixel readback.
   sl::Renderer::ErrorResult measureView();
   void check(bool ok, const QString& what);
+  /// Automation::waitForFrames, a failed check when the frames did not come in `timeoutMs`.
+  bool waitForFrames(int frames, int timeoutMs = 30000);
   /// Starts `driver` closing each message box as a user would, its text read into `text`
   /// first (the caller stops it).
   void readAndCloseDialogs(QTimer& driver, QString& text);

@@ -97,8 +97,8 @@ bool GuiTests::heartbeat(const QString& dir) {
       check(false, *e);
       continue;
     }
-    auto_.waitForFrames(1, 300000);
-    if (!view->continuous()) w_.continuousAction()->trigger();  // F6
+    waitForFrames(1, 300000);
+    if (!view->continuous()) auto_.toggleContinuous();  // F6
     check(view->continuous(), tr("%1: rendering continuously").arg(technique));
     for (const bool drag : {false, true}) {
       const auto r = watch(kPhaseMs, drag);
@@ -123,7 +123,7 @@ bool GuiTests::heartbeat(const QString& dir) {
         w_.grab().toImage().save(
             QDir(dir).filePath(QStringLiteral("heartbeat-%1.png").arg(technique)));
     }
-    w_.continuousAction()->trigger();  // F6 off
+    auto_.toggleContinuous();  // F6 off
   }
   std::printf("measure heartbeat_worst_stall_ms=%lld\n", static_cast<long long>(worst));
   return true;

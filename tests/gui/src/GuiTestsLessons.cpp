@@ -79,7 +79,7 @@ bool GuiTests::lessonClaims(const QString& dir) {
 
 void GuiTests::checkOpenLesson(int index, const QString& dir) {
   // Settled: a resize once the panels are filled (presenter mode) may start it again.
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   auto_.waitForSettled();
   const Lesson& lesson = w_.lessons()->lessons()[static_cast<std::size_t>(index)];
   const QString name = QFileInfo(lesson.path).completeBaseName();
@@ -89,7 +89,7 @@ void GuiTests::checkOpenLesson(int index, const QString& dir) {
   std::fflush(stdout);
   check(w_.viewport()->techniqueId() == p.technique && !w_.lessons()->settling(),
         tr("opens with %1 on %2, its temporal state settled or none (%3 settling frames)")
-            .arg(QString::fromStdString(w_.viewport()->techniqueId()), w_.sceneSpec())
+            .arg(QString::fromStdString(w_.viewport()->techniqueId()), auto_.sceneShown())
             .arg(w_.lessons()->settleFrames()));
   std::printf("     window %dx%d, view %dx%d\n", w_.width(), w_.height(), w_.viewport()->width(),
               w_.viewport()->height());
@@ -154,7 +154,7 @@ void GuiTests::lessonOnScreen(const QString& name) {
                     dock->minimumSizeHint().height());
   // Every live number the text quotes is filled once the view's error is measured (a lesson
   // with a split view: its right half's too).
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   w_.viewport()->computeErrorNow();
   QCoreApplication::processEvents();
   const QString shown = w_.lessonPanel()->shownText();
@@ -404,10 +404,10 @@ void GuiTests::claimProjective(const QString& text) {
   sl::Light raised = low;
   raised.elevationDeg = float(high);
   w_.viewport()->setLight(raised);
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   const auto [highM, highN] = floorMedian();
   w_.viewport()->setLight(low);
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   check(lowN > 1000 && highN > 1000 && lowM >= ratio * highM,
         tr("the floor 5-30 m away: median m %1 with the sun at %2°, %3 at %4°: %5x (at least %6x)")
             .arg(lowM, 0, 'f', 2)
@@ -426,7 +426,7 @@ void GuiTests::claimTessellation(const QString& text) {
   const auto off = w_.viewport()->computeErrorNow();
   if (auto e = r->params().setFromString("tessellation", "on"))
     check(false, QString::fromStdString(*e));
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   const auto on = w_.viewport()->computeErrorNow();
   check(off && on && *off >= ratio * *on,
         tr("error %1 % without tessellation, %2 % with it: %3x (at least %4x)")
@@ -437,9 +437,9 @@ void GuiTests::claimTessellation(const QString& text) {
 }
 
 void GuiTests::claimRtw() {
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   const auto main = w_.viewport()->computeErrorNow();
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   const auto split = w_.viewport()->splitErrorPct();
   sl::ViewSide* r = w_.viewport()->mainSide();
   check(w_.viewport()->splitTechnique() == "uniform" && main && split && *main < *split,
@@ -478,7 +478,7 @@ void GuiTests::checkCovarianceReadouts(const QString& where) {
   sl::ViewSide* r = w_.viewport()->mainSide();
   auto drawn = [covariance] { return covariance ? covariance->drawnValues() : QJsonObject(); };
   if (drawn().value(QStringLiteral("frame")).toDouble(-1) != double(r->publication().frameIndex))
-    auto_.waitForFrames(1);  // the panel shows the frame the window drew last
+    waitForFrames(1);  // the panel shows the frame the window drew last
   const QStringList problems = CovariancePanel::readoutProblems(drawn(), r->publication());
   check(covariance && problems.isEmpty(),
         tr("%1: every Covariance readout agrees with the renderer's publication%2")
@@ -563,9 +563,9 @@ void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
   }
 
   // The split view at the same texels: the lesson's partner on the right.
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   const auto main = w_.viewport()->computeErrorNow();
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   const auto split = w_.viewport()->splitErrorPct();
   const auto splitParams = w_.viewport()->splitParams();
   const QString splitRes = QString::fromStdString(
@@ -624,7 +624,7 @@ void GuiTests::claimVibration(const QString& text) {
     std::vector<std::uint8_t> last = auto_.readback().hardMask;
     std::vector<std::size_t> counts;
     for (int k = 0; k < frames; ++k) {
-      auto_.waitForFrames(1);
+      waitForFrames(1);
       std::vector<std::uint8_t> now = auto_.readback().hardMask;
       std::size_t c = 0;
       for (std::size_t i = 0; i < std::min(now.size(), last.size()); ++i) c += now[i] != last[i];
@@ -660,7 +660,7 @@ void GuiTests::claimVibration(const QString& text) {
   // The fix the text suggests: 0.9999 holds R, and nothing changes.
   if (auto e = r->params().setFromString(rtwsettle::kThresholdKey, "0.9999"))
     check(false, QString::fromStdString(*e));
-  auto_.waitForFrames(3);
+  waitForFrames(3);
   const std::vector<std::size_t> held = changedPerFrame(3);
   check(std::all_of(held.begin(), held.end(), [](std::size_t c) { return c == 0; }),
         tr("threshold 0.9999: %1 pixels change per frame").arg(list(held)));
@@ -700,7 +700,7 @@ void GuiTests::lessonSet(const char* key, const QString& value, int frames) {
 void GuiTests::lessonSwitch(const QString& technique,
                             const std::vector<std::pair<const char*, QString>>& params, int frames,
                             int timeoutMs) {
-  w_.setTechnique(technique);
+  if (auto e = auto_.setTechnique(technique)) check(false, *e);
   check(w_.viewport()->techniqueId() == technique.toStdString(),
         tr("the technique is now %1").arg(technique));
   for (const auto& [key, value] : params)
@@ -838,7 +838,7 @@ void GuiTests::claimCascades(const QString& text) {
     for (double x : v) s << (std::isfinite(x) ? QString::number(x, 'f', 1) : QStringLiteral("-"));
     return s.join(QStringLiteral(", "));
   };
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   const std::vector<double> uniform = perMap();
   const LessonNumbers uniformN = measureLesson();
   lessonSet("split", QStringLiteral("log"), 3);
@@ -954,9 +954,9 @@ void GuiTests::claimAsm(const QString& text) {
   const double asked = stated(text, QStringLiteral("requests (\\d+) pages"));
   check(std::isfinite(coarse) && std::isfinite(asked), tr("the text states asm's pages"));
   auto pct = [](std::optional<double> v) { return v ? QString::number(*v, 'f', 3) : tr("none"); };
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   auto main = w_.viewport()->computeErrorNow();
-  auto_.waitForFrames(1);
+  waitForFrames(1);
   auto split = w_.viewport()->splitErrorPct();
   check(w_.viewport()->splitTechnique() == "rmsm" && split && main && *split < *main / 3.0,
         tr("asm %1 % error, rmsm %2 % (at most a third)").arg(pct(main)).arg(pct(split)));
@@ -979,9 +979,9 @@ void GuiTests::claimAsm(const QString& text) {
   for (const auto& [id, resolution] : {std::pair{"uniform", "2048"}, {"rtw-backward", "1024"}}) {
     if (auto e = w_.viewport()->setSplitTechnique(id, {{"resolution", resolution}}))
       check(false, QString::fromStdString(*e));
-    auto_.waitForFrames(3);
+    waitForFrames(3);
     main = w_.viewport()->computeErrorNow();
-    auto_.waitForFrames(1);
+    waitForFrames(1);
     split = w_.viewport()->splitErrorPct();
     check(split && main && *split < *main,
           tr("%1 at %2 x %2 texels: %3 %, asm %4 %")

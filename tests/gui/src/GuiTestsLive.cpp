@@ -36,7 +36,7 @@ bool GuiTests::liveError(const QString& dir) {
   check(errorOverlay >= 0 && !shared.set("view.overlay", double(errorOverlay)),
         tr("the error overlay is on"));
   QCoreApplication::processEvents();
-  auto_.waitForFrames(2);
+  waitForFrames(2);
 
   // Waits (rendering) until the live error is of the current view; ms taken, -1 on timeout.
   auto waitFresh = [&]() -> qint64 {
@@ -50,7 +50,7 @@ bool GuiTests::liveError(const QString& dir) {
     return -1;
   };
 
-  w_.continuousAction()->trigger();  // F6
+  auto_.toggleContinuous();  // F6
   check(view->continuous(), tr("F6: continuous rendering is on"));
   const std::uint64_t framesAtStart = view->framesRendered();
   const qint64 firstMs = waitFresh();
@@ -62,10 +62,10 @@ bool GuiTests::liveError(const QString& dir) {
   if (firstMs < 0) return false;
   std::printf("measure live_error_first_ms=%lld frames=%llu\n", static_cast<long long>(firstMs),
               static_cast<unsigned long long>(framesMeanwhile));
-  auto_.waitForFrames(1);  // the readout and overlay follow the frame that took it
-  const QString label = w_.errorLabel()->text();
+  waitForFrames(1);  // the readout and overlay follow the frame that took it
+  const QString label = auto_.errorReadout();
   check(label.contains(QStringLiteral("error ")) && label.contains(QStringLiteral(" s old")) &&
-            label.contains(QStringLiteral("ago")) && w_.errorLabel()->isEnabled(),
+            label.contains(QStringLiteral("ago")) && auto_.errorReadoutCurrent(),
         tr("the readout shows a number and the reference's age: \"%1\"").arg(label));
   if (!dir.isEmpty() && QDir().mkpath(dir))  // the window with the live readout
     w_.grab().toImage().save(QDir(dir).filePath(QStringLiteral("live-error.png")));
@@ -88,14 +88,14 @@ bool GuiTests::liveError(const QString& dir) {
 
   // The same still frame measured synchronously: the same number (uniform keeps no state).
   const double asyncPct = live ? live->errorPct : -1.0;
-  w_.continuousAction()->trigger();  // off: the frame stays
-  auto_.waitForFrames(1);
+  auto_.toggleContinuous();  // off: the frame stays
+  waitForFrames(1);
   const auto syncPct = view->computeErrorNow();
   check(syncPct && *syncPct == asyncPct,
         tr("the synchronous error of the same view: %1 % (live %2 %)")
             .arg(syncPct.value_or(-1), 0, 'f', 4)
             .arg(asyncPct, 0, 'f', 4));
-  w_.continuousAction()->trigger();  // on again
+  auto_.toggleContinuous();  // on again
   check(waitFresh() >= 0, tr("live again after F6 off and on"));
 
   // A camera move: the number shown is an earlier view's (greyed, said so), then fresh again.
@@ -115,15 +115,15 @@ bool GuiTests::liveError(const QString& dir) {
           const auto shown = split ? split : view->liveError();
           first->stale = shown && shown->age.stale;
           first->errorShown = view->errorPct().has_value();
-          first->labelEnabled = w_.errorLabel()->isEnabled();
-          first->label = w_.errorLabel()->text();
+          first->labelEnabled = auto_.errorReadoutCurrent();
+          first->label = auto_.errorReadout();
           first->note = auto_.viewReadouts().errorOverlayNote;
           first->rightCaption = auto_.viewReadouts().rightCaption;
         });
     sl::Camera moved = view->camera();
     moved.orbit(yawDeg, pitchDeg);
     view->setCamera(moved);
-    auto_.waitForFrames(1);
+    waitForFrames(1);
     QObject::disconnect(c);
     return *first;
   };
@@ -174,19 +174,19 @@ bool GuiTests::liveError(const QString& dir) {
   };
   bool loaded = false;
   const bool wasBusy =
-      whileTracing(2.0f, [&] { loaded = w_.loadScene(QStringLiteral("corridor")); });
+      whileTracing(2.0f, [&] { loaded = auto_.openScene(QStringLiteral("corridor")); });
   check(loaded, tr("corridor loaded right after a camera move (a trace was %1)")
                     .arg(wasBusy ? "running" : "not running"));
   check(!view->liveError(), tr("no error of the old scene shown after the switch"));
   const qint64 newSceneMs = waitFresh();
   check(newSceneMs >= 0, tr("the new scene's live error after %1 ms: \"%2\"")
                              .arg(newSceneMs)
-                             .arg(w_.errorLabel()->text()));
+                             .arg(auto_.errorReadout()));
 
   // The split view's right half (uniform at 512, the left at its own resolution): its own
   // live error within the time limit, its age in its caption, equal to the synchronous
   // error of the same still frame; a camera move makes it stale, then fresh again.
-  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
+  auto_.setSplit(QStringLiteral("uniform"), {{"resolution", "512"}});
   auto waitSplitFresh = [&]() -> qint64 {
     QElapsedTimer splitClock;
     splitClock.start();
@@ -206,7 +206,7 @@ bool GuiTests::liveError(const QString& dir) {
                                 ? auto_.viewReadouts().splitLiveReference->finished()
                                 : 0)));
   std::printf("measure split_live_error_first_ms=%lld\n", static_cast<long long>(splitMs));
-  auto_.waitForFrames(1);  // the captions follow the frame that took it
+  waitForFrames(1);  // the captions follow the frame that took it
   const auto splitLive = view->splitLiveError();
   const auto mainLive = view->liveError();
   const QString rightCaption = auto_.viewReadouts().rightCaption,
@@ -217,8 +217,8 @@ bool GuiTests::liveError(const QString& dir) {
         tr("the captions say each half's error and its reference's age: \"%1\" | \"%2\"")
             .arg(leftCaption, rightCaption));
   const double splitAsync = splitLive ? splitLive->errorPct : -1.0;
-  w_.continuousAction()->trigger();  // off: the frame stays
-  auto_.waitForFrames(1);
+  auto_.toggleContinuous();  // off: the frame stays
+  waitForFrames(1);
   (void)view->computeErrorNow();  // both halves, synchronously
   const auto splitSync = view->splitErrorPct();
   check(splitSync && *splitSync == splitAsync && mainLive && splitAsync != mainLive->errorPct,
@@ -226,7 +226,7 @@ bool GuiTests::liveError(const QString& dir) {
             .arg(splitSync.value_or(-1), 0, 'f', 4)
             .arg(splitAsync, 0, 'f', 4)
             .arg(mainLive ? mainLive->errorPct : -1.0, 0, 'f', 4));
-  w_.continuousAction()->trigger();  // on again: traced afresh (F6 off forgot the traces)
+  auto_.toggleContinuous();  // on again: traced afresh (F6 off forgot the traces)
   check(waitSplitFresh() >= 0, tr("the right half live again after F6 off and on"));
   const FirstFrame splitMoved = moveAndReadFirstFrame(15.0f, 0.0f);
   check(splitMoved.seen && splitMoved.stale &&
@@ -237,7 +237,7 @@ bool GuiTests::liveError(const QString& dir) {
   check(splitAgainMs >= 0, tr("the right half fresh again %1 ms after the move").arg(splitAgainMs));
   if (!dir.isEmpty())
     view->grabView().save(QDir(dir).filePath(QStringLiteral("live-error-split.png")));
-  w_.teaching()->setSplitTechnique(QString());
+  auto_.setSplit(QString());
 
   // Leave right after a move (a trace possibly running): the window closes (a running trace is
   // cancelled and joined), exit 0.
@@ -254,7 +254,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   const QSize size(480, 300);
   view->setFixedSize(size);
   QCoreApplication::processEvents();
-  auto_.waitForFrames(1, 300000);
+  waitForFrames(1, 300000);
   check(
       auto_.viewReadouts().internalDivisor == 1 && view->mainSide()->stats().width == size.width(),
       tr("scripted runs render at full size: %1 px wide").arg(view->mainSide()->stats().width));
@@ -263,7 +263,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
         tr("declared: view.adaptive off by default, budget 250 ms"));
   check(!shared.set("view.adaptive", 1.0), tr("view.adaptive on"));
   view->setAdaptiveAllowed(true);  // as in an interactive window
-  auto_.waitForFrames(1, 300000);  // a full-size frame of the slow technique
+  waitForFrames(1, 300000);        // a full-size frame of the slow technique
   const double slowMs = auto_.viewReadouts().lastFrameMs;
   std::printf("measure full_size_frame_ms=%.0f\n", slowMs);
   check(slowMs > 250.0, tr("%1 at %2x%3: a frame takes %4 ms (over the budget)")
@@ -275,7 +275,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   int smallestWidth = size.width();
   for (int i = 0; i < 3; ++i) {
     view->requestFrame();
-    auto_.waitForFrames(1, 300000);
+    waitForFrames(1, 300000);
     smallestWidth = std::min(smallestWidth, view->mainSide()->stats().width);
     check(auto_.viewReadouts().internalDivisor <= 2,
           tr("never below half size: divisor %1").arg(auto_.viewReadouts().internalDivisor));
@@ -314,7 +314,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   // A grab (Automation::grabView, as File > Save viewport image) of a reduced view renders it
   // at full size for the image.
   view->requestFrame();
-  auto_.waitForFrames(1, 300000);
+  waitForFrames(1, 300000);
   check(auto_.viewReadouts().internalDivisor == 2,
         tr("reduced again: divisor %1").arg(auto_.viewReadouts().internalDivisor));
   const QImage grabbed = auto_.grabView();
@@ -327,7 +327,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   // is at half size), so that the still view's redraw and the recovery below start reduced.
   for (int i = 0; i < 4 && auto_.viewReadouts().internalDivisor != 2; ++i) {
     view->requestFrame();
-    auto_.waitForFrames(1, 300000);
+    waitForFrames(1, 300000);
   }
   check(auto_.viewReadouts().internalDivisor == 2 && auto_.viewReadouts().adaptiveDivisor == 2,
         tr("reduced again before the still view's redraw: divisor %1")
@@ -351,7 +351,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   while ((auto_.viewReadouts().adaptiveDivisor > 1 || auto_.viewReadouts().internalDivisor > 1) &&
          recovery.elapsed() < 5000) {
     view->requestFrame();
-    auto_.waitForFrames(1, 300000);
+    waitForFrames(1, 300000);
   }
   const qint64 recoveredMs = recovery.elapsed();
   std::printf("measure recovery_ms=%lld\n", static_cast<long long>(recoveredMs));
@@ -364,7 +364,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   check(!shared.set("view.adaptive.budget_ms", 20.0) && !shared.set("view.adaptive", 0.0),
         tr("budget 20 ms, view.adaptive off"));
   view->requestFrame();
-  auto_.waitForFrames(2, 300000);
+  waitForFrames(2, 300000);
   check(
       auto_.viewReadouts().internalDivisor == 1 && view->mainSide()->stats().width == size.width(),
       tr("view.adaptive off: full size (%1 px wide)").arg(view->mainSide()->stats().width));
@@ -373,24 +373,24 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   // them turns it off (presenter mode and the split view until they end, a lesson for good).
   check(!shared.set("view.adaptive", 1.0) && view->adaptiveActive(),
         tr("view.adaptive on again: adaptive resolution active"));
-  w_.setPresenterMode(true);
-  auto_.waitForFrames(1, 300000);
+  auto_.setPresenterMode(true);
+  waitForFrames(1, 300000);
   check(!view->adaptiveActive(), tr("presenter mode: adaptive resolution not used"));
-  w_.setPresenterMode(false);
-  auto_.waitForFrames(1, 300000);
+  auto_.setPresenterMode(false);
+  waitForFrames(1, 300000);
   check(view->adaptiveActive(), tr("presenter mode off: active again"));
-  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"));
-  auto_.waitForFrames(1, 300000);
+  auto_.setSplit(QStringLiteral("uniform"));
+  waitForFrames(1, 300000);
   check(!view->adaptiveActive(), tr("split view: adaptive resolution not used"));
-  w_.teaching()->setSplitTechnique(QString());
-  auto_.waitForFrames(1, 300000);
+  auto_.setSplit(QString());
+  waitForFrames(1, 300000);
   check(view->adaptiveActive(), tr("split view off: active again"));
   check(auto_.openLesson(QStringLiteral("1")) && auto_.waitForSettled(300000),
         tr("lesson 1 opened and settled"));
   sl::ParamSet& lessonShared = view->mainSide()->rendererParams();
   check(!lessonShared.set("view.adaptive", 1.0) && !view->adaptiveActive(),
         tr("a lesson: adaptive resolution not used, view.adaptive on or not"));
-  auto_.waitForFrames(2, 300000);
+  waitForFrames(2, 300000);
   check(auto_.viewReadouts().internalDivisor == 1 && auto_.resolutionNote().isEmpty(),
         tr("a lesson's frames are full size, no resolution note"));
   return true;
@@ -452,7 +452,7 @@ bool GuiTests::noFreeze(const QString& dir) {
         maxFrameTiles = p ? p->done / p->unitsPerTile : 0;  // tiles reached (not this frame's)
       });
   beat.start();
-  w_.continuousAction()->trigger();  // F6
+  auto_.toggleContinuous();  // F6
   check(view->continuous(), tr("F6: continuous rendering is on"));
   const std::uint64_t framesAtStart = view->framesRendered();
   QString partialNote;
@@ -529,7 +529,7 @@ bool GuiTests::noFreeze(const QString& dir) {
     view->grabView().save(QDir(dir).filePath(QStringLiteral("no-freeze-complete.png")));
 
   // The same view resolved in one call, as the CLI renders it: the same pixels and error.
-  w_.continuousAction()->trigger();              // off: on demand, one call per frame
+  auto_.toggleContinuous();                      // off: on demand, one call per frame
   const QImage oneShot = auto_.renderedFrame();  // renders the frame it grabs
   check(!auto_.viewReadouts().progress, tr("continuous off: frames resolve in one call"));
   const auto syncPct = view->computeErrorNow();

@@ -28,7 +28,7 @@ bool GuiTests::outputPolicy(const QString& dirPath) {
   const QString buffer = dir.filePath(QStringLiteral("viewport.png"));
   const QString link = dir.filePath(QStringLiteral("link.json"));
   const QString fifo = dir.filePath(QStringLiteral("fifo.png"));
-  check(QFileInfo(w_.sceneSpec()).canonicalFilePath() == QFileInfo(scene).canonicalFilePath(),
+  check(QFileInfo(auto_.sceneShown()).canonicalFilePath() == QFileInfo(scene).canonicalFilePath(),
         tr("the window shows %1").arg(scene));
   const QByteArray sceneBytes = contents(scene), bufferBytes = contents(buffer);
   check(!sceneBytes.isEmpty() && !bufferBytes.isEmpty(), tr("the scene's files are there"));
@@ -40,14 +40,14 @@ bool GuiTests::outputPolicy(const QString& dirPath) {
   readAndCloseDialogs(driver, dialogText);
   for (const QString& path : {scene, buffer, link}) {
     dialogText.clear();
-    const bool saved = w_.sessions()->save(path);
+    const bool saved = auto_.saveSession(path);
     check(!saved && dialogText.contains(QStringLiteral("is the same file as")),
           tr("Save session %1 refused: \"%2\"").arg(path, dialogText.left(200)));
     check(contents(scene) == sceneBytes && contents(buffer) == bufferBytes,
           tr("after Save session %1 the scene's files are unchanged").arg(path));
   }
   // File > Export figure onto the buffer: refused, named.
-  const std::optional<QString> figure = w_.exportFigure(buffer);
+  const std::optional<QString> figure = auto_.exportFigure(buffer);
   check(figure && figure->contains(QStringLiteral("the same file as the scene's file")),
         tr("Export figure onto the scene's buffer refused: %1").arg(figure.value_or(QString())));
   check(contents(buffer) == bufferBytes, tr("the buffer is unchanged"));
@@ -61,7 +61,7 @@ bool GuiTests::outputPolicy(const QString& dirPath) {
             .arg(toFifo.value_or(QString())));
   // A new session: written whole, nothing left beside it.
   const QString fresh = dir.filePath(QStringLiteral("fresh-session.json"));
-  check(w_.sessions()->save(fresh) && QFileInfo(fresh).size() > 0, tr("a new session saved"));
+  check(auto_.saveSession(fresh) && QFileInfo(fresh).size() > 0, tr("a new session saved"));
   const QStringList left = dir.entryList({QStringLiteral(".*tmp*")}, QDir::Hidden | QDir::Files);
   check(left.isEmpty(), tr("no temporary file left (%1)").arg(left.join(QStringLiteral(", "))));
   driver.stop();

@@ -47,8 +47,8 @@ bool GuiTests::panelsFollowTechnique() {
     return dock && dock->isVisible() && !dock->visibleRegion().isEmpty();
   };
   auto switchTo = [this](const QString& technique) {
-    w_.setTechnique(technique);
-    auto_.waitForFrames(2);
+    if (auto e = auto_.setTechnique(technique)) check(false, *e);
+    waitForFrames(2);
   };
   // No panel in view says that it gets nothing.
   auto checkNoEmptyPanel = [this](const QString& when) {
@@ -65,7 +65,7 @@ bool GuiTests::panelsFollowTechnique() {
   check(w_.viewport()->techniqueId() == "da-rtw",
         tr("the window opens on da-rtw (%1)")
             .arg(QString::fromStdString(w_.viewport()->techniqueId())));
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   for (const QString& id : kRtwPanels)
     check(inView(id), tr("da-rtw: the %1 panel is in view").arg(id));
   check(w_.paramDock()->isVisible() && !w_.paramDock()->visibleRegion().isEmpty(),
@@ -119,7 +119,7 @@ bool GuiTests::turnPrediction(const QString& dir) {
   // The first prediction weighs the shadow edges of the frame before the last: frame 3.
   QJsonObject drawn;
   for (int k = 0; k < 12; ++k) {
-    auto_.waitForFrames(1);
+    waitForFrames(1);
     drawn = panel->drawnValues();
     if (drawn.value(QStringLiteral("state")).toString() == QLatin1String("held_best")) break;
   }
@@ -203,7 +203,7 @@ bool GuiTests::turnPrediction(const QString& dir) {
               .arg(threshold, 0, 'f', 9)
               .arg(1.0 - threshold, 0, 'e', 2)
               .arg(shown));
-    auto_.waitForFrames(2);
+    waitForFrames(2);
     const QJsonObject band = panel->drawnValues();
     check(band.value(QStringLiteral("gauge.band_frames")).toInt() >= 2 &&
               band.value(QStringLiteral("gauge.band_lo")).toDouble() <=
@@ -220,7 +220,7 @@ bool GuiTests::turnPrediction(const QString& dir) {
     for (const PublicationDocks::Dock& d : w_.docks().docks())
       if (d.dock != dock && w_.dockWidgetArea(d.dock) == w_.dockWidgetArea(dock)) d.dock->hide();
     for (int k = 0; k < 6; ++k) {
-      auto_.waitForFrames(1);
+      waitForFrames(1);
       if (panel->drawnValues().value(QStringLiteral("prediction.valid")).toBool()) break;
     }
     dock->grab().save(QDir(dir).filePath(QStringLiteral("covariance-turn-prediction.png")));

@@ -94,7 +94,7 @@ bool GuiTests::presenter(const QString& dir) {
             .arg(fromCommandLine ? QStringLiteral("--presenter")
                                  : QStringLiteral("View > Presenter mode")));
   for (int i = 0; i < 10; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
-  auto_.waitForFrames(3);
+  waitForFrames(3);
 
   // 1. The window fits the screen.
   const QScreen* screen = w_.screen();
@@ -121,7 +121,7 @@ bool GuiTests::presenter(const QString& dir) {
   const double scale = std::min(sr.width() / 1920.0, sr.height() / 1080.0);
   const int wantedPx = int(std::ceil(22.0 * scale));
   const int appPx = QFontInfo(QApplication::font()).pixelSize();
-  const int statusPx = QFontInfo(w_.errorLabel()->font()).pixelSize();
+  const int statusPx = auto_.statusTextPixelSize();
   check(appPx >= wantedPx && statusPx >= wantedPx,
         tr("body text %1 px (status line %2 px) >= %3 px (22 px x %4)")
             .arg(appPx)
@@ -163,14 +163,14 @@ bool GuiTests::presenter(const QString& dir) {
     return false;
   }
   w_.teaching()->syncOverlayCombo();
-  w_.setPaused(true);
-  w_.stepFrame();
-  auto_.waitForFrames(1);
+  auto_.setPaused(true);
+  auto_.stepFrame();
+  waitForFrames(1);
   sl::Light light = v->light();
   light.azimuthDeg += 0.5f;
   v->setLight(light);
-  w_.stepFrame();
-  auto_.waitForFrames(1);
+  auto_.stepFrame();
+  waitForFrames(1);
   const QImage rendered = v->renderedImage();
   const auto counted = r->stats().maskChange;
   std::uint64_t vivid = 0;
@@ -211,8 +211,8 @@ bool GuiTests::presenter(const QString& dir) {
   sendMouse(v, QEvent::MouseButtonPress, a, Qt::LeftButton, Qt::LeftButton, zoomMods);
   sendMouse(v, QEvent::MouseMove, b, Qt::NoButton, Qt::LeftButton, zoomMods);
   sendMouse(v, QEvent::MouseButtonRelease, b, Qt::LeftButton, Qt::NoButton, zoomMods);
-  w_.stepFrame();
-  auto_.waitForFrames(1);
+  auto_.stepFrame();
+  waitForFrames(1);
   const QRect area = auto_.viewReadouts().zoomArea.value_or(QRect());
   const QRect inset = auto_.viewReadouts().zoomInset;
   const int factor = auto_.viewReadouts().zoomFactor;
@@ -381,8 +381,8 @@ void GuiTests::checkOverlayBoxes(const QString& dir, const QSize& view) {
 void GuiTests::checkPresenterFonts(const QString& dir, const QSize& screen) {
   w_.presenter()->choosePanel(w_.timingDock()->objectName());
   for (int i = 0; i < 10; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
-  w_.stepFrame();  // paused since the changed overlay's check: one frame for the Timing panel
-  auto_.waitForFrames(1);
+  auto_.stepFrame();  // paused since the changed overlay's check: one frame for the Timing panel
+  waitForFrames(1);
   for (int i = 0; i < 5; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   // Every widget of every dock (shown or not: a dock shown later keeps its font), the docks'
   // own titles, and the Qt Charts items: at least kMinShare of the body size.
@@ -495,7 +495,7 @@ void GuiTests::checkFullPanel(const QString& dir, const QRect& screen) {
   // F12 again: the view back beside the panel, rendering.
   w_.presenter()->fullPanelAction()->trigger();
   settle();
-  w_.stepFrame();  // paused: one frame
+  auto_.stepFrame();  // paused: one frame
   const bool rendered = auto_.waitForFrames(1);
   check(!w_.presenter()->fullPanel() && w_.viewport()->isVisible() && rendered &&
             w_.presenter()->bigDock() && w_.presenter()->bigDock()->width() < w_.width() * 3 / 4,
@@ -510,7 +510,7 @@ bool GuiTests::splitParams(const QString& dir) {
   ViewportWidget* v = w_.viewport();
   sl::ViewSide* main = v->mainSide();
   const std::string other = "rtw-backward";
-  w_.teaching()->setSplitTechnique(QString::fromStdString(other));  // as "Compare with" does
+  auto_.setSplit(QString::fromStdString(other));  // as "Compare with" does
   if (v->splitTechnique() != other) {
     check(false, tr("the split view shows %1").arg(QString::fromStdString(other)));
     return false;
@@ -519,7 +519,7 @@ bool GuiTests::splitParams(const QString& dir) {
   w_.paramDock()->raise();
   v->setFixedSize(640, 400);  // the same frame size for every measurement
   QCoreApplication::processEvents();
-  auto_.waitForFrames(3);
+  waitForFrames(3);
   SplitSideParams& side = *w_.splitSide();
   auto* spin = side.panel()->findChild<QSpinBox*>(QStringLiteral("param:resolution"));
   check(side.panel()->isVisible() && spin,
@@ -542,7 +542,7 @@ bool GuiTests::splitParams(const QString& dir) {
   const int edited = before / 2;
   spin->setValue(edited);
   QCoreApplication::processEvents();
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   const auto mainErrAfter = v->computeErrorNow();
   const auto splitErrAfter = v->splitErrorPct();
   const std::uint64_t mainBytesAfter = main->stats().memory.bytes();
@@ -574,7 +574,7 @@ bool GuiTests::splitParams(const QString& dir) {
   // The parameter matched is the right technique's declared memory knob (its resolution
   // here, rmsm's pool pages below), set through its spin box in the right half's panel.
   auto checkEqualMemory = [&](const QString& when) {
-    auto_.waitForFrames(2);
+    waitForFrames(2);
     const std::uint64_t mainBytes = main->stats().memory.bytes();
     const std::uint64_t splitBytes = split->stats().memory.bytes();
     const sl::ParamDecl* decl = sl::memoryKnob(split->params().decls());
@@ -599,7 +599,7 @@ bool GuiTests::splitParams(const QString& dir) {
     // One step more (measured with a frame, then back): over the budget.
     knobSpin->setValue(value + step);
     QCoreApplication::processEvents();
-    auto_.waitForFrames(1);
+    waitForFrames(1);
     const std::uint64_t over = split->stats().memory.bytes();
     check(over > mainBytes, tr("%1: one step more (%2 = %3) spends %4 B > %5 B")
                                 .arg(when, key)
@@ -616,14 +616,14 @@ bool GuiTests::splitParams(const QString& dir) {
     return false;
   }
   w_.paramPanel()->refreshValues();
-  auto_.waitForFrames(2);
+  waitForFrames(2);
   side.equalMemoryBox()->setChecked(true);
   if (auto e = main->params().set("resolution", main->params().get("resolution") * 2)) {
     check(false, QString::fromStdString(*e));
     return false;
   }
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
-  auto_.waitForFrames(3);
+  waitForFrames(3);
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   check(side.matchedMainBytes() && *side.matchedMainBytes() == main->stats().memory.bytes(),
         tr("after the left resolution changed to %1, matched again for %2 B")
@@ -633,7 +633,7 @@ bool GuiTests::splitParams(const QString& dir) {
   checkEqualMemory(tr("re-matched"));
   // A second pair: rmsm's memory is its physical pool, so equal memory sets pool.pages (its
   // virtual.resolution, a resolution in name, spends no byte).
-  w_.teaching()->setSplitTechnique(QStringLiteral("rmsm"));
+  auto_.setSplit(QStringLiteral("rmsm"));
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   split = v->splitSide();
   check(split && v->splitTechnique() == "rmsm", tr("the split view shows rmsm"));

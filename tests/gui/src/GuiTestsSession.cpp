@@ -39,11 +39,11 @@ void GuiTests::printSessionMetrics() {
   // The same view size in both runs: the error is that of the same frame.
   w_.viewport()->setFixedSize(640, 400);
   QCoreApplication::processEvents();
-  auto_.waitForFrames(6);  // cascades fit to last frame's depth range: settled after a few
+  waitForFrames(6);  // cascades fit to last frame's depth range: settled after a few
   const auto error = w_.viewport()->computeErrorNow();
   const auto splitError = w_.viewport()->splitErrorPct();
   sl::ViewSide* r = w_.viewport()->mainSide();
-  metric(QStringLiteral("scene"), w_.sceneSpec());
+  metric(QStringLiteral("scene"), auto_.sceneShown());
   metric(QStringLiteral("technique"), QString::fromStdString(w_.viewport()->techniqueId()));
   metric(QStringLiteral("split.technique"),
          QString::fromStdString(w_.viewport()->splitTechnique()));
@@ -84,9 +84,9 @@ bool GuiTests::sessionSave(const QString& path) {
     check(false, tr("session-save needs a FILE"));
     return false;
   }
-  check(w_.loadScene(QStringLiteral("corridor")), tr("scene corridor loaded"));
-  w_.setTechnique(QStringLiteral("cascades"));
-  auto_.waitForFrames(1);
+  check(auto_.openScene(QStringLiteral("corridor")), tr("scene corridor loaded"));
+  if (auto e = auto_.setTechnique(QStringLiteral("cascades"))) check(false, *e);
+  waitForFrames(1);
   sl::ViewSide* r = w_.viewport()->mainSide();
   for (const char* kv : {"partitions=3", "split=practical", "split.lambda=0.7",
                          "view.overlay=aliasing", "shading.ambient=0.3", "pcf=3"}) {
@@ -103,7 +103,7 @@ bool GuiTests::sessionSave(const QString& path) {
   w_.viewport()->setCamera(camera);
   w_.viewport()->setLight(sl::Light::directional(-35.0f, 38.5f));
   w_.syncLightControls();
-  w_.teaching()->setSplitTechnique(QStringLiteral("uniform"), {{"resolution", "512"}});
+  auto_.setSplit(QStringLiteral("uniform"), {{"resolution", "512"}});
   w_.timingDock()->hide();
   printSessionMetrics();
 
@@ -128,26 +128,26 @@ bool GuiTests::sessionSave(const QString& path) {
   check(sawDialog && QFileInfo(path).isFile(),
         tr("File > Save session… showed the file dialog and wrote %1").arg(path));
   const QString absolute = QFileInfo(path).absoluteFilePath();
-  check(!w_.sessions()->recent().isEmpty() && w_.sessions()->recent().first() == absolute,
+  check(!auto_.recentSessions().isEmpty() && auto_.recentSessions().first() == absolute,
         tr("Recent sessions starts with it"));
 
   // Recent sessions: at most 8, and a deleted file is dropped with a message.
   const QString gone = path + QStringLiteral(".gone.json");
   for (int i = 0; i < SessionFiles::kMaxRecent + 2; ++i)
-    w_.sessions()->save(path + QStringLiteral(".%1.json").arg(i));
-  check(w_.sessions()->recent().size() == SessionFiles::kMaxRecent,
+    auto_.saveSession(path + QStringLiteral(".%1.json").arg(i));
+  check(auto_.recentSessions().size() == SessionFiles::kMaxRecent,
         tr("Recent sessions keeps %1 (%2)")
             .arg(SessionFiles::kMaxRecent)
-            .arg(w_.sessions()->recent().size()));
-  w_.sessions()->save(gone);
-  w_.sessions()->save(path);
+            .arg(auto_.recentSessions().size()));
+  auto_.saveSession(gone);
+  auto_.saveSession(path);
   QFile::remove(gone);
-  w_.statusBar()->clearMessage();
-  const QStringList recent = w_.sessions()->recent();
+  auto_.clearStatusMessage();
+  const QStringList recent = auto_.recentSessions();
   check(!recent.contains(QFileInfo(gone).absoluteFilePath()) && recent.first() == absolute,
         tr("a deleted session is dropped from Recent sessions (%1 left)").arg(recent.size()));
-  check(w_.statusBar()->currentMessage().contains(QFileInfo(gone).fileName()),
-        tr("with a message naming it: \"%1\"").arg(w_.statusBar()->currentMessage()));
+  check(auto_.statusMessage().contains(QFileInfo(gone).fileName()),
+        tr("with a message naming it: \"%1\"").arg(auto_.statusMessage()));
   for (int i = 0; i < SessionFiles::kMaxRecent + 2; ++i)
     QFile::remove(path + QStringLiteral(".%1.json").arg(i));
 
@@ -169,9 +169,9 @@ bool GuiTests::sessionSave(const QString& path) {
     std::ofstream(bad.toStdString(), std::ios::binary | std::ios::trunc)
         << QString::fromUtf8(text).replace(QStringLiteral("BROKEN"), brokenScene).toStdString();
     badSessionOpen(bad);
-    check(w_.statusBar()->currentMessage().contains(QLatin1String(what)),
+    check(auto_.statusMessage().contains(QLatin1String(what)),
           tr("the message names the problem (%1): \"%2\"")
-              .arg(QLatin1String(what), w_.statusBar()->currentMessage()));
+              .arg(QLatin1String(what), auto_.statusMessage()));
   }
   QFile::remove(bad);
   QFile::remove(brokenScene);
@@ -194,8 +194,8 @@ void GuiTests::badSessionOpen(const QString& path) {
   QString messageText;
   QTimer driver;  // closes the error dialog as a user would, reading it first
   readAndCloseDialogs(driver, messageText);
-  w_.statusBar()->clearMessage();
-  const bool opened = w_.sessions()->open(path);
+  auto_.clearStatusMessage();
+  const bool opened = auto_.openSession(path);
   driver.stop();
   check(!opened, tr("%1 is refused").arg(QFileInfo(path).fileName()));
   check(messageText.contains(QFileInfo(path).fileName()),

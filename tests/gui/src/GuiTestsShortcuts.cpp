@@ -155,7 +155,7 @@ bool GuiTests::shortcuts() {
       key(Qt::Key_Space);
     }
     (void)view->setOutsideView(outside);
-    w_.pauseAction()->setChecked(paused);
+    auto_.setPaused(paused);
   }
 
   // A floating dock is a window of its own: its tree still drives the view.
@@ -174,7 +174,7 @@ bool GuiTests::shortcuts() {
       check(view->outsideView() != outside && view->paused() != paused,
             tr("V and Space from the tree of the floating dock '%1' act").arg(dock->windowTitle()));
       (void)view->setOutsideView(outside);
-      w_.pauseAction()->setChecked(paused);
+      auto_.setPaused(paused);
       const double movedM = hold(Qt::Key_W, 300);
       check(movedM > 1e-3, tr("W held from the floating dock flies %1 m").arg(movedM));
     } else {
@@ -216,7 +216,7 @@ bool GuiTests::shortcuts() {
   if (QApplication::focusWidget() != tree) focusOn(tree);
   key(Qt::Key_Escape);
   check(!w_.passes()->active(), tr("Esc from the tree stops stepping"));
-  w_.pauseAction()->setChecked(false);
+  auto_.setPaused(false);
 
   // The view's rates (algo/CameraNavigation) through its own handlers: a drag across the
   // view's height orbits half a turn whatever the view's size (about half of it here: whole

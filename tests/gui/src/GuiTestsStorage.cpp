@@ -59,7 +59,7 @@ bool GuiTests::storageClick(const QString& dir) {
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < kAnalysisTimeoutMs) {
-      auto_.waitForFrames(1);
+      waitForFrames(1);
       const QJsonObject drawn = panel->drawnValues();
       if (drawn.contains(QStringLiteral("mark_u"))) {
         const sl::Light shown = sl::Light::directional(
@@ -111,8 +111,8 @@ bool GuiTests::storageClick(const QString& dir) {
               .arg(expected.azimuthDeg, 0, 'f', 2)
               .arg(expected.elevationDeg, 0, 'f', 2)
               .arg(angleDeg(now, expected), 0, 'f', 3));
-    check(w_.statusBar()->currentMessage().contains(QStringLiteral("Light moved to azimuth")),
-          tr("the status bar says: %1").arg(w_.statusBar()->currentMessage()));
+    check(auto_.statusMessage().contains(QStringLiteral("Light moved to azimuth")),
+          tr("the status bar says: %1").arg(auto_.statusMessage()));
     // The next frames render with it, and the panel re-analyses with the mark under the click.
     check(analysedLight(now), tr("the panel re-analysed the moved light"));
     const QJsonObject after = panel->drawnValues();

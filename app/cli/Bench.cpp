@@ -18,7 +18,7 @@
 #include "Chart.h"
 #include "ChartCsv.h"
 #include "Commands.h"
-#include "Measure.h"
+#include "measure/Measure.h"
 #include "algo/InputFile.h"
 #include "gl/EglContext.h"
 

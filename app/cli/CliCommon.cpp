@@ -18,6 +18,7 @@
 
 #include "core/JsonInput.h"
 #include "core/Renderer.h"
+#include "measure/Measure.h"
 #include "scene/GltfLoader.h"
 
 namespace fs = std::filesystem;
@@ -61,6 +62,10 @@ double parseDouble(const std::string& opt, const std::string& text, double lo, d
     throw UsageError(opt + ": " + quoteText(text) + range);
   }
   return v;
+}
+
+double parsePathHz(const std::string& opt, const std::string& text) {
+  return parseDouble(opt, text, 0.0, kMaxPathHz);
 }
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -139,38 +144,6 @@ std::shared_ptr<Scene> loadScene(const std::string& nameOrPath) {
   for (const std::string& w : r.scene->warnings)
     std::fprintf(stderr, "warning: %s: %s\n", file.c_str(), w.c_str());
   return r.scene;
-}
-
-Camera pickCamera(const Scene& scene, const std::string& which, const std::string& opt) {
-  if (which.empty()) return scene.cameras.empty() ? scene.defaultCamera() : scene.cameras[0].camera;
-  for (const auto& b : scene.cameras)
-    if (b.name == which) return b.camera;
-  try {
-    std::size_t used = 0;
-    std::size_t idx = std::stoul(which, &used);
-    if (used == which.size() && idx < scene.cameras.size()) return scene.cameras[idx].camera;
-  } catch (...) {
-  }
-  std::string known;
-  for (const auto& b : scene.cameras) known += (known.empty() ? "" : ", ") + b.name;
-  throw UsageError(opt + ": scene '" + scene.name + "' has no camera '" + which +
-                   "' (cameras: " + (known.empty() ? "none" : known) + ")");
-}
-
-const CameraPath& pickPath(const Scene& scene, const std::string& which) {
-  if (which.empty() && !scene.paths.empty()) return scene.paths.front();
-  for (const auto& p : scene.paths)
-    if (p.name == which) return p;
-  try {
-    std::size_t used = 0;
-    std::size_t idx = std::stoul(which, &used);
-    if (used == which.size() && idx < scene.paths.size()) return scene.paths[idx];
-  } catch (...) {
-  }
-  std::string known;
-  for (const auto& p : scene.paths) known += (known.empty() ? "" : ", ") + p.name;
-  throw UsageError("--path: scene '" + scene.name + "' has no camera path '" + which +
-                   "' (paths: " + (known.empty() ? "none" : known) + ")");
 }
 
 std::optional<std::string> writeFile(const std::string& path, const std::string& bytes) {

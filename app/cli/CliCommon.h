@@ -15,16 +15,20 @@
 #include <vector>
 
 #include "algo/Camera.h"
+#include "measure/SceneCameras.h"
+#include "measure/UsageError.h"
 #include "algo/OutputFile.h"
 #include "metrics/Image.h"
 #include "scene/Scene.h"
 
 namespace sl::cli {
 
+/// The commands are the measuring library's front end: its names (ConfigSpec, ConfigRunner,
+/// runInterleaved, ...) read here as the commands' own.
+using namespace sl::measure;
+
 /// Bad input: one line on stderr naming the option or file and the problem, exit 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using sl::measure::UsageError;
 
 struct Args {
   std::vector<std::string> rest;
@@ -41,6 +45,9 @@ struct Args {
 int parseInt(const std::string& opt, const std::string& text, int lo, int hi);
 double parseDouble(const std::string& opt, const std::string& text, double lo, double hi);
 std::pair<int, int> parseSize(const std::string& text);  ///< "WxH" for --size
+/// A --path-hz value (`opt` names it): a number in 0..kMaxPathHz (measure/Measure.h), else
+/// UsageError.
+double parsePathHz(const std::string& opt, const std::string& text);
 /// Refuses a frame larger than this OpenGL implementation renders (Renderer::checkFrameSize):
 /// UsageError naming --size and the limit. Needs a current GL context.
 void checkFrameSize(int width, int height);
@@ -65,13 +72,6 @@ inline constexpr const char* kLightSyntax =
 /// Loads a scene (UsageError on failure) and prints each of the loader's warnings on
 /// stderr as "warning: FILE: ..." (once per call: load a scene once per command).
 std::shared_ptr<Scene> loadScene(const std::string& nameOrPath);
-/// A camera bookmark by name or index; empty: the first bookmark (or a framing camera).
-Camera pickCamera(const Scene& scene, const std::string& which,
-                  const std::string& opt = "--camera");
-/// A camera path by name or index; empty: the first path. Throws UsageError naming the
-/// scene's paths when there is none such.
-const CameraPath& pickPath(const Scene& scene, const std::string& which);
-
 /// An output file of a command and the option that names it ("--csv"); `userNamed` false for
 /// a file the command names itself in an output folder (algo/OutputFile.h: only a regular
 /// file or none is replaced there). The policy is algo/OutputFile.h's, shared with the GUI.

@@ -1,4 +1,4 @@
-// The compare montage (Montage.h): ui/figures/FigureKit.h on Qt's offscreen platform.
+// The compare montage (Montage.h): renderer/figures/FigureKit.h on Qt's offscreen platform.
 #include "Montage.h"
 
 #include <stdexcept>

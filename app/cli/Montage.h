@@ -1,5 +1,5 @@
 // `compare --montage`: the compared configurations side by side for handouts, drawn by
-// ui/figures/FigureKit.h (the GUI's File > Export figure draws the same figure).
+// renderer/figures/FigureKit.h (the GUI's File > Export figure draws the same figure).
 #pragma once
 
 #include <optional>

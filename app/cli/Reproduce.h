@@ -11,7 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "Measure.h"
+#include "CliCommon.h"
+#include "measure/Measure.h"
 #include "algo/claims/ClaimVerdict.h"
 
 namespace sl::cli {

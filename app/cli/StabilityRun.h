@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CliCommon.h"
-#include "Measure.h"
+#include "measure/Measure.h"
 
 namespace sl::cli {
 

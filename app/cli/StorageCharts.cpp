@@ -1,5 +1,5 @@
 // Draws the storage-factor plots (Lloyd et al. 2006, Figs. 6-7) offscreen into PNGs with the
-// shared pieces of ui/figures/StorageChartKit.h. See StorageCharts.h.
+// shared pieces of renderer/figures/StorageChartKit.h. See StorageCharts.h.
 #include "StorageCharts.h"
 
 #include <cstdio>

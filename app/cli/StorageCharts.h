@@ -1,7 +1,7 @@
 // The two storage-factor plots of `shadowlab-cli storage` (Lloyd et al., EGSR 2006, Figs. 6
 // and 7) as PNGs: the data from algo/partition/StoragePlots.h, drawn offscreen with the
-// pieces of ui/figures/StorageChartKit.h (shared with the GUI's Storage factor panel). Qt-free
-// header.
+// pieces of renderer/figures/StorageChartKit.h (shared with the GUI's Storage factor panel).
+// Qt-free header.
 #pragma once
 
 #include <optional>

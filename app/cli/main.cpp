@@ -26,7 +26,7 @@
 
 #include "CliCommon.h"
 #include "Commands.h"
-#include "Measure.h"
+#include "measure/Measure.h"
 #include "Montage.h"
 #include "core/JsonNumber.h"
 #include "algo/InputFile.h"

@@ -6,7 +6,7 @@
 
 #include "CliCommon.h"
 #include "GlTestEnv.h"
-#include "Measure.h"
+#include "measure/Measure.h"
 #include "TestTechniques.h"
 
 namespace sl::test {

@@ -11,7 +11,7 @@
 #include "algo/warp/PerspectiveWarp.h"
 #include "gl/Gl.h"
 #include "panels/analysis/StoragePanelKeys.h"
-#include "panels/analysis/StorageScheme.h"
+#include "measure/StorageScheme.h"
 
 namespace sl {
 namespace {
@@ -211,8 +211,8 @@ TEST(PerspectiveWarp, TsmIsOneWarpWithThePublishedEtaAndThePanelAnalysesIt) {
         if (it == pub.numbers.end()) return std::nullopt;
         return it->second;
       };
-      ui::StorageInputs in;
-      ui::schemeFromDeclarations(
+      measure::StorageInputs in;
+      measure::schemeFromDeclarations(
           Renderer::findTechnique("tsm"), [&](const std::string& k) { return num("param." + k); },
           num, in);
       EXPECT_EQ(in.settings.scheme, partition::Scheme::Eta) << in.schemeLabel;
@@ -228,8 +228,8 @@ TEST(PerspectiveWarp, TsmIsOneWarpWithThePublishedEtaAndThePanelAnalysesIt) {
     }
   // The other schemes as before: lispsm's eta is its parameter, uniform has none.
   for (const char* id : {"lispsm", "uniform"}) {
-    ui::StorageInputs in;
-    ui::schemeFromDeclarations(
+    measure::StorageInputs in;
+    measure::schemeFromDeclarations(
         Renderer::findTechnique(id),
         [&](const std::string& k) -> std::optional<double> {
           return k == "warp.eta" ? std::optional<double>(0.25) : std::nullopt;
@@ -243,8 +243,8 @@ TEST(PerspectiveWarp, TsmIsOneWarpWithThePublishedEtaAndThePanelAnalysesIt) {
     }
   }
   // tsm without a published eta (not requested): nothing to analyse it by but uniform.
-  ui::StorageInputs none;
-  ui::schemeFromDeclarations(
+  measure::StorageInputs none;
+  measure::schemeFromDeclarations(
       Renderer::findTechnique("tsm"), [](const std::string&) { return std::optional<double>(); },
       [](const std::string&) { return std::optional<double>(); }, none);
   EXPECT_EQ(none.settings.scheme, partition::Scheme::Uniform);

@@ -9,7 +9,7 @@
 
 #include "GlTestEnv.h"
 #include "algo/warp/PostPerspective.h"
-#include "panels/analysis/StorageScheme.h"
+#include "measure/StorageScheme.h"
 #include "techniques/perspective/PerspectiveShadowMap.h"
 
 namespace sl {
@@ -135,8 +135,8 @@ TEST(PostPerspective, BeatsTheLightSpaceEtaOneReadingOnDefault) {
 // analyses their eta = 1 stand-in and says so; for lispsm-eta1 that is the map itself.
 TEST(PostPerspective, StoragePanelSaysThePostPerspectiveMapIsNotAnalysed) {
   for (double method : {0.0, 1.0}) {
-    ui::StorageInputs in;
-    ui::schemeFromDeclarations(
+    measure::StorageInputs in;
+    measure::schemeFromDeclarations(
         Renderer::findTechnique("psm"),
         [&](const std::string& key) {
           return key == "psm.method" ? std::optional<double>(method)

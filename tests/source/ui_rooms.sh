@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ui/ is grouped by concern (service/, view/, window/, teaching/, launch/, figures/, panels/…):
+# ui/ is grouped by concern (service/, view/, window/, teaching/, launch/, panels/…):
 # at most 10 files at its root, so that a newcomer finds a room by its name, not in a heap.
 # usage: ui_rooms.sh <repository root>
 set -euo pipefail

@@ -1,6 +1,6 @@
 // The data of the storage-factor plots (Lloyd et al. 2006, Fig. 6: M_x, M_z, S over eta;
 // Fig. 7: S over the hemisphere of light directions), shared by `shadowlab-cli storage` and
-// the GUI's Storage factor panel; ui/figures/StorageChartKit.h draws them.
+// the GUI's Storage factor panel; renderer/figures/StorageChartKit.h draws them.
 #pragma once
 
 #include <optional>

@@ -1,6 +1,6 @@
 // The Storage factor panel (see StoragePanel.h): the analysis of algo/partition for the
-// frame's camera, light and scheme, drawn with ui/figures/StorageChartKit.h (as shadowlab-cli's
-// PNGs).
+// frame's camera, light and scheme, drawn with renderer/figures/StorageChartKit.h (as
+// shadowlab-cli's PNGs).
 #include "panels/analysis/StoragePanel.h"
 
 #include <algorithm>

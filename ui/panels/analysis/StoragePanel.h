@@ -12,12 +12,16 @@
 
 #include "algo/partition/StoragePlots.h"
 #include "panels/analysis/StoragePanelKeys.h"
-#include "panels/analysis/StorageScheme.h"
+#include "measure/StorageScheme.h"
 #include "panels/common/PanelKit.h"
 
 class QLabel;
 
 namespace sl::ui {
+
+using sl::measure::analysesScheme;
+using sl::measure::schemeFromDeclarations;
+using sl::measure::StorageInputs;
 
 class HemisphereView;
 class EtaView;

@@ -35,13 +35,6 @@ namespace {
 
 constexpr int kWidth = 320, kHeight = 180;
 
-/// The median; NaN when empty or when one value is not a number (an unmeasured error).
-double medianOf(std::vector<double> v) {
-  if (v.empty() || !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }))
-    return std::numeric_limits<double>::quiet_NaN();
-  return sl::median(v);
-}
-
 }  // namespace
 
 ChartsPanel::ChartsPanel(ViewportWidget* viewport, QWidget* parent)
@@ -230,9 +223,28 @@ bool ChartsPanel::startSweep() {
     redrawChart();
     return false;
   }
+  // What the render thread needs, copied now: the view's values, then each configuration's.
+  sl::ViewSide* main = viewport_->mainSide();
+  sweep_.clear();
+  for (const Config& config : configs_) {
+    const std::string id = config.techniqueId.toStdString();
+    sl::measure::SweepConfig rendered{id, main->paramsOf(id), main->rendererParams()};
+    for (const QString& a : config.assignments) {
+      const std::string key = a.section('=', 0, 0).toStdString();
+      const std::string value = a.section('=', 1).toStdString();
+      sl::ParamSet& set = rendered.own.has(key) ? rendered.own : rendered.shared;
+      if (auto e = set.setFromString(key, value)) {
+        status_->setText(shownMessage(tr("%1: %2").arg(config.label, QString::fromStdString(*e))));
+        configs_.clear();
+        sweep_.clear();
+        redrawChart();
+        return false;
+      }
+    }
+    sweep_.push_back(std::move(rendered));
+  }
   frames_ = framesSpin_->value();
-  configIndex_ = 0;
-  frameIndex_ = 0;
+  cameras_ = sl::measure::sweepCameras(*viewport_->scene(), viewport_->camera(), frames_);
   progress_->setRange(0, int(configs_.size()) * frames_);
   progress_->setValue(0);
   runButton_->setEnabled(false);
@@ -245,7 +257,7 @@ bool ChartsPanel::startSweep() {
   redrawChart();
   running_ = true;
   ++sweepSerial_;
-  measureNext();
+  postSweep({});
   return true;
 }
 
@@ -281,105 +293,66 @@ void ChartsPanel::finish(bool completed) {
   Q_EMIT sweepFinished(completed);
 }
 
-void ChartsPanel::measureNext() {
-  sl::ViewSide* main = viewport_ ? viewport_->mainSide() : nullptr;
-  if (!running_ || !main || !viewport_->scene() || configIndex_ >= int(configs_.size())) {
-    if (running_) finish(configIndex_ >= int(configs_.size()));
+void ChartsPanel::postSweep(sl::measure::SweepPosition from) {
+  if (!running_ || !viewport_ || !viewport_->scene()) {
+    if (running_) finish(false);
     return;
   }
-  const Config& config = configs_[std::size_t(configIndex_)];
-  // What the render thread needs, copied: the view's values, then the configuration's.
-  const std::string id = config.techniqueId.toStdString();
-  const sl::TechniqueInfo* info = sl::Renderer::findTechnique(id);
-  if (!info) {
-    status_->setText(shownMessage(tr("%1: unknown technique").arg(config.label)));
-    configIndex_ = int(configs_.size());
-    finish(false);
-    return;
-  }
-  sl::ParamSet own = main->paramsOf(id);
-  sl::ParamSet shared = main->rendererParams();
-  for (const QString& a : config.assignments) {
-    const std::string key = a.section('=', 0, 0).toStdString();
-    const std::string value = a.section('=', 1).toStdString();
-    sl::ParamSet& set = own.has(key) ? own : shared;
-    if (auto e = set.setFromString(key, value)) {
-      status_->setText(shownMessage(tr("%1: %2").arg(config.label, QString::fromStdString(*e))));
-      configIndex_ = int(configs_.size());
-      finish(false);
-      return;
-    }
-  }
-  sl::Camera camera = viewport_->camera();
   const std::shared_ptr<const sl::Scene> scene = viewport_->scene();
-  if (!scene->paths.empty() && !scene->paths[0].keys.empty()) {
-    const float t =
-        frames_ > 1 ? scene->paths[0].durationS() * float(frameIndex_) / float(frames_ - 1) : 0.0f;
-    camera = scene->paths[0].sample(t);
-  }
   const sl::Light light = viewport_->light();
-  const bool first = frameIndex_ == 0;
   const std::uint64_t serial = sweepSerial_;
   QPointer<ChartsPanel> self(this);
-  // Tagged: a new sweep's first frame replaces the old sweep's unstarted one.
-  viewport_->service().post(RenderTag::kCharts, [=](RenderContext& c) {
-    FrameMeasure m;
-    try {
-      sl::Renderer& r = c.renderer("charts");
-      if (r.scene() != scene) r.setScene(scene);
-      if (auto e = r.setTechnique(id)) throw std::runtime_error(*e);
-      sl::syncParams(r.params(), own);
-      sl::syncParams(r.rendererParams(), shared);
-      if (first) r.resetTemporalState();
-      r.setLight(light);
-      r.setCamera(camera);
-      if (auto e = r.renderFrame(kWidth, kHeight, 0)) m.problem = *e;
-      m.ms = r.stats().totalMs;
-      m.bytes = double(r.stats().memory.bytes());
-      // A frame with no covered pixel measured nothing: its error is n/a, never 0 (the chart
-      // leaves the configuration out and the status line says so).
-      const sl::ShadowErrorStats error = r.computeError().stats;
-      m.errorPct = error.covered > 0 ? error.errorPct : std::numeric_limits<double>::quiet_NaN();
-    } catch (const std::exception& e) {
-      m.problem = e.what();
-    }
+  // One job for the whole sweep, tagged: a new sweep replaces the old sweep's unstarted one,
+  // and Cancel stops it between two frames (the render thread's stop flag).
+  viewport_->service().post(RenderTag::kCharts, [self, serial, scene, light, from, configs = sweep_,
+                                                 cameras = cameras_](RenderContext& c) {
+    const sl::measure::SweepPosition at = sl::measure::runSweep(
+        c.renderer("charts"), scene, light, configs, cameras, kWidth, kHeight, from, &c.stopFlag(),
+        [self, serial](std::size_t config, std::size_t frame, const sl::measure::SweepFrame& m) {
+          QMetaObject::invokeMethod(
+              self.data(),
+              [self, serial, config, frame, m] {
+                if (self) self->measured(serial, config, frame, m);
+              },
+              Qt::QueuedConnection);
+        });
     QMetaObject::invokeMethod(
         self.data(),
-        [self, serial, m] {
-          if (self) self->measured(serial, m);
+        [self, serial, at] {
+          if (self) self->sweepEnded(serial, at);
         },
         Qt::QueuedConnection);
   });
 }
 
-void ChartsPanel::measured(std::uint64_t serial, const FrameMeasure& m) {
-  if (!running_ || serial != sweepSerial_ || configIndex_ >= int(configs_.size())) return;
-  Config& config = configs_[std::size_t(configIndex_)];
+void ChartsPanel::measured(std::uint64_t serial, std::size_t config, std::size_t frame,
+                           const sl::measure::SweepFrame& m) {
+  if (!running_ || serial != sweepSerial_ || config >= configs_.size()) return;
+  Config& c = configs_[config];
   if (!m.problem.empty()) {
-    status_->setText(
-        shownMessage(tr("%1: %2").arg(config.label, QString::fromStdString(m.problem))));
-    configIndex_ = int(configs_.size());
+    status_->setText(shownMessage(tr("%1: %2").arg(c.label, QString::fromStdString(m.problem))));
     finish(false);
     return;
   }
-  config.ms.push_back(m.ms);
-  config.bytes.push_back(m.bytes);
-  config.errorPct.push_back(m.errorPct);
-  progress_->setValue(configIndex_ * frames_ + frameIndex_ + 1);
-  if (++frameIndex_ >= frames_) {
-    config.medianMs = medianOf(config.ms);
-    config.medianBytes = medianOf(config.bytes);
-    config.medianErrorPct = medianOf(config.errorPct);
-    config.done = true;
-    frameIndex_ = 0;
-    ++configIndex_;
+  c.ms.push_back(m.ms);
+  c.bytes.push_back(m.bytes);
+  c.errorPct.push_back(m.errorPct);
+  progress_->setValue(int(config) * frames_ + int(frame) + 1);
+  if (int(frame) + 1 >= frames_) {
+    c.medianMs = sl::measure::sweepMedian(c.ms);
+    c.medianBytes = sl::measure::sweepMedian(c.bytes);
+    c.medianErrorPct = sl::measure::sweepMedian(c.errorPct);
+    c.done = true;
     redrawChart();
-    if (configIndex_ >= int(configs_.size())) {
-      finish(true);
-      return;
-    }
   }
-  measureNext();
+}
+
+void ChartsPanel::sweepEnded(std::uint64_t serial, sl::measure::SweepPosition at) {
+  if (!running_ || serial != sweepSerial_) return;
+  if (at.config >= configs_.size())
+    finish(true);
+  else
+    postSweep(at);  // stopped by another job (a blocking call), not by Cancel: go on
 }
 
 void ChartsPanel::redrawChart() {

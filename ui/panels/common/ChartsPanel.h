@@ -1,10 +1,10 @@
 // The Charts panel: runs a small speed-against-accuracy sweep of the current scene (the
 // CLI's `bench` in miniature: configurations "ID[:KEY=V1,V2]...", N frames along the
-// scene's camera path, medians of frame time and shadow error) on the GUI thread, one frame
-// per timer tick, with a progress bar and Cancel, and draws the same scatter chart with its
-// Pareto front as results arrive. x is the frame time or the shadow memory (a combo box;
-// switching redraws without measuring again). Clicking a point asks the main window to
-// switch the view to that configuration (configurationChosen).
+// scene's camera path, medians of frame time and shadow error) as one render-service job
+// (measure/Sweep.h, the measuring library's sweep), with a progress bar and Cancel, and draws the
+// same scatter chart with its Pareto front as results arrive. x is the frame time or the shadow
+// memory (a combo box; switching redraws without measuring again). Clicking a point asks the main
+// window to switch the view to that configuration (configurationChosen).
 #pragma once
 
 #include <memory>
@@ -19,6 +19,7 @@
 
 #include "algo/metrics/BenchStats.h"
 #include "core/Renderer.h"
+#include "measure/Sweep.h"
 
 class QChart;
 class QChartView;
@@ -82,15 +83,14 @@ class ChartsPanel : public QWidget {
   void sweepFinished(bool completed);
 
  private:
-  /// What the render thread measured of one frame of a configuration.
-  struct FrameMeasure {
-    double ms = 0.0, bytes = 0.0, errorPct = 0.0;  ///< errorPct NaN: no covered pixel
-    std::string problem;
-  };
-  /// Posts the next frame of the sweep to the render service ("charts" renderer).
-  void measureNext();
-  /// Back on the UI thread: records it and posts the next (a stale `serial` is dropped).
-  void measured(std::uint64_t serial, const FrameMeasure& m);
+  /// Posts the sweep from `from` on to the render service as one job ("charts" renderer).
+  void postSweep(sl::measure::SweepPosition from);
+  /// Back on the UI thread: records frame `frame` of configuration `config` (a stale `serial`
+  /// is dropped).
+  void measured(std::uint64_t serial, std::size_t config, std::size_t frame,
+                const sl::measure::SweepFrame& m);
+  /// The job ended at `at`: done, or stopped by another job (a blocking call): it goes on.
+  void sweepEnded(std::uint64_t serial, sl::measure::SweepPosition at);
   void finish(bool completed);
   void redrawChart();
   /// Where configuration c sits on the x axis now (ms, or bytes in the axis' unit).
@@ -109,9 +109,11 @@ class ChartsPanel : public QWidget {
   QChartView* chartView_ = nullptr;
 
   std::vector<Config> configs_;
+  std::vector<sl::measure::SweepConfig> sweep_;  ///< configs_ with every value, as rendered
+  std::vector<sl::Camera> cameras_;              ///< the sweep's frames
   bool running_ = false;
   std::uint64_t sweepSerial_ = 0;  ///< bumped by every start, finish and cancel
-  int configIndex_ = 0, frameIndex_ = 0, frames_ = 6;
+  int frames_ = 6;
   sl::ChartX chartX_ = sl::ChartX::TimeMs;
   double xUnitScale_ = 1.0;  ///< data units per x-axis unit of the drawn chart
   std::vector<std::size_t> drawnFront_;

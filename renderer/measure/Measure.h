@@ -1,8 +1,9 @@
-// Measuring configurations frame by frame (techniques.md, "Measuring"), shared by `bench`
-// and `stability`: a configuration is a technique with parameter values; each gets its
-// own Renderer (so switching between configurations, interleaved frame by frame, never
-// reallocates maps or mixes temporal state), and one exact Embree reference per frame
-// serves every configuration (the G-buffer does not depend on the technique).
+// Measuring configurations frame by frame (techniques.md, "Measuring"), shared by
+// shadowlab-cli's `bench`, `stability`, suites and `reproduce` and by the GUI's Charts panel: a
+// configuration is a technique with parameter values; each gets its own Renderer (so switching
+// between configurations, interleaved frame by frame, never reallocates maps or mixes temporal
+// state), and one exact Embree reference per frame serves every configuration (the G-buffer does
+// not depend on the technique).
 #pragma once
 
 #include <cstdint>
@@ -18,9 +19,10 @@
 
 #include "algo/metrics/BenchStats.h"
 #include "core/Renderer.h"
+#include "measure/UsageError.h"
 #include "metrics/ShadowReference.h"
 
-namespace sl::cli {
+namespace sl::measure {
 
 /// One technique with parameter values (technique or shared renderer parameters).
 struct ConfigSpec {
@@ -191,8 +193,6 @@ inline constexpr double kMaxPathHz = 240.0;
 /// The most in-between frames one configuration renders in a run (a glTF path may last
 /// hours): more is refused naming --path-hz.
 inline constexpr std::size_t kMaxInBetweenFrames = 100000;
-/// A --path-hz value (`opt` names it): a number in 0..kMaxPathHz, else UsageError.
-double parsePathHz(const std::string& opt, const std::string& text);
 
 /// The cameras of a run: one per measured frame and, before each, the unmeasured frames
 /// each configuration renders right before it (in path order).
@@ -242,4 +242,4 @@ FrameSample renderBetweenAndMeasure(ConfigRunner& runner, const std::vector<Came
                                     const Camera& camera, const MeasureOptions& options,
                                     ReferenceCache* reference);
 
-}  // namespace sl::cli
+}  // namespace sl::measure

@@ -1,5 +1,5 @@
-// The Qt-free parts of a labelled figure (ui/figures/FigureKit.h draws it): what each cell shows
-// and the optional zoom inset. shadowlab-cli fills them without Qt; only drawing needs Qt.
+// The Qt-free parts of a labelled figure (renderer/figures/FigureKit.h draws it): what each cell
+// shows and the optional zoom inset. shadowlab-cli fills them without Qt; only drawing needs Qt.
 #pragma once
 
 #include <string>

@@ -1,6 +1,7 @@
 // Which storage-factor scheme (algo/partition, Lloyd et al. 2006) a technique's frame is: read
 // from its declarations, its parameter values and what it published. Plain C++ (no Qt), so
-// that the GL tests check exactly what the Storage factor panel analyses.
+// that the GL tests check exactly what the Storage factor panel analyses (part of the
+// measuring library: the panel and the tests link it).
 #pragma once
 
 #include <functional>
@@ -10,7 +11,7 @@
 #include "algo/partition/StorageFactor.h"
 #include "core/Renderer.h"
 
-namespace sl::ui {
+namespace sl::measure {
 
 /// What the analysis needs from a frame (the panel's inputs; equal inputs: no recompute).
 struct StorageInputs {
@@ -41,4 +42,4 @@ void schemeFromDeclarations(const sl::TechniqueInfo* info, const FrameValue& par
 /// virtual maps) are analysed as if uniform, which says nothing about them. Pure.
 bool analysesScheme(const sl::TechniqueInfo& info);
 
-}  // namespace sl::ui
+}  // namespace sl::measure

@@ -1,11 +1,11 @@
 // The storage-factor scheme of a technique's frame (StorageScheme.h).
-#include "panels/analysis/StorageScheme.h"
+#include "measure/StorageScheme.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-namespace sl::ui {
+namespace sl::measure {
 
 bool StorageInputs::operator==(const StorageInputs& o) const {
   const auto& a = view;
@@ -105,4 +105,4 @@ bool analysesScheme(const sl::TechniqueInfo& info) {
          info.findPublication("faces.front");
 }
 
-}  // namespace sl::ui
+}  // namespace sl::measure

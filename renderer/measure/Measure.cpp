@@ -1,5 +1,5 @@
 // Measuring configurations frame by frame; see Measure.h.
-#include "Measure.h"
+#include "measure/Measure.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,12 +8,12 @@
 #include <cstring>
 #include <vector>
 
-#include "CliCommon.h"
 #include "algo/InputFile.h"
+#include "measure/SceneCameras.h"
 #include "metrics/ErrorMetrics.h"
 #include "metrics/Image.h"
 
-namespace sl::cli {
+namespace sl::measure {
 
 static_assert(kStatsMaskShadowed == kMaskShadowed && kStatsMaskUncovered == kMaskUncovered,
               "BenchStats and ErrorMetrics must read masks alike");
@@ -348,10 +348,6 @@ ConfigSummary summarise(const std::vector<FrameSample>& all) {
   return s;
 }
 
-double parsePathHz(const std::string& opt, const std::string& text) {
-  return parseDouble(opt, text, 0.0, kMaxPathHz);
-}
-
 std::size_t MeasureCameras::betweenCount() const {
   std::size_t n = 0;
   for (const std::vector<Camera>& b : between) n += b.size();
@@ -457,4 +453,4 @@ std::vector<std::vector<FrameSample>> runInterleaved(
   return samples;
 }
 
-}  // namespace sl::cli
+}  // namespace sl::measure

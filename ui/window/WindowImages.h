@@ -1,4 +1,4 @@
-// The window's images: File > Save viewport image, Export figure (ui/figures/FigureKit.h),
+// The window's images: File > Save viewport image, Export figure (renderer/figures/FigureKit.h),
 // Save panel image and Save window and all panels, and the full-size grabs of the view and of
 // the window that ui/Automation.h takes. Every image is drawn at full size: adaptive
 // resolution is held off for the frame it needs.

@@ -11,8 +11,8 @@
 
 namespace sl::ui {
 
-void ViewOverlay::setLegends(const sl::ParamSet& shared, const sl::FrameStats& stats,
-                             bool outside) {
+void ViewOverlay::setLegends(const sl::ParamSet& shared, const sl::FrameStats& stats, bool outside,
+                             const std::string& aliasingPattern) {
   legend = sl::enumIs(shared, "view.overlay", "error")       ? Legend::Error
            : sl::enumIs(shared, "view.overlay", "aliasing")  ? Legend::Aliasing
            : sl::enumIs(shared, "view.overlay", "warp-grid") ? Legend::WarpGrid
@@ -53,6 +53,7 @@ void ViewOverlay::setLegends(const sl::ParamSet& shared, const sl::FrameStats& s
       legend = Legend::None;
     }
   }
+  aliasingNote = legend == Legend::Aliasing ? QString::fromStdString(aliasingPattern) : QString();
 }
 
 namespace {

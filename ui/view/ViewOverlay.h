@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include <QImage>
@@ -81,9 +82,11 @@ class ViewOverlay : public QWidget {
   /// bottom-right corner, clear of the other boxes.
   void placeInset();
   static const char* roleName(Role role);
-  /// The legends of the renderer's overlays (view.overlay), the changed overlay's count and
-  /// the outside view's line colours, from the shared parameters and the last main frame.
-  void setLegends(const sl::ParamSet& shared, const sl::FrameStats& stats, bool outside);
+  /// The legends of the renderer's overlays (view.overlay), the changed overlay's count,
+  /// the aliasing note of the main technique (`aliasingPattern`) and the outside view's line
+  /// colours, from the shared parameters and the last main frame.
+  void setLegends(const sl::ParamSet& shared, const sl::FrameStats& stats, bool outside,
+                  const std::string& aliasingPattern);
 
   bool hasContent() const {
     return !split.isNull() || !bannerTitle.isEmpty() || !bannerText.isEmpty() || pointerRing ||

@@ -555,11 +555,9 @@ void ViewportWidget::updateOverlayWidget() {
     overlay_->rightCaption = caption(splitTechniqueId_, split_->stats(), splitErrorPct_,
                                      splitLiveError(), splitErrorUnmeasured_);
   }
-  overlay_->setLegends(shared_, main_.stats(), outsideView());
   const sl::TechniqueInfo* mainInfo = sl::Renderer::findTechnique(main_.techniqueId());
-  overlay_->aliasingNote = overlay_->legend == ViewOverlay::Legend::Aliasing && mainInfo
-                               ? QString::fromStdString(mainInfo->aliasingPattern)
-                               : QString();
+  overlay_->setLegends(shared_, main_.stats(), outsideView(),
+                       mainInfo ? mainInfo->aliasingPattern : std::string());
   overlay_->pointerRing.reset();
   if (pointerHighlight_ && hover_.x() >= 0) overlay_->pointerRing = hover_;
   overlay_->zoomArea = zoomArea_.value_or(QRect());

@@ -46,12 +46,16 @@ SweepPosition runSweep(
     Renderer& r, const std::shared_ptr<const Scene>& scene, const Light& light,
     const std::vector<SweepConfig>& configs, const std::vector<Camera>& cameras, int width,
     int height, SweepPosition from, const std::atomic<bool>* stop,
-    const std::function<void(std::size_t, std::size_t, const SweepFrame&)>& onFrame) {
+    const std::function<void(std::size_t, std::size_t, const SweepFrame&)>& onFrame,
+    std::size_t maxFrames) {
+  std::size_t measured = 0;
   for (std::size_t c = from.config; c < configs.size(); ++c)
     for (std::size_t f = c == from.config ? from.frame : 0; f < cameras.size(); ++f) {
       if (stop && stop->load()) return {c, f};
+      if (maxFrames > 0 && measured == maxFrames) return {c, f};
       const SweepFrame m =
           measureSweepFrame(r, scene, light, configs[c], cameras[f], width, height, f == 0);
+      ++measured;
       if (onFrame) onFrame(c, f, m);
       if (!m.problem.empty()) return {c, f};
     }

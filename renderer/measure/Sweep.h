@@ -1,9 +1,10 @@
-// A quick sweep on one renderer, what the GUI's Charts panel runs as one render-service job:
-// configurations one after another, each `frames` frames along the scene's first camera path
-// (bench's frame spacing, pathCameras with no in-between frames), each frame's time, shadow
-// memory and error against the exact reference, and the medians per configuration. Unlike
-// runInterleaved (one renderer per configuration, interleaved frame by frame, warm-up frames)
-// it reuses one renderer, so it suits a window that already holds several.
+// A quick sweep on one renderer, what the GUI's Charts panel runs one frame per render-service
+// job (so the view's frames go on between two of its frames): configurations one after another,
+// each `frames` frames along the scene's first camera path (bench's frame spacing, pathCameras with
+// no in-between frames), each frame's time, shadow memory and error against the exact reference,
+// and the medians per configuration. Unlike runInterleaved (one renderer per configuration,
+// interleaved frame by frame, warm-up frames) it reuses one renderer, so it suits a window that
+// already holds several.
 #pragma once
 
 #include <atomic>
@@ -51,13 +52,15 @@ struct SweepPosition {
 
 /// Every configuration, every camera, in that order, on `r`, from `from` on (a sweep that was
 /// stopped goes on where it stopped); `onFrame(config, frame, m)` after each. Stops after a
-/// failed frame, or before a frame when `stop` (may be null) is raised; returns where it
-/// stopped (configs.size() and 0 when it measured every frame).
+/// failed frame, before a frame when `stop` (may be null) is raised, or after `maxFrames`
+/// frames (0: no limit); returns where it stopped, i.e. the next frame to measure
+/// (configs.size() and 0 when it measured every frame; at the failed frame after a failure).
 SweepPosition runSweep(
     Renderer& r, const std::shared_ptr<const Scene>& scene, const Light& light,
     const std::vector<SweepConfig>& configs, const std::vector<Camera>& cameras, int width,
     int height, SweepPosition from, const std::atomic<bool>* stop,
-    const std::function<void(std::size_t, std::size_t, const SweepFrame&)>& onFrame);
+    const std::function<void(std::size_t, std::size_t, const SweepFrame&)>& onFrame,
+    std::size_t maxFrames = 0);
 
 /// The median of a configuration's frames; NaN when empty or when one value is not a number
 /// (an unmeasured error makes the configuration's error n/a).

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The Charts panel (shadowlab-gui-tests --test charts=DIR, see tests/gui/src/GuiTests.cpp): a tiny
-# sweep (uniform at 2 resolutions and rtw-backward at 256, x 2 frames) runs to completion,
+# sweep (uniform at 2 resolutions and rtw-backward at 256, x 2 frames) runs to completion
+# while the view goes on drawing (a view frame comes before the sweep ends),
 # the chart is saved as panel-charts.png; the x combo box switches axis and Pareto front to
 # memory (panel-charts-bytes.png) and back without a new sweep; a click on a point switches
 # the view to that configuration (technique, resolution, technique combo); a sweep of a

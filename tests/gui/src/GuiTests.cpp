@@ -455,6 +455,15 @@ bool GuiTests::charts(const QString& dir) {
   const bool started = w_.chartsPanel()->startSweep();
   check(started, QStringLiteral("the sweep starts"));
   if (!started) return false;
+  // The view goes on drawing while the sweep runs: the sweep is one render job per frame, and
+  // the view's frame runs between two of them (one job for the whole sweep held the view's
+  // frame until the sweep had ended). Two frames: the first may have been under way already.
+  const bool viewDrew = auto_.waitForFrames(2, 40000);
+  check(viewDrew && !finished,
+        QStringLiteral("the view draws a frame while the sweep runs (drawn: %1, sweep ended "
+                       "before it: %2)")
+            .arg(viewDrew)
+            .arg(finished));
   QElapsedTimer clock;
   clock.start();
   while (!finished && clock.elapsed() < 40000)

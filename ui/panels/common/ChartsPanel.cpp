@@ -34,6 +34,8 @@ namespace sl::ui {
 namespace {
 
 constexpr int kWidth = 320, kHeight = 180;
+/// A sweep's render-service job measures one frame: the view never waits for more than one.
+constexpr std::size_t kFramesPerJob = 1;
 
 }  // namespace
 
@@ -302,8 +304,9 @@ void ChartsPanel::postSweep(sl::measure::SweepPosition from) {
   const sl::Light light = viewport_->light();
   const std::uint64_t serial = sweepSerial_;
   QPointer<ChartsPanel> self(this);
-  // One job for the whole sweep, tagged: a new sweep replaces the old sweep's unstarted one,
-  // and Cancel stops it between two frames (the render thread's stop flag).
+  // One job per frame, tagged: the next is posted when this one has ended, so the view's
+  // frames (which run when no other job waits) go on between two frames of the sweep; a new
+  // sweep replaces the old sweep's unstarted job, and Cancel drops or stops it.
   viewport_->service().post(RenderTag::kCharts, [self, serial, scene, light, from, configs = sweep_,
                                                  cameras = cameras_](RenderContext& c) {
     const sl::measure::SweepPosition at = sl::measure::runSweep(
@@ -315,7 +318,8 @@ void ChartsPanel::postSweep(sl::measure::SweepPosition from) {
                 if (self) self->measured(serial, config, frame, m);
               },
               Qt::QueuedConnection);
-        });
+        },
+        kFramesPerJob);
     QMetaObject::invokeMethod(
         self.data(),
         [self, serial, at] {
@@ -352,7 +356,7 @@ void ChartsPanel::sweepEnded(std::uint64_t serial, sl::measure::SweepPosition at
   if (at.config >= configs_.size())
     finish(true);
   else
-    postSweep(at);  // stopped by another job (a blocking call), not by Cancel: go on
+    postSweep(at);  // the next frame (or the same, when a blocking call stopped this job)
 }
 
 void ChartsPanel::redrawChart() {

@@ -4,6 +4,7 @@
 #include "service/RenderService.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFontInfo>
@@ -15,6 +16,7 @@
 #include "teaching/LessonController.h"
 #include "window/MainWindow.h"
 #include "window/SessionFiles.h"
+#include "window/SplitSideParams.h"
 #include "teaching/TeachingBar.h"
 #include "window/StatusLine.h"
 #include "window/WindowImages.h"
@@ -194,6 +196,23 @@ QImage Automation::grabView() const {
 
 std::optional<QString> Automation::exportFigure(const QString& path) {
   return w_.images().exportFigure(path);
+}
+
+std::optional<QString> Automation::saveViewImage(const QString& path) {
+  return w_.images().writeViewImage(path);
+}
+
+bool Automation::trigger(const QKeySequence& keys) {
+  for (QAction* a : w_.findChildren<QAction*>())
+    if (a->isEnabled() && a->shortcuts().contains(keys)) {
+      a->trigger();
+      return true;
+    }
+  return false;
+}
+
+void Automation::setEqualMemory(bool on) {
+  w_.splitSide()->equalMemoryBox()->setChecked(on);
 }
 
 QImage Automation::renderedFrame() const {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include <QImage>
+#include <QKeySequence>
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -117,6 +118,13 @@ class Automation : public QObject {
   QImage renderedFrame() const;
   /// As File > Export figure to `path`; the problem, or nothing.
   std::optional<QString> exportFigure(const QString& path);
+  /// As File > Save viewport image to `path`; the problem, or nothing.
+  std::optional<QString> saveViewImage(const QString& path);
+  /// As pressing `keys` in the window: triggers the window's enabled action with that
+  /// shortcut (a menu command: O, Ctrl+E, F5, …); false when none has it.
+  bool trigger(const QKeySequence& keys);
+  /// As the Parameters dock's "Equal memory" box of the split view (a match runs at once).
+  void setEqualMemory(bool on);
 
   // Reads of the main renderer's last frame, run on the render thread (the UI waits).
   /// The pixel (x, y) of the last frame (internal pixels), or nothing outside it.

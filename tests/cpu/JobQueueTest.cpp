@@ -344,6 +344,47 @@ TEST(RenderWorker, CallRethrowsAndRunsAtOnceFromAJob) {
   EXPECT_EQ(rig.ran(), (Strings{"outer", "inner", "after a throwing job"}));
 }
 
+TEST(RenderWorker, CallAsyncTellsDoneOnceCancelDropsOrStopsIt) {
+  Rig rig;
+  // What `done` said, in order ("ran", "ran threw", "dropped"), with the thread it ran on.
+  Log done;
+  auto tell = [&](const std::string& name) {
+    return [&done, name](bool ran, std::exception_ptr thrown) {
+      done.add(name + (ran ? thrown ? " ran threw" : " ran" : " dropped"));
+    };
+  };
+  // A call in progress (holds the thread until asked to stop) and one queued behind it.
+  std::promise<void> started;
+  rig.worker->callAsync(
+      "call",
+      [&](RenderContext& c) {
+        rig.log.add("first");
+        started.set_value();
+        c.stopFlag().wait(false);  // until cancel("call") asks it to stop
+        rig.log.add("first stopped");
+      },
+      tell("first"));
+  std::future<void> first = started.get_future();
+  ASSERT_TRUE(readyWithin(first, "the first call starting"));
+  rig.worker->callAsync("call", rig.logs("second"), tell("second"));
+  // Esc: the queued call is dropped at once (here, on this thread), the running one stops.
+  rig.worker->cancel("call");
+  rig.drain();
+  EXPECT_EQ(rig.ran(), (Strings{"first", "first stopped"}));
+  Strings told = done.entries();  // the two are told on two threads: in either order
+  std::sort(told.begin(), told.end());
+  EXPECT_EQ(told, (Strings{"first ran", "second dropped"}));
+  // A call that throws tells it; the worker goes on.
+  rig.worker->callAsync(
+      "call", [](RenderContext&) { throw std::runtime_error("job failed"); }, tell("third"));
+  rig.drain();
+  EXPECT_EQ(done.entries().back(), "third ran threw");
+  // After the shutdown: refused, told at once.
+  rig.worker->stop();
+  rig.worker->callAsync("call", rig.logs("late"), tell("late"));
+  EXPECT_EQ(done.entries().back(), "late dropped");
+}
+
 TEST(RenderWorker, ShutdownDropsQueuedWorkStopsTheRunningJobAndJoins) {
   Rig rig;
   std::promise<void> jobStarted;

@@ -21,6 +21,7 @@
 #include "core/JsonNumber.h"
 #include "panels/common/TimingPanel.h"
 #include "scene/GltfLoader.h"
+#include "window/MessageText.h"
 
 namespace sl::ui {
 
@@ -28,11 +29,6 @@ namespace {
 constexpr int kGrabTickMs = 30;
 constexpr qint64 kGrabTimeoutMs = 120000;
 constexpr qsizetype kMaxNotedProblems = 20;
-
-void printErr(const QString& line) {
-  std::fprintf(stderr, "shadowlab: %s\n", line.toLocal8Bit().constData());
-  std::fflush(stderr);
-}
 
 QString panelFileName(const QDockWidget* dock) {
   return QStringLiteral("panel-%1.png").arg(dock->objectName());

@@ -20,13 +20,11 @@
 #include "window/Theme.h"
 #include "core/Course.h"
 #include "core/Renderer.h"
+#include "window/MessageText.h"
 
 namespace sl::ui {
 
 namespace {
-void printErr(const QString& line) {
-  std::fprintf(stderr, "shadowlab: %s\n", line.toLocal8Bit().constData());
-}
 
 /// Qt aborts without a display; say what is missing instead (unless a platform is forced).
 bool haveDisplay() {

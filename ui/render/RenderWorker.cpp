@@ -86,33 +86,47 @@ void RenderWorker::cancel(const std::string& tag) {
 }
 
 bool RenderWorker::call(const Job& job) {
-  if (tCurrentWorker == this) {  // from one of this worker's jobs: run it now
-    job(*context_);
-    return true;
-  }
   std::promise<bool> ran;
   std::future<bool> finished = ran.get_future();
   std::exception_ptr thrown;
-  {
-    std::lock_guard lock(m_);
-    if (stopping_ || failed_ || !thread_.joinable()) return false;
-    queue_.pushFront({"",
-                      [&](RenderContext& c) {
-                        try {
-                          job(c);
-                        } catch (...) {
-                          thrown = std::current_exception();
-                        }
-                        ran.set_value(true);
-                      },
-                      [&ran] { ran.set_value(false); }});
-    // The caller waits: a frame in progress is not finished first.
-    if (busy_ && JobQueue::isFrameTag(runningTag_)) askRunningToStop();
-  }
-  cv_.notify_all();
+  callAsync({}, std::cref(job), [&ran, &thrown](bool r, std::exception_ptr e) {
+    thrown = std::move(e);
+    ran.set_value(r);
+  });
   const bool done = finished.get();  // set exactly once: run or dropped
   if (thrown) std::rethrow_exception(thrown);
   return done;
+}
+
+void RenderWorker::callAsync(std::string tag, Job job, CallDone done) {
+  auto shared = std::make_shared<CallDone>(std::move(done));
+  auto run = [job = std::move(job), shared](RenderContext& c) {
+    std::exception_ptr thrown;
+    try {
+      job(c);
+    } catch (...) {
+      thrown = std::current_exception();
+    }
+    (*shared)(true, thrown);
+  };
+  if (tCurrentWorker == this) {  // from one of this worker's jobs: run it now
+    run(*context_);
+    return;
+  }
+  std::vector<Entry> refused;
+  {
+    std::lock_guard lock(m_);
+    Entry entry{std::move(tag), std::move(run), [shared] { (*shared)(false, nullptr); }};
+    if (stopping_ || failed_ || !thread_.joinable()) {
+      refused.push_back(std::move(entry));
+    } else {
+      queue_.pushFront(std::move(entry));
+      // The caller waits: a frame in progress is not finished first.
+      if (busy_ && JobQueue::isFrameTag(runningTag_)) askRunningToStop();
+    }
+  }
+  cv_.notify_all();
+  notifyDropped(refused);
 }
 
 RenderWorker::Activity RenderWorker::activity() const {

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -76,6 +77,14 @@ class RenderWorker {
   /// is asked to stop if it is a frame) and waits for it; rethrows what it threw. From a job,
   /// runs it at once. False when it never ran (not started, failed, or stopped meanwhile).
   bool call(const Job& job);
+  /// What call() runs, without the wait: queues `job` under `tag` before anything queued
+  /// (a frame in progress is asked to stop) and returns at once. `done(ran, thrown)` runs
+  /// exactly once: on the render thread after the job (true; `thrown` what it threw, else
+  /// null), or where the job is dropped (false: cancel(tag), stop(), or refused, then before
+  /// this returns). From a job it runs the job at once. The caller keeps what `job` refers to
+  /// alive until `done`.
+  using CallDone = std::function<void(bool ran, std::exception_ptr thrown)>;
+  void callAsync(std::string tag, Job job, CallDone done);
 
   Activity activity() const;
 

@@ -2,9 +2,15 @@
 // context, a surfaceless EGL context (as the CLI's) and the renderers made on it.
 #include "service/RenderService.h"
 
+#include <atomic>
+#include <exception>
+#include <functional>
 #include <map>
 
+#include <QCoreApplication>
 #include <QMetaObject>
+#include <QPointer>
+#include <QThread>
 
 #include "core/Renderer.h"
 #include "gl/EglContext.h"
@@ -97,8 +103,36 @@ void RenderService::cancel(const std::string& tag) {
   worker_->cancel(tag);
 }
 
-bool RenderService::call(const Job& job) {
-  return worker_->call(job);
+bool RenderService::call(const Job& job, const QString& note) {
+  if (QThread::currentThread() != thread()) return worker_->call(job);
+  // On the UI thread: wait while handling events, so that the window never freezes behind a
+  // long action (an error trace, an export, the equal-memory search). The job signals its end
+  // with an empty queued call, which wakes the event loop.
+  struct State {
+    std::atomic<int> ran{-1};  ///< -1 running or queued, 0 dropped, 1 ran
+    std::exception_ptr thrown;
+  };
+  auto state = std::make_shared<State>();
+  QPointer<RenderService> self(this);
+  ++callsWaiting_;
+  Q_EMIT callStarted(note);
+  worker_->callAsync(RenderTag::kCall, std::cref(job),
+                     [state, self](bool ran, std::exception_ptr thrown) {
+                       state->thrown = std::move(thrown);
+                       state->ran = ran ? 1 : 0;
+                       if (self)
+                         QMetaObject::invokeMethod(
+                             self, [] {}, Qt::QueuedConnection);
+                     });
+  while (state->ran.load() < 0) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+  --callsWaiting_;
+  Q_EMIT callEnded(callsWaiting_);
+  if (state->thrown) std::rethrow_exception(state->thrown);
+  return state->ran.load() == 1;
+}
+
+void RenderService::cancelCall() {
+  worker_->cancel(RenderTag::kCall);
 }
 
 RenderService::Activity RenderService::activity() const {

@@ -41,6 +41,7 @@ struct RenderTag {
   static constexpr char kProbe[] = "probe";           ///< the hover probe's readback
   static constexpr char kCharts[] = "charts";         ///< the Charts panel's sweep frame
   static constexpr char kVariants[] = "variants";     ///< a panel's parameter variants
+  static constexpr char kCall[] = "call";  ///< an action the UI waits for (call()); Esc stops it
 };
 
 class RenderService : public QObject {
@@ -73,8 +74,17 @@ class RenderService : public QObject {
   /// Drops the unstarted job of `tag` and asks the one in progress to stop if it has it.
   void cancel(const std::string& tag);
   /// Runs `job` on the render thread now (after the job in progress, which is asked to stop
-  /// if it is a frame) and waits for it. False when the service is not running.
-  bool call(const Job& job);
+  /// if it is a frame) and waits for it: from the UI thread, the wait goes on handling events
+  /// (the window is drawn, timers fire, input arrives), `note` says in the view what runs
+  /// (callStarted / callEnded) and cancelCall() (Esc) asks the job to stop; `job` must not read
+  /// what the UI thread may change meanwhile. False when it did not run (the service is not
+  /// running, or the job was cancelled before it started). Rethrows what the job threw.
+  bool call(const Job& job, const QString& note = {});
+  /// Asks the call() in progress (and those queued) to stop: their renderers stop between two
+  /// steps; what the caller reads of a stopped frame says so.
+  void cancelCall();
+  /// How many call()s the UI thread is waiting for (nested when an action is taken during one).
+  int callsWaiting() const { return callsWaiting_; }
 
   Activity activity() const;
 
@@ -83,9 +93,14 @@ class RenderService : public QObject {
   void ready(const QString& description);
   /// The context could not be made (the message names what is missing).
   void failed(const QString& message);
+  /// The UI thread waits for a call(): `note` says what runs ("" for a scripted read).
+  void callStarted(const QString& note);
+  /// The call() ended (ran, stopped or dropped); `stillWaiting` other calls are waited for.
+  void callEnded(int stillWaiting);
 
  private:
   std::unique_ptr<RenderWorker> worker_;
+  int callsWaiting_ = 0;
 };
 
 }  // namespace sl::ui

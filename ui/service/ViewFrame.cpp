@@ -140,6 +140,10 @@ MemoryMatchRun matchSplitMemoryOn(RenderContext& c, const FrameOrder& order,
           problem = *e;
           return std::nullopt;
         }
+        if (split.stats().cancelled || c.stopFlag().load()) {  // Esc: no value measured
+          problem = "stopped";
+          return std::nullopt;
+        }
         return split.stats().memory.bytes();
       });
   split.resetTemporalState();

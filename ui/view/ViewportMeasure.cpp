@@ -102,26 +102,33 @@ std::optional<double> ViewportWidget::computeErrorNow() {
   if (!ready_ || framesRendered_ == 0) return std::nullopt;
   // The error of the view as it is now: when the frame shown is older (or one is on its
   // way), a frame of it is drawn in the same job as the measurement.
+  // The window goes on handling events while it waits (RenderService::call): the job reads
+  // nothing the UI thread may change meanwhile, and what comes back is kept only for the view
+  // it was measured for.
   std::shared_ptr<FrameOrder> order;
   if (framesInFlight_ > 0 || shownViewRevision_ != viewRevision_) order = makeOrder();
+  const std::uint64_t revision = viewRevision_;
+  const bool split = order ? order->split.has_value() : split_ && !splitImage_.isNull();
   auto out = std::make_shared<FrameOutcome>();
   SideError main;
   std::optional<SideError> right;
   bool measured = false;
-  if (!service_->call([&](RenderContext& c) {
-        if (order) {
-          renderOrder(c, *order, *out);
-          if (out->stopped || !out->mainProblem.empty()) return;
-        }
-        measured = true;
-        main = computeSideError(c, "main");
-        if (order ? order->split.has_value() : split_ && !splitImage_.isNull())
-          right = computeSideError(c, "split");
-      }))
+  if (!service_->call(
+          [&](RenderContext& c) {
+            if (order) {
+              renderOrder(c, *order, *out);
+              if (out->stopped || !out->mainProblem.empty()) return;
+            }
+            if (c.stopFlag().load()) return;  // Esc before the trace
+            measured = true;
+            main = computeSideError(c, "main");
+            if (split) right = computeSideError(c, "split");
+          },
+          tr("tracing the exact reference")))
     return std::nullopt;
   if (order) applyOutcome(out);
-  if (failedFrameUnmeasured() || !measured) return std::nullopt;
-  applyError(viewRevision_, main, right);
+  if (revision != viewRevision_ || failedFrameUnmeasured() || !measured) return std::nullopt;
+  applyError(revision, main, right);
   return errorIsCurrent() ? mainErrorPct_ : std::nullopt;
 }
 
@@ -150,11 +157,13 @@ void ViewportWidget::computeErrorIfStill() {
 std::optional<std::string> ViewportWidget::reloadShaders() {
   if (!ready_) return std::string("the renderer is not running");
   std::optional<std::string> error;
-  service_->call([&](RenderContext& c) {
-    for (const char* name : {"main", "split", "charts"})
-      if (sl::Renderer* r = c.existing(name))
-        if (auto e = r->reloadShaders(); e && !error) error = e;
-  });
+  service_->call(
+      [&](RenderContext& c) {
+        for (const char* name : {"main", "split", "charts"})
+          if (sl::Renderer* r = c.existing(name))
+            if (auto e = r->reloadShaders(); e && !error) error = e;
+      },
+      tr("reloading the shaders"));
   markViewChanged();
   requestFrame();
   return error;
@@ -176,18 +185,21 @@ std::vector<FigureCell> ViewportWidget::figureCells(int dilatePx) {
       order->split ? std::optional(label(*split_)) : std::nullopt;
   auto out = std::make_shared<FrameOutcome>();
   std::string problem;
-  service_->call([&](RenderContext& c) {
-    renderOrder(c, *order, *out);
-    if (out->stopped || !out->mainProblem.empty()) return;
-    try {
-      cells.push_back(figureCellOf(c, "main", mainLabel, dilatePx));
-      if (splitLabel) cells.push_back(figureCellOf(c, "split", *splitLabel, dilatePx));
-    } catch (const std::exception& ex) {
-      cells.clear();
-      problem = ex.what();
-    }
-  });
+  service_->call(
+      [&](RenderContext& c) {
+        renderOrder(c, *order, *out);
+        if (out->stopped || !out->mainProblem.empty()) return;
+        try {
+          cells.push_back(figureCellOf(c, "main", mainLabel, dilatePx));
+          if (splitLabel) cells.push_back(figureCellOf(c, "split", *splitLabel, dilatePx));
+        } catch (const std::exception& ex) {
+          cells.clear();
+          problem = ex.what();
+        }
+      },
+      tr("drawing the figure and its errors"));
   applyOutcome(out);
+  if (out->stopped) cells.clear();  // stopped (Esc): no figure
   if (!problem.empty())
     Q_EMIT renderProblem(QStringLiteral("export figure: %1").arg(QString::fromStdString(problem)));
   return cells;
@@ -216,17 +228,23 @@ std::optional<ViewportWidget::MemoryMatch> ViewportWidget::matchSplitMemory(std:
   if (!order->split) return fail("the view is too small to measure");
   MemoryMatchRun run;
   const sl::ParamDecl knob = *decl;
-  if (!service_->call([&](RenderContext& c) {
-        run = matchSplitMemoryOn(c, *order, knob, match.mainBytes, halfW, size.height());
-      }))
-    return fail("the render service is not running");
+  const std::string splitTechnique = splitTechniqueId_;
+  if (!service_->call(
+          [&](RenderContext& c) {
+            run = matchSplitMemoryOn(c, *order, knob, match.mainBytes, halfW, size.height());
+          },
+          tr("matching the split view's memory")))
+    return fail("stopped before it started");
   if (!run.problem.empty()) return fail("split view: " + run.problem);
+  // The window handled events while it waited: the split view may be another now.
+  if (!split_ || splitTechniqueId_ != splitTechnique)
+    return fail("the split view changed while its memory was matched");
   match.framesMeasured = run.evaluations;
   match.value = run.value;
   match.belowMinimum = run.belowMinimum;
   match.splitBytes = run.bytes;
-  (void)split_->params().set(decl->key, double(run.value));
-  splitParams_[decl->key] = split_->params().format(decl->key);
+  (void)split_->params().set(knob.key, double(run.value));
+  splitParams_[knob.key] = split_->params().format(knob.key);
   requestFrame();
   return match;
 }

@@ -52,6 +52,20 @@ ViewportWidget::ViewportWidget(QWidget* parent)
   });
   service_ = new RenderService(this);
   connect(service_, &RenderService::ready, this, &ViewportWidget::serviceReady);
+  // An action the window waits for: its note and seconds in the view until it ends.
+  connect(service_, &RenderService::callStarted, this, [this](const QString& note) {
+    if (note.isEmpty()) return;
+    callNote_ = note;
+    callClock_.start();
+    busyTimer_.start();
+    updateOverlayWidget();
+  });
+  connect(service_, &RenderService::callEnded, this, [this](int stillWaiting) {
+    if (stillWaiting > 0 || callNote_.isEmpty()) return;
+    callNote_.clear();
+    if (framesInFlight_ == 0) busyTimer_.stop();
+    updateOverlayWidget();
+  });
   connect(service_, &RenderService::failed, this,
           [this](const QString& message) { Q_EMIT initializationFailed(message); });
   service_->start();
@@ -96,7 +110,9 @@ void ViewportWidget::noticeEdits() {
 }
 
 void ViewportWidget::pump() {
-  if (!ready_ || !frameWanted_ || !service_) return;
+  // No scene yet (the first one still loading off the UI thread): nothing to draw; setScene
+  // asks again.
+  if (!ready_ || !frameWanted_ || !service_ || !scene_) return;
   noticeEdits();
   const bool inFlight = framesInFlight_ > 0;
   const bool changed = viewRevision_ != sentViewRevision_;
@@ -195,7 +211,7 @@ std::shared_ptr<FrameOrder> ViewportWidget::makeOrder() {
 
 void ViewportWidget::applyOutcome(const std::shared_ptr<FrameOutcome>& out) {
   ordersDone_ = std::max(ordersDone_, out->id);
-  if (framesInFlight_ == 0) busyTimer_.stop();
+  if (framesInFlight_ == 0 && callNote_.isEmpty()) busyTimer_.stop();
   if (out->stopped) {  // never shown, never measured
     ++framesStopped_;
     if (out->id == ordersSent_) frameWanted_ = true;  // stopped by an export: draw it again
@@ -265,7 +281,9 @@ void ViewportWidget::applyOutcome(const std::shared_ptr<FrameOutcome>& out) {
 
 bool ViewportWidget::renderNow(const std::shared_ptr<FrameOrder>& order) {
   auto out = std::make_shared<FrameOutcome>();
-  if (!service_->call([&](RenderContext& c) { renderOrder(c, *order, *out); })) return false;
+  if (!service_->call([&](RenderContext& c) { renderOrder(c, *order, *out); },
+                      tr("drawing the view at full size")))
+    return false;
   applyOutcome(out);
   return !out->stopped;
 }
@@ -294,6 +312,10 @@ void ViewportWidget::resizeEvent(QResizeEvent* event) {
 
 QString ViewportWidget::busyText() const {
   if (!service_) return {};
+  if (!callNote_.isEmpty())
+    return tr("%1 \u2026 %2 s  \u00b7  Esc stops")
+        .arg(callNote_)
+        .arg(callClock_.elapsed() / 1000.0, 0, 'f', 1);
   const RenderService::Activity a = service_->activity();
   if (!a.busy || !a.frame || a.elapsedMs < kBusyNoteMs) return {};
   return tr("computing %1 \u2026 %2 s (the last complete frame is shown)")

@@ -427,6 +427,8 @@ class ViewportWidget : public QWidget {
   QTimer busyTimer_;                    ///< refreshes the busy note while a frame renders
   bool busyShown_ = false;              ///< the busy note was in the overlay at the last tick
   QString busyTechnique_;               ///< of the order in flight
+  QString callNote_;                    ///< what the window waits for (RenderService::call)
+  QElapsedTimer callClock_;             ///< since that call started
 
   // What the sides looked like when last ordered; any difference means "view changed".
   std::uint64_t lastMainRevision_ = ~0ull;

@@ -1,6 +1,7 @@
 // The main window: the viewport in the middle, dockable panels around it (Parameters,
 // Timing, Lesson, Light, Charts and the publication panels of panels/PanelRegistry.h),
-// toolbars for scene / technique / camera, the status line. Its parts live in their own
+// toolbars for scene / technique / camera, the status line (its construction in
+// MainWindowSetup.cpp, its scenes in MainWindowScenes.cpp). Its parts live in their own
 // classes: TeachingBar (overlays, split view, pause), PassStepper, LessonController,
 // GrabRun (`--grab`), SessionFiles, PresenterMode, SplitSideParams, StatusLine (the status
 // line's readouts), WindowImages (saved images, figures, full-size grabs); they and ui/Automation.h
@@ -153,6 +154,8 @@ class MainWindow : public QMainWindow {
   /// A toolbar that cannot be moved or floated (layout stays predictable for lessons).
   QToolBar* addFixedToolBar(const QString& title, const QString& objectName);
   static void addToolBarLabel(QToolBar* bar, const QString& text);
+  /// The Scene box's data of its "Open…" item (no scene name or path can be it).
+  static QString openItemData() { return QStringLiteral("\x01open"); }
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -214,7 +217,8 @@ class MainWindow : public QMainWindow {
 
   StatusLine* status_ = nullptr;  ///< the status line's readouts (a child QObject)
 
-  QString sceneSpec_;  ///< name or path of the scene shown
+  QString sceneSpec_;          ///< name or path of the scene shown
+  bool sceneLoading_ = false;  ///< a scene loads off the UI thread (loadScene)
   QStringList pendingAssignments_;
   bool rendererBound_ = false;  ///< onRendererReady ran for the current renderer
   bool failed_ = false;

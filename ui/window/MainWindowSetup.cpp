@@ -37,6 +37,7 @@
 #include "panels/common/TimingPanel.h"
 #include "panels/light/LightPanel.h"
 #include "scene/GltfLoader.h"
+#include "service/RenderService.h"
 
 namespace sl::ui {
 
@@ -50,7 +51,6 @@ bool feedsTogether(const std::vector<const PublicationPanel*>& row, const Public
   return false;
 }
 
-const QString kOpenItem = QStringLiteral("\x01open");  ///< data of the "Open…" scene item
 constexpr QSize kDefaultWindowSize(1600, 1000);
 constexpr int kDefaultParamDockWidth = 390;
 constexpr int kDefaultLeftDockWidth = 400;
@@ -160,11 +160,26 @@ void MainWindow::createActions() {
   QAction* passPrev = frame->addAction(tr("Step through the passes: p&revious"), this,
                                        [this] { passes_->step(-1); });
   passPrev->setShortcut(Qt::Key_BracketLeft);
-  passStopAction_ =
-      frame->addAction(tr("Stop stepping through the passes"), this, [this] { passes_->stop(); });
+  // Esc: stops the action the window waits for (an error trace, an export, the equal-memory
+  // search: RenderService::call), else the stepping through the passes.
+  passStopAction_ = frame->addAction(tr("Stop stepping through the passes"), this, [this] {
+    if (viewport_->service().callsWaiting() > 0)
+      viewport_->service().cancelCall();
+    else
+      passes_->stop();
+  });
   passStopAction_->setShortcut(Qt::Key_Escape);
   passStopAction_->setShortcutContext(Qt::WindowShortcut);
   passStopAction_->setEnabled(false);
+  connect(&viewport_->service(), &RenderService::callStarted, this, [this] {
+    passStopAction_->setEnabled(true);
+    passStopAction_->setText(tr("Stop the action in progress"));
+  });
+  connect(&viewport_->service(), &RenderService::callEnded, this, [this](int stillWaiting) {
+    if (stillWaiting > 0) return;
+    passStopAction_->setText(tr("Stop stepping through the passes"));
+    passStopAction_->setEnabled(passes_->active());
+  });
 
   QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
   lessons_->createMenu(lessons);
@@ -234,7 +249,7 @@ void MainWindow::createToolBar() {
   for (const std::string& name : sl::builtinSceneNames())
     sceneCombo_->addItem(QString::fromStdString(name), QString::fromStdString(name));
   sceneCombo_->insertSeparator(sceneCombo_->count());
-  sceneCombo_->addItem(tr("Open…"), kOpenItem);
+  sceneCombo_->addItem(tr("Open…"), openItemData());
   connect(sceneCombo_, &QComboBox::activated, this, &MainWindow::onSceneComboActivated);
   bar->addWidget(sceneCombo_);
 

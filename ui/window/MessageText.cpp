@@ -1,6 +1,8 @@
 // Elision of the messages the GUI shows (see MessageText.h).
 #include "window/MessageText.h"
 
+#include <cstdio>
+
 #include <algorithm>
 
 namespace sl::ui {
@@ -43,6 +45,11 @@ QString shownSummary(const QString& text) {
 QString messageDetails(const QString& message) {
   if (message.size() > kMessageDetailsChars || shownMessage(message) == message) return {};
   return message;
+}
+
+void printErr(const QString& line) {
+  std::fprintf(stderr, "shadowlab: %s\n", line.toLocal8Bit().constData());
+  std::fflush(stderr);
 }
 
 }  // namespace sl::ui

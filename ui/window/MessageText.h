@@ -27,4 +27,7 @@ QString shownSummary(const QString& text);
 /// kMessageDetailsChars long; otherwise empty.
 QString messageDetails(const QString& message);
 
+/// Writes "shadowlab: `line`" to stderr (the full text of what the GUI shows cut).
+void printErr(const QString& line);
+
 }  // namespace sl::ui

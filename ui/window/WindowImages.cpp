@@ -43,10 +43,14 @@ void WindowImages::saveViewImage() {
       &w_, tr("Save viewport image"), QDir::home().filePath(QStringLiteral("shadowlab.png")),
       tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
-  if (auto e = writeWindowOutput(w_, path, pngBytes(grabViewFullSize())))
+  if (auto e = writeViewImage(path))
     w_.report(*e, tr("Save viewport image"));
   else
     w_.showStatus(tr("Saved %1").arg(path));
+}
+
+std::optional<QString> WindowImages::writeViewImage(const QString& path) {
+  return writeWindowOutput(w_, path, pngBytes(grabViewFullSize()));
 }
 
 void WindowImages::exportFigureDialog() {

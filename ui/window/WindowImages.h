@@ -29,6 +29,8 @@ class WindowImages : public QObject {
   QImage grabWindowFullSize();
   /// Writes the figure (ViewportWidget::figureCells) to `path`; the problem, or nothing.
   std::optional<QString> exportFigure(const QString& path);
+  /// Writes the view as shown at full size (grabViewFullSize) to `path`; the problem, or nothing.
+  std::optional<QString> writeViewImage(const QString& path);
 
   // The File menu's commands: each asks for a file (or folder) and reports the outcome.
   void saveViewImage();

@@ -29,6 +29,8 @@ namespace sl::ui {
 class MainWindow;
 class PublicationPanel;
 
+struct HeartbeatClock;  // GuiTestsHeartbeat.cpp
+
 class GuiTests : public QObject {
   Q_OBJECT
 
@@ -145,6 +147,9 @@ class GuiTests : public QObject {
   /// 10 ms heartbeat timer's longest stall (gap minus interval) stays under 100 ms; the figures
   /// are printed per technique and phase. PNGs of the busy view into DIR when given.
   bool heartbeat(const QString& dir);
+  /// The heartbeat while O, Ctrl+E, F5, Export figure, Save viewport image and Equal memory
+  /// run (the window waits for the render thread in each); the worst stall.
+  qint64 heartbeatActions(const QString& dir, HeartbeatClock& hb);
   /// storage-click[=DIR] (GuiTestsStorage.cpp): a click on the Storage factor panel's
   /// hemisphere moves the light to the direction there (the paper's Fig. 7 frame of this
   /// camera, from algo/partition), the status bar says so, the panel re-analyses with the

@@ -110,9 +110,7 @@ void ViewportWidget::noticeEdits() {
 }
 
 void ViewportWidget::pump() {
-  // No scene yet (the first one still loading off the UI thread): nothing to draw; setScene
-  // asks again.
-  if (!ready_ || !frameWanted_ || !service_ || !scene_) return;
+  if (!ready_ || !frameWanted_ || !service_ || sceneLoading_) return;
   noticeEdits();
   const bool inFlight = framesInFlight_ > 0;
   const bool changed = viewRevision_ != sentViewRevision_;
@@ -426,6 +424,11 @@ void ViewportWidget::updateZoomInset() {
 QImage ViewportWidget::grabView() {
   renderFullSizeNow();
   return grab().toImage();
+}
+
+void ViewportWidget::setSceneLoading(bool loading) {
+  sceneLoading_ = loading;
+  if (!loading) pump();
 }
 
 void ViewportWidget::setScene(std::shared_ptr<const sl::Scene> scene) {

@@ -63,6 +63,9 @@ class ViewportWidget : public QWidget {
   /// Shows `scene`; the camera goes to the scene's first bookmark (or a framing view) and
   /// the light to the scene's sun when it has one.
   void setScene(std::shared_ptr<const sl::Scene> scene);
+  /// While a scene loads off the UI thread (MainWindow::loadScene) no frame starts: the first
+  /// frame of a window would otherwise fail with no scene; on false, frames go on.
+  void setSceneLoading(bool loading);
   const std::shared_ptr<const sl::Scene>& scene() const { return scene_; }
 
   /// Switches technique (kept until the renderer exists). Unknown id: error, no change.
@@ -427,6 +430,7 @@ class ViewportWidget : public QWidget {
   QTimer busyTimer_;                    ///< refreshes the busy note while a frame renders
   bool busyShown_ = false;              ///< the busy note was in the overlay at the last tick
   QString busyTechnique_;               ///< of the order in flight
+  bool sceneLoading_ = false;           ///< setSceneLoading
   QString callNote_;                    ///< what the window waits for (RenderService::call)
   QElapsedTimer callClock_;             ///< since that call started
 

@@ -139,6 +139,25 @@ const TechniqueInfo* Renderer::findTechnique(std::string_view id) {
   return nullptr;
 }
 
+namespace {
+/// The id of the first technique that declares `flag`, else of the first technique.
+const std::string& techniqueDeclaring(bool TechniqueInfo::*flag) {
+  const std::vector<TechniqueInfo>& all = Renderer::techniques();
+  for (const TechniqueInfo& t : all)
+    if (t.*flag) return t.id;
+  static const std::string none;
+  return all.empty() ? none : all.front().id;
+}
+}  // namespace
+
+const std::string& Renderer::baselineTechniqueId() {
+  return techniqueDeclaring(&TechniqueInfo::baseline);
+}
+
+const std::string& Renderer::firstScreenTechniqueId() {
+  return techniqueDeclaring(&TechniqueInfo::firstScreen);
+}
+
 std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightType type) {
   for (LightType t : info.lights)
     if (t == type) return std::nullopt;
@@ -205,7 +224,7 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
                                                  {},
                                                  {}});
   s_->emptyVao = gl::createVertexArray();
-  if (auto err = setTechnique("uniform")) throw std::runtime_error(*err);
+  if (auto err = setTechnique(baselineTechniqueId())) throw std::runtime_error(*err);
 }
 
 Renderer::~Renderer() {

@@ -157,11 +157,7 @@ std::optional<std::string> assignParameter(sl::ParamSet& technique, sl::ParamSet
 }
 
 std::string defaultTechniqueId() {
-  // DA-RTW: the technique whose importance, moments, covariance and warp every RTW panel
-  // draws, so that the first screen shows what the tool is about.
-  if (sl::Renderer::findTechnique(kFirstScreenTechnique)) return kFirstScreenTechnique;
-  const auto& all = sl::Renderer::techniques();
-  return all.empty() ? std::string() : all.front().id;
+  return sl::Renderer::firstScreenTechniqueId();
 }
 
 std::optional<std::string> validateLaunchSettings(const std::string& techniqueId,

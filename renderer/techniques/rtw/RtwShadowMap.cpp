@@ -189,7 +189,9 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   info.passes = passDecls(id);
   info.publications = publicationDecls(id);
   info.lights = {LightType::Directional};
-  info.temporalRotation = id == "da-rtw";
+  info.temporalRotation = da;
+  info.firstScreen = da;
+  info.unanalysedWarp = true;
   info.temporalState = info.temporalRotation;  // the rotation and the moments it is read from
   info.aliasingPattern =
       "Straight bands along the light's axes: the warp is separable, so a whole row and column "

@@ -74,8 +74,8 @@ void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::st
   throw std::logic_error("setParamHelp: no parameter '" + key + "'");
 }
 
-std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution) {
-  return {
+std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution, std::string resolutionHelp) {
+  std::vector<ParamDecl> decls = {
       intParam("resolution", "Resolution", "Shadow map", defaultResolution, {64, 16384, 64})
           .withHelp("Shadow map width and height in texels.")
           .asMemoryKnob(),
@@ -97,6 +97,8 @@ std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution) {
           .withHelp("Percentage-closer filtering kernel radius in texels for the shaded image (0 = "
                     "hard). Metrics always use the hard test."),
   };
+  if (!resolutionHelp.empty()) setParamHelp(decls, "resolution", std::move(resolutionHelp));
+  return decls;
 }
 
 }  // namespace sl

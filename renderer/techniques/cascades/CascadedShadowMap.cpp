@@ -28,12 +28,10 @@ gl::ProgramDesc rangeProgramDesc() {
 }  // namespace
 
 TechniqueInfo CascadedShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
-  for (ParamDecl& d : p)
-    if (d.key == "resolution")
-      d.help =
-          "Width and height of EVERY partition's map in texels (the total is k times its "
-          "square).";
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      1024,
+      "Width and height of EVERY partition's map in texels (the total is k times its "
+      "square).");
   auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
   add(intParam("partitions", "Partitions", "Cascades", 4, {1, SL_MAX_CASCADES, 1})
           .withHelp("k: the view frustum is cut into k slices along the view depth, one "

@@ -32,9 +32,8 @@ gl::ProgramDesc layeredProgramDesc() {
 }  // namespace
 
 TechniqueInfo CubeShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
-  setParamHelp(p, "resolution",
-               "Width and height of EACH cube face in texels (a point light has six faces).");
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      1024, "Width and height of EACH cube face in texels (a point light has six faces).");
   p.push_back(switchParam("cube.layered", "One layered pass", "Cube", true)
                   .withHelp("Render every face in one pass (a geometry shader sends each triangle "
                             "to the layers whose frustum it touches) instead of six passes over "

@@ -27,9 +27,8 @@ constexpr float kToleranceTexels = 0.25f;
 }  // namespace
 
 TechniqueInfo DualParaboloidShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(2048);
-  setParamHelp(p, "resolution",
-               "Width and height of EACH hemisphere's map in texels (the disc fills it).");
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      2048, "Width and height of EACH hemisphere's map in texels (the disc fills it).");
   p.push_back(omniAxisParamDecl(
       "dp.axis", "Split axis", "Dual paraboloid",
       "Hemisphere 0 looks along +axis, hemisphere 1 along -axis: the split plane (the discs' "

@@ -37,13 +37,11 @@ DepthMapView partView(const warp::WarpFit& fit) {
 }  // namespace
 
 TechniqueInfo FacePartitionShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
-  for (ParamDecl& d : p)
-    if (d.key == "resolution")
-      d.help =
-          "Width and height of EVERY face partition's map in texels. There are 5 per depth "
-          "slice (the near face and the four sides, one slot each, unused ones empty): the "
-          "total is 5 x face.zsplits times its square.";
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      1024,
+      "Width and height of EVERY face partition's map in texels. There are 5 per depth "
+      "slice (the near face and the four sides, one slot each, unused ones empty): the "
+      "total is 5 x face.zsplits times its square.");
   p.insert(p.begin(), warpEtaDecl(0.0));
   p.push_back(intParam("face.zsplits", "Depth slices", "Face partitions", 1,
                        {1, partition::kMaxFaceZSplits, 1})

@@ -23,6 +23,16 @@ ParamDecl focusDecl() {
           "as such; to set eta itself use lispsm or psm.");
 }
 
+/// The unwarped map exactly as the uniform shadow map renders it (focused on what the camera
+/// sees): what a warp that degenerates falls back to.
+DepthMapView unwarpedMapView(const FrameContext& ctx, glm::vec3 towards) {
+  LightFit fit;
+  if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
+                                     FocusSettings{}, fit))
+    throw std::runtime_error(*err);
+  return depthMapView(fit);
+}
+
 }  // namespace
 
 TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
@@ -143,12 +153,7 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
       throw std::runtime_error(*err);
 
     if (fit_.uniform) {
-      // The uniform map exactly as `uniform` renders it: eta = -1 and the fallback are it.
-      LightFit uniformFit;
-      if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
-                                         FocusSettings{}, uniformFit))
-        throw std::runtime_error(*err);
-      mapView = depthMapView(uniformFit);
+      mapView = unwarpedMapView(ctx, towards);  // eta = -1 and the fallback are it
     } else {
       mapView = depthMapView(fit_.mapFrame());
     }
@@ -207,11 +212,7 @@ void PerspectiveShadowMap::renderPostPerspective(FrameContext& ctx) {
             fitPostPerspectiveFor(ctx.scene, ctx.camera, ctx.aspect, towards, ctx.params, psmFit_))
       throw std::runtime_error(*err);
     if (psmFit_.uniform()) {
-      LightFit uniformFit;
-      if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
-                                         FocusSettings{}, uniformFit))
-        throw std::runtime_error(*err);
-      mapView = depthMapView(uniformFit);
+      mapView = unwarpedMapView(ctx, towards);
     } else {
       mapView = depthMapView(psmFit_.mapFrame());
     }

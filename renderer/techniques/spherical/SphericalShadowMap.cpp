@@ -23,12 +23,12 @@ gl::ProgramDesc depthDesc() {
 }  // namespace
 
 TechniqueInfo SphericalShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(2048);
-  setParamHelp(p, "resolution",
-               "Height of the latitude-longitude map in texels (latitude, 180°); its width is "
-               "twice that (longitude, 360°), so texels are square in angle on the equator and "
-               "the map holds 2 x resolution^2 texels, as the dual paraboloid at the same "
-               "resolution.");
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      2048,
+      "Height of the latitude-longitude map in texels (latitude, 180°); its width is "
+      "twice that (longitude, 360°), so texels are square in angle on the equator and "
+      "the map holds 2 x resolution^2 texels, as the dual paraboloid at the same "
+      "resolution.");
   p.push_back(omniAxisParamDecl(
       "sph.axis", "Pole axis", "Spherical",
       "The poles (latitude ±90°) lie along +axis and -axis: every texel of the map's top or "

@@ -69,7 +69,7 @@ const char* kUsage =
 
 struct RenderConfig {
   std::string scene = "default";
-  std::string technique = "uniform";
+  std::string technique = sl::Renderer::baselineTechniqueId();
   std::vector<std::string> sets;
   int width = 1280, height = 720;
   int frames = 1;

@@ -35,6 +35,71 @@ std::string_view paramTypeName(ParamType type) {
   return "?";
 }
 
+ParamDecl ParamDecl::withHelp(std::string text) && {
+  help = std::move(text);
+  return std::move(*this);
+}
+
+ParamDecl ParamDecl::withUniform(std::string name) && {
+  uniform = std::move(name);
+  return std::move(*this);
+}
+
+ParamDecl ParamDecl::asMemoryKnob() && {
+  memoryKnob = true;
+  return std::move(*this);
+}
+
+namespace {
+/// What every named constructor sets: the names, the type and the default.
+ParamDecl namedParam(std::string key, std::string label, std::string group, ParamType type,
+                     double defaultValue) {
+  return {.key = std::move(key),
+          .label = std::move(label),
+          .group = std::move(group),
+          .type = type,
+          .defaultValue = defaultValue};
+}
+
+ParamDecl numberParam(std::string key, std::string label, std::string group, ParamType type,
+                      double defaultValue, ParamRange range) {
+  ParamDecl d = namedParam(std::move(key), std::move(label), std::move(group), type, defaultValue);
+  d.minValue = range.min;
+  d.maxValue = range.max;
+  d.step = range.step;
+  return d;
+}
+}  // namespace
+
+ParamDecl switchParam(std::string key, std::string label, std::string group, bool on) {
+  ParamDecl d =
+      namedParam(std::move(key), std::move(label), std::move(group), ParamType::Bool, on ? 1 : 0);
+  d.step = 1;
+  return d;
+}
+
+ParamDecl choiceParam(std::string key, std::string label, std::string group,
+                      std::vector<std::string> names, int defaultIndex) {
+  ParamDecl d =
+      namedParam(std::move(key), std::move(label), std::move(group), ParamType::Enum, defaultIndex);
+  d.maxValue = double(names.size()) - 1.0;
+  d.step = 1;
+  d.enumNames = std::move(names);
+  return d;
+}
+
+ParamDecl intParam(std::string key, std::string label, std::string group, int defaultValue,
+                   ParamRange range) {
+  return numberParam(std::move(key), std::move(label), std::move(group), ParamType::Int,
+                     defaultValue, range);
+}
+
+ParamDecl floatParam(std::string key, std::string label, std::string group, double defaultValue,
+                     ParamRange range) {
+  return numberParam(std::move(key), std::move(label), std::move(group), ParamType::Float,
+                     defaultValue, range);
+}
+
 const ParamDecl* memoryKnob(const std::vector<ParamDecl>& decls) {
   for (const ParamDecl& d : decls)
     if (d.memoryKnob) return &d;

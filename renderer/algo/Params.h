@@ -35,7 +35,34 @@ struct ParamDecl {
   /// pool's page count): what the split view's "Equal memory" searches. At most one per
   /// technique (checked by tests/cpu), and a GL test checks the growth for every technique.
   bool memoryKnob = false;
+
+  /// The finishing touches of the named constructors below (switchParam, choiceParam,
+  /// intParam, floatParam): the declaration with `help`, `uniform` or `memoryKnob` set.
+  ParamDecl withHelp(std::string text) &&;
+  ParamDecl withUniform(std::string name) &&;
+  ParamDecl asMemoryKnob() &&;
 };
+
+/// A numeric parameter's range and UI step (0: the type's default step).
+struct ParamRange {
+  double min = 0.0;
+  double max = 1.0;
+  double step = 0.0;
+};
+
+/// Named constructors for the shapes a declaration comes in, so that one reads as a line and
+/// its help: `intParam("fvsm.grid", "Tile grid n", "FVSM", 32, {1, 64, 1}).withHelp("…")`.
+/// An on/off switch (Bool: 0..1, step 1) that starts `on` or off.
+ParamDecl switchParam(std::string key, std::string label, std::string group, bool on);
+/// A choice among `names` (Enum: value i is names[i], 0..names.size() - 1, step 1).
+ParamDecl choiceParam(std::string key, std::string label, std::string group,
+                      std::vector<std::string> names, int defaultIndex = 0);
+/// A whole number in `range`.
+ParamDecl intParam(std::string key, std::string label, std::string group, int defaultValue,
+                   ParamRange range);
+/// A real number in `range`.
+ParamDecl floatParam(std::string key, std::string label, std::string group, double defaultValue,
+                     ParamRange range);
 
 /// The declaration marked `memoryKnob` (null when none is; the first when several are, which
 /// tests/cpu refuses for every shipped technique).

@@ -41,109 +41,57 @@ std::vector<std::string> overlayNames() {
 
 std::vector<ParamDecl> rendererParamDecls() {
   return {
-      {.key = "shading.ambient",
-       .label = "Ambient",
-       .group = "Shading",
-       .type = ParamType::Float,
-       .defaultValue = 0.35,
-       .minValue = 0.0,
-       .maxValue = 1.0,
-       .step = 0.05,
-       .help = "Sky light added to every surface, so shadowed areas stay readable.",
-       .uniform = "u_ambient"},
-      {.key = "view.overlay",
-       .label = "Overlay",
-       .group = "View",
-       .type = ParamType::Enum,
-       .defaultValue = SL_OVERLAY_NONE,
-       .minValue = SL_OVERLAY_NONE,
-       .maxValue = SL_OVERLAY_PAGES,
-       .step = 1,
-       .enumNames = overlayNames(),
-       .help =
-           "Drawn over the scene: shadow error against the exact reference (false-lit magenta, "
-           "false-shadowed cyan; needs a computed reference for this view), perspective aliasing "
-           "m as a heat map (blue: m<1 oversampled, white: m=1, red: m>1 undersampled; log2 scale "
-           "-4..4; error and m in the main view only, not in the outside view), or the shadow-map "
-           "texel grid (every 1/" +
-           std::to_string(SL_GRID_LINES_PER_MAP) +
-           " of the selected map) projected onto the scene, or the partition: each pixel coloured "
-           "by the index of the map it selected (cascade, face, layer; colours repeat every " +
-           std::to_string(SL_PARTITION_COLOURS) +
-           "): 0 red, 1 green, 2 blue, 3 yellow, 4 magenta, 5 cyan, 6 orange, 7 violet; or "
-           "changed: the pixels whose hard shadow test flipped (lit <-> shadowed) since the "
-           "previous frame in vivid yellow (flicker, vibration; main view only); or pages: the "
-           "borders of the page each pixel's lookup used, in orange over the scene in grey (paged "
-           "maps: rmsm, asm; the partition overlay colours each pixel by the level it uses).",
-       .uniform = "u_overlay"},
-      {.key = "view.outside",
-       .label = "Outside view",
-       .group = "View",
-       .type = ParamType::Bool,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .help = "Show the scene from a third camera, placed so that the view frustum and the "
-               "light's frusta are visible, with lines: the camera's frustum (white, near to the "
-               "deepest point of the scene bounds), split planes (grey), each shadow map's light "
-               "frustum (its partition colour) and a warped map's frustum (cyan, its sides "
-               "extended to the warp's centre of projection). The metrics still measure the "
-               "main camera's image."},
-      {.key = "view.adaptive",
-       .label = "Adaptive resolution",
-       .group = "View",
-       .type = ParamType::Bool,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .help = "GUI only, off by default: when a frame takes longer than the frame budget, "
-               "the interactive view renders at half its size (stretched to fit; never less) "
-               "and says so in its corner; the first fast frame returns to full size, and a "
-               "still view is redrawn at full size. Never in presenter mode, the split view, "
-               "exports, grabs or a window that opened a lesson (its pictures and numbers are "
-               "full-size frames); the command line always renders at the requested size."},
-      {.key = "view.adaptive.budget_ms",
-       .label = "Frame budget (ms)",
-       .group = "View",
-       .type = ParamType::Int,
-       .defaultValue = 250,
-       .minValue = 20,
-       .maxValue = 10000,
-       .step = 10,
-       .help = "GUI only: a frame slower than this lowers the view's internal resolution "
-               "(view.adaptive); continuous rendering spends at most half of it on a "
-               "progressive technique's tiles per frame, so the window never waits on one."},
-      {.key = "view.outside.azimuth_deg",
-       .label = "Outside azimuth",
-       .group = "View",
-       .type = ParamType::Float,
-       .defaultValue = 60.0,
-       .minValue = -180.0,
-       .maxValue = 180.0,
-       .step = 5.0,
-       .help = "Direction of the outside view's camera around the vertical, degrees: 0 behind "
-               "the main camera, 90 from its right (dragging in the outside view changes it)."},
-      {.key = "view.outside.elevation_deg",
-       .label = "Outside elevation",
-       .group = "View",
-       .type = ParamType::Float,
-       .defaultValue = 35.0,
-       .minValue = -80.0,
-       .maxValue = 85.0,
-       .step = 5.0,
-       .help = "Height of the outside view's camera above the horizon, degrees."},
-      {.key = "view.outside.zoom",
-       .label = "Outside zoom",
-       .group = "View",
-       .type = ParamType::Float,
-       .defaultValue = 1.0,
-       .minValue = 0.001,
-       .maxValue = 1.0,
-       .step = 0.01,
-       .help = "1 frames every line; a smaller value frames that share of the view, centred "
-               "near the main camera's view axis that share of the way in (0.05: the first "
-               "twentieth of a kilometre-deep frustum). The mouse wheel in the outside view "
-               "changes it."},
+      floatParam("shading.ambient", "Ambient", "Shading", 0.35, {0.0, 1.0, 0.05})
+          .withUniform("u_ambient")
+          .withHelp("Sky light added to every surface, so shadowed areas stay readable."),
+      choiceParam("view.overlay", "Overlay", "View", overlayNames(), SL_OVERLAY_NONE)
+          .withUniform("u_overlay")
+          .withHelp("Drawn over the scene: shadow error against the exact reference (false-lit "
+                    "magenta, false-shadowed cyan; needs a computed reference for this view), "
+                    "perspective aliasing m as a heat map (blue: m<1 oversampled, white: m=1, red: "
+                    "m>1 undersampled; log2 scale -4..4; error and m in the main view only, not in "
+                    "the outside view), or the shadow-map texel grid (every 1/" +
+                    std::to_string(SL_GRID_LINES_PER_MAP) +
+                    " of the selected map) projected onto the scene, or the partition: each pixel "
+                    "coloured by the index of the map it selected (cascade, face, layer; colours "
+                    "repeat every " +
+                    std::to_string(SL_PARTITION_COLOURS) +
+                    "): 0 red, 1 green, 2 blue, 3 yellow, 4 magenta, 5 cyan, 6 orange, 7 violet; "
+                    "or changed: the pixels whose hard shadow test flipped (lit <-> shadowed) "
+                    "since the previous frame in vivid yellow (flicker, vibration; main view "
+                    "only); or pages: the borders of the page each pixel's lookup used, in orange "
+                    "over the scene in grey (paged maps: rmsm, asm; the partition overlay colours "
+                    "each pixel by the level it uses)."),
+      switchParam("view.outside", "Outside view", "View", false)
+          .withHelp(
+              "Show the scene from a third camera, placed so that the view frustum and the light's "
+              "frusta are visible, with lines: the camera's frustum (white, near to the deepest "
+              "point of the scene bounds), split planes (grey), each shadow map's light frustum "
+              "(its partition colour) and a warped map's frustum (cyan, its sides extended to the "
+              "warp's centre of projection). The metrics still measure the main camera's image."),
+      switchParam("view.adaptive", "Adaptive resolution", "View", false)
+          .withHelp("GUI only, off by default: when a frame takes longer than the frame budget, "
+                    "the interactive view renders at half its size (stretched to fit; never less) "
+                    "and says so in its corner; the first fast frame returns to full size, and a "
+                    "still view is redrawn at full size. Never in presenter mode, the split view, "
+                    "exports, grabs or a window that opened a lesson (its pictures and numbers are "
+                    "full-size frames); the command line always renders at the requested size."),
+      intParam("view.adaptive.budget_ms", "Frame budget (ms)", "View", 250, {20, 10000, 10})
+          .withHelp("GUI only: a frame slower than this lowers the view's internal resolution "
+                    "(view.adaptive); continuous rendering spends at most half of it on a "
+                    "progressive technique's tiles per frame, so the window never waits on one."),
+      floatParam("view.outside.azimuth_deg", "Outside azimuth", "View", 60.0, {-180.0, 180.0, 5.0})
+          .withHelp(
+              "Direction of the outside view's camera around the vertical, degrees: 0 behind the "
+              "main camera, 90 from its right (dragging in the outside view changes it)."),
+      floatParam("view.outside.elevation_deg", "Outside elevation", "View", 35.0,
+                 {-80.0, 85.0, 5.0})
+          .withHelp("Height of the outside view's camera above the horizon, degrees."),
+      floatParam("view.outside.zoom", "Outside zoom", "View", 1.0, {0.001, 1.0, 0.01})
+          .withHelp(
+              "1 frames every line; a smaller value frames that share of the view, centred near "
+              "the main camera's view axis that share of the way in (0.05: the first twentieth of "
+              "a kilometre-deep frustum). The mouse wheel in the outside view changes it."),
   };
 }
 
@@ -189,6 +137,25 @@ const TechniqueInfo* Renderer::findTechnique(std::string_view id) {
   for (const TechniqueInfo& t : techniques())
     if (t.id == id) return &t;
   return nullptr;
+}
+
+namespace {
+/// The id of the first technique that declares `flag`, else of the first technique.
+const std::string& techniqueDeclaring(bool TechniqueInfo::*flag) {
+  const std::vector<TechniqueInfo>& all = Renderer::techniques();
+  for (const TechniqueInfo& t : all)
+    if (t.*flag) return t.id;
+  static const std::string none;
+  return all.empty() ? none : all.front().id;
+}
+}  // namespace
+
+const std::string& Renderer::baselineTechniqueId() {
+  return techniqueDeclaring(&TechniqueInfo::baseline);
+}
+
+const std::string& Renderer::firstScreenTechniqueId() {
+  return techniqueDeclaring(&TechniqueInfo::firstScreen);
 }
 
 std::optional<std::string> checkLightSupport(const TechniqueInfo& info, LightType type) {
@@ -257,7 +224,7 @@ Renderer::Renderer(const RendererOptions& options) : s_(std::make_unique<Rendere
                                                  {},
                                                  {}});
   s_->emptyVao = gl::createVertexArray();
-  if (auto err = setTechnique("uniform")) throw std::runtime_error(*err);
+  if (auto err = setTechnique(baselineTechniqueId())) throw std::runtime_error(*err);
 }
 
 Renderer::~Renderer() {

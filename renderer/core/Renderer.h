@@ -88,6 +88,17 @@ struct TechniqueInfo {
   /// frame is not what a user sees: measuring commands render unmeasured frames until it
   /// settles (`settled`).
   bool temporalRotation = false;
+  /// The plain shadow map the others are measured against (uniform): what a renderer starts
+  /// on, the CLI's render default, the split view's and the Charts dock's partner, a scheme the
+  /// storage analysis reads as is (Renderer::baselineTechniqueId).
+  bool baseline = false;
+  /// The technique a window opens on when neither the command line, a lesson nor the last
+  /// session names one (da-rtw: the one every RTW panel draws, so that the first screen shows
+  /// what the tool is about; Renderer::firstScreenTechniqueId).
+  bool firstScreen = false;
+  /// Warps its map by an analysis of its own (RTW's importance maps) that the storage analysis
+  /// (measure/StorageScheme) does not model: it reports the map as a uniform one and says so.
+  bool unanalysedWarp = false;
   /// Keeps state from one frame to the next that changes what later frames show (DA-RTW's
   /// rotation and moments, ASM's page cache, the cascades' held depth range, rmsm's budget
   /// pool): the renderer then commits it only when a frame completes and discards it
@@ -288,6 +299,10 @@ class Renderer {
 
   static const std::vector<TechniqueInfo>& techniques();
   static const TechniqueInfo* findTechnique(std::string_view id);
+  /// The id of the technique declared TechniqueInfo::baseline, else of the first one.
+  static const std::string& baselineTechniqueId();
+  /// The id of the technique declared TechniqueInfo::firstScreen, else of the first one.
+  static const std::string& firstScreenTechniqueId();
 
   /// "GL_RENDERER | GL_VERSION" of the context.
   std::string glDescription() const;

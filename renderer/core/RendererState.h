@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <initializer_list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -122,26 +123,23 @@ struct RendererState {
     t.prevAliasing = gl::Texture::create2D(GL_R32F, w, h);
     t.prevMapIndex = gl::Texture::create2D(GL_R8UI, w, h);
     t.color = gl::Texture::create2D(GL_RGBA8, w, h);
-    t.gbuffer = gl::Framebuffer::create();
-    t.gbuffer.attach(GL_COLOR_ATTACHMENT0, t.position);
-    t.gbuffer.attach(GL_COLOR_ATTACHMENT1, t.normal);
-    t.gbuffer.attach(GL_COLOR_ATTACHMENT2, t.albedo);
-    t.gbuffer.attach(GL_DEPTH_ATTACHMENT, t.depth);
-    t.gbuffer.setDrawBuffers(3);
-    t.gbuffer.checkComplete("G-buffer");
-    t.resolve = gl::Framebuffer::create();
-    t.resolve.attach(GL_COLOR_ATTACHMENT0, t.hard);
-    t.resolve.attach(GL_COLOR_ATTACHMENT1, t.filtered);
-    t.resolve.attach(GL_COLOR_ATTACHMENT2, t.aliasing);
-    t.resolve.attach(GL_COLOR_ATTACHMENT3, t.texel);
-    t.resolve.attach(GL_COLOR_ATTACHMENT4, t.mapIndex);
-    t.resolve.setDrawBuffers(5);
-    t.resolve.checkComplete("resolve");
-    t.composite = gl::Framebuffer::create();
-    t.composite.attach(GL_COLOR_ATTACHMENT0, t.color);
-    t.composite.setDrawBuffers(1);
-    t.composite.checkComplete("composite");
+    t.gbuffer = framebufferOf({&t.position, &t.normal, &t.albedo}, &t.depth, "G-buffer");
+    t.resolve = framebufferOf({&t.hard, &t.filtered, &t.aliasing, &t.texel, &t.mapIndex}, nullptr,
+                              "resolve");
+    t.composite = framebufferOf({&t.color}, nullptr, "composite");
     return t;
+  }
+  /// A framebuffer drawing into `colours` (colour attachments 0, 1, ...) with `depth` when
+  /// given, checked complete (`what` names it in the error).
+  static gl::Framebuffer framebufferOf(std::initializer_list<const gl::Texture*> colours,
+                                       const gl::Texture* depth, const std::string& what) {
+    gl::Framebuffer fb = gl::Framebuffer::create();
+    GLenum attachment = GL_COLOR_ATTACHMENT0;
+    for (const gl::Texture* colour : colours) fb.attach(attachment++, *colour);
+    if (depth) fb.attach(GL_DEPTH_ATTACHMENT, *depth);
+    fb.setDrawBuffers(int(colours.size()));
+    fb.checkComplete(what);
+    return fb;
   }
 };
 

@@ -195,8 +195,10 @@ class Technique {
 /// The built-in technique list (TechniqueEntry: core/Renderer.h).
 const std::vector<TechniqueEntry>& techniqueRegistry();
 
-/// Parameters most shadow-map techniques share (resolution, bias, PCF), declared once.
-std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution);
+/// Parameters most shadow-map techniques share (resolution, bias, PCF), declared once;
+/// `resolutionHelp`, when given, says in the technique's words what the resolution is of
+/// (each cube face, every partition's map...).
+std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution, std::string resolutionHelp = {});
 /// Replaces the help text of `key` in `decls` (a technique's own words for a shared
 /// declaration); throws std::logic_error when it is absent.
 void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::string help);

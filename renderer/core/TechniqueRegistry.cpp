@@ -74,66 +74,31 @@ void setParamHelp(std::vector<ParamDecl>& decls, const std::string& key, std::st
   throw std::logic_error("setParamHelp: no parameter '" + key + "'");
 }
 
-std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution) {
-  return {
-      {.key = "resolution",
-       .label = "Resolution",
-       .group = "Shadow map",
-       .type = ParamType::Int,
-       .defaultValue = double(defaultResolution),
-       .minValue = 64,
-       .maxValue = 16384,
-       .step = 64,
-       .help = "Shadow map width and height in texels.",
-       .memoryKnob = true},
-      {.key = "bias.slope",
-       .label = "Slope term",
-       .group = "Bias",
-       .type = ParamType::Float,
-       .defaultValue = 0.25,
-       .minValue = 0.0,
-       .maxValue = 16.0,
-       .step = 0.25,
-       .help =
-           "Extra depth in the lookup: this many times the receiver plane's depth change over one "
-           "local shadow-map texel (the plane itself is compared exactly at the sampled texel's "
-           "centre; this covers curvature and rounding).",
-       .uniform = "u_biasSlope"},
-      {.key = "bias.constant",
-       .label = "Constant bias",
-       .group = "Bias",
-       .type = ParamType::Float,
-       .defaultValue = 0.001,
-       .minValue = 0.0,
-       .maxValue = 1.0,
-       .step = 0.001,
-       .help = "Extra depth in the lookup, in metres along the light direction.",
-       .uniform = "u_biasConstantM"},
-      {.key = "bias.normal",
-       .label = "Normal offset",
-       .group = "Bias",
-       .type = ParamType::Float,
-       .defaultValue = 0.5,
-       .minValue = 0.0,
-       .maxValue = 8.0,
-       .step = 0.25,
-       .help =
-           "Receiver offset along its normal before the lookup, in local shadow-map texels (the "
-           "largest side, warp compression included), times the sine of the light angle.",
-       .uniform = "u_biasNormal"},
-      {.key = "pcf",
-       .label = "PCF radius",
-       .group = "Filtering",
-       .type = ParamType::Int,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 3,
-       .step = 1,
-       .help =
-           "Percentage-closer filtering kernel radius in texels for the shaded image (0 = hard). "
-           "Metrics always use the hard test.",
-       .uniform = "u_pcfRadius"},
+std::vector<ParamDecl> shadowMapParamDecls(int defaultResolution, std::string resolutionHelp) {
+  std::vector<ParamDecl> decls = {
+      intParam("resolution", "Resolution", "Shadow map", defaultResolution, {64, 16384, 64})
+          .withHelp("Shadow map width and height in texels.")
+          .asMemoryKnob(),
+      floatParam("bias.slope", "Slope term", "Bias", 0.25, {0.0, 16.0, 0.25})
+          .withUniform("u_biasSlope")
+          .withHelp("Extra depth in the lookup: this many times the receiver plane's depth change "
+                    "over one local shadow-map texel (the plane itself is compared exactly at the "
+                    "sampled texel's centre; this covers curvature and rounding)."),
+      floatParam("bias.constant", "Constant bias", "Bias", 0.001, {0.0, 1.0, 0.001})
+          .withUniform("u_biasConstantM")
+          .withHelp("Extra depth in the lookup, in metres along the light direction."),
+      floatParam("bias.normal", "Normal offset", "Bias", 0.5, {0.0, 8.0, 0.25})
+          .withUniform("u_biasNormal")
+          .withHelp(
+              "Receiver offset along its normal before the lookup, in local shadow-map texels (the "
+              "largest side, warp compression included), times the sine of the light angle."),
+      intParam("pcf", "PCF radius", "Filtering", 0, {0, 3, 1})
+          .withUniform("u_pcfRadius")
+          .withHelp("Percentage-closer filtering kernel radius in texels for the shaded image (0 = "
+                    "hard). Metrics always use the hard test."),
   };
+  if (!resolutionHelp.empty()) setParamHelp(decls, "resolution", std::move(resolutionHelp));
+  return decls;
 }
 
 }  // namespace sl

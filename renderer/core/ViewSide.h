@@ -35,7 +35,7 @@ int syncParams(ParamSet& dst, const ParamSet& src);
 
 class ViewSide {
  public:
-  explicit ViewSide(std::string_view techniqueId = "uniform");
+  explicit ViewSide(std::string_view techniqueId = Renderer::baselineTechniqueId());
 
   /// Switches technique (its parameters are kept per technique, as the renderer keeps them).
   /// Unknown id: the error naming the known ones, no change.

@@ -6,21 +6,13 @@
 namespace sl {
 
 ParamDecl warpEtaDecl(double defaultEta) {
-  return {.key = "warp.eta",
-          .label = "Warp eta",
-          .group = "Warp",
-          .type = ParamType::Float,
-          .defaultValue = defaultEta,
-          .minValue = -1.0,
-          .maxValue = 1.0,
-          .step = 0.05,
-          .help =
-              "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), "
-              "1 their light-space PSM (n' = n). Shared by psm with psm.method = lispsm-eta1, "
-              "lispsm (which differ only in the default) and "
-              "cascades with partition.warp (per partition: n and f of its slice) and "
-              "face-partition (one warp per face); tsm derives it from warp.focus and publishes "
-              "it (warp.eta)."};
+  return floatParam("warp.eta", "Warp eta", "Warp", defaultEta, {-1.0, 1.0, 0.05})
+      .withHelp(
+          "Lloyd et al.'s eq. 11: -1 uniform (n' infinite), 0 LiSPSM (n' = n + sqrt(f n)), 1 their "
+          "light-space PSM (n' = n). Shared by psm with psm.method = lispsm-eta1, lispsm (which "
+          "differ only in the default) and cascades with partition.warp (per partition: n and f of "
+          "its slice) and face-partition (one warp per face); tsm derives it from warp.focus and "
+          "publishes it (warp.eta).");
 }
 
 void addWarpOutlines(const warp::WarpFit& fit, FrameOutlines& out, int map) {

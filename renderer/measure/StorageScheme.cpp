@@ -87,7 +87,7 @@ void schemeFromDeclarations(const sl::TechniqueInfo* info, const FrameValue& par
   } else {
     s.scheme = Scheme::Uniform;
     std::snprintf(buf, sizeof buf, "uniform (%s%s)", id.c_str(),
-                  id.rfind("rtw", 0) == 0 || id == "da-rtw" ? ": its warp is not analysed" : "");
+                  info && info->unanalysedWarp ? ": its warp is not analysed" : "");
     out.eta = -1.0;
   }
   out.settings = s;
@@ -101,7 +101,7 @@ bool analysesScheme(const sl::TechniqueInfo& info) {
   const bool declared = std::any_of(info.params.begin(), info.params.end(), [](const auto& d) {
     return d.key == "partitions" || d.key == "warp.eta";
   });
-  return info.id == "uniform" || declared || info.findPublication("warp.eta") ||
+  return info.baseline || declared || info.findPublication("warp.eta") ||
          info.findPublication("faces.front");
 }
 

@@ -269,6 +269,20 @@ int SceneBuilder::addNode(const std::string& name, int mesh, const glm::vec3& tr
   return index;
 }
 
+namespace {
+/// A light of glTF `type` in the warm white of every built-in scene; `rangeM` 0: infinite.
+tinygltf::Light warmLight(const std::string& name, const std::string& type, float intensity,
+                          float rangeM = 0.0f) {
+  tinygltf::Light light;
+  light.name = name;
+  light.type = type;
+  light.color = {1.0, 0.96, 0.9};
+  light.intensity = intensity;
+  light.range = rangeM;
+  return light;
+}
+}  // namespace
+
 int SceneBuilder::addLightNode(const tinygltf::Light& light, tinygltf::Node node) {
   model_.lights.push_back(light);
   node.name = light.name;
@@ -282,11 +296,7 @@ int SceneBuilder::addLightNode(const tinygltf::Light& light, tinygltf::Node node
 }
 
 int SceneBuilder::addSun(float azimuthDeg, float elevationDeg, float intensityLux) {
-  tinygltf::Light light;
-  light.name = "sun";
-  light.type = "directional";
-  light.color = {1.0, 0.96, 0.9};
-  light.intensity = intensityLux;
+  tinygltf::Light light = warmLight("sun", "directional", intensityLux);
   tinygltf::Node node;
   glm::quat q = rotationWithZAxis(towardsLightFromAngles(azimuthDeg, elevationDeg));
   node.rotation = {q.x, q.y, q.z, q.w};
@@ -295,12 +305,7 @@ int SceneBuilder::addSun(float azimuthDeg, float elevationDeg, float intensityLu
 
 int SceneBuilder::addPointLight(const std::string& name, const glm::vec3& positionM, float rangeM,
                                 float intensityCd) {
-  tinygltf::Light light;
-  light.name = name;
-  light.type = "point";
-  light.color = {1.0, 0.96, 0.9};
-  light.intensity = intensityCd;
-  light.range = rangeM;
+  tinygltf::Light light = warmLight(name, "point", intensityCd, rangeM);
   tinygltf::Node node;
   node.translation = {positionM.x, positionM.y, positionM.z};
   return addLightNode(light, node);
@@ -309,12 +314,7 @@ int SceneBuilder::addPointLight(const std::string& name, const glm::vec3& positi
 int SceneBuilder::addSpotLight(const std::string& name, const glm::vec3& positionM,
                                const glm::vec3& direction, float outerConeDeg, float innerConeDeg,
                                float rangeM, float intensityCd) {
-  tinygltf::Light light;
-  light.name = name;
-  light.type = "spot";
-  light.color = {1.0, 0.96, 0.9};
-  light.intensity = intensityCd;
-  light.range = rangeM;
+  tinygltf::Light light = warmLight(name, "spot", intensityCd, rangeM);
   light.spot.outerConeAngle = glm::radians(double(outerConeDeg));
   light.spot.innerConeAngle = glm::radians(double(innerConeDeg));
   tinygltf::Node node;

@@ -61,13 +61,12 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   parser.addOptions(
       {scene, technique, set, lesson, lessonCase, course, session, presenter, grab, grabAfter});
 
+  // A refusal: exit status 2 and the one-line reason, no options.
+  const auto usageError = [](QString message) {
+    return ParsedLaunch{.exitCode = 2, .message = std::move(message), .messageIsError = true};
+  };
   ParsedLaunch out;
-  if (!parser.parse(arguments)) {
-    out.exitCode = 2;
-    out.messageIsError = true;
-    out.message = parser.errorText();
-    return out;
-  }
+  if (!parser.parse(arguments)) return usageError(parser.errorText());
   if (parser.isSet(help)) {
     out.message = parser.helpText();
     return out;
@@ -77,13 +76,9 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
                   QCoreApplication::applicationVersion();
     return out;
   }
-  if (!parser.positionalArguments().isEmpty()) {
-    out.exitCode = 2;
-    out.messageIsError = true;
-    out.message = QStringLiteral("unexpected argument '%1' (use --scene FILE to open a scene)")
-                      .arg(parser.positionalArguments().first());
-    return out;
-  }
+  if (!parser.positionalArguments().isEmpty())
+    return usageError(QStringLiteral("unexpected argument '%1' (use --scene FILE to open a scene)")
+                          .arg(parser.positionalArguments().first()));
   LaunchOptions o;
   o.scene = parser.value(scene);
   o.technique = parser.value(technique);
@@ -92,52 +87,33 @@ ParsedLaunch parseLaunchOptions(const QStringList& arguments) {
   o.lesson = parser.value(lesson);
   o.presenter = parser.isSet(presenter);
   if (parser.isSet(session)) {
-    if (parser.isSet(lesson)) {
-      out.exitCode = 2;
-      out.messageIsError = true;
-      out.message = QStringLiteral("--open-session and --lesson: give one of them");
-      return out;
-    }
+    if (parser.isSet(lesson))
+      return usageError(QStringLiteral("--open-session and --lesson: give one of them"));
     o.lesson = parser.value(session);
   }
   if (parser.isSet(course)) {
-    if (!o.lesson.isEmpty()) {
-      out.exitCode = 2;
-      out.messageIsError = true;
-      out.message = QStringLiteral("--course and --lesson (or --open-session): give one of them");
-      return out;
-    }
+    if (!o.lesson.isEmpty())
+      return usageError(
+          QStringLiteral("--course and --lesson (or --open-session): give one of them"));
     o.course = parser.value(course);
   }
   if (parser.isSet(lessonCase)) {
     bool caseOk = false;
     o.lessonCase = parser.value(lessonCase).toInt(&caseOk);
-    if (!caseOk || o.lessonCase < 1 || o.lessonCase > 8 || o.lesson.isEmpty()) {
-      out.exitCode = 2;
-      out.messageIsError = true;
-      out.message =
+    if (!caseOk || o.lessonCase < 1 || o.lessonCase > 8 || o.lesson.isEmpty())
+      return usageError(
           o.lesson.isEmpty()
               ? QStringLiteral("--lesson-case: needs --lesson (the lesson it is a case of)")
               : QStringLiteral("--lesson-case: expected a case number 1..8, got '%1'")
-                    .arg(parser.value(lessonCase));
-      return out;
-    }
+                    .arg(parser.value(lessonCase)));
   }
   bool ok = false;
   o.grabAfterFrames = parser.value(grabAfter).toInt(&ok);
-  if (!ok || o.grabAfterFrames < 1 || o.grabAfterFrames > 100000) {
-    out.exitCode = 2;
-    out.messageIsError = true;
-    out.message = QStringLiteral("--grab-after takes a frame count 1..100000, got '%1'")
-                      .arg(parser.value(grabAfter));
-    return out;
-  }
-  if (parser.isSet(grabAfter) && !o.grab()) {
-    out.exitCode = 2;
-    out.messageIsError = true;
-    out.message = QStringLiteral("--grab-after needs --grab DIR");
-    return out;
-  }
+  if (!ok || o.grabAfterFrames < 1 || o.grabAfterFrames > 100000)
+    return usageError(QStringLiteral("--grab-after takes a frame count 1..100000, got '%1'")
+                          .arg(parser.value(grabAfter)));
+  if (parser.isSet(grabAfter) && !o.grab())
+    return usageError(QStringLiteral("--grab-after needs --grab DIR"));
   out.options = o;
   return out;
 }
@@ -157,11 +133,7 @@ std::optional<std::string> assignParameter(sl::ParamSet& technique, sl::ParamSet
 }
 
 std::string defaultTechniqueId() {
-  // DA-RTW: the technique whose importance, moments, covariance and warp every RTW panel
-  // draws, so that the first screen shows what the tool is about.
-  if (sl::Renderer::findTechnique(kFirstScreenTechnique)) return kFirstScreenTechnique;
-  const auto& all = sl::Renderer::techniques();
-  return all.empty() ? std::string() : all.front().id;
+  return sl::Renderer::firstScreenTechniqueId();
 }
 
 std::optional<std::string> validateLaunchSettings(const std::string& techniqueId,

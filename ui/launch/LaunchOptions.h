@@ -48,11 +48,8 @@ std::optional<std::string> assignParameter(sl::ParamSet& technique, sl::ParamSet
 std::optional<std::string> validateLaunchSettings(const std::string& techniqueId,
                                                   const QStringList& assignments);
 
-/// The technique a window opens on when neither the command line, a lesson nor the last
-/// session names one.
-inline constexpr const char* kFirstScreenTechnique = "da-rtw";
-/// The id used when none is given: kFirstScreenTechnique, else (a build without it) the
-/// first declared technique.
+/// The id used when none is given: the technique declared TechniqueInfo::firstScreen, else (a
+/// build without it) the first declared technique.
 std::string defaultTechniqueId();
 
 }  // namespace sl::ui

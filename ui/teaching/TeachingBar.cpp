@@ -146,12 +146,13 @@ void TeachingBar::toggleSplit() {
   ViewportWidget* viewport = w_.viewport();
   if (!viewport->splitTechnique().empty()) return setSplitTechnique(QString());
   QString id = lastSplitTechnique_;
-  if (id.isEmpty()) {  // uniform against anything else, else the first other technique
+  if (id.isEmpty()) {  // the baseline (uniform) against anything else, else the first other
+                       // technique
     const QString current = QString::fromStdString(viewport->techniqueId());
     for (const sl::TechniqueInfo& t : sl::Renderer::techniques()) {
       const QString candidate = QString::fromStdString(t.id);
       if (candidate == current) continue;
-      if (id.isEmpty() || candidate == QLatin1String("uniform")) id = candidate;
+      if (id.isEmpty() || t.baseline) id = candidate;
     }
   }
   if (id.isEmpty()) {

@@ -38,6 +38,31 @@ void keepNearest(WarpedRaster& r, std::vector<double>& best, size_t t, const Lig
   }
 }
 
+/// A map of smRes^2 texels with nothing drawn: depth 1 (far), no triangle.
+WarpedRaster clearedRaster(int smRes) {
+  WarpedRaster r;
+  r.size = smRes;
+  r.depth.assign(size_t(smRes) * size_t(smRes), 1.0f);
+  r.triangle.assign(size_t(smRes) * size_t(smRes), -1);
+  return r;
+}
+
+/// A triangle's bounding box in light-space x (u) and y (v), in double.
+struct UvBounds {
+  double u0, u1, v0, v1;
+};
+
+UvBounds uvBounds(const LightTriangle& tri) {
+  UvBounds b{tri.v[0].x, tri.v[0].x, tri.v[0].y, tri.v[0].y};
+  for (const glm::vec3& p : tri.v) {
+    b.u0 = std::min(b.u0, double(p.x));
+    b.u1 = std::max(b.u1, double(p.x));
+    b.v0 = std::min(b.v0, double(p.y));
+    b.v1 = std::max(b.v1, double(p.y));
+  }
+  return b;
+}
+
 }  // namespace
 
 glm::vec3 lightSpaceOf(const glm::mat4& lightViewProj, glm::vec3 worldP) {
@@ -87,12 +112,9 @@ bool lightTrianglePlaneAt(const LightTriangle& tri, double u, double v, double& 
 }
 
 WarpedRaster rasterizeWarped(const WarpMaps& maps, int smRes, std::span<const LightTriangle> tris) {
-  WarpedRaster r;
-  if (smRes < 1) return r;
-  r.size = smRes;
+  if (smRes < 1) return {};
+  WarpedRaster r = clearedRaster(smRes);
   const size_t n = static_cast<size_t>(smRes);
-  r.depth.assign(n * n, 1.0f);
-  r.triangle.assign(n * n, -1);
   r.tableX = inverseWarpTable(maps.x, smRes);
   r.tableY = inverseWarpTable(maps.y, smRes);
   // Exact depth of the current winner per texel (double), so the minimum is taken before
@@ -103,13 +125,7 @@ WarpedRaster rasterizeWarped(const WarpMaps& maps, int smRes, std::span<const Li
     const LightTriangle& tri = tris[k];
     const double area = lightTriangleArea2(tri);
     if (!(std::abs(area) >= 1e-12)) continue;
-    double u0 = tri.v[0].x, u1 = u0, v0 = tri.v[0].y, v1 = v0;
-    for (const glm::vec3& p : tri.v) {
-      u0 = std::min(u0, double(p.x));
-      u1 = std::max(u1, double(p.x));
-      v0 = std::min(v0, double(p.y));
-      v1 = std::max(v1, double(p.y));
-    }
+    const auto [u0, u1, v0, v1] = uvBounds(tri);
     indicesInRange(r.tableX, u0, u1, cols);
     if (cols.empty()) continue;
     indicesInRange(r.tableY, v0, v1, rows);
@@ -128,12 +144,9 @@ std::vector<float> rasterizeWarpedDepth(const WarpMaps& maps, int smRes,
 
 WarpedRaster rasterizeWarpedInterpolated(const WarpMaps& maps, int smRes,
                                          std::span<const LightTriangle> tris) {
-  WarpedRaster r;
-  if (smRes < 1) return r;
-  r.size = smRes;
+  if (smRes < 1) return {};
+  WarpedRaster r = clearedRaster(smRes);
   const size_t n = static_cast<size_t>(smRes);
-  r.depth.assign(n * n, 1.0f);
-  r.triangle.assign(n * n, -1);
   std::vector<double> best(n * n, 2.0);
   const double res = double(smRes);
   for (size_t k = 0; k < tris.size(); ++k) {
@@ -145,13 +158,7 @@ WarpedRaster rasterizeWarpedInterpolated(const WarpMaps& maps, int smRes,
     }
     const double area = lightTriangleArea2(warped);
     if (!(std::abs(area) >= 1e-12)) continue;
-    double u0 = warped.v[0].x, u1 = u0, v0 = warped.v[0].y, v1 = v0;
-    for (const glm::vec3& p : warped.v) {
-      u0 = std::min(u0, double(p.x));
-      u1 = std::max(u1, double(p.x));
-      v0 = std::min(v0, double(p.y));
-      v1 = std::max(v1, double(p.y));
-    }
+    const auto [u0, u1, v0, v1] = uvBounds(warped);
     // Texel centres (i + 0.5) / smRes within the bounding box, clamped to the map.
     const int i0 = std::max(0, int(std::ceil(u0 * res - 0.5)));
     const int i1 = std::min(smRes - 1, int(std::floor(u1 * res - 0.5)));

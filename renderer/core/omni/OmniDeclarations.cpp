@@ -14,16 +14,8 @@ const glm::dvec3 kAxes[3] = {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
 
 ParamDecl omniAxisParamDecl(std::string key, std::string label, std::string group,
                             std::string help) {
-  return {.key = std::move(key),
-          .label = std::move(label),
-          .group = std::move(group),
-          .type = ParamType::Enum,
-          .defaultValue = 0,
-          .minValue = 0,
-          .maxValue = 2,
-          .step = 1,
-          .enumNames = {"y", "x", "z"},
-          .help = std::move(help)};
+  return choiceParam(std::move(key), std::move(label), std::move(group), {"y", "x", "z"})
+      .withHelp(std::move(help));
 }
 
 glm::dvec3 omniAxisOf(const ParamSet& params, const std::string& key) {

@@ -31,75 +31,38 @@ std::vector<ParamDecl> pagedMapParamDecls() {
   std::vector<ParamDecl> p;
   for (ParamDecl& d : shadowMapParamDecls(2048))
     if (d.key != "resolution") p.push_back(std::move(d));
-  p.push_back(ParamDecl{
-      .key = "virtual.resolution",
-      .label = "Virtual resolution",
-      .group = "Pages",
-      .type = ParamType::Int,
-      .defaultValue = 65536,
-      .minValue = 256,
-      .maxValue = 262144,
-      .step = 256,
-      .help = "Texels per side of the virtual shadow map (level 0, the finest pages); a power of "
-              "two. Its quadtree has log2(virtual.resolution / page.size) + 1 levels, cut at 8 "
-              "(the lookup's maps): deeper, the coarsest level has several pages, all allocated "
-              "every frame as the fallback of every lookup."});
   p.push_back(
-      ParamDecl{.key = "page.size",
-                .label = "Page size",
-                .group = "Pages",
-                .type = ParamType::Int,
-                .defaultValue = 128,
-                .minValue = 16,
-                .maxValue = 1024,
-                .step = 16,
-                .help = "Texels per side of one page (a power of two): the unit of allocation and "
-                        "rendering."});
-  p.push_back(ParamDecl{
-      .key = "lod.bias",
-      .label = "LOD bias",
-      .group = "Pages",
-      .type = ParamType::Int,
-      .defaultValue = 1,
-      .minValue = 0,
-      .maxValue = 6,
-      .step = 1,
-      .help = "Each pixel asks for the page this many levels finer than its footprint needs. "
-              "0 is the paper (l = log2 sqrt(A), resolution matching: one to four texels per "
-              "pixel, the level floored); 1 (the tool's default) 2 x 2 times that, 2 4 x 4...: "
-              "it fills a pool that matching alone leaves mostly empty (the default pool holds "
-              "4.5 texels per pixel of a 1280 x 720 view) and is the more accurate at uniform "
-              "2048²'s bytes (docs/techniques/rmsm.md).",
-      .uniform = "u_rmsmLodBias"});
-  p.push_back(ParamDecl{
-      .key = "pool.pages",
-      .label = "Pool pages",
-      .group = "Pages",
-      .type = ParamType::Int,
-      .defaultValue = 256,
-      .minValue = 1,
-      .maxValue = 4096,
-      .step = 1,
-      .help = "Pages the physical pool holds (256 pages of 128²: the bytes of one uniform 2048² "
-              "map; the paper gives no size). When a frame asks for more, pages of the finest "
-              "requested level move to their "
-              "parents, sibling group by sibling group, until they fit (counted in "
-              "pages.coarsened).",
-      .memoryKnob = true});
+      intParam("virtual.resolution", "Virtual resolution", "Pages", 65536, {256, 262144, 256})
+          .withHelp("Texels per side of the virtual shadow map (level 0, the finest pages); a "
+                    "power of two. Its quadtree has log2(virtual.resolution / page.size) + 1 "
+                    "levels, cut at 8 (the lookup's maps): deeper, the coarsest level has several "
+                    "pages, all allocated every frame as the fallback of every lookup."));
+  p.push_back(intParam("page.size", "Page size", "Pages", 128, {16, 1024, 16})
+                  .withHelp("Texels per side of one page (a power of two): the unit of allocation "
+                            "and rendering."));
+  p.push_back(
+      intParam("lod.bias", "LOD bias", "Pages", 1, {0, 6, 1})
+          .withUniform("u_rmsmLodBias")
+          .withHelp("Each pixel asks for the page this many levels finer than its footprint needs. "
+                    "0 is the paper (l = log2 sqrt(A), resolution matching: one to four texels per "
+                    "pixel, the level floored); 1 (the tool's default) 2 x 2 times that, 2 4 x "
+                    "4...: it fills a pool that matching alone leaves mostly empty (the default "
+                    "pool holds 4.5 texels per pixel of a 1280 x 720 view) and is the more "
+                    "accurate at uniform 2048²'s bytes (docs/techniques/rmsm.md)."));
+  p.push_back(
+      intParam("pool.pages", "Pool pages", "Pages", 256, {1, 4096, 1})
+          .withHelp("Pages the physical pool holds (256 pages of 128²: the bytes of one uniform "
+                    "2048² map; the paper gives no size). When a frame asks for more, pages of the "
+                    "finest requested level move to their parents, sibling group by sibling group, "
+                    "until they fit (counted in pages.coarsened).")
+          .asMemoryKnob());
   return p;
 }
 
 ParamDecl pagedRenderParamDecl(std::string key, std::string group, std::string help) {
-  return {.key = std::move(key),
-          .label = "Render",
-          .group = std::move(group),
-          .type = ParamType::Enum,
-          .defaultValue = kPagedRenderPages,
-          .minValue = 0,
-          .maxValue = 1,
-          .step = 1,
-          .enumNames = {"superpages", "pages"},
-          .help = std::move(help)};
+  return choiceParam(std::move(key), "Render", std::move(group), {"superpages", "pages"},
+                     kPagedRenderPages)
+      .withHelp(std::move(help));
 }
 
 std::vector<PublicationDecl> pagedMapPublicationDecls() {

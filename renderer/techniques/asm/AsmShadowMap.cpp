@@ -85,67 +85,31 @@ TechniqueInfo AsmShadowMap::info() {
                "2048² map), the coarse map's included. When it is full, the least recently "
                "used page no pixel of this frame used is evicted (asm.evicted).");
   auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
-  add({.key = "asm.coarse.resolution",
-       .label = "Coarse map",
-       .group = "ASM",
-       .type = ParamType::Int,
-       .defaultValue = 512,
-       .minValue = 16,
-       .maxValue = 262144,
-       .step = 16,
-       .help = "Texels per side of the coarse map ASM starts from (a power of two, every page "
-               "of that level always held): a shadow that falls inside one of its texels has "
-               "no edge there, and is never refined (the missed fine shadow)."});
-  add({.key = "asm.iterations",
-       .label = "Iterations",
-       .group = "ASM",
-       .type = ParamType::Int,
-       .defaultValue = 4,
-       .minValue = 1,
-       .maxValue = adaptive::kMaxIterations,
-       .step = 1,
-       .help = "Refinement iterations per frame at most (edge finding, requests, allocation, "
-               "render): the loop also stops when an iteration allocates nothing."});
-  add({.key = "asm.pages.per.frame",
-       .label = "Pages per frame",
-       .group = "ASM",
-       .type = ParamType::Int,
-       .defaultValue = 64,
-       .minValue = 1,
-       .maxValue = 4096,
-       .step = 1,
-       .help = "New pages rendered per frame at most (the coarse map after an invalidation "
-               "aside); the rest waits for the next frames (asm.deferred)."});
+  add(intParam("asm.coarse.resolution", "Coarse map", "ASM", 512, {16, 262144, 16})
+          .withHelp("Texels per side of the coarse map ASM starts from (a power of two, every page "
+                    "of that level always held): a shadow that falls inside one of its texels has "
+                    "no edge there, and is never refined (the missed fine shadow)."));
+  add(intParam("asm.iterations", "Iterations", "ASM", 4, {1, adaptive::kMaxIterations, 1})
+          .withHelp("Refinement iterations per frame at most (edge finding, requests, allocation, "
+                    "render): the loop also stops when an iteration allocates nothing."));
+  add(intParam("asm.pages.per.frame", "Pages per frame", "ASM", 64, {1, 4096, 1})
+          .withHelp("New pages rendered per frame at most (the coarse map after an invalidation "
+                    "aside); the rest waits for the next frames (asm.deferred)."));
 
-  add({.key = "asm.edge",
-       .label = "Edge test",
-       .group = "ASM",
-       .type = ParamType::Enum,
-       .defaultValue = SL_ASM_EDGE_SCREEN,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"screen-mask", "map-texel"},
-       .help = "What makes a camera pixel an edge pixel that asks for a finer page. "
-               "screen-mask (the tool's): its shadow mask differs from a 4-neighbour's in the "
-               "camera image; unlike the paper it also fires at a terminator, where a pixel "
-               "facing away from the light counts as shadowed. map-texel (Fernando et al. "
-               "2001): the shadow-map texel it reads lies on a shadow edge of the map, the "
-               "pixel's depth tests at that texel and its 4 neighbours disagreeing."});
-  add({.key = "asm.loop",
-       .label = "Refinement loop",
-       .group = "ASM",
-       .type = ParamType::Enum,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"budget", "until-done"},
-       .help = "budget (the tool's): at most asm.iterations iterations and "
-               "asm.pages.per.frame new pages a frame, the rest waiting for later frames. "
-               "until-done (Fernando et al. 2001): iterate until no page is requested, with no "
-               "page budget, stopped only by asm.iterations.cap (asm.stop, asm.requests.left "
-               "say when the cap stopped it and what it left) or a full pool."});
+  add(choiceParam("asm.edge", "Edge test", "ASM", {"screen-mask", "map-texel"}, SL_ASM_EDGE_SCREEN)
+          .withHelp("What makes a camera pixel an edge pixel that asks for a finer page. "
+                    "screen-mask (the tool's): its shadow mask differs from a 4-neighbour's in the "
+                    "camera image; unlike the paper it also fires at a terminator, where a pixel "
+                    "facing away from the light counts as shadowed. map-texel (Fernando et al. "
+                    "2001): the shadow-map texel it reads lies on a shadow edge of the map, the "
+                    "pixel's depth tests at that texel and its 4 neighbours disagreeing."));
+  add(choiceParam("asm.loop", "Refinement loop", "ASM", {"budget", "until-done"})
+          .withHelp(
+              "budget (the tool's): at most asm.iterations iterations and asm.pages.per.frame new "
+              "pages a frame, the rest waiting for later frames. until-done (Fernando et al. "
+              "2001): iterate until no page is requested, with no page budget, stopped only by "
+              "asm.iterations.cap (asm.stop, asm.requests.left say when the cap stopped it and "
+              "what it left) or a full pool."));
   add(pagedRenderParamDecl(
       "asm.render", "ASM",
       "How an iteration renders its new pages. superpages (the lecture's ASM loop: "
@@ -156,18 +120,11 @@ TechniqueInfo AsmShadowMap::info() {
           "and its new pages are copied into their pool slots (one scene draw per "
           "superpage; the target's 4 MiB count in memory()). pages (the tool's default): "
           "one scene draw per new page, straight into its slot, no superpage target."));
-  add({.key = "asm.iterations.cap",
-       .label = "Iteration cap",
-       .group = "ASM",
-       .type = ParamType::Int,
-       .defaultValue = 16,
-       .minValue = 1,
-       .maxValue = 64,
-       .step = 1,
-       .help = "With asm.loop = until-done, the most iterations a frame runs (the paper has "
-               "no cap); when it stops a loop still refining, the frame publishes asm.stop = 1 "
-               "and the pages still requested (asm.requests.left), and asm.cap.stops counts "
-               "it until the pages are next dropped."});
+  add(intParam("asm.iterations.cap", "Iteration cap", "ASM", 16, {1, 64, 1})
+          .withHelp("With asm.loop = until-done, the most iterations a frame runs (the paper has "
+                    "no cap); when it stops a loop still refining, the frame publishes asm.stop = "
+                    "1 and the pages still requested (asm.requests.left), and asm.cap.stops counts "
+                    "it until the pages are next dropped."));
 
   TechniqueInfo info{"asm", "Adaptive shadow map",
                      "Fernando, Fernandez, Bala, Greenberg 2001: a quadtree of shadow-map pages "

@@ -28,96 +28,48 @@ gl::ProgramDesc rangeProgramDesc() {
 }  // namespace
 
 TechniqueInfo CascadedShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
-  for (ParamDecl& d : p)
-    if (d.key == "resolution")
-      d.help =
-          "Width and height of EVERY partition's map in texels (the total is k times its "
-          "square).";
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      1024,
+      "Width and height of EVERY partition's map in texels (the total is k times its "
+      "square).");
   auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
-  add({.key = "partitions",
-       .label = "Partitions",
-       .group = "Cascades",
-       .type = ParamType::Int,
-       .defaultValue = 4,
-       .minValue = 1,
-       .maxValue = SL_MAX_CASCADES,
-       .step = 1,
-       .help = "k: the view frustum is cut into k slices along the view depth, one "
-               "orthographic map each (z-partitioning)."});
-  add({.key = "split",
-       .label = "Split scheme",
-       .group = "Cascades",
-       .type = ParamType::Enum,
-       .defaultValue = double(int(partition::SplitScheme::Log)),
-       .minValue = 0,
-       .maxValue = 2,
-       .step = 1,
-       .enumNames = {"uniform", "log", "practical"},
-       .help = "Where the slices end: uniform in depth, logarithmic z_i = n (f/n)^(i/k) (equal "
-               "error per slice, Lloyd et al. 2006), or practical: split.lambda * log + "
-               "(1 - split.lambda) * uniform (Zhang et al. 2006)."});
-  add({.key = "split.lambda",
-       .label = "Practical lambda",
-       .group = "Cascades",
-       .type = ParamType::Float,
-       .defaultValue = partition::kDefaultSplitLambda,
-       .minValue = 0.0,
-       .maxValue = 1.0,
-       .step = 0.05,
-       .help = "Blend of the practical split: 1 = logarithmic, 0 = uniform."});
-  add({.key = "stabilize",
-       .label = "Stabilise",
-       .group = "Cascades",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .help = "Each slice's map covers its bounding sphere (extent quantised, so it does not "
-               "change as the camera turns) and moves by whole texels (so edges do not crawl as "
-               "the camera moves); the split range is quantised to 1/8 octave. Off: fitted "
-               "tightly to slice ∩ scene bounds (more texels on the scene, shimmering edges). "
-               "Unwarped partitions only: with partition.warp a warped map is fitted tightly "
-               "(its texels change size along the warp, so no whole-texel step holds them "
-               "still); a partition whose warp falls back to uniform is stabilised."});
-  add({.key = "stabilize.scene",
-       .label = "Stabilised: clamp to scene",
-       .group = "Cascades",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .help = "With stabilize: a slice whose bounding sphere is wider than the whole scene "
-               "seen from the light covers the scene's light-space square instead (it does not "
-               "move with the camera, so it is as stable). The tool's addition to the "
-               "bounding-sphere fit, which alone spends a deep slice's texels outside a small "
-               "scene seen whole (a room, one model): docs/results/real-content.md. Off: the "
-               "sphere always."});
-  add({.key = "partition.warp",
-       .label = "Warp partitions",
-       .group = "Cascades",
-       .type = ParamType::Bool,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .help = "Warp every partition with a perspective along light-space z (LiSPSM at "
-               "warp.eta = 0) fitted around its slice ∩ scene bounds: warping combined with "
-               "z-partitioning, the least error for k maps (Lloyd et al. 2006 §5). Where the "
-               "frustum looks square from the light a partition falls back to uniform "
-               "(partition.<i>.warped = 0 and its cause)."});
+  add(intParam("partitions", "Partitions", "Cascades", 4, {1, SL_MAX_CASCADES, 1})
+          .withHelp("k: the view frustum is cut into k slices along the view depth, one "
+                    "orthographic map each (z-partitioning)."));
+  add(choiceParam("split", "Split scheme", "Cascades", {"uniform", "log", "practical"},
+                  double(int(partition::SplitScheme::Log)))
+          .withHelp("Where the slices end: uniform in depth, logarithmic z_i = n (f/n)^(i/k) "
+                    "(equal error per slice, Lloyd et al. 2006), or practical: split.lambda * log "
+                    "+ (1 - split.lambda) * uniform (Zhang et al. 2006)."));
+  add(floatParam("split.lambda", "Practical lambda", "Cascades", partition::kDefaultSplitLambda,
+                 {0.0, 1.0, 0.05})
+          .withHelp("Blend of the practical split: 1 = logarithmic, 0 = uniform."));
+  add(switchParam("stabilize", "Stabilise", "Cascades", true)
+          .withHelp("Each slice's map covers its bounding sphere (extent quantised, so it does not "
+                    "change as the camera turns) and moves by whole texels (so edges do not crawl "
+                    "as the camera moves); the split range is quantised to 1/8 octave. Off: fitted "
+                    "tightly to slice ∩ scene bounds (more texels on the scene, shimmering edges). "
+                    "Unwarped partitions only: with partition.warp a warped map is fitted tightly "
+                    "(its texels change size along the warp, so no whole-texel step holds them "
+                    "still); a partition whose warp falls back to uniform is stabilised."));
+  add(switchParam("stabilize.scene", "Stabilised: clamp to scene", "Cascades", true)
+          .withHelp(
+              "With stabilize: a slice whose bounding sphere is wider than the whole scene seen "
+              "from the light covers the scene's light-space square instead (it does not move with "
+              "the camera, so it is as stable). The tool's addition to the bounding-sphere fit, "
+              "which alone spends a deep slice's texels outside a small scene seen whole (a room, "
+              "one model): docs/results/real-content.md. Off: the sphere always."));
+  add(switchParam("partition.warp", "Warp partitions", "Cascades", false)
+          .withHelp("Warp every partition with a perspective along light-space z (LiSPSM at "
+                    "warp.eta = 0) fitted around its slice ∩ scene bounds: warping combined with "
+                    "z-partitioning, the least error for k maps (Lloyd et al. 2006 §5). Where the "
+                    "frustum looks square from the light a partition falls back to uniform "
+                    "(partition.<i>.warped = 0 and its cause)."));
   add(warpEtaDecl(0.0));
-  add({.key = "depth.fit",
-       .label = "Fit depth range",
-       .group = "Cascades",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .help = "Cut the splits over the view depths the G-buffer actually holds (a min/max "
-               "reduction of this frame's G-buffer, read back before the fit) instead of the whole "
-               "view "
-               "frustum ∩ scene bounds."});
+  add(switchParam("depth.fit", "Fit depth range", "Cascades", true)
+          .withHelp("Cut the splits over the view depths the G-buffer actually holds (a min/max "
+                    "reduction of this frame's G-buffer, read back before the fit) instead of the "
+                    "whole view frustum ∩ scene bounds."));
 
   TechniqueInfo info{"cascades", "Cascaded shadow maps",
                      "z-partitioning (Lloyd et al. 2006 §5.2; parallel-split maps, Zhang et al. "

@@ -32,19 +32,12 @@ gl::ProgramDesc layeredProgramDesc() {
 }  // namespace
 
 TechniqueInfo CubeShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
-  setParamHelp(p, "resolution",
-               "Width and height of EACH cube face in texels (a point light has six faces).");
-  p.push_back({.key = "cube.layered",
-               .label = "One layered pass",
-               .group = "Cube",
-               .type = ParamType::Bool,
-               .defaultValue = 1,
-               .minValue = 0,
-               .maxValue = 1,
-               .help = "Render every face in one pass (a geometry shader sends each triangle "
-                       "to the layers whose frustum it touches) instead of six passes over "
-                       "the scene. The maps are identical; only the time differs."});
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      1024, "Width and height of EACH cube face in texels (a point light has six faces).");
+  p.push_back(switchParam("cube.layered", "One layered pass", "Cube", true)
+                  .withHelp("Render every face in one pass (a geometry shader sends each triangle "
+                            "to the layers whose frustum it touches) instead of six passes over "
+                            "the scene. The maps are identical; only the time differs."));
   TechniqueInfo info{"cube", "Cube shadow map",
                      "Omni-directional shadows: six 90° perspective depth maps "
                      "around a point light, one per cube face; a spot renders only the faces "

@@ -27,25 +27,19 @@ constexpr float kToleranceTexels = 0.25f;
 }  // namespace
 
 TechniqueInfo DualParaboloidShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(2048);
-  setParamHelp(p, "resolution",
-               "Width and height of EACH hemisphere's map in texels (the disc fills it).");
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      2048, "Width and height of EACH hemisphere's map in texels (the disc fills it).");
   p.push_back(omniAxisParamDecl(
       "dp.axis", "Split axis", "Dual paraboloid",
       "Hemisphere 0 looks along +axis, hemisphere 1 along -axis: the split plane (the discs' "
       "rims, where texels are 4 times denser per steradian than at the centres) is "
       "perpendicular to it. A spot uses its own axis and one hemisphere."));
-  p.push_back({.key = "tessellation",
-               .label = "Tessellation",
-               .group = "Dual paraboloid",
-               .type = ParamType::Bool,
-               .defaultValue = 1,
-               .minValue = 0,
-               .maxValue = 1,
-               .help = "Split long triangles (and tessellate each edge by how far the "
-                       "paraboloid bends it) before mapping vertices. Off: the scene as "
-                       "loaded, edges straight in the map where they should curve: long "
-                       "triangles' shadows are the wrong shape (depth stays exact per texel)."});
+  p.push_back(
+      switchParam("tessellation", "Tessellation", "Dual paraboloid", true)
+          .withHelp("Split long triangles (and tessellate each edge by how far the paraboloid "
+                    "bends it) before mapping vertices. Off: the scene as loaded, edges straight "
+                    "in the map where they should curve: long triangles' shadows are the wrong "
+                    "shape (depth stays exact per texel)."));
   TechniqueInfo info{"dual-paraboloid", "Dual-paraboloid shadow map",
                      "Omni-directional shadows with two maps (Brabec, Annen, Seidel 2002; seed "
                      "001): each hemisphere around a point light maps to a disc through a "

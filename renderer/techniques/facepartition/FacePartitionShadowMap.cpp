@@ -37,43 +37,28 @@ DepthMapView partView(const warp::WarpFit& fit) {
 }  // namespace
 
 TechniqueInfo FacePartitionShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(1024);
-  for (ParamDecl& d : p)
-    if (d.key == "resolution")
-      d.help =
-          "Width and height of EVERY face partition's map in texels. There are 5 per depth "
-          "slice (the near face and the four sides, one slot each, unused ones empty): the "
-          "total is 5 x face.zsplits times its square.";
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      1024,
+      "Width and height of EVERY face partition's map in texels. There are 5 per depth "
+      "slice (the near face and the four sides, one slot each, unused ones empty): the "
+      "total is 5 x face.zsplits times its square.");
   p.insert(p.begin(), warpEtaDecl(0.0));
-  p.push_back({.key = "face.zsplits",
-               .label = "Depth slices",
-               .group = "Face partitions",
-               .type = ParamType::Int,
-               .defaultValue = 1,
-               .minValue = 1,
-               .maxValue = partition::kMaxFaceZSplits,
-               .step = 1,
-               .help = "k: face partitions combined with z-partitioning at the log split "
-                       "z_i = n (f/n)^(i/k) of the view frustum clipped to the scene (Lloyd et "
-                       "al. 2006's combined scheme), nested as face.nesting says: one warped "
-                       "map per (slice, face), 5 k maps. 1: face partitioning alone."});
-  p.push_back({.key = "face.nesting",
-               .label = "Nesting",
-               .group = "Face partitions",
-               .type = ParamType::Enum,
-               .defaultValue = 0,
-               .minValue = 0,
-               .maxValue = 1,
-               .step = 1,
-               .enumNames = {"faces-first", "zsplits-first"},
-               .help = "faces-first (the paper: the view frustum's face partitions, each then "
-                       "cut along its length at the split depths; every slice selects by the "
-                       "whole frustum's faces) or zsplits-first (slices first: the "
-                       "frustum cut into slices first, each slice face-partitioned along its "
-                       "own faces, so every slice has its own near-face map). Only matters for "
-                       "face.zsplits > 1. Measured at 3 slices of 1024^2 (error faces-first / "
-                       "zsplits-first): corridor 0.172 / 0.168 %, diagonal 0.079 / 0.062 %, "
-                       "default 0.435 / 0.281 %: slices first is the better one there."});
+  p.push_back(intParam("face.zsplits", "Depth slices", "Face partitions", 1,
+                       {1, partition::kMaxFaceZSplits, 1})
+                  .withHelp("k: face partitions combined with z-partitioning at the log split z_i "
+                            "= n (f/n)^(i/k) of the view frustum clipped to the scene (Lloyd et "
+                            "al. 2006's combined scheme), nested as face.nesting says: one warped "
+                            "map per (slice, face), 5 k maps. 1: face partitioning alone."));
+  p.push_back(
+      choiceParam("face.nesting", "Nesting", "Face partitions", {"faces-first", "zsplits-first"})
+          .withHelp(
+              "faces-first (the paper: the view frustum's face partitions, each then cut along its "
+              "length at the split depths; every slice selects by the whole frustum's faces) or "
+              "zsplits-first (slices first: the frustum cut into slices first, each slice "
+              "face-partitioned along its own faces, so every slice has its own near-face map). "
+              "Only matters for face.zsplits > 1. Measured at 3 slices of 1024^2 (error "
+              "faces-first / zsplits-first): corridor 0.172 / 0.168 %, diagonal 0.079 / 0.062 %, "
+              "default 0.435 / 0.281 %: slices first is the better one there."));
   TechniqueInfo info{
       "face-partition", "Face-partitioned shadow maps",
       "Lloyd et al. 2006 §5.1: the view frustum split along its faces as seen from the light "

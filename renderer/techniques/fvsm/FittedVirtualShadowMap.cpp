@@ -51,194 +51,88 @@ std::optional<std::string> checkFvsmParams(const ParamSet& p) {
 
 TechniqueInfo FittedVirtualShadowMap::info() {
   std::vector<ParamDecl> params = {
-      {.key = "fvsm.xi",
-       .label = "Quality ξ",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = -3,
-       .minValue = fvsm::kMinXi,
-       .maxValue = 12,
-       .step = 1,
-       .help = "ξ: subtracted from every log2 resolution need before the traversal (Giegl & "
-               "Wimmer §4.9): each step halves the texels per axis everywhere. Large ξ: one "
-               "ordinary shadow map. The paper uses 0 … 5 (0: the sub-pixel need, 5 about one "
-               "ordinary map in its scene); the default −3 is the tool's: 8 times the texels per "
-               "axis of the paper's 0 (with the 32 x 32 grid, about the 16 x 16 x 4096² brute "
-               "force's wrong pixels on diagonal and fewer on corridor: "
-               "docs/techniques/fvsm.md)."},
-      {.key = "fvsm.texture.mode",
-       .label = "Tile textures",
-       .group = "FVSM",
-       .type = ParamType::Enum,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 2,
-       .step = 1,
-       .enumNames = {"sub-rectangle", "power-of-two", "exact"},
-       .help = "Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture "
-               "(t_max²), of the smallest square of a power-of-two series (< 4/3 t_max², the "
-               "paper's recommendation and the default), or a texture of exactly its size (the "
-               "paper sums 2 · 4/3 t_max² for these, counting per level the square and the two "
-               "half-size rectangles only; the tool allocates each w x h the frame uses, up to "
-               "(2 t_max − 16)²)."},
-      {.key = "fvsm.overlap",
-       .label = "Tile overlap",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 4,
-       .step = 1,
-       .help = "A border of this many texels around each tile (§5): its texture covers the kd "
-               "cell grown by that many of its own texels on every side, so receivers near a "
-               "tile edge find the neighbour's depth (0 shows the seams). The border adds "
-               "texels (2^t + 2 x overlap per side); the cell keeps its 2^t, on the same "
-               "lattice."},
-      {.key = "fvsm.grid",
-       .label = "Tile grid n",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = 32,
-       .minValue = 1,
-       .maxValue = 64,
-       .step = 1,
-       .help = "n x n tile grid the SMTMM is accumulated into (a power of two; the paper: 16 or "
-               "32): the finest kd-tree level. A cell at the finest level holds at most the max "
-               "texture: 32 x 4096 (default) lets the neediest cells go finer than the 16 x 16 x "
-               "4096² brute force, and fits coarser cells more tightly "
-               "(docs/techniques/fvsm.md)."},
-      {.key = "fvsm.max_texture",
-       .label = "Max tile texture",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = 4096,
-       .minValue = 16,
-       .maxValue = 8192,
-       .step = 16,
-       .help = "t_max (a power of two): a kd node needing more texels along an axis is split "
-               "along it."},
-      {.key = "fvsm.smtmm.divisor",
-       .label = "SMTMM divisor",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = 4,
-       .minValue = 1,
-       .maxValue = 16,
-       .step = 1,
-       .help = "The SMTMM has frame / divisor entries per axis (the paper: 256² for a 1024² "
-               "frame), each sampling the pixel at the centre of its block."},
-      {.key = "fvsm.smtmm.entry",
-       .label = "SMTMM entry",
-       .group = "FVSM",
-       .type = ParamType::Enum,
-       .defaultValue = SL_FVSM_ENTRY_16_BYTE,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"16-byte", "4-byte"},
-       .help = "How an SMTMM entry is stored and read back: four floats (16-byte, the tool's "
-               "default), or the paper's 4 bytes (4-byte): the SM position as the column and "
-               "row of 256 holding it, and the two needs. It loses where inside its 1/256 "
-               "column a pixel looks, which changes no grid cell (n ≤ 256) and so no tile; "
-               "the SMTMM and its read-back are a quarter of the bytes."},
-      {.key = "fvsm.eta0",
-       .label = "Histogram η0",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = 17,
-       .minValue = 0,
-       .maxValue = SL_FVSM_MAX_NEED_LOG2 - 1,
-       .step = 1,
-       .help = "Lower end bucket of each tile's need histogram (log2): needs up to η0 are "
-               "never discarded as outliers (the paper: 17)."},
-      {.key = "fvsm.eta1",
-       .label = "Histogram η1",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = 22,
-       .minValue = 1,
-       .maxValue = SL_FVSM_MAX_NEED_LOG2,
-       .step = 1,
-       .help = "Upper end bucket (log2): needs from η1 up are counted together (the paper: "
-               "22)."},
-      {.key = "fvsm.outliers",
-       .label = "Outlier entries",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 4096,
-       .step = 1,
-       .help = "Per tile, at most this many SMTMM entries needing more than η0 are discarded "
-               "(highest needs first, whole buckets); 0 (the default) keeps the plain maximum. "
-               "The paper discards \"a very few\" outlier pixels per cell with this histogram "
-               "(§4.4) without saying how many; the default turns that off."},
-      {.key = "fvsm.screen_rect",
-       .label = "Apply in screen rectangles",
-       .group = "FVSM",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .help = "Apply each tile only inside the screen rectangle of its SMTMM entries (one "
-               "entry block of margin); off: over the whole screen."},
-      {.key = "fvsm.need.footprint",
-       .label = "Need from footprint",
-       .group = "FVSM",
-       .type = ParamType::Enum,
-       .defaultValue = SL_FVSM_FOOTPRINT_CHORD,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"box", "chord"},
-       .help = "How a pixel's footprint in the light's map becomes a need per SM axis: the half "
-               "sides of its axis-aligned bounding box (box: the paper's, §4.3), or the half "
-               "length of its chord through the pixel along each axis (chord, the tool's "
-               "default; equal for footprints along an axis, much shorter for thin footprints "
-               "along a diagonal of the map, which the box undersamples). Both keep the sign of "
-               "the depth step the footprint is built from.",
-       .uniform = "u_footprint"},
-      {.key = "fvsm.warp",
-       .label = "Virtual map warp",
-       .group = "FVSM",
-       .type = ParamType::Enum,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"none", "lispsm"},
-       .help = "The virtual map the tiles cut: the focused light frustum, unwarped (none, the "
-               "tool's default), or warped by LiSPSM (Wimmer et al. 2004; n' = n + sqrt(f n), "
-               "fitted around view frustum ∩ scene as `lispsm` fits it), which every result of "
-               "Giegl & Wimmer uses. Each tile is the warped frustum cropped to its uv "
-               "rectangle; the SMTMM's positions and needs are in the warped map. When LiSPSM "
-               "falls back (the light nearly along the view), the map is the unwarped one."},
-      {.key = "fvsm.apply",
-       .label = "Apply tiles by",
-       .group = "FVSM",
-       .type = ParamType::Enum,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"deferred", "multi-pass"},
-       .help = "How each kd leaf shadows the scene (Giegl & Wimmer §3): deferred shadowing, a "
-               "compute pass rebuilding each pixel's position from the eye-space depth buffer "
-               "(deferred, the default and what the paper's results use), or multi-pass "
-               "shadowing (§3.1): the scene rasterised again per leaf inside its screen "
-               "rectangle, depth test EQUAL, only the leaf's own fragments written. The tool's "
-               "first pass is a depth-only pre-pass, where the paper's also shades."},
-      {.key = "fvsm.fallback.resolution",
-       .label = "Fallback map",
-       .group = "FVSM",
-       .type = ParamType::Int,
-       .defaultValue = 1024,
-       .minValue = 16,
-       .maxValue = 8192,
-       .step = 16,
-       .help = "Pixels no tile reached (the SMTMM samples one pixel per block) are shadowed "
-               "with one map of this size over the whole fit (the tool's; the paper has none)."},
+      intParam("fvsm.xi", "Quality ξ", "FVSM", -3, {fvsm::kMinXi, 12, 1})
+          .withHelp(
+              "ξ: subtracted from every log2 resolution need before the traversal (Giegl & Wimmer "
+              "§4.9): each step halves the texels per axis everywhere. Large ξ: one ordinary "
+              "shadow map. The paper uses 0 … 5 (0: the sub-pixel need, 5 about one ordinary map "
+              "in its scene); the default −3 is the tool's: 8 times the texels per axis of the "
+              "paper's 0 (with the 32 x 32 grid, about the 16 x 16 x 4096² brute force's wrong "
+              "pixels on diagonal and fewer on corridor: docs/techniques/fvsm.md)."),
+      choiceParam("fvsm.texture.mode", "Tile textures", "FVSM",
+                  {"sub-rectangle", "power-of-two", "exact"}, 1)
+          .withHelp("Where a tile is rendered (§4.10): a sub-rectangle of one max-size texture "
+                    "(t_max²), of the smallest square of a power-of-two series (< 4/3 t_max², the "
+                    "paper's recommendation and the default), or a texture of exactly its size "
+                    "(the paper sums 2 · 4/3 t_max² for these, counting per level the square and "
+                    "the two half-size rectangles only; the tool allocates each w x h the frame "
+                    "uses, up to (2 t_max − 16)²)."),
+      intParam("fvsm.overlap", "Tile overlap", "FVSM", 1, {0, 4, 1})
+          .withHelp(
+              "A border of this many texels around each tile (§5): its texture covers the kd cell "
+              "grown by that many of its own texels on every side, so receivers near a tile edge "
+              "find the neighbour's depth (0 shows the seams). The border adds texels (2^t + 2 x "
+              "overlap per side); the cell keeps its 2^t, on the same lattice."),
+      intParam("fvsm.grid", "Tile grid n", "FVSM", 32, {1, 64, 1})
+          .withHelp(
+              "n x n tile grid the SMTMM is accumulated into (a power of two; the paper: 16 or "
+              "32): the finest kd-tree level. A cell at the finest level holds at most the max "
+              "texture: 32 x 4096 (default) lets the neediest cells go finer than the 16 x 16 x "
+              "4096² brute force, and fits coarser cells more tightly (docs/techniques/fvsm.md)."),
+      intParam("fvsm.max_texture", "Max tile texture", "FVSM", 4096, {16, 8192, 16})
+          .withHelp("t_max (a power of two): a kd node needing more texels along an axis is split "
+                    "along it."),
+      intParam("fvsm.smtmm.divisor", "SMTMM divisor", "FVSM", 4, {1, 16, 1})
+          .withHelp("The SMTMM has frame / divisor entries per axis (the paper: 256² for a 1024² "
+                    "frame), each sampling the pixel at the centre of its block."),
+      choiceParam("fvsm.smtmm.entry", "SMTMM entry", "FVSM", {"16-byte", "4-byte"},
+                  SL_FVSM_ENTRY_16_BYTE)
+          .withHelp("How an SMTMM entry is stored and read back: four floats (16-byte, the tool's "
+                    "default), or the paper's 4 bytes (4-byte): the SM position as the column and "
+                    "row of 256 holding it, and the two needs. It loses where inside its 1/256 "
+                    "column a pixel looks, which changes no grid cell (n ≤ 256) and so no tile; "
+                    "the SMTMM and its read-back are a quarter of the bytes."),
+      intParam("fvsm.eta0", "Histogram η0", "FVSM", 17, {0, SL_FVSM_MAX_NEED_LOG2 - 1, 1})
+          .withHelp("Lower end bucket of each tile's need histogram (log2): needs up to η0 are "
+                    "never discarded as outliers (the paper: 17)."),
+      intParam("fvsm.eta1", "Histogram η1", "FVSM", 22, {1, SL_FVSM_MAX_NEED_LOG2, 1})
+          .withHelp(
+              "Upper end bucket (log2): needs from η1 up are counted together (the paper: 22)."),
+      intParam("fvsm.outliers", "Outlier entries", "FVSM", 0, {0, 4096, 1})
+          .withHelp("Per tile, at most this many SMTMM entries needing more than η0 are discarded "
+                    "(highest needs first, whole buckets); 0 (the default) keeps the plain "
+                    "maximum. The paper discards \"a very few\" outlier pixels per cell with this "
+                    "histogram (§4.4) without saying how many; the default turns that off."),
+      switchParam("fvsm.screen_rect", "Apply in screen rectangles", "FVSM", true)
+          .withHelp("Apply each tile only inside the screen rectangle of its SMTMM entries (one "
+                    "entry block of margin); off: over the whole screen."),
+      choiceParam("fvsm.need.footprint", "Need from footprint", "FVSM", {"box", "chord"},
+                  SL_FVSM_FOOTPRINT_CHORD)
+          .withUniform("u_footprint")
+          .withHelp("How a pixel's footprint in the light's map becomes a need per SM axis: the "
+                    "half sides of its axis-aligned bounding box (box: the paper's, §4.3), or the "
+                    "half length of its chord through the pixel along each axis (chord, the tool's "
+                    "default; equal for footprints along an axis, much shorter for thin footprints "
+                    "along a diagonal of the map, which the box undersamples). Both keep the sign "
+                    "of the depth step the footprint is built from."),
+      choiceParam("fvsm.warp", "Virtual map warp", "FVSM", {"none", "lispsm"})
+          .withHelp("The virtual map the tiles cut: the focused light frustum, unwarped (none, the "
+                    "tool's default), or warped by LiSPSM (Wimmer et al. 2004; n' = n + sqrt(f n), "
+                    "fitted around view frustum ∩ scene as `lispsm` fits it), which every result "
+                    "of Giegl & Wimmer uses. Each tile is the warped frustum cropped to its uv "
+                    "rectangle; the SMTMM's positions and needs are in the warped map. When LiSPSM "
+                    "falls back (the light nearly along the view), the map is the unwarped one."),
+      choiceParam("fvsm.apply", "Apply tiles by", "FVSM", {"deferred", "multi-pass"})
+          .withHelp("How each kd leaf shadows the scene (Giegl & Wimmer §3): deferred shadowing, a "
+                    "compute pass rebuilding each pixel's position from the eye-space depth buffer "
+                    "(deferred, the default and what the paper's results use), or multi-pass "
+                    "shadowing (§3.1): the scene rasterised again per leaf inside its screen "
+                    "rectangle, depth test EQUAL, only the leaf's own fragments written. The "
+                    "tool's first pass is a depth-only pre-pass, where the paper's also shades."),
+      intParam("fvsm.fallback.resolution", "Fallback map", "FVSM", 1024, {16, 8192, 16})
+          .withHelp(
+              "Pixels no tile reached (the SMTMM samples one pixel per block) are shadowed with "
+              "one map of this size over the whole fit (the tool's; the paper has none)."),
   };
   appendTileBiasParams(params);
   TechniqueInfo info{

@@ -15,19 +15,22 @@ namespace sl {
 namespace {
 
 ParamDecl focusDecl() {
-  return {.key = "warp.focus",
-          .label = "TSM focus",
-          .group = "Warp",
-          .type = ParamType::Float,
-          .defaultValue = 0.5,
-          .minValue = 0.0,
-          .maxValue = 1.0,
-          .step = 0.05,
-          .help =
-              "TSM's focus point on the view axis at near + this share of (far - near); the "
-              "warp maps it to the 80 % line of the map (Martin and Tan 2004). That is one "
-              "warp with some n', i.e. some eta (Lloyd et al. 2006): published as warp.n_prime "
-              "and warp.eta and analysed as such; to set eta itself use lispsm or psm."};
+  return floatParam("warp.focus", "TSM focus", "Warp", 0.5, {0.0, 1.0, 0.05})
+      .withHelp(
+          "TSM's focus point on the view axis at near + this share of (far - near); the warp maps "
+          "it to the 80 % line of the map (Martin and Tan 2004). That is one warp with some n', "
+          "i.e. some eta (Lloyd et al. 2006): published as warp.n_prime and warp.eta and analysed "
+          "as such; to set eta itself use lispsm or psm.");
+}
+
+/// The unwarped map exactly as the uniform shadow map renders it (focused on what the camera
+/// sees): what a warp that degenerates falls back to.
+DepthMapView unwarpedMapView(const FrameContext& ctx, glm::vec3 towards) {
+  LightFit fit;
+  if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
+                                     FocusSettings{}, fit))
+    throw std::runtime_error(*err);
+  return depthMapView(fit);
 }
 
 }  // namespace
@@ -44,47 +47,24 @@ TechniqueInfo PerspectiveShadowMap::info(const std::string& id) {
         "(behind) or directional (across), the virtual camera slid back over casters behind "
         "the viewer (Kozlov 2004); or Lloyd et al.'s light-space reading, eta = 1 "
         "(psm.method = lispsm-eta1).";
-    params.insert(params.begin(), warpEtaDecl(1.0));
     params.insert(
         params.begin(),
-        {.key = "psm.method",
-         .label = "PSM method",
-         .group = "Warp",
-         .type = ParamType::Enum,
-         .defaultValue = 0,
-         .minValue = 0,
-         .maxValue = 1,
-         .step = 1,
-         .enumNames = {"post-perspective", "lispsm-eta1"},
-         .help = "post-perspective: Stamminger and Drettakis' PSM, the shadow map fitted in the "
-                 "camera's post-perspective space (the paper). lispsm-eta1: Lloyd et al.'s "
-                 "light-space warp with n' = n (warp.eta, default 1), their stand-in for PSM "
-                 "with an overhead light; warp.eta is read only by this method."});
-    params.insert(params.begin() + 2,
-                  {.key = "psm.slide",
-                   .label = "PSM extra slide-back",
-                   .group = "Warp",
-                   .type = ParamType::Float,
-                   .defaultValue = 0.0,
-                   .minValue = 0.0,
-                   .maxValue = 1000.0,
-                   .step = 0.5,
-                   .help = "post-perspective only: metres the virtual camera moves back beyond "
-                           "what the casters behind the viewer need (the paper: 0; Kozlov's "
-                           "remedy for texels crowded at the near plane, a weaker warp)."});
-    params.insert(params.begin() + 3,
-                  {.key = "psm.near",
-                   .label = "PSM near plane",
-                   .group = "Warp",
-                   .type = ParamType::Float,
-                   .defaultValue = 0.0,
-                   .minValue = 0.0,
-                   .maxValue = 1000.0,
-                   .step = 0.1,
-                   .help = "post-perspective only: 0 = the near plane pushed to the nearest "
-                           "scene part in view (each primitive's bounding box against the view "
-                           "frustum: the paper pushes it as far as the scene allows); > 0 = at "
-                           "this many metres instead (receivers nearer than it lose resolution)."});
+        {choiceParam("psm.method", "PSM method", "Warp", {"post-perspective", "lispsm-eta1"})
+             .withHelp("post-perspective: Stamminger and Drettakis' PSM, the shadow map fitted in "
+                       "the camera's post-perspective space (the paper). lispsm-eta1: Lloyd et "
+                       "al.'s light-space warp with n' = n (warp.eta, default 1), their stand-in "
+                       "for PSM with an overhead light; warp.eta is read only by this method."),
+         warpEtaDecl(1.0),
+         floatParam("psm.slide", "PSM extra slide-back", "Warp", 0.0, {0.0, 1000.0, 0.5})
+             .withHelp(
+                 "post-perspective only: metres the virtual camera moves back beyond what the "
+                 "casters behind the viewer need (the paper: 0; Kozlov's remedy for texels "
+                 "crowded at the near plane, a weaker warp)."),
+         floatParam("psm.near", "PSM near plane", "Warp", 0.0, {0.0, 1000.0, 0.1})
+             .withHelp("post-perspective only: 0 = the near plane pushed to the nearest scene part "
+                       "in view (each primitive's bounding box against the view frustum: the paper "
+                       "pushes it as far as the scene allows); > 0 = at this many metres instead "
+                       "(receivers nearer than it lose resolution).")});
   } else if (id == "lispsm") {
     name = "Light space perspective shadow map (LiSPSM)";
     description =
@@ -173,12 +153,7 @@ void PerspectiveShadowMap::renderShadows(FrameContext& ctx) {
       throw std::runtime_error(*err);
 
     if (fit_.uniform) {
-      // The uniform map exactly as `uniform` renders it: eta = -1 and the fallback are it.
-      LightFit uniformFit;
-      if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
-                                         FocusSettings{}, uniformFit))
-        throw std::runtime_error(*err);
-      mapView = depthMapView(uniformFit);
+      mapView = unwarpedMapView(ctx, towards);  // eta = -1 and the fallback are it
     } else {
       mapView = depthMapView(fit_.mapFrame());
     }
@@ -237,11 +212,7 @@ void PerspectiveShadowMap::renderPostPerspective(FrameContext& ctx) {
             fitPostPerspectiveFor(ctx.scene, ctx.camera, ctx.aspect, towards, ctx.params, psmFit_))
       throw std::runtime_error(*err);
     if (psmFit_.uniform()) {
-      LightFit uniformFit;
-      if (auto err = fitDirectionalLight(ctx.camera, ctx.aspect, ctx.scene.bounds, towards,
-                                         FocusSettings{}, uniformFit))
-        throw std::runtime_error(*err);
-      mapView = depthMapView(uniformFit);
+      mapView = unwarpedMapView(ctx, towards);
     } else {
       mapView = depthMapView(psmFit_.mapFrame());
     }

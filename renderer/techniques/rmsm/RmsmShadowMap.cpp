@@ -44,40 +44,26 @@ TechniqueInfo RmsmShadowMap::info() {
           "tool's default): one scene draw per allocated page, straight into its slot, no "
           "superpage target (its 4 MiB count in memory() and so in pool.budget; on "
           "llvmpipe superpages made the frame 1.4-2.1x slower: docs/techniques/rmsm.md)."));
-  p.push_back(ParamDecl{
-      .key = "lod.derivatives",
-      .label = "LOD derivatives",
-      .group = "Pages",
-      .type = ParamType::Enum,
-      .defaultValue = SL_RMSM_DERIVATIVES_NEIGHBOUR,
-      .minValue = 0,
-      .maxValue = 1,
-      .step = 1,
-      .enumNames = {"neighbour", "same-surface"},
-      .help = "Where dX and dY of the LOD come from (G-buffer finite differences). neighbour "
-              "(the tool's default): the right / upper pixel, else the left / lower one, on "
-              "whatever surface it lies: at a silhouette the step jumps to another surface and "
-              "asks for a far coarser page. same-surface (the paper's reading: the derivatives "
-              "of the rasterised (s, t), taken within the pixel's own triangle): the first of "
-              "the two that lies on the pixel's surface (its offset within 0.1 of the tangent "
-              "plane, normals within 25.8 degrees), else as neighbour.",
-      .uniform = "u_rmsmDerivatives"});
+  p.push_back(
+      choiceParam("lod.derivatives", "LOD derivatives", "Pages", {"neighbour", "same-surface"},
+                  SL_RMSM_DERIVATIVES_NEIGHBOUR)
+          .withUniform("u_rmsmDerivatives")
+          .withHelp("Where dX and dY of the LOD come from (G-buffer finite differences). neighbour "
+                    "(the tool's default): the right / upper pixel, else the left / lower one, on "
+                    "whatever surface it lies: at a silhouette the step jumps to another surface "
+                    "and asks for a far coarser page. same-surface (the paper's reading: the "
+                    "derivatives of the rasterised (s, t), taken within the pixel's own triangle): "
+                    "the first of the two that lies on the pixel's surface (its offset within 0.1 "
+                    "of the tangent plane, normals within 25.8 degrees), else as neighbour."));
 
-  p.push_back(ParamDecl{
-      .key = "pool.budget",
-      .label = "Memory budget (bytes)",
-      .group = "Pages",
-      .type = ParamType::Int,
-      .defaultValue = 0,
-      .minValue = 0,
-      .maxValue = 1073741824,
-      .step = 1048576,
-      .help = "0: the pool holds pool.pages. Otherwise the technique's whole memory in bytes "
-              "(memory(): the pool, the page table, the per-pixel request image, the request "
-              "list, the sort's buffers, the superpage target): each frame, after the sort, the "
-              "pool gets the most pages that fit in what the rest leaves, and pool.pages is "
-              "ignored (16777216: uniform 2048²'s DEPTH_COMPONENT32F map). The paper gives no "
-              "pool size; this compares it at another technique's bytes."});
+  p.push_back(
+      intParam("pool.budget", "Memory budget (bytes)", "Pages", 0, {0, 1073741824, 1048576})
+          .withHelp("0: the pool holds pool.pages. Otherwise the technique's whole memory in bytes "
+                    "(memory(): the pool, the page table, the per-pixel request image, the request "
+                    "list, the sort's buffers, the superpage target): each frame, after the sort, "
+                    "the pool gets the most pages that fit in what the rest leaves, and pool.pages "
+                    "is ignored (16777216: uniform 2048²'s DEPTH_COMPONENT32F map). The paper "
+                    "gives no pool size; this compares it at another technique's bytes."));
 
   TechniqueInfo info{"rmsm", "Resolution-matched shadow map",
                      "Lefohn, Sengupta, Owens 2007: every camera pixel asks for the page of a "

@@ -45,293 +45,120 @@ std::vector<float> readFloats(const gl::Buffer& b, size_t offset, size_t count) 
 TechniqueInfo RtwShadowMap::info(const std::string& id) {
   std::vector<ParamDecl> p = shadowMapParamDecls(1024);
   auto add = [&](ParamDecl d) { p.push_back(std::move(d)); };
-  add({.key = "im.resolution",
-       .label = "IM resolution",
-       .group = "Importance",
-       .type = ParamType::Int,
-       .defaultValue = 512,
-       .minValue = 32,
-       .maxValue = SL_IM_MAX_RESOLUTION,
-       .step = 32,
-       .help = "Importance map width and height (light space); also the length of the 1D maps."});
-  add({.key = "importance.eye",
-       .label = "Eye distance term",
-       .group = "Importance",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .help = "Perspective aliasing: importance near/eye depth (Rosen 2012's only term).",
-       .uniform = "u_eyeOn"});
-  add({.key = "importance.eye.weight",
-       .label = "Eye weight",
-       .group = "Importance",
-       .type = ParamType::Float,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 0.05,
-       .help = "0 = neutral, 1 = the full near/depth falloff.",
-       .uniform = "u_eyeWeight"});
-  add({.key = "importance.orientation",
-       .label = "Orientation term",
-       .group = "Importance",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .help = "Projection aliasing: cos(theta_eye) / cos(theta_light) of the surface.",
-       .uniform = "u_orientationOn"});
-  add({.key = "importance.orientation.weight",
-       .label = "Orientation weight",
-       .group = "Importance",
-       .type = ParamType::Float,
-       .defaultValue = 0.5,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 0.05,
-       .help = "0 = neutral, 1 = the full cosine ratio.",
-       .uniform = "u_orientationWeight"});
-  add({.key = "importance.edge",
-       .label = "Shadow-edge term",
-       .group = "Importance",
-       .type = ParamType::Bool,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .help = "Extra importance within 2 px of a shadow edge of the previous frame.",
-       .uniform = "u_edgeOn"});
-  add({.key = "importance.stride",
-       .label = "Pixel stride",
-       .group = "Importance",
-       .type = ParamType::Int,
-       .defaultValue = 2,
-       .minValue = 1,
-       .maxValue = 4,
-       .step = 1,
-       .help =
-           "Backward analysis: every k-th camera pixel in x and y scatters its importance (k^2 "
-           "fewer atomics). The IM keeps the maximum per texel, and neighbouring pixels land in "
-           "the same or adjacent texels, which the blur spreads over anyway.",
-       .uniform = "u_stride"});
-  add({.key = "importance.edge.weight",
-       .label = "Edge weight",
-       .group = "Importance",
-       .type = ParamType::Float,
-       .defaultValue = 4,
-       .minValue = 0,
-       .maxValue = 16,
-       .step = 0.5,
-       .help = "A texel on a shadow edge gets (1 + weight) times the importance.",
-       .uniform = "u_edgeWeight"});
-  add({.key = "blur.radius",
-       .label = "Blur radius",
-       .group = "Warp",
-       .type = ParamType::Int,
-       .defaultValue = 4,
-       .minValue = 0,
-       .maxValue = rtw::kMaxBlurRadius,
-       .step = 1,
-       .help = "Gaussian blur radius of the 1D importance maps, in texels."});
-  add({.key = "blur.sigma",
-       .label = "Blur sigma",
-       .group = "Warp",
-       .type = ParamType::Float,
-       .defaultValue = 2,
-       .minValue = 0.1,
-       .maxValue = 16,
-       .step = 0.1,
-       .help = "Gaussian blur standard deviation, in texels."});
-  add({.key = "importance.floor",
-       .label = "Importance floor",
-       .group = "Warp",
-       .type = ParamType::Float,
-       .defaultValue = 0.01,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 0.01,
-       .help =
-           "Minimum importance as a share of the maximum, so no region collapses to zero texels.",
-       .uniform = "u_floor"});
-  add({.key = "tessellation",
-       .label = "Tessellation",
-       .group = "Warp",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .help = "Tessellate while rendering the warped map so long triangles bend with the warp.",
-       .uniform = "u_tessOn"});
-  add({.key = "tessellation.tolerance",
-       .label = "Bend tolerance",
-       .group = "Warp",
-       .type = ParamType::Float,
-       .defaultValue = 1.0,
-       .minValue = 0.01,
-       .maxValue = 16,
-       .step = 0.05,
-       .help = "Tessellation level from the warped edge: how far the warp bends it from a straight "
-               "line, in texels; level = ceil(sqrt(bend / tolerance)), at most " +
-               std::to_string(kMaxTessellationLevel) +
-               ". With warp.depth = exact, depth is exact whatever the level: this only shapes "
-               "silhouettes.",
-       .uniform = "u_toleranceTexels"});
-  add({.key = "warp.depth",
-       .label = "Warped depth",
-       .group = "Warp",
-       .type = ParamType::Enum,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"exact", "interpolated"},
-       .help = "exact: each texel holds its triangle's depth plane at the texel's unwarped "
-               "centre. interpolated: depth interpolated linearly between the warped vertices, "
-               "as Rosen (2012) renders RTW; wrong inside long triangles (acne, leaks). With "
-               "tessellation off, the vertex shader warps the vertices and no tessellation "
-               "stage runs: the seed's pass.",
-       .uniform = "u_interpolatedDepth"});
-  add({.key = "warp.split",
-       .label = "Split long triangles",
-       .group = "Warp",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .help = "Render the warped map from the scene's triangles split to edges of at most 1/32 "
-               "of its diagonal, so tessellation can bend every edge; off: the triangles as "
-               "loaded, as Rosen (2012) renders them."});
-  add({.key = "light.fit",
-       .label = "Frustum fit",
-       .group = "Light frustum",
-       .type = ParamType::Enum,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"tight", "rotation-invariant"},
-       .help = "tight: the smallest box around what the camera sees, in the (rotated) light "
-               "frame, so its area and texels per m^2 change with a rotation. "
-               "rotation-invariant: the square around that region's bounding circle; a rotation "
-               "turns it without resizing it (the area is published as light.area)."});
+  add(intParam("im.resolution", "IM resolution", "Importance", 512, {32, SL_IM_MAX_RESOLUTION, 32})
+          .withHelp(
+              "Importance map width and height (light space); also the length of the 1D maps."));
+  add(switchParam("importance.eye", "Eye distance term", "Importance", true)
+          .withUniform("u_eyeOn")
+          .withHelp("Perspective aliasing: importance near/eye depth (Rosen 2012's only term)."));
+  add(floatParam("importance.eye.weight", "Eye weight", "Importance", 1, {0, 1, 0.05})
+          .withUniform("u_eyeWeight")
+          .withHelp("0 = neutral, 1 = the full near/depth falloff."));
+  add(switchParam("importance.orientation", "Orientation term", "Importance", true)
+          .withUniform("u_orientationOn")
+          .withHelp("Projection aliasing: cos(theta_eye) / cos(theta_light) of the surface."));
+  add(floatParam("importance.orientation.weight", "Orientation weight", "Importance", 0.5,
+                 {0, 1, 0.05})
+          .withUniform("u_orientationWeight")
+          .withHelp("0 = neutral, 1 = the full cosine ratio."));
+  add(switchParam("importance.edge", "Shadow-edge term", "Importance", false)
+          .withUniform("u_edgeOn")
+          .withHelp("Extra importance within 2 px of a shadow edge of the previous frame."));
+  add(intParam("importance.stride", "Pixel stride", "Importance", 2, {1, 4, 1})
+          .withUniform("u_stride")
+          .withHelp(
+              "Backward analysis: every k-th camera pixel in x and y scatters its importance (k^2 "
+              "fewer atomics). The IM keeps the maximum per texel, and neighbouring pixels land in "
+              "the same or adjacent texels, which the blur spreads over anyway."));
+  add(floatParam("importance.edge.weight", "Edge weight", "Importance", 4, {0, 16, 0.5})
+          .withUniform("u_edgeWeight")
+          .withHelp("A texel on a shadow edge gets (1 + weight) times the importance."));
+  add(intParam("blur.radius", "Blur radius", "Warp", 4, {0, rtw::kMaxBlurRadius, 1})
+          .withHelp("Gaussian blur radius of the 1D importance maps, in texels."));
+  add(floatParam("blur.sigma", "Blur sigma", "Warp", 2, {0.1, 16, 0.1})
+          .withHelp("Gaussian blur standard deviation, in texels."));
+  add(floatParam("importance.floor", "Importance floor", "Warp", 0.01, {0, 1, 0.01})
+          .withUniform("u_floor")
+          .withHelp("Minimum importance as a share of the maximum, so no region collapses to zero "
+                    "texels."));
+  add(switchParam("tessellation", "Tessellation", "Warp", true)
+          .withUniform("u_tessOn")
+          .withHelp(
+              "Tessellate while rendering the warped map so long triangles bend with the warp."));
+  add(floatParam("tessellation.tolerance", "Bend tolerance", "Warp", 1.0, {0.01, 16, 0.05})
+          .withUniform("u_toleranceTexels")
+          .withHelp("Tessellation level from the warped edge: how far the warp bends it from a "
+                    "straight line, in texels; level = ceil(sqrt(bend / tolerance)), at most " +
+                    std::to_string(kMaxTessellationLevel) +
+                    ". With warp.depth = exact, depth is exact whatever the level: this only "
+                    "shapes silhouettes."));
+  add(choiceParam("warp.depth", "Warped depth", "Warp", {"exact", "interpolated"})
+          .withUniform("u_interpolatedDepth")
+          .withHelp("exact: each texel holds its triangle's depth plane at the texel's unwarped "
+                    "centre. interpolated: depth interpolated linearly between the warped "
+                    "vertices, as Rosen (2012) renders RTW; wrong inside long triangles (acne, "
+                    "leaks). With tessellation off, the vertex shader warps the vertices and no "
+                    "tessellation stage runs: the seed's pass."));
+  add(switchParam("warp.split", "Split long triangles", "Warp", true)
+          .withHelp("Render the warped map from the scene's triangles split to edges of at most "
+                    "1/32 of its diagonal, so tessellation can bend every edge; off: the triangles "
+                    "as loaded, as Rosen (2012) renders them."));
+  add(choiceParam("light.fit", "Frustum fit", "Light frustum", {"tight", "rotation-invariant"})
+          .withHelp(
+              "tight: the smallest box around what the camera sees, in the (rotated) light frame, "
+              "so its area and texels per m^2 change with a rotation. rotation-invariant: the "
+              "square around that region's bounding circle; a rotation turns it without resizing "
+              "it (the area is published as light.area)."));
   const bool da = id == "da-rtw";
   if (da) {
-    add({.key = "pca.source",
-         .label = "PCA source",
-         .group = "Rotation",
-         .type = ParamType::Enum,
-         .defaultValue = 0,
-         .minValue = 0,
-         .maxValue = 1,
-         .step = 1,
-         .enumNames = {"block-max", "im"},
-         .help = "What the moments are taken of. block-max: a copy of the IM reduced to at most " +
-                 std::to_string(SL_MOMENT_IM_MAX) +
-                 "^2 blocks, each weighted by its most "
-                 "important texel. im: the importance map itself, every texel (the poster)."});
-    add({.key = "pca.metric",
-         .label = "PCA metric",
-         .group = "Rotation",
-         .type = ParamType::Enum,
-         .defaultValue = 0,
-         .minValue = 0,
-         .maxValue = 1,
-         .step = 1,
-         .enumNames = {"metres", "im-units"},
-         .help = "Units of x and y in the covariance. metres: scaled by the light frustum's half "
-                 "extents, the axis as it lies in the world. im-units: centred IM texel "
-                 "coordinates in [-1, 1] (the poster); with light.fit = tight the frustum's aspect "
-                 "changes with the angle, and measured on diagonal and corridor the rotation then "
-                 "never settles."});
-    add({.key = "rotation.mode",
-         .label = "Turn by",
-         .group = "Rotation",
-         .type = ParamType::Enum,
-         .defaultValue = 1,
-         .minValue = 0,
-         .maxValue = 2,
-         .step = 1,
-         .enumNames = {"pca", "predicted", "fixed"},
-         .help = "How the light's image plane is turned. pca: along the importance's principal "
-                 "axis every frame (Tokuyoshi et al. 2014), held by the vibration threshold and "
-                 "the two gates. predicted: to the angle whose warp, predicted from the last "
-                 "frame's importance map, leaves the fewest expected wrong pixels, when it beats "
-                 "the current frame by more than rotation.margin. fixed: rotation.fixed_deg, for "
-                 "sweeping the true error against the angle."});
-    add({.key = "rotation.fixed_deg",
-         .label = "Fixed turn",
-         .group = "Rotation",
-         .type = ParamType::Float,
-         .defaultValue = 0,
-         .minValue = -90,
-         .maxValue = 90,
-         .step = 1,
-         .help = "rotation.mode = fixed: the turn of the shadow map's x axis about the light "
-                 "direction, degrees counter-clockwise from the frame rtw-backward uses."});
-    add({.key = "rotation.margin",
-         .label = "Turn margin",
-         .group = "Rotation",
-         .type = ParamType::Float,
-         .defaultValue = rtw::kDefaultTurnMargin,
-         .minValue = 0,
-         .maxValue = 1,
-         .step = 0.01,
-         .help = "rotation.mode = predicted: turn only when the best angle's predicted score is "
-                 "lower than the current frame's by more than this share (the role the "
-                 "vibration threshold plays for pca). " +
-                 std::string(rtw::kTurnMarginWhy)});
-    add({.key = "prediction.weight",
-         .label = "Predict over",
-         .group = "Rotation",
-         .type = ParamType::Enum,
-         .defaultValue = 0,
-         .minValue = 0,
-         .maxValue = 1,
-         .step = 1,
-         .enumNames = {"edges", "pixels"},
-         .help = "What the predicted score counts. edges: the last frame's shadow-edge pixels, "
-                 "each with its edge's direction in the light plane (a hard shadow is wrong only "
-                 "near an edge, by the texel's width across it). pixels: every pixel the camera "
-                 "sees, edges of every direction alike."});
-    add({.key = rtw::kHoldThresholdKey,
-         .label = "Vibration threshold",
-         .group = "Rotation",
-         .type = ParamType::Float,
-         .defaultValue = rtw::kDefaultHoldThreshold,
-         .minValue = rtw::kMinHoldThreshold,
-         .maxValue = rtw::kMaxHoldThreshold,
-         .step = 0.0001,
-         .help = "Keep the rotation while e_x > threshold (Tokuyoshi et al. 2014 use 0.9999); 1.0 "
-                 "never holds. rotation.mode = predicted holds a turn smaller than acos(threshold) "
-                 "(0.81 degrees at 0.9999)."});
-    add({.key = "pca.min_anisotropy",
-         .label = "Min anisotropy",
-         .group = "Rotation",
-         .type = ParamType::Float,
-         .defaultValue = 0,
-         .minValue = 0,
-         .maxValue = 1,
-         .step = 0.01,
-         .help = "rotation.mode = pca: turn only while the importance is thin: (l1 - l2) / (l1 + "
-                 "l2) of its covariance at least this; below it R stays as it is. 0 = always, as "
-                 "the poster. For the ablation: docs/techniques/rtw.md."});
-    add({.key = "pca.min_spread",
-         .label = "Min spread",
-         .group = "Rotation",
-         .type = ParamType::Float,
-         .defaultValue = 0,
-         .minValue = 0,
-         .maxValue = 1,
-         .step = 0.01,
-         .help = "rotation.mode = pca: turn only while the importance is spread over the map: the "
-                 "wider of the half-mass widths of last frame's 1D importance maps (share of the "
-                 "map) at least this; below it R stays as it is. 0 = always, as the poster. For "
-                 "the ablation: docs/techniques/rtw.md."});
+    add(choiceParam("pca.source", "PCA source", "Rotation", {"block-max", "im"})
+            .withHelp(
+                "What the moments are taken of. block-max: a copy of the IM reduced to at most " +
+                std::to_string(SL_MOMENT_IM_MAX) +
+                "^2 blocks, each weighted by its most important texel. im: the importance map "
+                "itself, every texel (the poster)."));
+    add(choiceParam("pca.metric", "PCA metric", "Rotation", {"metres", "im-units"})
+            .withHelp("Units of x and y in the covariance. metres: scaled by the light frustum's "
+                      "half extents, the axis as it lies in the world. im-units: centred IM texel "
+                      "coordinates in [-1, 1] (the poster); with light.fit = tight the frustum's "
+                      "aspect changes with the angle, and measured on diagonal and corridor the "
+                      "rotation then never settles."));
+    add(choiceParam("rotation.mode", "Turn by", "Rotation", {"pca", "predicted", "fixed"}, 1)
+            .withHelp("How the light's image plane is turned. pca: along the importance's "
+                      "principal axis every frame (Tokuyoshi et al. 2014), held by the vibration "
+                      "threshold and the two gates. predicted: to the angle whose warp, predicted "
+                      "from the last frame's importance map, leaves the fewest expected wrong "
+                      "pixels, when it beats the current frame by more than rotation.margin. "
+                      "fixed: rotation.fixed_deg, for sweeping the true error against the angle."));
+    add(floatParam("rotation.fixed_deg", "Fixed turn", "Rotation", 0, {-90, 90, 1})
+            .withHelp("rotation.mode = fixed: the turn of the shadow map's x axis about the light "
+                      "direction, degrees counter-clockwise from the frame rtw-backward uses."));
+    add(floatParam("rotation.margin", "Turn margin", "Rotation", rtw::kDefaultTurnMargin,
+                   {0, 1, 0.01})
+            .withHelp("rotation.mode = predicted: turn only when the best angle's predicted score "
+                      "is lower than the current frame's by more than this share (the role the "
+                      "vibration threshold plays for pca). " +
+                      std::string(rtw::kTurnMarginWhy)));
+    add(choiceParam("prediction.weight", "Predict over", "Rotation", {"edges", "pixels"})
+            .withHelp("What the predicted score counts. edges: the last frame's shadow-edge "
+                      "pixels, each with its edge's direction in the light plane (a hard shadow is "
+                      "wrong only near an edge, by the texel's width across it). pixels: every "
+                      "pixel the camera sees, edges of every direction alike."));
+    add(floatParam(rtw::kHoldThresholdKey, "Vibration threshold", "Rotation",
+                   rtw::kDefaultHoldThreshold,
+                   {rtw::kMinHoldThreshold, rtw::kMaxHoldThreshold, 0.0001})
+            .withHelp("Keep the rotation while e_x > threshold (Tokuyoshi et al. 2014 use 0.9999); "
+                      "1.0 never holds. rotation.mode = predicted holds a turn smaller than "
+                      "acos(threshold) (0.81 degrees at 0.9999)."));
+    add(floatParam("pca.min_anisotropy", "Min anisotropy", "Rotation", 0, {0, 1, 0.01})
+            .withHelp("rotation.mode = pca: turn only while the importance is thin: (l1 - l2) / "
+                      "(l1 + l2) of its covariance at least this; below it R stays as it is. 0 = "
+                      "always, as the poster. For the ablation: docs/techniques/rtw.md."));
+    add(floatParam("pca.min_spread", "Min spread", "Rotation", 0, {0, 1, 0.01})
+            .withHelp("rotation.mode = pca: turn only while the importance is spread over the map: "
+                      "the wider of the half-mass widths of last frame's 1D importance maps (share "
+                      "of the map) at least this; below it R stays as it is. 0 = always, as the "
+                      "poster. For the ablation: docs/techniques/rtw.md."));
   }
   std::string name, desc;
   if (id == "rtw-forward") {
@@ -362,7 +189,9 @@ TechniqueInfo RtwShadowMap::info(const std::string& id) {
   info.passes = passDecls(id);
   info.publications = publicationDecls(id);
   info.lights = {LightType::Directional};
-  info.temporalRotation = id == "da-rtw";
+  info.temporalRotation = da;
+  info.firstScreen = da;
+  info.unanalysedWarp = true;
   info.temporalState = info.temporalRotation;  // the rotation and the moments it is read from
   info.aliasingPattern =
       "Straight bands along the light's axes: the warp is separable, so a whole row and column "

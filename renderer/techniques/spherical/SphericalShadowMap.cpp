@@ -23,34 +23,28 @@ gl::ProgramDesc depthDesc() {
 }  // namespace
 
 TechniqueInfo SphericalShadowMap::info() {
-  std::vector<ParamDecl> p = shadowMapParamDecls(2048);
-  setParamHelp(p, "resolution",
-               "Height of the latitude-longitude map in texels (latitude, 180°); its width is "
-               "twice that (longitude, 360°), so texels are square in angle on the equator and "
-               "the map holds 2 x resolution^2 texels, as the dual paraboloid at the same "
-               "resolution.");
+  std::vector<ParamDecl> p = shadowMapParamDecls(
+      2048,
+      "Height of the latitude-longitude map in texels (latitude, 180°); its width is "
+      "twice that (longitude, 360°), so texels are square in angle on the equator and "
+      "the map holds 2 x resolution^2 texels, as the dual paraboloid at the same "
+      "resolution.");
   p.push_back(omniAxisParamDecl(
       "sph.axis", "Pole axis", "Spherical",
       "The poles (latitude ±90°) lie along +axis and -axis: every texel of the map's top or "
       "bottom row meets there, so texels near a pole are about 2 x resolution / pi times "
       "smaller than on the equator (oversampled); the seam (longitude ±180°) is a half-plane "
       "through the axis."));
-  p.push_back({.key = "sph.exactCoverage",
-               .label = "Exact coverage",
-               .group = "Spherical",
-               .type = ParamType::Bool,
-               .defaultValue = 1,
-               .minValue = 0,
-               .maxValue = 1,
-               .help = "The tool's change to the lecture's environment-map recipe (map each "
-                       "vertex, let the rasteriser join them): draw each triangle over its "
-                       "image's longitude-latitude bounds (copied across the seam, every "
-                       "longitude where it holds a pole) and keep a texel where the texel's "
-                       "own ray hits the triangle, so edges follow their true curves. Off: the "
-                       "recipe as given, the three vertices mapped and joined by straight lines "
-                       "in the map (copied across the seam): long triangles' shadows take the "
-                       "wrong shape and a triangle around a pole is lost (depth stays exact per "
-                       "texel)."});
+  p.push_back(
+      switchParam("sph.exactCoverage", "Exact coverage", "Spherical", true)
+          .withHelp(
+              "The tool's change to the lecture's environment-map recipe (map each vertex, let the "
+              "rasteriser join them): draw each triangle over its image's longitude-latitude "
+              "bounds (copied across the seam, every longitude where it holds a pole) and keep a "
+              "texel where the texel's own ray hits the triangle, so edges follow their true "
+              "curves. Off: the recipe as given, the three vertices mapped and joined by straight "
+              "lines in the map (copied across the seam): long triangles' shadows take the wrong "
+              "shape and a triangle around a pole is lost (depth stays exact per texel)."));
   TechniqueInfo info{"spherical", "Spherical (lat-long) shadow map",
                      "Omni-directional shadows in one latitude-longitude map, the spherical "
                      "parameterisation the omni-light lecture slides list beside the cube and "

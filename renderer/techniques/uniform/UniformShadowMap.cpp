@@ -21,6 +21,7 @@ TechniqueInfo UniformShadowMap::info() {
                   "shadowmap"}};
   info.publications = {shadowMapPublicationDecl()};
   info.lights = {LightType::Directional, LightType::Spot};
+  info.baseline = true;
   return info;
 }
 

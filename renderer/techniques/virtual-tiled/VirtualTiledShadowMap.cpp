@@ -16,41 +16,19 @@ namespace sl {
 
 TechniqueInfo VirtualTiledShadowMap::info() {
   std::vector<ParamDecl> params = {
-      {.key = "tiles",
-       .label = "Tiles per axis",
-       .group = "Virtual map",
-       .type = ParamType::Int,
-       .defaultValue = 16,
-       .minValue = 1,
-       .maxValue = 64,
-       .step = 1,
-       .help = "n: the light's focused frustum is cut into n x n tiles, each rendered and applied "
-               "in turn (16 x 16 of 4096² = a 65536² virtual map)."},
-      {.key = "tile.resolution",
-       .label = "Tile resolution",
-       .group = "Virtual map",
-       .type = ParamType::Int,
-       .defaultValue = 4096,
-       .minValue = 16,
-       .maxValue = 8192,
-       .step = 16,
-       .help = "Width and height of every tile's depth texture in texels (one texture, reused "
-               "by every tile).",
-       .memoryKnob = true},
-      {.key = "tile.warp",
-       .label = "Virtual map warp",
-       .group = "Virtual map",
-       .type = ParamType::Enum,
-       .defaultValue = 0,
-       .minValue = 0,
-       .maxValue = 1,
-       .step = 1,
-       .enumNames = {"none", "lispsm"},
-       .help = "The virtual map the n x n tiles cut: the focused light frustum, unwarped (none, "
-               "the tool's default), or warped by LiSPSM (Wimmer et al. 2004, fitted as `lispsm` "
-               "fits it), which Giegl & Wimmer's brute force uses; each tile is the warped "
-               "frustum cropped to its uv square. LiSPSM's fallback (the light nearly along the "
-               "view) keeps the unwarped map."},
+      intParam("tiles", "Tiles per axis", "Virtual map", 16, {1, 64, 1})
+          .withHelp("n: the light's focused frustum is cut into n x n tiles, each rendered and "
+                    "applied in turn (16 x 16 of 4096² = a 65536² virtual map)."),
+      intParam("tile.resolution", "Tile resolution", "Virtual map", 4096, {16, 8192, 16})
+          .withHelp("Width and height of every tile's depth texture in texels (one texture, reused "
+                    "by every tile).")
+          .asMemoryKnob(),
+      choiceParam("tile.warp", "Virtual map warp", "Virtual map", {"none", "lispsm"})
+          .withHelp("The virtual map the n x n tiles cut: the focused light frustum, unwarped "
+                    "(none, the tool's default), or warped by LiSPSM (Wimmer et al. 2004, fitted "
+                    "as `lispsm` fits it), which Giegl & Wimmer's brute force uses; each tile is "
+                    "the warped frustum cropped to its uv square. LiSPSM's fallback (the light "
+                    "nearly along the view) keeps the unwarped map."),
   };
   appendTileBiasParams(params);
   TechniqueInfo info{"virtual-tiled", "Virtual tiled shadow map (brute force)",

@@ -182,9 +182,7 @@ struct StoragePanel::Shared {
 StoragePanel::StoragePanel(QWidget* parent)
     : PublicationPanel(parent), shared_(std::make_shared<Shared>()) {
   shared_->panel = this;
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   auto* split = new QSplitter(Qt::Vertical);
   hemisphere_ = new HemisphereView([this](double u, double v) {
     if (!result_) return;

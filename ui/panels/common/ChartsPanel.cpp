@@ -154,7 +154,8 @@ QString ChartsPanel::defaultSweepText() const {
   };
   const sl::TechniqueInfo* shown = sl::Renderer::findTechnique(current.toStdString());
   if (shown && renders(*shown)) add(*shown);
-  const sl::TechniqueInfo* uniform = sl::Renderer::findTechnique("uniform");
+  const sl::TechniqueInfo* uniform =
+      sl::Renderer::findTechnique(sl::Renderer::baselineTechniqueId());
   if (uniform && renders(*uniform)) {
     if (uniform != shown) add(*uniform);
     return parts.join(QLatin1Char(' '));

@@ -844,6 +844,13 @@ QString PublicationPanel::placeholderShown() const {
   return stack_->currentIndex() == 0 ? placeholder_->text() : QString();
 }
 
+PanelColumn newPanelColumn() {
+  auto* content = new QWidget;
+  auto* layout = new QVBoxLayout(content);
+  layout->setContentsMargins(4, 4, 4, 4);
+  return {content, layout};
+}
+
 void PublicationPanel::setContent(QWidget* content) {
   stack_->addWidget(content);
 }

@@ -22,6 +22,7 @@
 
 class QLabel;
 class QStackedWidget;
+class QVBoxLayout;
 
 namespace sl::ui {
 
@@ -308,6 +309,14 @@ class PublicationPanel : public QWidget {
   QStackedWidget* stack_ = nullptr;
   QLabel* placeholder_ = nullptr;
 };
+
+/// A publication panel's content, before PublicationPanel::setContent: the widget and its
+/// column layout, with the panels' 4 px margins.
+struct PanelColumn {
+  QWidget* content = nullptr;
+  QVBoxLayout* layout = nullptr;
+};
+PanelColumn newPanelColumn();
 
 /// The plots and images of `panel` shown on screen below the size they read at from the back
 /// of a lecture hall (PlotWidget::kReadableHeight and kReadableCurves, ImageView::kReadableSide)

@@ -39,9 +39,7 @@ sl::FloatImage framePart(const sl::FloatImage& thumb) {
 }  // namespace
 
 FvsmPanel::FvsmPanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   // One captioned image view, added to `row`.
   const auto addView = [](QHBoxLayout* row, const QString& caption) {
     auto* view = new ImageView;

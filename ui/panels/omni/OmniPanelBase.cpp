@@ -26,9 +26,7 @@ OmniPanelBase::OmniPanelBase(Setup setup, QWidget* parent)
       keys_(std::move(setup.keys)),
       passes_(std::move(setup.passes)) {
   const QString& name = setup.name;
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   density_ = new QCheckBox(setup.densityText);
   density_->setObjectName(name + QStringLiteral("Density"));
   layout->addWidget(density_);

@@ -72,9 +72,7 @@ QString legendText(std::initializer_list<pages::PageState> states) {
 }  // namespace
 
 PagesPanel::PagesPanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   auto* row = new QHBoxLayout;
   viewChoice_ = new QComboBox;
   viewChoice_->setObjectName(QStringLiteral("pagesView"));

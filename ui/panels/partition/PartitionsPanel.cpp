@@ -59,9 +59,7 @@ double number(const sl::Publication& pub, const std::string& key, double fallbac
 }  // namespace
 
 PartitionsPanel::PartitionsPanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   maps_ = new QGridLayout;
   maps_->setSpacing(kMapSpacing);
   layout->addLayout(maps_, 1);

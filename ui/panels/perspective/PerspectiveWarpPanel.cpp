@@ -14,9 +14,7 @@
 namespace sl::ui {
 
 PerspectiveWarpPanel::PerspectiveWarpPanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   state_ = new QLabel;
   state_->setWordWrap(true);
   state_->setTextFormat(Qt::RichText);

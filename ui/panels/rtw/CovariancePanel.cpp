@@ -180,9 +180,7 @@ QPoint CovariancePanel::thresholdGaugePoint(double oneMinusThreshold) const {
 CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   // State and gauge across the top; the IM with the ellipses beside the numbers; the
   // history plots at the bottom.
-  auto* content = new QWidget;
-  auto* outer = new QVBoxLayout(content);
-  outer->setContentsMargins(4, 4, 4, 4);
+  auto [content, outer] = newPanelColumn();
   outer->setSpacing(4);
   state_ = new QLabel;
   state_->setObjectName(QStringLiteral("covarianceState"));

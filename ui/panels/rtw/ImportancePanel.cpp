@@ -38,9 +38,7 @@ float curveAt(const std::vector<float>& curve, int i, int size) {
 }  // namespace
 
 ImportancePanel::ImportancePanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   layout->setSpacing(4);
   auto* bar = new QHBoxLayout;
   modes_ = new QButtonGroup(this);

@@ -51,9 +51,7 @@ void drawGrid(QPainter& p, const QRectF& r, const std::vector<float>& xs,
 }  // namespace
 
 ShadowMapPanel::ShadowMapPanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   auto* bar = new QHBoxLayout;
   grid_ = new QCheckBox(tr("warp grid"));
   grid_->setChecked(true);

@@ -32,9 +32,7 @@ std::vector<QPointF> centreSamples(const std::vector<float>& values) {
 }  // namespace
 
 WarpPanel::WarpPanel(QWidget* parent) : PublicationPanel(parent) {
-  auto* content = new QWidget;
-  auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  auto [content, layout] = newPanelColumn();
   auto* grid = new QGridLayout;
   grid->setSpacing(4);
   const QString axes[] = {QStringLiteral("x"), QStringLiteral("y")};

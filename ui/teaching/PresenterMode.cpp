@@ -306,7 +306,11 @@ void PresenterMode::askReadableSettled() {
   if (!active_ || fullPanel_ || !big_ || askedSettled_ || asksReadableMinimum(*big_->widget()))
     return;
   askedSettled_ = true;
-  resizeView([this] { askReadable(); });
+  bool readable = false;
+  resizeView([this, &readable] { readable = askReadable(); });
+  // Given up again: the window was laid out at the readable size for a moment, and a frame
+  // may have been asked for at that size; the lesson's state starts again at this one.
+  if (!readable) w_.lessons()->settleAgain();
 }
 
 bool PresenterMode::askReadable() {

@@ -44,7 +44,7 @@ bool PresenterMode::eventFilter(QObject* watched, QEvent* event) {
   // The big panel's readable content (filled, its captions wrapped to its width) made the
   // window taller than its screen: it gives that up (after the events that grew it).
   if (watched == &w_ && event->type() == QEvent::Resize && active_ && !fullPanel_ && big_ &&
-      !giveUpQueued_ && asksReadableMinimum(*big_->widget())) {
+      !giveUpQueued_) {
     const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
     if (screen && w_.height() > screen->geometry().height()) {
       giveUpQueued_ = true;
@@ -56,7 +56,7 @@ bool PresenterMode::eventFilter(QObject* watched, QEvent* event) {
 
 void PresenterMode::giveUpReadable() {
   giveUpQueued_ = false;
-  if (!active_ || fullPanel_ || !big_ || !asksReadableMinimum(*big_->widget())) return;
+  if (!active_ || fullPanel_ || !big_) return;
   // Taller for a moment (a re-arrangement shows the docks before it fits the screen) is not
   // outgrowing it: fitted to the screen again, only a window still taller gives up.
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
@@ -67,8 +67,18 @@ void PresenterMode::giveUpReadable() {
     layOutNow(w_);
   });
   if (w_.height() <= screen->geometry().height()) return;
+  // Arranged again with the content as it is now (a panel under the big one that no longer
+  // fits goes behind it), a few times per lesson; then the big panel takes what there is.
+  if (rearrangedForGrowth_ < kMaxRearrangedForGrowth) {
+    ++rearrangedForGrowth_;
+    resizeView([this] {
+      arrangeDocks();
+      fitScreen();
+    });
+    return;
+  }
   resizeView([this] {
-    setReadableMinimums(*big_, false);
+    for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) setReadableMinimums(*dock, false);
     layOutNow(w_);
     fitScreen();
   });
@@ -130,6 +140,7 @@ void PresenterMode::choosePanel(const QString& dockName) {
 void PresenterMode::setLessonPanel(const QString& dockName, const QStringList& others) {
   lessonPanel_ = dockName;
   lessonOthers_ = others;
+  rearrangedForGrowth_ = 0;
   if (!active_) return;
   arrangeDocks();
   fitScreen();

@@ -113,10 +113,12 @@ class PresenterMode : public QObject {
   QByteArray savedState_, savedGeometry_;
   QFont savedFont_;
   bool savedMaximized_ = false;
-  bool askedSettled_ = false;  ///< askReadableSettled asked since the last arrangement
-  bool giveUpQueued_ = false;  ///< giveUpReadable is queued
-  int keptOnScreen_ = 0;       ///< times keepOnScreen re-arranged since the last arrangement
-  int fedSinceArranged_ = 0;   ///< frames fed to the panels since the last arrangement
+  bool askedSettled_ = false;    ///< askReadableSettled asked since the last arrangement
+  bool giveUpQueued_ = false;    ///< giveUpReadable is queued
+  int rearrangedForGrowth_ = 0;  ///< times giveUpReadable arranged the docks again this lesson
+  static constexpr int kMaxRearrangedForGrowth = 2;
+  int keptOnScreen_ = 0;      ///< times keepOnScreen re-arranged since the last arrangement
+  int fedSinceArranged_ = 0;  ///< frames fed to the panels since the last arrangement
   static constexpr int kMaxKeepOnScreen = 3;
   /// The frames after an arrangement that may give the big panel its share of the width again.
   static constexpr int kFeedsResized = 3;

@@ -8,10 +8,15 @@
 # lesson, the window and the screen). docs/lecturer/lessons.md shows the grabs in
 # docs/images/lessons/.
 # LESSONS (default "*") chooses lessons by name pattern, e.g. LESSONS="06-* 07-*".
+# COURSE=90 (or 45) takes the grabs as a lecturer walks that course instead: one run of
+# `shadowlab-gui-tests --course 90 --presenter --test course-grabs=DIR` per size (GUI_TESTS,
+# default build/tests/shadowlab-gui-tests), Next from the first lesson to the last, each
+# lesson grabbed once it has settled and its panels are filled, a lesson told in cases also
+# in its other cases; lessons outside the course are not grabbed.
 # The PNGs follow the output policy (scripts/lib/output.sh): one that is a lesson file, a folder,
 # a FIFO or a device is refused before the first grab (exit 2); each is replaced only when its
 # grab succeeded, never half-copied.
-# usage: scripts/grab_lessons.sh OUTDIR [path/to/shadowlab] [frames before the grab (3)]
+# usage: [COURSE=90] scripts/grab_lessons.sh OUTDIR [path/to/shadowlab] [frames before the grab (3)]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 source "$root/scripts/lib/output.sh"
@@ -20,6 +25,19 @@ app=${2:-$root/build/app/shadowlab}
 frames=${3:-3}
 sizes=(${SIZES:-1920x1080 1280x800})
 [[ -x "$app" ]] || { echo "grab_lessons: no executable $app (build first)" >&2; exit 1; }
+course=${COURSE:-}
+tests=${GUI_TESTS:-$root/build/tests/shadowlab-gui-tests}
+walked=()  # the course's lessons (file names without .json), in its order
+if [[ -n $course ]]; then
+  [[ -x "$tests" ]] || { echo "grab_lessons: no executable $tests (build first)" >&2; exit 1; }
+  mapfile -t walked < <(python3 -c '
+import json, sys
+for c in json.load(open(sys.argv[1]))["courses"]:
+    if c["name"] == sys.argv[2]:
+        for l in c["lessons"]: print(l["lesson"].removesuffix(".json"))
+        sys.exit(0)
+sys.exit("grab_lessons: no course %s in %s" % (sys.argv[2], sys.argv[1]))' "$root/scenes/courses.json" "$course")
+fi
 output_folder OUTDIR "$out"
 out=$(cd "$out" && pwd)
 # The shots: every chosen lesson, and its other cases as <lesson>-case<K>.
@@ -32,6 +50,11 @@ for json in "$root"/scenes/lessons/*.json; do
     # shellcheck disable=SC2053  # the pattern is a glob on purpose
     [[ $name == $pattern ]] && chosen=1
   done
+  if [[ -n $course ]]; then
+    in_course=0
+    for w in "${walked[@]}"; do [[ $w == "$name" ]] && in_course=1; done
+    [[ $in_course -eq 1 ]] || chosen=0
+  fi
   [[ $chosen -eq 1 ]] || continue
   output_input "the lesson" "$json"
   cases=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1])).get("cases", [])))' "$json")
@@ -42,6 +65,7 @@ for json in "$root"/scenes/lessons/*.json; do
   done
 done
 output_input "the program" "$app"
+[[ -n $course ]] && output_input "the program" "$tests"
 # Every PNG of every size, checked before the first grab.
 first=1
 for size in "${sizes[@]}"; do
@@ -64,17 +88,32 @@ for size in "${sizes[@]}"; do
   start_xvfb
   dest=$out
   [[ $first -eq 0 ]] && dest=$out/$size
+  if [[ -n $course ]]; then  # one walk of the course: every lesson's grab in $work/walk-$size
+    walk=$work/walk-$size
+    if ! timeout 1800 "$tests" --course "$course" --presenter --test "course-grabs=$walk" \
+      >"$walk.log" 2>&1 || ! grep -qx PASS "$walk.log"; then
+      echo "grab_lessons: the walk of the $course-minute course at $size failed:" >&2
+      grep -v '^ok ' "$walk.log" | tail -n 20 >&2
+      fail=1
+    fi
+  fi
   for entry in "${shots[@]}"; do
     read -r name k shot <<<"$entry"
     rm -rf "${work:?}/$shot"
-    if timeout 300 "$app" --lesson "$name" --lesson-case "$k" --presenter --grab "$work/$shot" \
-      --grab-after "$frames" >"$work/$shot.log" 2>&1 && [[ -f "$work/$shot/window.png" ]]; then
-      got=$(png_size "$work/$shot/window.png")
+    grabbed=$work/$shot/window.png
+    if [[ -n $course ]]; then
+      grabbed=$walk/$shot.png
+      [[ -f $grabbed ]] || echo "grab_lessons: the walk grabbed no $shot" >"$work/$shot.log"
+    fi
+    if { [[ -n $course ]] ||
+      timeout 300 "$app" --lesson "$name" --lesson-case "$k" --presenter --grab "$work/$shot" \
+        --grab-after "$frames" >"$work/$shot.log" 2>&1; } && [[ -f "$grabbed" ]]; then
+      got=$(png_size "$grabbed")
       if (( ${got%x*} > ${size%x*} || ${got#*x} > ${size#*x} )); then
         echo "grab_lessons: $shot: the window ($got) is larger than the ${size} screen" >&2
         fail=1
       fi
-      output_write "$dest/$shot.png" cat "$work/$shot/window.png"
+      output_write "$dest/$shot.png" cat "$grabbed"
       echo "$dest/$shot.png ($got)"
     else
       echo "grab_lessons: $shot at $size failed:" >&2

@@ -498,6 +498,7 @@ void LessonController::reportFit() {
     w_.statusBar()->clearMessage();  // the last lesson's, or this one's at another size
   fitNote_.clear();
   if (index_ < 0) return;
+  w_.presenter()->askReadableSettled();
   const auto& layout = lessons_[static_cast<std::size_t>(index_)].preset.layout;
   if (!layout) return;
   QStringList panels;

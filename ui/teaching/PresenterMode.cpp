@@ -11,8 +11,10 @@
 #include <QMenu>
 #include <QScreen>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 
+#include "panels/common/PanelKit.h"
 #include "teaching/LessonController.h"
 #include "window/MainWindow.h"
 #include "window/Theme.h"
@@ -23,9 +25,64 @@ namespace sl::ui {
 
 namespace {
 constexpr int kStateVersion = 0x5e55;  ///< saveState/restoreState tag of the saved layout
+
+/// Lays `window` out now, its minimum size measured from every widget's current minimum: a
+/// plot's or image's new minimum climbs one layout per posted LayoutRequest, so they are sent
+/// until none is left (a few levels: panel, dock, window).
+void layOutNow(QWidget& window) {
+  for (int level = 0; level < 8; ++level)
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+  window.layout()->activate();
+}
+}  // namespace
+
+PresenterMode::PresenterMode(MainWindow& window) : QObject(&window), w_(window) {
+  w_.installEventFilter(this);
 }
 
-PresenterMode::PresenterMode(MainWindow& window) : QObject(&window), w_(window) {}
+bool PresenterMode::eventFilter(QObject* watched, QEvent* event) {
+  // The big panel's readable content (filled, its captions wrapped to its width) made the
+  // window taller than its screen: it gives that up (after the events that grew it).
+  if (watched == &w_ && event->type() == QEvent::Resize && active_ && !fullPanel_ && big_ &&
+      !giveUpQueued_) {
+    const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+    if (screen && w_.height() > screen->geometry().height()) {
+      giveUpQueued_ = true;
+      QTimer::singleShot(0, this, &PresenterMode::giveUpReadable);
+    }
+  }
+  return QObject::eventFilter(watched, event);
+}
+
+void PresenterMode::giveUpReadable() {
+  giveUpQueued_ = false;
+  if (!active_ || fullPanel_ || !big_) return;
+  // Taller for a moment (a re-arrangement shows the docks before it fits the screen) is not
+  // outgrowing it: fitted to the screen again, only a window still taller gives up.
+  const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+  if (!screen) return;
+  resizeView([this] {
+    layOutNow(w_);
+    fitScreen();
+    layOutNow(w_);
+  });
+  if (w_.height() <= screen->geometry().height()) return;
+  // Arranged again with the content as it is now (a panel under the big one that no longer
+  // fits goes behind it), a few times per lesson; then the big panel takes what there is.
+  if (rearrangedForGrowth_ < kMaxRearrangedForGrowth) {
+    ++rearrangedForGrowth_;
+    resizeView([this] {
+      arrangeDocks();
+      fitScreen();
+    });
+    return;
+  }
+  resizeView([this] {
+    for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) setReadableMinimums(*dock, false);
+    layOutNow(w_);
+    fitScreen();
+  });
+}
 
 void PresenterMode::createActions(QMenu* view) {
   // A checkable action of the View menu, also the window's own: the full panel hides the
@@ -83,6 +140,7 @@ void PresenterMode::choosePanel(const QString& dockName) {
 void PresenterMode::setLessonPanel(const QString& dockName, const QStringList& others) {
   lessonPanel_ = dockName;
   lessonOthers_ = others;
+  rearrangedForGrowth_ = 0;
   if (!active_) return;
   arrangeDocks();
   fitScreen();
@@ -122,6 +180,7 @@ void PresenterMode::setActive(bool on) {
   } else {
     setFullPanel(false);
     active_ = false;
+    for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) setReadableMinimums(*dock, false);
     w_.viewport()->setPointerHighlight(false);
     w_.viewport()->setPresenting(false);
     if (app) {
@@ -170,15 +229,22 @@ void PresenterMode::setFullPanel(bool on) {
 void PresenterMode::arrangeDocks() {
   keptOnScreen_ = 0;
   fedSinceArranged_ = 0;
+  askedSettled_ = false;
   big_ = pickBigDock();
   // Everything but the big panel hidden; the Lesson and Parameters tabbed behind it (a
   // lecturer's notes and knobs, one click away).
+  // The plots and images of the panels in view ask for their readable size (PlotWidget::
+  // kReadableHeight, ImageView::kReadableSide, with their titles and captions): a panel is
+  // shown under the big one only where it reads there, and the big panel gives that up only
+  // where it cannot have it (askReadable). Panels tabbed behind ask for nothing.
   for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) {
     dock->setFloating(false);
+    setReadableMinimums(*dock, false);
     if (dock != big_) dock->hide();
   }
   if (!big_) return;
   w_.addDockWidget(Qt::RightDockWidgetArea, big_);
+  setReadableMinimums(*big_, true);  // first: a panel goes under it only where both read
   big_->show();
   // The lesson's other panels under the big one (the lesson's own big panel only: a panel
   // the user chose stands alone); split before anything is tabbed behind it (Qt adds a dock
@@ -205,14 +271,16 @@ void PresenterMode::arrangeDocks() {
         continue;
       w_.addDockWidget(Qt::RightDockWidgetArea, dock);
       w_.splitDockWidget(column.back(), dock, Qt::Vertical);  // above the strip
+      setReadableMinimums(*dock, true);
       dock->show();
-      w_.layout()->activate();
+      layOutNow(w_);
       // Only where the window still fits the screen and the big panel keeps its share of the
       // height (what stands under it, at its least, takes the rest); else one more tab behind
       // the big panel.
       const int under = belowHeight + dock->minimumSizeHint().height();
       if (screenHeight > 0 && (w_.minimumSizeHint().height() > screenHeight ||
                                under > screenHeight * (1.0 - kMinBigPanelShare))) {
+        setReadableMinimums(*dock, false);
         w_.tabifyDockWidget(big_, dock);
         continue;
       }
@@ -240,12 +308,44 @@ void PresenterMode::arrangeDocks() {
   }
   if (column.size() > 1) w_.resizeDocks(column, heights, Qt::Vertical);
   w_.layout()->invalidate();
-  w_.layout()->activate();
+  layOutNow(w_);
   sizeBigDock();
+  askReadable();
+}
+
+void PresenterMode::askReadableSettled() {
+  if (!active_ || fullPanel_ || !big_ || askedSettled_ || asksReadableMinimum(*big_->widget()))
+    return;
+  askedSettled_ = true;
+  bool readable = false;
+  resizeView([this, &readable] { readable = askReadable(); });
+  // Given up again: the window was laid out at the readable size for a moment, and a frame
+  // may have been asked for at that size; the lesson's state starts again at this one.
+  if (!readable) w_.lessons()->settleAgain();
+}
+
+bool PresenterMode::askReadable() {
+  // At its share of the width (titles and captions wrap to it): where the big panel at its
+  // readable size makes the window taller (or wider) than the screen, it takes what there is,
+  // and the lesson says it is too small to read (LessonController::reportFit).
+  if (!big_) return false;
+  setReadableMinimums(*big_, true);
+  layOutNow(w_);
+  const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
+  const QSize screenSize = screen ? screen->geometry().size() : QSize();
+  const QSize least = w_.minimumSizeHint();
+  if (screenSize.isEmpty() ||
+      (least.height() <= screenSize.height() && least.width() <= screenSize.width()))
+    return true;
+  setReadableMinimums(*big_, false);
+  layOutNow(w_);
+  if (w_.height() > screenSize.height() || w_.width() > screenSize.width()) fitScreen();
+  return false;
 }
 
 void PresenterMode::keepOnScreen() {
   if (!active_ || fullPanel_) return;
+  layOutNow(w_);  // the panels' new content measured: what the checks below read
   if (big_ && fedSinceArranged_ < kFeedsResized) {
     ++fedSinceArranged_;
     if (big_->width() > int(w_.width() * kPanelShare) + 1) resizeView([this] { sizeBigDock(); });

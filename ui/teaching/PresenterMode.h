@@ -78,10 +78,21 @@ class PresenterMode : public QObject {
   /// and the window fits the screen. The arrangement measures the panels as they are; a panel
   /// shown before its first frame grows when the frame arrives.
   void keepOnScreen();
+  /// A lesson settled: a big panel that gave up its readable size while the lesson was being
+  /// arranged (the last lesson's content still in it) asks for it once more (once per
+  /// arrangement), now that it shows this lesson's data (LessonController::reportFit measures
+  /// after this).
+  void askReadableSettled();
 
  private:
   void arrangeDocks();
   void sizeBigDock();
+  /// Asks the big panel's plots and images for their readable sizes (setReadableMinimums), and
+  /// gives that up where the window would then not fit its screen; true when they have them.
+  bool askReadable();
+  /// The big panel takes what there is on the screen: its content outgrew it.
+  void giveUpReadable();
+  bool eventFilter(QObject* watched, QEvent* event) override;
   /// Runs `change` (a re-arrangement or a new width of the big panel) and lays the window out;
   /// a lesson whose view changed size settles again.
   void resizeView(const std::function<void()>& change);
@@ -102,6 +113,10 @@ class PresenterMode : public QObject {
   QByteArray savedState_, savedGeometry_;
   QFont savedFont_;
   bool savedMaximized_ = false;
+  bool askedSettled_ = false;    ///< askReadableSettled asked since the last arrangement
+  bool giveUpQueued_ = false;    ///< giveUpReadable is queued
+  int rearrangedForGrowth_ = 0;  ///< times giveUpReadable arranged the docks again this lesson
+  static constexpr int kMaxRearrangedForGrowth = 2;
   int keptOnScreen_ = 0;      ///< times keepOnScreen re-arranged since the last arrangement
   int fedSinceArranged_ = 0;  ///< frames fed to the panels since the last arrangement
   static constexpr int kMaxKeepOnScreen = 3;

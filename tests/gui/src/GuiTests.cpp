@@ -106,6 +106,7 @@ const std::vector<GuiTests::Test>& GuiTests::all() {
       {"panels", "", [](GuiTests& t, const QString&) { return t.panelsFollowTechnique(); }},
       {"course", "[=DIR]", [](GuiTests& t, const QString& a) { return t.course(a); }},
       {"course-claims", "[=DIR]", [](GuiTests& t, const QString& a) { return t.courseClaims(a); }},
+      {"course-grabs", "=DIR", [](GuiTests& t, const QString& a) { return t.courseGrabs(a); }},
       {"shortcuts", "", [](GuiTests& t, const QString&) { return t.shortcuts(); }},
       {"turn-prediction", "[=DIR]",
        [](GuiTests& t, const QString& a) { return t.turnPrediction(a); }},

@@ -170,6 +170,13 @@ class GuiTests : public QObject {
   /// checks lesson-claims makes of a lesson opened alone (technique, layout, the window on its
   /// screen, live numbers, the claims). The window at each lesson is saved to DIR.
   bool courseClaims(const QString& dir);
+  /// course-grabs=DIR (started with --course NAME --presenter; scripts/grab_lessons.sh with
+  /// COURSE): Next from the course's first lesson to its last, each lesson's window saved as
+  /// DIR/<lesson>.png once it has settled and its panels are filled (a lesson told in cases:
+  /// each further case as DIR/<lesson>-case<K>.png), its fit note printed. No claims.
+  bool courseGrabs(const QString& dir);
+  /// Prints the big panel's size against its least size with every plot and image readable.
+  void printReadableNeed();
   /// shortcuts (GuiTestsShortcuts.cpp): with a Parameters slider, then a dock's list or tree
   /// focused, V (outside view), F6 (continuous), Space (pause), O (overlay) and W held (fly)
   /// act and the focus stays; V and Space from one widget of every kind and from a floating

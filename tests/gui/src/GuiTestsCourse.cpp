@@ -1,17 +1,23 @@
 // The `course` self-test (see GuiTests.h): a course started with --course, stepped through
 // with the Lesson dock's Next as a lecturer would.
+#include <cstdio>
 #include <string>
 #include <vector>
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
 #include <QPushButton>
+#include <QScreen>
 
 #include "teaching/LessonController.h"
+#include "teaching/PresenterMode.h"
 #include "window/MainWindow.h"
 #include "GuiTests.h"
+#include "panels/common/PanelKit.h"
+#include "view/ViewportWidget.h"
 
 namespace sl::ui {
 
@@ -110,6 +116,98 @@ bool GuiTests::courseClaims(const QString& dir) {
               .arg(QString::fromStdString(files[k]), open));
     if (open != QString::fromStdString(files[k])) return false;
     checkOpenLesson(index, dir);
+  }
+  return true;
+}
+
+void GuiTests::printReadableNeed() {
+  // How much room the big panel lacks: its least size with every plot and image readable
+  // against the size it has (asked for a moment, then given up again as it was).
+  QDockWidget* big = w_.presenter()->bigDock();
+  if (!big) return;
+  auto flush = [] {
+    for (int level = 0; level < 8; ++level)
+      QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+  };
+  const bool was = big->property("slReadableMinimum").toBool();
+  setReadableMinimums(*big, true);
+  flush();
+  const QSize need = big->minimumSizeHint();
+  const int windowNeeds = w_.minimumSizeHint().height(), windowGot = w_.height();
+  QStringList parts;
+  for (const QWidget* part : big->findChildren<QWidget*>())
+    if ((qobject_cast<const PlotWidget*>(part) || qobject_cast<const ImageView*>(part)) &&
+        part->isVisible())
+      parts << QStringLiteral("%1 %2x%3 of %4x%5")
+                   .arg(part->objectName().isEmpty()
+                            ? QString::fromLatin1(part->metaObject()->className())
+                            : part->objectName())
+                   .arg(part->width())
+                   .arg(part->height())
+                   .arg(part->minimumSizeHint().width())
+                   .arg(part->minimumSizeHint().height());
+  setReadableMinimums(*big, was);
+  flush();
+  std::printf(
+      "     the big panel %s: %dx%d, readable at %dx%d; the window then at least %d px tall "
+      "(it grew to %d) (%s)\n",
+      qPrintable(big->objectName()), big->width(), big->height(), need.width(), need.height(),
+      windowNeeds, windowGot, qPrintable(parts.join(QStringLiteral(", "))));
+}
+
+bool GuiTests::courseGrabs(const QString& dir) {
+  LessonController& lessons = *w_.lessons();
+  const sl::Course* course = lessons.activeCourse();
+  check(course != nullptr, tr("--course started a course"));
+  auto* next = w_.lessonPanel()->findChild<QPushButton*>(QStringLiteral("lessonNext"));
+  check(next != nullptr, tr("the Lesson dock has Next"));
+  check(!dir.isEmpty() && QDir().mkpath(dir), tr("course-grabs=DIR: a folder to save into"));
+  if (!course || !next || dir.isEmpty()) return false;
+  const std::size_t count = course->lessons.size();
+  // The window as the class sees it: settled, the named panels filled, the view's error
+  // measured (the banner's and the text's numbers).
+  auto grabAs = [&](const QString& shot) {
+    check(auto_.waitForSettled() && auto_.waitForFrames(2), tr("%1 settled").arg(shot));
+    const int index = lessons.index();
+    const auto& layout = lessons.lessons()[static_cast<std::size_t>(index)].preset.layout;
+    for (int frame = 0; frame < 10 && layout; ++frame) {
+      bool empty = false;
+      for (const std::string& id : layout->docks)
+        if (const auto* dock = w_.findChild<QDockWidget*>(QString::fromStdString(id)))
+          if (const auto* panel = qobject_cast<const PublicationPanel*>(dock->widget()))
+            empty = empty || (dock->isVisible() && !panel->placeholderShown().isEmpty());
+      if (!empty) break;
+      if (!auto_.waitForFrames(1)) break;
+    }
+    w_.viewport()->computeErrorNow();
+    QCoreApplication::processEvents();
+    const QString note = lessons.fitNote();
+    std::printf("     %s: window %dx%d, %s\n", qPrintable(shot), w_.width(), w_.height(),
+                note.isEmpty() ? "every panel it names reads" : qPrintable(note));
+    std::fflush(stdout);
+    const QString path = QDir(dir).filePath(shot + QStringLiteral(".png"));
+    check(w_.grab().toImage().save(path), tr("%1 saved").arg(path));
+    if (!note.isEmpty()) printReadableNeed();  // after the grab: it lays the window out again
+  };
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k > 0) next->click();  // opens the lesson; it settles on the frames that follow
+    const QString name =
+        QFileInfo(QString::fromStdString(course->lessons[k].lesson)).completeBaseName();
+    const int index = lessons.index();
+    check(
+        index >= 0 &&
+            QFileInfo(lessons.lessons()[static_cast<std::size_t>(index)].path).completeBaseName() ==
+                name,
+        tr("Next: lesson %1 of the course is %2").arg(k + 1).arg(name));
+    if (index < 0) return false;
+    grabAs(name);
+    // A lesson told in cases: each further case as Ctrl+Shift+N applies it.
+    const std::size_t cases =
+        lessons.lessons()[static_cast<std::size_t>(index)].preset.cases.size();
+    for (std::size_t c = 1; c < cases; ++c) {
+      lessons.nextCase();
+      grabAs(QStringLiteral("%1-case%2").arg(name).arg(c + 1));
+    }
   }
   return true;
 }

@@ -102,10 +102,11 @@ void GuiTests::checkOpenLesson(int index, const QString& dir) {
         c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.nearM,
         c.farM, l.azimuthDeg, l.elevationDeg);
   }
-  if (!dir.isEmpty() && QDir().mkpath(dir))
-    w_.grab().toImage().save(QDir(dir).filePath(name + QStringLiteral(".png")));
   if (p.layout) lessonLayout(*p.layout);
   lessonOnScreen(name);
+  // The window before the claims change it, its numbers filled (lessonOnScreen measured them).
+  if (!dir.isEmpty() && QDir().mkpath(dir))
+    w_.grab().toImage().save(QDir(dir).filePath(name + QStringLiteral(".png")));
   if (name.endsWith(QLatin1String("perspective-aliasing")))
     claimPerspective(text);
   else if (name.endsWith(QLatin1String("projective-aliasing")))
@@ -238,6 +239,33 @@ void GuiTests::lessonStrip(const sl::PresetLayout& layout) {
                      : tr("; not in view: %1").arg(missing.join(QStringLiteral(", ")))));
 }
 
+namespace {
+/// The lessons whose big panel does not read in presenter mode on a projector's screen
+/// (docs/user-guide/presenter.md, "Which lessons read at which size"): there the lesson says
+/// so, naming the panel; every other lesson must read on these screens.
+bool doesNotFit(const QString& lesson, const QSize& screen) {
+  struct Known {
+    const char* lesson;
+    bool at1920x1080, at1280x800;
+  };
+  static const Known known[] = {
+      {"05-forward-vs-backward", true, false},  // opened alone: Warp under Importance, both small
+      {"06-diagonal-pca", true, true},  // Covariance: 24 px short at 1920x1080, 29 at 1280x800
+      {"07-vibration-threshold", false, true},  // Covariance: 17 px short
+      {"09-dueling-frusta", true, true},        // Partitions: five maps
+      {"10-cascades", false, true},             // Partitions: four maps in two rows
+      {"12-fvsm", true, true},                  // FVSM: five images and a plot
+      {"13-asm-vs-rmsm", true, true},           // Pages
+  };
+  for (const Known& k : known)
+    if (lesson.startsWith(QLatin1String(k.lesson)))
+      return screen == QSize(1920, 1080)  ? k.at1920x1080
+             : screen == QSize(1280, 800) ? k.at1280x800
+                                          : true;
+  return screen != QSize(1920, 1080) && screen != QSize(1280, 800);
+}
+}  // namespace
+
 void GuiTests::lessonReadable(const sl::PresetLayout& layout) {
   // Is every plot and image of the panels the lesson names, where it is on screen, at a
   // readable size (unreadableParts: PlotWidget::kReadableHeight, kReadableCurves,
@@ -258,6 +286,21 @@ void GuiTests::lessonReadable(const sl::PresetLayout& layout) {
       "the curves): %s\n",
       PlotWidget::kReadableHeight, PlotWidget::kReadableCurves, ImageView::kReadableSide,
       small.isEmpty() ? "all" : qPrintable(small.join(QStringLiteral("; "))));
+  // On a projector's screen in presenter mode, a lesson that fits must read (a regression
+  // fails); one that does not fit says so.
+  const int index = w_.lessons()->index();
+  const QString lesson =
+      index < 0 ? QString()
+                : QFileInfo(w_.lessons()->lessons()[static_cast<std::size_t>(index)].path)
+                      .completeBaseName();
+  const QSize screen = w_.screen() ? w_.screen()->geometry().size() : QSize();
+  if (w_.presenter()->active() && !doesNotFit(lesson, screen))
+    check(small.isEmpty(),
+          tr("%1 fits a %2 x %3 screen: every panel it names reads (%4)")
+              .arg(lesson)
+              .arg(screen.width())
+              .arg(screen.height())
+              .arg(small.isEmpty() ? tr("all") : small.join(QStringLiteral("; "))));
   check(unnamed.isEmpty(),
         small.isEmpty() ? tr("every panel the lesson names reads at this size")
         : unnamed.isEmpty()

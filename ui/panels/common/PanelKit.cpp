@@ -9,7 +9,9 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QResizeEvent>
 #include <QStackedWidget>
+#include <QVariant>
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
@@ -234,6 +236,7 @@ void ImageView::setImage(const QImage& image, int texelsW, int texelsH) {
   texelsW_ = texelsW;
   texelsH_ = texelsH;
   if (sizeChanged) resetZoom();
+  if (sizeChanged) updateReadableMinimum();
   update();
 }
 
@@ -242,6 +245,7 @@ void ImageView::setDisplayAspect(double aspect) {
   if (a == displayAspect_) return;
   displayAspect_ = a;
   resetZoom();
+  updateReadableMinimum();
   update();
 }
 
@@ -249,6 +253,7 @@ void ImageView::clearImage(const QString& placeholder) {
   image_ = QImage();
   texelsW_ = texelsH_ = 0;
   placeholder_ = placeholder;
+  updateReadableMinimum();
   update();
 }
 
@@ -261,6 +266,7 @@ void ImageView::setLegend(const ValueRange& range, ColorMap map, const QString& 
   legendMap_ = map;
   legendTitle_ = title;
   legend_ = show;
+  updateReadableMinimum();
   update();
 }
 
@@ -271,6 +277,7 @@ void ImageView::setOverlay(std::function<void(QPainter&, const QRectF&)> overlay
 
 void ImageView::setCaption(const QString& caption) {
   caption_ = caption;
+  updateReadableMinimum();
   update();
 }
 
@@ -307,17 +314,56 @@ int ImageView::legendWidth() const {
   return std::max(std::min(w + 6, kMaxLegendWidth), longestWord + 8);
 }
 
-int ImageView::wrappedHeight(const QString& text) const {
+int ImageView::wrappedHeight(const QString& text, int width) const {
+  const int w = width < 0 ? this->width() : width;
   return fontMetrics()
-             .boundingRect(QRect(0, 0, std::max(1, width() - 2 * kMargin), 100000),
+             .boundingRect(QRect(0, 0, std::max(1, w - 2 * kMargin), 100000),
                            Qt::TextWordWrap | Qt::AlignLeft, text)
              .height() +
          4;
 }
 
-int ImageView::captionHeight() const {
+int ImageView::captionHeight(int width) const {
   // Wrapped to the widget's width, however many lines: its numbers are what a lesson shows.
-  return caption_.isEmpty() ? 0 : wrappedHeight(caption_);
+  return caption_.isEmpty() ? 0 : wrappedHeight(caption_, width);
+}
+
+QSize ImageView::minimumSizeHint() const {
+  if (!asksReadableMinimum(*this)) return {120, 110};
+  if (!readableMinimumSize_.isValid()) readableMinimumSize_ = readableMinimumSize();
+  return readableMinimumSize_;
+}
+
+QSize ImageView::readableMinimumSize() const {
+  // The image's longer side kReadableSide px (viewArea and imageRect in reverse): a wide image
+  // needs that much width and less height, a tall one the other way round. Without an image,
+  // a square one.
+  const int w = testAttribute(Qt::WA_Resized) ? width() : sizeHint().width();
+  const double aspect = displayAspect_ > 0.0           ? displayAspect_
+                        : texelsW_ > 0 && texelsH_ > 0 ? double(texelsW_) / double(texelsH_)
+                                                       : 1.0;
+  const int line = fontMetrics().height() + 4;
+  const int imageW = int(std::ceil(kReadableSide * std::min(aspect, 1.0)));
+  const int imageH = int(std::ceil(kReadableSide / std::max(aspect, 1.0)));
+  return {std::max(120, 2 * kMargin + legendWidth() + imageW),
+          std::max(110, 2 * kMargin + line + captionHeight(w) + imageH)};
+}
+
+void ImageView::updateReadableMinimum() {
+  const QSize size = asksReadableMinimum(*this) ? readableMinimumSize() : QSize();
+  if (size == readableMinimumSize_) return;
+  readableMinimumSize_ = size;
+  updateGeometry();
+}
+
+void ImageView::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  updateReadableMinimum();  // the caption wraps to the new width
+}
+
+void ImageView::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange) updateReadableMinimum();
 }
 
 int ImageView::readoutHeight(const QString& readout) const {
@@ -496,11 +542,19 @@ PlotWidget::PlotWidget(QWidget* parent) : QWidget(parent) {
 void PlotWidget::setAxisLabels(const QString& x, const QString& y) {
   xLabel_ = x;
   yLabel_ = y;
+  updateReadableMinimum();  // the y label is part of the title
+  update();
+}
+
+void PlotWidget::setTitle(const QString& title) {
+  title_ = title;
+  updateReadableMinimum();
   update();
 }
 
 void PlotWidget::setSeries(std::vector<Series> series) {
   series_ = std::move(series);
+  updateReadableMinimum();  // the legend's band
   update();
 }
 
@@ -546,19 +600,20 @@ QString PlotWidget::fullTitle() const {
   return yLabel_.isEmpty() ? title_ : QStringLiteral("%1  \u2014  y: %2").arg(title_, yLabel_);
 }
 
-int PlotWidget::titleHeight() const {
+int PlotWidget::titleHeight(int width) const {
   // Wrapped to the widget's width, however many lines: never elided (its numbers are read).
-  const QRect bounds = fontMetrics().boundingRect(QRect(0, 0, std::max(1, width() - 12), 100000),
+  const int w = width < 0 ? this->width() : width;
+  const QRect bounds = fontMetrics().boundingRect(QRect(0, 0, std::max(1, w - 12), 100000),
                                                   Qt::TextWordWrap | Qt::AlignLeft, fullTitle());
   return std::max(fontMetrics().height(), bounds.height());
 }
 
-std::vector<QRectF> PlotWidget::legendLayout(double top, int* height) const {
+std::vector<QRectF> PlotWidget::legendLayout(double top, int* height, int width) const {
   const QFontMetrics fm = fontMetrics();
   const int line = fm.height();
   std::vector<QRectF> entries;
   double x = 6.0, y = top;
-  const double right = width() - 6.0;
+  const double right = (width < 0 ? this->width() : width) - 6.0;
   for (const Series& s : series_) {
     if (s.name.isEmpty()) continue;
     const double w = 24.0 + fm.horizontalAdvance(s.name) + 4.0;  // the sample line, the name
@@ -580,6 +635,39 @@ QRectF PlotWidget::plotArea() const {
   int legend = 0;
   legendLayout(titleHeight() + 4, &legend);
   return QRectF(rect()).adjusted(left, titleHeight() + 8 + legend, -10, -(2 * line + 8));
+}
+
+QSize PlotWidget::minimumSizeHint() const {
+  if (!asksReadableMinimum(*this)) return {140, 100};
+  if (readableMinimumHeight_ <= 0) readableMinimumHeight_ = readableMinimumHeight();
+  return {140, readableMinimumHeight_};
+}
+
+int PlotWidget::readableMinimumHeight() const {
+  // plotArea in reverse: title, legend band and axis labels around kReadableCurves of curves.
+  const int w = testAttribute(Qt::WA_Resized) ? width() : sizeHint().width();
+  const int title = titleHeight(w);
+  int legend = 0;
+  legendLayout(title + 4, &legend, w);
+  const int line = fontMetrics().height();
+  return std::max(kReadableHeight, title + 8 + legend + kReadableCurves + 2 * line + 8);
+}
+
+void PlotWidget::updateReadableMinimum() {
+  const int height = asksReadableMinimum(*this) ? readableMinimumHeight() : 0;
+  if (height == readableMinimumHeight_) return;
+  readableMinimumHeight_ = height;
+  updateGeometry();
+}
+
+void PlotWidget::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  updateReadableMinimum();  // the title and the legend wrap to the new width
+}
+
+void PlotWidget::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange) updateReadableMinimum();
 }
 
 PlotWidget::Ranges PlotWidget::ranges() const {
@@ -884,6 +972,27 @@ QStringList unreadableParts(const QWidget& panel) {
                    .arg(r.height(), 0, 'f', 0);
   }
   return small;
+}
+
+namespace {
+constexpr char kReadableMinimumProperty[] = "slReadableMinimum";
+}
+
+void setReadableMinimums(QWidget& panel, bool on) {
+  if (panel.property(kReadableMinimumProperty).toBool() == on) return;
+  panel.setProperty(kReadableMinimumProperty, on);
+  for (PlotWidget* plot : panel.findChildren<PlotWidget*>()) plot->updateReadableMinimum();
+  for (ImageView* image : panel.findChildren<ImageView*>()) image->updateReadableMinimum();
+  if (auto* p = qobject_cast<PublicationPanel*>(&panel)) p->readableMinimumsChanged();
+  for (PublicationPanel* p : panel.findChildren<PublicationPanel*>()) p->readableMinimumsChanged();
+}
+
+bool asksReadableMinimum(const QWidget& widget) {
+  for (const QWidget* w = widget.parentWidget(); w; w = w->parentWidget()) {
+    const QVariant on = w->property(kReadableMinimumProperty);
+    if (on.isValid()) return on.toBool();
+  }
+  return false;
 }
 
 }  // namespace sl::ui

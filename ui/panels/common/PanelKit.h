@@ -115,9 +115,14 @@ class ImageView : public QWidget {
   QRectF shownImageRect() const { return image_.isNull() ? QRectF() : imageRect(); }
 
   QSize sizeHint() const override { return {320, 300}; }
-  QSize minimumSizeHint() const override { return {120, 110}; }
+  /// Small (120 x 110), or inside a panel that asks for readable sizes (setReadableMinimums)
+  /// the size that draws the image kReadableSide px on its longer side under its caption
+  /// (wrapped to the current width), over its readout line and beside its legend.
+  QSize minimumSizeHint() const override;
   /// The size an image is readable at from the back of a lecture hall, on its longer side.
   static constexpr int kReadableSide = 160;
+  /// The minimum size is measured again (setReadableMinimums changed, the font changed).
+  void updateReadableMinimum();
 
  protected:
   void paintEvent(QPaintEvent* event) override;
@@ -127,13 +132,18 @@ class ImageView : public QWidget {
   void mouseReleaseEvent(QMouseEvent* event) override;
   void mouseDoubleClickEvent(QMouseEvent* event) override;
   void leaveEvent(QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  void changeEvent(QEvent* event) override;
 
  private:
   int legendWidth() const;  ///< 0 without a legend
-  /// Heights of the caption (top) and the readout (bottom), wrapped to the widget's width:
-  /// a caption or a readout is never cut, the image gets what is left.
-  int captionHeight() const;
-  int wrappedHeight(const QString& text) const;  ///< `text` wrapped to the widget's width
+  /// Heights of the caption (top) and the readout (bottom), wrapped to the widget's width
+  /// (or `width`): a caption or a readout is never cut, the image gets what is left.
+  int captionHeight(int width = -1) const;
+  int wrappedHeight(const QString& text, int width = -1) const;
+  /// The readable minimum at the width the widget has (its size hint's before a layout set
+  /// one); the layout is told when it changes.
+  QSize readableMinimumSize() const;
   int readoutHeight(const QString& readout) const;
   QString legendTick(float t) const;  ///< the colour bar's label at t in [0, 1]
   QRectF viewArea() const;            ///< the part of the widget available to the image
@@ -151,6 +161,7 @@ class ImageView : public QWidget {
   QString legendTitle_;
   bool legend_ = false;
   bool highlighted_ = false;
+  mutable QSize readableMinimumSize_;  ///< the last readableMinimumSize() the layout was told of
   double zoom_ = 1.0;
   QPointF pan_;  ///< offset of the image centre from the view centre, widget pixels
   QPoint lastMouse_;
@@ -190,7 +201,7 @@ class PlotWidget : public QWidget {
 
   explicit PlotWidget(QWidget* parent = nullptr);
 
-  void setTitle(const QString& title) { title_ = title, update(); }
+  void setTitle(const QString& title);
   void setAxisLabels(const QString& x, const QString& y);
   void setSeries(std::vector<Series> series);
   void setLines(std::vector<Line> lines);
@@ -213,12 +224,19 @@ class PlotWidget : public QWidget {
   /// curves under its title and legend.
   static constexpr int kReadableHeight = 120;
   static constexpr int kReadableCurves = 60;
-  QSize minimumSizeHint() const override { return {140, 100}; }
+  /// Small (140 x 100), or inside a panel that asks for readable sizes (setReadableMinimums)
+  /// the height that leaves kReadableCurves px of curves under the title and the legend,
+  /// wrapped to the current width (at least kReadableHeight).
+  QSize minimumSizeHint() const override;
+  /// The minimum size is measured again (setReadableMinimums changed, the font changed).
+  void updateReadableMinimum();
 
  protected:
   void paintEvent(QPaintEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void leaveEvent(QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  void changeEvent(QEvent* event) override;
 
  private:
   struct Ranges {
@@ -226,10 +244,14 @@ class PlotWidget : public QWidget {
   };
   Ranges ranges() const;
   QRectF plotArea() const;
-  int titleHeight() const;  ///< the title wrapped to the widget's width (never cut)
-  /// The legend's entries laid out left to right, wrapping, in a band starting at `top`;
-  /// `height` is the band's.
-  std::vector<QRectF> legendLayout(double top, int* height) const;
+  /// The title wrapped to the widget's width (or `width`), never cut.
+  int titleHeight(int width = -1) const;
+  /// The legend's entries laid out left to right, wrapping, in a band starting at `top`
+  /// across the widget's width (or `width`); `height` is the band's.
+  std::vector<QRectF> legendLayout(double top, int* height, int width = -1) const;
+  /// The readable minimum height at the width the widget has (its size hint's before a
+  /// layout set one); the layout is told when it changes.
+  int readableMinimumHeight() const;
   QString fullTitle() const;
   double yToT(double y, const Ranges& r) const;
 
@@ -240,6 +262,7 @@ class PlotWidget : public QWidget {
   double fixedX0_ = 0, fixedX1_ = 0, fixedY0_ = 0, fixedY1_ = 0;
   bool logY_ = false;
   bool highlighted_ = false;
+  mutable int readableMinimumHeight_ = 0;  ///< the last readableMinimumHeight() told, 0: none
   int hoverX_ = -1;
 };
 
@@ -272,6 +295,9 @@ class PublicationPanel : public QWidget {
   virtual QJsonObject drawnValues() const { return {}; }
   /// Forgets accumulated history (new scene or technique).
   virtual void resetHistory() {}
+  /// Its plots and images were asked for (or gave up) their readable sizes
+  /// (setReadableMinimums): a panel that lays its views out by their minimum width does it again.
+  virtual void readableMinimumsChanged() {}
   /// The view's pixel under the mouse (ViewportWidget::pixelProbed), or nothing.
   virtual void showProbe(const std::optional<sl::PixelProbe>& probe) { (void)probe; }
   /// Whether showProbe draws anything: the view reads the pixel back (a GPU sync) only
@@ -323,5 +349,11 @@ PanelColumn newPanelColumn();
 /// or with a legend over the curves: one phrase each ("a plot 25 px tall, its curves 10 px").
 /// Hidden ones, and ones behind another tab, are not counted.
 QStringList unreadableParts(const QWidget& panel);
+/// Whether the plots and images of `panel` (also ones it makes later) take their readable
+/// size as their minimum: presenter mode asks the layouts for readable sizes, and gives that
+/// up for a panel that cannot have them on its screen.
+void setReadableMinimums(QWidget& panel, bool on);
+/// Whether `widget` lies in a panel that asks for readable sizes.
+bool asksReadableMinimum(const QWidget& widget);
 
 }  // namespace sl::ui

@@ -26,6 +26,7 @@ class PartitionsPanel : public PublicationPanel {
   QJsonObject drawnValues() const override;
 
  protected:
+  void readableMinimumsChanged() override { arrangeMaps(); }
   void resizeEvent(QResizeEvent* event) override;
 
  private:

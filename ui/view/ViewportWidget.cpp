@@ -61,7 +61,10 @@ ViewportWidget::ViewportWidget(QWidget* parent)
     updateOverlayWidget();
   });
   connect(service_, &RenderService::callEnded, this, [this](int stillWaiting) {
-    if (stillWaiting > 0 || callNote_.isEmpty()) return;
+    if (stillWaiting > 0) return;
+    // The frames asked for during the wait, after what the caller does with its result.
+    QTimer::singleShot(0, this, [this] { pump(); });
+    if (callNote_.isEmpty()) return;
     callNote_.clear();
     if (framesInFlight_ == 0) busyTimer_.stop();
     updateOverlayWidget();
@@ -110,7 +113,11 @@ void ViewportWidget::noticeEdits() {
 }
 
 void ViewportWidget::pump() {
-  if (!ready_ || !frameWanted_ || !service_ || sceneLoading_) return;
+  // No new frame while a scene loads or while the window waits for an action on the render
+  // thread (RenderService::call: what it reads next is of the frame it drew, not of one
+  // queued during the wait); each asks again when it ends.
+  if (!ready_ || !frameWanted_ || !service_ || sceneLoading_ || service_->callsWaiting() > 0)
+    return;
   noticeEdits();
   const bool inFlight = framesInFlight_ > 0;
   const bool changed = viewRevision_ != sentViewRevision_;

@@ -1,9 +1,7 @@
-// Work off the UI thread (OffThread.h).
+// Waiting on the UI thread while handling events (OffThread.h).
 #include "service/OffThread.h"
 
-#include <atomic>
 #include <exception>
-#include <memory>
 #include <thread>
 
 #include <QCoreApplication>
@@ -11,23 +9,29 @@
 
 namespace sl::ui {
 
+void waitHandlingEvents(const std::atomic<bool>& done) {
+  while (!done.load()) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+}
+
+void wakeUiThread() {
+  if (QCoreApplication* app = QCoreApplication::instance())
+    QMetaObject::invokeMethod(
+        app, [] {}, Qt::QueuedConnection);
+}
+
 void runOffThread(const std::function<void()>& work) {
-  auto done = std::make_shared<std::atomic<bool>>(false);
+  std::atomic<bool> done{false};
   std::exception_ptr thrown;
-  QCoreApplication* app = QCoreApplication::instance();
-  std::thread worker([&work, &thrown, done, app] {
+  std::thread worker([&] {
     try {
       work();
     } catch (...) {
       thrown = std::current_exception();
     }
-    *done = true;
-    // An empty queued call wakes the UI thread's event loop.
-    if (app)
-      QMetaObject::invokeMethod(
-          app, [] {}, Qt::QueuedConnection);
+    done = true;
+    wakeUiThread();
   });
-  while (!done->load()) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+  waitHandlingEvents(done);
   worker.join();
   if (thrown) std::rethrow_exception(thrown);
 }

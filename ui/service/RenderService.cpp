@@ -4,16 +4,14 @@
 
 #include <atomic>
 #include <exception>
-#include <functional>
 #include <map>
 
-#include <QCoreApplication>
 #include <QMetaObject>
-#include <QPointer>
 #include <QThread>
 
 #include "core/Renderer.h"
 #include "gl/EglContext.h"
+#include "service/OffThread.h"
 
 namespace sl::ui {
 
@@ -106,29 +104,28 @@ void RenderService::cancel(const std::string& tag) {
 bool RenderService::call(const Job& job, const QString& note) {
   if (QThread::currentThread() != thread()) return worker_->call(job);
   // On the UI thread: wait while handling events, so that the window never freezes behind a
-  // long action (an error trace, an export, the equal-memory search). The job signals its end
-  // with an empty queued call, which wakes the event loop.
+  // long action (an error trace, an export, the equal-memory search). The state is shared:
+  // the job's end is told on the render thread.
   struct State {
-    std::atomic<int> ran{-1};  ///< -1 running or queued, 0 dropped, 1 ran
+    std::atomic<bool> ended{false};
+    bool ran = false;  ///< false: dropped (cancelled before it started, or refused)
     std::exception_ptr thrown;
   };
   auto state = std::make_shared<State>();
-  QPointer<RenderService> self(this);
   ++callsWaiting_;
   Q_EMIT callStarted(note);
   worker_->callAsync(RenderTag::kCall, std::cref(job),
-                     [state, self](bool ran, std::exception_ptr thrown) {
+                     [state](bool ran, std::exception_ptr thrown) {
+                       state->ran = ran;
                        state->thrown = std::move(thrown);
-                       state->ran = ran ? 1 : 0;
-                       if (self)
-                         QMetaObject::invokeMethod(
-                             self, [] {}, Qt::QueuedConnection);
+                       state->ended = true;
+                       wakeUiThread();
                      });
-  while (state->ran.load() < 0) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+  waitHandlingEvents(state->ended);
   --callsWaiting_;
   Q_EMIT callEnded(callsWaiting_);
   if (state->thrown) std::rethrow_exception(state->thrown);
-  return state->ran.load() == 1;
+  return state->ran;
 }
 
 void RenderService::cancelCall() {

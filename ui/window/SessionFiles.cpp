@@ -103,13 +103,12 @@ bool SessionFiles::open(const QString& path) {
 
 void SessionFiles::applyLayout(const sl::PresetLayout& layout, QStringList* problems) {
   applyLayoutDocks(layout, problems);
-  // In presenter mode the layout's large panel becomes the one big panel, and the window
-  // stays on the screen (the docks just shown at the large font may want more).
-  if (w_.presenter()->active()) {
-    QStringList others;
-    for (const std::string& dock : layout.docks) others << QString::fromStdString(dock);
-    w_.presenter()->setLessonPanel(QString::fromStdString(layout.large), others);
-  }
+  // The layout's large panel is presenter mode's one big panel, and the window stays on the
+  // screen (the docks just shown at the large font may want more). Told also while presenter
+  // mode is off: it may come on later (F11, or --presenter after a lesson laid out its docks).
+  QStringList others;
+  for (const std::string& dock : layout.docks) others << QString::fromStdString(dock);
+  w_.presenter()->setLessonPanel(QString::fromStdString(layout.large), others);
 }
 
 void SessionFiles::applyLayoutDocks(const sl::PresetLayout& layout, QStringList* problems) {

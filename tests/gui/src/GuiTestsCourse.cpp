@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <QAction>
 #include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
@@ -86,6 +87,20 @@ bool GuiTests::course(const QString& dir) {
     lessons.apply(outside);
     check(!lessons.activeCourse() && w_.lessonPanel()->courseLine().isEmpty() && thread->isHidden(),
           tr("a lesson outside the course ends it (the dock's course line is gone)"));
+  }
+  // Presenter mode turned on (F11) after a lesson laid out its docks: the lesson's telling
+  // panel is the big one, not the technique's first panel (lesson 6: Covariance, where
+  // DA-RTW's first panel is Importance).
+  if (lessons.start(QStringLiteral("06-diagonal-pca"))) {
+    auto_.waitForSettled();
+    const std::string want =
+        lessons.lessons()[static_cast<std::size_t>(lessons.index())].preset.layout->large;
+    w_.presenter()->action()->trigger();  // what F11 does
+    const QDockWidget* big = w_.presenter()->bigDock();
+    check(big && big->objectName().toStdString() == want && !big->visibleRegion().isEmpty(),
+          tr("F11 after the lesson opened: the big panel is the lesson's %1 (shown: %2)")
+              .arg(QString::fromStdString(want), big ? big->objectName() : tr("none")));
+    w_.presenter()->action()->trigger();
   }
   return true;
 }

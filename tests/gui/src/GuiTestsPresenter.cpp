@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <QAction>
 #include <QApplication>
@@ -148,6 +149,19 @@ bool GuiTests::presenter(const QString& dir) {
             .arg(big ? big->windowTitle() : QStringLiteral("none"))
             .arg(visibleDocks)
             .arg(stripInView ? tr(": the lesson's strip under it") : QString()));
+  // A lesson's telling panel is the big one, however presenter mode came on (--presenter,
+  // or F11 after the lesson had laid out its docks).
+  const int lessonIndex = w_.lessons()->index();
+  const auto& lessonLayout =
+      lessonIndex < 0
+          ? std::optional<sl::PresetLayout>()
+          : w_.lessons()->lessons()[static_cast<std::size_t>(lessonIndex)].preset.layout;
+  const std::string lessonLarge = lessonLayout ? lessonLayout->large : std::string();
+  if (!lessonLarge.empty())
+    check(big && big->objectName().toStdString() == lessonLarge,
+          tr("the big panel is the lesson's: %1 (the lesson's: %2)")
+              .arg(big ? big->objectName() : QStringLiteral("none"),
+                   QString::fromStdString(lessonLarge)));
   const double imageSide = largestImage(big).side;
   const double wantedSide = 0.35 * sr.height();
   check(imageSide >= wantedSide, tr("the big panel's image is %1 px square (>= 35 % of the "

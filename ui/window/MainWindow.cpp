@@ -234,6 +234,7 @@ void MainWindow::rebuildParamPanel() {
        info ? QString::fromStdString(info->description) : QString(), &renderer->params()});
   sections.push_back({tr("View and shading"), QString(), &renderer->rendererParams()});
   paramPanel_->setSections(std::move(sections));
+  splitSide_->rebuildRows();  // the dock's second panel: built at the same font
 }
 
 // --- Renderer events ----------------------------------------------------------------------

@@ -98,17 +98,23 @@ void SplitSideParams::rebuild() {
     matchedMainBytes_.reset();
     return;
   }
+  rebuildRows();
+  box_->show();
+  area_->show();
+  matchedMainBytes_.reset();
+  if (equalMemory_->isChecked()) match();
+  bytes_->setText(bytesText());
+}
+
+void SplitSideParams::rebuildRows() {
+  sl::ViewSide* split = w_.viewport()->splitSide();
+  if (!panel_ || !split) return;
   const sl::TechniqueInfo* info = sl::Renderer::findTechnique(split->techniqueId());
   const QString name =
       info ? QString::fromStdString(info->name) : QString::fromStdString(split->techniqueId());
   title_->setText(tr("Right half (split view): %1").arg(name));
   panel_->setSections(
       {{name, info ? QString::fromStdString(info->description) : QString(), &split->params()}});
-  box_->show();
-  area_->show();
-  matchedMainBytes_.reset();
-  if (equalMemory_->isChecked()) match();
-  bytes_->setText(bytesText());
 }
 
 QString SplitSideParams::bytesText() const {

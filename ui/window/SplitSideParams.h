@@ -31,6 +31,9 @@ class SplitSideParams : public QObject {
   QWidget* createDockWidget(ParamPanel* mainPanel);
   /// Rebuilds the compare side's panel for the split technique (hidden when off).
   void rebuild();
+  /// Rebuilds only the compare side's rows (presenter mode's font: the rows scale the font
+  /// they were built with); no new memory match.
+  void rebuildRows();
   /// After each frame: the byte counts, and a new match when equal memory is on and the
   /// main side's memory changed.
   void onFrameRendered();

@@ -1,14 +1,17 @@
 // The `course` self-test (see GuiTests.h): a course started with --course, stepped through
 // with the Lesson dock's Next as a lecturer would.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include <QAction>
+#include <QApplication>
 #include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QFontInfo>
 #include <QLabel>
 #include <QPushButton>
 #include <QScreen>
@@ -100,6 +103,17 @@ bool GuiTests::course(const QString& dir) {
     check(big && big->objectName().toStdString() == want && !big->visibleRegion().isEmpty(),
           tr("F11 after the lesson opened: the big panel is the lesson's %1 (shown: %2)")
               .arg(QString::fromStdString(want), big ? big->objectName() : tr("none")));
+    // The split view's own rows (the Parameters dock's second panel, built before F11) are
+    // rebuilt at the presenter's font like the main panel's.
+    const int body = QFontInfo(QApplication::font()).pixelSize();
+    int smallest = body;
+    const QWidget* side = w_.paramDock()->findChild<QWidget*>(QStringLiteral("splitParamPanel"));
+    for (const QLabel* label : side ? side->findChildren<QLabel*>() : QList<QLabel*>())
+      smallest = std::min(smallest, QFontInfo(label->font()).pixelSize());
+    check(side && smallest >= body * 4 / 5,
+          tr("F11 with the split view on: its parameter rows at %1 px (body %2 px)")
+              .arg(smallest)
+              .arg(body));
     w_.presenter()->action()->trigger();
   }
   return true;

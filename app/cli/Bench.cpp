@@ -394,8 +394,9 @@ int cmdBench(Args& a) {
   csv << "scene,camera,technique,params,label,frames,path_hz,width,height,timing_method,total_ms,"
          "total_ms_frames";
   for (const std::string& p : passNames) csv << "," << csvField(passColumn(p));
-  csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,aliasing_mean,"
-         "aliasing_p95,aliasing_max,flicker_pct,light_area_m2,halfmass_x,halfmass_y,rotation_deg,"
+  csv << ",texels,bytes,error_pct,false_lit_pct,false_shadow_pct,covered_pixels,error_near_pct,"
+         "error_far_pct,aliasing_mean,aliasing_p95,aliasing_max,flicker_pct,light_area_m2,halfmass_"
+         "x,halfmass_y,rotation_deg,"
          "anisotropy,pareto,pareto_bytes,render_errors,gl_errors,failure,gl\n";
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const ConfigSummary& s = sums[i];
@@ -410,12 +411,13 @@ int cmdBench(Args& a) {
       csv << "," << (s.passMs.count(p) ? number(s.passMs.at(p)) : std::string());
     csv << "," << count(s.texels) << "," << count(s.bytes) << "," << number(s.errorPct) << ","
         << number(s.falseLitPct) << "," << number(s.falseShadowPct) << "," << count(s.covered)
-        << "," << number(s.aliasingMean) << "," << number(s.aliasingP95) << ","
-        << number(s.aliasingMax) << "," << number(s.flickerPct) << "," << number(s.lightAreaM2)
-        << "," << number(s.halfMassX) << "," << number(s.halfMassY) << "," << number(s.rotationDeg)
-        << "," << number(s.anisotropy) << "," << (frontMs[i] ? 1 : 0) << ","
-        << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors << "," << s.glErrors << ","
-        << csvField(s.failure) << "," << csvField(glDescription) << "\n";
+        << "," << number(s.errorNearPct) << "," << number(s.errorFarPct) << ","
+        << number(s.aliasingMean) << "," << number(s.aliasingP95) << "," << number(s.aliasingMax)
+        << "," << number(s.flickerPct) << "," << number(s.lightAreaM2) << "," << number(s.halfMassX)
+        << "," << number(s.halfMassY) << "," << number(s.rotationDeg) << "," << number(s.anisotropy)
+        << "," << (frontMs[i] ? 1 : 0) << "," << (frontBytes[i] ? 1 : 0) << "," << s.renderErrors
+        << "," << s.glErrors << "," << csvField(s.failure) << "," << csvField(glDescription)
+        << "\n";
   }
   std::string text = csv.str();
   text.pop_back();  // writeText adds the final newline

@@ -200,10 +200,10 @@ ConfigSpec readConfig(const Reader& r, const json& o, const std::string& path,
 }
 
 bool metricKnown(const std::string& m) {
-  static const std::set<std::string> known = {"error_pct",     "false_lit_pct", "false_shadow_pct",
-                                              "aliasing_mean", "aliasing_p95",  "aliasing_max",
-                                              "flicker_pct",   "total_ms",      "shadow_ms",
-                                              "bytes",         "texels"};
+  static const std::set<std::string> known = {
+      "error_pct",     "error_near_pct", "error_far_pct", "false_lit_pct", "false_shadow_pct",
+      "aliasing_mean", "aliasing_p95",   "aliasing_max",  "flicker_pct",   "total_ms",
+      "shadow_ms",     "bytes",          "texels"};
   return known.count(m) || m.rfind("pass:", 0) == 0 || m.rfind("pass_share:", 0) == 0;
 }
 
@@ -362,7 +362,8 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
   if (!metricKnown(m.metric))
     r.fail(jsonPath(path, "metric"),
            "unknown '" + m.metric +
-               "' (error_pct, false_lit_pct, false_shadow_pct, aliasing_mean, aliasing_p95, "
+               "' (error_pct, error_near_pct, error_far_pct, false_lit_pct, false_shadow_pct, "
+               "aliasing_mean, aliasing_p95, "
                "aliasing_max, flicker_pct, total_ms, shadow_ms, bytes, texels, pass:NAME, "
                "pass_share:NAME; NAME may be PREFIX* or NAME+NAME)");
   if (m.configs.size() == 2 && sameConfiguration(m.configs[0], m.configs[1]))
@@ -389,6 +390,8 @@ Measurement readMeasurement(const Reader& r, const json& o, const std::string& p
 
 double metricOf(const ConfigSummary& s, const std::string& metric) {
   if (metric == "error_pct") return s.errorPct;
+  if (metric == "error_near_pct") return s.errorNearPct;
+  if (metric == "error_far_pct") return s.errorFarPct;
   if (metric == "false_lit_pct") return s.falseLitPct;
   if (metric == "false_shadow_pct") return s.falseShadowPct;
   if (metric == "aliasing_mean") return s.aliasingMean;

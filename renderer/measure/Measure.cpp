@@ -265,6 +265,8 @@ FrameSample ConfigRunner::renderAndMeasure(const Camera& camera, const MeasureOp
     const std::vector<std::uint8_t>& ref = reference->evaluate(frame, r.light());
     s.hasReference = true;
     s.error = compareShadowMasks(frame.hardMask, ref);
+    s.errorByDistance =
+        splitErrorByDistance(frame.hardMask, ref, frame.positions, r.camera().position);
     if (options.keepImages) {
       s.color = frame.color;
       s.errorImage = makeErrorImage(frame.color, frame.hardMask, ref);
@@ -296,7 +298,7 @@ ConfigSummary summarise(const std::vector<FrameSample>& all) {
   if (frames.empty()) {  // a failed configuration: nothing measured
     const double nan = std::numeric_limits<double>::quiet_NaN();
     s.totalMs = s.texels = s.bytes = s.covered = nan;
-    s.errorPct = s.falseLitPct = s.falseShadowPct = nan;
+    s.errorPct = s.falseLitPct = s.falseShadowPct = s.errorNearPct = s.errorFarPct = nan;
     s.aliasingMean = s.aliasingP95 = s.aliasingMax = s.flickerPct = nan;
     s.lightAreaM2 = s.halfMassX = s.halfMassY = s.rotationDeg = s.anisotropy = nan;
     return s;
@@ -326,6 +328,10 @@ ConfigSummary summarise(const std::vector<FrameSample>& all) {
   s.falseShadowPct =
       medOver(hasCovered, [](const FrameSample& f) { return f.error.falseShadowPct; });
   s.covered = medOver(hasCovered, [](const FrameSample& f) { return f.error.covered; });
+  s.errorNearPct = medOver([](const FrameSample& f) { return f.errorByDistance.nearCovered > 0; },
+                           [](const FrameSample& f) { return f.errorByDistance.nearErrorPct; });
+  s.errorFarPct = medOver([](const FrameSample& f) { return f.errorByDistance.farCovered > 0; },
+                          [](const FrameSample& f) { return f.errorByDistance.farErrorPct; });
   if (!std::isfinite(s.covered)) s.covered = 0.0;
   // Aliasing over the frames with a pixel to summarise, flicker over the consecutive frames
   // that compared one.

@@ -82,6 +82,7 @@ struct FrameSample {
   std::uint64_t texels = 0, bytes = 0;
   bool hasReference = false;
   ShadowErrorStats error;                ///< against the reference (when hasReference)
+  DistanceSplitError errorByDistance;    ///< the same, nearer and farther than the median
   AliasingStats aliasing;                ///< m over covered pixels
   std::optional<MaskChange> maskChange;  ///< against this configuration's previous frame
   std::optional<FlickerStats> flicker;   ///< needs the reference of both frames
@@ -168,6 +169,9 @@ struct ConfigSummary {
   /// Over the frames with a covered pixel; NaN (not measured) when none had one. `covered`
   /// is the median over the same frames: 0 exactly when the error was measured on none.
   double errorPct = 0, falseLitPct = 0, falseShadowPct = 0, covered = 0;
+  /// The error of the covered pixels at or nearer than each frame's median distance from the
+  /// camera, and beyond it (DistanceSplitError); NaN when not measured.
+  double errorNearPct = 0, errorFarPct = 0;
   /// m over the frames with a covered pixel that has a shadow-map coordinate; NaN when none.
   double aliasingMean = 0, aliasingP95 = 0, aliasingMax = 0;
   /// Over the consecutive frames that compared a covered pixel; NaN when none (one frame).

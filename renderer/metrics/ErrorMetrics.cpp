@@ -5,6 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 namespace sl {
 
@@ -32,6 +35,43 @@ ShadowErrorStats compareShadowMasks(std::span<const std::uint8_t> technique,
     s.falseShadowPct = scale * double(s.falseShadow);
     s.errorPct = scale * double(s.falseLit + s.falseShadow);
   }
+  return s;
+}
+
+DistanceSplitError splitErrorByDistance(std::span<const std::uint8_t> technique,
+                                        std::span<const std::uint8_t> reference,
+                                        std::span<const glm::vec4> positions, glm::vec3 eye) {
+  if (technique.size() != reference.size() || positions.size() != reference.size())
+    throw std::invalid_argument("splitErrorByDistance: technique mask has " +
+                                std::to_string(technique.size()) + " pixels, reference " +
+                                std::to_string(reference.size()) + ", positions " +
+                                std::to_string(positions.size()));
+  DistanceSplitError s;
+  auto covered = [&](std::size_t i) {
+    return technique[i] != kMaskUncovered && reference[i] != kMaskUncovered &&
+           positions[i].w > 0.0f;
+  };
+  std::vector<double> distance(technique.size(), 0.0);
+  std::vector<double> sorted;
+  for (std::size_t i = 0; i < technique.size(); ++i)
+    if (covered(i)) {
+      distance[i] = double(glm::length(glm::vec3(positions[i]) - eye));
+      sorted.push_back(distance[i]);
+    }
+  if (sorted.empty()) return s;
+  // The lower median: with an even count the far set is the upper half exactly.
+  const auto mid = sorted.begin() + std::ptrdiff_t((sorted.size() - 1) / 2);
+  std::nth_element(sorted.begin(), mid, sorted.end());
+  s.medianDistanceM = *mid;
+  for (std::size_t i = 0; i < technique.size(); ++i) {
+    if (!covered(i)) continue;
+    const bool wrong = (technique[i] != kMaskShadowed) != (reference[i] != kMaskShadowed);
+    const bool far = distance[i] > s.medianDistanceM;
+    (far ? s.farCovered : s.nearCovered) += 1;
+    (far ? s.farWrong : s.nearWrong) += wrong ? 1 : 0;
+  }
+  if (s.nearCovered) s.nearErrorPct = 100.0 * double(s.nearWrong) / double(s.nearCovered);
+  if (s.farCovered) s.farErrorPct = 100.0 * double(s.farWrong) / double(s.farCovered);
   return s;
 }
 

@@ -7,6 +7,9 @@
 #include <cstdint>
 #include <span>
 
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
 #include "common/shared_constants.h"
 #include "metrics/Image.h"
 
@@ -34,6 +37,24 @@ struct ShadowErrorStats {
 /// Throws std::invalid_argument when the sizes differ. No covered pixel: all zero.
 ShadowErrorStats compareShadowMasks(std::span<const std::uint8_t> technique,
                                     std::span<const std::uint8_t> reference);
+
+/// The error split by distance from the camera (the DA-RTW poster's "regions distant to the
+/// camera"): the pixels covered in both masks at or nearer than their (lower) median distance,
+/// and those beyond it. The split comes from the frame's geometry alone, so two techniques
+/// rendering the same frame are split alike (their errors pair pixel set by pixel set).
+struct DistanceSplitError {
+  double medianDistanceM = 0.0;  ///< the median distance of the covered pixels (0: none)
+  std::size_t nearCovered = 0, farCovered = 0;
+  std::size_t nearWrong = 0, farWrong = 0;
+  double nearErrorPct = 0.0;  ///< 100 * nearWrong / nearCovered, 0 when none
+  double farErrorPct = 0.0;   ///< 100 * farWrong / farCovered, 0 when none
+};
+
+/// `positions`: the frame's world positions (w > 0: covered), the masks' pixel order; `eye`:
+/// the camera's position. Throws std::invalid_argument when the sizes differ.
+DistanceSplitError splitErrorByDistance(std::span<const std::uint8_t> technique,
+                                        std::span<const std::uint8_t> reference,
+                                        std::span<const glm::vec4> positions, glm::vec3 eye);
 
 /// Colours of the error image (opaque RGBA).
 inline constexpr Rgba8 kFalseLitColor = {255, 0, 255, 255};     ///< magenta: light leak

@@ -27,6 +27,42 @@ TEST(ErrorMetrics, ExactCounts) {
   EXPECT_DOUBLE_EQ(s.falseShadowPct, 25.0);
 }
 
+TEST(ErrorMetrics, SplitByDistanceHalvesTheCoveredPixels) {
+  // Six covered pixels at 1..6 m from the eye (one uncovered): the lower median is 3 m, so
+  // 1, 2, 3 m are near and 4, 5, 6 m far. Wrong: the pixel at 2 m (false lit) and those at
+  // 5 and 6 m (false shadowed).
+  const glm::vec3 eye(1.0f, 2.0f, 3.0f);
+  std::vector<glm::vec4> positions;
+  for (float d : {4.0f, 1.0f, 6.0f, 0.0f, 2.0f, 5.0f, 3.0f})
+    positions.push_back(glm::vec4(eye + glm::vec3(0.0f, 0.0f, -d), d > 0.0f ? 1.0f : 0.0f));
+  //                                  4 m  1 m  6 m  none 2 m  5 m  3 m
+  const std::vector<std::uint8_t> technique{L, S, S, U, L, S, L};
+  const std::vector<std::uint8_t> reference{L, S, L, U, S, L, L};
+  const DistanceSplitError s = splitErrorByDistance(technique, reference, positions, eye);
+  EXPECT_DOUBLE_EQ(s.medianDistanceM, 3.0);
+  EXPECT_EQ(s.nearCovered, 3u);
+  EXPECT_EQ(s.farCovered, 3u);
+  EXPECT_EQ(s.nearWrong, 1u);
+  EXPECT_EQ(s.farWrong, 2u);
+  EXPECT_DOUBLE_EQ(s.nearErrorPct, 100.0 / 3.0);
+  EXPECT_DOUBLE_EQ(s.farErrorPct, 200.0 / 3.0);
+  // The whole frame's error is the two halves' together.
+  const ShadowErrorStats all = compareShadowMasks(technique, reference);
+  EXPECT_EQ(all.falseLit + all.falseShadow, s.nearWrong + s.farWrong);
+  EXPECT_EQ(all.covered, s.nearCovered + s.farCovered);
+}
+
+TEST(ErrorMetrics, SplitByDistanceOfNothingIsZeroAndSizesMustMatch) {
+  const std::vector<std::uint8_t> none{U, U};
+  const std::vector<glm::vec4> positions(2, glm::vec4(0.0f));
+  const DistanceSplitError s = splitErrorByDistance(none, none, positions, glm::vec3(0.0f));
+  EXPECT_EQ(s.nearCovered + s.farCovered, 0u);
+  EXPECT_EQ(s.nearErrorPct, 0.0);
+  EXPECT_EQ(s.farErrorPct, 0.0);
+  const std::vector<glm::vec4> one(1, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  EXPECT_THROW(splitErrorByDistance(none, none, one, glm::vec3(0.0f)), std::invalid_argument);
+}
+
 TEST(ErrorMetrics, PerfectMatchIsZero) {
   const std::vector<std::uint8_t> mask{L, S, U, L};
   const ShadowErrorStats s = compareShadowMasks(mask, mask);

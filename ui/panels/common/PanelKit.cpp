@@ -940,6 +940,7 @@ WrappedLabel::WrappedLabel(QWidget* parent) : QLabel(parent) {
 QSize WrappedLabel::minimumSizeHint() const {
   // Its width as laid out (its size hint's before a layout set one): setText invalidates the
   // layout, which asks again.
+  if (!asksReadableMinimum(*this)) return QLabel::minimumSizeHint();
   const int w = testAttribute(Qt::WA_Resized) ? width() : sizeHint().width();
   wrappedHeight_ = text().isEmpty() ? 0 : heightForWidth(w);
   return {QLabel::minimumSizeHint().width(), std::max(0, wrappedHeight_)};
@@ -948,7 +949,8 @@ QSize WrappedLabel::minimumSizeHint() const {
 void WrappedLabel::resizeEvent(QResizeEvent* event) {
   QLabel::resizeEvent(event);
   // Narrower: more lines (wider: fewer); the layout is told when the count changes.
-  if (!text().isEmpty() && heightForWidth(width()) != wrappedHeight_) updateGeometry();
+  if (asksReadableMinimum(*this) && !text().isEmpty() && heightForWidth(width()) != wrappedHeight_)
+    updateGeometry();
 }
 
 BesideWhenWide::BesideWhenWide(QWidget* first, QWidget* second, int secondEms, QWidget* parent)
@@ -1031,6 +1033,7 @@ void setReadableMinimums(QWidget& panel, bool on) {
   panel.setProperty(kReadableMinimumProperty, on);
   for (PlotWidget* plot : panel.findChildren<PlotWidget*>()) plot->updateReadableMinimum();
   for (ImageView* image : panel.findChildren<ImageView*>()) image->updateReadableMinimum();
+  for (WrappedLabel* label : panel.findChildren<WrappedLabel*>()) label->updateGeometry();
   if (auto* p = qobject_cast<PublicationPanel*>(&panel)) p->readableMinimumsChanged();
   for (PublicationPanel* p : panel.findChildren<PublicationPanel*>()) p->readableMinimumsChanged();
 }

@@ -268,10 +268,11 @@ class PlotWidget : public QWidget {
 
 // --- WrappedLabel --------------------------------------------------------------------------
 
-/// A word-wrapped label (a panel's table or notes) whose minimum height is its text wrapped to
-/// its current width: QLabel's own is a line or so, so a layout (and a presenter's window,
-/// which fits its panels by their minimum sizes) squeezed it, or the plots and images beside
-/// it, to make room for the lines it really needs.
+/// A word-wrapped label (a panel's table or notes) whose minimum height, inside a panel that
+/// asks for readable sizes (setReadableMinimums), is its text wrapped to its current width:
+/// QLabel's own is a line or so, so a presenter's window (which fits its panels by their
+/// minimum sizes) squeezed it, or the plots and images beside it, to make room for the lines
+/// it really needs. Elsewhere QLabel's own (a narrow panel is not held tall).
 class WrappedLabel : public QLabel {
   Q_OBJECT
 

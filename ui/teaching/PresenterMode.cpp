@@ -230,6 +230,7 @@ void PresenterMode::arrangeDocks() {
   keptOnScreen_ = 0;
   fedSinceArranged_ = 0;
   askedSettled_ = false;
+  panelShare_ = kPanelShare;
   big_ = pickBigDock();
   // Everything but the big panel hidden; the Lesson and Parameters tabbed behind it (a
   // lecturer's notes and knobs, one click away).
@@ -325,20 +326,32 @@ void PresenterMode::askReadableSettled() {
 }
 
 bool PresenterMode::askReadable() {
-  // At its share of the width (titles and captions wrap to it): where the big panel at its
-  // readable size makes the window taller (or wider) than the screen, it takes what there is,
-  // and the lesson says it is too small to read (LessonController::reportFit).
+  // At its share of the width (titles and captions wrap to it), widened step by step up to
+  // kMaxPanelShare while that does not fit: where the big panel at its readable size makes
+  // the window taller (or wider) than the screen even then, it takes what there is at its
+  // first share, and the lesson says it is too small to read (LessonController::reportFit).
   if (!big_) return false;
   setReadableMinimums(*big_, true);
   layOutNow(w_);
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
   const QSize screenSize = screen ? screen->geometry().size() : QSize();
-  const QSize least = w_.minimumSizeHint();
-  if (screenSize.isEmpty() ||
-      (least.height() <= screenSize.height() && least.width() <= screenSize.width()))
-    return true;
+  const auto fits = [&] {
+    const QSize least = w_.minimumSizeHint();
+    return least.height() <= screenSize.height() && least.width() <= screenSize.width();
+  };
+  if (screenSize.isEmpty() || fits()) return true;
+  if (!fullPanel_)
+    while (panelShare_ + kPanelShareStep <= kMaxPanelShare + 1e-9) {
+      panelShare_ += kPanelShareStep;
+      sizeBigDock();
+      layOutNow(w_);  // the panel laid out again at its new width (its rows, its columns)
+      layOutNow(w_);
+      if (fits()) return true;
+    }
+  panelShare_ = kPanelShare;
   setReadableMinimums(*big_, false);
   layOutNow(w_);
+  sizeBigDock();
   if (w_.height() > screenSize.height() || w_.width() > screenSize.width()) fitScreen();
   return false;
 }
@@ -348,7 +361,7 @@ void PresenterMode::keepOnScreen() {
   layOutNow(w_);  // the panels' new content measured: what the checks below read
   if (big_ && fedSinceArranged_ < kFeedsResized) {
     ++fedSinceArranged_;
-    if (big_->width() > int(w_.width() * kPanelShare) + 1) resizeView([this] { sizeBigDock(); });
+    if (big_->width() > int(w_.width() * panelShare_) + 1) resizeView([this] { sizeBigDock(); });
   }
   const QScreen* screen = w_.screen() ? w_.screen() : QGuiApplication::primaryScreen();
   if (!screen) return;
@@ -383,7 +396,7 @@ void PresenterMode::fitScreen() {
 
 void PresenterMode::sizeBigDock() {
   if (!big_) return;
-  const double share = fullPanel_ ? 1.0 : kPanelShare;
+  const double share = fullPanel_ ? 1.0 : panelShare_;
   w_.resizeDocks({big_}, {int(w_.width() * share)}, Qt::Horizontal);
 }
 

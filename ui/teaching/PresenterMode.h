@@ -69,6 +69,13 @@ class PresenterMode : public QObject {
   static constexpr double kMinBigPanelShare = 0.6;
   /// Share of the window's width the big panel takes.
   static constexpr double kPanelShare = 0.42;
+  /// Where its plots and images do not read at that width (the window would be taller than
+  /// the screen), the big panel is widened in steps of kPanelShareStep up to this share
+  /// before it gives up its readable size: a panel that lays its content out by its width
+  /// (Partitions' maps in one row, the Covariance panel's numbers in two columns) may then
+  /// be short enough; the view keeps the rest.
+  static constexpr double kMaxPanelShare = 0.6;
+  static constexpr double kPanelShareStep = 0.03;
 
   /// After a frame: the first few frames after an arrangement give the big panel its share of
   /// the width again where its content, filled now, allows it (a panel still holding the last
@@ -106,6 +113,7 @@ class PresenterMode : public QObject {
   QList<QWidget*> hiddenForPanel_;  ///< tool bars and status line the full panel hid
   QMenu* panelMenu_ = nullptr;
   bool active_ = false;
+  double panelShare_ = kPanelShare;  ///< the big panel's share of the width (askReadable)
   QString chosen_;            ///< View > Presenter panel (dock object name), empty: automatic
   QString lessonPanel_;       ///< the applied layout's large panel (dock object name), or empty
   QStringList lessonOthers_;  ///< the layout's other docks (object names)

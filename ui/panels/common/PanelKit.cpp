@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <QLabel>
+#include <QBoxLayout>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -932,6 +933,55 @@ QString PublicationPanel::placeholderShown() const {
   return stack_->currentIndex() == 0 ? placeholder_->text() : QString();
 }
 
+WrappedLabel::WrappedLabel(QWidget* parent) : QLabel(parent) {
+  setWordWrap(true);
+}
+
+QSize WrappedLabel::minimumSizeHint() const {
+  // Its width as laid out (its size hint's before a layout set one): setText invalidates the
+  // layout, which asks again.
+  if (!asksReadableMinimum(*this)) return QLabel::minimumSizeHint();
+  const int w = testAttribute(Qt::WA_Resized) ? width() : sizeHint().width();
+  wrappedHeight_ = text().isEmpty() ? 0 : heightForWidth(w);
+  return {QLabel::minimumSizeHint().width(), std::max(0, wrappedHeight_)};
+}
+
+void WrappedLabel::resizeEvent(QResizeEvent* event) {
+  QLabel::resizeEvent(event);
+  // Narrower: more lines (wider: fewer); the layout is told when the count changes.
+  if (asksReadableMinimum(*this) && !text().isEmpty() && heightForWidth(width()) != wrappedHeight_)
+    updateGeometry();
+}
+
+BesideWhenWide::BesideWhenWide(QWidget* first, QWidget* second, int secondEms, QWidget* parent)
+    : QWidget(parent), first_(first), second_(second), secondEms_(secondEms) {
+  auto* box = new QBoxLayout(QBoxLayout::TopToBottom, this);
+  box->setContentsMargins(0, 0, 0, 0);
+  box->addWidget(first, 1);
+  box->addWidget(second, 0);
+}
+
+bool BesideWhenWide::beside() const {
+  return static_cast<QBoxLayout*>(layout())->direction() == QBoxLayout::LeftToRight;
+}
+
+QSize BesideWhenWide::minimumSizeHint() const {
+  const QSize least = QWidget::minimumSizeHint();
+  const int under = std::max(first_->minimumSizeHint().width(), second_->minimumSizeHint().width());
+  return {std::min(least.width(), under), least.height()};
+}
+
+void BesideWhenWide::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  auto* box = static_cast<QBoxLayout*>(layout());
+  const int firstWidth = std::max(first_->sizeHint().width(), first_->minimumSizeHint().width());
+  const bool wide = width() >= firstWidth + std::max(0, box->spacing()) +
+                                   secondEms_ * fontMetrics().averageCharWidth();
+  if (wide == beside()) return;
+  box->setDirection(wide ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+  box->setStretchFactor(second_, wide ? 1 : 0);  // beside: the notes share the width
+}
+
 PanelColumn newPanelColumn() {
   auto* content = new QWidget;
   auto* layout = new QVBoxLayout(content);
@@ -983,6 +1033,7 @@ void setReadableMinimums(QWidget& panel, bool on) {
   panel.setProperty(kReadableMinimumProperty, on);
   for (PlotWidget* plot : panel.findChildren<PlotWidget*>()) plot->updateReadableMinimum();
   for (ImageView* image : panel.findChildren<ImageView*>()) image->updateReadableMinimum();
+  for (WrappedLabel* label : panel.findChildren<WrappedLabel*>()) label->updateGeometry();
   if (auto* p = qobject_cast<PublicationPanel*>(&panel)) p->readableMinimumsChanged();
   for (PublicationPanel* p : panel.findChildren<PublicationPanel*>()) p->readableMinimumsChanged();
 }

@@ -13,6 +13,7 @@
 
 #include <QImage>
 #include <QJsonObject>
+#include <QLabel>
 #include <QPointF>
 #include <QString>
 #include <QStringList>
@@ -20,7 +21,6 @@
 
 #include "core/Renderer.h"
 
-class QLabel;
 class QStackedWidget;
 class QVBoxLayout;
 
@@ -264,6 +264,49 @@ class PlotWidget : public QWidget {
   bool highlighted_ = false;
   mutable int readableMinimumHeight_ = 0;  ///< the last readableMinimumHeight() told, 0: none
   int hoverX_ = -1;
+};
+
+// --- WrappedLabel --------------------------------------------------------------------------
+
+/// A word-wrapped label (a panel's table or notes) whose minimum height, inside a panel that
+/// asks for readable sizes (setReadableMinimums), is its text wrapped to its current width:
+/// QLabel's own is a line or so, so a presenter's window (which fits its panels by their
+/// minimum sizes) squeezed it, or the plots and images beside it, to make room for the lines
+/// it really needs. Elsewhere QLabel's own (a narrow panel is not held tall).
+class WrappedLabel : public QLabel {
+  Q_OBJECT
+
+ public:
+  explicit WrappedLabel(QWidget* parent = nullptr);
+  QSize minimumSizeHint() const override;
+
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
+ private:
+  mutable int wrappedHeight_ = -1;  ///< the last minimum height the layout was told of
+};
+
+/// Two parts of a panel side by side where it is wide enough for the first at its usual width
+/// (its size hint's, or its minimum's if larger) and the second at least `secondEms` wide (em:
+/// the font's average character), else the second under the first: a wide panel (a
+/// presenter's, short for its content) reads its notes beside its image, a narrow one under it.
+class BesideWhenWide : public QWidget {
+  Q_OBJECT
+
+ public:
+  BesideWhenWide(QWidget* first, QWidget* second, int secondEms, QWidget* parent = nullptr);
+  bool beside() const;
+  /// As wide as the parts under each other need: a panel that narrows puts them so again.
+  QSize minimumSizeHint() const override;
+
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
+ private:
+  QWidget* first_;
+  QWidget* second_;
+  int secondEms_;
 };
 
 // --- Panels --------------------------------------------------------------------------------

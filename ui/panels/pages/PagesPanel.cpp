@@ -69,6 +69,8 @@ QString legendText(std::initializer_list<pages::PageState> states) {
   }
   return parts.join(QStringLiteral(", "));
 }
+
+constexpr int kInfoEms = 30;  ///< the least width (em) the counts are put beside the image at
 }  // namespace
 
 PagesPanel::PagesPanel(QWidget* parent) : PublicationPanel(parent) {
@@ -88,18 +90,19 @@ PagesPanel::PagesPanel(QWidget* parent) : PublicationPanel(parent) {
   layout->addLayout(row);
   view_ = new ImageView;
   view_->setObjectName(QStringLiteral("pagesImage"));
-  layout->addWidget(view_, 1);
   use_ = new PlotWidget;
   use_->setObjectName(QStringLiteral("pagesUse"));
   use_->setTitle(tr("Pool use over time"));
   use_->setAxisLabels(tr("frame"), tr("pages"));
   use_->setPlaceholder(tr("no frames yet"));
   layout->addWidget(use_);
-  info_ = new QLabel;
+  info_ = new WrappedLabel;
   info_->setObjectName(QStringLiteral("pagesInfo"));
-  info_->setWordWrap(true);
   info_->setTextFormat(Qt::RichText);
-  layout->addWidget(info_);
+  info_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  // The counts and the table's colours beside the image where the panel is wide, else under
+  // it; the pool's use over time at the bottom.
+  layout->insertWidget(layout->indexOf(use_), new BesideWhenWide(view_, info_, kInfoEms), 1);
   setContent(content);
   connect(viewChoice_, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
   connect(level_, &QSpinBox::valueChanged, this, [this] { redraw(); });

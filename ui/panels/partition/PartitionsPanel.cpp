@@ -63,7 +63,7 @@ PartitionsPanel::PartitionsPanel(QWidget* parent) : PublicationPanel(parent) {
   maps_ = new QGridLayout;
   maps_->setSpacing(kMapSpacing);
   layout->addLayout(maps_, 1);
-  table_ = new QLabel;
+  table_ = new WrappedLabel;
   table_->setObjectName(QStringLiteral("partitionTable"));
   table_->setTextFormat(Qt::RichText);
   table_->setWordWrap(true);

@@ -24,6 +24,7 @@
 
 #include "algo/rtw/Moments.h"
 #include "algo/rtw/TurnPrediction.h"
+#include "panels/common/ReadoutGrid.h"
 #include "window/Theme.h"
 
 namespace sl::ui {
@@ -31,6 +32,8 @@ namespace sl::ui {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinOneMinusEx = 1e-9;  ///< floor of 1 - e_x on the log scales
+constexpr int kContentMargin = 4;        ///< px: newPanelColumn's margins
+constexpr int kMiddleSpacing = 6;        ///< px between the image and its numbers
 
 double numberOr(const std::map<std::string, double>& numbers, const std::string& key,
                 double fallback) {
@@ -195,15 +198,18 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   });
   outer->addWidget(gauge_);
   auto* middle = new QHBoxLayout;
+  middle->setSpacing(kMiddleSpacing);
+  imageColumn_ = new QVBoxLayout;
+  numbersColumn_ = new QVBoxLayout;
+  middle->addLayout(imageColumn_, 1);
+  middle->addLayout(numbersColumn_);
   view_ = new ImageView;
   view_->setObjectName(QStringLiteral("covarianceView"));
-  middle->addWidget(view_, 3);
-  // The numbers, each defined in its tooltip (the same text on its name and its value).
-  numbers_ = new QWidget;
+  imageColumn_->addWidget(view_, 1);
+  // The numbers, each defined in its tooltip (the same text on its name and its value): in two
+  // columns where the panel is wide (arrangeNumbers), the image taking the rest of the width.
+  numbers_ = new ReadoutGrid;
   numbers_->setObjectName(QStringLiteral("covarianceNumbers"));
-  auto* grid = new QGridLayout(numbers_);
-  grid->setContentsMargins(0, 0, 0, 0);
-  grid->setVerticalSpacing(1);
   const struct {
     const char* key;
     const char* name;
@@ -245,20 +251,16 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
        "The area of the light frustum this frame's map covers, in m² (light.fit: tight re-fits it "
        "in the rotated frame, so it changes with the angle; rotation-invariant keeps it)."},
   };
-  int line = 0;
   for (const auto& r : rows) {
     Row row{new QLabel(tr(r.name)), new QLabel};
     row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     row.value->setTextInteractionFlags(Qt::TextSelectableByMouse);
     row.value->setObjectName(QStringLiteral("covariance_%1").arg(QLatin1String(r.key)));
     for (QLabel* l : {row.name, row.value}) l->setToolTip(tr(r.help));
-    grid->addWidget(row.name, line, 0);
-    grid->addWidget(row.value, line, 1);
-    ++line;
+    numbers_->addRow(row.name, row.value);
     rows_[QLatin1String(r.key)] = row;
   }
-  grid->setRowStretch(line, 1);
-  middle->addWidget(numbers_, 2);
+  numbersColumn_->addWidget(numbers_, 1);
   outer->addLayout(middle, 2);
   // The turn prediction: its curve, the marked angles, the measured sweep on request.
   predictionPlot_ = new PlotWidget;
@@ -274,7 +276,10 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
          "wrong in proportion to the texel's width across its edge. 1 = the current frame. "
          "rotation.mode = predicted turns to the lowest point when it is lower by more than "
          "rotation.margin."));
-  auto* measureRow = new QHBoxLayout;
+  // Under the image or under the numbers, whichever is shorter (arrangeNumbers).
+  measureRow_ = new QWidget;
+  auto* measureRow = new QHBoxLayout(measureRow_);
+  measureRow->setContentsMargins(0, 0, 0, 0);
   measureButton_ = new QPushButton(tr("Measure the error at these turns"));
   measureButton_->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Fixed);
   measureButton_->setObjectName(QStringLiteral("covarianceMeasure"));
@@ -301,8 +306,32 @@ CovariancePanel::CovariancePanel(QWidget* parent) : PublicationPanel(parent) {
   plots->addWidget(anglePlot_, 1);
   plots->addWidget(exPlot_, 1);
   outer->addLayout(plots, 3);
-  outer->addLayout(measureRow);
+  numbersColumn_->addWidget(measureRow_);
   setContent(content);
+}
+
+void CovariancePanel::resizeEvent(QResizeEvent* event) {
+  PublicationPanel::resizeEvent(event);
+  arrangeNumbers();
+}
+
+void CovariancePanel::readableMinimumsChanged() {
+  arrangeNumbers();
+}
+
+void CovariancePanel::arrangeNumbers() {
+  // Two columns of numbers where the image keeps at least its usual width (or its readable
+  // one, the larger) beside them: the middle row half as tall, for the plots below it.
+  const int image = std::max(view_->sizeHint().width(), view_->minimumSizeHint().width());
+  numbers_->fitColumns(width() - 2 * kContentMargin - image - kMiddleSpacing);
+  // The measure button under the shorter of the two (at their least), in the room the taller
+  // one leaves beside it: a wide image is short, two columns of numbers are.
+  QVBoxLayout* under = view_->minimumSizeHint().height() < numbers_->minimumSizeHint().height()
+                           ? imageColumn_
+                           : numbersColumn_;
+  if (under->indexOf(measureRow_) >= 0) return;
+  (under == imageColumn_ ? numbersColumn_ : imageColumn_)->removeWidget(measureRow_);
+  under->addWidget(measureRow_);
 }
 
 void CovariancePanel::resetHistory() {
@@ -745,6 +774,7 @@ void CovariancePanel::setRow(const QString& key, const QString& value) {
   it->second.name->setVisible(!value.isEmpty());
   it->second.value->setVisible(!value.isEmpty());
   drawn_[QStringLiteral("shown.") + key] = value;
+  arrangeNumbers();  // a wider value may need one column again
 }
 
 void CovariancePanel::updateHistoryPlots() {

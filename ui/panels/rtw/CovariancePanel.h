@@ -20,9 +20,11 @@
 
 class QLabel;
 class QPushButton;
+class QVBoxLayout;
 
 namespace sl::ui {
 
+class ReadoutGrid;
 class ThresholdGauge;
 
 class CovariancePanel : public PublicationPanel {
@@ -55,8 +57,15 @@ class CovariancePanel : public PublicationPanel {
   /// and the point of it where a click sets 1 - threshold = `oneMinusThreshold`.
   QWidget* thresholdGauge() const;
   QPoint thresholdGaugePoint(double oneMinusThreshold) const;
+  void readableMinimumsChanged() override;
+
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
+  /// The numbers in two columns where the panel is wide enough beside the image, else one;
+  /// the measure button under the shorter of the two.
+  void arrangeNumbers();
   void updateHistoryPlots();
   /// The prediction plot: the predicted score over the angle relative to the current
   /// frame's, the markers, and the measured errors relative to the current angle's.
@@ -73,7 +82,10 @@ class CovariancePanel : public PublicationPanel {
   void setRow(const QString& key, const QString& value);
 
   ImageView* view_ = nullptr;
-  QWidget* numbers_ = nullptr;
+  ReadoutGrid* numbers_ = nullptr;
+  QVBoxLayout* imageColumn_ = nullptr;    ///< the image, maybe the measure row under it
+  QVBoxLayout* numbersColumn_ = nullptr;  ///< the numbers, maybe the measure row under them
+  QWidget* measureRow_ = nullptr;         ///< the measure button and its status
   std::map<QString, Row> rows_;
   QLabel* state_ = nullptr;
   ThresholdGauge* gauge_ = nullptr;

@@ -175,13 +175,13 @@ void PresenterMode::setActive(bool on) {
     // e.g. Xvfb, ignores the full-screen request), full screen, the big panel's width.
     arrangeDocks();
     fitScreen();
-    w_.viewport()->setPointerHighlight(true);
+    w_.viewport()->painter()->setPointerHighlight(true);
     w_.viewport()->frames()->setPresenting(true);  // full-size frames only: numbers a class reads
   } else {
     setFullPanel(false);
     active_ = false;
     for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) setReadableMinimums(*dock, false);
-    w_.viewport()->setPointerHighlight(false);
+    w_.viewport()->painter()->setPointerHighlight(false);
     w_.viewport()->frames()->setPresenting(false);
     if (app) {
       applyTheme(*app);

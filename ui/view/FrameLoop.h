@@ -25,14 +25,10 @@
 #include "algo/AdaptiveResolution.h"
 #include "core/Renderer.h"
 #include "service/ViewFrame.h"
-
-class QWidget;
+#include "view/ViewParts.h"
 
 namespace sl::ui {
 
-struct ViewModel;
-class CameraController;
-class MeasureService;
 class RenderService;
 
 class FrameLoop : public QObject {

@@ -23,14 +23,9 @@
 #include "metrics/AsyncReference.h"
 #include "service/LiveReference.h"
 #include "service/ViewFrame.h"
-
-class QWidget;
+#include "view/ViewParts.h"
 
 namespace sl::ui {
-
-struct ViewModel;
-class CameraController;
-class FrameLoop;
 
 class MeasureService : public QObject {
   Q_OBJECT

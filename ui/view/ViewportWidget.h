@@ -7,7 +7,7 @@
 //  - FrameLoop: frame requests to the render service and what comes back (pause and step,
 //    the split view, adaptive resolution, continuous rendering);
 //  - MeasureService: the error against the exact reference, live references, hover probes;
-//  - the widget itself paints the frame with its overlay (ViewOverlay: banner, legends, split
+//  - ViewPainter: the frame shown and its overlay (ViewOverlay: banner, legends, split
 //    captions, notes, zoom inset, pointer ring, light gizmo).
 // The UI thread never calls GL and never waits on a frame.
 #pragma once
@@ -28,10 +28,10 @@
 #include "view/FrameLoop.h"
 #include "view/MeasureService.h"
 #include "view/ViewModel.h"
+#include "view/ViewPainter.h"
 
 namespace sl::ui {
 
-class ViewOverlay;
 class RenderService;
 
 class ViewportWidget : public QWidget {
@@ -73,14 +73,9 @@ class ViewportWidget : public QWidget {
   /// The error against the exact reference, live references, hover probes, figures.
   MeasureService* measure() const { return measure_; }
 
-  /// Presenter mode: a ring follows the mouse over the view (the pointer highlight).
-  void setPointerHighlight(bool on);
-  /// The zoom inset: `area` of the view (widget pixels) magnified by a whole factor,
-  /// nearest neighbour, into the bottom-right corner; nothing: off. Ctrl+Shift+drag over the
-  /// view sets it, Ctrl+Shift+click clears it.
-  void setZoomArea(const std::optional<QRect>& area);
-  /// A banner over the top of the view (lesson title, pass being stepped); empty: none.
-  void setBanner(const QString& title, const QString& text);
+  /// The frame and its overlay drawn: banner, pointer ring, zoom inset, captions, notes.
+  ViewPainter* painter() const { return painter_; }
+
   /// The view as shown, with the split half, captions, banner and legends (for PNGs).
   QImage grabView();
 
@@ -125,18 +120,12 @@ class ViewportWidget : public QWidget {
 
  private:
   void serviceReady(const QString& description);
-  /// Puts the view model's state into the overlay (captions, legends, notes, badge, gizmo).
-  void updateOverlayWidget();
-  /// The zoom inset's source: the view as shown, in device pixels.
-  void updateZoomInset();
 
   ViewModel model_;  ///< the view's state, shared by its parts
   CameraController* camera_ = nullptr;
   FrameLoop* frames_ = nullptr;
   MeasureService* measure_ = nullptr;
-  ViewOverlay* overlay_ = nullptr;
-  bool pointerHighlight_ = false;
-  std::optional<QRect> zoomArea_;  ///< widget pixels
+  ViewPainter* painter_ = nullptr;
 };
 
 }  // namespace sl::ui

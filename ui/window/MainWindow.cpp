@@ -434,9 +434,9 @@ void MainWindow::updatePublishing() {
 
 void MainWindow::updateBanner() {
   if (!passes_->bannerTitle().isEmpty())
-    viewport_->setBanner(passes_->bannerTitle(), passes_->bannerText());
+    viewport_->painter()->setBanner(passes_->bannerTitle(), passes_->bannerText());
   else
-    viewport_->setBanner(lessons_->bannerTitle(), lessons_->bannerText());
+    viewport_->painter()->setBanner(lessons_->bannerTitle(), lessons_->bannerText());
 }
 
 void MainWindow::setPaused(bool paused) {

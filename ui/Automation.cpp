@@ -50,7 +50,7 @@ void Automation::whenReady(std::function<void()> ready, std::function<void(const
               failed(tr("the renderer failed to start"));
               return;
             }
-            if (!w_.rendererBound() || w_.viewport()->framesRendered() < 2 ||
+            if (!w_.rendererBound() || w_.viewport()->frames()->framesRendered() < 2 ||
                 w_.lessons()->settling()) {
               if (clock->elapsed() > timeoutMs) {
                 timer->stop();
@@ -58,7 +58,7 @@ void Automation::whenReady(std::function<void()> ready, std::function<void(const
                 failed(tr("the renderer did not start within %1 s").arg(timeoutMs / 1000));
                 return;
               }
-              w_.viewport()->requestFrame();
+              w_.viewport()->frames()->requestFrame();
               return;
             }
             timer->stop();
@@ -89,7 +89,7 @@ std::optional<QString> Automation::setParameter(const QString& keyEqualsValue) {
   if (!r) return tr("no renderer yet");
   if (auto e = assignParameter(r->params(), r->rendererParams(), keyEqualsValue.toStdString()))
     return QString::fromStdString(*e);
-  w_.viewport()->requestFrame();
+  w_.viewport()->frames()->requestFrame();
   return std::nullopt;
 }
 
@@ -142,7 +142,7 @@ bool Automation::waitForSettled(int timeoutMs) {
   QElapsedTimer clock;
   clock.start();
   while (w_.lessons()->settling()) {
-    w_.viewport()->requestFrame();
+    w_.viewport()->frames()->requestFrame();
     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     if (clock.elapsed() > timeoutMs) return false;
   }
@@ -174,7 +174,7 @@ QString Automation::sceneShown() const {
 }
 
 QString Automation::resolutionNote() const {
-  return w_.viewport()->resolutionNote();
+  return w_.viewport()->frames()->resolutionNote();
 }
 
 ViewportWidget::Readouts Automation::viewReadouts() const {
@@ -216,14 +216,14 @@ void Automation::setEqualMemory(bool on) {
 }
 
 QImage Automation::renderedFrame() const {
-  w_.viewport()->renderFullSizeNow(true);
-  return w_.viewport()->renderedImage();
+  w_.viewport()->frames()->renderFullSizeNow(true);
+  return w_.viewport()->frames()->renderedImage();
 }
 
 bool Automation::waitForProbe(int timeoutMs) {
   QElapsedTimer clock;
   clock.start();
-  while (w_.viewport()->probePending()) {
+  while (w_.viewport()->measure()->probePending()) {
     QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
     if (clock.elapsed() > timeoutMs) return false;
   }
@@ -236,7 +236,7 @@ namespace {
 template <typename T, typename Read>
 T readMain(ViewportWidget& view, Read read) {
   T out{};
-  view.readCurrentFrame([&](sl::Renderer& r) { out = read(r); });
+  view.measure()->readCurrentFrame([&](sl::Renderer& r) { out = read(r); });
   return out;
 }
 }  // namespace

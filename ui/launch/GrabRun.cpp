@@ -122,7 +122,7 @@ void GrabRun::tick() {
     return;
   }
   if (framesRendered_ < frames_ || w_.lessons()->settling()) {
-    w_.viewport()->requestFrame();
+    w_.viewport()->frames()->requestFrame();
     return;
   }
   timer_.stop();
@@ -133,9 +133,9 @@ void GrabRun::finish() {
   // The status line shows the error of the grabbed view. Then freeze the frame, so that
   // the window, the viewport, every panel and published.json show the same frame.
   ViewportWidget* viewport = w_.viewport();
-  viewport->computeErrorNow();
+  viewport->measure()->computeErrorNow();
   w_.waitForFrames(1);  // the error overlay, when on, needs a frame drawn with the reference
-  viewport->setPaused(true, false);
+  viewport->frames()->setPaused(true, false);
   QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
   if (const sl::ViewSide* r = viewport->mainSide()) w_.docks().feed(*r, true);
 
@@ -229,24 +229,25 @@ QJsonObject GrabRun::publicationJson() const {
   o[QStringLiteral("docks_in_view")] = inView;
   // A failed frame has no time (null, frame_failure says why), as the status line's "frame n/a".
   o[QStringLiteral("frame_ms")] =
-      viewport->frameFailure().isEmpty() ? QJsonValue(r->stats().totalMs) : QJsonValue();
+      viewport->frames()->frameFailure().isEmpty() ? QJsonValue(r->stats().totalMs) : QJsonValue();
   // What the status line showed for the error ("error 0.420 %", "error n/a (why)").
   o[QStringLiteral("error_readout")] = w_.statusLine()->errorLabel()->text();
   // The Timing panel's summary line (a failed frame: "total <b>n/a</b> (the frame failed: …)").
   o[QStringLiteral("timing_summary")] = w_.timingPanel()->summaryText();
   // Never 0 for a frame that measured nothing: null, and why.
-  if (auto error = viewport->errorPct())
+  if (auto error = viewport->measure()->errorPct())
     o[QStringLiteral("error_pct")] = *error;
-  else if (!viewport->errorNotMeasured().isEmpty()) {
+  else if (!viewport->measure()->errorNotMeasured().isEmpty()) {
     o[QStringLiteral("error_pct")] = QJsonValue::Null;
-    o[QStringLiteral("error_unmeasured")] = viewport->errorNotMeasured();
+    o[QStringLiteral("error_unmeasured")] = viewport->measure()->errorNotMeasured();
   }
-  if (!viewport->frameFailure().isEmpty())
-    o[QStringLiteral("frame_failure")] = viewport->frameFailure();
-  if (!viewport->splitTechnique().empty()) {
-    o[QStringLiteral("split_technique")] = QString::fromStdString(viewport->splitTechnique());
+  if (!viewport->frames()->frameFailure().isEmpty())
+    o[QStringLiteral("frame_failure")] = viewport->frames()->frameFailure();
+  if (!viewport->frames()->splitTechnique().empty()) {
+    o[QStringLiteral("split_technique")] =
+        QString::fromStdString(viewport->frames()->splitTechnique());
     // The right half's error, or null when it measured nothing (its caption says why).
-    const auto split = viewport->splitErrorPct();
+    const auto split = viewport->measure()->splitErrorPct();
     o[QStringLiteral("split_error_pct")] = split ? QJsonValue(*split) : QJsonValue();
     o[QStringLiteral("split_caption")] = viewport->readouts().rightCaption;
   }

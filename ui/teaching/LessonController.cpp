@@ -149,8 +149,9 @@ void LessonController::connectPanel(LessonPanel* panel) {
   connect(strip_, &ParamPanel::paramChanged, this, [this, params](const QString& key) {
     params->refreshValues();
     if (key.isEmpty() || key == QLatin1String("view.overlay")) w_.teaching()->syncOverlayCombo();
-    if (w_.viewport()->paused()) w_.viewport()->stepFrame();  // shown even when paused
-    w_.viewport()->requestFrame();
+    if (w_.viewport()->frames()->paused())
+      w_.viewport()->frames()->stepFrame();  // shown even when paused
+    w_.viewport()->frames()->requestFrame();
   });
   connect(strip_, &ParamPanel::editRefused, this,
           [this](const QString& message) { w_.report(message); });
@@ -290,7 +291,7 @@ void LessonController::apply(int index, int caseIndex) {
   caseIndex_ = caseIndex;
   // A lesson's pictures and numbers are full-size frames: from now on this window never
   // reduces its resolution (view.adaptive), whatever the frame time.
-  w.viewport()->setAdaptiveAllowed(false);
+  w.viewport()->frames()->setAdaptiveAllowed(false);
   if (const sl::Course* course = activeCourse()) {  // still in the course: where in it
     const std::string file =
         QFileInfo(lessons_[static_cast<std::size_t>(index)].path).fileName().toStdString();
@@ -337,15 +338,15 @@ void LessonController::apply(int index, int caseIndex) {
     // Applied when the renderer starts, before those of the command line (which win).
     w.setPendingAssignments(assignments + w.pendingAssignments());
   }
-  if (p.camera) w.viewport()->setCamera(*p.camera);
+  if (p.camera) w.viewport()->camera()->setCamera(*p.camera);
   if (p.light) {
-    w.viewport()->setLight(*p.light);
+    w.viewport()->camera()->setLight(*p.light);
     w.syncLightControls();
   }
   // A session's or a lesson's comparison: the split view ("" = off). None named: off, so a
   // lesson never shows the split of the lesson before it.
   const sl::PresetCompare compare = p.compare.value_or(sl::PresetCompare{});
-  if (auto e = w.viewport()->setSplitTechnique(compare.technique, compare.params))
+  if (auto e = w.viewport()->frames()->setSplitTechnique(compare.technique, compare.params))
     problems << QString::fromStdString(*e);
   else
     w.teaching()->setSplitTechnique(QString::fromStdString(compare.technique), compare.params);
@@ -372,8 +373,8 @@ void LessonController::apply(int index, int caseIndex) {
   w.updateBanner();
   if (w.viewport()->mainSide())
     settle();
-  else
-    w.viewport()->requestFrame();  // settled when the renderer starts (MainWindow::onRendererReady)
+  else  // settled when the renderer starts (MainWindow::onRendererReady)
+    w.viewport()->frames()->requestFrame();
 }
 
 void LessonController::queueSettle() {
@@ -429,13 +430,13 @@ void LessonController::startSettling() {
   const bool temporal = info && rtwsettle::settlesRotation(*info);
   settled_ = true;
   settleFrames_ = 0;
-  if (!temporal || w.viewport()->paused()) {
+  if (!temporal || w.viewport()->frames()->paused()) {
     settling_ = false;
     // The panels show the lesson's frame once it is drawn: measured after it.
-    connect(w.viewport(), &ViewportWidget::frameRendered, this, &LessonController::reportFitSoon,
-            Qt::SingleShotConnection);
-    if (w.viewport()->paused()) w.viewport()->stepFrame();
-    w.viewport()->requestFrame();
+    connect(w.viewport()->frames(), &FrameLoop::frameRendered, this,
+            &LessonController::reportFitSoon, Qt::SingleShotConnection);
+    if (w.viewport()->frames()->paused()) w.viewport()->frames()->stepFrame();
+    w.viewport()->frames()->requestFrame();
     return;
   }
   settled_ = false;
@@ -445,9 +446,9 @@ void LessonController::startSettling() {
   showSettlingNote();
   // Frame by frame, driven by the view's frames (no nested event loop): settleFrame() looks
   // at each and asks for the next until an estimate leaves R unchanged.
-  settleConnection_ =
-      connect(w.viewport(), &ViewportWidget::frameRendered, this, &LessonController::settleFrame);
-  w.viewport()->requestFrame();
+  settleConnection_ = connect(w.viewport()->frames(), &FrameLoop::frameRendered, this,
+                              &LessonController::settleFrame);
+  w.viewport()->frames()->requestFrame();
 }
 
 void LessonController::showSettlingNote() {
@@ -468,7 +469,7 @@ void LessonController::settleFrame() {
       settled_ = *done;  // nothing yet on the first frame (it has no last frame)
   if (r && !settled_ && settleFrames_ < kMaxSettleFrames) {
     showSettlingNote();
-    w.viewport()->requestFrame();
+    w.viewport()->frames()->requestFrame();
     return;
   }
   disconnect(settleConnection_);
@@ -484,7 +485,7 @@ void LessonController::settleFrame() {
                      tr("The rotation still turns after %1 frames: it never holds with these "
                         "parameters.")
                          .arg(settleFrames_));
-  w.viewport()->requestFrame();
+  w.viewport()->frames()->requestFrame();
 }
 
 void LessonController::reportFitSoon() {

@@ -34,8 +34,8 @@ void PassStepper::step(int delta) {
   MainWindow& w = w_;
   if (!w.viewport()->mainSide()) return;
   if (!active()) {
-    pausedBefore_ = w.viewport()->paused();
-    if (!w.viewport()->paused()) w.setPaused(true);
+    pausedBefore_ = w.viewport()->frames()->paused();
+    if (!w.viewport()->frames()->paused()) w.setPaused(true);
     w.passStopAction()->setEnabled(true);
     if (w.docks().isCurrent(*w.viewport()->mainSide(), true)) {
       index_ = 0;
@@ -43,7 +43,7 @@ void PassStepper::step(int delta) {
     } else {  // the last frame did not publish every panel's keys: render one that does
       waitingForFrame_ = true;
       w.updatePublishing();
-      w.viewport()->stepFrame();
+      w.viewport()->frames()->stepFrame();
     }
     return;
   }
@@ -52,7 +52,7 @@ void PassStepper::step(int delta) {
   if (next >= static_cast<int>(steps_.size())) {
     // Past the last pass: the frame is done; render the next one and start over.
     waitingForFrame_ = true;
-    w.viewport()->stepFrame();
+    w.viewport()->frames()->stepFrame();
     return;
   }
   index_ = std::max(0, next);

@@ -175,14 +175,14 @@ void PresenterMode::setActive(bool on) {
     // e.g. Xvfb, ignores the full-screen request), full screen, the big panel's width.
     arrangeDocks();
     fitScreen();
-    w_.viewport()->setPointerHighlight(true);
-    w_.viewport()->setPresenting(true);  // full-size frames only: numbers a class reads
+    w_.viewport()->painter()->setPointerHighlight(true);
+    w_.viewport()->frames()->setPresenting(true);  // full-size frames only: numbers a class reads
   } else {
     setFullPanel(false);
     active_ = false;
     for (QDockWidget* dock : w_.findChildren<QDockWidget*>()) setReadableMinimums(*dock, false);
-    w_.viewport()->setPointerHighlight(false);
-    w_.viewport()->setPresenting(false);
+    w_.viewport()->painter()->setPointerHighlight(false);
+    w_.viewport()->frames()->setPresenting(false);
     if (app) {
       applyTheme(*app);
       QApplication::setFont(savedFont_);
@@ -196,7 +196,7 @@ void PresenterMode::setActive(bool on) {
   }
   if (action_ && action_->isChecked() != on) action_->setChecked(on);
   w_.updatePublishing();
-  w_.viewport()->requestFrame();
+  w_.viewport()->frames()->requestFrame();
 }
 
 void PresenterMode::setFullPanel(bool on) {
@@ -223,7 +223,7 @@ void PresenterMode::setFullPanel(bool on) {
   }
   arrangeDocks();
   if (fullPanelAction_ && fullPanelAction_->isChecked() != on) fullPanelAction_->setChecked(on);
-  w_.viewport()->requestFrame();
+  w_.viewport()->frames()->requestFrame();
 }
 
 void PresenterMode::arrangeDocks() {

@@ -107,11 +107,11 @@ void TeachingBar::setOverlay(int value) {
   const sl::ParamDecl* d = r->rendererParams().find(kOverlayParam.toStdString());
   const bool error = d && value >= 0 && value < static_cast<int>(d->enumNames.size()) &&
                      d->enumNames[static_cast<std::size_t>(value)] == "error";
-  if (viewport->paused()) viewport->stepFrame();
+  if (viewport->frames()->paused()) viewport->frames()->stepFrame();
   viewport->update();
   // The error overlay needs the exact reference of this view: compute it now.
-  if (error && !viewport->errorIsCurrent())
-    QTimer::singleShot(0, this, [viewport] { viewport->computeErrorNow(); });
+  if (error && !viewport->measure()->errorIsCurrent())
+    QTimer::singleShot(0, this, [viewport] { viewport->measure()->computeErrorNow(); });
 }
 
 void TeachingBar::cycleOverlay() {
@@ -125,7 +125,7 @@ void TeachingBar::cycleOverlay() {
 void TeachingBar::setSplitTechnique(const QString& id,
                                     const std::map<std::string, std::string>& params) {
   ViewportWidget* viewport = w_.viewport();
-  if (auto error = viewport->setSplitTechnique(id.toStdString(), params)) {
+  if (auto error = viewport->frames()->setSplitTechnique(id.toStdString(), params)) {
     w_.report(QString::fromStdString(*error));
     return;
   }
@@ -139,12 +139,12 @@ void TeachingBar::setSplitTechnique(const QString& id,
 
 void TeachingBar::restoreSplit() {
   if (!lastSplitTechnique_.isEmpty() && splitCombo_->currentIndex() > 0)
-    setSplitTechnique(lastSplitTechnique_, w_.viewport()->splitParams());
+    setSplitTechnique(lastSplitTechnique_, w_.viewport()->frames()->splitParams());
 }
 
 void TeachingBar::toggleSplit() {
   ViewportWidget* viewport = w_.viewport();
-  if (!viewport->splitTechnique().empty()) return setSplitTechnique(QString());
+  if (!viewport->frames()->splitTechnique().empty()) return setSplitTechnique(QString());
   QString id = lastSplitTechnique_;
   if (id.isEmpty()) {  // the baseline (uniform) against anything else, else the first other
                        // technique

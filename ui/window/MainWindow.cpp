@@ -76,19 +76,21 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   viewport_ = new ViewportWidget(this);
   viewport_->setObjectName(QStringLiteral("viewport"));
   // Scripted runs (grabs, ui/Automation.h) measure full-size frames: no adaptive resolution.
-  viewport_->setAdaptiveAllowed(interactive_);
+  viewport_->frames()->setAdaptiveAllowed(interactive_);
   setCentralWidget(viewport_);
   connect(viewport_, &ViewportWidget::rendererReady, this, &MainWindow::onRendererReady);
   connect(viewport_, &ViewportWidget::rendererAboutToBeDestroyed, this,
           &MainWindow::onRendererAboutToBeDestroyed);
-  connect(viewport_, &ViewportWidget::frameRendered, this, &MainWindow::onFrameRendered);
+  connect(viewport_->frames(), &FrameLoop::frameRendered, this, &MainWindow::onFrameRendered);
   connect(viewport_, &ViewportWidget::renderProblem, this, &MainWindow::onRenderProblem);
   // A lesson's texts quote the error (the status line shows it: StatusLine).
-  connect(viewport_, &ViewportWidget::errorUnmeasured, this, &MainWindow::refreshLiveTexts);
+  connect(viewport_->measure(), &MeasureService::errorUnmeasured, this,
+          &MainWindow::refreshLiveTexts);
   connect(viewport_, &ViewportWidget::initializationFailed, this,
           &MainWindow::onInitializationFailed);
-  connect(viewport_, &ViewportWidget::errorComputed, this, &MainWindow::refreshLiveTexts);
-  connect(viewport_, &ViewportWidget::pixelProbed, this,
+  connect(viewport_->measure(), &MeasureService::errorComputed, this,
+          &MainWindow::refreshLiveTexts);
+  connect(viewport_->measure(), &MeasureService::pixelProbed, this,
           [this](const std::optional<sl::PixelProbe>& probe) { docks_.showProbe(probe); });
 
   lessons_ = std::make_unique<LessonController>(*this);
@@ -101,7 +103,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   // A panel grows with its first data: in presenter mode the window is kept on its screen.
   docks_.setOnFed([this] { presenter_->keepOnScreen(); });
   splitSide_ = new SplitSideParams(*this);
-  connect(viewport_, &ViewportWidget::splitChanged, splitSide_, &SplitSideParams::rebuild);
+  connect(viewport_->frames(), &FrameLoop::splitChanged, splitSide_, &SplitSideParams::rebuild);
   createActions();
   createToolBar();
   addToolBarBreak();
@@ -262,7 +264,7 @@ void MainWindow::onRendererReady() {
   const QString gl = viewport_->glDescription();
   status_->showGl(gl);
   info(tr("Renderer ready: %1").arg(shortGlName(gl)));
-  viewport_->requestFrame();
+  viewport_->frames()->requestFrame();
 }
 
 void MainWindow::onRendererAboutToBeDestroyed() {
@@ -278,7 +280,7 @@ void MainWindow::onFrameRendered() {
   splitSide_->onFrameRendered();
   const sl::FrameStats& stats = renderer->stats();
   timingPanel_->setTechnique(sl::Renderer::findTechnique(renderer->techniqueId()));
-  timingPanel_->showStats(stats, viewport_->frameFailure());
+  timingPanel_->showStats(stats, viewport_->frames()->frameFailure());
   if (rendererBound_) grab_->countFrame();
   if (docks_.isCurrent(*renderer, false)) docks_.feed(*renderer, false);
   passes_->onFrameRendered();
@@ -305,7 +307,7 @@ void MainWindow::onInitializationFailed(const QString& message) {
 // --- Light, camera, misc -------------------------------------------------------------------
 
 void MainWindow::syncLightControls() {
-  if (lightPanel_) lightPanel_->showLight(viewport_->light());
+  if (lightPanel_) lightPanel_->showLight(viewport_->camera()->light());
 }
 
 void MainWindow::updateTitle() {
@@ -369,7 +371,7 @@ void MainWindow::onChartsConfigurationChosen(const QString& id, const QStringLis
       report(QString::fromStdString(*e));
   }
   rebuildParamPanel();
-  viewport_->requestFrame();
+  viewport_->frames()->requestFrame();
   info(tr("Charts: showing %1 %2").arg(id, assignments.join(QLatin1Char(' '))));
 }
 
@@ -386,19 +388,23 @@ std::string MainWindow::fillLiveText(const std::string& text) const {
   // The error the caption shows: the current view's, or in continuous rendering the latest
   // reference's (never a number that was not measured).
   auto live = [](std::optional<double> current,
-                 const std::optional<ViewportWidget::LiveError>& latest) -> std::optional<double> {
+                 const std::optional<MeasureService::LiveError>& latest) -> std::optional<double> {
     if (current) return current;
     if (latest && latest->unmeasured.isEmpty()) return latest->errorPct;
     return std::nullopt;
   };
   if (!viewport_) return sl::fillLiveText(text, {}, nullptr);
-  const bool failed = !viewport_->frameFailure().isEmpty();
+  const bool failed = !viewport_->frames()->frameFailure().isEmpty();
   const sl::LiveSide left =
       side(viewport_->mainSide(),
-           failed ? std::nullopt : live(viewport_->errorPct(), viewport_->liveError()), failed);
+           failed ? std::nullopt
+                  : live(viewport_->measure()->errorPct(), viewport_->measure()->liveError()),
+           failed);
   const sl::ViewSide* split = viewport_->splitSide();
   const sl::LiveSide right = side(
-      split, failed ? std::nullopt : live(viewport_->splitErrorPct(), viewport_->splitLiveError()),
+      split,
+      failed ? std::nullopt
+             : live(viewport_->measure()->splitErrorPct(), viewport_->measure()->splitLiveError()),
       failed);
   return sl::fillLiveText(text, left, split ? &right : nullptr);
 }
@@ -406,7 +412,7 @@ std::string MainWindow::fillLiveText(const std::string& text) const {
 void MainWindow::updatePublishing() {
   sl::ViewSide* r = viewport_ ? viewport_->mainSide() : nullptr;
   if (!r) return;
-  viewport_->setProbeWanted(docks_.probeWanted());
+  viewport_->measure()->setProbeWanted(docks_.probeWanted());
   std::set<std::string> keys = docks_.keys(grab_->running() || passes_->active());
   if (lessons_ && lessons_->settling())  // what the lesson waits for
     if (const sl::TechniqueInfo* info = sl::Renderer::findTechnique(r->techniqueId()))
@@ -424,14 +430,14 @@ void MainWindow::updatePublishing() {
       splitKeys.merge(sl::livePublicationKeys(*text, true));
     }
   r->requestPublications(std::move(keys));
-  viewport_->setSplitPublications(std::move(splitKeys));
+  viewport_->frames()->setSplitPublications(std::move(splitKeys));
 }
 
 void MainWindow::updateBanner() {
   if (!passes_->bannerTitle().isEmpty())
-    viewport_->setBanner(passes_->bannerTitle(), passes_->bannerText());
+    viewport_->painter()->setBanner(passes_->bannerTitle(), passes_->bannerText());
   else
-    viewport_->setBanner(lessons_->bannerTitle(), lessons_->bannerText());
+    viewport_->painter()->setBanner(lessons_->bannerTitle(), lessons_->bannerText());
 }
 
 void MainWindow::setPaused(bool paused) {
@@ -439,24 +445,25 @@ void MainWindow::setPaused(bool paused) {
     pauseAction_->setChecked(paused);  // re-enters through toggled
     return;
   }
-  viewport_->setPaused(paused);
+  viewport_->frames()->setPaused(paused);
   if (!paused) passes_->stop();
   info(paused ? tr("Paused: . renders one frame, ] steps through its passes, Space resumes.")
               : tr("Running."));
 }
 
 void MainWindow::stepFrame() {
-  if (!viewport_->paused()) setPaused(true);
-  viewport_->stepFrame();
+  if (!viewport_->frames()->paused()) setPaused(true);
+  viewport_->frames()->stepFrame();
   passes_->restartAtNextFrame();  // stepping passes: start again at the new frame's first
 }
 
 bool MainWindow::waitForFrames(int frames, int timeoutMs) {
-  const std::uint64_t target = viewport_->framesRendered() + static_cast<std::uint64_t>(frames);
+  const std::uint64_t target =
+      viewport_->frames()->framesRendered() + static_cast<std::uint64_t>(frames);
   QElapsedTimer clock;
   clock.start();
-  while (viewport_->framesRendered() < target) {
-    viewport_->requestFrame();
+  while (viewport_->frames()->framesRendered() < target) {
+    viewport_->frames()->requestFrame();
     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     if (clock.elapsed() > timeoutMs) return false;
   }

@@ -55,13 +55,13 @@ bool MainWindow::loadScene(const QString& nameOrPath) {
   info(tr("Loading %1\u2026").arg(nameOrPath));
   QApplication::setOverrideCursor(Qt::WaitCursor);
   sceneLoading_ = true;
-  viewport_->setSceneLoading(true);
+  viewport_->frames()->setSceneLoading(true);
   sl::SceneLoadResult result;
   runOffThread([&] { result = sl::loadSceneByNameOrPath(nameOrPath.toStdString()); });
   sceneLoading_ = false;
   QApplication::restoreOverrideCursor();
   if (!result) {
-    viewport_->setSceneLoading(false);
+    viewport_->frames()->setSceneLoading(false);
     report(tr("cannot load scene '%1': %2").arg(nameOrPath, QString::fromStdString(result.error)),
            tr("Cannot open scene"));
     syncSceneCombo();  // back to the scene still shown
@@ -71,7 +71,7 @@ bool MainWindow::loadScene(const QString& nameOrPath) {
     printErr(tr("scene '%1': %2").arg(nameOrPath, QString::fromStdString(warning)));
   sceneSpec_ = nameOrPath;
   viewport_->setScene(result.scene);
-  viewport_->setSceneLoading(false);  // the next frame is of the new scene
+  viewport_->frames()->setSceneLoading(false);  // the next frame is of the new scene
   timingPanel_->resetHistory();
   docks_.resetHistory();
   const sl::Scene& scene = *viewport_->scene();

@@ -67,7 +67,7 @@ void MainWindow::createActions() {
   sessions_->createMenu(file);
   file->addSeparator();
   QAction* reload = file->addAction(tr("&Reload shaders"), this, [this] {
-    if (auto error = viewport_->reloadShaders())
+    if (auto error = viewport_->frames()->reloadShaders())
       report(tr("shader reload failed (the last good shaders stay in use): %1")
                  .arg(QString::fromStdString(*error)));
     else
@@ -92,10 +92,11 @@ void MainWindow::createActions() {
   quit->setShortcut(QKeySequence::Quit);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  QAction* resetView = view->addAction(tr("&Reset view"), this, [this] { viewport_->resetView(); });
+  QAction* resetView =
+      view->addAction(tr("&Reset view"), this, [this] { viewport_->camera()->resetView(); });
   resetView->setShortcut(Qt::Key_Home);
   QAction* error = view->addAction(tr("Compute &error now"), this, [this] {
-    if (!viewport_->computeErrorNow()) showStatus(tr("No frame to measure yet."));
+    if (!viewport_->measure()->computeErrorNow()) showStatus(tr("No frame to measure yet."));
   });
   error->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
   continuousAction_ = view->addAction(tr("Render &continuously"));
@@ -103,10 +104,10 @@ void MainWindow::createActions() {
   continuousAction_->setShortcut(Qt::Key_F6);
   continuousAction_->setToolTip(
       tr("Redraw every frame (for techniques that converge over frames)"));
-  connect(continuousAction_, &QAction::toggled, viewport_, &ViewportWidget::setContinuous);
+  connect(continuousAction_, &QAction::toggled, viewport_->frames(), &FrameLoop::setContinuous);
   QAction* resetTemporal = view->addAction(tr("Reset &temporal state"), this, [this] {
     if (auto* r = viewport_->mainSide()) r->resetTemporalState();
-    viewport_->requestFrame();
+    viewport_->frames()->requestFrame();
   });
   resetTemporal->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
   view->addSeparator();
@@ -124,12 +125,14 @@ void MainWindow::createActions() {
       tr("A third camera shows the view frustum, split planes, light and warp "
          "frusta; drag orbits it, the wheel moves it (view.outside)"));
   connect(outside, &QAction::triggered, this, [this, outside] {
-    const bool on = !viewport_->outsideView();  // the parameter may have changed (a lesson)
-    if (!viewport_->setOutsideView(on)) showStatus(tr("This renderer has no outside view."));
-    outside->setChecked(viewport_->outsideView());
+    const bool on =
+        !viewport_->camera()->outsideView();  // the parameter may have changed (a lesson)
+    if (!viewport_->camera()->setOutsideView(on))
+      showStatus(tr("This renderer has no outside view."));
+    outside->setChecked(viewport_->camera()->outsideView());
   });
   connect(view, &QMenu::aboutToShow, this,
-          [this, outside] { outside->setChecked(viewport_->outsideView()); });
+          [this, outside] { outside->setChecked(viewport_->camera()->outsideView()); });
   view->addSeparator();
   presenter_->createActions(view);
   QMenu* panels = view->addMenu(tr("&Panels"));
@@ -275,13 +278,14 @@ void MainWindow::createToolBar() {
   bookmarkCombo_->setObjectName(QStringLiteral("bookmarkCombo"));
   bookmarkCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   bookmarkCombo_->setToolTip(tr("Camera bookmarks of the scene"));
-  connect(bookmarkCombo_, &QComboBox::activated, this,
-          [this](int index) { viewport_->goToBookmark(bookmarkCombo_->itemData(index).toInt()); });
+  connect(bookmarkCombo_, &QComboBox::activated, this, [this](int index) {
+    viewport_->camera()->goToBookmark(bookmarkCombo_->itemData(index).toInt());
+  });
   bar->addWidget(bookmarkCombo_);
   auto* reset = new QToolButton;
   reset->setText(tr("Reset view"));
   reset->setToolTip(tr("Back to the scene's first camera (Home)"));
-  connect(reset, &QToolButton::clicked, this, [this] { viewport_->resetView(); });
+  connect(reset, &QToolButton::clicked, this, [this] { viewport_->camera()->resetView(); });
   bar->addWidget(reset);
 }
 
@@ -291,8 +295,9 @@ void MainWindow::createDocks() {
   paramPanel_ = new ParamPanel;
   connect(paramPanel_, &ParamPanel::paramChanged, this, [this](const QString& key) {
     if (key.isEmpty() || key == kOverlayKey) teaching_->syncOverlayCombo();
-    if (viewport_->paused()) viewport_->stepFrame();  // show the change even when paused
-    viewport_->requestFrame();
+    if (viewport_->frames()->paused())
+      viewport_->frames()->stepFrame();  // show the change even when paused
+    viewport_->frames()->requestFrame();
   });
   connect(paramPanel_, &ParamPanel::editRefused, this,
           [this](const QString& message) { report(message); });
@@ -434,7 +439,7 @@ void MainWindow::createPanelDocks() {
             });
     connect(panel, &PublicationPanel::lightChosen, this, [this](double azimuth, double elevation) {
       // The storage analysis is for a directional light: a click makes the light one.
-      viewport_->setLight(
+      viewport_->camera()->setLight(
           sl::Light::directional(static_cast<float>(azimuth), static_cast<float>(elevation)));
       syncLightControls();
       info(tr("Light moved to azimuth %1°, elevation %2°")
@@ -451,8 +456,9 @@ void MainWindow::createPanelDocks() {
   lightPanel_ = new LightPanel;
   lightDock_ =
       addPanelDock(lightPanel_, tr("Light"), QStringLiteral("light"), Qt::RightDockWidgetArea);
-  connect(lightPanel_, &LightPanel::lightEdited, viewport_, &ViewportWidget::setLight);
-  connect(viewport_, &ViewportWidget::lightChanged, this, &MainWindow::syncLightControls);
+  connect(lightPanel_, &LightPanel::lightEdited, viewport_->camera(), &CameraController::setLight);
+  connect(viewport_->camera(), &CameraController::lightChanged, this,
+          &MainWindow::syncLightControls);
   syncLightControls();
   chartsPanel_ = new ChartsPanel(viewport_);
   chartsDock_ =
@@ -492,7 +498,7 @@ void MainWindow::createPanelDocks() {
       if (docks_.isCurrent(*viewport_->mainSide(), false))
         p->showPublication(viewport_->mainSide()->publication());
       else
-        viewport_->stepFrame();  // the last frame did not publish its keys: draw one
+        viewport_->frames()->stepFrame();  // the last frame did not publish its keys: draw one
     });
   }
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {

@@ -71,9 +71,10 @@ sl::Preset SessionFiles::current(const QString& path) const {
     for (const sl::ParamSet* set : {&r->params(), &r->rendererParams()})
       for (const sl::ParamDecl& d : set->decls()) p.params[d.key] = set->format(d.key);
   }
-  p.camera = w_.viewport()->camera();
-  p.light = w_.viewport()->light();
-  p.compare = sl::PresetCompare{w_.viewport()->splitTechnique(), w_.viewport()->splitParams()};
+  p.camera = w_.viewport()->camera()->camera();
+  p.light = w_.viewport()->camera()->light();
+  p.compare = sl::PresetCompare{w_.viewport()->frames()->splitTechnique(),
+                                w_.viewport()->frames()->splitParams()};
   sl::PresetLayout layout;
   for (QDockWidget* dock : w_.findChildren<QDockWidget*>())
     if (dock->toggleViewAction()->isChecked())

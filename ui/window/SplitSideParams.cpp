@@ -70,8 +70,8 @@ QWidget* SplitSideParams::createDockWidget(ParamPanel* mainPanel) {
   box_->hide();
   area_->hide();
   connect(panel_, &ParamPanel::paramChanged, this, [this] {
-    if (w_.viewport()->paused()) w_.viewport()->stepFrame();
-    w_.viewport()->requestFrame();
+    if (w_.viewport()->frames()->paused()) w_.viewport()->frames()->stepFrame();
+    w_.viewport()->frames()->requestFrame();
   });
   connect(panel_, &ParamPanel::editRefused, this,
           [this](const QString& message) { w_.report(message); });
@@ -131,7 +131,7 @@ void SplitSideParams::match() {
   if (matching_) return;
   matching_ = true;
   std::string error;
-  const auto m = w_.viewport()->matchSplitMemory(&error);
+  const auto m = w_.viewport()->measure()->matchSplitMemory(&error);
   matching_ = false;
   if (!m) {
     matchNote_ = tr("Equal memory: %1").arg(QString::fromStdString(error));

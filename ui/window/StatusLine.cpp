@@ -39,12 +39,12 @@ StatusLine::StatusLine(QStatusBar& bar, ViewportWidget& view, QObject* parent)
   errorLabel_->setText(tr("error —"));
   glLabel_->setText(tr("GL —"));
 
-  connect(&view_, &ViewportWidget::frameRendered, this, &StatusLine::onFrameRendered);
-  connect(&view_, &ViewportWidget::errorComputed, this, &StatusLine::onErrorComputed);
-  connect(&view_, &ViewportWidget::errorUnmeasured, this, &StatusLine::onErrorUnmeasured);
-  connect(&view_, &ViewportWidget::viewChanged, this, [this] {
-    if (view_.continuous()) return showLiveError();
-    if (!view_.errorIsCurrent()) errorLabel_->setText(tr("error —"));
+  connect(view_.frames(), &FrameLoop::frameRendered, this, &StatusLine::onFrameRendered);
+  connect(view_.measure(), &MeasureService::errorComputed, this, &StatusLine::onErrorComputed);
+  connect(view_.measure(), &MeasureService::errorUnmeasured, this, &StatusLine::onErrorUnmeasured);
+  connect(view_.frames(), &FrameLoop::viewChanged, this, [this] {
+    if (view_.frames()->continuous()) return showLiveError();
+    if (!view_.measure()->errorIsCurrent()) errorLabel_->setText(tr("error —"));
   });
 }
 
@@ -64,17 +64,18 @@ void StatusLine::showGl(const QString& description) {
 void StatusLine::onContinuousChanged(bool on) {
   if (on) return showLiveError();
   errorLabel_->setEnabled(true);
-  errorLabel_->setText(view_.errorPct() ? tr("error %1 %").arg(*view_.errorPct(), 0, 'f', 3)
-                       : view_.errorNotMeasured().isEmpty()
+  errorLabel_->setText(view_.measure()->errorPct()
+                           ? tr("error %1 %").arg(*view_.measure()->errorPct(), 0, 'f', 3)
+                       : view_.measure()->errorNotMeasured().isEmpty()
                            ? tr("error —")
-                           : tr("error n/a (%1)").arg(view_.errorNotMeasured()));
+                           : tr("error n/a (%1)").arg(view_.measure()->errorNotMeasured()));
 }
 
 void StatusLine::onFrameRendered() {
   const sl::ViewSide* side = view_.mainSide();
   if (!side) return;
   const sl::FrameStats& stats = side->stats();
-  if (const QString failure = view_.frameFailure(); !failure.isEmpty()) {
+  if (const QString failure = view_.frames()->frameFailure(); !failure.isEmpty()) {
     frameLabel_->setText(tr("frame n/a (failed)"));
     frameLabel_->setToolTip(failure);
   } else {
@@ -87,34 +88,34 @@ void StatusLine::onFrameRendered() {
   }
   // As wide as its text at the current font (presenter mode's is larger): never cut.
   frameLabel_->setMinimumWidth(frameLabel_->sizeHint().width());
-  if (view_.continuous()) showLiveError();
+  if (view_.frames()->continuous()) showLiveError();
 }
 
 void StatusLine::onErrorUnmeasured(const QString& why) {
   errorLabel_->setEnabled(true);
-  if (view_.continuous()) return showLiveError();
+  if (view_.frames()->continuous()) return showLiveError();
   errorLabel_->setText(tr("error n/a (%1)").arg(why));
   errorLabel_->setToolTip(tr("The error of this view was not measured: %1").arg(why));
 }
 
 void StatusLine::onErrorComputed(double errorPct) {
   errorLabel_->setEnabled(true);
-  if (view_.continuous()) return showLiveError();
+  if (view_.frames()->continuous()) return showLiveError();
   errorLabel_->setText(tr("error %1 %").arg(errorPct, 0, 'f', errorPct < 1 ? 3 : 2));
   errorLabel_->setToolTip({});
 }
 
 void StatusLine::showLiveError() {
   // Greyed while the number is an earlier view's (or there is none yet).
-  if (const QString failure = view_.frameFailure(); !failure.isEmpty()) {
+  if (const QString failure = view_.frames()->frameFailure(); !failure.isEmpty()) {
     errorLabel_->setEnabled(true);  // a failed frame is never measured, nor shown as 0
     errorLabel_->setText(tr("error n/a (the frame failed)"));
     errorLabel_->setToolTip(failure);
     return;
   }
-  const auto live = view_.liveError();
+  const auto live = view_.measure()->liveError();
   errorLabel_->setEnabled(live && !live->age.stale);
-  errorLabel_->setText(view_.liveErrorText());
+  errorLabel_->setText(view_.measure()->liveErrorText());
 }
 
 }  // namespace sl::ui

@@ -18,10 +18,10 @@ constexpr int kStatusMessageMs = 10000;
 /// Runs `draw` with the view's adaptive resolution held off (its frames at full size).
 template <typename Draw>
 auto atFullSize(ViewportWidget& view, Draw draw) {
-  const bool adaptive = view.adaptiveAllowed();
-  view.setAdaptiveAllowed(false);
+  const bool adaptive = view.frames()->adaptiveAllowed();
+  view.frames()->setAdaptiveAllowed(false);
   auto result = draw();
-  view.setAdaptiveAllowed(adaptive);
+  view.frames()->setAdaptiveAllowed(adaptive);
   return result;
 }
 }  // namespace
@@ -66,9 +66,9 @@ void WindowImages::exportFigureDialog() {
 
 std::optional<QString> WindowImages::exportFigure(const QString& path) {
   constexpr int kDilatePx = 1;  // single-pixel error lines survive printing
-  const std::vector<FigureCell> cells = w_.viewport()->figureCells(kDilatePx);
+  const std::vector<FigureCell> cells = w_.viewport()->measure()->figureCells(kDilatePx);
   if (cells.empty()) return tr("export figure: no frame to export yet");
-  const sl::Light& light = w_.viewport()->light();
+  const sl::Light& light = w_.viewport()->camera()->light();
   const QString kind = light.type == sl::LightType::Directional ? tr("directional")
                        : light.type == sl::LightType::Spot      ? tr("spot")
                                                                 : tr("point");

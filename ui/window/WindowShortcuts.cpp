@@ -106,7 +106,7 @@ bool WindowShortcuts::typesText(const QWidget* focus) {
 }
 
 WindowShortcuts::WindowShortcuts(QWidget& window, ViewportWidget& view)
-    : QObject(&window), window_(window), view_(view) {
+    : QObject(&window), window_(window), view_(&view) {
   qApp->installEventFilter(this);
 }
 
@@ -121,8 +121,9 @@ bool WindowShortcuts::inWindow(const QWidget* widget) const {
 
 bool WindowShortcuts::eventFilter(QObject* watched, QEvent* event) {
   const QEvent::Type type = event->type();
+  if (!view_) return false;
   if (type == QEvent::WindowDeactivate && watched == &window_) {
-    view_.stopFlying();  // its key releases go elsewhere now
+    view_->camera()->stopFlying();  // its key releases go elsewhere now
     return false;
   }
   if (type != QEvent::KeyPress && type != QEvent::KeyRelease) return false;
@@ -133,13 +134,13 @@ bool WindowShortcuts::eventFilter(QObject* watched, QEvent* event) {
   const bool typing = typesText(QApplication::focusWidget());
   if (type == QEvent::KeyRelease) {
     // Wherever the focus went while the key was held, its release stops it.
-    view_.flyKeyReleased(key->key(), key->isAutoRepeat());
+    view_->camera()->flyKeyReleased(key->key(), key->isAutoRepeat());
     return !typing;
   }
   constexpr Qt::KeyboardModifiers kNotFlying =
       Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier;
-  if (typing || (key->modifiers() & kNotFlying) || !view_.isVisible()) return false;
-  view_.flyKeyPressed(key->key(), key->isAutoRepeat());
+  if (typing || (key->modifiers() & kNotFlying) || !view_->isVisible()) return false;
+  view_->camera()->flyKeyPressed(key->key(), key->isAutoRepeat());
   return true;
 }
 

@@ -10,6 +10,7 @@
 
 #include <QList>
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 class QAction;
@@ -59,7 +60,9 @@ class WindowShortcuts : public QObject {
   bool inWindow(const QWidget* widget) const;
 
   QWidget& window_;
-  ViewportWidget& view_;
+  /// Null once the view is gone (the window deletes it before its own teardown, which still
+  /// deactivates the window).
+  QPointer<ViewportWidget> view_;
 };
 
 }  // namespace sl::ui

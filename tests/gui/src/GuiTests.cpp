@@ -156,7 +156,7 @@ bool GuiTests::splitResize(const QString& splitTechnique) {
   // the same view must measure the same errors (the renderers' size-dependent state
   // follows the restored size).
   const QString other = splitTechnique.isEmpty() ? QStringLiteral("rtw-backward") : splitTechnique;
-  if (auto e = w_.viewport()->setSplitTechnique(other.toStdString())) {
+  if (auto e = w_.viewport()->frames()->setSplitTechnique(other.toStdString())) {
     check(false, QString::fromStdString(*e));
     return false;
   }
@@ -165,8 +165,8 @@ bool GuiTests::splitResize(const QString& splitTechnique) {
   w_.viewport()->setFixedSize(viewBefore);
   QCoreApplication::processEvents();
   waitForFrames(3);
-  const auto mainBefore = w_.viewport()->computeErrorNow();
-  const auto splitBefore = w_.viewport()->splitErrorPct();
+  const auto mainBefore = w_.viewport()->measure()->computeErrorNow();
+  const auto splitBefore = w_.viewport()->measure()->splitErrorPct();
   // Every size a window dragged to its smallest can leave the view (each half 0-2 pixels).
   const QString tech = QString::fromStdString(w_.viewport()->techniqueId());
   for (const int side : {3, 2, 1, 0}) {
@@ -180,8 +180,8 @@ bool GuiTests::splitResize(const QString& splitTechnique) {
     w_.viewport()->setFixedSize(viewBefore);
     QCoreApplication::processEvents();
     waitForFrames(3);
-    const auto mainAfter = w_.viewport()->computeErrorNow();
-    const auto splitAfter = w_.viewport()->splitErrorPct();
+    const auto mainAfter = w_.viewport()->measure()->computeErrorNow();
+    const auto splitAfter = w_.viewport()->measure()->splitErrorPct();
     check(shrunk == QSize(side, side) && w_.viewport()->size() == viewBefore,
           tr("the view went to %1x%2 and back to %3x%4")
               .arg(shrunk.width())
@@ -248,7 +248,7 @@ bool GuiTests::omniProbe(const QString& dir) {
   ViewportWidget* view = w_.viewport();
   sl::ViewSide* renderer = view->mainSide();
   const bool cube = view->techniqueId() == "cube";
-  const glm::dvec3 light(view->light().positionM);
+  const glm::dvec3 light(view->camera()->light().positionM);
   // dp.axis: 0 y, 1 x, 2 z (DualParaboloidShadowMap's declaration).
   const glm::dvec3 axes[] = {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
   const omni::ParaboloidFrame frame = omni::paraboloidFrame(
@@ -306,7 +306,7 @@ bool GuiTests::omniProbe(const QString& dir) {
   check(!panel->drawnValues().contains(QStringLiteral("probe_map")),
         tr("leaving the view removes the marker"));
   // The probe is read back only while a panel that shows it is visible (issue 15 item 6).
-  check(view->probeWanted(), tr("with the Omni map shown the view reads the probe"));
+  check(view->measure()->probeWanted(), tr("with the Omni map shown the view reads the probe"));
   auto hoverFrames = [&] {  // the mouse over the view, moved, and two frames under it
     const std::uint64_t before = auto_.viewReadouts().probesRead;
     for (const QPointF at : {QPointF(40, 40), QPointF(60, 50)}) {
@@ -323,7 +323,7 @@ bool GuiTests::omniProbe(const QString& dir) {
         tr("Omni map shown: %1 probe reads for 2 moves and 2 frames").arg(qulonglong(shownReads)));
   dock->hide();
   QCoreApplication::processEvents();
-  check(!view->probeWanted(), tr("with the Omni map hidden no panel wants the probe"));
+  check(!view->measure()->probeWanted(), tr("with the Omni map hidden no panel wants the probe"));
   const std::uint64_t hiddenReads = hoverFrames();
   check(
       hiddenReads == 0,
@@ -483,7 +483,7 @@ bool GuiTests::charts(const QString& dir) {
   if (!measured) return false;
   // The default sweep compares with a baseline that renders the view's light: uniform
   // refuses a point light, so there the other omni map (cube <-> dual-paraboloid).
-  const sl::Light sun = w_.viewport()->light();
+  const sl::Light sun = w_.viewport()->camera()->light();
   for (const auto& [shown, light, expected] :
        {std::tuple{"cube", sl::Light::point({0, 2, 0}),
                    "cube:resolution=512,1024,2048 "
@@ -493,7 +493,7 @@ bool GuiTests::charts(const QString& dir) {
         {"uniform", sl::Light::point({0, 2, 0}), "cube:resolution=512,1024,2048"},
         {"cube", sl::Light::spot({0, 2, 0}, {0, -1, 0}, 40.0f),
          "cube:resolution=512,1024,2048 uniform:resolution=512,1024,2048"}}) {
-    w_.viewport()->setLight(light);
+    w_.viewport()->camera()->setLight(light);
     const QString previous = QString::fromStdString(w_.viewport()->techniqueId());
     w_.viewport()->setTechnique(shown);
     const QString sweep = w_.chartsPanel()->defaultSweepText();
@@ -505,7 +505,7 @@ bool GuiTests::charts(const QString& dir) {
                    sweep));
     w_.viewport()->setTechnique(previous.toStdString());
   }
-  w_.viewport()->setLight(sun);
+  w_.viewport()->camera()->setLight(sun);
   QCoreApplication::processEvents();
   if (!dir.isEmpty()) {
     QDir().mkpath(dir);
@@ -538,10 +538,10 @@ bool GuiTests::chartsUnmeasured() {
   const sl::Scene& scene = *w_.viewport()->scene();
   check(scene.paths.empty(),
         QStringLiteral("dueling has no camera path (the sweep uses the view)"));
-  sl::Camera sky = w_.viewport()->camera();
+  sl::Camera sky = w_.viewport()->camera()->camera();
   sky.position = scene.bounds.max + glm::vec3(0.0f, 10.0f, 0.0f);
   sky.target = sky.position + glm::vec3(0.0f, 10.0f, -1.0f);
-  w_.viewport()->setCamera(sky);
+  w_.viewport()->camera()->setCamera(sky);
   waitForFrames(1);
   w_.chartsPanel()->setSweepText(QStringLiteral("uniform:resolution=256"));
   w_.chartsPanel()->setFramesPerConfig(1);
@@ -734,7 +734,7 @@ bool GuiTests::teaching(const QString& dir) {
   PassStepper& passes = *w_.passes();
   passes.step(+1);
   for (int i = 0; i < 50 && passes.index() < 0; ++i) waitForFrames(1, 2000);
-  check(passes.index() == 0 && w_.viewport()->paused(),
+  check(passes.index() == 0 && w_.viewport()->frames()->paused(),
         tr("] starts stepping at the first pass, paused (%1 passes)").arg(passes.steps().size()));
   QStringList seen;
   for (int i = 0; i < static_cast<int>(passes.steps().size()); ++i) {
@@ -775,7 +775,8 @@ bool GuiTests::teaching(const QString& dir) {
             .arg(frame)
             .arg(w_.viewport()->mainSide()->stats().frameIndex));
   passes.stop();
-  check(passes.index() < 0 && !w_.viewport()->paused(), tr("Esc stops stepping and resumes"));
+  check(passes.index() < 0 && !w_.viewport()->frames()->paused(),
+        tr("Esc stops stepping and resumes"));
 
   // 2. Overlays: O cycles through every value the declaration lists.
   sl::ParamSet& shared = w_.viewport()->mainSide()->rendererParams();
@@ -794,17 +795,18 @@ bool GuiTests::teaching(const QString& dir) {
   // 3. Split view: the other technique on the right half, both errors measured.
   auto_.toggleSplit();
   waitForFrames(2);
-  const auto error = w_.viewport()->computeErrorNow();
+  const auto error = w_.viewport()->measure()->computeErrorNow();
   waitForFrames(1);
-  check(!w_.viewport()->splitTechnique().empty() && error && w_.viewport()->splitErrorPct(),
+  check(!w_.viewport()->frames()->splitTechnique().empty() && error &&
+            w_.viewport()->measure()->splitErrorPct(),
         tr("F7 splits the view: %1 %2 % | %3 %4 %")
             .arg(QString::fromStdString(w_.viewport()->techniqueId()))
             .arg(error.value_or(-1), 0, 'f', 3)
-            .arg(QString::fromStdString(w_.viewport()->splitTechnique()))
-            .arg(w_.viewport()->splitErrorPct().value_or(-1), 0, 'f', 3));
+            .arg(QString::fromStdString(w_.viewport()->frames()->splitTechnique()))
+            .arg(w_.viewport()->measure()->splitErrorPct().value_or(-1), 0, 'f', 3));
   saveImage(w_.viewport()->grabView(), QStringLiteral("split.png"));
   auto_.toggleSplit();
-  check(w_.viewport()->splitTechnique().empty(), tr("F7 again ends the split view"));
+  check(w_.viewport()->frames()->splitTechnique().empty(), tr("F7 again ends the split view"));
 
   // 3b. Outside view: V shows the third camera (the renderer reports it); a left drag orbits
   // it and leaves the main camera (which the metrics measure) where it was; V again ends it.
@@ -814,12 +816,12 @@ bool GuiTests::teaching(const QString& dir) {
     outside->trigger();
     waitForFrames(2);
     const sl::ViewSide* view = w_.viewport()->mainSide();
-    check(w_.viewport()->outsideView() && view->stats().outsideCamera.has_value() &&
+    check(w_.viewport()->camera()->outsideView() && view->stats().outsideCamera.has_value() &&
               !view->stats().outlines.frusta.empty(),
           tr("V turns the outside view on (%1 frusta drawn)")
               .arg(view->stats().outlines.frusta.size()));
     saveImage(w_.viewport()->grabView(), QStringLiteral("outside.png"));
-    const sl::Camera before = w_.viewport()->camera();
+    const sl::Camera before = w_.viewport()->camera()->camera();
     const double azimuth = shared.get("view.outside.azimuth_deg");
     const QPointF from(w_.viewport()->width() / 2.0, w_.viewport()->height() / 2.0),
         to = from + QPointF(60, 0);
@@ -833,7 +835,7 @@ bool GuiTests::teaching(const QString& dir) {
     QApplication::sendEvent(w_.viewport(), &move);
     QApplication::sendEvent(w_.viewport(), &release);
     waitForFrames(1);
-    const sl::Camera after = w_.viewport()->camera();
+    const sl::Camera after = w_.viewport()->camera()->camera();
     check(after.position == before.position && after.target == before.target &&
               shared.get("view.outside.azimuth_deg") != azimuth,
           tr("a drag in the outside view orbits the third camera (azimuth %1 -> %2), not the main "
@@ -842,7 +844,7 @@ bool GuiTests::teaching(const QString& dir) {
               .arg(shared.get("view.outside.azimuth_deg")));
     outside->trigger();
     waitForFrames(1);
-    check(!w_.viewport()->outsideView() && !view->stats().outsideCamera.has_value(),
+    check(!w_.viewport()->camera()->outsideView() && !view->stats().outsideCamera.has_value(),
           tr("V again ends the outside view"));
   }
 
@@ -887,10 +889,10 @@ GuiTests::ViewState GuiTests::viewState() const {
   return ViewState{w_.viewport()->scene(),
                    auto_.sceneShown(),
                    w_.viewport()->techniqueId(),
-                   w_.viewport()->splitTechnique(),
+                   w_.viewport()->frames()->splitTechnique(),
                    w_.viewport()->mainSide()->params(),
                    w_.viewport()->mainSide()->rendererParams(),
-                   w_.viewport()->splitParams()};
+                   w_.viewport()->frames()->splitParams()};
 }
 
 void GuiTests::badFileOpen(const QString& path, QAction* open, const QString& menuName, bool drop) {

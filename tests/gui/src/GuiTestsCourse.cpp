@@ -208,7 +208,7 @@ bool GuiTests::courseGrabs(const QString& dir) {
       if (!empty) break;
       if (!auto_.waitForFrames(1)) break;
     }
-    w_.viewport()->computeErrorNow();
+    w_.viewport()->measure()->computeErrorNow();
     QCoreApplication::processEvents();
     const QString note = lessons.fitNote();
     std::printf("     %s: window %dx%d, %s\n", qPrintable(shot), w_.width(), w_.height(),

@@ -112,8 +112,8 @@ bool GuiTests::heartbeat(const QString& dir) {
       continue;
     }
     waitForFrames(1, 300000);
-    if (!view->continuous()) auto_.toggleContinuous();  // F6
-    check(view->continuous(), tr("%1: rendering continuously").arg(technique));
+    if (!view->frames()->continuous()) auto_.toggleContinuous();  // F6
+    check(view->frames()->continuous(), tr("%1: rendering continuously").arg(technique));
     for (const bool drag : {false, true}) {
       const auto r = watch(kPhaseMs, drag);
       const char* what = drag ? "dragging" : "still";

@@ -94,8 +94,8 @@ void GuiTests::checkOpenLesson(int index, const QString& dir) {
   std::printf("     window %dx%d, view %dx%d\n", w_.width(), w_.height(), w_.viewport()->width(),
               w_.viewport()->height());
   {  // what a lesson opened after others could inherit: the camera and the light
-    const sl::Camera c = w_.viewport()->camera();
-    const sl::Light l = w_.viewport()->light();
+    const sl::Camera c = w_.viewport()->camera()->camera();
+    const sl::Light l = w_.viewport()->camera()->light();
     std::printf(
         "     camera (%.2f %.2f %.2f) -> (%.2f %.2f %.2f), near %.3g, far %.3g; light "
         "azimuth %.1f°, elevation %.1f°\n",
@@ -160,7 +160,7 @@ void GuiTests::lessonOnScreen(const QString& name) {
   // error is then measured again (at most three times).
   for (int attempt = 0; attempt < 3; ++attempt) {
     waitForFrames(2);
-    if (w_.viewport()->computeErrorNow()) break;
+    if (w_.viewport()->measure()->computeErrorNow()) break;
   }
   QCoreApplication::processEvents();
   const QString shown = w_.lessonPanel()->shownText();
@@ -431,7 +431,7 @@ void GuiTests::claimProjective(const QString& text) {
   check(std::isfinite(ratio) && std::isfinite(high), tr("the text states the ratio and the sun"));
   // The floor 5-30 m from the camera: its median m at the lesson's low sun, then with only
   // the sun's elevation changed.
-  const glm::vec3 eye = w_.viewport()->camera().position;
+  const glm::vec3 eye = w_.viewport()->camera()->camera().position;
   auto floorMedian = [&]() {
     const sl::Renderer::ErrorResult e = measureView();
     const sl::FrameReadback& f = e.frame;
@@ -443,14 +443,14 @@ void GuiTests::claimProjective(const QString& text) {
     }
     return std::pair{median(m), m.size()};
   };
-  const sl::Light low = w_.viewport()->light();
+  const sl::Light low = w_.viewport()->camera()->light();
   const auto [lowM, lowN] = floorMedian();
   sl::Light raised = low;
   raised.elevationDeg = float(high);
-  w_.viewport()->setLight(raised);
+  w_.viewport()->camera()->setLight(raised);
   waitForFrames(2);
   const auto [highM, highN] = floorMedian();
-  w_.viewport()->setLight(low);
+  w_.viewport()->camera()->setLight(low);
   waitForFrames(1);
   check(lowN > 1000 && highN > 1000 && lowM >= ratio * highM,
         tr("the floor 5-30 m away: median m %1 with the sun at %2°, %3 at %4°: %5x (at least %6x)")
@@ -467,11 +467,11 @@ void GuiTests::claimTessellation(const QString& text) {
       stated(text, QStringLiteral("without tessellation is at least (\\d+) times"));
   check(std::isfinite(ratio), tr("the text states the ratio"));
   sl::ViewSide* r = w_.viewport()->mainSide();
-  const auto off = w_.viewport()->computeErrorNow();
+  const auto off = w_.viewport()->measure()->computeErrorNow();
   if (auto e = r->params().setFromString("tessellation", "on"))
     check(false, QString::fromStdString(*e));
   waitForFrames(2);
-  const auto on = w_.viewport()->computeErrorNow();
+  const auto on = w_.viewport()->measure()->computeErrorNow();
   check(off && on && *off >= ratio * *on,
         tr("error %1 % without tessellation, %2 % with it: %3x (at least %4x)")
             .arg(off.value_or(-1), 0, 'f', 2)
@@ -482,20 +482,21 @@ void GuiTests::claimTessellation(const QString& text) {
 
 void GuiTests::claimRtw() {
   waitForFrames(2);
-  const auto main = w_.viewport()->computeErrorNow();
+  const auto main = w_.viewport()->measure()->computeErrorNow();
   waitForFrames(1);
-  const auto split = w_.viewport()->splitErrorPct();
+  const auto split = w_.viewport()->measure()->splitErrorPct();
   sl::ViewSide* r = w_.viewport()->mainSide();
-  check(w_.viewport()->splitTechnique() == "uniform" && main && split && *main < *split,
-        tr("%1 at %2 x %2 texels: %3 % error; %4 at %5 x %5: %6 %")
-            .arg(QString::fromStdString(w_.viewport()->techniqueId()))
-            .arg(r->params().getInt("resolution"))
-            .arg(main.value_or(-1), 0, 'f', 3)
-            .arg(QString::fromStdString(w_.viewport()->splitTechnique()))
-            .arg(QString::fromStdString(w_.viewport()->splitParams().count("resolution")
-                                            ? w_.viewport()->splitParams().at("resolution")
-                                            : "default"))
-            .arg(split.value_or(-1), 0, 'f', 3));
+  check(
+      w_.viewport()->frames()->splitTechnique() == "uniform" && main && split && *main < *split,
+      tr("%1 at %2 x %2 texels: %3 % error; %4 at %5 x %5: %6 %")
+          .arg(QString::fromStdString(w_.viewport()->techniqueId()))
+          .arg(r->params().getInt("resolution"))
+          .arg(main.value_or(-1), 0, 'f', 3)
+          .arg(QString::fromStdString(w_.viewport()->frames()->splitTechnique()))
+          .arg(QString::fromStdString(w_.viewport()->frames()->splitParams().count("resolution")
+                                          ? w_.viewport()->frames()->splitParams().at("resolution")
+                                          : "default"))
+          .arg(split.value_or(-1), 0, 'f', 3));
 }
 
 void GuiTests::claimPca(int lessonIndex) {
@@ -608,15 +609,15 @@ void GuiTests::claimPcaCase(const sl::Preset& c, int caseNumber) {
 
   // The split view at the same texels: the lesson's partner on the right.
   waitForFrames(2);
-  const auto main = w_.viewport()->computeErrorNow();
+  const auto main = w_.viewport()->measure()->computeErrorNow();
   waitForFrames(1);
-  const auto split = w_.viewport()->splitErrorPct();
-  const auto splitParams = w_.viewport()->splitParams();
+  const auto split = w_.viewport()->measure()->splitErrorPct();
+  const auto splitParams = w_.viewport()->frames()->splitParams();
   const QString splitRes = QString::fromStdString(
       splitParams.count("resolution") ? splitParams.at("resolution") : std::string("default"));
   const int mainRes = r->params().getInt("resolution");
   const std::string partner = c.compare ? c.compare->technique : std::string();
-  check(w_.viewport()->splitTechnique() == partner && splitRes.toInt() == mainRes,
+  check(w_.viewport()->frames()->splitTechnique() == partner && splitRes.toInt() == mainRes,
         tr("case %1: the split view compares %2 at the same %3 x %3 texels (right: %4)")
             .arg(caseNumber)
             .arg(QString::fromStdString(partner))
@@ -999,11 +1000,12 @@ void GuiTests::claimAsm(const QString& text) {
   check(std::isfinite(coarse) && std::isfinite(asked), tr("the text states asm's pages"));
   auto pct = [](std::optional<double> v) { return v ? QString::number(*v, 'f', 3) : tr("none"); };
   waitForFrames(2);
-  auto main = w_.viewport()->computeErrorNow();
+  auto main = w_.viewport()->measure()->computeErrorNow();
   waitForFrames(1);
-  auto split = w_.viewport()->splitErrorPct();
-  check(w_.viewport()->splitTechnique() == "rmsm" && split && main && *split < *main / 3.0,
-        tr("asm %1 % error, rmsm %2 % (at most a third)").arg(pct(main)).arg(pct(split)));
+  auto split = w_.viewport()->measure()->splitErrorPct();
+  check(
+      w_.viewport()->frames()->splitTechnique() == "rmsm" && split && main && *split < *main / 3.0,
+      tr("asm %1 % error, rmsm %2 % (at most a third)").arg(pct(main)).arg(pct(split)));
   PublicationPanel* pagesPanel = nullptr;
   for (const PublicationDocks::Dock& d : w_.docks().docks())
     if (d.entry.id == QLatin1String("pages")) pagesPanel = d.panel;
@@ -1021,12 +1023,12 @@ void GuiTests::claimAsm(const QString& text) {
             .arg(asked));
   // The other side at about the same memory.
   for (const auto& [id, resolution] : {std::pair{"uniform", "2048"}, {"rtw-backward", "1024"}}) {
-    if (auto e = w_.viewport()->setSplitTechnique(id, {{"resolution", resolution}}))
+    if (auto e = w_.viewport()->frames()->setSplitTechnique(id, {{"resolution", resolution}}))
       check(false, QString::fromStdString(*e));
     waitForFrames(3);
-    main = w_.viewport()->computeErrorNow();
+    main = w_.viewport()->measure()->computeErrorNow();
     waitForFrames(1);
-    split = w_.viewport()->splitErrorPct();
+    split = w_.viewport()->measure()->splitErrorPct();
     check(split && main && *split < *main,
           tr("%1 at %2 x %2 texels: %3 %, asm %4 %")
               .arg(QLatin1String(id), QLatin1String(resolution), pct(split))

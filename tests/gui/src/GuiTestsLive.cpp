@@ -44,17 +44,17 @@ bool GuiTests::liveError(const QString& dir) {
     clock.start();
     while (clock.elapsed() < kFreshWithinMs) {
       QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-      const auto live = view->liveError();
+      const auto live = view->measure()->liveError();
       if (live && !live->age.stale) return clock.elapsed();
     }
     return -1;
   };
 
   auto_.toggleContinuous();  // F6
-  check(view->continuous(), tr("F6: continuous rendering is on"));
-  const std::uint64_t framesAtStart = view->framesRendered();
+  check(view->frames()->continuous(), tr("F6: continuous rendering is on"));
+  const std::uint64_t framesAtStart = view->frames()->framesRendered();
   const qint64 firstMs = waitFresh();
-  const std::uint64_t framesMeanwhile = view->framesRendered() - framesAtStart;
+  const std::uint64_t framesMeanwhile = view->frames()->framesRendered() - framesAtStart;
   check(firstMs >= 0, tr("a live error within %1 s: after %2 ms, %3 frames rendered meanwhile")
                           .arg(kFreshWithinMs / 1000)
                           .arg(firstMs)
@@ -72,8 +72,8 @@ bool GuiTests::liveError(const QString& dir) {
   const QString note = auto_.viewReadouts().errorOverlayNote;
   check(note.startsWith(QStringLiteral("reference ")) && note.contains(QStringLiteral(" s old")),
         tr("the error overlay says how old its reference is: \"%1\"").arg(note));
-  const auto live = view->liveError();
-  check(live && view->errorPct() && *view->errorPct() == live->errorPct,
+  const auto live = view->measure()->liveError();
+  check(live && view->measure()->errorPct() && *view->measure()->errorPct() == live->errorPct,
         tr("the view's error is the live one: %1 %").arg(live ? live->errorPct : -1.0, 0, 'f', 4));
   check(auto_.viewReadouts().liveReference && auto_.viewReadouts().liveReference->finished() >= 1 &&
             auto_.viewReadouts().liveReference->submitted() >=
@@ -90,7 +90,7 @@ bool GuiTests::liveError(const QString& dir) {
   const double asyncPct = live ? live->errorPct : -1.0;
   auto_.toggleContinuous();  // off: the frame stays
   waitForFrames(1);
-  const auto syncPct = view->computeErrorNow();
+  const auto syncPct = view->measure()->computeErrorNow();
   check(syncPct && *syncPct == asyncPct,
         tr("the synchronous error of the same view: %1 % (live %2 %)")
             .arg(syncPct.value_or(-1), 0, 'f', 4)
@@ -108,21 +108,21 @@ bool GuiTests::liveError(const QString& dir) {
   auto moveAndReadFirstFrame = [&](float yawDeg, float pitchDeg) {
     auto first = std::make_shared<FirstFrame>();
     const QMetaObject::Connection c =
-        QObject::connect(view, &ViewportWidget::frameRendered, view, [this, view, first] {
+        QObject::connect(view->frames(), &FrameLoop::frameRendered, view, [this, view, first] {
           if (first->seen) return;
           first->seen = true;
-          const auto split = view->splitLiveError();
-          const auto shown = split ? split : view->liveError();
+          const auto split = view->measure()->splitLiveError();
+          const auto shown = split ? split : view->measure()->liveError();
           first->stale = shown && shown->age.stale;
-          first->errorShown = view->errorPct().has_value();
+          first->errorShown = view->measure()->errorPct().has_value();
           first->labelEnabled = auto_.errorReadoutCurrent();
           first->label = auto_.errorReadout();
           first->note = auto_.viewReadouts().errorOverlayNote;
           first->rightCaption = auto_.viewReadouts().rightCaption;
         });
-    sl::Camera moved = view->camera();
+    sl::Camera moved = view->camera()->camera();
     moved.orbit(yawDeg, pitchDeg);
-    view->setCamera(moved);
+    view->camera()->setCamera(moved);
     waitForFrames(1);
     QObject::disconnect(c);
     return *first;
@@ -136,8 +136,8 @@ bool GuiTests::liveError(const QString& dir) {
   const qint64 againMs = waitFresh();
   check(againMs >= 0, tr("fresh again %1 ms after the move").arg(againMs));
   std::printf("measure live_error_after_move_ms=%lld\n", static_cast<long long>(againMs));
-  const auto fresh = view->liveError();
-  check(fresh && !fresh->age.stale && view->errorPct(),
+  const auto fresh = view->measure()->liveError();
+  check(fresh && !fresh->age.stale && view->measure()->errorPct(),
         tr("the moved view's error: %1 %, %2")
             .arg(fresh ? fresh->errorPct : -1.0, 0, 'f', 4)
             .arg(QString::fromStdString(fresh ? sl::describeReferenceAge(fresh->age) : "")));
@@ -151,7 +151,7 @@ bool GuiTests::liveError(const QString& dir) {
     auto busyAtAction = std::make_shared<std::optional<bool>>();
     auto queued = std::make_shared<bool>(false);
     const QMetaObject::Connection c =
-        QObject::connect(view, &ViewportWidget::frameRendered, view, [=, this] {
+        QObject::connect(view->frames(), &FrameLoop::frameRendered, view, [=, this] {
           if (*queued) return;
           *queued = true;
           QMetaObject::invokeMethod(
@@ -162,9 +162,9 @@ bool GuiTests::liveError(const QString& dir) {
               },
               Qt::QueuedConnection);
         });
-    sl::Camera c2 = view->camera();
+    sl::Camera c2 = view->camera()->camera();
     c2.orbit(yawDeg, 0.0f);
-    view->setCamera(c2);
+    view->camera()->setCamera(c2);
     QElapsedTimer clock;
     clock.start();
     while (!busyAtAction->has_value() && clock.elapsed() < kFreshWithinMs)
@@ -177,7 +177,7 @@ bool GuiTests::liveError(const QString& dir) {
       whileTracing(2.0f, [&] { loaded = auto_.openScene(QStringLiteral("corridor")); });
   check(loaded, tr("corridor loaded right after a camera move (a trace was %1)")
                     .arg(wasBusy ? "running" : "not running"));
-  check(!view->liveError(), tr("no error of the old scene shown after the switch"));
+  check(!view->measure()->liveError(), tr("no error of the old scene shown after the switch"));
   const qint64 newSceneMs = waitFresh();
   check(newSceneMs >= 0, tr("the new scene's live error after %1 ms: \"%2\"")
                              .arg(newSceneMs)
@@ -192,7 +192,7 @@ bool GuiTests::liveError(const QString& dir) {
     splitClock.start();
     while (splitClock.elapsed() < kFreshWithinMs) {
       QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-      const auto l = view->splitLiveError(), m = view->liveError();
+      const auto l = view->measure()->splitLiveError(), m = view->measure()->liveError();
       if (l && !l->age.stale && m && !m->age.stale) return splitClock.elapsed();
     }
     return -1;
@@ -207,8 +207,8 @@ bool GuiTests::liveError(const QString& dir) {
                                 : 0)));
   std::printf("measure split_live_error_first_ms=%lld\n", static_cast<long long>(splitMs));
   waitForFrames(1);  // the captions follow the frame that took it
-  const auto splitLive = view->splitLiveError();
-  const auto mainLive = view->liveError();
+  const auto splitLive = view->measure()->splitLiveError();
+  const auto mainLive = view->measure()->liveError();
   const QString rightCaption = auto_.viewReadouts().rightCaption,
                 leftCaption = auto_.viewReadouts().leftCaption;
   check(splitLive && rightCaption.contains(QStringLiteral("error ")) &&
@@ -219,8 +219,8 @@ bool GuiTests::liveError(const QString& dir) {
   const double splitAsync = splitLive ? splitLive->errorPct : -1.0;
   auto_.toggleContinuous();  // off: the frame stays
   waitForFrames(1);
-  (void)view->computeErrorNow();  // both halves, synchronously
-  const auto splitSync = view->splitErrorPct();
+  (void)view->measure()->computeErrorNow();  // both halves, synchronously
+  const auto splitSync = view->measure()->splitErrorPct();
   check(splitSync && *splitSync == splitAsync && mainLive && splitAsync != mainLive->errorPct,
         tr("right half: synchronous %1 %, live %2 % (left %3 %)")
             .arg(splitSync.value_or(-1), 0, 'f', 4)
@@ -262,8 +262,8 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   check(!shared.getBool("view.adaptive") && shared.getInt("view.adaptive.budget_ms") == 250,
         tr("declared: view.adaptive off by default, budget 250 ms"));
   check(!shared.set("view.adaptive", 1.0), tr("view.adaptive on"));
-  view->setAdaptiveAllowed(true);  // as in an interactive window
-  waitForFrames(1, 300000);        // a full-size frame of the slow technique
+  view->frames()->setAdaptiveAllowed(true);  // as in an interactive window
+  waitForFrames(1, 300000);                  // a full-size frame of the slow technique
   const double slowMs = auto_.viewReadouts().lastFrameMs;
   std::printf("measure full_size_frame_ms=%.0f\n", slowMs);
   check(slowMs > 250.0, tr("%1 at %2x%3: a frame takes %4 ms (over the budget)")
@@ -274,7 +274,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   // The floor: half size, however slow the frames (several of them, each over the budget).
   int smallestWidth = size.width();
   for (int i = 0; i < 3; ++i) {
-    view->requestFrame();
+    view->frames()->requestFrame();
     waitForFrames(1, 300000);
     smallestWidth = std::min(smallestWidth, view->mainSide()->stats().width);
     check(auto_.viewReadouts().internalDivisor <= 2,
@@ -289,7 +289,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
             .arg(st.width)
             .arg(st.height)
             .arg(smallestWidth));
-  const QString note = view->resolutionNote();
+  const QString note = view->frames()->resolutionNote();
   const QRegularExpressionMatch m =
       QRegularExpression(
           QStringLiteral("^internal resolution (\\d+)\u00d7(\\d+): frame took (\\d+) ms$"))
@@ -305,7 +305,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   check(shown.size() == size * view->devicePixelRatioF(),
         tr("the frame still fills the view: %1x%2").arg(shown.width()).arg(shown.height()));
   // An export is the full-size image, never the reduced one.
-  const std::vector<FigureCell> cells = view->figureCells(1);
+  const std::vector<FigureCell> cells = view->measure()->figureCells(1);
   check(!cells.empty() && cells.front().shaded.width == size.width() &&
             cells.front().shaded.height == size.height(),
         tr("an export is at full size: %1x%2")
@@ -313,7 +313,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
             .arg(cells.empty() ? 0 : cells.front().shaded.height));
   // A grab (Automation::grabView, as File > Save viewport image) of a reduced view renders it
   // at full size for the image.
-  view->requestFrame();
+  view->frames()->requestFrame();
   waitForFrames(1, 300000);
   check(auto_.viewReadouts().internalDivisor == 2,
         tr("reduced again: divisor %1").arg(auto_.viewReadouts().internalDivisor));
@@ -326,7 +326,7 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   // Reduced again (the grab's frame reset the state: a slow full-size frame drops it, the next
   // is at half size), so that the still view's redraw and the recovery below start reduced.
   for (int i = 0; i < 4 && auto_.viewReadouts().internalDivisor != 2; ++i) {
-    view->requestFrame();
+    view->frames()->requestFrame();
     waitForFrames(1, 300000);
   }
   check(auto_.viewReadouts().internalDivisor == 2 && auto_.viewReadouts().adaptiveDivisor == 2,
@@ -350,20 +350,20 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
   recovery.start();
   while ((auto_.viewReadouts().adaptiveDivisor > 1 || auto_.viewReadouts().internalDivisor > 1) &&
          recovery.elapsed() < 5000) {
-    view->requestFrame();
+    view->frames()->requestFrame();
     waitForFrames(1, 300000);
   }
   const qint64 recoveredMs = recovery.elapsed();
   std::printf("measure recovery_ms=%lld\n", static_cast<long long>(recoveredMs));
   check(auto_.viewReadouts().adaptiveDivisor == 1 && auto_.viewReadouts().internalDivisor == 1 &&
-            view->resolutionNote().isEmpty() && recoveredMs < 1000,
+            view->frames()->resolutionNote().isEmpty() && recoveredMs < 1000,
         tr("back to full size, no note, in %1 ms (within one second): divisor %2")
             .arg(recoveredMs)
             .arg(auto_.viewReadouts().adaptiveDivisor));
   // Off: full size whatever the frame time.
   check(!shared.set("view.adaptive.budget_ms", 20.0) && !shared.set("view.adaptive", 0.0),
         tr("budget 20 ms, view.adaptive off"));
-  view->requestFrame();
+  view->frames()->requestFrame();
   waitForFrames(2, 300000);
   check(
       auto_.viewReadouts().internalDivisor == 1 && view->mainSide()->stats().width == size.width(),
@@ -371,24 +371,24 @@ bool GuiTests::adaptiveResolution(const QString& dir) {
 
   // Never in presenter mode, the split view's comparison or a lesson: on and allowed, each of
   // them turns it off (presenter mode and the split view until they end, a lesson for good).
-  check(!shared.set("view.adaptive", 1.0) && view->adaptiveActive(),
+  check(!shared.set("view.adaptive", 1.0) && view->frames()->adaptiveActive(),
         tr("view.adaptive on again: adaptive resolution active"));
   auto_.setPresenterMode(true);
   waitForFrames(1, 300000);
-  check(!view->adaptiveActive(), tr("presenter mode: adaptive resolution not used"));
+  check(!view->frames()->adaptiveActive(), tr("presenter mode: adaptive resolution not used"));
   auto_.setPresenterMode(false);
   waitForFrames(1, 300000);
-  check(view->adaptiveActive(), tr("presenter mode off: active again"));
+  check(view->frames()->adaptiveActive(), tr("presenter mode off: active again"));
   auto_.setSplit(QStringLiteral("uniform"));
   waitForFrames(1, 300000);
-  check(!view->adaptiveActive(), tr("split view: adaptive resolution not used"));
+  check(!view->frames()->adaptiveActive(), tr("split view: adaptive resolution not used"));
   auto_.setSplit(QString());
   waitForFrames(1, 300000);
-  check(view->adaptiveActive(), tr("split view off: active again"));
+  check(view->frames()->adaptiveActive(), tr("split view off: active again"));
   check(auto_.openLesson(QStringLiteral("1")) && auto_.waitForSettled(300000),
         tr("lesson 1 opened and settled"));
   sl::ParamSet& lessonShared = view->mainSide()->rendererParams();
-  check(!lessonShared.set("view.adaptive", 1.0) && !view->adaptiveActive(),
+  check(!lessonShared.set("view.adaptive", 1.0) && !view->frames()->adaptiveActive(),
         tr("a lesson: adaptive resolution not used, view.adaptive on or not"));
   waitForFrames(2, 300000);
   check(auto_.viewReadouts().internalDivisor == 1 && auto_.resolutionNote().isEmpty(),
@@ -422,7 +422,7 @@ bool GuiTests::noFreeze(const QString& dir) {
   check(view->techniqueId() == "virtual-tiled" && params.getInt("tiles") == 16 &&
             params.getInt("tile.resolution") == 4096,
         tr("virtual-tiled at its defaults: 16 x 16 tiles of 4096\u00b2"));
-  view->setAdaptiveAllowed(true);  // as in an interactive window
+  view->frames()->setAdaptiveAllowed(true);  // as in an interactive window
 
   // The event loop's heartbeat: a 20 ms timer; the largest gap between two of its ticks.
   QElapsedTimer clock;
@@ -443,7 +443,7 @@ bool GuiTests::noFreeze(const QString& dir) {
   double maxFrameMs = 0.0, maxFrameTilesMs = 0.0;
   int maxFrameTiles = 0;
   const QMetaObject::Connection frameWatch =
-      QObject::connect(view, &ViewportWidget::frameRendered, [&] {
+      QObject::connect(view->frames(), &FrameLoop::frameRendered, [&] {
         if (!auto_.viewReadouts().progress) return;
         if (auto_.viewReadouts().lastFrameMs <= maxFrameMs) return;
         maxFrameMs = auto_.viewReadouts().lastFrameMs;
@@ -453,8 +453,8 @@ bool GuiTests::noFreeze(const QString& dir) {
       });
   beat.start();
   auto_.toggleContinuous();  // F6
-  check(view->continuous(), tr("F6: continuous rendering is on"));
-  const std::uint64_t framesAtStart = view->framesRendered();
+  check(view->frames()->continuous(), tr("F6: continuous rendering is on"));
+  const std::uint64_t framesAtStart = view->frames()->framesRendered();
   QString partialNote;
   qint64 completeMs = -1;
   int maxDone = 0, total = 0, bands = 0;
@@ -468,7 +468,7 @@ bool GuiTests::noFreeze(const QString& dir) {
     if (!progress->shownComplete) {
       maxDone = std::max(maxDone, progress->done / progress->unitsPerTile);
       if (partialNote.isEmpty() && progress->done > 0) {
-        partialNote = view->resolutionNote();
+        partialNote = view->frames()->resolutionNote();
         if (!dir.isEmpty() && QDir().mkpath(dir)) {  // the partial frame with its note
           view->grabView().save(QDir(dir).filePath(QStringLiteral("no-freeze-partial.png")));
           lastTick = -1;  // the test's own grab (a frame and a PNG) is not the view's
@@ -478,7 +478,7 @@ bool GuiTests::noFreeze(const QString& dir) {
       completeMs = clock.elapsed();
     }
   }
-  const std::uint64_t frames = view->framesRendered() - framesAtStart;
+  const std::uint64_t frames = view->frames()->framesRendered() - framesAtStart;
   std::printf(
       "measure no_freeze_max_gap_ms=%lld max_frame_ms=%.0f (tiles %.0f ms, reached tile %d) "
       "ticks=%ld frames=%llu complete_ms=%lld watched_ms=%lld\n",
@@ -508,14 +508,14 @@ bool GuiTests::noFreeze(const QString& dir) {
             .arg(bands)
             .arg(maxDone));
   if (completeMs < 0) return false;
-  check(view->progressText().isEmpty(),
-        tr("no tile note once complete: \"%1\"").arg(view->resolutionNote()));
+  check(view->frames()->progressText().isEmpty(),
+        tr("no tile note once complete: \"%1\"").arg(view->frames()->resolutionNote()));
 
   // The live error of the complete frame (traced on the worker), still under the heartbeat.
-  std::optional<ViewportWidget::LiveError> live;
+  std::optional<MeasureService::LiveError> live;
   while (clock.elapsed() < kNoFreezeCompleteMs + kNoFreezeMeasureMs) {
     QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-    live = view->liveError();
+    live = view->measure()->liveError();
     if (live && !live->age.stale) break;
   }
   beat.stop();
@@ -532,7 +532,7 @@ bool GuiTests::noFreeze(const QString& dir) {
   auto_.toggleContinuous();                      // off: on demand, one call per frame
   const QImage oneShot = auto_.renderedFrame();  // renders the frame it grabs
   check(!auto_.viewReadouts().progress, tr("continuous off: frames resolve in one call"));
-  const auto syncPct = view->computeErrorNow();
+  const auto syncPct = view->measure()->computeErrorNow();
   std::printf("measure one_shot_frame_ms=%.0f\n", auto_.viewReadouts().lastFrameMs);
   check(progressive == oneShot, tr("the complete progressive frame equals the one-call frame, "
                                    "pixel for pixel (%1x%2)")

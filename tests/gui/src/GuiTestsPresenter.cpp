@@ -180,12 +180,12 @@ bool GuiTests::presenter(const QString& dir) {
   auto_.setPaused(true);
   auto_.stepFrame();
   waitForFrames(1);
-  sl::Light light = v->light();
+  sl::Light light = v->camera()->light();
   light.azimuthDeg += 0.5f;
-  v->setLight(light);
+  v->camera()->setLight(light);
   auto_.stepFrame();
   waitForFrames(1);
-  const QImage rendered = v->renderedImage();
+  const QImage rendered = v->frames()->renderedImage();
   const auto counted = r->stats().maskChange;
   std::uint64_t vivid = 0;
   for (int y = 0; y < rendered.height(); ++y)
@@ -240,7 +240,7 @@ bool GuiTests::presenter(const QString& dir) {
             .arg(inset.x())
             .arg(inset.y()));
   if (factor >= 2 && !inset.isEmpty()) {
-    const QImage source = v->renderedImage();
+    const QImage source = v->frames()->renderedImage();
     shown = v->grabView();
     // Each source pixel's block centre in the inset has that pixel's colour (device pixels
     // equal widget pixels under Xvfb; the test samples where both agree).
@@ -525,7 +525,7 @@ bool GuiTests::splitParams(const QString& dir) {
   sl::ViewSide* main = v->mainSide();
   const std::string other = "rtw-backward";
   auto_.setSplit(QString::fromStdString(other));  // as "Compare with" does
-  if (v->splitTechnique() != other) {
+  if (v->frames()->splitTechnique() != other) {
     check(false, tr("the split view shows %1").arg(QString::fromStdString(other)));
     return false;
   }
@@ -548,8 +548,8 @@ bool GuiTests::splitParams(const QString& dir) {
 
   // 1. The right half's resolution edited in its own panel: its memory and error change,
   // the left half's do not.
-  const auto mainErrBefore = v->computeErrorNow();
-  const auto splitErrBefore = v->splitErrorPct();
+  const auto mainErrBefore = v->measure()->computeErrorNow();
+  const auto splitErrBefore = v->measure()->splitErrorPct();
   const std::uint64_t mainBytesBefore = main->stats().memory.bytes();
   const std::uint64_t splitBytesBefore = split->stats().memory.bytes();
   const int before = spin->value();
@@ -557,8 +557,8 @@ bool GuiTests::splitParams(const QString& dir) {
   spin->setValue(edited);
   QCoreApplication::processEvents();
   waitForFrames(2);
-  const auto mainErrAfter = v->computeErrorNow();
-  const auto splitErrAfter = v->splitErrorPct();
+  const auto mainErrAfter = v->measure()->computeErrorNow();
+  const auto splitErrAfter = v->measure()->splitErrorPct();
   const std::uint64_t mainBytesAfter = main->stats().memory.bytes();
   const std::uint64_t splitBytesAfter = split->stats().memory.bytes();
   check(split->params().get("resolution") == edited && main->params().get("resolution") != edited,
@@ -579,9 +579,9 @@ bool GuiTests::splitParams(const QString& dir) {
             .arg(splitErrAfter.value_or(-1), 0, 'f', 4)
             .arg(mainErrBefore.value_or(-1), 0, 'f', 4)
             .arg(mainErrAfter.value_or(-1), 0, 'f', 4));
-  check(v->splitParams().at("resolution") == std::to_string(edited),
+  check(v->frames()->splitParams().at("resolution") == std::to_string(edited),
         tr("the session's split parameters follow the panel (resolution=%1)")
-            .arg(QString::fromStdString(v->splitParams().at("resolution"))));
+            .arg(QString::fromStdString(v->frames()->splitParams().at("resolution"))));
 
   // 2. Equal memory: the largest right resolution within the left half's bytes; one step
   // more spends more.
@@ -650,7 +650,7 @@ bool GuiTests::splitParams(const QString& dir) {
   auto_.setSplit(QStringLiteral("rmsm"));
   for (int i = 0; i < 20; ++i) QCoreApplication::processEvents(QEventLoop::AllEvents, 30);
   split = v->splitSide();
-  check(split && v->splitTechnique() == "rmsm", tr("the split view shows rmsm"));
+  check(split && v->frames()->splitTechnique() == "rmsm", tr("the split view shows rmsm"));
   if (!split) return false;
   side.equalMemoryBox()->setChecked(false);
   side.equalMemoryBox()->setChecked(true);

@@ -40,25 +40,25 @@ void GuiTests::printSessionMetrics() {
   w_.viewport()->setFixedSize(640, 400);
   QCoreApplication::processEvents();
   waitForFrames(6);  // cascades fit to last frame's depth range: settled after a few
-  const auto error = w_.viewport()->computeErrorNow();
-  const auto splitError = w_.viewport()->splitErrorPct();
+  const auto error = w_.viewport()->measure()->computeErrorNow();
+  const auto splitError = w_.viewport()->measure()->splitErrorPct();
   sl::ViewSide* r = w_.viewport()->mainSide();
   metric(QStringLiteral("scene"), auto_.sceneShown());
   metric(QStringLiteral("technique"), QString::fromStdString(w_.viewport()->techniqueId()));
   metric(QStringLiteral("split.technique"),
-         QString::fromStdString(w_.viewport()->splitTechnique()));
+         QString::fromStdString(w_.viewport()->frames()->splitTechnique()));
   for (const sl::ParamSet* set : {&r->params(), &r->rendererParams()})
     for (const sl::ParamDecl& d : set->decls())
       metric(QStringLiteral("param.") + QString::fromStdString(d.key),
              QString::fromStdString(set->format(d.key)));
-  for (const auto& [key, value] : w_.viewport()->splitParams())
+  for (const auto& [key, value] : w_.viewport()->frames()->splitParams())
     metric(QStringLiteral("split.param.") + QString::fromStdString(key),
            QString::fromStdString(value));
-  const sl::Camera& c = w_.viewport()->camera();
+  const sl::Camera& c = w_.viewport()->camera()->camera();
   metric(QStringLiteral("camera.position"), vec(c.position));
   metric(QStringLiteral("camera.target"), vec(c.target));
   metric(QStringLiteral("camera.fov"), QString::number(c.fovYDeg, 'g', 9));
-  const sl::Light& l = w_.viewport()->light();
+  const sl::Light& l = w_.viewport()->camera()->light();
   metric(QStringLiteral("light.type"),
          QString::fromStdString(std::string(sl::lightTypeName(l.type))));
   metric(QStringLiteral("light.angles"),
@@ -97,11 +97,11 @@ bool GuiTests::sessionSave(const QString& path) {
   }
   w_.paramPanel()->refreshValues();
   w_.teaching()->syncOverlayCombo();
-  sl::Camera camera = w_.viewport()->camera();
+  sl::Camera camera = w_.viewport()->camera()->camera();
   camera.position += glm::vec3(0.75f, 0.5f, -1.25f);
   camera.fovYDeg = 42.0f;
-  w_.viewport()->setCamera(camera);
-  w_.viewport()->setLight(sl::Light::directional(-35.0f, 38.5f));
+  w_.viewport()->camera()->setCamera(camera);
+  w_.viewport()->camera()->setLight(sl::Light::directional(-35.0f, 38.5f));
   w_.syncLightControls();
   auto_.setSplit(QStringLiteral("uniform"), {{"resolution", "512"}});
   w_.timingDock()->hide();

@@ -89,35 +89,36 @@ bool GuiTests::shortcuts() {
   auto overlay = [renderer] { return renderer->rendererParams().getInt("view.overlay"); };
   /// Holds `k` for `ms` and returns how far the camera moved (metres).
   auto hold = [&](Qt::Key k, int ms) {
-    const sl::Camera before = view->camera();
+    const sl::Camera before = view->camera()->camera();
     QTest::keyPress(QApplication::focusWidget(), k);
     spin(ms);
     QTest::keyRelease(QApplication::focusWidget(), k);
     spin(40);
-    return glm::length(view->camera().position - before.position);
+    return glm::length(view->camera()->camera().position - before.position);
   };
 
   for (QWidget* w : {slider, tree}) {
     const QString where = describe(w);
     check(focusOn(w), tr("%1 has the focus").arg(where));
-    const bool outside = view->outsideView();
+    const bool outside = view->camera()->outsideView();
     key(Qt::Key_V);
-    check(view->outsideView() != outside, tr("V from %1 toggles the outside view").arg(where));
+    check(view->camera()->outsideView() != outside,
+          tr("V from %1 toggles the outside view").arg(where));
     key(Qt::Key_V);
-    check(view->outsideView() == outside, tr("V again turns it back"));
+    check(view->camera()->outsideView() == outside, tr("V again turns it back"));
 
-    const bool continuous = view->continuous();
+    const bool continuous = view->frames()->continuous();
     key(Qt::Key_F6);
-    check(view->continuous() != continuous,
+    check(view->frames()->continuous() != continuous,
           tr("F6 from %1 toggles continuous rendering").arg(where));
     key(Qt::Key_F6);
-    check(view->continuous() == continuous, tr("F6 again turns it back"));
+    check(view->frames()->continuous() == continuous, tr("F6 again turns it back"));
 
-    const bool paused = view->paused();
+    const bool paused = view->frames()->paused();
     key(Qt::Key_Space);
-    check(view->paused() != paused, tr("Space from %1 toggles pause").arg(where));
+    check(view->frames()->paused() != paused, tr("Space from %1 toggles pause").arg(where));
     key(Qt::Key_Space);
-    check(view->paused() == paused, tr("Space again resumes"));
+    check(view->frames()->paused() == paused, tr("Space again resumes"));
 
     const int overlayBefore = overlay();
     key(Qt::Key_O);
@@ -144,17 +145,17 @@ bool GuiTests::shortcuts() {
       continue;
     if (!focusOn(w)) continue;  // a container that passes the focus on
     kinds << kind;
-    const bool outside = view->outsideView();
-    const bool paused = view->paused();
+    const bool outside = view->camera()->outsideView();
+    const bool paused = view->frames()->paused();
     key(Qt::Key_V);
     key(Qt::Key_Space);
-    check(view->outsideView() != outside && view->paused() != paused,
+    check(view->camera()->outsideView() != outside && view->frames()->paused() != paused,
           tr("V and Space from %1 act").arg(describe(w)));
     if (QApplication::focusWidget() == w) {
       key(Qt::Key_V);
       key(Qt::Key_Space);
     }
-    (void)view->setOutsideView(outside);
+    (void)view->camera()->setOutsideView(outside);
     auto_.setPaused(paused);
   }
 
@@ -167,13 +168,13 @@ bool GuiTests::shortcuts() {
     dock->activateWindow();
     for (int i = 0; i < 50 && !dock->isActiveWindow(); ++i) spin(20);
     if (focusOn(tree)) {
-      const bool outside = view->outsideView();
-      const bool paused = view->paused();
+      const bool outside = view->camera()->outsideView();
+      const bool paused = view->frames()->paused();
       key(Qt::Key_V);
       key(Qt::Key_Space);
-      check(view->outsideView() != outside && view->paused() != paused,
+      check(view->camera()->outsideView() != outside && view->frames()->paused() != paused,
             tr("V and Space from the tree of the floating dock '%1' act").arg(dock->windowTitle()));
-      (void)view->setOutsideView(outside);
+      (void)view->camera()->setOutsideView(outside);
       auto_.setPaused(paused);
       const double movedM = hold(Qt::Key_W, 300);
       check(movedM > 1e-3, tr("W held from the floating dock flies %1 m").arg(movedM));
@@ -187,30 +188,31 @@ bool GuiTests::shortcuts() {
 
   // Typing into a number field: its keys stay its own.
   check(focusOn(spinBox), tr("%1 has the focus").arg(describe(spinBox)));
-  const bool outside = view->outsideView();
-  const bool paused = view->paused();
+  const bool outside = view->camera()->outsideView();
+  const bool paused = view->frames()->paused();
   key(Qt::Key_V);
   key(Qt::Key_Space);
-  check(view->outsideView() == outside && view->paused() == paused,
+  check(view->camera()->outsideView() == outside && view->frames()->paused() == paused,
         tr("V and Space typed into %1 neither toggle the outside view nor pause")
             .arg(describe(spinBox)));
   const double typedM = hold(Qt::Key_W, 300);
   check(typedM == 0.0, tr("W typed into the spin box moves the camera %1 m").arg(typedM));
-  const bool continuous = view->continuous();
+  const bool continuous = view->frames()->continuous();
   key(Qt::Key_F6);
-  check(view->continuous() != continuous, tr("F6 (no text) still acts from the spin box"));
+  check(view->frames()->continuous() != continuous,
+        tr("F6 (no text) still acts from the spin box"));
   key(Qt::Key_F6);
 
   // Frame and pass stepping from the tree: "." renders one frame and pauses, "]" steps
   // through the frame's passes, Esc stops.
   check(focusOn(tree), tr("the tree has the focus again"));
-  const std::uint64_t frames = view->framesRendered();
+  const std::uint64_t frames = view->frames()->framesRendered();
   key(Qt::Key_Period);
-  for (int i = 0; i < 100 && view->framesRendered() == frames; ++i) spin(20);
-  check(view->paused() && view->framesRendered() > frames,
+  for (int i = 0; i < 100 && view->frames()->framesRendered() == frames; ++i) spin(20);
+  check(view->frames()->paused() && view->frames()->framesRendered() > frames,
         tr(". from the tree renders a frame (%1 -> %2) and pauses")
             .arg(frames)
-            .arg(view->framesRendered()));
+            .arg(view->frames()->framesRendered()));
   key(Qt::Key_BracketRight);
   check(w_.passes()->active(), tr("] from the tree steps through the passes"));
   if (QApplication::focusWidget() != tree) focusOn(tree);
@@ -221,8 +223,8 @@ bool GuiTests::shortcuts() {
   // The view's rates (algo/CameraNavigation) through its own handlers: a drag across the
   // view's height orbits half a turn whatever the view's size (about half of it here: whole
   // pixels), a wheel notch moves 15 % of the distance to the target.
-  (void)view->setOutsideView(false);
-  const sl::Camera beforeDrag = view->camera();
+  (void)view->camera()->setOutsideView(false);
+  const sl::Camera beforeDrag = view->camera()->camera();
   const int h = view->height();
   const int dxPx = h / 2;
   const QPointF from(view->width() / 4, h / 2), to = from + QPointF(dxPx, 0);
@@ -235,7 +237,7 @@ bool GuiTests::shortcuts() {
   mouse(QEvent::MouseMove, to, Qt::NoButton, Qt::LeftButton);
   mouse(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
   const glm::vec3 a = beforeDrag.position - beforeDrag.target,
-                  b = view->camera().position - view->camera().target;
+                  b = view->camera()->camera().position - view->camera()->camera().target;
   const double turnDeg = glm::degrees(std::abs(
       std::remainder(std::atan2(double(b.x), double(b.z)) - std::atan2(double(a.x), double(a.z)),
                      2.0 * std::numbers::pi)));
@@ -246,12 +248,15 @@ bool GuiTests::shortcuts() {
             .arg(h)
             .arg(turnDeg)
             .arg(expectedDeg));
-  const float distanceBefore = glm::length(view->camera().position - view->camera().target);
+  const float distanceBefore =
+      glm::length(view->camera()->camera().position - view->camera()->camera().target);
   const QPointF centre(view->width() / 2.0, h / 2.0);
   QWheelEvent wheel(centre, view->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
                     Qt::NoModifier, Qt::NoScrollPhase, false);
   QApplication::sendEvent(view, &wheel);
-  const float ratio = glm::length(view->camera().position - view->camera().target) / distanceBefore;
+  const float ratio =
+      glm::length(view->camera()->camera().position - view->camera()->camera().target) /
+      distanceBefore;
   check(std::abs(ratio - 0.85f) < 1e-4f,
         tr("a wheel notch towards the target: distance x %1 (0.85)").arg(ratio));
 

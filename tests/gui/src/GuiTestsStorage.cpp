@@ -52,7 +52,8 @@ bool GuiTests::storageClick(const QString& dir) {
   dock->raise();
   QCoreApplication::processEvents();
   ViewportWidget* view = w_.viewport();
-  check(view->light().type == sl::LightType::Directional, tr("the scene's light is directional"));
+  check(view->camera()->light().type == sl::LightType::Directional,
+        tr("the scene's light is directional"));
 
   // The analysis runs off the UI thread: wait until the panel drew the frame's light.
   auto analysedLight = [&](const sl::Light& light) {
@@ -70,18 +71,19 @@ bool GuiTests::storageClick(const QString& dir) {
     }
     return false;
   };
-  check(analysedLight(view->light()), tr("the panel analysed the frame's light"));
+  check(analysedLight(view->camera()->light()), tr("the panel analysed the frame's light"));
 
   // The direction a click at disk coordinates (u, v) must pick: the paper's Fig. 7 frame of
   // this camera (algo/partition, as the CLI's plot), independent of the panel.
   const sl::partition::HemisphereFrame frame = sl::partition::HemisphereFrame::forView(
-      sl::warp::ViewFrustum::fromCamera(view->camera(),
+      sl::warp::ViewFrustum::fromCamera(view->camera()->camera(),
                                         double(view->width()) / std::max(1, view->height())),
       glm::dvec3(0.0, 1.0, 0.0));
   const QJsonObject before = panel->drawnValues();
   const glm::dvec2 mark(before.value(QStringLiteral("mark_u")).toDouble(),
                         before.value(QStringLiteral("mark_v")).toDouble());
-  const glm::dvec2 markExpected = frame.disk(glm::dvec3(view->light().directionalTowards()));
+  const glm::dvec2 markExpected =
+      frame.disk(glm::dvec3(view->camera()->light().directionalTowards()));
   check(glm::length(mark - markExpected) < 1e-3,
         tr("the light's mark is at (%1, %2); its direction in this camera's frame: (%3, %4)")
             .arg(mark.x, 0, 'f', 4)
@@ -99,7 +101,7 @@ bool GuiTests::storageClick(const QString& dir) {
     if (!towards) continue;
     const sl::Light expected = sl::Light::directionalFromTowards(glm::vec3(*towards));
     click(panel->hemisphereWidget(), panel->hemispherePoint(uv.x, uv.y));
-    const sl::Light& now = view->light();
+    const sl::Light& now = view->camera()->light();
     check(now.type == sl::LightType::Directional && angleDeg(now, expected) < 0.05,
           tr("click %1 at disk (%2, %3): light azimuth %4°, elevation %5°; expected %6°, %7° "
              "(%8° apart)")
@@ -127,9 +129,10 @@ bool GuiTests::storageClick(const QString& dir) {
   }
 
   // Outside the disk nothing is picked: the light stays.
-  const sl::Light kept = view->light();
+  const sl::Light kept = view->camera()->light();
   click(panel->hemisphereWidget(), panel->hemispherePoint(0.95, 0.95));
-  check(angleDeg(view->light(), kept) == 0.0, tr("a click outside the disk keeps the light"));
+  check(angleDeg(view->camera()->light(), kept) == 0.0,
+        tr("a click outside the disk keeps the light"));
   return true;
 }
 

@@ -141,7 +141,7 @@ QString ChartsPanel::defaultSweepText() const {
   // a spot, the other omni map (cube / dual-paraboloid) for a point light, which uniform
   // refuses.
   const QString current = QString::fromStdString(viewport_->techniqueId());
-  const sl::LightType light = viewport_->light().type;
+  const sl::LightType light = viewport_->camera()->light().type;
   auto renders = [&](const sl::TechniqueInfo& info) {
     return std::find(info.lights.begin(), info.lights.end(), light) != info.lights.end();
   };
@@ -247,7 +247,7 @@ bool ChartsPanel::startSweep() {
     sweep_.push_back(std::move(rendered));
   }
   frames_ = framesSpin_->value();
-  cameras_ = sl::measure::sweepCameras(*viewport_->scene(), viewport_->camera(), frames_);
+  cameras_ = sl::measure::sweepCameras(*viewport_->scene(), viewport_->camera()->camera(), frames_);
   progress_->setRange(0, int(configs_.size()) * frames_);
   progress_->setValue(0);
   runButton_->setEnabled(false);
@@ -302,7 +302,7 @@ void ChartsPanel::postSweep(sl::measure::SweepPosition from) {
     return;
   }
   const std::shared_ptr<const sl::Scene> scene = viewport_->scene();
-  const sl::Light light = viewport_->light();
+  const sl::Light light = viewport_->camera()->light();
   const std::uint64_t serial = sweepSerial_;
   QPointer<ChartsPanel> self(this);
   // One job per frame, tagged: the next is posted when this one has ended, so the view's

@@ -42,7 +42,7 @@ void VariantMeasure::measureNext() {
     if (panel_) panel_->showVariantError(tag_, index, pct, frame_, problem);
   };
   sl::ViewSide* main = viewport_ ? viewport_->mainSide() : nullptr;
-  const QSize size = viewport_ ? viewport_->frameSize() : QSize();
+  const QSize size = viewport_ ? viewport_->frames()->frameSize() : QSize();
   if (!main || !viewport_->scene() || size.isEmpty()) {
     answer(std::numeric_limits<double>::quiet_NaN(), tr("the view has no frame yet"));
     cancel();
@@ -62,8 +62,8 @@ void VariantMeasure::measureNext() {
       return;
     }
   }
-  const sl::Camera camera = viewport_->camera();
-  const sl::Light light = viewport_->light();
+  const sl::Camera camera = viewport_->camera()->camera();
+  const sl::Light light = viewport_->camera()->light();
   const std::shared_ptr<const sl::Scene> scene = viewport_->scene();
   const int width = size.width(), height = size.height();
   const std::uint64_t serial = serial_;

@@ -51,13 +51,10 @@ DistanceSplitError splitErrorByDistance(std::span<const std::uint8_t> technique,
     return technique[i] != kMaskUncovered && reference[i] != kMaskUncovered &&
            positions[i].w > 0.0f;
   };
-  std::vector<double> distance(technique.size(), 0.0);
+  auto distance = [&](std::size_t i) { return double(glm::length(glm::vec3(positions[i]) - eye)); };
   std::vector<double> sorted;
   for (std::size_t i = 0; i < technique.size(); ++i)
-    if (covered(i)) {
-      distance[i] = double(glm::length(glm::vec3(positions[i]) - eye));
-      sorted.push_back(distance[i]);
-    }
+    if (covered(i)) sorted.push_back(distance(i));
   if (sorted.empty()) return s;
   // The lower median: with an even count the far set is the upper half exactly.
   const auto mid = sorted.begin() + std::ptrdiff_t((sorted.size() - 1) / 2);
@@ -66,7 +63,7 @@ DistanceSplitError splitErrorByDistance(std::span<const std::uint8_t> technique,
   for (std::size_t i = 0; i < technique.size(); ++i) {
     if (!covered(i)) continue;
     const bool wrong = (technique[i] != kMaskShadowed) != (reference[i] != kMaskShadowed);
-    const bool far = distance[i] > s.medianDistanceM;
+    const bool far = distance(i) > s.medianDistanceM;
     (far ? s.farCovered : s.nearCovered) += 1;
     (far ? s.farWrong : s.nearWrong) += wrong ? 1 : 0;
   }

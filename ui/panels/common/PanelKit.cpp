@@ -985,7 +985,8 @@ void BesideWhenWide::resizeEvent(QResizeEvent* event) {
 PanelColumn newPanelColumn() {
   auto* content = new QWidget;
   auto* layout = new QVBoxLayout(content);
-  layout->setContentsMargins(4, 4, 4, 4);
+  layout->setContentsMargins(kPanelColumnMargin, kPanelColumnMargin, kPanelColumnMargin,
+                             kPanelColumnMargin);
   return {content, layout};
 }
 

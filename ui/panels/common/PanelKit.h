@@ -380,7 +380,8 @@ class PublicationPanel : public QWidget {
 };
 
 /// A publication panel's content, before PublicationPanel::setContent: the widget and its
-/// column layout, with the panels' 4 px margins.
+/// column layout, with the panels' margins (kPanelColumnMargin on every side).
+inline constexpr int kPanelColumnMargin = 4;  ///< px
 struct PanelColumn {
   QWidget* content = nullptr;
   QVBoxLayout* layout = nullptr;

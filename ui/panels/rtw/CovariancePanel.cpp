@@ -32,7 +32,6 @@ namespace sl::ui {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinOneMinusEx = 1e-9;  ///< floor of 1 - e_x on the log scales
-constexpr int kContentMargin = 4;        ///< px: newPanelColumn's margins
 constexpr int kMiddleSpacing = 6;        ///< px between the image and its numbers
 
 double numberOr(const std::map<std::string, double>& numbers, const std::string& key,
@@ -323,7 +322,7 @@ void CovariancePanel::arrangeNumbers() {
   // Two columns of numbers where the image keeps at least its usual width (or its readable
   // one, the larger) beside them: the middle row half as tall, for the plots below it.
   const int image = std::max(view_->sizeHint().width(), view_->minimumSizeHint().width());
-  numbers_->fitColumns(width() - 2 * kContentMargin - image - kMiddleSpacing);
+  numbers_->fitColumns(width() - 2 * kPanelColumnMargin - image - kMiddleSpacing);
   // The measure button under the shorter of the two (at their least), in the room the taller
   // one leaves beside it: a wide image is short, two columns of numbers are.
   QVBoxLayout* under = view_->minimumSizeHint().height() < numbers_->minimumSizeHint().height()
@@ -610,6 +609,7 @@ void CovariancePanel::showPublication(const sl::Publication& pub) {
   setRow(QStringLiteral("area"),
          n.count("light.area") ? formatValue(numberOr(n, "light.area", 0.0)) + QStringLiteral(" m²")
                                : QString());
+  arrangeNumbers();  // once the rows are set: a wider value may need one column again
 
   // History.
   // A frame shown again (e.g. while paused) replaces its sample; an older one (a new
@@ -774,7 +774,6 @@ void CovariancePanel::setRow(const QString& key, const QString& value) {
   it->second.name->setVisible(!value.isEmpty());
   it->second.value->setVisible(!value.isEmpty());
   drawn_[QStringLiteral("shown.") + key] = value;
-  arrangeNumbers();  // a wider value may need one column again
 }
 
 void CovariancePanel::updateHistoryPlots() {
